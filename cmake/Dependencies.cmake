@@ -1,0 +1,21 @@
+# Finds every third-party library hpcontact uses; all come from Debian 12 packages
+# (cmake/quickstart.sh installs them). Nothing is vendored or downloaded.
+find_package(PkgConfig REQUIRED)
+find_package(Eigen3 3.4 REQUIRED NO_MODULE)
+find_package(GSL REQUIRED)
+find_package(MPI REQUIRED COMPONENTS C CXX)
+pkg_check_modules(PETSC REQUIRED IMPORTED_TARGET PETSc>=3.18)
+pkg_check_modules(SLEPC REQUIRED IMPORTED_TARGET SLEPc>=3.18)
+pkg_check_modules(MUPARSER REQUIRED IMPORTED_TARGET muparser)
+find_package(fmt REQUIRED)
+find_package(tomlplusplus REQUIRED)
+find_package(CLI11 REQUIRED)
+find_package(nlohmann_json REQUIRED)
+
+# CHOLMOD (SuiteSparse): Debian 12 ships no CMake config for it, so find header and libraries.
+find_path(CHOLMOD_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse REQUIRED)
+find_library(CHOLMOD_LIBRARY cholmod REQUIRED)
+find_library(SUITESPARSECONFIG_LIBRARY suitesparseconfig REQUIRED)
+add_library(hpcontact_cholmod INTERFACE)
+target_include_directories(hpcontact_cholmod INTERFACE ${CHOLMOD_INCLUDE_DIR})
+target_link_libraries(hpcontact_cholmod INTERFACE ${CHOLMOD_LIBRARY} ${SUITESPARSECONFIG_LIBRARY})

@@ -1,0 +1,122 @@
+// Cell-by-cell assembly with tensor Gauss rules; element matrices as dense products
+// K_T = Gxᵀ W Gx + Gyᵀ W Gy, M_T = Φᵀ W Φ.
+#include "assembly/poisson_assembly.hpp"
+
+#include <vector>
+
+#include "assembly/cell_values.hpp"
+#include "basis/quadrature.hpp"
+
+namespace hpcontact::assembly {
+namespace {
+
+using Triplets = std::vector<Eigen::Triplet<double>>;
+
+void scatter_matrix(const std::vector<space::LocalShape>& shapes, const Eigen::MatrixXd& local,
+                    Triplets& triplets) {
+  const int n = static_cast<int>(shapes.size());
+  for (int s = 0; s < n; ++s) {
+    if (shapes[s].dof < 0) continue;
+    for (int t = 0; t < n; ++t)
+      if (shapes[t].dof >= 0 && local(s, t) != 0.0)
+        triplets.emplace_back(shapes[s].dof, shapes[t].dof, local(s, t));
+  }
+}
+
+std::pair<std::vector<double>, std::vector<double>> reference_edge_points(
+    int local_edge, const std::vector<double>& t) {
+  const std::vector<double> minus{-1.0}, plus{1.0};
+  switch (local_edge) {
+    case 0: return {t, minus};
+    case 1: return {plus, t};
+    case 2: return {t, plus};
+    default: return {minus, t};
+  }
+}
+
+}  // namespace
+
+VolumeMatrices assemble_volume_matrices(const space::H1Space& space,
+                                        const VolumeMatrixRequest& request) {
+  Triplets stiffness, mass;
+  const int n = space.n_dofs();
+  for (int c = 0; c < space.mesh().n_cells(); ++c) {
+    const auto& rule = basis::gauss_legendre(cell_quadrature_points(space.cell_degree(c)));
+    const CellValues cell = tabulate_cell(space, c, rule.points, rule.points);
+    Eigen::VectorXd weights(cell.jacobians.size());
+    for (std::size_t b = 0; b < rule.points.size(); ++b)
+      for (std::size_t a = 0; a < rule.points.size(); ++a) {
+        const auto q = a + rule.points.size() * b;
+        weights(q) = rule.weights[a] * rule.weights[b] * cell.jacobians(q);
+      }
+    const auto w = weights.asDiagonal();
+    if (request.stiffness) {
+      const Eigen::MatrixXd local = cell.grad_x.transpose() * w * cell.grad_x +
+                                    cell.grad_y.transpose() * w * cell.grad_y;
+      scatter_matrix(space.cell_shapes(c), local, stiffness);
+    }
+    if (request.mass)
+      scatter_matrix(space.cell_shapes(c), cell.values.transpose() * w * cell.values, mass);
+  }
+  VolumeMatrices out;
+  if (request.stiffness) {
+    out.stiffness.resize(n, n);
+    out.stiffness.setFromTriplets(stiffness.begin(), stiffness.end());
+  }
+  if (request.mass) {
+    out.mass.resize(n, n);
+    out.mass.setFromTriplets(mass.begin(), mass.end());
+  }
+  return out;
+}
+
+Eigen::VectorXd assemble_volume_load(const space::H1Space& space,
+                                     const std::function<double(const mesh::Point&)>& f) {
+  Eigen::VectorXd load = Eigen::VectorXd::Zero(space.n_dofs());
+  for (int c = 0; c < space.mesh().n_cells(); ++c) {
+    // Two extra points beyond the matrices: f is general data, not a polynomial.
+    const auto& rule = basis::gauss_legendre(cell_quadrature_points(space.cell_degree(c)) + 2);
+    const CellValues cell = tabulate_cell(space, c, rule.points, rule.points);
+    Eigen::VectorXd weighted_f(cell.jacobians.size());
+    for (std::size_t b = 0; b < rule.points.size(); ++b)
+      for (std::size_t a = 0; a < rule.points.size(); ++a) {
+        const auto q = a + rule.points.size() * b;
+        weighted_f(q) = rule.weights[a] * rule.weights[b] * cell.jacobians(q) *
+                        f(mesh::Point(cell.points(q, 0), cell.points(q, 1)));
+      }
+    const Eigen::VectorXd local = cell.values.transpose() * weighted_f;
+    const auto& shapes = space.cell_shapes(c);
+    for (std::size_t s = 0; s < shapes.size(); ++s)
+      if (shapes[s].dof >= 0) load(shapes[s].dof) += local(s);
+  }
+  return load;
+}
+
+Eigen::VectorXd assemble_boundary_load(
+    const space::H1Space& space, const std::set<mesh::BoundaryPart>& parts,
+    const std::function<double(const mesh::Point& x, const mesh::Point& normal)>& g) {
+  const auto& mesh = space.mesh();
+  Eigen::VectorXd load = Eigen::VectorXd::Zero(space.n_dofs());
+  for (int e : mesh.boundary_edges()) {
+    if (!parts.contains(mesh.edge_part(e))) continue;
+    const int c = mesh.edge_cells(e)[0];
+    const int local_edge = mesh.local_edge_of(e, 0);
+    const auto& rule = basis::gauss_legendre(space.cell_degree(c) + 4);
+    const auto [xi, eta] = reference_edge_points(local_edge, rule.points);
+    const CellValues values = tabulate_cell(space, c, xi, eta);
+    const mesh::Point normal = mesh.boundary_normal(e);
+    // Straight edges: ds = (|edge| / 2) dt.
+    const double half_length = 0.5 * mesh.edge_length(e);
+    Eigen::VectorXd weighted_g(rule.points.size());
+    for (std::size_t q = 0; q < rule.points.size(); ++q)
+      weighted_g(q) = rule.weights[q] * half_length *
+                      g(mesh::Point(values.points(q, 0), values.points(q, 1)), normal);
+    const Eigen::VectorXd local = values.values.transpose() * weighted_g;
+    const auto& shapes = space.cell_shapes(c);
+    for (std::size_t s = 0; s < shapes.size(); ++s)
+      if (shapes[s].dof >= 0) load(shapes[s].dof) += local(s);
+  }
+  return load;
+}
+
+}  // namespace hpcontact::assembly

@@ -1,0 +1,44 @@
+// Legendre recurrence and Lobatto shape functions.
+#include "basis/lobatto.hpp"
+
+#include <cmath>
+
+namespace hpcontact::basis {
+
+Eigen::VectorXd legendre_values(int n, double t) {
+  Eigen::VectorXd values(n + 1);
+  values(0) = 1.0;
+  if (n >= 1) values(1) = t;
+  for (int k = 2; k <= n; ++k)
+    values(k) = ((2.0 * k - 1.0) * t * values(k - 1) - (k - 1.0) * values(k - 2)) / k;
+  return values;
+}
+
+void lobatto_values(int p, double t, Eigen::Ref<Eigen::VectorXd> values,
+                    Eigen::Ref<Eigen::VectorXd> derivatives) {
+  const Eigen::VectorXd legendre = legendre_values(std::max(p, 1), t);
+  values(0) = 0.5 * (1.0 - t);
+  derivatives(0) = -0.5;
+  if (p >= 1) {
+    values(1) = 0.5 * (1.0 + t);
+    derivatives(1) = 0.5;
+  }
+  for (int k = 2; k <= p; ++k) {
+    values(k) = (legendre(k) - legendre(k - 2)) / std::sqrt(2.0 * (2.0 * k - 1.0));
+    derivatives(k) = std::sqrt((2.0 * k - 1.0) / 2.0) * legendre(k - 1);
+  }
+}
+
+Tabulation1D tabulate_lobatto(int p, const std::vector<double>& points) {
+  const int n = static_cast<int>(points.size());
+  Tabulation1D table{Eigen::MatrixXd(n, p + 1), Eigen::MatrixXd(n, p + 1)};
+  Eigen::VectorXd values(p + 1), derivatives(p + 1);
+  for (int i = 0; i < n; ++i) {
+    lobatto_values(p, points[i], values, derivatives);
+    table.values.row(i) = values.transpose();
+    table.derivatives.row(i) = derivatives.transpose();
+  }
+  return table;
+}
+
+}  // namespace hpcontact::basis

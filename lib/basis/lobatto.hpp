@@ -1,0 +1,29 @@
+// Legendre polynomials and the hierarchical integrated-Legendre (Lobatto) shape functions on
+// [-1,1], the 1-D building blocks of the H¹-conforming tensor-product basis.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace hpcontact::basis {
+
+/// Legendre polynomials P_0..P_n at t: shape (n+1).
+Eigen::VectorXd legendre_values(int n, double t);
+
+/// Lobatto shape functions up to degree p at t, shape (p+1):
+///   N_0 = (1 - t)/2,  N_1 = (1 + t)/2,
+///   N_k = (P_k - P_{k-2}) / sqrt(2(2k - 1)) = sqrt((2k-1)/2) ∫_{-1}^t P_{k-1},  k ≥ 2.
+/// The bubbles N_k (k ≥ 2) vanish at ±1, have H¹₀-orthonormal derivatives
+/// (∫ N_j' N_k' = δ_jk), and parity N_k(-t) = (-1)^k N_k(t), which is how edge orientation
+/// is handled. Their conditioning grows only mildly with p (tested up to p = 16).
+void lobatto_values(int p, double t, Eigen::Ref<Eigen::VectorXd> values,
+                    Eigen::Ref<Eigen::VectorXd> derivatives);
+
+/// Tabulation at a set of points. Both outputs shape (n_points, p+1), row = point.
+struct Tabulation1D {
+  Eigen::MatrixXd values;
+  Eigen::MatrixXd derivatives;
+};
+Tabulation1D tabulate_lobatto(int p, const std::vector<double>& points);
+
+}  // namespace hpcontact::basis

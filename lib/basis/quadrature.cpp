@@ -1,0 +1,31 @@
+// Gauss–Legendre rules from GSL's fixed-order tables, cached per size.
+#include "basis/quadrature.hpp"
+
+#include <gsl/gsl_integration.h>
+
+#include <map>
+#include <mutex>
+
+#include "core/error.hpp"
+
+namespace hpcontact::basis {
+
+const QuadratureRule1D& gauss_legendre(int n) {
+  if (n < 1) throw_bad_input("quadrature", "points", std::to_string(n), "must be >= 1");
+  static std::map<int, QuadratureRule1D> cache;
+  static std::mutex mutex;
+  std::lock_guard lock(mutex);
+  auto [it, inserted] = cache.try_emplace(n);
+  if (!inserted) return it->second;
+  gsl_integration_glfixed_table* table = gsl_integration_glfixed_table_alloc(n);
+  HPC_VERIFY(table != nullptr, "GSL could not allocate a Gauss-Legendre table");
+  QuadratureRule1D& rule = it->second;
+  rule.points.resize(n);
+  rule.weights.resize(n);
+  for (int i = 0; i < n; ++i)
+    gsl_integration_glfixed_point(-1.0, 1.0, i, &rule.points[i], &rule.weights[i], table);
+  gsl_integration_glfixed_table_free(table);
+  return rule;
+}
+
+}  // namespace hpcontact::basis

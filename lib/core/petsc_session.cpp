@@ -1,0 +1,53 @@
+// PetscSession and split_petsc_options.
+#include "core/petsc_session.hpp"
+
+#include <slepcsys.h>
+
+#include <regex>
+#include <stdexcept>
+
+namespace hpcontact {
+namespace {
+
+bool is_petsc_option_name(const std::string& argument) {
+  static const std::regex pattern("^-[A-Za-z][A-Za-z0-9]*_[A-Za-z0-9_]*$");
+  return std::regex_match(argument, pattern);
+}
+
+bool looks_like_option_name(const std::string& argument) {
+  return argument.size() > 1 && argument[0] == '-' &&
+         (std::isalpha(static_cast<unsigned char>(argument[1])) || argument[1] == '-');
+}
+
+}  // namespace
+
+SplitCommandLine split_petsc_options(int argc, const char* const* argv) {
+  SplitCommandLine split;
+  const std::string program = argc > 0 ? argv[0] : "hpcontact";
+  split.own.push_back(program);
+  split.petsc.push_back(program);
+  for (int i = 1; i < argc; ++i) {
+    const std::string argument = argv[i];
+    if (!is_petsc_option_name(argument)) {
+      split.own.push_back(argument);
+      continue;
+    }
+    split.petsc.push_back(argument);
+    if (i + 1 < argc && !looks_like_option_name(argv[i + 1])) split.petsc.push_back(argv[++i]);
+  }
+  return split;
+}
+
+PetscSession::PetscSession(const std::vector<std::string>& petsc_arguments)
+    : storage_(petsc_arguments) {
+  for (auto& argument : storage_) argv_.push_back(argument.data());
+  argv_.push_back(nullptr);
+  int argc = static_cast<int>(storage_.size());
+  char** argv = argv_.data();
+  if (SlepcInitialize(&argc, &argv, nullptr, nullptr) != 0)
+    throw std::runtime_error("SlepcInitialize failed");
+}
+
+PetscSession::~PetscSession() { SlepcFinalize(); }
+
+}  // namespace hpcontact

@@ -1,0 +1,35 @@
+// Process-wide PETSc/SLEPc initialization (once, in the command-line tool) and the split of the
+// command line into hpcontact's own arguments and PETSc/SLEPc options (-eps_type arpack, ...).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace hpcontact {
+
+/// The command line split in two. PETSc and SLEPc option names contain an underscore after a
+/// single dash (-eps_type, -st_type, -eps_view, -log_view, -infsup_eps_tol); such an argument
+/// and, when present, its value (the next argument unless that one is itself an option name:
+/// "-st_shift -1" keeps -1 as value) go to PETSc. Everything else stays with hpcontact.
+struct SplitCommandLine {
+  std::vector<std::string> own;    ///< program name first, then hpcontact's arguments
+  std::vector<std::string> petsc;  ///< program name first, then PETSc/SLEPc options
+};
+
+SplitCommandLine split_petsc_options(int argc, const char* const* argv);
+
+/// RAII: SlepcInitialize on construction (which initializes PETSc and MPI), SlepcFinalize on
+/// destruction. Create exactly one, in main().
+class PetscSession {
+ public:
+  explicit PetscSession(const std::vector<std::string>& petsc_arguments);
+  ~PetscSession();
+  PetscSession(const PetscSession&) = delete;
+  PetscSession& operator=(const PetscSession&) = delete;
+
+ private:
+  std::vector<std::string> storage_;
+  std::vector<char*> argv_;
+};
+
+}  // namespace hpcontact

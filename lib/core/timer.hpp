@@ -1,0 +1,19 @@
+// Wall-clock stopwatch used for the timings reported in CSV and JSON outputs.
+#pragma once
+
+#include <chrono>
+
+namespace hpcontact {
+
+class Stopwatch {
+ public:
+  Stopwatch() : start_(std::chrono::steady_clock::now()) {}
+  double seconds() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+
+ private:
+  std::chrono::steady_clock::time_point start_;
+};
+
+}  // namespace hpcontact

@@ -1,0 +1,40 @@
+// CsvTable.
+#include "io/csv_writer.hpp"
+
+#include <fmt/format.h>
+
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+
+namespace hpcontact::io {
+
+std::string format_full_precision(double value) { return fmt::format("{:.17g}", value); }
+
+CsvTable::CsvTable(std::vector<std::string> columns) : columns_(std::move(columns)) {}
+
+void CsvTable::add_row(std::vector<CsvCell> row) {
+  HPC_VERIFY(row.size() == columns_.size(), "CSV row with the wrong number of cells");
+  rows_.push_back(std::move(row));
+}
+
+std::string CsvTable::to_string() const {
+  std::string out;
+  for (std::size_t k = 0; k < columns_.size(); ++k) out += (k ? "," : "") + columns_[k];
+  out += '\n';
+  for (const auto& row : rows_) {
+    for (std::size_t k = 0; k < row.size(); ++k) {
+      if (k) out += ',';
+      if (const auto* text = std::get_if<std::string>(&row[k])) out += *text;
+      else if (const auto* number = std::get_if<double>(&row[k])) out += format_full_precision(*number);
+      else out += std::to_string(std::get<long long>(row[k]));
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+void CsvTable::write(const std::filesystem::path& path) const {
+  write_file_atomically(path, to_string());
+}
+
+}  // namespace hpcontact::io

@@ -1,0 +1,226 @@
+// TomlTable on top of toml++.
+#include "io/toml_reader.hpp"
+
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <fstream>
+#include <numeric>
+#include <regex>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "io/csv_writer.hpp"
+
+namespace hpcontact::io {
+
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  std::iota(row.begin(), row.end(), 0);
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1] ? 1 : 0)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+TomlTable::TomlTable(std::shared_ptr<const toml::table> root, const toml::table* table,
+                     std::string file, std::string prefix)
+    : root_(std::move(root)), table_(table), file_(std::move(file)), prefix_(std::move(prefix)) {}
+
+std::string TomlTable::qualified(const std::string& key) const {
+  return prefix_.empty() ? key : prefix_ + "." + key;
+}
+
+bool TomlTable::has(const std::string& key) const {
+  asked_.insert(key);
+  return table_ && table_->contains(key);
+}
+
+void TomlTable::fail(const std::string& key, const std::string& value,
+                     const std::string& allowed) const {
+  throw_bad_input(file_, qualified(key), value, allowed);
+}
+
+std::string TomlTable::value_text(const std::string& key) const {
+  std::ostringstream out;
+  if (const auto* node = table_->get(key)) {
+    if (node->is_table()) out << "{...}";
+    else if (node->is_array()) out << *node->as_array();
+    else node->visit([&out](const auto& value) { out << value; });
+  }
+  return out.str();
+}
+
+double TomlTable::number(const std::string& key, std::optional<double> fallback) const {
+  if (!has(key)) {
+    if (fallback) return *fallback;
+    fail(key, "(missing)", "a number is required");
+  }
+  const auto* node = table_->get(key);
+  if (!(node->is_floating_point() || node->is_integer()))
+    fail(key, value_text(key), "must be a number");
+  return node->value<double>().value();
+}
+
+double TomlTable::number_in(const std::string& key, double min, double max,
+                            std::optional<double> fallback) const {
+  const double value = number(key, fallback);
+  if (!(value >= min && value <= max))
+    fail(key, format_full_precision(value),
+         "must be in [" + format_full_precision(min) + ", " + format_full_precision(max) + "]");
+  return value;
+}
+
+long long TomlTable::integer(const std::string& key, long long min, long long max,
+                             std::optional<long long> fallback) const {
+  if (!has(key)) {
+    if (fallback) return *fallback;
+    fail(key, "(missing)", "an integer in [" + std::to_string(min) + ", " + std::to_string(max) +
+                               "] is required");
+  }
+  const auto* node = table_->get(key);
+  if (!node->is_integer()) fail(key, value_text(key), "must be an integer");
+  const long long value = node->value<long long>().value();
+  if (value < min || value > max)
+    fail(key, std::to_string(value),
+         "must be in [" + std::to_string(min) + ", " + std::to_string(max) + "]");
+  return value;
+}
+
+std::string TomlTable::string(const std::string& key, std::optional<std::string> fallback) const {
+  if (!has(key)) {
+    if (fallback) return *fallback;
+    fail(key, "(missing)", "a string is required");
+  }
+  const auto* node = table_->get(key);
+  if (!node->is_string()) fail(key, value_text(key), "must be a string (in quotes)");
+  return node->value<std::string>().value();
+}
+
+std::string TomlTable::choice(const std::string& key, const std::vector<std::string>& allowed,
+                              std::optional<std::string> fallback) const {
+  const std::string value = string(key, fallback);
+  if (std::find(allowed.begin(), allowed.end(), value) != allowed.end()) return value;
+  std::string list;
+  for (const auto& option : allowed) list += (list.empty() ? "" : ", ") + option;
+  fail(key, "\"" + value + "\"", "must be one of: " + list);
+}
+
+std::vector<long long> TomlTable::integer_list(const std::string& key, long long min,
+                                               long long max,
+                                               std::optional<std::vector<long long>> fallback)
+    const {
+  const std::string range = "each in [" + std::to_string(min) + ", " + std::to_string(max) + "]";
+  const std::string forms = "an integer, a list [1, 2, 4] or a range \"1..12\"";
+  if (!has(key)) {
+    if (fallback) return *fallback;
+    fail(key, "(missing)", forms + " is required");
+  }
+  const auto* node = table_->get(key);
+  std::vector<long long> values;
+  if (node->is_integer()) {
+    values.push_back(node->value<long long>().value());
+  } else if (node->is_array()) {
+    for (const auto& element : *node->as_array()) {
+      if (!element.is_integer()) fail(key, value_text(key), "must be " + forms);
+      values.push_back(element.value<long long>().value());
+    }
+  } else if (node->is_string()) {
+    static const std::regex pattern(R"(^\s*(-?\d+)\s*\.\.\s*(-?\d+)\s*$)");
+    std::smatch match;
+    const std::string text = node->value<std::string>().value();
+    if (!std::regex_match(text, match, pattern) || std::stoll(match[1]) > std::stoll(match[2]))
+      fail(key, "\"" + text + "\"", "must be " + forms + " with first <= last");
+    for (long long v = std::stoll(match[1]); v <= std::stoll(match[2]); ++v) values.push_back(v);
+  } else {
+    fail(key, value_text(key), "must be " + forms);
+  }
+  if (values.empty()) fail(key, "[]", "must not be empty");
+  for (long long v : values)
+    if (v < min || v > max) fail(key, std::to_string(v), range);
+  return values;
+}
+
+TomlTable TomlTable::table(const std::string& key, bool required) const {
+  if (!has(key)) {
+    if (required) fail(key, "(missing)", "a table [" + qualified(key) + "] is required");
+    return TomlTable(root_, nullptr, file_, qualified(key));
+  }
+  const auto* node = table_->get(key);
+  if (!node->is_table()) fail(key, value_text(key), "must be a table [" + qualified(key) + "]");
+  return TomlTable(root_, node->as_table(), file_, qualified(key));
+}
+
+std::vector<TomlTable> TomlTable::table_array(const std::string& key, bool required) const {
+  std::vector<TomlTable> tables;
+  if (!has(key)) {
+    if (required) fail(key, "(missing)", "at least one [[" + qualified(key) + "]] block is required");
+    return tables;
+  }
+  const auto* array = table_->get(key)->as_array();
+  if (!array || !array->is_array_of_tables())
+    fail(key, value_text(key), "must be [[" + qualified(key) + "]] blocks");
+  for (std::size_t k = 0; k < array->size(); ++k)
+    tables.emplace_back(root_, array->get(k)->as_table(), file_,
+                        qualified(key) + "[" + std::to_string(k) + "]");
+  return tables;
+}
+
+void TomlTable::reject_unknown_keys() const {
+  if (!table_) return;
+  for (const auto& [key_node, value] : *table_) {
+    const std::string key(key_node.str());
+    if (asked_.contains(key)) continue;
+    std::string message = file_ + ": unknown key '" + qualified(key) + "'";
+    const auto nearest = std::min_element(
+        asked_.begin(), asked_.end(), [&key](const std::string& a, const std::string& b) {
+          return edit_distance(key, a) < edit_distance(key, b);
+        });
+    if (nearest != asked_.end() && edit_distance(key, *nearest) <= std::max<std::size_t>(2, key.size() / 3))
+      message += " (did you mean '" + *nearest + "'?)";
+    std::string known;
+    for (const auto& k : asked_) known += (known.empty() ? "" : ", ") + k;
+    message += "; known keys here: " + known;
+    throw InputError(message);
+  }
+}
+
+namespace {
+
+TomlTable wrap(toml::table parsed, const std::string& name) {
+  auto root = std::make_shared<const toml::table>(std::move(parsed));
+  const toml::table* top = root.get();
+  return TomlTable(std::move(root), top, name, "");
+}
+
+[[noreturn]] void rethrow_parse_error(const toml::parse_error& error, const std::string& name) {
+  throw InputError(name + ":" + std::to_string(error.source().begin.line) + ":" +
+                   std::to_string(error.source().begin.column) +
+                   ": malformed TOML: " + std::string(error.description()));
+}
+
+}  // namespace
+
+TomlTable parse_toml_file(const std::string& path) {
+  std::ifstream file(path);
+  if (!file) throw InputError(path + ": cannot open the file");
+  std::stringstream text;
+  text << file.rdbuf();
+  return parse_toml_string(text.str(), path);
+}
+
+TomlTable parse_toml_string(const std::string& text, const std::string& name) {
+  try {
+    return wrap(toml::parse(text, name), name);
+  } catch (const toml::parse_error& error) {
+    rethrow_parse_error(error, name);
+  }
+}
+
+}  // namespace hpcontact::io

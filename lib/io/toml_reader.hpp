@@ -1,0 +1,76 @@
+// Checked access to TOML input files (toml++): typed getters with ranges and defaults, and a
+// check that rejects unknown keys with a "did you mean" suggestion. Every error names the file,
+// the key, the value and what is allowed.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace toml {
+inline namespace v3 {
+class table;
+}
+}  // namespace toml
+
+namespace hpcontact::io {
+
+class TomlTable {
+ public:
+  TomlTable(std::shared_ptr<const toml::table> root, const toml::table* table, std::string file,
+            std::string prefix);
+
+  const std::string& file() const { return file_; }
+  /// Dotted name of a key of this table, e.g. "runs[1].p".
+  std::string qualified(const std::string& key) const;
+  bool has(const std::string& key) const;
+
+  /// A number (integers are accepted). Required when no fallback is given.
+  double number(const std::string& key, std::optional<double> fallback = std::nullopt) const;
+  /// A number in [min, max] (inclusive).
+  double number_in(const std::string& key, double min, double max,
+                   std::optional<double> fallback = std::nullopt) const;
+  long long integer(const std::string& key, long long min, long long max,
+                    std::optional<long long> fallback = std::nullopt) const;
+  std::string string(const std::string& key,
+                     std::optional<std::string> fallback = std::nullopt) const;
+  /// A string from a fixed set of choices.
+  std::string choice(const std::string& key, const std::vector<std::string>& allowed,
+                     std::optional<std::string> fallback = std::nullopt) const;
+  /// Integers given as one integer, a list [1, 2, 4], or an inclusive range "1..12"; each in
+  /// [min, max].
+  std::vector<long long> integer_list(const std::string& key, long long min, long long max,
+                                      std::optional<std::vector<long long>> fallback =
+                                          std::nullopt) const;
+  /// A sub-table; an empty one if absent and not required.
+  TomlTable table(const std::string& key, bool required = false) const;
+  /// An array of tables ([[key]] blocks).
+  std::vector<TomlTable> table_array(const std::string& key, bool required = false) const;
+
+  /// @throws InputError for the first key of this table that no getter asked for, with the
+  /// nearest known key as suggestion. Call after reading the table.
+  void reject_unknown_keys() const;
+
+ private:
+  [[noreturn]] void fail(const std::string& key, const std::string& value,
+                         const std::string& allowed) const;
+  std::string value_text(const std::string& key) const;
+
+  std::shared_ptr<const toml::table> root_;
+  const toml::table* table_;
+  std::string file_;
+  std::string prefix_;
+  mutable std::set<std::string> asked_;
+};
+
+/// Parses a TOML file. @throws InputError with line and column if it cannot be read or parsed.
+TomlTable parse_toml_file(const std::string& path);
+/// Parses TOML text; `name` stands for the file in messages.
+TomlTable parse_toml_string(const std::string& text, const std::string& name);
+
+/// Levenshtein distance, for suggestions.
+std::size_t edit_distance(const std::string& a, const std::string& b);
+
+}  // namespace hpcontact::io

@@ -1,0 +1,42 @@
+// CellMap: bilinear geometry of one cell.
+#include "mesh/cell_map.hpp"
+
+#include <Eigen/LU>
+#include <cmath>
+
+namespace hpcontact::mesh {
+
+CellMap::CellMap(const QuadMesh& mesh, int cell) {
+  const auto& v = mesh.cell(cell);
+  const Point &p0 = mesh.vertex(v[0]), &p1 = mesh.vertex(v[1]), &p2 = mesh.vertex(v[2]),
+              &p3 = mesh.vertex(v[3]);
+  a_ = 0.25 * (p0 + p1 + p2 + p3);
+  b_ = 0.25 * (-p0 + p1 + p2 - p3);
+  c_ = 0.25 * (-p0 - p1 + p2 + p3);
+  d_ = 0.25 * (p0 - p1 + p2 - p3);
+}
+
+Point CellMap::map(double xi, double eta) const { return a_ + b_ * xi + c_ * eta + d_ * xi * eta; }
+
+Eigen::Matrix2d CellMap::jacobian(double xi, double eta) const {
+  Eigen::Matrix2d j;
+  j.col(0) = b_ + d_ * eta;
+  j.col(1) = c_ + d_ * xi;
+  return j;
+}
+
+std::optional<Eigen::Vector2d> CellMap::inverse(const Point& x, double tolerance) const {
+  Eigen::Vector2d ref(0.0, 0.0);
+  const double scale = b_.norm() + c_.norm();
+  for (int iteration = 0; iteration < 30; ++iteration) {
+    const Point residual = map(ref.x(), ref.y()) - x;
+    if (residual.norm() <= 1e-14 * scale) break;
+    ref -= jacobian(ref.x(), ref.y()).lu().solve(residual);
+    // Far outside the cell the Newton iterate may wander off; stop early.
+    if (ref.cwiseAbs().maxCoeff() > 10.0) return std::nullopt;
+  }
+  if (ref.cwiseAbs().maxCoeff() > 1.0 + tolerance) return std::nullopt;
+  return ref.cwiseMax(-1.0).cwiseMin(1.0);
+}
+
+}  // namespace hpcontact::mesh

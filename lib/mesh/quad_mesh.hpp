@@ -1,0 +1,89 @@
+// Conforming quadrilateral mesh T_h of a 2-D domain with bilinear cell maps Ψ_T and boundary
+// edges carrying a label (from the generator or a Gmsh physical group) and a BoundaryPart.
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+#include <string>
+#include <vector>
+
+namespace hpcontact::mesh {
+
+using Point = Eigen::Vector2d;
+
+/// Which boundary condition an edge carries. Interior edges are `interior`.
+enum class BoundaryPart : unsigned char { interior, neumann, dirichlet, contact };
+
+std::string to_string(BoundaryPart part);
+
+/// Local numbering on the reference square [-1,1]²:
+///   vertices  0:(-1,-1)  1:(1,-1)  2:(1,1)  3:(-1,1)   (counterclockwise)
+///   edges     0: η=-1 (v0→v1)   1: ξ=+1 (v1→v2)   2: η=+1 (v3→v2)   3: ξ=-1 (v0→v3)
+/// Each local edge is parametrized by t ∈ [-1,1] running in the direction given above.
+/// A global edge runs from its lower to its higher global vertex index; edge_sign tells whether
+/// the local direction agrees (+1) or not (-1).
+class QuadMesh {
+ public:
+  /// Builds topology and checks validity: every cell must be a strictly convex,
+  /// counterclockwise quadrilateral, and every edge shared by at most two cells.
+  /// @throws InputError naming `origin` otherwise.
+  QuadMesh(std::vector<Point> vertices, std::vector<std::array<int, 4>> cells,
+           const std::string& origin = "mesh");
+
+  int n_vertices() const { return static_cast<int>(vertices_.size()); }
+  int n_cells() const { return static_cast<int>(cells_.size()); }
+  int n_edges() const { return static_cast<int>(edges_.size()); }
+
+  const Point& vertex(int v) const { return vertices_[v]; }
+  const std::vector<Point>& vertices() const { return vertices_; }
+  const std::array<int, 4>& cell(int c) const { return cells_[c]; }
+  /// Global vertex indices of edge e, lower index first.
+  const std::array<int, 2>& edge(int e) const { return edges_[e]; }
+  int cell_edge(int c, int local_edge) const { return cell_edges_[c][local_edge]; }
+  /// +1 if the local direction of local_edge of cell c agrees with the global edge direction.
+  int edge_sign(int c, int local_edge) const { return cell_edge_signs_[c][local_edge]; }
+  /// The one or two cells adjacent to edge e (second entry -1 on the boundary).
+  const std::array<int, 2>& edge_cells(int e) const { return edge_cells_[e]; }
+  /// Local edge index of edge e within cell edge_cells(e)[k].
+  int local_edge_of(int e, int k) const;
+  bool is_boundary_edge(int e) const { return edge_cells_[e][1] < 0; }
+  const std::vector<int>& boundary_edges() const { return boundary_edges_; }
+
+  Point edge_midpoint(int e) const;
+  /// Outward unit normal of boundary edge e (straight edges).
+  Point boundary_normal(int e) const;
+  double edge_length(int e) const;
+
+  /// Label of a boundary edge ("bottom", a Gmsh physical name, ...); empty for interior edges.
+  const std::string& edge_label(int e) const { return edge_labels_[e]; }
+  void set_edge_label(int e, std::string label) { edge_labels_[e] = std::move(label); }
+  BoundaryPart edge_part(int e) const { return edge_parts_[e]; }
+  void set_edge_part(int e, BoundaryPart part);
+
+  /// Mesh size h: the longest edge (2/n for the n × n paper square).
+  double longest_edge() const;
+
+  /// Vertex positions may be moved (perturbation, grading) without changing topology.
+  /// @throws InputError if a cell becomes invalid.
+  void move_vertices(std::vector<Point> new_positions, const std::string& origin);
+
+ private:
+  void build_topology(const std::string& origin);
+  void check_cells(const std::string& origin) const;
+
+  std::vector<Point> vertices_;
+  std::vector<std::array<int, 4>> cells_;
+  std::vector<std::array<int, 2>> edges_;
+  std::vector<std::array<int, 4>> cell_edges_;
+  std::vector<std::array<int, 4>> cell_edge_signs_;
+  std::vector<std::array<int, 2>> edge_cells_;
+  std::vector<int> boundary_edges_;
+  std::vector<std::string> edge_labels_;
+  std::vector<BoundaryPart> edge_parts_;
+};
+
+/// Local vertex pair (start, end) of each local edge, in the local direction.
+inline constexpr std::array<std::array<int, 2>, 4> kLocalEdgeVertices{
+    {{0, 1}, {1, 2}, {3, 2}, {0, 3}}};
+
+}  // namespace hpcontact::mesh

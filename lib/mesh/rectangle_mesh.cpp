@@ -1,0 +1,105 @@
+// Rectangle mesh generator, random perturbation and boundary-part assignment.
+#include "mesh/rectangle_mesh.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "core/error.hpp"
+
+namespace hpcontact::mesh {
+
+QuadMesh make_rectangle_mesh(const Rectangle& r, int n_x, int n_y) {
+  if (n_x < 1) throw_bad_input("rectangle mesh", "n_x", std::to_string(n_x), "must be >= 1");
+  if (n_y < 1) throw_bad_input("rectangle mesh", "n_y", std::to_string(n_y), "must be >= 1");
+  if (!(r.x_max > r.x_min) || !(r.y_max > r.y_min))
+    throw InputError("rectangle mesh: the bounds must satisfy x_min < x_max and y_min < y_max");
+  std::vector<Point> vertices;
+  vertices.reserve(static_cast<std::size_t>(n_x + 1) * (n_y + 1));
+  for (int j = 0; j <= n_y; ++j)
+    for (int i = 0; i <= n_x; ++i)
+      vertices.emplace_back(r.x_min + (r.x_max - r.x_min) * i / n_x,
+                            r.y_min + (r.y_max - r.y_min) * j / n_y);
+  auto index = [n_x](int i, int j) { return j * (n_x + 1) + i; };
+  std::vector<std::array<int, 4>> cells;
+  cells.reserve(static_cast<std::size_t>(n_x) * n_y);
+  for (int j = 0; j < n_y; ++j)
+    for (int i = 0; i < n_x; ++i)
+      cells.push_back({index(i, j), index(i + 1, j), index(i + 1, j + 1), index(i, j + 1)});
+  QuadMesh mesh(std::move(vertices), std::move(cells), "rectangle mesh");
+  const double tol_x = 1e-9 * (r.x_max - r.x_min), tol_y = 1e-9 * (r.y_max - r.y_min);
+  for (int e : mesh.boundary_edges()) {
+    const Point m = mesh.edge_midpoint(e);
+    if (std::abs(m.y() - r.y_min) < tol_y) mesh.set_edge_label(e, "bottom");
+    else if (std::abs(m.x() - r.x_max) < tol_x) mesh.set_edge_label(e, "right");
+    else if (std::abs(m.y() - r.y_max) < tol_y) mesh.set_edge_label(e, "top");
+    else mesh.set_edge_label(e, "left");
+  }
+  return mesh;
+}
+
+void perturb_interior_vertices(QuadMesh& mesh, double amplitude, std::uint32_t seed) {
+  if (!(amplitude >= 0.0 && amplitude < 0.25))
+    throw_bad_input("mesh perturbation", "amplitude", std::to_string(amplitude),
+                    "must be in [0, 0.25) so that cells stay convex");
+  std::vector<bool> on_boundary(mesh.n_vertices(), false);
+  std::vector<double> shortest(mesh.n_vertices(), INFINITY);
+  for (int e = 0; e < mesh.n_edges(); ++e) {
+    const double length = mesh.edge_length(e);
+    for (int v : mesh.edge(e)) {
+      shortest[v] = std::min(shortest[v], length);
+      if (mesh.is_boundary_edge(e)) on_boundary[v] = true;
+    }
+  }
+  std::mt19937 generator(seed);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  std::vector<Point> moved = mesh.vertices();
+  for (int v = 0; v < mesh.n_vertices(); ++v) {
+    if (on_boundary[v]) continue;
+    moved[v] += amplitude * shortest[v] * Point(uniform(generator), uniform(generator));
+  }
+  mesh.move_vertices(std::move(moved), "perturbed mesh");
+}
+
+int assign_boundary_part(QuadMesh& mesh, BoundaryPart part,
+                         const std::function<bool(const Point&)>& contains) {
+  int count = 0;
+  for (int e : mesh.boundary_edges())
+    if (contains(mesh.edge_midpoint(e))) {
+      mesh.set_edge_part(e, part);
+      ++count;
+    }
+  return count;
+}
+
+int assign_boundary_parts_by_label(QuadMesh& mesh,
+                                   const std::map<std::string, BoundaryPart>& part_of_label) {
+  int count = 0;
+  for (int e : mesh.boundary_edges()) {
+    const auto it = part_of_label.find(mesh.edge_label(e));
+    if (it == part_of_label.end()) continue;
+    mesh.set_edge_part(e, it->second);
+    ++count;
+  }
+  return count;
+}
+
+void assign_paper_boundary_parts(QuadMesh& mesh) {
+  constexpr double tol = 1e-9;
+  assign_boundary_part(mesh, BoundaryPart::contact,
+                       [](const Point& m) { return std::abs(m.y() + 1.0) < tol; });
+  assign_boundary_part(mesh, BoundaryPart::dirichlet, [](const Point& m) {
+    return std::abs(m.y() - 1.0) < tol || (std::abs(m.x() - 1.0) < tol && m.y() > 0.0);
+  });
+}
+
+QuadMesh make_paper_square_mesh(int n) {
+  if (n < 2 || n % 2 != 0)
+    throw_bad_input("paper square", "n", std::to_string(n),
+                    "must be even and >= 2 so that (1,0), where Γ_D ends, is a mesh vertex");
+  QuadMesh mesh = make_rectangle_mesh(Rectangle{}, n, n);
+  assign_paper_boundary_parts(mesh);
+  return mesh;
+}
+
+}  // namespace hpcontact::mesh

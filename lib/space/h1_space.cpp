@@ -1,0 +1,95 @@
+// H1Space: dof numbering with the minimum rule, edge orientation and Dirichlet elimination.
+#include "space/h1_space.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+
+namespace hpcontact::space {
+namespace {
+
+// Lobatto indices (i, j) of the local vertex functions: N_0 = (1-t)/2 is 1 at t = -1.
+constexpr std::array<std::array<int, 2>, 4> kVertexIndex{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
+
+// Mode k on local edge `local`: the index along the edge is k, across it the vertex function
+// that is 1 on that edge.
+std::array<int, 2> edge_mode_index(int local, int k) {
+  switch (local) {
+    case 0: return {k, 0};
+    case 1: return {1, k};
+    case 2: return {k, 1};
+    default: return {0, k};
+  }
+}
+
+}  // namespace
+
+H1Space::H1Space(const mesh::QuadMesh& mesh, int degree)
+    : H1Space(mesh, std::vector<int>(mesh.n_cells(), degree)) {}
+
+H1Space::H1Space(const mesh::QuadMesh& mesh, std::vector<int> cell_degrees)
+    : mesh_(&mesh), cell_degrees_(std::move(cell_degrees)) {
+  if (static_cast<int>(cell_degrees_.size()) != mesh.n_cells())
+    throw InputError("degree distribution has " + std::to_string(cell_degrees_.size()) +
+                     " entries but the mesh has " + std::to_string(mesh.n_cells()) + " cells");
+  for (int c = 0; c < mesh.n_cells(); ++c)
+    if (cell_degrees_[c] < 1)
+      throw_bad_input("degree distribution", "p", std::to_string(cell_degrees_[c]),
+                      "must be >= 1 (cell " + std::to_string(c) + ")");
+  build();
+}
+
+void H1Space::build() {
+  const auto& mesh = *mesh_;
+  max_degree_ = *std::max_element(cell_degrees_.begin(), cell_degrees_.end());
+  edge_degrees_.assign(mesh.n_edges(), 0);
+  for (int e = 0; e < mesh.n_edges(); ++e) {
+    const auto& cells = mesh.edge_cells(e);
+    edge_degrees_[e] = cell_degrees_[cells[0]];
+    if (cells[1] >= 0) edge_degrees_[e] = std::min(edge_degrees_[e], cell_degrees_[cells[1]]);
+  }
+
+  // Dirichlet elimination: closed Γ_D edges, so their end points are eliminated too.
+  std::vector<bool> vertex_fixed(mesh.n_vertices(), false);
+  std::vector<bool> edge_fixed(mesh.n_edges(), false);
+  for (int e : mesh.boundary_edges())
+    if (mesh.edge_part(e) == mesh::BoundaryPart::dirichlet) {
+      edge_fixed[e] = true;
+      vertex_fixed[mesh.edge(e)[0]] = vertex_fixed[mesh.edge(e)[1]] = true;
+    }
+
+  int next = 0;
+  std::vector<int> vertex_dof(mesh.n_vertices(), -1);
+  for (int v = 0; v < mesh.n_vertices(); ++v)
+    if (!vertex_fixed[v]) vertex_dof[v] = next++;
+  std::vector<int> edge_first_dof(mesh.n_edges(), -1);  // dof of mode 2; modes are contiguous
+  for (int e = 0; e < mesh.n_edges(); ++e)
+    if (!edge_fixed[e] && edge_degrees_[e] >= 2) {
+      edge_first_dof[e] = next;
+      next += edge_degrees_[e] - 1;
+    }
+
+  cell_shapes_.assign(mesh.n_cells(), {});
+  for (int c = 0; c < mesh.n_cells(); ++c) {
+    auto& shapes = cell_shapes_[c];
+    const int p = cell_degrees_[c];
+    for (int k = 0; k < 4; ++k)
+      shapes.push_back({kVertexIndex[k][0], kVertexIndex[k][1], vertex_dof[mesh.cell(c)[k]], 1.0});
+    for (int local = 0; local < 4; ++local) {
+      const int e = mesh.cell_edge(c, local);
+      const int sign = mesh.edge_sign(c, local);
+      for (int k = 2; k <= edge_degrees_[e]; ++k) {
+        const auto [i, j] = edge_mode_index(local, k);
+        const int dof = edge_first_dof[e] < 0 ? -1 : edge_first_dof[e] + (k - 2);
+        // N_k(-t) = (-1)^k N_k(t): a reversed edge flips the odd modes.
+        shapes.push_back({i, j, dof, (sign < 0 && k % 2 == 1) ? -1.0 : 1.0});
+      }
+    }
+    for (int j = 2; j <= p; ++j)
+      for (int i = 2; i <= p; ++i) shapes.push_back({i, j, next++, 1.0});
+  }
+  n_dofs_ = next;
+}
+
+}  // namespace hpcontact::space

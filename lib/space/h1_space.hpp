@@ -1,0 +1,55 @@
+// The H¹-conforming space S^p(T_h) (the paper's §5) of tensor-product polynomials of degree p_T
+// per cell, hierarchical Lobatto basis, Dirichlet dofs on Γ_D eliminated.
+#pragma once
+
+#include <vector>
+
+#include "mesh/quad_mesh.hpp"
+
+namespace hpcontact::space {
+
+/// One local shape function of a cell: sign · N_i(ξ) N_j(η), with N_k the Lobatto functions.
+/// `dof` is the global free dof, or -1 if the function is eliminated by the Dirichlet condition.
+struct LocalShape {
+  int i = 0;
+  int j = 0;
+  int dof = -1;
+  double sign = 1.0;
+};
+
+/// Degree distribution and conformity rule ("minimum rule"): cell T carries the full
+/// interior tensor space of degree p_T; an edge carries the modes of degree
+/// p_e = min(p_T over the cells sharing it). So neighbouring cells of different degree share
+/// exactly the traces of degree p_e on their common edge, and the space stays conforming; every
+/// cell space lies between Q_{min p} and Q_{p_T}.
+///
+/// Global dof order: vertex dofs, then edge modes (edge by edge, degree 2..p_e), then interior
+/// modes; Dirichlet dofs (vertices on closed Γ_D edges, modes of Γ_D edges) are dropped, so the
+/// discrete functions vanish on Γ_D (the paper's H¹(Ω, Γ_D)).
+class H1Space {
+ public:
+  /// @throws InputError if the distribution has the wrong size or a degree < 1.
+  H1Space(const mesh::QuadMesh& mesh, std::vector<int> cell_degrees);
+  /// Uniform degree p.
+  H1Space(const mesh::QuadMesh& mesh, int degree);
+
+  const mesh::QuadMesh& mesh() const { return *mesh_; }
+  int n_dofs() const { return n_dofs_; }
+  int cell_degree(int cell) const { return cell_degrees_[cell]; }
+  int edge_degree(int edge) const { return edge_degrees_[edge]; }
+  int max_degree() const { return max_degree_; }
+  /// Local shape functions of a cell (vertices, edges, interior), with their global dofs.
+  const std::vector<LocalShape>& cell_shapes(int cell) const { return cell_shapes_[cell]; }
+
+ private:
+  void build();
+
+  const mesh::QuadMesh* mesh_;
+  std::vector<int> cell_degrees_;
+  std::vector<int> edge_degrees_;
+  std::vector<std::vector<LocalShape>> cell_shapes_;
+  int n_dofs_ = 0;
+  int max_degree_ = 1;
+};
+
+}  // namespace hpcontact::space

@@ -1,0 +1,140 @@
+// Reading and running a convergence study.
+#include "studies/convergence_study.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "core/expression.hpp"
+#include "core/timer.hpp"
+#include "fe/error_norms.hpp"
+#include "io/toml_reader.hpp"
+#include "mesh/rectangle_mesh.hpp"
+#include "problems/poisson_problem.hpp"
+
+namespace hpcontact::studies {
+namespace {
+
+struct SolutionExpressions {
+  Expression u, ux, uy, f;
+};
+
+SolutionExpressions parse_solution(const ConvergenceStudy& study) {
+  auto origin = [&](const char* key) { return study.file + ": key 'solution." + key + "'"; };
+  return {Expression(study.u, origin("u")), Expression(study.ux, origin("ux")),
+          Expression(study.uy, origin("uy")), Expression(study.f, origin("f"))};
+}
+
+// A wrong derivative in a study file would show up as a convergence failure far from its cause;
+// catch it here with central differences at a few interior points.
+void check_solution_consistency(const ConvergenceStudy& study, const SolutionExpressions& s) {
+  const double d = 1e-3;
+  for (const auto& [x, y] : {std::pair{-0.63, -0.41}, {0.27, 0.55}, {0.71, -0.83}, {-0.12, 0.08}}) {
+    const double ux = (s.u(x + d, y) - s.u(x - d, y)) / (2 * d);
+    const double uy = (s.u(x, y + d) - s.u(x, y - d)) / (2 * d);
+    const double laplacian =
+        (s.u(x + d, y) + s.u(x - d, y) + s.u(x, y + d) + s.u(x, y - d) - 4 * s.u(x, y)) / (d * d);
+    auto check = [&](const char* key, double given, double numeric) {
+      if (std::abs(given - numeric) > 1e-4 * (1.0 + std::abs(numeric)))
+        throw_bad_input(study.file, std::string("solution.") + key, std::to_string(given),
+                        "disagrees with the finite-difference value " + std::to_string(numeric) +
+                            " computed from solution.u at (" + std::to_string(x) + ", " +
+                            std::to_string(y) + ")");
+    };
+    check("ux", s.ux(x, y), ux);
+    check("uy", s.uy(x, y), uy);
+    check("f", s.f(x, y), -laplacian);
+  }
+  for (double t : {-0.9, -0.3, 0.4, 0.95}) {
+    for (const auto& [x, y] : {std::pair{t, 1.0}, {1.0, 0.5 * (t + 1.0)}}) {
+      if (std::abs(s.u(x, y)) > 1e-12)
+        throw_bad_input(study.file, "solution.u", std::to_string(s.u(x, y)) + " at (" +
+                                                      std::to_string(x) + ", " +
+                                                      std::to_string(y) + ")",
+                        "must vanish on Γ_D (the top edge and {1} × [0, 1])");
+    }
+  }
+}
+
+}  // namespace
+
+ConvergenceStudy read_convergence_study(const std::string& path) {
+  const io::TomlTable root = io::parse_toml_file(path);
+  ConvergenceStudy study;
+  study.file = path;
+  const auto solution = root.table("solution", true);
+  study.u = solution.string("u");
+  study.ux = solution.string("ux");
+  study.uy = solution.string("uy");
+  study.f = solution.string("f");
+  solution.reject_unknown_keys();
+  const auto mesh = root.table("mesh");
+  study.perturb = mesh.number_in("perturb", 0.0, 0.24, 0.0);
+  study.seed = static_cast<std::uint32_t>(mesh.integer("seed", 0, 1u << 30, 1));
+  mesh.reject_unknown_keys();
+  for (const auto& run : root.table_array("runs", true)) {
+    const auto degrees = run.integer_list("p", 1, 20);
+    const auto sizes = run.integer_list("n", 2, 4096);
+    for (long long n : sizes)
+      if (n % 2 != 0)
+        throw_bad_input(path, run.qualified("n"), std::to_string(n),
+                        "must be even so that (1,0), where Γ_D ends, is a mesh vertex");
+    run.reject_unknown_keys();
+    for (long long p : degrees)
+      for (long long n : sizes) {
+        const std::pair point{static_cast<int>(p), static_cast<int>(n)};
+        if (std::find(study.points.begin(), study.points.end(), point) == study.points.end())
+          study.points.push_back(point);
+      }
+  }
+  root.reject_unknown_keys();
+  check_solution_consistency(study, parse_solution(study));
+  return study;
+}
+
+std::vector<ConvergenceRow> run_convergence_study(
+    const ConvergenceStudy& study, const std::function<void(const ConvergenceRow&)>& on_row) {
+  const SolutionExpressions s = parse_solution(study);
+  problems::PoissonData data;
+  data.f = [&](const mesh::Point& x) { return s.f(x.x(), x.y()); };
+  data.neumann = [&](const mesh::Point& x, const mesh::Point& normal) {
+    return s.ux(x.x(), x.y()) * normal.x() + s.uy(x.x(), x.y()) * normal.y();
+  };
+  const fe::ExactSolution exact{
+      [&](const mesh::Point& x) { return s.u(x.x(), x.y()); },
+      [&](const mesh::Point& x) {
+        return Eigen::Vector2d(s.ux(x.x(), x.y()), s.uy(x.x(), x.y()));
+      }};
+
+  std::vector<ConvergenceRow> rows;
+  for (const auto& [p, n] : study.points) {
+    Stopwatch clock;
+    mesh::QuadMesh mesh = mesh::make_paper_square_mesh(n);
+    if (study.perturb > 0.0) mesh::perturb_interior_vertices(mesh, study.perturb, study.seed);
+    const space::H1Space space(mesh, p);
+    const auto solution = problems::solve_poisson(space, data);
+    ConvergenceRow row;
+    row.seconds = clock.seconds();
+    const auto errors = fe::compute_errors(space, solution.coefficients, exact);
+    row.p = p;
+    row.n = n;
+    row.ndofs = space.n_dofs();
+    row.h = mesh.longest_edge();
+    row.error_h1 = errors.h1;
+    row.error_l2 = errors.l2;
+    row.error_energy = errors.energy;
+    rows.push_back(row);
+    if (on_row) on_row(row);
+  }
+  return rows;
+}
+
+io::CsvTable convergence_table(const std::vector<ConvergenceRow>& rows) {
+  io::CsvTable table({"p", "n", "ndofs", "h", "error_h1", "error_l2", "seconds"});
+  for (const auto& r : rows)
+    table.add_row({static_cast<long long>(r.p), static_cast<long long>(r.n),
+                   static_cast<long long>(r.ndofs), r.h, r.error_h1, r.error_l2, r.seconds});
+  return table;
+}
+
+}  // namespace hpcontact::studies

@@ -1,0 +1,102 @@
+// Stage 3, mesh: rectangle topology, boundary parts, perturbation, validity checks, cell maps and
+// point location.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/error.hpp"
+#include "fe/point_locator.hpp"
+#include "mesh/cell_map.hpp"
+#include "mesh/rectangle_mesh.hpp"
+
+using namespace hpcontact;
+using mesh::BoundaryPart;
+
+namespace {
+double part_length(const mesh::QuadMesh& m, BoundaryPart part) {
+  double length = 0.0;
+  for (int e : m.boundary_edges())
+    if (m.edge_part(e) == part) length += m.edge_length(e);
+  return length;
+}
+}  // namespace
+
+TEST(RectangleMesh, CountsAndTopology) {
+  const auto m = mesh::make_rectangle_mesh({0.0, 3.0, 0.0, 2.0}, 3, 2);
+  EXPECT_EQ(m.n_vertices(), 12);
+  EXPECT_EQ(m.n_cells(), 6);
+  EXPECT_EQ(m.n_edges(), 3 * 3 + 4 * 2);
+  EXPECT_EQ(m.boundary_edges().size(), 10u);
+  int interior = 0;
+  for (int e = 0; e < m.n_edges(); ++e) interior += m.is_boundary_edge(e) ? 0 : 1;
+  EXPECT_EQ(interior, 7);
+  EXPECT_DOUBLE_EQ(m.longest_edge(), 1.0);
+}
+
+TEST(RectangleMesh, OutwardNormalsAndLabels) {
+  const auto m = mesh::make_rectangle_mesh({}, 2, 2);
+  for (int e : m.boundary_edges()) {
+    const auto mid = m.edge_midpoint(e), n = m.boundary_normal(e);
+    // On the square (-1,1)², the outward normal points along the midpoint's largest coordinate.
+    EXPECT_NEAR(n.dot(mid), std::max(std::abs(mid.x()), std::abs(mid.y())), 1e-14);
+    if (m.edge_label(e) == "bottom") {
+      EXPECT_DOUBLE_EQ(n.y(), -1.0);
+    }
+    if (m.edge_label(e) == "left") {
+      EXPECT_DOUBLE_EQ(n.x(), -1.0);
+    }
+  }
+}
+
+TEST(PaperSquare, BoundaryPartsAsInSection7) {
+  const auto m = mesh::make_paper_square_mesh(8);
+  EXPECT_NEAR(part_length(m, BoundaryPart::contact), 2.0, 1e-14);
+  EXPECT_NEAR(part_length(m, BoundaryPart::dirichlet), 3.0, 1e-14);
+  EXPECT_NEAR(part_length(m, BoundaryPart::neumann), 3.0, 1e-14);
+  EXPECT_THROW(mesh::make_paper_square_mesh(7), InputError);
+}
+
+TEST(Mesh, ClockwiseOrDegenerateCellsAreRejected) {
+  std::vector<mesh::Point> v{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  EXPECT_NO_THROW(mesh::QuadMesh(v, {{0, 1, 2, 3}}));
+  EXPECT_THROW(mesh::QuadMesh(v, {{0, 3, 2, 1}}), InputError);
+  std::vector<mesh::Point> collapsed{{0, 0}, {1, 0}, {2, 0}, {0, 1}};
+  EXPECT_THROW(mesh::QuadMesh(collapsed, {{0, 1, 2, 3}}), InputError);
+  EXPECT_THROW(mesh::QuadMesh(v, {{0, 1, 2, 7}}), InputError);
+}
+
+TEST(Mesh, PerturbationKeepsBoundaryAndValidity) {
+  auto m = mesh::make_paper_square_mesh(8);
+  const auto before = m.vertices();
+  mesh::perturb_interior_vertices(m, 0.2, 42);
+  int moved = 0;
+  for (int v = 0; v < m.n_vertices(); ++v) {
+    const bool boundary = std::abs(std::abs(before[v].x()) - 1) < 1e-14 ||
+                          std::abs(std::abs(before[v].y()) - 1) < 1e-14;
+    if (boundary) {
+      EXPECT_EQ(m.vertex(v), before[v]);
+    }
+    if ((m.vertex(v) - before[v]).norm() > 1e-3) ++moved;
+  }
+  EXPECT_GT(moved, 40);
+  EXPECT_THROW(mesh::perturb_interior_vertices(m, 0.3, 1), InputError);
+}
+
+TEST(CellMap, InverseRoundTripAndLocator) {
+  auto m = mesh::make_paper_square_mesh(6);
+  mesh::perturb_interior_vertices(m, 0.2, 7);
+  const fe::PointLocator locator(m);
+  for (int c = 0; c < m.n_cells(); ++c) {
+    const mesh::CellMap map(m, c);
+    const mesh::Point x = map.map(0.31, -0.77);
+    const auto ref = map.inverse(x);
+    ASSERT_TRUE(ref.has_value());
+    EXPECT_NEAR(ref->x(), 0.31, 1e-12);
+    EXPECT_NEAR(ref->y(), -0.77, 1e-12);
+    const auto found = locator.locate(x);
+    ASSERT_TRUE(found.has_value());
+    EXPECT_EQ(found->cell, c);
+  }
+  EXPECT_FALSE(locator.locate({1.5, 0.0}).has_value());
+  EXPECT_TRUE(locator.locate({1.0, 1.0}).has_value());
+}

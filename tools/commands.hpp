@@ -1,0 +1,15 @@
+// Registration of the hpcontact subcommands; each lives in its own command_<name>.cpp.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace hpcontact::tools {
+
+/// A subcommand's action, run after parsing; returns the process exit code.
+using CommandAction = std::function<int()>;
+
+/// Adds `convergence` to the app; sets `action` when the subcommand is chosen.
+void add_convergence_command(CLI::App& app, CommandAction& action);
+
+}  // namespace hpcontact::tools
