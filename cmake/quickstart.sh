@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# One-command set-up and run on Debian 12: installs the missing Debian packages (apt-get, through
+# sudo when not root), configures and builds with CMake (Release, build/), then runs
+#   study  the main job: the studies, writing CSV and PNG into results/ (and the README figures)
+#   test   the GoogleTest suite through CTest
+# Idempotent: a second call installs nothing and rebuilds only what changed.
+set -euo pipefail
+
+usage() { echo "usage: bash cmake/quickstart.sh study|test" >&2; exit 2; }
+[ $# -eq 1 ] || usage
+mode=$1
+case "$mode" in study|test) ;; *) usage ;; esac
+
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+cd "$root"
+jobs=$(nproc 2>/dev/null || echo 2)
+
+# 1. Debian packages (the only source of dependencies; nothing is downloaded otherwise).
+packages=(build-essential cmake pkg-config libeigen3-dev petsc-dev slepc-dev libgsl-dev
+          libmuparser-dev libcli11-dev libtomlplusplus-dev libfmt-dev nlohmann-json3-dev
+          libsuitesparse-dev libgtest-dev libgmock-dev libbenchmark-dev python3-matplotlib)
+missing=()
+for package in "${packages[@]}"; do
+  status=$(dpkg-query -W -f='${Status}' "$package" 2>/dev/null || true)
+  [ "$status" = "install ok installed" ] || missing+=("$package")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "quickstart: installing ${missing[*]}" >&2
+  sudo=()
+  if [ "$(id -u)" -ne 0 ]; then
+    command -v sudo >/dev/null || { echo "quickstart: not root and no sudo: install ${missing[*]}" >&2; exit 1; }
+    sudo=(sudo)
+  fi
+  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update -qq
+  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+# 2. Configure (once) and build.
+if [ ! -f build/CMakeCache.txt ]; then
+  cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+fi
+cmake --build build -j "$jobs"
+
+# 3. Run.
+if [ "$mode" = test ]; then
+  cd build
+  exec ctest --output-on-failure -j "$jobs"
+fi
+
+python=""
+for candidate in /usr/bin/python3 python3; do
+  if "$candidate" -c "import matplotlib" 2>/dev/null; then python=$candidate; break; fi
+done
+[ -n "$python" ] || { echo "quickstart: no python3 with matplotlib (install python3-matplotlib)" >&2; exit 1; }
+
+mkdir -p results
+echo "== convergence study: studies/convergence/study.toml -> results/convergence" >&2
+build/bin/hpcontact convergence studies/convergence/study.toml --out results/convergence
+"$python" plots/plot_convergence.py results/convergence
+cp results/convergence/convergence.png studies/convergence/convergence.png
+echo "quickstart: done; CSV and PNG in results/" >&2
