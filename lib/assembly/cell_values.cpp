@@ -44,4 +44,15 @@ CellValues tabulate_cell(const space::H1Space& space, int cell, const std::vecto
   return out;
 }
 
+std::pair<std::vector<double>, std::vector<double>> edge_reference_points(
+    int local_edge, const std::vector<double>& t) {
+  const std::vector<double> minus{-1.0}, plus{1.0};
+  switch (local_edge) {
+    case 0: return {t, minus};
+    case 1: return {plus, t};
+    case 2: return {t, plus};
+    default: return {minus, t};
+  }
+}
+
 }  // namespace hpcontact::assembly

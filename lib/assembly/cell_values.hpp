@@ -3,6 +3,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <utility>
 #include <vector>
 
 #include "space/h1_space.hpp"
@@ -22,6 +23,11 @@ struct CellValues {
 
 CellValues tabulate_cell(const space::H1Space& space, int cell, const std::vector<double>& xi,
                          const std::vector<double>& eta);
+
+/// Reference grid (ξ list, η list) of the points with local edge parameters t on `local_edge`
+/// (see QuadMesh for the local edge numbering and directions).
+std::pair<std::vector<double>, std::vector<double>> edge_reference_points(
+    int local_edge, const std::vector<double>& t);
 
 /// Gauss points per direction used for the volume integrals of a cell of degree p: p + 2.
 /// Mass (degree 2p+1 per variable with the bilinear Jacobian) needs p + 1; the extra point

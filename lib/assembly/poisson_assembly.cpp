@@ -23,17 +23,6 @@ void scatter_matrix(const std::vector<space::LocalShape>& shapes, const Eigen::M
   }
 }
 
-std::pair<std::vector<double>, std::vector<double>> reference_edge_points(
-    int local_edge, const std::vector<double>& t) {
-  const std::vector<double> minus{-1.0}, plus{1.0};
-  switch (local_edge) {
-    case 0: return {t, minus};
-    case 1: return {plus, t};
-    case 2: return {t, plus};
-    default: return {minus, t};
-  }
-}
-
 }  // namespace
 
 VolumeMatrices assemble_volume_matrices(const space::H1Space& space,
@@ -102,7 +91,7 @@ Eigen::VectorXd assemble_boundary_load(
     const int c = mesh.edge_cells(e)[0];
     const int local_edge = mesh.local_edge_of(e, 0);
     const auto& rule = basis::gauss_legendre(space.cell_degree(c) + 4);
-    const auto [xi, eta] = reference_edge_points(local_edge, rule.points);
+    const auto [xi, eta] = edge_reference_points(local_edge, rule.points);
     const CellValues values = tabulate_cell(space, c, xi, eta);
     const mesh::Point normal = mesh.boundary_normal(e);
     // Straight edges: ds = (|edge| / 2) dt.

@@ -3,6 +3,9 @@
 
 #include <fmt/format.h>
 
+#include <fstream>
+#include <sstream>
+
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 
@@ -31,6 +34,23 @@ std::string CsvTable::to_string() const {
     out += '\n';
   }
   return out;
+}
+
+void append_csv_rows(const std::filesystem::path& path, const CsvTable& table) {
+  std::string content = table.to_string();
+  if (std::filesystem::exists(path)) {
+    std::ifstream in(path);
+    std::stringstream existing;
+    existing << in.rdbuf();
+    std::string old = existing.str();
+    const std::string header = content.substr(0, content.find('\n') + 1);
+    if (old.compare(0, header.size(), header) != 0)
+      throw InputError("CSV file '" + path.string() + "' has other columns than " +
+                       header.substr(0, header.size() - 1) + ": choose another file");
+    if (!old.empty() && old.back() != '\n') old += '\n';
+    content = old + content.substr(header.size());
+  }
+  write_file_atomically(path, content);
 }
 
 void CsvTable::write(const std::filesystem::path& path) const {

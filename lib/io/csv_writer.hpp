@@ -26,6 +26,10 @@ class CsvTable {
   std::vector<std::vector<CsvCell>> rows_;
 };
 
+/// Appends the rows of `table` to the CSV file at `path` (created with a header if absent). The
+/// file is rewritten atomically. @throws InputError if its header differs from table's columns.
+void append_csv_rows(const std::filesystem::path& path, const CsvTable& table);
+
 /// Formats a double with 17 significant digits, so that reading it back gives the same value.
 std::string format_full_precision(double value);
 

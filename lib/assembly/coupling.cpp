@@ -1,0 +1,88 @@
+// Coupling assembly interval by interval of the common refinement.
+#include "assembly/coupling.hpp"
+
+#include <cmath>
+
+#include "assembly/cell_values.hpp"
+#include "basis/quadrature.hpp"
+#include "core/error.hpp"
+
+namespace hpcontact::assembly {
+
+std::vector<CommonInterval> common_intervals(const mesh::ContactBoundary& contact,
+                                             const mesh::BoundaryMesh& boundary_mesh) {
+  if (std::abs(boundary_mesh.length() - contact.length()) > 1e-10 * contact.length())
+    throw InputError("the boundary mesh T_{C,H} spans [0, " +
+                     std::to_string(boundary_mesh.length()) + "] but Γ_C has length " +
+                     std::to_string(contact.length()));
+  const auto nodes = mesh::common_refinement(contact.breakpoints(), boundary_mesh.nodes());
+  std::vector<CommonInterval> intervals;
+  for (std::size_t k = 0; k + 1 < nodes.size(); ++k) {
+    const double middle = 0.5 * (nodes[k] + nodes[k + 1]);
+    intervals.push_back({nodes[k], nodes[k + 1], contact.edge_index_at(middle),
+                         boundary_mesh.segment_at(middle)});
+  }
+  return intervals;
+}
+
+Eigen::SparseMatrix<double> assemble_coupling(const space::H1Space& space,
+                                              const mesh::ContactBoundary& contact,
+                                              const space::MultiplierSpace& multipliers,
+                                              const BoundaryFunction& weight) {
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (const auto& interval : common_intervals(contact, multipliers.boundary_mesh())) {
+    const auto& trace = contact.edges()[interval.trace_edge];
+    const int p = space.cell_degree(trace.cell), pc = multipliers.segment_degree(interval.segment);
+    // On straight edges φ_j|edge has degree p in s and μ_i degree p_C: exact for p + p_C.
+    const int n_points = basis::gauss_points_for_degree(p + pc) + (weight ? 4 : 0);
+    const auto& rule = basis::gauss_legendre(n_points);
+    const double half = 0.5 * (interval.s_end - interval.s_begin);
+    std::vector<double> t(n_points), s(n_points);
+    for (int q = 0; q < n_points; ++q) {
+      s[q] = interval.s_begin + half * (rule.points[q] + 1.0);
+      t[q] = trace.local_parameter(s[q]);
+    }
+    const auto [xi, eta] = edge_reference_points(trace.local_edge, t);
+    const CellValues cell = tabulate_cell(space, trace.cell, xi, eta);
+    Eigen::MatrixXd mu(n_points, pc + 1);
+    for (int q = 0; q < n_points; ++q) {
+      double w = rule.weights[q] * half;
+      if (weight) w *= weight(mesh::Point(cell.points(q, 0), cell.points(q, 1)));
+      mu.row(q) = w * multipliers.basis_values(interval.segment,
+                                               multipliers.local_coordinate(interval.segment, s[q]))
+                          .transpose();
+    }
+    const Eigen::MatrixXd local = mu.transpose() * cell.values;  // (p_C + 1, n_shapes)
+    const auto& shapes = space.cell_shapes(trace.cell);
+    const int first = multipliers.first_dof(interval.segment);
+    for (std::size_t j = 0; j < shapes.size(); ++j) {
+      if (shapes[j].dof < 0) continue;
+      for (int i = 0; i <= pc; ++i)
+        if (local(i, j) != 0.0) triplets.emplace_back(first + i, shapes[j].dof, local(i, j));
+    }
+  }
+  Eigen::SparseMatrix<double> coupling(multipliers.n_dofs(), space.n_dofs());
+  coupling.setFromTriplets(triplets.begin(), triplets.end());
+  return coupling;
+}
+
+Eigen::VectorXd assemble_multiplier_load(const mesh::ContactBoundary& contact,
+                                         const space::MultiplierSpace& multipliers,
+                                         const BoundaryFunction& g) {
+  Eigen::VectorXd load = Eigen::VectorXd::Zero(multipliers.n_dofs());
+  for (const auto& interval : common_intervals(contact, multipliers.boundary_mesh())) {
+    const int pc = multipliers.segment_degree(interval.segment);
+    const auto& rule = basis::gauss_legendre(basis::gauss_points_for_degree(pc) + 6);
+    const double half = 0.5 * (interval.s_end - interval.s_begin);
+    for (std::size_t q = 0; q < rule.points.size(); ++q) {
+      const double s = interval.s_begin + half * (rule.points[q] + 1.0);
+      const double tau = multipliers.local_coordinate(interval.segment, s);
+      load.segment(multipliers.first_dof(interval.segment), pc + 1) +=
+          rule.weights[q] * half * g(contact.point_at(s)) *
+          multipliers.basis_values(interval.segment, tau);
+    }
+  }
+  return load;
+}
+
+}  // namespace hpcontact::assembly

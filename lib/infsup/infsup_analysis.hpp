@@ -1,0 +1,40 @@
+// The inf-sup constant α(h, H, p, p_C) of (11) or (22): α² = λ_min(S_G, G), with the spurious
+// multiplier mode (the eigenvector) and the indicator Π of (20).
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+
+#include "infsup/generalized_eigen.hpp"
+#include "infsup/infsup_operators.hpp"
+#include "io/csv_writer.hpp"
+#include "space/multiplier_space.hpp"
+
+namespace hpcontact::infsup {
+
+enum class EigenBackend { slepc, dense };
+EigenBackend parse_eigen_backend(const std::string& text, const std::string& origin);
+
+struct InfSupResult {
+  double alpha = 0.0;          ///< sqrt(λ_min), ≥ 0
+  double lambda_min = 0.0;     ///< α²
+  double lambda_max = 0.0;     ///< largest eigenvalue of the same pencil
+  /// α² ≤ kRoundOffZero · λ_max: S_G is singular to working precision, α = 0 numerically.
+  bool singular = false;
+  Eigen::VectorXd mode;        ///< eigenvector over all multiplier dofs (0 off supp s), xᵀGx = 1
+  double pi = 0.0;             ///< Π(h, H, p, p_C), θ = 1
+  double h = 0.0, H = 0.0;
+  int n_primal_dofs = 0, n_multiplier_dofs = 0;
+  double seconds = 0.0;        ///< operators + eigenproblem
+  std::string method;          ///< eigen solver used
+  double residual = 0.0;       ///< relative eigen residual
+};
+
+InfSupResult analyse_infsup(const InfSupSetup& setup, EigenBackend backend);
+
+/// The mode sampled at `samples_per_segment` equidistant points of every segment (both ends
+/// included, so jumps show): columns x, mu, y, s (x, y physical, s arc length along Γ_C).
+io::CsvTable sample_mode(const mesh::QuadMesh& mesh, const space::MultiplierSpace& multipliers,
+                         const Eigen::VectorXd& mode, int samples_per_segment = 20);
+
+}  // namespace hpcontact::infsup

@@ -1,0 +1,115 @@
+// assemble_infsup_operators.
+#include "infsup/infsup_operators.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "assembly/poisson_assembly.hpp"
+#include "basis/quadrature.hpp"
+#include "core/error.hpp"
+#include "core/timer.hpp"
+#include "linalg/schur_complement.hpp"
+#include "mesh/contact_boundary.hpp"
+#include "space/multiplier_space.hpp"
+
+namespace hpcontact::infsup {
+
+GramNorm parse_gram_norm(const std::string& text, const std::string& origin) {
+  if (text == "interp" || text == "interpolation") return GramNorm::interpolation;
+  if (text == "extension") return GramNorm::extension;
+  throw_bad_input(origin, "norm", text, "must be one of: interp, extension");
+}
+
+PairingProblem parse_pairing_problem(const std::string& text, const std::string& origin) {
+  if (text == "signorini") return PairingProblem::signorini;
+  if (text == "friction") return PairingProblem::friction;
+  throw_bad_input(origin, "problem", text, "must be one of: signorini, friction");
+}
+
+std::string to_string(GramNorm norm) {
+  return norm == GramNorm::interpolation ? "interp" : "extension";
+}
+std::string to_string(PairingProblem problem) {
+  return problem == PairingProblem::signorini ? "signorini" : "friction";
+}
+
+double stability_indicator(double h, double H, int min_p, int max_pc) {
+  const double pc = std::max(1, max_pc);
+  return h / H * pc * pc / min_p;
+}
+
+namespace {
+
+// Segments on which s vanishes at every sample point carry no multiplier in (22).
+std::vector<int> dofs_meeting_support(const mesh::ContactBoundary& contact,
+                                      const space::MultiplierSpace& multipliers,
+                                      const assembly::BoundaryFunction& s) {
+  std::vector<int> dofs;
+  const auto& rule = basis::gauss_legendre(12);
+  for (int k = 0; k < multipliers.n_segments(); ++k) {
+    const double a = multipliers.boundary_mesh().segment_begin(k);
+    const double b = multipliers.boundary_mesh().segment_end(k);
+    const bool meets = std::any_of(rule.points.begin(), rule.points.end(), [&](double t) {
+      return s(contact.point_at(a + 0.5 * (b - a) * (t + 1.0))) != 0.0;
+    });
+    if (meets)
+      for (int i = 0; i <= multipliers.segment_degree(k); ++i) dofs.push_back(multipliers.first_dof(k) + i);
+  }
+  return dofs;
+}
+
+Eigen::MatrixXd restrict(const Eigen::MatrixXd& matrix, const std::vector<int>& dofs) {
+  Eigen::MatrixXd out(dofs.size(), dofs.size());
+  for (std::size_t i = 0; i < dofs.size(); ++i)
+    for (std::size_t j = 0; j < dofs.size(); ++j) out(i, j) = matrix(dofs[i], dofs[j]);
+  return out;
+}
+
+}  // namespace
+
+InfSupOperators assemble_infsup_operators(const InfSupSetup& setup) {
+  HPC_VERIFY(setup.mesh && setup.boundary_mesh, "inf-sup setup without meshes");
+  const bool friction = setup.problem == PairingProblem::friction;
+  if (friction && !setup.friction_bound)
+    throw InputError("the friction inf-sup problem (22) needs the friction bound s");
+
+  InfSupOperators out;
+  Stopwatch primal_clock;
+  const space::H1Space space(*setup.mesh, setup.cell_degrees);
+  const mesh::ContactBoundary contact(*setup.mesh);
+  const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
+  const auto matrices = assembly::assemble_volume_matrices(space, {.stiffness = true, .mass = true});
+  const linalg::SparseCholesky a_g(matrices.stiffness + matrices.mass);
+  const auto coupling = assembly::assemble_coupling(
+      space, contact, multipliers, friction ? setup.friction_bound : assembly::BoundaryFunction{});
+  const Eigen::MatrixXd s_g = linalg::schur_complement(a_g, coupling);
+  out.seconds_primal = primal_clock.seconds();
+
+  Stopwatch gram_clock;
+  const Eigen::MatrixXd gram =
+      setup.norm == GramNorm::interpolation
+          ? norms::interpolation_norm_gram(contact, multipliers, setup.interpolation_reference)
+          : norms::extension_norm_gram(*setup.mesh, setup.cell_degrees, multipliers,
+                                       setup.extension_reference);
+  out.seconds_gram = gram_clock.seconds();
+
+  if (friction) {
+    out.active_dofs = dofs_meeting_support(contact, multipliers, setup.friction_bound);
+    if (out.active_dofs.empty())
+      throw InputError("the friction bound s vanishes on all of Γ_C: no multiplier is left");
+    out.s_g = restrict(s_g, out.active_dofs);
+    out.gram = restrict(gram, out.active_dofs);
+  } else {
+    out.active_dofs.resize(multipliers.n_dofs());
+    for (int i = 0; i < multipliers.n_dofs(); ++i) out.active_dofs[i] = i;
+    out.s_g = s_g;
+    out.gram = gram;
+  }
+  out.n_primal_dofs = space.n_dofs();
+  out.n_multiplier_dofs = multipliers.n_dofs();
+  out.h = setup.mesh->longest_edge();
+  out.H = setup.boundary_mesh->mesh_size();
+  return out;
+}
+
+}  // namespace hpcontact::infsup

@@ -1,0 +1,59 @@
+// The matrices of the discrete inf-sup problem on S^p(T_h) × M^{p_C}(T_{C,H}):
+//   α² = λ_min of  S_G x = λ G x,   S_G = B A_G⁻¹ Bᵀ,   A_G = K + M,
+// with B the coupling (Signorini, (11)) or B^s (friction, (22); multipliers restricted to supp s)
+// and G the H^{-1/2}(Γ_C) Gram matrix in one of two realizations.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "assembly/coupling.hpp"
+#include "mesh/boundary_mesh.hpp"
+#include "mesh/quad_mesh.hpp"
+#include "norms/h_minus_half_gram.hpp"
+
+namespace hpcontact::infsup {
+
+enum class GramNorm { interpolation, extension };
+enum class PairingProblem { signorini, friction };
+
+GramNorm parse_gram_norm(const std::string& text, const std::string& origin);
+PairingProblem parse_pairing_problem(const std::string& text, const std::string& origin);
+std::string to_string(GramNorm norm);
+std::string to_string(PairingProblem problem);
+
+struct InfSupSetup {
+  const mesh::QuadMesh* mesh = nullptr;
+  std::vector<int> cell_degrees;        ///< p_T
+  const mesh::BoundaryMesh* boundary_mesh = nullptr;
+  std::vector<int> segment_degrees;     ///< p_C per segment
+  GramNorm norm = GramNorm::interpolation;
+  PairingProblem problem = PairingProblem::signorini;
+  assembly::BoundaryFunction friction_bound;  ///< s, required for the friction problem
+  norms::InterpolationReference interpolation_reference;
+  norms::ExtensionReference extension_reference;
+};
+
+struct InfSupOperators {
+  Eigen::MatrixXd s_g;   ///< B A_G⁻¹ Bᵀ restricted to the active multipliers, (n_active, n_active)
+  Eigen::MatrixXd gram;  ///< G restricted likewise
+  /// Multiplier dofs kept (all of them for Signorini; those of segments meeting supp s for
+  /// friction), in increasing order.
+  std::vector<int> active_dofs;
+  int n_primal_dofs = 0;
+  int n_multiplier_dofs = 0;
+  double h = 0.0;  ///< longest edge of T_h
+  double H = 0.0;  ///< longest segment of T_{C,H}
+  double seconds_primal = 0.0;  ///< assembly and factorization of A_G, B, S_G
+  double seconds_gram = 0.0;
+};
+
+/// @throws InputError on inconsistent setups (no friction bound, s ≡ 0 on Γ_C, ...).
+InfSupOperators assemble_infsup_operators(const InfSupSetup& setup);
+
+/// Π(h, H, p, p_C) = h H⁻¹ max(1, p_C)² p⁻¹ of (20) with θ = 1; for degree distributions the
+/// worst case (largest p_C, smallest p).
+double stability_indicator(double h, double H, int min_p, int max_pc);
+
+}  // namespace hpcontact::infsup

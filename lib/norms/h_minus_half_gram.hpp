@@ -1,0 +1,48 @@
+// The H^{-1/2}(Γ_C) Gram matrix G of the multiplier space, in two realizations (DESIGN.md).
+//
+// Interpolation norm. H^{1/2}(Γ_C) = [L², H¹]_{1/2} (no boundary conditions at the ends of Γ_C),
+// computed on a fine continuous reference space W on Γ_C. With M_W the mass matrix, K_W the
+// stiffness + mass matrix of W, and K_W Φ = M_W Φ Λ, Φᵀ M_W Φ = I, the H^{1/2} norm of w ∈ W is
+// ‖w‖² = wᵀ M_W Φ Λ^{1/2} Φᵀ M_W w and its dual norm over W gives
+//     G = Cᵀ Φ Λ^{-1/2} Φᵀ C,     C_kj = ∫_{Γ_C} w_k μ_j ds.
+//
+// Extension norm (Lemma 1 of the paper). ‖μ‖_{-1/2} = ‖u^μ‖₁ with u^μ ∈ H¹(Ω, Γ_D) solving
+// (∇u^μ, ∇v) + (u^μ, v) = (μ, v)_{Γ_C}; on a refined reference space S_ref
+//     G = B_ref A_ref⁻¹ B_refᵀ,   A_ref = K_ref + M_ref.
+//
+// Both are computed on reference spaces finer than the discretization; tests show that α no
+// longer changes when the reference is refined further.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "mesh/contact_boundary.hpp"
+#include "space/multiplier_space.hpp"
+
+namespace hpcontact::norms {
+
+/// W: continuous piecewise polynomials of degree `degree` on the common refinement of T_h|Γ_C
+/// and T_{C,H}, every interval split into `subdivisions` equal parts.
+struct InterpolationReference {
+  int subdivisions = 2;
+  int degree = 0;  ///< 0: max p_C + 6 (α changes by < 0.1% beyond, see tests)
+};
+
+/// Dense, symmetric positive definite, shape (n_multiplier_dofs, n_multiplier_dofs).
+Eigen::MatrixXd interpolation_norm_gram(const mesh::ContactBoundary& contact,
+                                        const space::MultiplierSpace& multipliers,
+                                        const InterpolationReference& reference = {});
+
+/// S_ref: T_h refined uniformly `refinements` times, degree p_T + `extra_degree`.
+struct ExtensionReference {
+  int refinements = 1;
+  int extra_degree = 2;
+};
+
+/// Dense, symmetric positive definite, shape (n_multiplier_dofs, n_multiplier_dofs).
+/// `cell_degrees` is the degree distribution of the discretization on `mesh`.
+Eigen::MatrixXd extension_norm_gram(const mesh::QuadMesh& mesh, const std::vector<int>& cell_degrees,
+                                    const space::MultiplierSpace& multipliers,
+                                    const ExtensionReference& reference = {});
+
+}  // namespace hpcontact::norms
