@@ -128,6 +128,29 @@ TEST(InfSup, FrictionRestrictsMultipliersToSupportOfS) {
   EXPECT_THROW(alpha(c), InputError);
 }
 
+// With s ≡ 1, (22) is (11): an independent path through the weighted coupling B^s, the support
+// restriction and the friction bookkeeping must give the Signorini α.
+TEST(InfSup, FrictionWithUnitBoundEqualsSignorini) {
+  Configuration signorini{3, 2, 8, 8};
+  Configuration friction = signorini;
+  friction.problem = infsup::PairingProblem::friction;
+  friction.s = [](const mesh::Point&) { return 1.0; };
+  EXPECT_NEAR(alpha(friction).alpha, alpha(signorini).alpha, 1e-12);
+}
+
+// s = (1-x)² vanishes at the end x = 1 of Γ_C: multipliers concentrated there make ‖sμ‖ tiny
+// against ‖μ‖, so the constant of (22) decays (like h², measured) even for pairings that are
+// stable for (11).
+TEST(InfSup, FrictionBoundVanishingAtAnEndMakesAlphaDecay) {
+  Configuration c{3, 1, 8, 8};
+  c.problem = infsup::PairingProblem::friction;
+  const double coarse = alpha(c).alpha;
+  c.n = 16;
+  c.m = 16;
+  const double fine = alpha(c).alpha;
+  EXPECT_LT(fine / coarse, 0.35);
+}
+
 TEST(InfSup, ModeSamplesTwentyPointsPerSegment) {
   const auto mesh = mesh::make_paper_square_mesh(4);
   const auto boundary = mesh::BoundaryMesh::uniform(2.0, 3);

@@ -12,6 +12,9 @@ using CommandAction = std::function<int()>;
 /// Adds `convergence` to the app; sets `action` when the subcommand is chosen.
 void add_convergence_command(CLI::App& app, CommandAction& action);
 
+/// Adds `sweep`.
+void add_sweep_command(CLI::App& app, CommandAction& action);
+
 /// Adds `infsup`.
 void add_infsup_command(CLI::App& app, CommandAction& action);
 

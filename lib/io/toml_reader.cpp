@@ -147,6 +147,30 @@ std::vector<long long> TomlTable::integer_list(const std::string& key, long long
   return values;
 }
 
+std::vector<std::string> TomlTable::string_list(
+    const std::string& key, std::optional<std::vector<std::string>> fallback) const {
+  const std::string forms = "a string, a number, or a list of them";
+  if (!has(key)) {
+    if (fallback) return *fallback;
+    fail(key, "(missing)", forms + " is required");
+  }
+  const auto* node = table_->get(key);
+  auto text_of = [&](const toml::node& element) -> std::string {
+    if (element.is_string()) return element.value<std::string>().value();
+    if (element.is_integer() || element.is_floating_point())
+      return format_full_precision(element.value<double>().value());
+    fail(key, value_text(key), "must be " + forms);
+  };
+  std::vector<std::string> values;
+  if (node->is_array()) {
+    for (const auto& element : *node->as_array()) values.push_back(text_of(element));
+  } else {
+    values.push_back(text_of(*node));
+  }
+  if (values.empty()) fail(key, "[]", "must not be empty");
+  return values;
+}
+
 TomlTable TomlTable::table(const std::string& key, bool required) const {
   if (!has(key)) {
     if (required) fail(key, "(missing)", "a table [" + qualified(key) + "] is required");

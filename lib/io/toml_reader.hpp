@@ -44,6 +44,11 @@ class TomlTable {
   std::vector<long long> integer_list(const std::string& key, long long min, long long max,
                                       std::optional<std::vector<long long>> fallback =
                                           std::nullopt) const;
+  /// Strings or numbers, given as one value or a list; numbers are returned as their text
+  /// (full precision), so "2/3" and 0.5 can stand side by side.
+  std::vector<std::string> string_list(const std::string& key,
+                                       std::optional<std::vector<std::string>> fallback =
+                                           std::nullopt) const;
   /// A sub-table; an empty one if absent and not required.
   TomlTable table(const std::string& key, bool required = false) const;
   /// An array of tables ([[key]] blocks).

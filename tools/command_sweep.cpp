@@ -1,0 +1,52 @@
+// `hpcontact sweep STUDY.toml --out DIR`: α over a grid of (problem, norm, p, p_C, n, h/H) into
+// DIR/alpha.csv (resumable), then rate fits and verdicts into DIR/verdicts.csv.
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <filesystem>
+
+#include "commands.hpp"
+#include "core/timer.hpp"
+#include "io/atomic_file.hpp"
+#include "studies/stability_sweep.hpp"
+
+namespace hpcontact::tools {
+
+void add_sweep_command(CLI::App& app, CommandAction& action) {
+  auto* command = app.add_subcommand(
+      "sweep", "Stability sweep over p, pC, n, h/H, norms, problems: alpha.csv and verdicts.csv");
+  auto study_file = std::make_shared<std::string>();
+  auto out_dir = std::make_shared<std::string>("results/stability");
+  command->add_option("study", *study_file, "Sweep file (TOML), e.g. studies/stability/study.toml")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command->add_option("--out", *out_dir, "Output folder (points already in alpha.csv are skipped)")
+      ->capture_default_str();
+  command->callback([&action, study_file, out_dir] {
+    action = [study_file, out_dir] {
+      // 1. Read and check the whole sweep before computing anything.
+      const auto sweep = studies::read_stability_sweep(*study_file);
+      io::ensure_writable_directory(*out_dir);
+      const auto alpha_csv = std::filesystem::path(*out_dir) / "alpha.csv";
+      // 2. Run, with a progress line on stderr when it is a terminal.
+      const bool terminal = isatty(STDERR_FILENO);
+      Stopwatch clock;
+      studies::run_stability_sweep(sweep, alpha_csv, [&](int done, int total, const std::string& label) {
+        if (!terminal) return;
+        const int width = 30, filled = width * (done - 1) / total;
+        fmt::print(stderr, "\r[{}{}] {}/{} {:.0f}s {:<60}", std::string(filled, '#'),
+                   std::string(width - filled, '.'), done, total, clock.seconds(), label);
+      });
+      if (terminal) fmt::print(stderr, "\n");
+      // 3. Fit rates and write verdicts.
+      const auto verdicts = studies::fit_verdicts(alpha_csv, sweep.fit_levels);
+      verdicts.write(std::filesystem::path(*out_dir) / "verdicts.csv");
+      fmt::print("wrote {} and {} ({} configurations, {:.1f} s)\n", alpha_csv.string(),
+                 (std::filesystem::path(*out_dir) / "verdicts.csv").string(), verdicts.n_rows(),
+                 clock.seconds());
+      return 0;
+    };
+  });
+}
+
+}  // namespace hpcontact::tools
