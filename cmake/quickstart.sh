@@ -58,4 +58,17 @@ echo "== convergence study: studies/convergence/study.toml -> results/convergenc
 build/bin/hpcontact convergence studies/convergence/study.toml --out results/convergence
 "$python" plots/plot_convergence.py results/convergence
 cp results/convergence/convergence.png studies/convergence/convergence.png
+
+echo "== stability sweep: studies/stability/quick.toml -> results/stability" >&2
+build/bin/hpcontact sweep studies/stability/quick.toml --out results/stability
+# Spurious modes of the paper's Figure 2 and 3 pairings (and the stable neighbours) at n = 24.
+for pairing in "1 0 1" "1 0 1/2" "2 1 1" "3 2 1" "3 2 1/2" "3 1 1"; do
+  set -- $pairing
+  build/bin/hpcontact infsup --p "$1" --pc "$2" --n 24 --ratio "$3" \
+    --mode "results/stability/mode_p$1_pC$2_hH${3//\//-}.csv" > /dev/null
+done
+"$python" plots/plot_stability.py results/stability
+for picture in stable_map alpha_vs_h alpha_vs_pi modes; do
+  cp "results/stability/$picture.png" "studies/stability/$picture.png"
+done
 echo "quickstart: done; CSV and PNG in results/" >&2

@@ -1,0 +1,143 @@
+#!/usr/bin/env python3
+"""Plots a stability sweep written by `hpcontact sweep` (alpha.csv, verdicts.csv) and optional
+spurious modes written by `hpcontact infsup --mode` (mode_*.csv, columns x,mu,...).
+
+Writes into DIR: alpha_vs_h.png (α against h per configuration, one panel per h/H),
+stable_map.png (verdict over (p, p_C), one panel per h/H), alpha_vs_pi.png, modes.png.
+Usage: plot_stability.py DIR
+"""
+import csv
+import sys
+from collections import defaultdict
+from fractions import Fraction
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.colors import ListedColormap  # noqa: E402
+
+VERDICT_CODE = {"stable": 0, "decaying": 1, "singular": 2}
+VERDICT_COLOURS = ["#4caf50", "#ff9800", "#d32f2f"]
+
+
+def read(path):
+    with open(path, newline="") as handle:
+        return list(csv.DictReader(handle))
+
+
+def ratio_label(value):
+    return str(Fraction(float(value)).limit_denominator(16))
+
+
+def save(figure, path):
+    temporary = path.with_suffix(".tmp.png")
+    figure.savefig(temporary, dpi=110)
+    temporary.replace(path)
+    plt.close(figure)
+    print(f"wrote {path}")
+
+
+def plot_alpha_vs_h(rows, folder):
+    groups = defaultdict(list)
+    for row in rows:
+        key = (row["problem"], row["norm"], float(row["ratio"]), int(row["p"]), int(row["pC"]))
+        groups[key].append((float(row["h"]), float(row["alpha"])))
+    ratios = sorted({key[2] for key in groups}, reverse=True)
+    figure, axes = plt.subplots(1, len(ratios), figsize=(4.2 * len(ratios), 4.2), squeeze=False)
+    for axis, ratio in zip(axes[0], ratios):
+        for key, points in sorted(groups.items()):
+            if key[2] != ratio:
+                continue
+            points.sort()
+            h, alpha = zip(*points)
+            axis.loglog(h, [max(a, 1e-8) for a in alpha], "o-", markersize=3, linewidth=1,
+                        label=f"p={key[3]} pC={key[4]}" + ("" if key[0] == "signorini" else f" {key[0]}"))
+        axis.set_title(f"h/H = {ratio_label(ratio)}")
+        axis.set_xlabel("h")
+        axis.grid(True, which="both", alpha=0.3)
+    axes[0][0].set_ylabel(r"$\alpha$")
+    axes[0][-1].legend(fontsize=6, ncol=2, loc="lower right")
+    figure.suptitle(r"inf-sup constant $\alpha$ against h (slope 1 = unstable pairing)")
+    figure.tight_layout()
+    save(figure, folder / "alpha_vs_h.png")
+
+
+def plot_stable_map(verdicts, folder):
+    for (problem, norm) in sorted({(v["problem"], v["norm"]) for v in verdicts}):
+        selected = [v for v in verdicts if v["problem"] == problem and v["norm"] == norm]
+        ratios = sorted({float(v["ratio"]) for v in selected}, reverse=True)
+        p_max = max(int(v["p"]) for v in selected)
+        figure, axes = plt.subplots(1, len(ratios), figsize=(3.2 * len(ratios), 3.4), squeeze=False)
+        for axis, ratio in zip(axes[0], ratios):
+            grid = [[float("nan")] * (p_max + 1) for _ in range(p_max + 1)]
+            for v in selected:
+                if float(v["ratio"]) == ratio and v["verdict"] in VERDICT_CODE:
+                    grid[int(v["pC"])][int(v["p"])] = VERDICT_CODE[v["verdict"]]
+            axis.imshow(grid, origin="lower", cmap=ListedColormap(VERDICT_COLOURS), vmin=0, vmax=2)
+            axis.set_xlim(0.5, p_max + 0.5)
+            axis.set_ylim(-0.5, p_max - 0.5)
+            axis.set_xlabel("p")
+            axis.set_title(f"h/H = {ratio_label(ratio)}")
+        axes[0][0].set_ylabel(r"$p_C$")
+        handles = [plt.Rectangle((0, 0), 1, 1, color=c) for c in VERDICT_COLOURS]
+        figure.legend(handles, list(VERDICT_CODE), loc="upper right", fontsize=8)
+        figure.suptitle(f"stable pairings ({problem}, {norm} norm)")
+        figure.tight_layout(rect=(0, 0, 0.92, 1))
+        save(figure, folder / ("stable_map.png" if problem == "signorini" and norm == "interp"
+                               else f"stable_map_{problem}_{norm}.png"))
+
+
+def plot_alpha_vs_pi(rows, verdict_of, folder):
+    figure, axis = plt.subplots(figsize=(6, 4.5))
+    for verdict, colour in zip(VERDICT_CODE, VERDICT_COLOURS):
+        points = [(float(r["Pi"]), max(float(r["alpha"]), 1e-8)) for r in rows
+                  if verdict_of.get((r["problem"], r["norm"], r["p"], r["pC"],
+                                     f'{float(r["ratio"]):.6g}')) == verdict]
+        if points:
+            axis.loglog(*zip(*points), "o", color=colour, markersize=3, alpha=0.7, label=verdict)
+    axis.set_xlabel(r"$\Pi(h, H, p, p_C) = h H^{-1} \max(1,p_C)^2 p^{-1}$")
+    axis.set_ylabel(r"$\alpha$")
+    axis.grid(True, which="both", alpha=0.3)
+    axis.legend()
+    axis.set_title(r"$\alpha$ against the indicator $\Pi$ of (20)")
+    figure.tight_layout()
+    save(figure, folder / "alpha_vs_pi.png")
+
+
+def plot_modes(folder):
+    files = sorted(folder.glob("mode_*.csv"))
+    if not files:
+        return
+    figure, axes = plt.subplots(len(files), 1, figsize=(7, 1.9 * len(files)), squeeze=False)
+    for axis, path in zip(axes[:, 0], files):
+        rows = read(path)
+        axis.plot([float(r["x"]) for r in rows], [float(r["mu"]) for r in rows], linewidth=1)
+        axis.set_ylabel(r"$\mu$")
+        # mode_p3_pC2_hH1-2.csv -> "p=3 pC=2 h/H=1/2"
+        p, pc, ratio = path.stem.split("_")[1:4]
+        axis.set_title(f"p={p[1:]}  pC={pc[2:]}  h/H={ratio[2:].replace('-', '/')}", fontsize=9)
+        axis.grid(True, alpha=0.3)
+    axes[-1, 0].set_xlabel(r"x on $\Gamma_C$")
+    figure.suptitle("spurious multiplier modes (eigenvectors of the smallest eigenvalue)")
+    figure.tight_layout()
+    save(figure, folder / "modes.png")
+
+
+def main():
+    if len(sys.argv) != 2:
+        sys.exit(__doc__)
+    folder = Path(sys.argv[1])
+    rows = read(folder / "alpha.csv")
+    verdicts = read(folder / "verdicts.csv")
+    verdict_of = {(v["problem"], v["norm"], v["p"], v["pC"], f'{float(v["ratio"]):.6g}'): v["verdict"]
+                  for v in verdicts}
+    plot_alpha_vs_h(rows, folder)
+    plot_stable_map(verdicts, folder)
+    plot_alpha_vs_pi(rows, verdict_of, folder)
+    plot_modes(folder)
+
+
+if __name__ == "__main__":
+    main()
