@@ -86,3 +86,39 @@ TEST(Cli, UnknownSubcommandOrMissingFileIsAnError) {
   EXPECT_NE(run("no-such-command").exit_code, 0);
   EXPECT_EQ(run("convergence /nonexistent/study.toml").exit_code, 2);
 }
+
+namespace {
+std::string alpha_line(const std::string& output) {
+  const auto start = output.find("alpha = ");
+  return start == std::string::npos ? "" : output.substr(start, output.find('\n', start) - start);
+}
+}  // namespace
+
+TEST(Cli, InfsupPrintsAlphaAndSceneMatchesBuiltInGeometry) {
+  const auto built_in = run("infsup --p 3 --pc 2 --n 8 --ratio 1/2 --eigensolver dense");
+  ASSERT_EQ(built_in.exit_code, 0) << built_in.output;
+  const auto scene = run(std::string("infsup --scene ") + HPCONTACT_TEST_DATA +
+                         "/scene_paper.toml --eigensolver dense");
+  ASSERT_EQ(scene.exit_code, 0) << scene.output;
+  EXPECT_FALSE(alpha_line(built_in.output).empty());
+  EXPECT_EQ(alpha_line(scene.output), alpha_line(built_in.output));
+  EXPECT_EQ(run("infsup --n 8 --ratio 1/3").exit_code, 2);
+}
+
+TEST(Cli, InfsupCsvAndModeFiles) {
+  const auto dir = scratch("infsup");
+  const std::string csv = (dir / "alpha.csv").string(), mode = (dir / "mode.csv").string();
+  for (int k = 0; k < 2; ++k)
+    ASSERT_EQ(run("infsup --p 1 --pc 0 --n 4 --ratio 1 --csv " + csv + " --mode " + mode).exit_code, 0);
+  std::ifstream in(csv);
+  std::string header;
+  std::getline(in, header);
+  EXPECT_EQ(header, "problem,norm,p,pC,n,m,h,H,ratio,Pi,alpha,ndofs,nmult,seconds");
+  int rows = 0;
+  for (std::string line; std::getline(in, line);) ++rows;
+  EXPECT_EQ(rows, 2);
+  std::ifstream modes(mode);
+  int samples = -1;
+  for (std::string line; std::getline(modes, line);) ++samples;
+  EXPECT_EQ(samples, 4 * 20);
+}

@@ -7,8 +7,11 @@
 
 #include "commands.hpp"
 #include "core/error.hpp"
+#include "core/expression.hpp"
 #include "infsup/infsup_analysis.hpp"
 #include "io/atomic_file.hpp"
+#include "io/scene.hpp"
+#include "studies/stability_sweep.hpp"
 #include "mesh/rectangle_mesh.hpp"
 
 namespace hpcontact::tools {
@@ -18,45 +21,63 @@ struct InfSupOptions {
   int p = 1, pc = 0, n = 8;
   std::string ratio = "1";
   std::string norm = "interp", problem = "signorini", eigensolver = "slepc";
-  std::string csv, mode;
+  std::string csv, mode, scene;
+  bool p_given = false, pc_given = false, n_given = false, ratio_given = false, norm_given = false,
+       problem_given = false;
   int reference_subdivisions = 2, reference_degree = 0;
   int reference_refinements = 1, reference_extra_degree = 2;
 };
 
-// "0.5", "2" or a fraction "2/3" (so that 1/3 needs no rounded decimal).
-double parse_ratio(const std::string& text, const std::string& where) {
-  double value = 0.0;
-  try {
-    std::size_t used = 0;
-    const auto slash = text.find('/');
-    if (slash == std::string::npos) {
-      value = std::stod(text, &used);
-      if (used != text.size()) value = NAN;
-    } else {
-      const double numerator = std::stod(text.substr(0, slash), &used);
-      if (used != slash) value = NAN;
-      else value = numerator / std::stod(text.substr(slash + 1), &used);
-      if (used != text.size() - slash - 1) value = NAN;
-    }
-  } catch (const std::exception&) {
-    value = NAN;
+// The §7 geometry from --n and --ratio, or a scene file; command-line degrees, norm and problem
+// override the scene's.
+struct Geometry {
+  mesh::QuadMesh mesh;
+  mesh::BoundaryMesh boundary_mesh;
+  InfSupOptions options;  ///< with the scene's values filled in
+  assembly::BoundaryFunction friction_bound;
+};
+
+Geometry build_geometry(const InfSupOptions& given) {
+  const std::string where = "hpcontact infsup";
+  InfSupOptions o = given;
+  if (o.scene.empty()) {
+    const double ratio = studies::parse_ratio(o.ratio, where);
+    const double m_real = o.n * ratio;
+    const int m = static_cast<int>(std::lround(m_real));
+    if (m < 1 || std::abs(m_real - m) > 1e-9 * m_real)
+      throw_bad_input(where, "--ratio", o.ratio,
+                      fmt::format("n · ratio = {} must be a whole number of segments m", m_real));
+    return {mesh::make_paper_square_mesh(o.n), mesh::BoundaryMesh::uniform(2.0, m), o,
+            [](const mesh::Point& x) { return (1.0 - x.x()) * (1.0 - x.x()); }};
   }
-  if (!(value > 0.0) || !std::isfinite(value))
-    throw_bad_input(where, "--ratio", text, "must be a positive number or fraction such as 2/3");
-  return value;
+  if (o.n_given || o.ratio_given)
+    throw_bad_input(where, o.n_given ? "--n" : "--ratio", "(given with --scene)",
+                    "the scene sets the meshes: use its [domain] and [contact_mesh]");
+  const auto scene = io::read_scene(o.scene);
+  if (!o.p_given) o.p = scene.p;
+  if (!o.pc_given) o.pc = scene.pc;
+  if (!o.norm_given) o.norm = scene.norm;
+  if (!o.problem_given) o.problem = scene.problem;
+  auto mesh = io::build_scene_mesh(scene);
+  const mesh::ContactBoundary contact(mesh);
+  auto boundary_mesh = io::build_scene_boundary_mesh(scene, contact);
+  o.n = static_cast<int>(contact.edges().size());
+  o.ratio = fmt::format("{}", static_cast<double>(boundary_mesh.n_segments()) / o.n);
+  assembly::BoundaryFunction s;
+  if (!scene.friction_bound.empty()) {
+    const Expression bound(scene.friction_bound, o.scene + ": key 'data.s'");
+    s = [bound](const mesh::Point& x) { return bound(x.x(), x.y()); };
+  }
+  return {std::move(mesh), std::move(boundary_mesh), o, s};
 }
 
-int run_infsup(const InfSupOptions& o) {
-  // 1. Check the input.
-  const std::string where = "hpcontact infsup";
-  if (o.p < 1) throw_bad_input(where, "--p", std::to_string(o.p), "must be >= 1");
-  if (o.pc < 0) throw_bad_input(where, "--pc", std::to_string(o.pc), "must be >= 0");
-  const double ratio = parse_ratio(o.ratio, where);
-  const double m_real = o.n * ratio;
-  const int m = static_cast<int>(std::lround(m_real));
-  if (m < 1 || std::abs(m_real - m) > 1e-9 * m_real)
-    throw_bad_input(where, "--ratio", o.ratio,
-                    fmt::format("n · ratio = {} must be a whole number of segments m", m_real));
+int run_infsup(const InfSupOptions& given) {
+  // 1. Check the input and build T_h and T_{C,H}.
+  const std::string where = given.scene.empty() ? "hpcontact infsup" : given.scene;
+  const Geometry geometry = build_geometry(given);
+  const InfSupOptions& o = geometry.options;
+  if (o.p < 1) throw_bad_input(where, "p", std::to_string(o.p), "must be >= 1");
+  if (o.pc < 0) throw_bad_input(where, "pC", std::to_string(o.pc), "must be >= 0");
   infsup::InfSupSetup setup;
   setup.norm = infsup::parse_gram_norm(o.norm, where);
   setup.problem = infsup::parse_pairing_problem(o.problem, where);
@@ -65,14 +86,16 @@ int run_infsup(const InfSupOptions& o) {
     if (!file.empty())
       io::ensure_writable_directory(std::filesystem::absolute(file).parent_path());
 
-  // 2. Meshes: T_h on the §7 square, T_{C,H} with m = n · ratio uniform segments.
-  const mesh::QuadMesh mesh = mesh::make_paper_square_mesh(o.n);
-  const mesh::BoundaryMesh boundary_mesh = mesh::BoundaryMesh::uniform(2.0, m);
+  // 2. Discretization on T_h and T_{C,H}.
+  const auto& mesh = geometry.mesh;
+  const auto& boundary_mesh = geometry.boundary_mesh;
+  const int m = boundary_mesh.n_segments();
+  const double ratio = studies::parse_ratio(o.ratio, where);
   setup.mesh = &mesh;
   setup.cell_degrees.assign(mesh.n_cells(), o.p);
   setup.boundary_mesh = &boundary_mesh;
   setup.segment_degrees.assign(m, o.pc);
-  setup.friction_bound = [](const mesh::Point& x) { return (1.0 - x.x()) * (1.0 - x.x()); };
+  setup.friction_bound = geometry.friction_bound;
   setup.interpolation_reference = {o.reference_subdivisions, o.reference_degree};
   setup.extension_reference = {o.reference_refinements, o.reference_extra_degree};
 
@@ -111,6 +134,8 @@ void add_infsup_command(CLI::App& app, CommandAction& action) {
   auto* command = app.add_subcommand(
       "infsup", "Inf-sup constant alpha(h, H, p, pC) with SLEPc, Pi of (20), spurious mode");
   auto o = std::make_shared<InfSupOptions>();
+  command->add_option("--scene", o->scene, "Scene file (TOML) with another geometry (keys: studies/README.md)")
+      ->check(CLI::ExistingFile);
   command->add_option("--p", o->p, "Polynomial degree p of S^p(T_h) (>= 1)")->capture_default_str();
   command->add_option("--pc", o->pc, "Multiplier degree p_C (>= 0)")->capture_default_str();
   command->add_option("--n", o->n, "n x n cells on the §7 square, h = 2/n (even)")->capture_default_str();
@@ -138,7 +163,15 @@ void add_infsup_command(CLI::App& app, CommandAction& action) {
   command->add_option("--reference-extra-degree", o->reference_extra_degree,
                       "extension norm: degree added to p")
       ->capture_default_str();
-  command->callback([&action, o] { action = [o] { return run_infsup(*o); }; });
+  command->callback([&action, o, command] {
+    o->p_given = command->count("--p") > 0;
+    o->pc_given = command->count("--pc") > 0;
+    o->n_given = command->count("--n") > 0;
+    o->ratio_given = command->count("--ratio") > 0;
+    o->norm_given = command->count("--norm") > 0;
+    o->problem_given = command->count("--problem") > 0;
+    action = [o] { return run_infsup(*o); };
+  });
 }
 
 }  // namespace hpcontact::tools

@@ -1,0 +1,151 @@
+// Reading scenes and building their meshes.
+#include "io/scene.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <map>
+
+#include "core/error.hpp"
+#include "core/expression.hpp"
+#include "io/toml_reader.hpp"
+#include "mesh/gmsh_reader.hpp"
+#include "studies/stability_sweep.hpp"
+
+namespace hpcontact::io {
+
+Scene read_scene(const std::string& path) {
+  const TomlTable root = parse_toml_file(path);
+  Scene scene;
+  scene.file = path;
+  // Misspelt section names are reported before "missing section" errors.
+  for (const char* section : {"domain", "boundary", "contact_mesh", "discretization", "data", "infsup"})
+    root.has(section);
+  root.reject_unknown_keys();
+
+  const auto domain = root.table("domain", true);
+  if (domain.has("mesh")) {
+    scene.mesh_file = domain.string("mesh");
+    if (!scene.mesh_file.empty() && scene.mesh_file.front() != '/')
+      scene.mesh_file = (std::filesystem::path(path).parent_path() / scene.mesh_file).string();
+  } else {
+    mesh::Rectangle r;
+    r.x_min = domain.number("x_min", -1.0);
+    r.x_max = domain.number("x_max", 1.0);
+    r.y_min = domain.number("y_min", -1.0);
+    r.y_max = domain.number("y_max", 1.0);
+    if (!(r.x_max > r.x_min) || !(r.y_max > r.y_min))
+      throw_bad_input(path, "domain.x_max / domain.y_max", "", "the rectangle must satisfy x_min < x_max and y_min < y_max");
+    scene.rectangle = r;
+    scene.n_x = static_cast<int>(domain.integer("n_x", 1, 100000));
+    scene.n_y = static_cast<int>(domain.integer("n_y", 1, 100000));
+  }
+  scene.perturb = domain.number_in("perturb", 0.0, 0.24, 0.0);
+  scene.seed = static_cast<std::uint32_t>(domain.integer("seed", 0, 1u << 30, 1));
+  domain.reject_unknown_keys();
+
+  const auto boundary = root.table("boundary", true);
+  scene.contact_predicate = boundary.string("contact", "");
+  scene.dirichlet_predicate = boundary.string("dirichlet", "");
+  scene.contact_groups = boundary.string_list("contact_groups", std::vector<std::string>{});
+  scene.dirichlet_groups = boundary.string_list("dirichlet_groups", std::vector<std::string>{});
+  if (scene.contact_predicate.empty() == scene.contact_groups.empty())
+    throw_bad_input(path, "boundary.contact", "(" + std::string(scene.contact_predicate.empty() ? "missing" : "both given") + ")",
+                    "give exactly one of 'contact' (a predicate in x, y) and 'contact_groups' (Gmsh physical names)");
+  if (!scene.contact_groups.empty() && scene.mesh_file.empty())
+    throw_bad_input(path, "boundary.contact_groups", "", "needs a Gmsh mesh in domain.mesh");
+  for (const auto& [key, text] : {std::pair{"contact", scene.contact_predicate}, {"dirichlet", scene.dirichlet_predicate}})
+    if (!text.empty()) Expression(text, path + ": key 'boundary." + key + "'");
+  boundary.reject_unknown_keys();
+
+  const auto contact_mesh = root.table("contact_mesh", true);
+  const int given = contact_mesh.has("m") + contact_mesh.has("ratio") + contact_mesh.has("breakpoints");
+  if (given != 1)
+    throw_bad_input(path, "contact_mesh", fmt::format("({} of m, ratio, breakpoints given)", given),
+                    "give exactly one of m, ratio, breakpoints");
+  if (contact_mesh.has("m")) scene.m = static_cast<int>(contact_mesh.integer("m", 1, 1000000));
+  if (contact_mesh.has("ratio")) {
+    scene.ratio = contact_mesh.string_list("ratio").front();
+    studies::parse_ratio(scene.ratio, path + ": key 'contact_mesh.ratio'");
+  }
+  if (contact_mesh.has("breakpoints"))
+    for (const auto& text : contact_mesh.string_list("breakpoints")) scene.breakpoints.push_back(std::stod(text));
+  scene.grading = contact_mesh.number_in("grading", 1e-3, 1.0, 1.0);
+  contact_mesh.reject_unknown_keys();
+
+  const auto discretization = root.table("discretization", true);
+  scene.p = static_cast<int>(discretization.integer("p", 1, 20));
+  scene.pc = static_cast<int>(discretization.integer("pC", 0, 19));
+  discretization.reject_unknown_keys();
+
+  const auto data = root.table("data");
+  scene.friction_bound = data.string("s", "");
+  if (!scene.friction_bound.empty()) Expression(scene.friction_bound, path + ": key 'data.s'");
+  data.reject_unknown_keys();
+
+  const auto infsup = root.table("infsup");
+  scene.norm = infsup.choice("norm", {"interp", "extension"}, "interp");
+  scene.problem = infsup.choice("problem", {"signorini", "friction"}, "signorini");
+  infsup.reject_unknown_keys();
+  if (scene.problem == "friction" && scene.friction_bound.empty())
+    throw_bad_input(path, "data.s", "(missing)", "the friction problem needs the friction bound s");
+  root.reject_unknown_keys();
+  return scene;
+}
+
+mesh::QuadMesh build_scene_mesh(const Scene& scene) {
+  mesh::QuadMesh mesh = scene.mesh_file.empty()
+                            ? mesh::make_rectangle_mesh(*scene.rectangle, scene.n_x, scene.n_y)
+                            : mesh::read_gmsh_mesh(scene.mesh_file);
+  if (scene.perturb > 0) mesh::perturb_interior_vertices(mesh, scene.perturb, scene.seed);
+  auto predicate = [&](const std::string& text, const char* key) {
+    const Expression expression(text, scene.file + ": key 'boundary." + key + "'");
+    return [expression](const mesh::Point& x) { return expression(x.x(), x.y()) != 0.0; };
+  };
+  std::map<std::string, mesh::BoundaryPart> by_label;
+  for (const auto& group : scene.contact_groups) by_label[group] = mesh::BoundaryPart::contact;
+  if (!scene.contact_predicate.empty())
+    mesh::assign_boundary_part(mesh, mesh::BoundaryPart::contact, predicate(scene.contact_predicate, "contact"));
+  // Γ_D must not overlap Γ_C: check every edge Γ_D claims before assigning it.
+  std::function<bool(const mesh::Point&)> in_dirichlet = [](const mesh::Point&) { return false; };
+  if (!scene.dirichlet_predicate.empty()) in_dirichlet = predicate(scene.dirichlet_predicate, "dirichlet");
+  for (int e : mesh.boundary_edges()) {
+    const bool contact = mesh.edge_part(e) == mesh::BoundaryPart::contact ||
+                         by_label.contains(mesh.edge_label(e));
+    bool dirichlet = in_dirichlet(mesh.edge_midpoint(e));
+    for (const auto& group : scene.dirichlet_groups) dirichlet = dirichlet || mesh.edge_label(e) == group;
+    if (contact && dirichlet) {
+      const auto m = mesh.edge_midpoint(e);
+      throw InputError(fmt::format("{}: Γ_C and Γ_D overlap at the edge with midpoint ({}, {}); "
+                                   "key 'boundary.dirichlet' must exclude Γ_C", scene.file, m.x(), m.y()));
+    }
+    if (contact) mesh.set_edge_part(e, mesh::BoundaryPart::contact);
+    if (dirichlet) mesh.set_edge_part(e, mesh::BoundaryPart::dirichlet);
+  }
+  return mesh;
+}
+
+mesh::BoundaryMesh build_scene_boundary_mesh(const Scene& scene, const mesh::ContactBoundary& contact) {
+  if (!scene.breakpoints.empty()) {
+    auto nodes = scene.breakpoints;
+    if (std::abs(nodes.back() - contact.length()) > 1e-10 * contact.length())
+      throw_bad_input(scene.file, "contact_mesh.breakpoints", fmt::format("last = {}", nodes.back()),
+                      fmt::format("must run from 0 to the length of Γ_C, {}", contact.length()));
+    nodes.back() = contact.length();
+    return mesh::BoundaryMesh(nodes, scene.file + ": key 'contact_mesh.breakpoints'");
+  }
+  int m = scene.m;
+  if (!scene.ratio.empty()) {
+    const int n = static_cast<int>(contact.edges().size());
+    const double exact = n * studies::parse_ratio(scene.ratio, scene.file);
+    m = static_cast<int>(std::lround(exact));
+    if (m < 1 || std::abs(exact - m) > 1e-9 * exact)
+      throw_bad_input(scene.file, "contact_mesh.ratio", scene.ratio,
+                      fmt::format("Γ_C has {} edges of T_h; {} · ratio = {} must be a whole number of segments", n, n, exact));
+  }
+  return mesh::BoundaryMesh::graded(contact.length(), m, scene.grading);
+}
+
+}  // namespace hpcontact::io

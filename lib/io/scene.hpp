@@ -1,0 +1,51 @@
+// Scene files (TOML): the geometry, boundary parts, contact mesh, discretization and data of one
+// run. This is the part of the scene format that the inf-sup analysis reads; the full format
+// (loads, obstacle, effects, outputs) extends it. Every key is documented in studies/README.md.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "mesh/boundary_mesh.hpp"
+#include "mesh/contact_boundary.hpp"
+#include "mesh/quad_mesh.hpp"
+#include "mesh/rectangle_mesh.hpp"
+
+namespace hpcontact::io {
+
+struct Scene {
+  std::string file;
+  // [domain]: a rectangle with n_x × n_y cells, or a Gmsh file.
+  std::optional<mesh::Rectangle> rectangle;
+  int n_x = 0, n_y = 0;
+  std::string mesh_file;
+  double perturb = 0.0;
+  std::uint32_t seed = 1;
+  // [boundary]: predicates in x, y on edge midpoints (non-zero = inside), or Gmsh group names.
+  std::string contact_predicate, dirichlet_predicate;
+  std::vector<std::string> contact_groups, dirichlet_groups;
+  // [contact_mesh]: exactly one of m, ratio (= h/H, m = n_C · ratio), breakpoints.
+  int m = 0;
+  std::string ratio;
+  std::vector<double> breakpoints;
+  double grading = 1.0;
+  // [discretization]
+  int p = 1, pc = 0;
+  // [data]
+  std::string friction_bound;  ///< s, expression in x, y (may be empty)
+  // [infsup]
+  std::string norm = "interp", problem = "signorini";
+};
+
+/// @throws InputError naming file, key, value and the allowed range.
+Scene read_scene(const std::string& path);
+
+/// T_h with boundary parts. @throws InputError if Γ_C is empty or Γ_C and Γ_D overlap.
+mesh::QuadMesh build_scene_mesh(const Scene& scene);
+
+/// T_{C,H} on Γ_C of the scene's mesh.
+mesh::BoundaryMesh build_scene_boundary_mesh(const Scene& scene, const mesh::ContactBoundary& contact);
+
+}  // namespace hpcontact::io

@@ -1,0 +1,95 @@
+// Stage 11, scenes: the §7 geometry read from a scene equals the built-in one, a Gmsh scene with
+// physical groups, and one error per class of bad scene input.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/error.hpp"
+#include "io/scene.hpp"
+#include "mesh/contact_boundary.hpp"
+
+using namespace hpcontact;
+
+namespace {
+
+std::string write_scene(const std::string& name, const std::string& text) {
+  const auto path = std::filesystem::temp_directory_path() / ("hpcontact_scene_" + name + ".toml");
+  std::ofstream(path) << text;
+  return path.string();
+}
+
+std::string error_of(const std::string& text) {
+  try {
+    const auto scene = io::read_scene(write_scene("bad", text));
+    const auto mesh = io::build_scene_mesh(scene);
+    const mesh::ContactBoundary contact(mesh);
+    io::build_scene_boundary_mesh(scene, contact);
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "(no error)";
+}
+
+const std::string kGood = R"toml(
+[domain]
+n_x = 4
+n_y = 4
+[boundary]
+contact = "y < -0.999"
+dirichlet = "y > 0.999"
+[contact_mesh]
+m = 2
+[discretization]
+p = 2
+pC = 1
+)toml";
+
+std::string with(const std::string& from, const std::string& to) {
+  std::string text = kGood;
+  text.replace(text.find(from), from.size(), to);
+  return text;
+}
+
+}  // namespace
+
+TEST(Scene, PaperSceneMatchesBuiltInGeometry) {
+  const auto scene = io::read_scene(std::string(HPCONTACT_TEST_DATA) + "/scene_paper.toml");
+  const auto mesh = io::build_scene_mesh(scene);
+  const auto paper = mesh::make_paper_square_mesh(8);
+  ASSERT_EQ(mesh.n_edges(), paper.n_edges());
+  for (int e = 0; e < mesh.n_edges(); ++e) EXPECT_EQ(mesh.edge_part(e), paper.edge_part(e)) << e;
+  const mesh::ContactBoundary contact(mesh);
+  const auto boundary = io::build_scene_boundary_mesh(scene, contact);
+  EXPECT_EQ(boundary.n_segments(), 4);
+  EXPECT_EQ(scene.p, 3);
+  EXPECT_EQ(scene.pc, 2);
+}
+
+TEST(Scene, GmshSceneUsesPhysicalGroups) {
+  const std::string text = "[domain]\nmesh = \"" + std::string(HPCONTACT_TEST_DATA) +
+                           "/square_2x2.msh\"\n[boundary]\ncontact_groups = [\"contact\"]\n"
+                           "dirichlet_groups = [\"dirichlet\"]\n[contact_mesh]\nratio = 1\n"
+                           "[discretization]\np = 2\npC = 0\n";
+  const auto scene = io::read_scene(write_scene("gmsh", text));
+  const auto mesh = io::build_scene_mesh(scene);
+  const mesh::ContactBoundary contact(mesh);
+  EXPECT_NEAR(contact.length(), 2.0, 1e-14);
+  EXPECT_EQ(io::build_scene_boundary_mesh(scene, contact).n_segments(), 2);
+}
+
+TEST(Scene, EachClassOfBadInputNamesTheKey) {
+  EXPECT_EQ(error_of(kGood), "(no error)");
+  EXPECT_NE(error_of(with("p = 2", "p = 0")).find("discretization.p"), std::string::npos);
+  EXPECT_NE(error_of(with("pC = 1", "pC = -1")).find("discretization.pC"), std::string::npos);
+  EXPECT_NE(error_of(with("n_x = 4", "n_x = 0")).find("domain.n_x"), std::string::npos);
+  EXPECT_NE(error_of(with("m = 2", "m = 2\nratio = 1")).find("exactly one of m, ratio"), std::string::npos);
+  EXPECT_NE(error_of(with("m = 2", "ratio = \"1/3\"")).find("whole number"), std::string::npos);
+  EXPECT_NE(error_of(with("m = 2", "ratio = 0")).find("contact_mesh.ratio"), std::string::npos);
+  EXPECT_NE(error_of(with("y < -0.999", "y < -0.999 +")).find("boundary.contact"), std::string::npos);
+  EXPECT_NE(error_of(with("y < -0.999", "y < -5")).find("Γ_C is empty"), std::string::npos);
+  EXPECT_NE(error_of(with("y > 0.999", "y < 0")).find("overlap"), std::string::npos);
+  EXPECT_NE(error_of(with("[discretization]", "[discretisation]")).find("did you mean 'discretization'"),
+            std::string::npos);
+  EXPECT_NE(error_of("[domain\n").find("malformed TOML"), std::string::npos);
+}
