@@ -1,0 +1,52 @@
+// The condensed contact problem on Γ_C: a convex quadratic program with box constraints,
+//     minimise ½ xᵀ S x − dᵀ x   subject to   lo ≤ x ≤ hi,
+// S symmetric positive SEMI-definite (singular where the inf-sup condition fails), dense and small.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+namespace hpcontact::contact {
+
+struct BoxQpOptions {
+  double tolerance = 1e-12;   ///< on the relative KKT residual (see BoxQpResult::kkt_residual)
+  int max_newton = 100;       ///< primal-dual active-set steps per proximal subproblem
+  int max_proximal = 50;      ///< outer proximal steps
+  double proximal = 1e-10;    ///< ρ relative to max diag(S)
+};
+
+struct BoxQpIteration {
+  int iteration;
+  int active_changes;   ///< indices that entered or left the active sets
+  double kkt_residual;
+};
+
+struct BoxQpResult {
+  Eigen::VectorXd x;
+  /// ‖x − P_[lo,hi](x − (S x − d))‖_∞ / (‖d‖_∞ + ‖S‖ ‖x‖_∞): zero exactly at a KKT point.
+  double kkt_residual = 0.0;
+  int newton_steps = 0;
+  int proximal_steps = 0;
+  bool converged = false;
+  std::string method;  ///< "pdas" or "pdas+proximal"
+  std::vector<BoxQpIteration> log;
+};
+
+/// Primal-dual active set (semismooth Newton) on the proximal regularization
+///     minimise ½ xᵀ S x − dᵀ x + (ρ/2) ‖x − x_k‖²,
+/// repeated from x_k = the previous solution until the KKT residual of the original problem is
+/// below tolerance. Each subproblem is strictly convex, so PDAS is well defined even for singular
+/// S; components in the null space of S stay where the previous iterate put them (x_0 = 0), which
+/// selects one of the many solutions when S is singular.
+/// @throws NumericalError with the residuals if it does not converge.
+BoxQpResult solve_box_qp(const Eigen::MatrixXd& s, const Eigen::VectorXd& d,
+                         const Eigen::VectorXd& lo, const Eigen::VectorXd& hi,
+                         const BoxQpOptions& options = {});
+
+/// The relative KKT residual of x (see BoxQpResult).
+double box_qp_kkt_residual(const Eigen::MatrixXd& s, const Eigen::VectorXd& d,
+                           const Eigen::VectorXd& lo, const Eigen::VectorXd& hi,
+                           const Eigen::VectorXd& x);
+
+}  // namespace hpcontact::contact
