@@ -1,10 +1,11 @@
-// solve_box_qp: PDAS inside proximal steps.
+// solve_box_qp: safeguarded active-set steps (block principal pivoting) inside proximal steps.
 #include "contact/box_qp.hpp"
 
 #include <fmt/format.h>
 
 #include <Eigen/Cholesky>
 #include <cmath>
+#include <limits>
 
 #include "core/error.hpp"
 
@@ -24,26 +25,54 @@ namespace {
 
 enum class State : signed char { lower = -1, free = 0, upper = 1 };
 
-// PDAS for  min ½ xᵀ A x − bᵀ x, lo ≤ x ≤ hi,  A positive definite. Returns steps taken, or -1.
-int primal_dual_active_set(const Eigen::MatrixXd& a, const Eigen::VectorXd& b,
-                           const Eigen::VectorXd& lo, const Eigen::VectorXd& hi,
-                           Eigen::VectorXd& x, int max_steps, double tolerance,
-                           const Eigen::MatrixXd& s, const Eigen::VectorXd& d,
-                           std::vector<BoxQpIteration>& log, int& step_counter) {
+// Indices whose state contradicts the KKT conditions after a solve: a free component outside its
+// bounds, or an active one whose gradient pushes it into the box (∇ > 0 at the upper bound,
+// ∇ < 0 at the lower one).
+std::vector<Eigen::Index> violations(const std::vector<State>& state, const Eigen::VectorXd& x,
+                                     const Eigen::VectorXd& gradient, const Eigen::VectorXd& lo,
+                                     const Eigen::VectorXd& hi, double tolerance) {
+  std::vector<Eigen::Index> out;
+  for (Eigen::Index i = 0; i < x.size(); ++i) {
+    const bool bad = state[i] == State::free ? (x(i) > hi(i) + tolerance || x(i) < lo(i) - tolerance)
+                     : state[i] == State::upper ? gradient(i) > tolerance
+                                                : gradient(i) < -tolerance;
+    if (bad) out.push_back(i);
+  }
+  return out;
+}
+
+void flip(std::vector<State>& state, Eigen::Index i, const Eigen::VectorXd& x, const Eigen::VectorXd& hi) {
+  if (state[i] != State::free) state[i] = State::free;
+  else state[i] = x(i) > hi(i) ? State::upper : State::lower;
+}
+
+// Block principal pivoting (Júdice–Pires) for  min ½ xᵀ A x − bᵀ x, lo ≤ x ≤ hi,  A positive
+// definite: the primal-dual active-set (semismooth Newton) step flips every violated index; when
+// that stops reducing the number of violations, Murty's least-index single flip takes over, which
+// terminates for positive definite A (plain PDAS can cycle, as seen on friction problems).
+// Returns the steps taken, or -1.
+int block_principal_pivoting(const Eigen::MatrixXd& a, const Eigen::VectorXd& b,
+                             const Eigen::VectorXd& lo, const Eigen::VectorXd& hi,
+                             Eigen::VectorXd& x, int max_steps, const Eigen::MatrixXd& s,
+                             const Eigen::VectorXd& d, std::vector<BoxQpIteration>& log,
+                             int& step_counter) {
   const Eigen::Index n = x.size();
+  // Start from the active sets the current point suggests (warm start across proximal steps).
   std::vector<State> state(n, State::free);
-  for (int step = 0; step < max_steps; ++step) {
-    // Active sets from the complementarity function x − c·∇ (c = 1/max diag A for scale).
+  {
     const Eigen::VectorXd gradient = a * x - b;
     const double c = 1.0 / std::max(a.diagonal().maxCoeff(), 1e-300);
-    int changes = 0;
     for (Eigen::Index i = 0; i < n; ++i) {
       const double trial = x(i) - c * gradient(i);
-      const State next = trial >= hi(i) ? State::upper : (trial <= lo(i) ? State::lower : State::free);
-      if (next != state[i]) ++changes;
-      state[i] = next;
+      state[i] = trial >= hi(i) ? State::upper : (trial <= lo(i) ? State::lower : State::free);
     }
-    // Newton step: fix the active components, solve for the free ones.
+  }
+  const double scale = b.lpNorm<Eigen::Infinity>() + a.lpNorm<Eigen::Infinity>() *
+                                                          std::max(lo.cwiseAbs().cwiseMin(hi.cwiseAbs()).maxCoeff(), 0.0);
+  const double tolerance = 1e-13 * std::max(scale, 1e-300);
+  std::size_t best = std::numeric_limits<std::size_t>::max();
+  int stalled = 0;
+  for (int step = 0; step < max_steps; ++step) {
     std::vector<Eigen::Index> free;
     for (Eigen::Index i = 0; i < n; ++i) {
       if (state[i] == State::upper) x(i) = hi(i);
@@ -60,14 +89,27 @@ int primal_dual_active_set(const Eigen::MatrixXd& a, const Eigen::VectorXd& b,
           if (state[k] != State::free) rhs(r) -= a(free[r], k) * x(k);
         for (Eigen::Index q = 0; q < m; ++q) a_ff(r, q) = a(free[r], free[q]);
       }
-      const Eigen::VectorXd x_free = a_ff.ldlt().solve(rhs);
+      const Eigen::VectorXd x_free = a_ff.llt().solve(rhs);
       for (Eigen::Index r = 0; r < m; ++r) x(free[r]) = x_free(r);
     }
     ++step_counter;
-    const double residual = box_qp_kkt_residual(s, d, lo, hi, x);
-    log.push_back({step_counter, changes, residual});
-    // Converged for this subproblem: the sets did not change and the free part is feasible.
-    if (step > 0 && changes == 0 && box_qp_kkt_residual(a, b, lo, hi, x) <= tolerance) return step + 1;
+    const auto bad = violations(state, x, a * x - b, lo, hi, tolerance);
+    log.push_back({step_counter, static_cast<int>(bad.size()), box_qp_kkt_residual(s, d, lo, hi, x)});
+    if (bad.empty()) {
+      x = x.cwiseMax(lo).cwiseMin(hi);  // remove round-off excursions beyond the bounds
+      return step + 1;
+    }
+    if (bad.size() < best) {
+      best = bad.size();
+      stalled = 0;
+    } else {
+      ++stalled;
+    }
+    if (stalled < 3) {
+      for (Eigen::Index i : bad) flip(state, i, x, hi);
+    } else {
+      flip(state, bad.front(), x, hi);
+    }
   }
   return -1;
 }
@@ -92,8 +134,8 @@ BoxQpResult solve_box_qp(const Eigen::MatrixXd& s, const Eigen::VectorXd& d,
   int steps = 0;
   for (int outer = 0; outer < options.max_proximal; ++outer) {
     const Eigen::VectorXd b = d + rho * result.x;
-    const int taken = primal_dual_active_set(a, b, lo, hi, result.x, options.max_newton,
-                                             0.1 * options.tolerance, s, d, result.log, steps);
+    const int taken = block_principal_pivoting(a, b, lo, hi, result.x, options.max_newton, s, d,
+                                               result.log, steps);
     result.proximal_steps = outer + 1;
     result.kkt_residual = box_qp_kkt_residual(s, d, lo, hi, result.x);
     if (taken < 0) break;
@@ -103,7 +145,7 @@ BoxQpResult solve_box_qp(const Eigen::MatrixXd& s, const Eigen::VectorXd& d,
     }
   }
   result.newton_steps = steps;
-  result.method = result.proximal_steps > 1 ? "pdas+proximal" : "pdas";
+  result.method = result.proximal_steps > 1 ? "active-set+proximal" : "active-set";
   if (!result.converged)
     throw NumericalError(fmt::format(
         "contact QP did not converge: KKT residual {:.3e} > tolerance {:.1e} after {} active-set "

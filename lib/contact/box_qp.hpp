@@ -11,14 +11,14 @@ namespace hpcontact::contact {
 
 struct BoxQpOptions {
   double tolerance = 1e-12;   ///< on the relative KKT residual (see BoxQpResult::kkt_residual)
-  int max_newton = 100;       ///< primal-dual active-set steps per proximal subproblem
+  int max_newton = 500;       ///< active-set steps per proximal subproblem
   int max_proximal = 50;      ///< outer proximal steps
   double proximal = 1e-10;    ///< ρ relative to max diag(S)
 };
 
 struct BoxQpIteration {
   int iteration;
-  int active_changes;   ///< indices that entered or left the active sets
+  int violations;       ///< indices whose active/free state contradicts the KKT conditions
   double kkt_residual;
 };
 
@@ -29,14 +29,15 @@ struct BoxQpResult {
   int newton_steps = 0;
   int proximal_steps = 0;
   bool converged = false;
-  std::string method;  ///< "pdas" or "pdas+proximal"
+  std::string method;  ///< "active-set" or "active-set+proximal"
   std::vector<BoxQpIteration> log;
 };
 
-/// Primal-dual active set (semismooth Newton) on the proximal regularization
+/// Active-set method (primal-dual active set = semismooth Newton steps, safeguarded by Murty's
+/// least-index pivoting so that it cannot cycle) on the proximal regularization
 ///     minimise ½ xᵀ S x − dᵀ x + (ρ/2) ‖x − x_k‖²,
 /// repeated from x_k = the previous solution until the KKT residual of the original problem is
-/// below tolerance. Each subproblem is strictly convex, so PDAS is well defined even for singular
+/// below tolerance. Each subproblem is strictly convex, so the method is well defined even for singular
 /// S; components in the null space of S stay where the previous iterate put them (x_0 = 0), which
 /// selects one of the many solutions when S is singular.
 /// @throws NumericalError with the residuals if it does not converge.
