@@ -71,4 +71,10 @@ done
 for picture in stable_map alpha_vs_h alpha_vs_pi modes; do
   cp "results/stability/$picture.png" "studies/stability/$picture.png"
 done
+echo "== contact problems of Figures 1, 4, 6: studies/paper/*.toml -> results/paper" >&2
+for figure in figure1_signorini figure4_friction figure6_friction_s; do
+  build/bin/hpcontact solve "studies/paper/$figure.toml" --out "results/paper/$figure"
+  "$python" plots/plot_paper.py "results/paper/$figure"
+  cp "results/paper/$figure/figure.png" "studies/paper/$figure.png"
+done
 echo "quickstart: done; CSV and PNG in results/" >&2

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <memory>
 
 namespace {
@@ -121,4 +122,32 @@ TEST(Cli, InfsupCsvAndModeFiles) {
   int samples = -1;
   for (std::string line; std::getline(modes, line);) ++samples;
   EXPECT_EQ(samples, 4 * 20);
+}
+
+TEST(Cli, SolveWritesBoundaryCsvVtuAndSummary) {
+  const auto dir = scratch("solve");
+  const std::string scene = std::string(HPCONTACT_SOURCE_DIR) + "/studies/paper/figure1_signorini.toml";
+  const auto result = run("solve " + scene + " --out " + (dir / "out").string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  std::ifstream csv(dir / "out" / "boundary.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header.substr(0, 21), "x,u,obstacle,lambda,y");
+  EXPECT_TRUE(std::filesystem::exists(dir / "out" / "solution.vtu"));
+  std::ifstream summary(dir / "out" / "summary.json");
+  const std::string json((std::istreambuf_iterator<char>(summary)), std::istreambuf_iterator<char>());
+  EXPECT_NE(json.find("\"kkt_residual\""), std::string::npos);
+  EXPECT_NE(json.find("\"lambda_unique\": true"), std::string::npos) << json.substr(0, 400);
+}
+
+TEST(Cli, SolveWithoutObstacleIsBadInputAndWritesNothing) {
+  const auto dir = scratch("solve_bad");
+  std::ifstream in(std::string(HPCONTACT_SOURCE_DIR) + "/studies/paper/figure1_signorini.toml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  text.replace(text.find("g = \"-x^2\""), 10, "");
+  std::ofstream(dir / "scene.toml") << text;
+  const auto result = run("solve " + (dir / "scene.toml").string() + " --out " + (dir / "out").string());
+  EXPECT_EQ(result.exit_code, 2) << result.output;
+  EXPECT_NE(result.output.find("data.g"), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
 }

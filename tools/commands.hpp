@@ -15,6 +15,9 @@ void add_convergence_command(CLI::App& app, CommandAction& action);
 /// Adds `sweep`.
 void add_sweep_command(CLI::App& app, CommandAction& action);
 
+/// Adds `solve`.
+void add_solve_command(CLI::App& app, CommandAction& action);
+
 /// Adds `infsup`.
 void add_infsup_command(CLI::App& app, CommandAction& action);
 

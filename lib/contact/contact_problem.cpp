@@ -9,6 +9,7 @@
 #include "assembly/coupling.hpp"
 #include "assembly/poisson_assembly.hpp"
 #include "basis/lobatto.hpp"
+#include "basis/quadrature.hpp"
 #include "core/error.hpp"
 #include "core/timer.hpp"
 #include "linalg/schur_complement.hpp"
@@ -57,6 +58,12 @@ ContactSolution solve_contact(const ContactSetup& setup) {
     for (int i = 0; i < q; ++i) v.row(i) = basis::legendre_values(q - 1, tau[i]).transpose();
     to_nodal.block(first, first, q, q) = v.inverse().transpose();
     const double a = setup.boundary_mesh->segment_begin(k), b = setup.boundary_mesh->segment_end(k);
+    // (13) keeps λ = 0 only on segments outside supp s (a closed set: s vanishing at single
+    // points, like (1-x)² at x = 1, does not remove them).
+    bool meets_support = false;
+    if (setup.problem == ContactProblem::friction)
+      for (double t : basis::gauss_legendre(12).points)
+        meets_support = meets_support || setup.bound(contact.point_at(a + 0.5 * (b - a) * (t + 1.0))) > 0.0;
     for (int i = 0; i < q; ++i) {
       const double s = a + 0.5 * (b - a) * (tau[i] + 1.0);
       out.constraint_s[first + i] = s;
@@ -69,7 +76,7 @@ ContactSolution solve_contact(const ContactSetup& setup) {
         throw InputError("friction bound s = " + std::to_string(bound) + " < 0 at x = " +
                          std::to_string(contact.point_at(s).x()) + ": s must be >= 0");
       // (13): |λ| ≤ 1 on supp s, λ = 0 off it; (15): |λ| ≤ s.
-      const double limit = setup.problem == ContactProblem::friction ? (bound > 0.0 ? 1.0 : 0.0) : bound;
+      const double limit = setup.problem == ContactProblem::friction ? (meets_support ? 1.0 : 0.0) : bound;
       out.lower(first + i) = -limit;
       out.upper(first + i) = limit;
     }
@@ -89,6 +96,7 @@ ContactSolution solve_contact(const ContactSetup& setup) {
   out.qp = solve_box_qp(s, d, out.lower, out.upper, setup.qp);
   out.seconds_qp = qp_clock.seconds();
   out.lambda = out.qp.x;
+  out.lambda_legendre = to_nodal.transpose() * out.lambda;  // V⁻¹ c_nodal
   const Eigen::VectorXd reduced_load = load - coupling.transpose() * out.lambda;
   out.u = k_factor.solve(reduced_load);
   out.gap = coupling * out.u - gap_offset;

@@ -43,6 +43,8 @@ struct ContactSolution {
   Eigen::VectorXd u;                 ///< coefficients on S^p(T_h)
   /// λ in the Lagrange basis: its values at the constraint points, segment by segment.
   Eigen::VectorXd lambda;
+  /// The same λ in the Legendre basis of MultiplierSpace (for evaluation anywhere on Γ_C).
+  Eigen::VectorXd lambda_legendre;
   std::vector<double> constraint_s;  ///< arc length of each constraint point
   Eigen::VectorXd lower, upper;      ///< the bounds on lambda
   /// (ℓ_i, γ_C u − g) for Signorini, (ℓ_i, s γ_C u) or (ℓ_i, γ_C u) for friction: the dual

@@ -21,7 +21,7 @@ Scene read_scene(const std::string& path) {
   Scene scene;
   scene.file = path;
   // Misspelt section names are reported before "missing section" errors.
-  for (const char* section : {"domain", "boundary", "contact_mesh", "discretization", "data", "infsup"})
+  for (const char* section : {"domain", "boundary", "contact_mesh", "discretization", "data", "infsup", "solve"})
     root.has(section);
   root.reject_unknown_keys();
 
@@ -82,13 +82,19 @@ Scene read_scene(const std::string& path) {
 
   const auto data = root.table("data");
   scene.friction_bound = data.string("s", "");
-  if (!scene.friction_bound.empty()) Expression(scene.friction_bound, path + ": key 'data.s'");
+  scene.load = data.string("f", "-1");
+  scene.obstacle = data.string("g", "");
+  for (const auto& [key, text] : {std::pair{"s", scene.friction_bound}, {"f", scene.load}, {"g", scene.obstacle}})
+    if (!text.empty()) Expression(text, path + ": key 'data." + key + "'");
   data.reject_unknown_keys();
 
   const auto infsup = root.table("infsup");
   scene.norm = infsup.choice("norm", {"interp", "extension"}, "interp");
   scene.problem = infsup.choice("problem", {"signorini", "friction"}, "signorini");
   infsup.reject_unknown_keys();
+  const auto solve = root.table("solve");
+  scene.contact_problem = solve.choice("problem", {"signorini", "friction", "friction_s"}, "signorini");
+  solve.reject_unknown_keys();
   if (scene.problem == "friction" && scene.friction_bound.empty())
     throw_bad_input(path, "data.s", "(missing)", "the friction problem needs the friction bound s");
   root.reject_unknown_keys();

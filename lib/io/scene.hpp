@@ -35,8 +35,12 @@ struct Scene {
   int p = 1, pc = 0;
   // [data]
   std::string friction_bound;  ///< s, expression in x, y (may be empty)
+  std::string load = "-1";     ///< f
+  std::string obstacle;        ///< g (Signorini)
   // [infsup]
   std::string norm = "interp", problem = "signorini";
+  // [solve]
+  std::string contact_problem = "signorini";  ///< signorini | friction | friction_s
 };
 
 /// @throws InputError naming file, key, value and the allowed range.

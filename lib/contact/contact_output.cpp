@@ -1,0 +1,41 @@
+// sample_boundary.
+#include "contact/contact_output.hpp"
+
+#include "assembly/cell_values.hpp"
+#include "assembly/coupling.hpp"
+#include "fe/fe_function.hpp"
+#include "mesh/contact_boundary.hpp"
+#include "space/multiplier_space.hpp"
+
+namespace hpcontact::contact {
+
+BoundarySamples sample_boundary(const ContactSetup& setup, const ContactSolution& solution,
+                                int per_interval) {
+  const bool signorini = setup.problem == ContactProblem::signorini;
+  const space::H1Space space(*setup.mesh, setup.cell_degrees);
+  const mesh::ContactBoundary contact(*setup.mesh);
+  const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
+  BoundarySamples out{io::CsvTable({"x", "u", signorini ? "obstacle" : "s", "lambda", "y", "s_arc"}), 0.0};
+  const double lambda_scale = solution.lambda.cwiseAbs().maxCoeff();
+  for (const auto& interval : assembly::common_intervals(contact, *setup.boundary_mesh)) {
+    const auto& trace = contact.edges()[interval.trace_edge];
+    const int k = interval.segment;
+    const auto coefficients = solution.lambda_legendre.segment(multipliers.first_dof(k), multipliers.segment_degree(k) + 1);
+    int in_contact = 0;
+    for (int j = 0; j < per_interval; ++j) {
+      const double s = interval.s_begin + (interval.s_end - interval.s_begin) * j / (per_interval - 1);
+      const double t = trace.local_parameter(s);
+      const auto [xi, eta] = assembly::edge_reference_points(trace.local_edge, std::vector<double>{t});
+      const auto u = fe::evaluate(space, solution.u, {trace.cell, xi[0], eta[0]});
+      const mesh::Point x = contact.point_at(s);
+      const double lambda = multipliers.basis_values(k, multipliers.local_coordinate(k, s)).dot(coefficients);
+      const double data = signorini ? setup.obstacle(x) : setup.bound(x);
+      out.table.add_row({x.x(), u.value, data, lambda, x.y(), s});
+      if (std::abs(lambda) > 1e-10 * lambda_scale) ++in_contact;
+    }
+    out.contact_set_length += (interval.s_end - interval.s_begin) * in_contact / per_interval;
+  }
+  return out;
+}
+
+}  // namespace hpcontact::contact

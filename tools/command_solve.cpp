@@ -1,0 +1,130 @@
+// `hpcontact solve SCENE.toml --out DIR`: the discrete contact problem (9), (13) or (15) of the
+// scene; writes DIR/boundary.csv, DIR/solution.vtu and DIR/summary.json.
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "commands.hpp"
+#include "contact/contact_output.hpp"
+#include "core/error.hpp"
+#include "core/expression.hpp"
+#include "core/timer.hpp"
+#include "infsup/infsup_analysis.hpp"
+#include "io/atomic_file.hpp"
+#include "io/scene.hpp"
+#include "io/vtu_writer.hpp"
+
+namespace hpcontact::tools {
+namespace {
+
+struct SolveOptions {
+  std::string scene, out = "results/solve";
+  bool alpha = true;
+};
+
+contact::PointFunction function_of(const std::string& text, const std::string& origin) {
+  if (text.empty()) return {};
+  const Expression expression(text, origin);
+  return [expression](const mesh::Point& x) { return expression(x.x(), x.y()); };
+}
+
+int run_solve(const SolveOptions& o) {
+  Stopwatch clock;
+  // 1. Read the scene and build T_h and T_{C,H}.
+  const auto scene = io::read_scene(o.scene);
+  if (scene.contact_problem == "signorini" && scene.obstacle.empty())
+    throw_bad_input(o.scene, "data.g", "(missing)", "the Signorini problem needs the obstacle g");
+  if (scene.contact_problem != "signorini" && scene.friction_bound.empty())
+    throw_bad_input(o.scene, "data.s", "(missing)", "the friction problems need the bound s");
+  io::ensure_writable_directory(o.out);
+  const auto mesh = io::build_scene_mesh(scene);
+  const mesh::ContactBoundary contact(mesh);
+  const auto boundary_mesh = io::build_scene_boundary_mesh(scene, contact);
+
+  // 2. Set up the problem the scene asks for.
+  contact::ContactSetup setup;
+  setup.mesh = &mesh;
+  setup.cell_degrees.assign(mesh.n_cells(), scene.p);
+  setup.boundary_mesh = &boundary_mesh;
+  setup.segment_degrees.assign(boundary_mesh.n_segments(), scene.pc);
+  setup.problem = scene.contact_problem == "signorini" ? contact::ContactProblem::signorini
+                  : scene.contact_problem == "friction" ? contact::ContactProblem::friction
+                                                        : contact::ContactProblem::friction_s;
+  setup.f = function_of(scene.load, o.scene + ": key 'data.f'");
+  setup.obstacle = function_of(scene.obstacle, o.scene + ": key 'data.g'");
+  setup.bound = function_of(scene.friction_bound, o.scene + ": key 'data.s'");
+
+  // 3. Solve.
+  const auto solution = contact::solve_contact(setup);
+  const auto samples = contact::sample_boundary(setup, solution);
+
+  // 4. The inf-sup constant of the pairing tells whether λ is unique.
+  nlohmann::json summary;
+  if (o.alpha) {
+    infsup::InfSupSetup infsup_setup;
+    infsup_setup.mesh = &mesh;
+    infsup_setup.cell_degrees = setup.cell_degrees;
+    infsup_setup.boundary_mesh = &boundary_mesh;
+    infsup_setup.segment_degrees = setup.segment_degrees;
+    infsup_setup.problem = setup.problem == contact::ContactProblem::friction
+                               ? infsup::PairingProblem::friction
+                               : infsup::PairingProblem::signorini;
+    infsup_setup.friction_bound = setup.bound;
+    const auto alpha = infsup::analyse_infsup(infsup_setup, infsup::EigenBackend::slepc);
+    summary["alpha"] = alpha.alpha;
+    summary["lambda_unique"] = !alpha.singular;
+    summary["alpha_seconds"] = alpha.seconds;
+  } else {
+    summary["lambda_unique"] = "unknown (run without --no-alpha)";
+  }
+
+  // 5. Save: everything computed, now write the three files.
+  summary["scene"] = o.scene;
+  summary["problem"] = scene.contact_problem;
+  summary["p"] = scene.p;
+  summary["pC"] = scene.pc;
+  summary["edges_on_contact"] = contact.edges().size();
+  summary["m"] = boundary_mesh.n_segments();
+  summary["ndofs"] = solution.u.size();
+  summary["nmult"] = solution.lambda.size();
+  summary["energy"] = solution.energy;
+  summary["contact_set_length"] = samples.contact_set_length;
+  summary["solver"] = {{"method", solution.qp.method},
+                       {"converged", solution.qp.converged},
+                       {"kkt_residual", solution.qp.kkt_residual},
+                       {"active_set_steps", solution.qp.newton_steps},
+                       {"proximal_steps", solution.qp.proximal_steps}};
+  for (const auto& step : solution.qp.log)
+    summary["solver"]["log"].push_back(
+        {{"iteration", step.iteration}, {"violations", step.violations}, {"kkt_residual", step.kkt_residual}});
+  summary["seconds"] = {{"assembly_and_condensation", solution.seconds_setup},
+                        {"contact_qp", solution.seconds_qp},
+                        {"total", clock.seconds()}};
+  const std::filesystem::path out(o.out);
+  samples.table.write(out / "boundary.csv");
+  io::write_vtu(out / "solution.vtu", space::H1Space(mesh, setup.cell_degrees), solution.u);
+  io::write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
+  fmt::print("energy = {:.17g}\n# {} p {} pC {} m {}: {} active-set steps, KKT residual {:.2e}, "
+             "contact set length {:.4f}{}\nwrote {}/boundary.csv, solution.vtu, summary.json\n",
+             solution.energy, scene.contact_problem, scene.p, scene.pc, boundary_mesh.n_segments(),
+             solution.qp.newton_steps, solution.qp.kkt_residual, samples.contact_set_length,
+             o.alpha ? fmt::format(", alpha {:.4g}", summary["alpha"].get<double>()) : "", o.out);
+  return 0;
+}
+
+}  // namespace
+
+void add_solve_command(CLI::App& app, CommandAction& action) {
+  auto* command = app.add_subcommand(
+      "solve", "Contact problem (9), (13) or (15) of a scene: boundary.csv, solution.vtu, summary.json");
+  auto o = std::make_shared<SolveOptions>();
+  command->add_option("scene", o->scene, "Scene file (TOML); keys in studies/README.md")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command->add_option("--out", o->out, "Output folder")->capture_default_str();
+  command->add_flag("!--no-alpha", o->alpha, "Skip the inf-sup constant (uniqueness of lambda)");
+  command->callback([&action, o] { action = [o] { return run_solve(*o); }; });
+}
+
+}  // namespace hpcontact::tools
