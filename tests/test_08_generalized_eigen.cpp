@@ -2,6 +2,8 @@
 // options -infsup_*) against the dense Eigen solver, on pencils with known spectra, singular and
 // nearly singular S, other EPS types selected at run time, and broken input.
 #include <gtest/gtest.h>
+
+#include "slepc_test_environment.hpp"
 #include <slepcsys.h>
 
 #include <Eigen/Cholesky>
@@ -18,15 +20,6 @@ using namespace hpcontact;
 using infsup::SmallestEigenpair;
 
 namespace {
-
-/// SLEPc (and with it PETSc and MPI) for the whole test program; gtest_main provides main().
-class SlepcEnvironment : public ::testing::Environment {
- public:
-  void SetUp() override { ASSERT_EQ(SlepcInitialize(nullptr, nullptr, nullptr, nullptr), 0); }
-  void TearDown() override { SlepcFinalize(); }
-};
-[[maybe_unused]] ::testing::Environment* const slepc_environment =
-    ::testing::AddGlobalTestEnvironment(new SlepcEnvironment);
 
 /// Sets a PETSc option for one scope, as if given on the command line.
 class ScopedPetscOption {

@@ -2,6 +2,8 @@
 // dense path on stable, unstable and singular configurations, convergence of both H^{-1/2}
 // reference realizations, the friction variant (22) with supp s ≠ Γ_C, and mode sampling.
 #include <gtest/gtest.h>
+
+#include "slepc_test_environment.hpp"
 #include <slepcsys.h>
 
 #include <cmath>
@@ -13,14 +15,6 @@
 using namespace hpcontact;
 
 namespace {
-
-class SlepcEnvironment : public ::testing::Environment {
- public:
-  void SetUp() override { ASSERT_EQ(SlepcInitialize(nullptr, nullptr, nullptr, nullptr), 0); }
-  void TearDown() override { SlepcFinalize(); }
-};
-[[maybe_unused]] ::testing::Environment* const slepc_environment =
-    ::testing::AddGlobalTestEnvironment(new SlepcEnvironment);
 
 struct Configuration {
   int p, pc, n, m;
