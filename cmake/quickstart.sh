@@ -77,4 +77,21 @@ for figure in figure1_signorini figure4_friction figure6_friction_s; do
   "$python" plots/plot_paper.py "results/paper/$figure"
   cp "results/paper/$figure/figure.png" "studies/paper/$figure.png"
 done
+echo "== multiplier panels of Figures 2, 3, 5, 7 -> results/paper/panels" >&2
+for problem in signorini friction friction_s; do
+  case $problem in
+    signorini) scene=figure1_signorini; pairings=("1 0 1" "1 0 1/2" "2 1 1" "3 2 1" "3 2 1/2" "3 1 1") ;;
+    friction) scene=figure4_friction; pairings=("1 0 1" "1 0 1/2" "2 1 1" "3 2 1" "3 2 1/2" "3 1 1") ;;
+    friction_s) scene=figure6_friction_s; pairings=("1 0 1" "1 0 1/2" "2 1 1" "3 2 1" "3 2 1/2" "3 1 1") ;;
+  esac
+  for pairing in "${pairings[@]}"; do
+    set -- $pairing
+    build/bin/hpcontact solve "studies/paper/$scene.toml" --p "$1" --pc "$2" --ratio "$3" --no-alpha \
+      --out "results/paper/panels/${problem}_p$1_pC$2_hH${3//\//-}" > /dev/null
+  done
+done
+"$python" plots/plot_panels.py results/paper/panels
+for problem in signorini friction friction_s; do
+  cp "results/paper/panels/panels_$problem.png" "studies/paper/panels_$problem.png"
+done
 echo "quickstart: done; CSV and PNG in results/" >&2

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <filesystem>
+#include <optional>
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
@@ -21,6 +22,8 @@ namespace {
 struct SolveOptions {
   std::string scene, out = "results/solve";
   bool alpha = true;
+  std::optional<int> p, pc;  ///< overrides of the scene's degrees when given
+  std::string ratio;    ///< override of the scene's contact mesh (h/H) when given
 };
 
 contact::PointFunction function_of(const std::string& text, const std::string& origin) {
@@ -32,7 +35,21 @@ contact::PointFunction function_of(const std::string& text, const std::string& o
 int run_solve(const SolveOptions& o) {
   Stopwatch clock;
   // 1. Read the scene and build T_h and T_{C,H}.
-  const auto scene = io::read_scene(o.scene);
+  auto scene = io::read_scene(o.scene);
+  // Command-line overrides, so that one scene serves a family of pairings (the paper's panels).
+  if (o.p) {
+    if (*o.p < 1) throw_bad_input("hpcontact solve", "--p", std::to_string(*o.p), "must be >= 1");
+    scene.p = *o.p;
+  }
+  if (o.pc) {
+    if (*o.pc < 0) throw_bad_input("hpcontact solve", "--pc", std::to_string(*o.pc), "must be >= 0");
+    scene.pc = *o.pc;
+  }
+  if (!o.ratio.empty()) {
+    scene.ratio = o.ratio;
+    scene.m = 0;
+    scene.breakpoints.clear();
+  }
   if (scene.contact_problem == "signorini" && scene.obstacle.empty())
     throw_bad_input(o.scene, "data.g", "(missing)", "the Signorini problem needs the obstacle g");
   if (scene.contact_problem != "signorini" && scene.friction_bound.empty())
@@ -124,6 +141,9 @@ void add_solve_command(CLI::App& app, CommandAction& action) {
       ->check(CLI::ExistingFile);
   command->add_option("--out", o->out, "Output folder")->capture_default_str();
   command->add_flag("!--no-alpha", o->alpha, "Skip the inf-sup constant (uniqueness of lambda)");
+  command->add_option("--p", o->p, "Override the scene's p");
+  command->add_option("--pc", o->pc, "Override the scene's p_C");
+  command->add_option("--ratio", o->ratio, "Override the scene's contact mesh: h/H, e.g. 1/2");
   command->callback([&action, o] { action = [o] { return run_solve(*o); }; });
 }
 
