@@ -7,6 +7,7 @@
 
 #include "contact/contact_problem.hpp"
 #include "fe/fe_function.hpp"
+#include "infsup/infsup_analysis.hpp"
 #include "space/multiplier_space.hpp"
 #include "mesh/rectangle_mesh.hpp"
 
@@ -123,4 +124,23 @@ TEST(Contact, MultiplierApproximatesNormalDerivativeOfFineReference) {
   // the reference's own error limit the rate).
   EXPECT_LT(errors[1], 0.75 * errors[0]);
   EXPECT_LT(errors[2], 0.75 * errors[1]);
+}
+
+// More multipliers than trace values (p = 1, p_C = 0, h/H = 2): S is singular and λ is not
+// unique, yet the solver terminates at a KKT point and u is close to that of a stable pairing on
+// the same T_h (it is unique: only λ is not).
+TEST(Contact, SingularPairingStillGivesKktPointAndTheRightU) {
+  const auto singular = solve(contact::ContactProblem::signorini, 16, 1, 0, 32);
+  expect_kkt(singular, "singular pairing");
+  const auto stable = solve(contact::ContactProblem::signorini, 16, 1, 0, 8);
+  const double difference = std::abs(singular.energy - stable.energy);
+  EXPECT_LT(difference, 0.02 * std::abs(stable.energy)) << singular.energy << " vs " << stable.energy;
+  const auto boundary = mesh::BoundaryMesh::uniform(2.0, 32);
+  const auto mesh = mesh::make_paper_square_mesh(16);
+  infsup::InfSupSetup setup;
+  setup.mesh = &mesh;
+  setup.cell_degrees.assign(mesh.n_cells(), 1);
+  setup.boundary_mesh = &boundary;
+  setup.segment_degrees.assign(32, 0);
+  EXPECT_TRUE(infsup::analyse_infsup(setup, infsup::EigenBackend::dense).singular);
 }
