@@ -16,8 +16,9 @@ int main(int argc, char** argv) {
 
   // 2. Declare the subcommands.
   CLI::App app{"hpcontact: higher-order mixed finite elements for model contact problems and "
-               "their inf-sup stability.\nPETSc/SLEPc options (-eps_type arpack, -eps_view, ...) "
-               "may be added to any subcommand."};
+               "their inf-sup stability.\nPETSc/SLEPc options may be added to any subcommand; the "
+               "inf-sup eigensolver reads them with the prefix infsup_ (-infsup_eps_type arpack, "
+               "-infsup_eps_view, ...).", "hpcontact"};
   app.set_version_flag("--version", std::string(HPCONTACT_VERSION));
   app.require_subcommand(1);
   tools::CommandAction action;
