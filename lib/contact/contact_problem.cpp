@@ -38,7 +38,10 @@ ContactSolution solve_contact(const ContactSetup& setup) {
   const mesh::ContactBoundary contact(*setup.mesh);
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
   const auto stiffness = assembly::assemble_volume_matrices(space, {.stiffness = true, .mass = false}).stiffness;
-  const Eigen::VectorXd load = assembly::assemble_volume_load(space, setup.f);
+  Eigen::VectorXd load = assembly::assemble_volume_load(space, setup.f);
+  if (setup.traction)
+    load += assembly::assemble_boundary_load(
+        space, {mesh::BoundaryPart::neumann, mesh::BoundaryPart::contact}, setup.traction);
   const bool weighted = setup.problem == ContactProblem::friction;
   const Eigen::SparseMatrix<double> coupling_legendre = assembly::assemble_coupling(
       space, contact, multipliers, weighted ? setup.bound : assembly::BoundaryFunction{});

@@ -36,6 +36,9 @@ struct ContactSetup {
   PointFunction f;          ///< volume load
   PointFunction obstacle;   ///< g, Signorini only
   PointFunction bound;      ///< s, friction problems only (s ≥ 0)
+  /// Optional boundary traction t(x, n) on Γ_N and Γ_C, added to the load as ∫ t v ds (Neumann
+  /// data; on Γ_C a prescribed traction besides the contact force, used by manufactured tests).
+  std::function<double(const mesh::Point& x, const mesh::Point& normal)> traction;
   BoxQpOptions qp;
 };
 
