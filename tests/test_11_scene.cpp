@@ -93,3 +93,23 @@ TEST(Scene, EachClassOfBadInputNamesTheKey) {
             std::string::npos);
   EXPECT_NE(error_of("[domain\n").find("malformed TOML"), std::string::npos);
 }
+
+TEST(Scene, DegreeRulesGiveDistributions) {
+  const auto scene = io::read_scene(write_scene("rules", with("p = 2\npC = 1", "p = \"x < 0 ? 2 : 4\"\npC = \"x < 0 ? 0 : 1\"")));
+  const auto mesh = io::build_scene_mesh(scene);
+  const auto degrees = io::scene_cell_degrees(scene, mesh);
+  int twos = 0, fours = 0;
+  for (int p : degrees) (p == 2 ? twos : fours) += 1;
+  EXPECT_EQ(twos, 8);
+  EXPECT_EQ(fours, 8);
+  const mesh::ContactBoundary contact(mesh);
+  const auto boundary = io::build_scene_boundary_mesh(scene, contact);
+  EXPECT_EQ(io::scene_segment_degrees(scene, contact, boundary), (std::vector<int>{0, 1}));
+  const auto bad = io::read_scene(write_scene("bad_rule", with("p = 2", "p = \"x + 2\"")));
+  try {
+    io::scene_cell_degrees(bad, io::build_scene_mesh(bad));
+    ADD_FAILURE() << "a rule giving 1.25 must be rejected";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("discretization.p"), std::string::npos) << error.what();
+  }
+}

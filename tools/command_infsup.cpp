@@ -2,6 +2,7 @@
 // geometry, with Π of (20), optional CSV row and spurious-mode samples.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -35,6 +36,7 @@ struct Geometry {
   mesh::BoundaryMesh boundary_mesh;
   InfSupOptions options;  ///< with the scene's values filled in
   assembly::BoundaryFunction friction_bound;
+  std::vector<int> cell_degrees, segment_degrees;  ///< from a scene's rules; empty: uniform
 };
 
 Geometry build_geometry(const InfSupOptions& given) {
@@ -48,7 +50,7 @@ Geometry build_geometry(const InfSupOptions& given) {
       throw_bad_input(where, "--ratio", o.ratio,
                       fmt::format("n · ratio = {} must be a whole number of segments m", m_real));
     return {mesh::make_paper_square_mesh(o.n), mesh::BoundaryMesh::uniform(2.0, m), o,
-            [](const mesh::Point& x) { return (1.0 - x.x()) * (1.0 - x.x()); }};
+            [](const mesh::Point& x) { return (1.0 - x.x()) * (1.0 - x.x()); }, {}, {}};
   }
   if (o.n_given || o.ratio_given)
     throw_bad_input(where, o.n_given ? "--n" : "--ratio", "(given with --scene)",
@@ -68,7 +70,15 @@ Geometry build_geometry(const InfSupOptions& given) {
     const Expression bound(scene.friction_bound, o.scene + ": key 'data.s'");
     s = [bound](const mesh::Point& x) { return bound(x.x(), x.y()); };
   }
-  return {std::move(mesh), std::move(boundary_mesh), o, s};
+  // Degree rules of the scene, unless the command line sets uniform degrees.
+  std::vector<int> cell_degrees, segment_degrees;
+  if (!o.p_given && !scene.p_rule.empty()) cell_degrees = io::scene_cell_degrees(scene, mesh);
+  if (!o.pc_given && !scene.pc_rule.empty())
+    segment_degrees = io::scene_segment_degrees(scene, contact, boundary_mesh);
+  // Reported p and p_C of a distribution: the worst case, as in Π (smallest p, largest p_C).
+  if (!cell_degrees.empty()) o.p = *std::min_element(cell_degrees.begin(), cell_degrees.end());
+  if (!segment_degrees.empty()) o.pc = *std::max_element(segment_degrees.begin(), segment_degrees.end());
+  return {std::move(mesh), std::move(boundary_mesh), o, s, cell_degrees, segment_degrees};
 }
 
 int run_infsup(const InfSupOptions& given) {
@@ -92,9 +102,11 @@ int run_infsup(const InfSupOptions& given) {
   const int m = boundary_mesh.n_segments();
   const double ratio = studies::parse_ratio(o.ratio, where);
   setup.mesh = &mesh;
-  setup.cell_degrees.assign(mesh.n_cells(), o.p);
+  setup.cell_degrees = geometry.cell_degrees.empty() ? std::vector<int>(mesh.n_cells(), o.p)
+                                                      : geometry.cell_degrees;
   setup.boundary_mesh = &boundary_mesh;
-  setup.segment_degrees.assign(m, o.pc);
+  setup.segment_degrees = geometry.segment_degrees.empty() ? std::vector<int>(m, o.pc)
+                                                            : geometry.segment_degrees;
   setup.friction_bound = geometry.friction_bound;
   setup.interpolation_reference = {o.reference_subdivisions, o.reference_degree};
   setup.extension_reference = {o.reference_refinements, o.reference_extra_degree};

@@ -40,10 +40,12 @@ int run_solve(const SolveOptions& o) {
   if (o.p) {
     if (*o.p < 1) throw_bad_input("hpcontact solve", "--p", std::to_string(*o.p), "must be >= 1");
     scene.p = *o.p;
+    scene.p_rule.clear();
   }
   if (o.pc) {
     if (*o.pc < 0) throw_bad_input("hpcontact solve", "--pc", std::to_string(*o.pc), "must be >= 0");
     scene.pc = *o.pc;
+    scene.pc_rule.clear();
   }
   if (!o.ratio.empty()) {
     scene.ratio = o.ratio;
@@ -62,9 +64,9 @@ int run_solve(const SolveOptions& o) {
   // 2. Set up the problem the scene asks for.
   contact::ContactSetup setup;
   setup.mesh = &mesh;
-  setup.cell_degrees.assign(mesh.n_cells(), scene.p);
+  setup.cell_degrees = io::scene_cell_degrees(scene, mesh);
   setup.boundary_mesh = &boundary_mesh;
-  setup.segment_degrees.assign(boundary_mesh.n_segments(), scene.pc);
+  setup.segment_degrees = io::scene_segment_degrees(scene, contact, boundary_mesh);
   setup.problem = scene.contact_problem == "signorini" ? contact::ContactProblem::signorini
                   : scene.contact_problem == "friction" ? contact::ContactProblem::friction
                                                         : contact::ContactProblem::friction_s;
@@ -99,8 +101,8 @@ int run_solve(const SolveOptions& o) {
   // 5. Save: everything computed, now write the three files.
   summary["scene"] = o.scene;
   summary["problem"] = scene.contact_problem;
-  summary["p"] = scene.p;
-  summary["pC"] = scene.pc;
+  summary["p"] = scene.p_rule.empty() ? nlohmann::json(scene.p) : nlohmann::json(scene.p_rule);
+  summary["pC"] = scene.pc_rule.empty() ? nlohmann::json(scene.pc) : nlohmann::json(scene.pc_rule);
   summary["edges_on_contact"] = contact.edges().size();
   summary["m"] = boundary_mesh.n_segments();
   summary["ndofs"] = solution.u.size();
@@ -124,7 +126,8 @@ int run_solve(const SolveOptions& o) {
   io::write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
   fmt::print("energy = {:.17g}\n# {} p {} pC {} m {}: {} active-set steps, KKT residual {:.2e}, "
              "contact set length {:.4f}{}\nwrote {}/boundary.csv, solution.vtu, summary.json\n",
-             solution.energy, scene.contact_problem, scene.p, scene.pc, boundary_mesh.n_segments(),
+             solution.energy, scene.contact_problem, scene.p_rule.empty() ? std::to_string(scene.p) : scene.p_rule,
+             scene.pc_rule.empty() ? std::to_string(scene.pc) : scene.pc_rule, boundary_mesh.n_segments(),
              solution.qp.newton_steps, solution.qp.kkt_residual, samples.contact_set_length,
              o.alpha ? fmt::format(", alpha {:.4g}", summary["alpha"].get<double>()) : "", o.out);
   return 0;

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <functional>
 #include <map>
@@ -11,6 +12,7 @@
 #include "core/error.hpp"
 #include "core/expression.hpp"
 #include "io/toml_reader.hpp"
+#include "mesh/cell_map.hpp"
 #include "mesh/gmsh_reader.hpp"
 #include "studies/stability_sweep.hpp"
 
@@ -76,8 +78,21 @@ Scene read_scene(const std::string& path) {
   contact_mesh.reject_unknown_keys();
 
   const auto discretization = root.table("discretization", true);
-  scene.p = static_cast<int>(discretization.integer("p", 1, 20));
-  scene.pc = static_cast<int>(discretization.integer("pC", 0, 19));
+  // An integer, or a rule as a string.
+  auto degree = [&](const char* key, long long low, long long high, int& value, std::string& rule) {
+    const std::string text = discretization.string_list(key).front();
+    char* end = nullptr;
+    std::strtoll(text.c_str(), &end, 10);
+    if (end != text.c_str() && *end == '\0') {
+      value = static_cast<int>(discretization.integer(key, low, high));
+      return;
+    }
+    rule = text;
+    Expression(rule, path + ": key 'discretization." + key + "'");
+    value = -1;  // set per cell or segment from the rule
+  };
+  degree("p", 1, 20, scene.p, scene.p_rule);
+  degree("pC", 0, 19, scene.pc, scene.pc_rule);
   discretization.reject_unknown_keys();
 
   const auto data = root.table("data");
@@ -131,6 +146,39 @@ mesh::QuadMesh build_scene_mesh(const Scene& scene) {
     if (dirichlet) mesh.set_edge_part(e, mesh::BoundaryPart::dirichlet);
   }
   return mesh;
+}
+
+namespace {
+
+int whole_degree(const Expression& rule, const mesh::Point& x, int low, int high,
+                 const std::string& file, const std::string& key) {
+  const double value = rule(x.x(), x.y());
+  if (std::abs(value - std::round(value)) > 1e-9 || value < low || value > high)
+    throw_bad_input(file, key, fmt::format("{} at ({}, {})", value, x.x(), x.y()),
+                    fmt::format("the rule must give whole numbers in [{}, {}]", low, high));
+  return static_cast<int>(std::lround(value));
+}
+
+}  // namespace
+
+std::vector<int> scene_cell_degrees(const Scene& scene, const mesh::QuadMesh& mesh) {
+  if (scene.p_rule.empty()) return std::vector<int>(mesh.n_cells(), scene.p);
+  const Expression rule(scene.p_rule, scene.file + ": key 'discretization.p'");
+  std::vector<int> degrees(mesh.n_cells());
+  for (int c = 0; c < mesh.n_cells(); ++c)
+    degrees[c] = whole_degree(rule, mesh::CellMap(mesh, c).map(0.0, 0.0), 1, 20, scene.file, "discretization.p");
+  return degrees;
+}
+
+std::vector<int> scene_segment_degrees(const Scene& scene, const mesh::ContactBoundary& contact,
+                                       const mesh::BoundaryMesh& boundary_mesh) {
+  if (scene.pc_rule.empty()) return std::vector<int>(boundary_mesh.n_segments(), scene.pc);
+  const Expression rule(scene.pc_rule, scene.file + ": key 'discretization.pC'");
+  std::vector<int> degrees(boundary_mesh.n_segments());
+  for (int k = 0; k < boundary_mesh.n_segments(); ++k)
+    degrees[k] = whole_degree(rule, contact.point_at(0.5 * (boundary_mesh.segment_begin(k) + boundary_mesh.segment_end(k))),
+                              0, 19, scene.file, "discretization.pC");
+  return degrees;
 }
 
 mesh::BoundaryMesh build_scene_boundary_mesh(const Scene& scene, const mesh::ContactBoundary& contact) {

@@ -31,8 +31,10 @@ struct Scene {
   std::string ratio;
   std::vector<double> breakpoints;
   double grading = 1.0;
-  // [discretization]
+  // [discretization]: an integer, or a rule: an expression in x, y evaluated at cell centres
+  // (p) or segment midpoints (pC), which must give whole numbers in range.
   int p = 1, pc = 0;
+  std::string p_rule, pc_rule;
   // [data]
   std::string friction_bound;  ///< s, expression in x, y (may be empty)
   std::string load = "-1";     ///< f
@@ -48,6 +50,13 @@ Scene read_scene(const std::string& path);
 
 /// T_h with boundary parts. @throws InputError if Γ_C is empty or Γ_C and Γ_D overlap.
 mesh::QuadMesh build_scene_mesh(const Scene& scene);
+
+/// p_T per cell (the rule at Ψ_T(0,0), or p). @throws InputError for values that are not whole
+/// numbers in [1, 20].
+std::vector<int> scene_cell_degrees(const Scene& scene, const mesh::QuadMesh& mesh);
+/// p_C per segment (the rule at the segment midpoint, or pC), whole numbers in [0, 19].
+std::vector<int> scene_segment_degrees(const Scene& scene, const mesh::ContactBoundary& contact,
+                                       const mesh::BoundaryMesh& boundary_mesh);
 
 /// T_{C,H} on Γ_C of the scene's mesh.
 mesh::BoundaryMesh build_scene_boundary_mesh(const Scene& scene, const mesh::ContactBoundary& contact);
