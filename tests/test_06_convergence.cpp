@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "fe/error_norms.hpp"
+#include "manufactured_solution.hpp"
 #include "mesh/rectangle_mesh.hpp"
 #include "problems/poisson_problem.hpp"
 
@@ -13,30 +14,18 @@ using namespace hpcontact;
 
 namespace {
 
-// u = sin(1-x) sin(1-y) e^{(x+y)/2}: analytic, zero on x = 1 and y = 1, so u ∈ H¹(Ω, Γ_D).
-double u(const mesh::Point& p) {
-  return std::sin(1 - p.x()) * std::sin(1 - p.y()) * std::exp(0.5 * (p.x() + p.y()));
-}
-Eigen::Vector2d grad_u(const mesh::Point& p) {
-  const double s = std::sin(1 - p.x()), c = std::cos(1 - p.x());
-  const double S = std::sin(1 - p.y()), C = std::cos(1 - p.y());
-  const double E = std::exp(0.5 * (p.x() + p.y()));
-  return {(-c + 0.5 * s) * S * E, s * (-C + 0.5 * S) * E};
-}
-double f(const mesh::Point& p) {  // -Δu
-  const double s = std::sin(1 - p.x()), c = std::cos(1 - p.x());
-  const double S = std::sin(1 - p.y()), C = std::cos(1 - p.y());
-  return std::exp(0.5 * (p.x() + p.y())) * (1.5 * s * S + c * S + s * C);
-}
+using hpcontact::testing::manufactured_f;
+using hpcontact::testing::manufactured_gradient;
+using hpcontact::testing::manufactured_u;
 
 fe::ErrorNorms solve_and_measure(int n, int p, double perturbation = 0.0) {
   auto m = mesh::make_paper_square_mesh(n);
   if (perturbation > 0) mesh::perturb_interior_vertices(m, perturbation, 5);
   const space::H1Space s(m, p);
-  problems::PoissonData data{f, [](const mesh::Point& x, const mesh::Point& normal) {
-                               return grad_u(x).dot(normal);
+  problems::PoissonData data{manufactured_f, [](const mesh::Point& x, const mesh::Point& normal) {
+                               return manufactured_gradient(x).dot(normal);
                              }};
-  return fe::compute_errors(s, problems::solve_poisson(s, data).coefficients, {u, grad_u});
+  return fe::compute_errors(s, problems::solve_poisson(s, data).coefficients, {manufactured_u, manufactured_gradient});
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include "fe/error_norms.hpp"
 #include "fe/fe_function.hpp"
 #include "infsup/infsup_analysis.hpp"
+#include "manufactured_solution.hpp"
 #include "space/multiplier_space.hpp"
 #include "mesh/rectangle_mesh.hpp"
 
@@ -156,15 +157,9 @@ namespace {
 //   Neumann data ∂_n u on Γ_N and the traction t = ∂_n u + λ on Γ_C, so that
 //   (∇u, ∇v) = (f, v) + (∂_n u, v)_{Γ_N} + (t, v)_{Γ_C} - (λ, v)_{Γ_C}.
 // λ (u - g) = ψ φ = 0: the pair (u, λ) solves the continuous problem, C is the contact set.
-double exact_u(const mesh::Point& p) {
-  return std::sin(1 - p.x()) * std::sin(1 - p.y()) * std::exp(0.5 * (p.x() + p.y()));
-}
-Eigen::Vector2d exact_gradient(const mesh::Point& p) {
-  const double s = std::sin(1 - p.x()), c = std::cos(1 - p.x());
-  const double S = std::sin(1 - p.y()), C = std::cos(1 - p.y());
-  const double E = std::exp(0.5 * (p.x() + p.y()));
-  return {(-c + 0.5 * s) * S * E, s * (-C + 0.5 * S) * E};
-}
+using hpcontact::testing::manufactured_f;
+using hpcontact::testing::manufactured_gradient;
+using hpcontact::testing::manufactured_u;
 double exact_lambda(double x) { return std::abs(x) <= 0.5 ? -8.0 * std::pow(0.25 - x * x, 2) : 0.0; }
 
 struct ManufacturedErrors {
@@ -179,22 +174,18 @@ ManufacturedErrors manufactured(int n, int p, int pc, int m) {
   setup.cell_degrees.assign(mesh.n_cells(), p);
   setup.boundary_mesh = &boundary;
   setup.segment_degrees.assign(m, pc);
-  setup.f = [](const mesh::Point& x) {
-    const double s = std::sin(1 - x.x()), c = std::cos(1 - x.x());
-    const double S = std::sin(1 - x.y()), C = std::cos(1 - x.y());
-    return std::exp(0.5 * (x.x() + x.y())) * (1.5 * s * S + c * S + s * C);
-  };
+  setup.f = manufactured_f;
   setup.obstacle = [](const mesh::Point& x) {
     const double phi = std::abs(x.x()) <= 0.5 ? 0.0 : std::pow(x.x() * x.x() - 0.25, 2);
-    return exact_u(x) - phi;
+    return manufactured_u(x) - phi;
   };
   setup.traction = [](const mesh::Point& x, const mesh::Point& normal) {
-    const double dn = exact_gradient(x).dot(normal);
+    const double dn = manufactured_gradient(x).dot(normal);
     return std::abs(x.y() + 1.0) < 1e-12 ? dn + exact_lambda(x.x()) : dn;
   };
   const auto solution = contact::solve_contact(setup);
   const space::H1Space space(mesh, setup.cell_degrees);
-  const auto errors = fe::compute_errors(space, solution.u, {exact_u, exact_gradient});
+  const auto errors = fe::compute_errors(space, solution.u, {manufactured_u, manufactured_gradient});
   const space::MultiplierSpace multipliers(boundary, pc);
   double squared = 0.0;
   const auto& rule = basis::gauss_legendre(10);
