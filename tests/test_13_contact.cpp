@@ -18,14 +18,21 @@ using namespace hpcontact;
 
 namespace {
 
-contact::ContactSolution solve(contact::ContactProblem problem, int n, int p, int pc, int m) {
-  const auto mesh = mesh::make_paper_square_mesh(n);
-  const auto boundary = mesh::BoundaryMesh::uniform(2.0, m);
+// Uniform degrees p and p_C on the given meshes (which must outlive the setup).
+contact::ContactSetup uniform_setup(const mesh::QuadMesh& mesh, const mesh::BoundaryMesh& boundary,
+                                    int p, int pc) {
   contact::ContactSetup setup;
   setup.mesh = &mesh;
   setup.cell_degrees.assign(mesh.n_cells(), p);
   setup.boundary_mesh = &boundary;
-  setup.segment_degrees.assign(m, pc);
+  setup.segment_degrees.assign(boundary.n_segments(), pc);
+  return setup;
+}
+
+contact::ContactSolution solve(contact::ContactProblem problem, int n, int p, int pc, int m) {
+  const auto mesh = mesh::make_paper_square_mesh(n);
+  const auto boundary = mesh::BoundaryMesh::uniform(2.0, m);
+  auto setup = uniform_setup(mesh, boundary, p, pc);
   setup.problem = problem;
   setup.f = [](const mesh::Point&) { return -1.0; };
   setup.obstacle = [](const mesh::Point& x) { return -x.x() * x.x(); };
@@ -97,11 +104,7 @@ TEST(Contact, FrictionFormulationsApproachTheSameEnergy) {
 TEST(Contact, MultiplierApproximatesNormalDerivativeOfFineReference) {
   const auto fine_mesh = mesh::make_paper_square_mesh(64);
   const auto fine_boundary = mesh::BoundaryMesh::uniform(2.0, 32);
-  contact::ContactSetup fine;
-  fine.mesh = &fine_mesh;
-  fine.cell_degrees.assign(fine_mesh.n_cells(), 3);
-  fine.boundary_mesh = &fine_boundary;
-  fine.segment_degrees.assign(32, 1);
+  auto fine = uniform_setup(fine_mesh, fine_boundary, 3, 1);
   fine.f = [](const mesh::Point&) { return -1.0; };
   fine.obstacle = [](const mesh::Point& x) { return -x.x() * x.x(); };
   const auto reference = contact::solve_contact(fine);
@@ -169,11 +172,7 @@ struct ManufacturedErrors {
 ManufacturedErrors manufactured(int n, int p, int pc, int m) {
   const auto mesh = mesh::make_paper_square_mesh(n);
   const auto boundary = mesh::BoundaryMesh::uniform(2.0, m);
-  contact::ContactSetup setup;
-  setup.mesh = &mesh;
-  setup.cell_degrees.assign(mesh.n_cells(), p);
-  setup.boundary_mesh = &boundary;
-  setup.segment_degrees.assign(m, pc);
+  auto setup = uniform_setup(mesh, boundary, p, pc);
   setup.f = manufactured_f;
   setup.obstacle = [](const mesh::Point& x) {
     const double phi = std::abs(x.x()) <= 0.5 ? 0.0 : std::pow(x.x() * x.x() - 0.25, 2);
