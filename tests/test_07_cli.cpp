@@ -151,3 +151,19 @@ TEST(Cli, SolveWithoutObstacleIsBadInputAndWritesNothing) {
   EXPECT_NE(result.output.find("data.g"), std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(dir / "out"));
 }
+
+TEST(Cli, SolveWithMoreConstraintPointsUsesInteriorPointAndRefusesTooFew) {
+  const auto dir = scratch("solve_points");
+  const std::string scene = std::string(HPCONTACT_SOURCE_DIR) + "/studies/paper/figure6_friction_s.toml";
+  const auto good = run("solve " + scene + " --no-alpha --constraint-points 6 --out " + (dir / "out").string());
+  ASSERT_EQ(good.exit_code, 0) << good.output;
+  std::ifstream summary(dir / "out" / "summary.json");
+  const std::string json((std::istreambuf_iterator<char>(summary)), std::istreambuf_iterator<char>());
+  EXPECT_NE(json.find("\"interior-point\""), std::string::npos) << json.substr(0, 600);
+  EXPECT_NE(json.find("\"active_set_changes\""), std::string::npos);
+  const auto bad = run("solve " + scene + " --no-alpha --pc 3 --constraint-points 3 --out " + (dir / "bad").string());
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+  EXPECT_NE(bad.output.find("--constraint-points"), std::string::npos) << bad.output;
+  EXPECT_NE(bad.output.find("p_C + 1 = 4"), std::string::npos) << bad.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "bad"));
+}

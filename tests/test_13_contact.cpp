@@ -3,9 +3,13 @@
 // stable and unstable pairings and for higher p_C (Remark 3's Chebyshev–Lobatto points).
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include <cmath>
+#include <optional>
 
 #include "contact/contact_problem.hpp"
+#include "core/error.hpp"
 #include "basis/quadrature.hpp"
 #include "fe/error_norms.hpp"
 #include "fe/fe_function.hpp"
@@ -29,38 +33,137 @@ contact::ContactSetup uniform_setup(const mesh::QuadMesh& mesh, const mesh::Boun
   return setup;
 }
 
-contact::ContactSolution solve(contact::ContactProblem problem, int n, int p, int pc, int m) {
+contact::ContactSolution solve(contact::ContactProblem problem, int n, int p, int pc, int m,
+                               std::optional<int> constraint_points = {}) {
   const auto mesh = mesh::make_paper_square_mesh(n);
   const auto boundary = mesh::BoundaryMesh::uniform(2.0, m);
   auto setup = uniform_setup(mesh, boundary, p, pc);
   setup.problem = problem;
+  setup.constraint_points = constraint_points;
   setup.f = [](const mesh::Point&) { return -1.0; };
   setup.obstacle = [](const mesh::Point& x) { return -x.x() * x.x(); };
   setup.bound = [](const mesh::Point& x) { return (1.0 - x.x()) * (1.0 - x.x()); };
   return contact::solve_contact(setup);
 }
 
-// λ within its bounds; the gap (ℓ_i, ·) ≥ 0 where λ sits at its upper bound, ≤ 0 at its lower
-// bound, = 0 in between; all relative to the size of the gap vector.
+// At every constraint point j (values v = C λ, multipliers y with Cᵀ y = gap): v within its
+// bounds; y_j > 0 only against a finite upper bound, y_j < 0 only against a finite lower bound;
+// complementarity y_j⁺ (upper_j − v_j) = y_j⁻ (v_j − lower_j) = 0, relative to max|y| max(|λ|, 1).
+// For the active-set path C = I and y = gap; the interior-point path reaches the same to 1e-10.
 void expect_kkt(const contact::ContactSolution& s, const std::string& label) {
   const double scale = std::max(s.gap.lpNorm<Eigen::Infinity>(), 1e-300);
   const double lambda_scale = std::max(s.lambda.lpNorm<Eigen::Infinity>(), 1.0);
+  const Eigen::VectorXd values = s.constraint_matrix * s.lambda;
+  const Eigen::VectorXd& y = s.constraint_multiplier;
+  const double y_scale = std::max(y.lpNorm<Eigen::Infinity>(), 1e-300);
   EXPECT_LT(s.qp.kkt_residual, 1e-12) << label;
-  for (Eigen::Index i = 0; i < s.lambda.size(); ++i) {
-    EXPECT_LE(s.lambda(i), s.upper(i) + 1e-14 * lambda_scale) << label << " i " << i;
-    EXPECT_GE(s.lambda(i), s.lower(i) - 1e-14 * lambda_scale) << label << " i " << i;
-    const bool at_upper = s.lambda(i) >= s.upper(i) - 1e-12 * lambda_scale;
-    const bool at_lower = s.lambda(i) <= s.lower(i) + 1e-12 * lambda_scale;
-    if (!at_upper) {
-      EXPECT_LE(s.gap(i), 1e-10 * scale) << label << " i " << i;
+  EXPECT_LT((s.constraint_matrix.transpose() * y - s.gap).lpNorm<Eigen::Infinity>(), 1e-10 * scale) << label;
+  for (Eigen::Index j = 0; j < values.size(); ++j) {
+    EXPECT_LE(values(j), s.upper(j) + 1e-12 * lambda_scale) << label << " j " << j;
+    EXPECT_GE(values(j), s.lower(j) - 1e-12 * lambda_scale) << label << " j " << j;
+    if (std::isfinite(s.upper(j))) {
+      EXPECT_LE(std::max(y(j), 0.0) * (s.upper(j) - values(j)), 1e-10 * y_scale * lambda_scale) << label << " j " << j;
+    } else {
+      EXPECT_LE(y(j), 1e-10 * y_scale) << label << " j " << j;
     }
-    if (!at_lower) {
-      EXPECT_GE(s.gap(i), -1e-10 * scale) << label << " i " << i;
+    if (std::isfinite(s.lower(j))) {
+      EXPECT_LE(std::max(-y(j), 0.0) * (values(j) - s.lower(j)), 1e-10 * y_scale * lambda_scale) << label << " j " << j;
+    } else {
+      EXPECT_GE(y(j), -1e-10 * y_scale) << label << " j " << j;
     }
   }
 }
 
+// The largest violation of the pointwise constraint between the constraint points, sampled at 200
+// points per segment of a uniform T_{C,H} with m segments of degree pc: max λ_H (Signorini) or
+// max |λ_H| − s (15), with s = (1 − x)² on the bottom edge (x = s_arc − 1).
+double pointwise_violation(const contact::ContactSolution& solution, int m, int pc, bool signorini) {
+  const space::MultiplierSpace multipliers(mesh::BoundaryMesh::uniform(2.0, m), pc);
+  double worst = -INFINITY;
+  for (int k = 0; k < m; ++k)
+    for (int i = 0; i <= 200; ++i) {
+      const double tau = -1.0 + 2.0 * i / 200.0;
+      const double lambda = multipliers.basis_values(k, tau).dot(
+          solution.lambda_legendre.segment(multipliers.first_dof(k), pc + 1));
+      const double x = -1.0 + 2.0 * (k + 0.5 * (tau + 1.0)) / m;
+      worst = std::max(worst, signorini ? lambda : std::abs(lambda) - (1.0 - x) * (1.0 - x));
+    }
+  return worst;
+}
+
 }  // namespace
+
+// Remark 3 with more constraint points than coefficients: general inequalities, solved by the
+// interior-point method. KKT holds at every point, and the condition between the points tightens
+// as |𝒞| grows, while the energy hardly moves. Measured (n = 16, m = 8): max λ_H for p = 3,
+// p_C = 2 falls 1.5e-1, 1.4e-2, 3.8e-3, 5.9e-4 for |𝒞| = 3, 6, 12, 24 (energy −0.80189 …
+// −0.80284); max |λ_H| − s for (15), p_C = 1: 1.6e-2, 3.9e-3, 7.7e-4, 1.7e-4; 10–15 iterations.
+TEST(Contact, MoreConstraintPointsKeepKktAndTightenThePointwiseCondition) {
+  struct Case { contact::ContactProblem problem; int p, pc; std::vector<int> q; };
+  for (const auto& c : {Case{contact::ContactProblem::signorini, 3, 2, {3, 6, 12, 24}},
+                        Case{contact::ContactProblem::signorini, 4, 3, {4, 8, 16}},
+                        Case{contact::ContactProblem::friction_s, 2, 1, {2, 4, 8, 16}},
+                        Case{contact::ContactProblem::friction, 3, 2, {3, 6, 12}}}) {
+    const bool signorini = c.problem == contact::ContactProblem::signorini;
+    double previous_violation = INFINITY, first_violation = 0.0, first_energy = 0.0;
+    for (int q : c.q) {
+      const std::string label = fmt::format("problem {} p {} pC {} q {}", int(c.problem), c.p, c.pc, q);
+      const auto s = solve(c.problem, 16, c.p, c.pc, 8, q);
+      expect_kkt(s, label);
+      EXPECT_EQ(s.qp.method.starts_with("active-set"), q == c.pc + 1) << label << " " << s.qp.method;
+      EXPECT_EQ(s.constraint_matrix.rows(), 8 * q) << label;
+      if (c.problem == contact::ContactProblem::friction) continue;  // |λ| ≤ 1 is not the bound s
+      const double violation = pointwise_violation(s, 8, c.pc, signorini);
+      EXPECT_LE(violation, previous_violation + 1e-12) << label;
+      previous_violation = violation;
+      if (q == c.q.front()) first_energy = s.energy;
+      if (q == c.q.front()) first_violation = violation;
+      EXPECT_NEAR(s.energy, first_energy, 2e-2 * std::abs(first_energy)) << label;
+    }
+    if (c.problem != contact::ContactProblem::friction) {
+      EXPECT_LT(previous_violation, first_violation / 15.0) << int(c.problem);
+    }
+  }
+}
+
+// E(u_h) = min E over K_{h,H} = {v ∈ S^p(T_h): ∫ μ (v − g) ≤ 0 for all μ ∈ M_-^{p_C}(T_{C,H})}.
+// Refining T_h at fixed T_{C,H} enlarges K_{h,H} (S^p nested): E decreases. Refining T_{C,H} at
+// fixed T_h (p_C ≤ 1, nested: a sign condition at the vertices of a segment holds at its
+// midpoint) adds constraints: E increases. Both are theorems and asserted exactly (up to the
+// solver tolerance). Uniform refinement of both meshes mixes the two effects, so monotonicity is
+// not guaranteed there; on the §7 data it holds from n = 8 on (asserted) and the energies converge.
+TEST(Contact, EnergiesAreMonotoneUnderNestedRefinement) {
+  for (const auto& [p, pc] : {std::pair{1, 0}, std::pair{2, 1}}) {
+    const std::string label = fmt::format("p {} pC {}", p, pc);
+    double previous = INFINITY;
+    for (int n : {4, 8, 16, 32, 64}) {  // h-refinement, T_{C,H} fixed with 4 segments
+      const double energy = solve(contact::ContactProblem::signorini, n, p, pc, 4).energy;
+      EXPECT_LT(energy, previous + 1e-12) << label << " h-refinement n " << n;
+      previous = energy;
+    }
+    previous = -INFINITY;
+    for (int m : {1, 2, 4, 8, 16, 32}) {  // H-refinement, T_h fixed at n = 32
+      const double energy = solve(contact::ContactProblem::signorini, 32, p, pc, m).energy;
+      EXPECT_GT(energy, previous - 1e-12) << label << " H-refinement m " << m;
+      previous = energy;
+    }
+    // Uniform refinement, h/H = 1/2. Measured for p = 2: −0.83363 (n = 4), −0.80214, −0.80232,
+    // −0.80265, −0.80318, −0.80346 (n = 128); for p = 1: −0.96046, −0.77398, …, −0.80280.
+    std::vector<double> energies;
+    for (int n : {8, 16, 32, 64}) energies.push_back(solve(contact::ContactProblem::signorini, n, p, pc, n / 2).energy);
+    for (std::size_t i = 1; i < energies.size(); ++i) EXPECT_LT(energies[i], energies[i - 1]) << label << " level " << i;
+    EXPECT_LT(std::abs(energies.back() - energies[energies.size() - 2]), 0.01) << label;
+  }
+}
+
+TEST(Contact, TooFewConstraintPointsAreRefused) {
+  EXPECT_THROW(solve(contact::ContactProblem::signorini, 8, 3, 2, 4, 2), InputError);
+  EXPECT_THROW(solve(contact::ContactProblem::friction_s, 8, 2, 1, 4, 1), InputError);
+  // p_C ≤ 1 on M_- is exact at the nodal points: a request for more points changes nothing.
+  const auto exact = solve(contact::ContactProblem::signorini, 8, 2, 1, 4, 9);
+  EXPECT_TRUE(exact.qp.method.starts_with("active-set")) << exact.qp.method;
+  EXPECT_EQ(exact.constraint_matrix.rows(), 8);
+}
 
 TEST(Contact, SignoriniKktForStableUnstableAndHighOrderPairings) {
   struct Case { int p, pc, m; };
@@ -149,6 +252,14 @@ TEST(Contact, SingularPairingStillGivesKktPointAndTheRightU) {
   setup.boundary_mesh = &boundary;
   setup.segment_degrees.assign(32, 0);
   EXPECT_TRUE(infsup::analyse_infsup(setup, infsup::EigenBackend::dense).singular);
+  // The interior-point path on a singular pairing (h/H = 2, p_C = 2, general constraints at 6
+  // points per segment) also ends at a KKT point with the u of a stable pairing.
+  const auto singular_ipm = solve(contact::ContactProblem::signorini, 16, 2, 2, 32, 6);
+  EXPECT_EQ(singular_ipm.qp.method, "interior-point");
+  expect_kkt(singular_ipm, "singular pairing, interior point");
+  const auto stable_p2 = solve(contact::ContactProblem::signorini, 16, 2, 1, 8);
+  EXPECT_LT(std::abs(singular_ipm.energy - stable_p2.energy), 0.02 * std::abs(stable_p2.energy))
+      << singular_ipm.energy << " vs " << stable_p2.energy;
 }
 
 namespace {

@@ -2,6 +2,7 @@
 // scene; writes DIR/boundary.csv, DIR/solution.vtu and DIR/summary.json.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <optional>
 #include <nlohmann/json.hpp>
@@ -24,6 +25,7 @@ struct SolveOptions {
   bool alpha = true;
   std::optional<int> p, pc;  ///< overrides of the scene's degrees when given
   std::string ratio;    ///< override of the scene's contact mesh (h/H) when given
+  std::optional<int> constraint_points;  ///< override of the scene's |𝒞| per segment
 };
 
 contact::PointFunction function_of(const std::string& text, const std::string& origin) {
@@ -56,7 +58,6 @@ int run_solve(const SolveOptions& o) {
     throw_bad_input(o.scene, "data.g", "(missing)", "the Signorini problem needs the obstacle g");
   if (scene.contact_problem != "signorini" && scene.friction_bound.empty())
     throw_bad_input(o.scene, "data.s", "(missing)", "the friction problems need the bound s");
-  io::ensure_writable_directory(o.out);
   const auto mesh = io::build_scene_mesh(scene);
   const mesh::ContactBoundary contact(mesh);
   const auto boundary_mesh = io::build_scene_boundary_mesh(scene, contact);
@@ -70,9 +71,23 @@ int run_solve(const SolveOptions& o) {
   setup.problem = scene.contact_problem == "signorini" ? contact::ContactProblem::signorini
                   : scene.contact_problem == "friction" ? contact::ContactProblem::friction
                                                         : contact::ContactProblem::friction_s;
+  setup.constraint_points = o.constraint_points ? o.constraint_points : scene.constraint_points;
+  for (int pc : setup.segment_degrees) {
+    try {
+      contact::segment_constraint_points(setup.problem, pc, setup.constraint_points);
+    } catch (const InputError& error) {
+      throw_bad_input(o.constraint_points ? std::string("hpcontact solve") : o.scene,
+                      o.constraint_points ? "--constraint-points" : "solve.constraint_points",
+                      std::to_string(*setup.constraint_points),
+                      fmt::format("at least p_C + 1 = {} (the largest p_C of the scene's segments is {})",
+                                  pc + 1, *std::max_element(setup.segment_degrees.begin(), setup.segment_degrees.end())));
+    }
+  }
   setup.f = function_of(scene.load, o.scene + ": key 'data.f'");
   setup.obstacle = function_of(scene.obstacle, o.scene + ": key 'data.g'");
   setup.bound = function_of(scene.friction_bound, o.scene + ": key 'data.s'");
+
+  io::ensure_writable_directory(o.out);
 
   // 3. Solve.
   const auto solution = contact::solve_contact(setup);
@@ -109,14 +124,19 @@ int run_solve(const SolveOptions& o) {
   summary["nmult"] = solution.lambda.size();
   summary["energy"] = solution.energy;
   summary["contact_set_length"] = samples.contact_set_length;
+  const auto& q = solution.constraint_points;
+  summary["constraint_points_per_segment"] = {{"min", *std::min_element(q.begin(), q.end())},
+                                              {"max", *std::max_element(q.begin(), q.end())},
+                                              {"total", solution.constraint_s.size()}};
   summary["solver"] = {{"method", solution.qp.method},
                        {"converged", solution.qp.converged},
                        {"kkt_residual", solution.qp.kkt_residual},
-                       {"active_set_steps", solution.qp.newton_steps},
+                       {"iterations", solution.qp.iterations},
                        {"proximal_steps", solution.qp.proximal_steps}};
   for (const auto& step : solution.qp.log)
-    summary["solver"]["log"].push_back(
-        {{"iteration", step.iteration}, {"violations", step.violations}, {"kkt_residual", step.kkt_residual}});
+    summary["solver"]["log"].push_back({{"iteration", step.iteration},
+                                        {"active_set_changes", step.active_set_changes},
+                                        {"kkt_residual", step.kkt_residual}});
   summary["seconds"] = {{"assembly_and_condensation", solution.seconds_setup},
                         {"contact_qp", solution.seconds_qp},
                         {"total", clock.seconds()}};
@@ -124,11 +144,11 @@ int run_solve(const SolveOptions& o) {
   samples.table.write(out / "boundary.csv");
   io::write_vtu(out / "solution.vtu", space::H1Space(mesh, setup.cell_degrees), solution.u);
   io::write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
-  fmt::print("energy = {:.17g}\n# {} p {} pC {} m {}: {} active-set steps, KKT residual {:.2e}, "
+  fmt::print("energy = {:.17g}\n# {} p {} pC {} m {}: {} {} steps, KKT residual {:.2e}, "
              "contact set length {:.4f}{}\nwrote {}/boundary.csv, solution.vtu, summary.json\n",
              solution.energy, scene.contact_problem, scene.p_rule.empty() ? std::to_string(scene.p) : scene.p_rule,
              scene.pc_rule.empty() ? std::to_string(scene.pc) : scene.pc_rule, boundary_mesh.n_segments(),
-             solution.qp.newton_steps, solution.qp.kkt_residual, samples.contact_set_length,
+             solution.qp.iterations, solution.qp.method, solution.qp.kkt_residual, samples.contact_set_length,
              o.alpha ? fmt::format(", alpha {:.4g}", summary["alpha"].get<double>()) : "", o.out);
   return 0;
 }
@@ -147,6 +167,8 @@ void add_solve_command(CLI::App& app, CommandAction& action) {
   command->add_option("--p", o->p, "Override the scene's p");
   command->add_option("--pc", o->pc, "Override the scene's p_C");
   command->add_option("--ratio", o->ratio, "Override the scene's contact mesh: h/H, e.g. 1/2");
+  command->add_option("--constraint-points", o->constraint_points,
+                      "Override the scene's constraint points per segment (Remark 3; >= p_C + 1)");
   command->callback([&action, o] { action = [o] { return run_solve(*o); }; });
 }
 

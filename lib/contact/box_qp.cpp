@@ -54,7 +54,7 @@ void flip(std::vector<State>& state, Eigen::Index i, const Eigen::VectorXd& x, c
 int block_principal_pivoting(const Eigen::MatrixXd& a, const Eigen::VectorXd& b,
                              const Eigen::VectorXd& lo, const Eigen::VectorXd& hi,
                              Eigen::VectorXd& x, int max_steps, const Eigen::MatrixXd& s,
-                             const Eigen::VectorXd& d, std::vector<BoxQpIteration>& log,
+                             const Eigen::VectorXd& d, std::vector<QpIteration>& log,
                              int& step_counter) {
   const Eigen::Index n = x.size();
   // Start from the active sets the current point suggests (warm start across proximal steps).
@@ -94,7 +94,8 @@ int block_principal_pivoting(const Eigen::MatrixXd& a, const Eigen::VectorXd& b,
     }
     ++step_counter;
     const auto bad = violations(state, x, a * x - b, lo, hi, tolerance);
-    log.push_back({step_counter, static_cast<int>(bad.size()), box_qp_kkt_residual(s, d, lo, hi, x)});
+    const int flips = bad.empty() ? 0 : (bad.size() < best || stalled < 2 ? static_cast<int>(bad.size()) : 1);
+    log.push_back({step_counter, flips, box_qp_kkt_residual(s, d, lo, hi, x)});
     if (bad.empty()) {
       x = x.cwiseMax(lo).cwiseMin(hi);  // remove round-off excursions beyond the bounds
       return step + 1;

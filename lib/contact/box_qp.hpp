@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "contact/qp_report.hpp"
+
 namespace hpcontact::contact {
 
 struct BoxQpOptions {
@@ -14,12 +16,6 @@ struct BoxQpOptions {
   int max_newton = 500;       ///< active-set steps per proximal subproblem
   int max_proximal = 50;      ///< outer proximal steps
   double proximal = 1e-10;    ///< ρ relative to max diag(S)
-};
-
-struct BoxQpIteration {
-  int iteration;
-  int violations;       ///< indices whose active/free state contradicts the KKT conditions
-  double kkt_residual;
 };
 
 struct BoxQpResult {
@@ -30,7 +26,7 @@ struct BoxQpResult {
   int proximal_steps = 0;
   bool converged = false;
   std::string method;  ///< "active-set" or "active-set+proximal"
-  std::vector<BoxQpIteration> log;
+  std::vector<QpIteration> log;  ///< active_set_changes: indices flipped after the step
 };
 
 /// Active-set method (primal-dual active set = semismooth Newton steps, safeguarded by Murty's

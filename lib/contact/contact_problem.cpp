@@ -2,8 +2,11 @@
 // recover u.
 #include "contact/contact_problem.hpp"
 
+#include <fmt/format.h>
+
 #include <Eigen/LU>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "assembly/coupling.hpp"
@@ -26,6 +29,16 @@ std::vector<double> constraint_points(int q) {
   return points;
 }
 
+int segment_constraint_points(ContactProblem problem, int pc, std::optional<int> requested) {
+  // For M_- and M_1 with p_C ≤ 1 the sign and box conditions at the nodal points are exact.
+  if (problem != ContactProblem::friction_s && pc <= 1) return pc + 1;
+  const int q = requested.value_or(pc + 1);
+  if (q < pc + 1)
+    throw InputError(fmt::format("{} constraint points per segment are fewer than p_C + 1 = {} "
+                                 "(Remark 3 needs at least p_C + 1)", q, pc + 1));
+  return q;
+}
+
 ContactSolution solve_contact(const ContactSetup& setup) {
   HPC_VERIFY(setup.mesh && setup.boundary_mesh, "contact setup without meshes");
   const bool signorini = setup.problem == ContactProblem::signorini;
@@ -46,20 +59,35 @@ ContactSolution solve_contact(const ContactSetup& setup) {
   const Eigen::SparseMatrix<double> coupling_legendre = assembly::assemble_coupling(
       space, contact, multipliers, weighted ? setup.bound : assembly::BoundaryFunction{});
 
-  // Legendre → Lagrange at the constraint points, segment by segment: c_nodal = V c_legendre with
+  // Legendre → Lagrange at the nodal points, segment by segment: c_nodal = V c_legendre with
   // V_ik = P_k(τ_i), so the nodal basis functions are ℓ = V⁻ᵀ P and B_nodal = V⁻ᵀ B_legendre.
   const int n = multipliers.n_dofs();
   Eigen::MatrixXd to_nodal = Eigen::MatrixXd::Zero(n, n);  // block diagonal V⁻ᵀ
   ContactSolution out;
-  out.lower = Eigen::VectorXd::Constant(n, -std::numeric_limits<double>::infinity());
-  out.upper = Eigen::VectorXd::Constant(n, std::numeric_limits<double>::infinity());
-  out.constraint_s.resize(n);
+  // Constraint rows of each segment: C_k (q × (p_C + 1)) and the bounds at its points.
+  struct SegmentConstraints {
+    Eigen::MatrixXd rows;
+    std::vector<double> s, lower, upper;
+  };
+  std::vector<SegmentConstraints> segments(multipliers.n_segments());
+  int n_rows = 0;
+  bool bounds_only = true;
   for (int k = 0; k < multipliers.n_segments(); ++k) {
-    const int q = multipliers.segment_degree(k) + 1, first = multipliers.first_dof(k);
+    const int pc = multipliers.segment_degree(k), first = multipliers.first_dof(k);
+    const auto nodes = constraint_points(pc + 1);
+    Eigen::MatrixXd v(pc + 1, pc + 1);
+    for (int i = 0; i <= pc; ++i) v.row(i) = basis::legendre_values(pc, nodes[i]).transpose();
+    const Eigen::MatrixXd v_inverse = v.inverse();
+    to_nodal.block(first, first, pc + 1, pc + 1) = v_inverse.transpose();
+    const int q = segment_constraint_points(setup.problem, pc, setup.constraint_points);
+    out.constraint_points.push_back(q);
+    auto& rows = segments[k];
     const auto tau = constraint_points(q);
-    Eigen::MatrixXd v(q, q);
-    for (int i = 0; i < q; ++i) v.row(i) = basis::legendre_values(q - 1, tau[i]).transpose();
-    to_nodal.block(first, first, q, q) = v.inverse().transpose();
+    rows.rows.resize(q, pc + 1);
+    // ℓ_i(τ_j) = Σ_m P_m(τ_j) (V⁻¹)_mi.
+    for (int j = 0; j < q; ++j) rows.rows.row(j) = basis::legendre_values(pc, tau[j]).transpose() * v_inverse;
+    if (q == pc + 1) rows.rows.setIdentity();  // the nodal points: exactly the identity
+    else bounds_only = false;
     const double a = setup.boundary_mesh->segment_begin(k), b = setup.boundary_mesh->segment_end(k);
     // (13) keeps λ = 0 only on segments outside supp s (a closed set: s vanishing at single
     // points, like (1-x)² at x = 1, does not remove them).
@@ -67,21 +95,36 @@ ContactSolution solve_contact(const ContactSetup& setup) {
     if (setup.problem == ContactProblem::friction)
       for (double t : basis::gauss_legendre(12).points)
         meets_support = meets_support || setup.bound(contact.point_at(a + 0.5 * (b - a) * (t + 1.0))) > 0.0;
-    for (int i = 0; i < q; ++i) {
-      const double s = a + 0.5 * (b - a) * (tau[i] + 1.0);
-      out.constraint_s[first + i] = s;
+    for (int j = 0; j < q; ++j) {
+      const double s = a + 0.5 * (b - a) * (tau[j] + 1.0);
+      rows.s.push_back(s);
       if (signorini) {
-        out.upper(first + i) = 0.0;
+        rows.lower.push_back(-std::numeric_limits<double>::infinity());
+        rows.upper.push_back(0.0);
         continue;
       }
       const double bound = setup.bound(contact.point_at(s));
-      if (bound < 0.0)
-        throw InputError("friction bound s = " + std::to_string(bound) + " < 0 at x = " +
-                         std::to_string(contact.point_at(s).x()) + ": s must be >= 0");
+      if (!(bound >= 0.0))
+        throw InputError(fmt::format("friction bound s = {} at x = {}: s must be >= 0 (and finite)", bound,
+                                     contact.point_at(s).x()));
       // (13): |λ| ≤ 1 on supp s, λ = 0 off it; (15): |λ| ≤ s.
       const double limit = setup.problem == ContactProblem::friction ? (meets_support ? 1.0 : 0.0) : bound;
-      out.lower(first + i) = -limit;
-      out.upper(first + i) = limit;
+      rows.lower.push_back(-limit);
+      rows.upper.push_back(limit);
+    }
+    n_rows += q;
+  }
+  out.constraint_matrix = Eigen::MatrixXd::Zero(n_rows, n);
+  out.lower.resize(n_rows);
+  out.upper.resize(n_rows);
+  for (int k = 0, row = 0; k < multipliers.n_segments(); ++k) {
+    const auto& rows = segments[k];
+    const auto q = rows.rows.rows();
+    out.constraint_matrix.block(row, multipliers.first_dof(k), q, rows.rows.cols()) = rows.rows;
+    for (Eigen::Index j = 0; j < q; ++j, ++row) {
+      out.lower(row) = rows.lower[j];
+      out.upper(row) = rows.upper[j];
+      out.constraint_s.push_back(rows.s[j]);
     }
   }
   const Eigen::SparseMatrix<double> to_nodal_sparse = to_nodal.sparseView();
@@ -96,13 +139,23 @@ ContactSolution solve_contact(const ContactSetup& setup) {
   out.seconds_setup = setup_clock.seconds();
 
   Stopwatch qp_clock;
-  out.qp = solve_box_qp(s, d, out.lower, out.upper, setup.qp);
+  if (bounds_only) {
+    auto result = solve_box_qp(s, d, out.lower, out.upper, setup.qp);
+    out.lambda = result.x;
+    out.qp = {result.method, result.converged, result.kkt_residual, result.newton_steps,
+              result.proximal_steps, std::move(result.log)};
+  } else {
+    auto result = solve_inequality_qp(s, d, out.constraint_matrix, out.lower, out.upper, setup.interior_point);
+    out.lambda = result.x;
+    out.constraint_multiplier = result.y;
+    out.qp = {"interior-point", result.converged, result.kkt_residual, result.iterations, 0, std::move(result.log)};
+  }
   out.seconds_qp = qp_clock.seconds();
-  out.lambda = out.qp.x;
   out.lambda_legendre = to_nodal.transpose() * out.lambda;  // V⁻¹ c_nodal
   const Eigen::VectorXd reduced_load = load - coupling.transpose() * out.lambda;
   out.u = k_factor.solve(reduced_load);
   out.gap = coupling * out.u - gap_offset;
+  if (bounds_only) out.constraint_multiplier = out.gap;  // C = I: stationarity y = d − S λ = gap
   out.energy = 0.5 * out.u.dot(stiffness * out.u) - load.dot(out.u);
   return out;
 }

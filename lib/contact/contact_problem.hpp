@@ -3,17 +3,24 @@
 //   (13) idealized friction     λ ∈ M_1:  |μ| ≤ 1 on supp s,  pairing (μ, s γ_C v)
 //   (15) alternative friction   λ ∈ M_s:  |μ| ≤ s,            pairing (μ, γ_C v)
 // With u = K⁻¹(F − Bᵀλ) the multiplier solves  min ½ λᵀ S λ − λᵀ d  over the constraint set,
-// S = B K⁻¹ Bᵀ, d = B K⁻¹ F − g (g = 0 for friction). The multiplier uses a Lagrange basis at
-// q = p_C + 1 points per segment (Remark 3: Chebyshev–Lobatto points; for p_C ≤ 1 the end points
-// or the midpoint, which makes the sign and box conditions exact), so the constraints are bounds.
+// S = B K⁻¹ Bᵀ, d = B K⁻¹ F − g (g = 0 for friction). The multiplier uses a Lagrange basis at the
+// p_C + 1 Chebyshev–Lobatto points of each segment (end points for p_C = 1, midpoint for p_C = 0).
+// Constraint points (Remark 3): for M_- and M_1 with p_C ≤ 1 the nodal points themselves, which
+// makes the sign and box conditions exact; otherwise q ≥ p_C + 1 Chebyshev–Lobatto points per
+// segment (default q = p_C + 1). When every segment uses its nodal points the constraints are
+// bounds on the coefficients (active-set method, box_qp.hpp); more points give general linear
+// inequalities lo ≤ C λ ≤ hi (interior-point method, inequality_qp.hpp).
 #pragma once
 
 #include <Eigen/Core>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "contact/box_qp.hpp"
+#include "contact/inequality_qp.hpp"
+#include "contact/qp_report.hpp"
 #include "mesh/boundary_mesh.hpp"
 #include "mesh/quad_mesh.hpp"
 
@@ -24,6 +31,10 @@ enum class ContactProblem { signorini, friction, friction_s };
 /// Constraint points of Remark 3 on [-1,1]: q Chebyshev–Lobatto points −cos(πk/(q−1)),
 /// or the midpoint for q = 1.
 std::vector<double> constraint_points(int q);
+
+/// |𝒞| on a segment of degree p_C: p_C + 1 where the nodal points make the constraint exact (M_-,
+/// M_1 with p_C ≤ 1), else `requested` or p_C + 1. @throws InputError if requested < p_C + 1.
+int segment_constraint_points(ContactProblem problem, int pc, std::optional<int> requested);
 
 using PointFunction = std::function<double(const mesh::Point&)>;
 
@@ -39,7 +50,11 @@ struct ContactSetup {
   /// Optional boundary traction t(x, n) on Γ_N and Γ_C, added to the load as ∫ t v ds (Neumann
   /// data; on Γ_C a prescribed traction besides the contact force, used by manufactured tests).
   std::function<double(const mesh::Point& x, const mesh::Point& normal)> traction;
+  /// |𝒞|, the constraint points per segment where Remark 3 applies (p_C ≥ 2, or every p_C for
+  /// (15)); must be ≥ p_C + 1 on each such segment. Empty: p_C + 1.
+  std::optional<int> constraint_points;
   BoxQpOptions qp;
+  InequalityQpOptions interior_point;
 };
 
 struct ContactSolution {
@@ -48,13 +63,20 @@ struct ContactSolution {
   Eigen::VectorXd lambda;
   /// The same λ in the Legendre basis of MultiplierSpace (for evaluation anywhere on Γ_C).
   Eigen::VectorXd lambda_legendre;
-  std::vector<double> constraint_s;  ///< arc length of each constraint point
-  Eigen::VectorXd lower, upper;      ///< the bounds on lambda
+  /// The constraints lower ≤ C λ ≤ upper, one row per constraint point: C_ji = ℓ_i(τ_j), block
+  /// diagonal by segment (the identity where the nodal points are the constraint points).
+  Eigen::MatrixXd constraint_matrix;
+  Eigen::VectorXd lower, upper;
+  std::vector<double> constraint_s;       ///< arc length of each constraint point
+  std::vector<int> constraint_points;     ///< constraint points used on each segment
+  /// Multiplier y_j of each constraint row, Cᵀ y = gap: y_j > 0 where λ(τ_j) is held at its
+  /// upper bound, < 0 at its lower one, 0 where it is free.
+  Eigen::VectorXd constraint_multiplier;
   /// (ℓ_i, γ_C u − g) for Signorini, (ℓ_i, s γ_C u) or (ℓ_i, γ_C u) for friction: the dual
-  /// gradient −(Sλ − d), whose sign the KKT conditions fix.
+  /// gradient −(Sλ − d).
   Eigen::VectorXd gap;
   double energy = 0.0;               ///< E(u) = ½ uᵀKu − Fᵀu
-  BoxQpResult qp;
+  QpReport qp;
   double seconds_setup = 0.0, seconds_qp = 0.0;
 };
 

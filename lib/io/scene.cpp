@@ -109,6 +109,8 @@ Scene read_scene(const std::string& path) {
   infsup.reject_unknown_keys();
   const auto solve = root.table("solve");
   scene.contact_problem = solve.choice("problem", {"signorini", "friction", "friction_s"}, "signorini");
+  // The lower limit p_C + 1 depends on the segment; it is checked when the constraints are built.
+  if (solve.has("constraint_points")) scene.constraint_points = static_cast<int>(solve.integer("constraint_points", 1, 64));
   solve.reject_unknown_keys();
   if (scene.problem == "friction" && scene.friction_bound.empty())
     throw_bad_input(path, "data.s", "(missing)", "the friction problem needs the friction bound s");

@@ -43,6 +43,7 @@ struct Scene {
   std::string norm = "interp", problem = "signorini";
   // [solve]
   std::string contact_problem = "signorini";  ///< signorini | friction | friction_s
+  std::optional<int> constraint_points;       ///< |𝒞| per segment (Remark 3); empty: p_C + 1
 };
 
 /// @throws InputError naming file, key, value and the allowed range.

@@ -1,0 +1,28 @@
+// What a contact QP solve reports, whichever method ran: the iteration log (iteration, active-set
+// changes, KKT residual) that goes into summary.json.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace hpcontact::contact {
+
+struct QpIteration {
+  int iteration;
+  /// Active-set method: constraints switched between active and inactive after this step.
+  /// Interior point: constraints whose predicted state (slack below multiplier, both scaled)
+  /// changed in this step.
+  int active_set_changes;
+  double kkt_residual;  ///< relative, as defined by the method's KKT function
+};
+
+struct QpReport {
+  std::string method;  ///< "active-set", "active-set+proximal" or "interior-point"
+  bool converged = false;
+  double kkt_residual = 0.0;
+  int iterations = 0;      ///< active-set steps or interior-point iterations
+  int proximal_steps = 0;  ///< outer proximal steps (active-set method only)
+  std::vector<QpIteration> log;
+};
+
+}  // namespace hpcontact::contact
