@@ -133,6 +133,7 @@ int run_solve(const SolveOptions& o) {
                        {"kkt_residual", solution.qp.kkt_residual},
                        {"iterations", solution.qp.iterations},
                        {"proximal_steps", solution.qp.proximal_steps}};
+  if (!solution.qp.fallback_reason.empty()) summary["solver"]["fallback_reason"] = solution.qp.fallback_reason;
   for (const auto& step : solution.qp.log)
     summary["solver"]["log"].push_back({{"iteration", step.iteration},
                                         {"active_set_changes", step.active_set_changes},

@@ -14,9 +14,13 @@ namespace hpcontact::contact {
 double box_qp_kkt_residual(const Eigen::MatrixXd& s, const Eigen::VectorXd& d,
                            const Eigen::VectorXd& lo, const Eigen::VectorXd& hi,
                            const Eigen::VectorXd& x) {
+  // The projected-gradient step with step length c = 1/‖S‖_∞ carries the units of x, so the
+  // residual is invariant under scaling (S, d) and the bounds independently.
+  const double s_norm = s.lpNorm<Eigen::Infinity>();
+  const double c = s_norm > 0 ? 1.0 / s_norm : 1.0;
   const Eigen::VectorXd gradient = s * x - d;
-  const Eigen::VectorXd projected = (x - gradient).cwiseMax(lo).cwiseMin(hi);
-  const double scale = d.lpNorm<Eigen::Infinity>() + s.lpNorm<Eigen::Infinity>() * x.lpNorm<Eigen::Infinity>();
+  const Eigen::VectorXd projected = (x - c * gradient).cwiseMax(lo).cwiseMin(hi);
+  const double scale = x.lpNorm<Eigen::Infinity>() + c * d.lpNorm<Eigen::Infinity>();
   const double residual = (x - projected).lpNorm<Eigen::Infinity>();
   return scale > 0 ? residual / scale : residual;
 }
@@ -30,12 +34,13 @@ enum class State : signed char { lower = -1, free = 0, upper = 1 };
 // ∇ < 0 at the lower one).
 std::vector<Eigen::Index> violations(const std::vector<State>& state, const Eigen::VectorXd& x,
                                      const Eigen::VectorXd& gradient, const Eigen::VectorXd& lo,
-                                     const Eigen::VectorXd& hi, double tolerance) {
+                                     const Eigen::VectorXd& hi, double x_tolerance,
+                                     double gradient_tolerance) {
   std::vector<Eigen::Index> out;
   for (Eigen::Index i = 0; i < x.size(); ++i) {
-    const bool bad = state[i] == State::free ? (x(i) > hi(i) + tolerance || x(i) < lo(i) - tolerance)
-                     : state[i] == State::upper ? gradient(i) > tolerance
-                                                : gradient(i) < -tolerance;
+    const bool bad = state[i] == State::free ? (x(i) > hi(i) + x_tolerance || x(i) < lo(i) - x_tolerance)
+                     : state[i] == State::upper ? gradient(i) > gradient_tolerance
+                                                : gradient(i) < -gradient_tolerance;
     if (bad) out.push_back(i);
   }
   return out;
@@ -67,9 +72,18 @@ int block_principal_pivoting(const Eigen::MatrixXd& a, const Eigen::VectorXd& b,
       state[i] = trial >= hi(i) ? State::upper : (trial <= lo(i) ? State::lower : State::free);
     }
   }
-  const double scale = b.lpNorm<Eigen::Infinity>() + a.lpNorm<Eigen::Infinity>() *
-                                                          std::max(lo.cwiseAbs().cwiseMin(hi.cwiseAbs()).maxCoeff(), 0.0);
-  const double tolerance = 1e-13 * std::max(scale, 1e-300);
+  // Two tolerances in their own units, so that scaling (A, b) and the bounds independently (as
+  // friction (13) does: S and d scale with s², the box |λ| ≤ 1 does not) changes no decision:
+  // bounds are compared in units of x, gradients in units of b.
+  double x_scale = x.lpNorm<Eigen::Infinity>();
+  for (Eigen::Index i = 0; i < n; ++i) {
+    if (std::isfinite(lo(i))) x_scale = std::max(x_scale, std::abs(lo(i)));
+    if (std::isfinite(hi(i))) x_scale = std::max(x_scale, std::abs(hi(i)));
+  }
+  if (!(x_scale > 0)) x_scale = b.lpNorm<Eigen::Infinity>() / std::max(a.diagonal().maxCoeff(), 1e-300);
+  const double x_tolerance = 1e-13 * std::max(x_scale, 1e-300);
+  const double gradient_tolerance =
+      1e-13 * std::max(b.lpNorm<Eigen::Infinity>() + a.lpNorm<Eigen::Infinity>() * x_scale, 1e-300);
   std::size_t best = std::numeric_limits<std::size_t>::max();
   int stalled = 0;
   for (int step = 0; step < max_steps; ++step) {
@@ -93,7 +107,7 @@ int block_principal_pivoting(const Eigen::MatrixXd& a, const Eigen::VectorXd& b,
       for (Eigen::Index r = 0; r < m; ++r) x(free[r]) = x_free(r);
     }
     ++step_counter;
-    const auto bad = violations(state, x, a * x - b, lo, hi, tolerance);
+    const auto bad = violations(state, x, a * x - b, lo, hi, x_tolerance, gradient_tolerance);
     const int flips = bad.empty() ? 0 : (bad.size() < best || stalled < 2 ? static_cast<int>(bad.size()) : 1);
     log.push_back({step_counter, flips, box_qp_kkt_residual(s, d, lo, hi, x)});
     if (bad.empty()) {

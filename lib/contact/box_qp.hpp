@@ -20,7 +20,8 @@ struct BoxQpOptions {
 
 struct BoxQpResult {
   Eigen::VectorXd x;
-  /// ‖x − P_[lo,hi](x − (S x − d))‖_∞ / (‖d‖_∞ + ‖S‖ ‖x‖_∞): zero exactly at a KKT point.
+  /// ‖x − P_[lo,hi](x − c (S x − d))‖_∞ / (‖x‖_∞ + c ‖d‖_∞), c = 1/‖S‖_∞: zero exactly at a KKT
+  /// point, and unchanged when (S, d) or the bounds are scaled.
   double kkt_residual = 0.0;
   int newton_steps = 0;
   int proximal_steps = 0;

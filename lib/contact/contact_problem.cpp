@@ -139,23 +139,42 @@ ContactSolution solve_contact(const ContactSetup& setup) {
   out.seconds_setup = setup_clock.seconds();
 
   Stopwatch qp_clock;
+  // Bounds on the coefficients: the active-set method, which ends in a few steps with an exact
+  // active set. Should it stall (strongly singular S, e.g. a multiplier mesh much finer than the
+  // trace space), the interior-point method takes over on the same problem (C = I).
+  bool use_interior_point = !bounds_only;
+  std::string fallback_reason;
   if (bounds_only) {
-    auto result = solve_box_qp(s, d, out.lower, out.upper, setup.qp);
-    out.lambda = result.x;
-    out.qp = {result.method, result.converged, result.kkt_residual, result.newton_steps,
-              result.proximal_steps, std::move(result.log)};
-  } else {
-    auto result = solve_inequality_qp(s, d, out.constraint_matrix, out.lower, out.upper, setup.interior_point);
-    out.lambda = result.x;
-    out.constraint_multiplier = result.y;
-    out.qp = {"interior-point", result.converged, result.kkt_residual, result.iterations, 0, std::move(result.log)};
+    try {
+      auto result = solve_box_qp(s, d, out.lower, out.upper, setup.qp);
+      out.lambda = result.x;
+      out.qp = {result.method, result.converged, result.kkt_residual, result.newton_steps,
+                result.proximal_steps, std::move(result.log), ""};
+    } catch (const NumericalError& error) {
+      use_interior_point = true;
+      fallback_reason = error.what();
+    }
+  }
+  if (use_interior_point) {
+    try {
+      auto result = solve_inequality_qp(s, d, out.constraint_matrix, out.lower, out.upper, setup.interior_point);
+      out.lambda = result.x;
+      out.constraint_multiplier = result.y;
+      out.qp = {"interior-point", result.converged, result.kkt_residual, result.iterations, 0,
+                std::move(result.log), fallback_reason};
+    } catch (const NumericalError& error) {
+      throw NumericalError(fallback_reason.empty() ? std::string(error.what())
+                                                   : fallback_reason + "; then " + error.what());
+    }
   }
   out.seconds_qp = qp_clock.seconds();
   out.lambda_legendre = to_nodal.transpose() * out.lambda;  // V⁻¹ c_nodal
   const Eigen::VectorXd reduced_load = load - coupling.transpose() * out.lambda;
   out.u = k_factor.solve(reduced_load);
   out.gap = coupling * out.u - gap_offset;
-  if (bounds_only) out.constraint_multiplier = out.gap;  // C = I: stationarity y = d − S λ = gap
+  if (!use_interior_point) out.constraint_multiplier = out.gap;  // C = I: stationarity y = d − S λ = gap
+  out.gap_scale = (coupling * u_free).lpNorm<Eigen::Infinity>() + gap_offset.lpNorm<Eigen::Infinity>() +
+                  (s * out.lambda).lpNorm<Eigen::Infinity>();
   out.energy = 0.5 * out.u.dot(stiffness * out.u) - load.dot(out.u);
   return out;
 }

@@ -75,6 +75,10 @@ struct ContactSolution {
   /// (ℓ_i, γ_C u − g) for Signorini, (ℓ_i, s γ_C u) or (ℓ_i, γ_C u) for friction: the dual
   /// gradient −(Sλ − d).
   Eigen::VectorXd gap;
+  /// ‖B u_free‖_∞ + ‖(ℓ_i, g)‖_∞ + ‖S λ‖_∞ (u_free = K⁻¹F): the size of the terms whose sum is the
+  /// gap d − S λ, the scale against which a gap or a multiplier y is small (the gap itself may
+  /// vanish, e.g. on a contact set covering Γ_C or an obstacle touching tangentially).
+  double gap_scale = 0.0;
   double energy = 0.0;               ///< E(u) = ½ uᵀKu − Fᵀu
   QpReport qp;
   double seconds_setup = 0.0, seconds_qp = 0.0;

@@ -23,6 +23,9 @@ struct QpReport {
   int iterations = 0;      ///< active-set steps or interior-point iterations
   int proximal_steps = 0;  ///< outer proximal steps (active-set method only)
   std::vector<QpIteration> log;
+  /// Why the active-set method gave way to the interior-point method on a bound-constrained
+  /// problem (its error message); empty when the first method succeeded.
+  std::string fallback_reason;
 };
 
 }  // namespace hpcontact::contact
