@@ -2,36 +2,16 @@
 // no output, and the convergence subcommand writes its CSV.
 #include <gtest/gtest.h>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <memory>
+
+#include "cli_runner.hpp"
 
 namespace {
 
-struct Run {
-  int exit_code;
-  std::string output;
-};
-
-Run run(const std::string& arguments) {
-  const std::string command = std::string(HPCONTACT_CLI) + " " + arguments + " 2>&1";
-  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
-  std::string output;
-  std::array<char, 4096> buffer;
-  while (fgets(buffer.data(), buffer.size(), pipe.get())) output += buffer.data();
-  const int status = pclose(pipe.release());
-  return {WEXITSTATUS(status), output};
-}
-
-std::filesystem::path scratch(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("hpcontact_cli_" + name);
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
+using hpcontact::testing::run;
+using hpcontact::testing::scratch;
 
 const char* kStudy = R"toml([solution]
 u  = "sin(1-x)*sin(1-y)"

@@ -86,8 +86,16 @@ int run_solve(const SolveOptions& o) {
   setup.f = function_of(scene.load, o.scene + ": key 'data.f'");
   setup.obstacle = function_of(scene.obstacle, o.scene + ": key 'data.g'");
   setup.bound = function_of(scene.friction_bound, o.scene + ": key 'data.s'");
+  if (setup.bound)  // s ≥ 0 is part of the data's contract: report it against the scene's key
+    setup.bound = [bound = setup.bound, file = o.scene, text = scene.friction_bound](const mesh::Point& x) {
+      const double value = bound(x);
+      if (value < 0)
+        throw_bad_input(file, "data.s", fmt::format("\"{}\" = {} at (x, y) = ({}, {})", text, value, x.x(), x.y()),
+                        "the friction bound must be >= 0 on Γ_C");
+      return value;
+    };
 
-  io::ensure_writable_directory(o.out);
+  io::check_output_directory(o.out);
 
   // 3. Solve.
   const auto solution = contact::solve_contact(setup);
@@ -142,6 +150,7 @@ int run_solve(const SolveOptions& o) {
                         {"contact_qp", solution.seconds_qp},
                         {"total", clock.seconds()}};
   const std::filesystem::path out(o.out);
+  io::ensure_writable_directory(out);
   samples.table.write(out / "boundary.csv");
   io::write_vtu(out / "solution.vtu", space::H1Space(mesh, setup.cell_degrees), solution.u);
   io::write_file_atomically(out / "summary.json", summary.dump(2) + "\n");

@@ -19,6 +19,19 @@ void ensure_writable_directory(const std::filesystem::path& directory) {
     throw InputError("output folder '" + directory.string() + "' is not writable");
 }
 
+void check_output_directory(const std::filesystem::path& directory) {
+  // The folder itself, or else its nearest existing ancestor, must be a writable folder.
+  std::filesystem::path existing = std::filesystem::absolute(directory);
+  while (!std::filesystem::exists(existing) && existing.has_parent_path() && existing != existing.parent_path())
+    existing = existing.parent_path();
+  if (!std::filesystem::is_directory(existing))
+    throw InputError("output folder '" + directory.string() + "' cannot be created: '" + existing.string() +
+                     "' is not a folder");
+  if (access(existing.c_str(), W_OK) != 0)
+    throw InputError("output folder '" + directory.string() + "' cannot be written: '" + existing.string() +
+                     "' is not writable");
+}
+
 AtomicFile::AtomicFile(std::filesystem::path path) : path_(std::move(path)) {
   temporary_ = path_;
   temporary_ += ".tmp-" + std::to_string(getpid());

@@ -8,6 +8,11 @@
 
 namespace hpcontact::io {
 
+/// Checks, creating nothing, that `directory` exists and is writable or could be created (its
+/// nearest existing ancestor is a writable folder): commands that write only at the end call
+/// this first, so that bad input leaves no empty folder behind. @throws InputError otherwise.
+void check_output_directory(const std::filesystem::path& directory);
+
 /// Creates the directory (and parents). @throws InputError naming it if that fails or it is not
 /// writable.
 void ensure_writable_directory(const std::filesystem::path& directory);

@@ -147,6 +147,15 @@ mesh::QuadMesh build_scene_mesh(const Scene& scene) {
     if (contact) mesh.set_edge_part(e, mesh::BoundaryPart::contact);
     if (dirichlet) mesh.set_edge_part(e, mesh::BoundaryPart::dirichlet);
   }
+  bool any_contact = false;
+  for (int e : mesh.boundary_edges()) any_contact = any_contact || mesh.edge_part(e) == mesh::BoundaryPart::contact;
+  if (!any_contact) {
+    const bool by_groups = scene.contact_predicate.empty();
+    std::string value = scene.contact_predicate;
+    for (const auto& group : scene.contact_groups) value += (value.empty() ? "" : ", ") + group;
+    throw_bad_input(scene.file, by_groups ? "boundary.contact_groups" : "boundary.contact", value,
+                    "it must select at least one boundary edge (Γ_C is empty)");
+  }
   return mesh;
 }
 

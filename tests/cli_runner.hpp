@@ -1,0 +1,36 @@
+// Shared by the command-line tests: run the hpcontact executable and capture its output and exit
+// code; fresh scratch folders.
+#pragma once
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <sys/wait.h>
+
+namespace hpcontact::testing {
+
+struct Run {
+  int exit_code;
+  std::string output;  ///< standard output and error together
+};
+
+inline Run run(const std::string& arguments) {
+  const std::string command = std::string(HPCONTACT_CLI) + " " + arguments + " 2>&1";
+  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
+  std::string output;
+  std::array<char, 4096> buffer;
+  while (fgets(buffer.data(), buffer.size(), pipe.get())) output += buffer.data();
+  const int status = pclose(pipe.release());
+  return {WEXITSTATUS(status), output};
+}
+
+inline std::filesystem::path scratch(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / ("hpcontact_cli_" + name);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+}  // namespace hpcontact::testing
