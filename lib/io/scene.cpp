@@ -6,7 +6,9 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <functional>
+#include <sstream>
 #include <map>
 
 #include "core/error.hpp"
@@ -19,7 +21,15 @@
 namespace hpcontact::io {
 
 Scene read_scene(const std::string& path) {
-  const TomlTable root = parse_toml_file(path);
+  std::ifstream file(path);
+  if (!file) throw InputError(path + ": cannot open the scene file");
+  std::stringstream text;
+  text << file.rdbuf();
+  return parse_scene(text.str(), path);
+}
+
+Scene parse_scene(const std::string& text, const std::string& path) {
+  const TomlTable root = parse_toml_string(text, path);
   Scene scene;
   scene.file = path;
   // Misspelt section names are reported before "missing section" errors.
@@ -73,7 +83,14 @@ Scene read_scene(const std::string& path) {
     studies::parse_ratio(scene.ratio, path + ": key 'contact_mesh.ratio'");
   }
   if (contact_mesh.has("breakpoints"))
-    for (const auto& text : contact_mesh.string_list("breakpoints")) scene.breakpoints.push_back(std::stod(text));
+    for (const auto& text : contact_mesh.string_list("breakpoints")) {
+      char* end = nullptr;
+      const double value = std::strtod(text.c_str(), &end);
+      if (text.empty() || *end != '\0' || !std::isfinite(value) || value <= 0.0)
+        throw_bad_input(path, "contact_mesh.breakpoints", text,
+                        "positive arc lengths (numbers), strictly increasing, the last the length of Γ_C");
+      scene.breakpoints.push_back(value);
+    }
   scene.grading = contact_mesh.number_in("grading", 1e-3, 1.0, 1.0);
   contact_mesh.reject_unknown_keys();
 

@@ -49,6 +49,9 @@ struct Scene {
 /// @throws InputError naming file, key, value and the allowed range.
 Scene read_scene(const std::string& path);
 
+/// The same from the text of a scene; `path` names it in messages and anchors relative mesh paths.
+Scene parse_scene(const std::string& text, const std::string& path);
+
 /// T_h with boundary parts. @throws InputError if Γ_C is empty or Γ_C and Γ_D overlap.
 mesh::QuadMesh build_scene_mesh(const Scene& scene);
 

@@ -4,6 +4,7 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
+#include <charconv>
 #include <fstream>
 #include <numeric>
 #include <regex>
@@ -57,6 +58,17 @@ std::string TomlTable::value_text(const std::string& key) const {
   return out.str();
 }
 
+namespace {
+
+// The value of a numeric node as a double. toml++'s value<double>() refuses integers that a
+// double cannot hold exactly (e.g. 2222222222222222220); those are still numbers to a user.
+double numeric_value(const toml::node& node) {
+  if (node.is_integer()) return static_cast<double>(node.as_integer()->get());
+  return node.as_floating_point()->get();
+}
+
+}  // namespace
+
 double TomlTable::number(const std::string& key, std::optional<double> fallback) const {
   if (!has(key)) {
     if (fallback) return *fallback;
@@ -65,7 +77,7 @@ double TomlTable::number(const std::string& key, std::optional<double> fallback)
   const auto* node = table_->get(key);
   if (!(node->is_floating_point() || node->is_integer()))
     fail(key, value_text(key), "must be a number");
-  return node->value<double>().value();
+  return numeric_value(*node);
 }
 
 double TomlTable::number_in(const std::string& key, double min, double max,
@@ -135,9 +147,17 @@ std::vector<long long> TomlTable::integer_list(const std::string& key, long long
     static const std::regex pattern(R"(^\s*(-?\d+)\s*\.\.\s*(-?\d+)\s*$)");
     std::smatch match;
     const std::string text = node->value<std::string>().value();
-    if (!std::regex_match(text, match, pattern) || std::stoll(match[1]) > std::stoll(match[2]))
+    if (!std::regex_match(text, match, pattern))
       fail(key, "\"" + text + "\"", "must be " + forms + " with first <= last");
-    for (long long v = std::stoll(match[1]); v <= std::stoll(match[2]); ++v) values.push_back(v);
+    // Bounds checked before the range is expanded, so "1..99999999999" is an error, not a hang.
+    long long first = 0, last = 0;
+    const std::string first_text = match[1], last_text = match[2];
+    const auto [first_end, first_error] = std::from_chars(first_text.data(), first_text.data() + first_text.size(), first);
+    const auto [last_end, last_error] = std::from_chars(last_text.data(), last_text.data() + last_text.size(), last);
+    if (first_error != std::errc() || last_error != std::errc() || first > last)
+      fail(key, "\"" + text + "\"", "must be " + forms + " with first <= last");
+    if (first < min || last > max) fail(key, "\"" + text + "\"", range);
+    for (long long v = first; v <= last; ++v) values.push_back(v);
   } else {
     fail(key, value_text(key), "must be " + forms);
   }
@@ -158,7 +178,7 @@ std::vector<std::string> TomlTable::string_list(
   auto text_of = [&](const toml::node& element) -> std::string {
     if (element.is_string()) return element.value<std::string>().value();
     if (element.is_integer() || element.is_floating_point())
-      return format_full_precision(element.value<double>().value());
+      return format_full_precision(numeric_value(element));
     fail(key, value_text(key), "must be " + forms);
   };
   std::vector<std::string> values;

@@ -29,7 +29,8 @@ SolutionExpressions parse_solution(const ConvergenceStudy& study) {
 // catch it here with central differences at a few interior points.
 void check_solution_consistency(const ConvergenceStudy& study, const SolutionExpressions& s) {
   const double d = 1e-3;
-  for (const auto& [x, y] : {std::pair{-0.63, -0.41}, {0.27, 0.55}, {0.71, -0.83}, {-0.12, 0.08}}) {
+  for (const auto& point : {std::pair{-0.63, -0.41}, {0.27, 0.55}, {0.71, -0.83}, {-0.12, 0.08}}) {
+    const double x = point.first, y = point.second;  // not a structured binding: the lambda captures them
     const double ux = (s.u(x + d, y) - s.u(x - d, y)) / (2 * d);
     const double uy = (s.u(x, y + d) - s.u(x, y - d)) / (2 * d);
     const double laplacian =

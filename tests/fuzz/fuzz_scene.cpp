@@ -1,0 +1,19 @@
+// libFuzzer target: the scene parser must turn any byte string into a Scene or an InputError.
+// Anything else (another exception, a crash, a sanitizer report, a hang) is a bug; crashers go
+// to tests/fuzz/regressions/, which test_16_fuzz_regressions replays in every test run.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "core/error.hpp"
+#include "io/scene.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  try {
+    hpcontact::io::parse_scene(text, "fuzz.toml");
+  } catch (const hpcontact::InputError&) {
+    // the expected answer to bad input
+  }
+  return 0;
+}
