@@ -35,7 +35,8 @@ contact::ContactSolution solve(contact::ContactProblem problem, int n, int p, in
 // points per segment of a uniform T_{C,H} with m segments of degree pc: max λ_H (Signorini) or
 // max |λ_H| − s (15), with s = (1 − x)² on the bottom edge (x = s_arc − 1).
 double pointwise_violation(const contact::ContactSolution& solution, int m, int pc, bool signorini) {
-  const space::MultiplierSpace multipliers(mesh::BoundaryMesh::uniform(2.0, m), pc);
+  const auto boundary = mesh::BoundaryMesh::uniform(2.0, m);  // MultiplierSpace keeps a reference
+  const space::MultiplierSpace multipliers(boundary, pc);
   double worst = -INFINITY;
   for (int k = 0; k < m; ++k)
     for (int i = 0; i <= 200; ++i) {

@@ -15,7 +15,7 @@
 #include "basis/quadrature.hpp"
 #include "core/error.hpp"
 #include "core/timer.hpp"
-#include "linalg/schur_complement.hpp"
+#include "linalg/sparse_cholesky.hpp"
 #include "mesh/contact_boundary.hpp"
 #include "space/multiplier_space.hpp"
 
@@ -132,9 +132,11 @@ ContactSolution solve_contact(const ContactSetup& setup) {
   Eigen::VectorXd gap_offset = Eigen::VectorXd::Zero(n);
   if (signorini) gap_offset = to_nodal * assembly::assemble_multiplier_load(contact, multipliers, setup.obstacle);
 
-  const linalg::SparseCholesky k_factor(stiffness);
+  // Condensation onto the Γ_C trace: the trace dofs ordered last in the factorization, so that
+  // S = B K⁻¹ Bᵀ is dense algebra on the trailing block of the factor (sparse_cholesky.hpp).
+  const linalg::SparseCholesky k_factor(stiffness, linalg::nonzero_columns(coupling));
   const Eigen::VectorXd u_free = k_factor.solve(load);
-  const Eigen::MatrixXd s = linalg::schur_complement(k_factor, coupling);
+  const Eigen::MatrixXd s = k_factor.schur_complement(coupling);
   const Eigen::VectorXd d = coupling * u_free - gap_offset;
   out.seconds_setup = setup_clock.seconds();
 

@@ -8,7 +8,7 @@
 #include "basis/quadrature.hpp"
 #include "core/error.hpp"
 #include "core/timer.hpp"
-#include "linalg/schur_complement.hpp"
+#include "linalg/sparse_cholesky.hpp"
 #include "mesh/contact_boundary.hpp"
 #include "space/multiplier_space.hpp"
 
@@ -79,10 +79,11 @@ InfSupOperators assemble_infsup_operators(const InfSupSetup& setup) {
   const mesh::ContactBoundary contact(*setup.mesh);
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
   const auto matrices = assembly::assemble_volume_matrices(space, {.stiffness = true, .mass = true});
-  const linalg::SparseCholesky a_g(matrices.stiffness + matrices.mass);
   const auto coupling = assembly::assemble_coupling(
       space, contact, multipliers, friction ? setup.friction_bound : assembly::BoundaryFunction{});
-  const Eigen::MatrixXd s_g = linalg::schur_complement(a_g, coupling);
+  // The trace dofs the coupling touches are ordered last: S_G comes from the factor's trailing block.
+  const linalg::SparseCholesky a_g(matrices.stiffness + matrices.mass, linalg::nonzero_columns(coupling));
+  const Eigen::MatrixXd s_g = a_g.schur_complement(coupling);
   out.seconds_primal = primal_clock.seconds();
 
   Stopwatch gram_clock;

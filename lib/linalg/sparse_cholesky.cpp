@@ -1,41 +1,204 @@
-// SparseCholesky on Eigen's CHOLMOD wrapper; the wrapper is hidden so that CHOLMOD's headers do
-// not leak into the rest of the library.
+// SparseCholesky on CHOLMOD's C interface (supernodal LLᵀ, CAMD-constrained ordering for a trailing
+// set, the trailing block read straight out of the supernodes). CHOLMOD's headers stay in here.
 #include "linalg/sparse_cholesky.hpp"
 
-#include <Eigen/CholmodSupport>
+#include <cholmod.h>
+#include <fmt/format.h>
+
+#include <algorithm>
 
 #include "core/error.hpp"
 
 namespace hpcontact::linalg {
 
 struct SparseCholesky::Impl {
-  Eigen::CholmodDecomposition<Eigen::SparseMatrix<double>, Eigen::Lower> solver;
+  cholmod_common common;
+  cholmod_factor* factor = nullptr;
+  /// The trailing block L_tt of the factor (dense, lower triangular) and, for every original
+  /// index, its position in that block (−1 outside).
+  Eigen::MatrixXd trailing_factor;
+  std::vector<int> trailing_position;
+  int n_trailing = 0;
+
+  Impl() { cholmod_start(&common); }
+  ~Impl() {
+    if (factor) cholmod_free_factor(&factor, &common);
+    cholmod_finish(&common);
+  }
+  Impl(const Impl&) = delete;
+  Impl& operator=(const Impl&) = delete;
 };
 
-SparseCholesky::SparseCholesky(const Eigen::SparseMatrix<double>& matrix)
+namespace {
+
+// A CHOLMOD view (no copy) of a compressed lower-triangular Eigen matrix.
+cholmod_sparse view_lower(Eigen::SparseMatrix<double>& lower) {
+  cholmod_sparse a{};
+  a.nrow = static_cast<std::size_t>(lower.rows());
+  a.ncol = static_cast<std::size_t>(lower.cols());
+  a.nzmax = static_cast<std::size_t>(lower.nonZeros());
+  a.p = lower.outerIndexPtr();
+  a.i = lower.innerIndexPtr();
+  a.x = lower.valuePtr();
+  a.stype = -1;  // symmetric, lower triangle stored
+  a.itype = CHOLMOD_INT;
+  a.xtype = CHOLMOD_REAL;
+  a.dtype = CHOLMOD_DOUBLE;
+  a.sorted = 1;
+  a.packed = 1;
+  return a;
+}
+
+cholmod_dense view_dense(Eigen::MatrixXd& matrix) {
+  cholmod_dense d{};
+  d.nrow = static_cast<std::size_t>(matrix.rows());
+  d.ncol = static_cast<std::size_t>(matrix.cols());
+  d.nzmax = d.nrow * d.ncol;
+  d.d = d.nrow;
+  d.x = matrix.data();
+  d.xtype = CHOLMOD_REAL;
+  d.dtype = CHOLMOD_DOUBLE;
+  return d;
+}
+
+}  // namespace
+
+SparseCholesky::SparseCholesky(const Eigen::SparseMatrix<double>& matrix, const std::vector<int>& trailing)
     : impl_(std::make_unique<Impl>()), size_(static_cast<int>(matrix.rows())) {
   HPC_VERIFY(matrix.rows() == matrix.cols(), "Cholesky of a non-square matrix");
-  impl_->solver.setMode(Eigen::CholmodSupernodalLLt);
-  impl_->solver.compute(matrix);
-  if (impl_->solver.info() != Eigen::Success)
-    throw NumericalError("sparse Cholesky (CHOLMOD) failed on a " + std::to_string(size_) +
-                         "x" + std::to_string(size_) +
-                         " matrix: it is not positive definite (is Γ_D empty or a cell "
-                         "degenerate?)");
+  Eigen::SparseMatrix<double> lower = matrix.triangularView<Eigen::Lower>();
+  lower.makeCompressed();
+  cholmod_sparse a = view_lower(lower);
+  cholmod_common& c = impl_->common;
+  c.supernodal = CHOLMOD_SUPERNODAL;
+  std::vector<int> permutation;
+  if (!trailing.empty() && static_cast<int>(trailing.size()) < size_) {
+    // Constraint set 1 (the trailing unknowns) is ordered after set 0; no postordering, which
+    // could move them.
+    std::vector<int> member(size_, 0);
+    for (int index : trailing) {
+      HPC_VERIFY(index >= 0 && index < size_, "trailing index out of range");
+      member[index] = 1;
+    }
+    permutation.resize(size_);
+    if (!cholmod_camd(&a, nullptr, 0, member.data(), permutation.data(), &c))
+      throw NumericalError(fmt::format("CHOLMOD's constrained ordering (CAMD) failed, status {}", c.status));
+    c.nmethods = 1;
+    c.method[0].ordering = CHOLMOD_GIVEN;
+    c.postorder = 0;
+  }
+  impl_->factor = cholmod_analyze_p(&a, permutation.empty() ? nullptr : permutation.data(), nullptr, 0, &c);
+  if (!impl_->factor) throw NumericalError(fmt::format("CHOLMOD analysis failed, status {}", c.status));
+  cholmod_factorize(&a, impl_->factor, &c);
+  if (c.status == CHOLMOD_NOT_POSDEF || impl_->factor->minor < impl_->factor->n)
+    throw NumericalError(fmt::format(
+        "sparse Cholesky (CHOLMOD) failed on a {0}x{0} matrix: not positive definite at column {1} "
+        "(is Γ_D empty or a cell degenerate?)",
+        size_, impl_->factor->minor));
+  if (c.status < CHOLMOD_OK) throw NumericalError(fmt::format("CHOLMOD factorization failed, status {}", c.status));
+
+  if (permutation.empty()) return;
+  // The trailing block, from the supernodes whose columns lie in it. Supernode s holds columns
+  // super[s] .. super[s+1]-1 as a dense column-major block over the rows s_rows[pi[s] .. pi[s+1]-1].
+  const int n_t = static_cast<int>(trailing.size()), offset = size_ - n_t;
+  const int* perm = static_cast<const int*>(impl_->factor->Perm);
+  impl_->trailing_position.assign(size_, -1);
+  for (int k = offset; k < size_; ++k) impl_->trailing_position[perm[k]] = k - offset;
+  for (int index : trailing)
+    HPC_VERIFY(impl_->trailing_position[index] >= 0, "CAMD did not order the trailing set last");
+  const auto* factor = impl_->factor;
+  const int* super = static_cast<const int*>(factor->super);
+  const int* pi = static_cast<const int*>(factor->pi);
+  const int* px = static_cast<const int*>(factor->px);
+  const int* rows = static_cast<const int*>(factor->s);
+  const double* values = static_cast<const double*>(factor->x);
+  impl_->trailing_factor = Eigen::MatrixXd::Zero(n_t, n_t);
+  for (std::size_t s = 0; s < factor->nsuper; ++s) {
+    const int first = super[s], last = super[s + 1];
+    if (last <= offset) continue;
+    const int n_rows = pi[s + 1] - pi[s];
+    for (int j = std::max(first, offset); j < last; ++j)
+      for (int r = 0; r < n_rows; ++r) {
+        const int i = rows[pi[s] + r];
+        if (i >= j) impl_->trailing_factor(i - offset, j - offset) = values[px[s] + r + (j - first) * n_rows];
+      }
+  }
+  impl_->n_trailing = n_t;
 }
 
 SparseCholesky::~SparseCholesky() = default;
 SparseCholesky::SparseCholesky(SparseCholesky&&) noexcept = default;
 SparseCholesky& SparseCholesky::operator=(SparseCholesky&&) noexcept = default;
 
-Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& rhs) const {
-  HPC_VERIFY(rhs.size() == size_, "right-hand side of the wrong size");
-  return impl_->solver.solve(rhs);
+int SparseCholesky::n_trailing() const { return impl_->n_trailing; }
+
+long long SparseCholesky::factor_nonzeros() const {
+  const auto* factor = impl_->factor;
+  if (!factor->is_super) return static_cast<long long>(factor->nzmax);
+  // Supernodal: the lower trapezoid of every supernode's block.
+  long long count = 0;
+  const int* super = static_cast<const int*>(factor->super);
+  const int* pi = static_cast<const int*>(factor->pi);
+  for (std::size_t s = 0; s < factor->nsuper; ++s) {
+    const long long columns = super[s + 1] - super[s], rows = pi[s + 1] - pi[s];
+    count += columns * rows - columns * (columns - 1) / 2;
+  }
+  return count;
 }
 
 Eigen::MatrixXd SparseCholesky::solve(const Eigen::MatrixXd& rhs) const {
   HPC_VERIFY(rhs.rows() == size_, "right-hand side of the wrong size");
-  return impl_->solver.solve(rhs);
+  if (rhs.cols() == 0) return rhs;
+  Eigen::MatrixXd copy = rhs;
+  cholmod_dense b = view_dense(copy);
+  cholmod_dense* x = cholmod_solve(CHOLMOD_A, impl_->factor, &b, &impl_->common);
+  if (!x) throw NumericalError(fmt::format("CHOLMOD solve failed, status {}", impl_->common.status));
+  Eigen::MatrixXd out = Eigen::Map<const Eigen::MatrixXd>(static_cast<const double*>(x->x), size_, rhs.cols());
+  cholmod_free_dense(&x, &impl_->common);
+  return out;
+}
+
+Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& rhs) const {
+  return solve(Eigen::MatrixXd(rhs)).col(0);
+}
+
+Eigen::MatrixXd SparseCholesky::schur_complement(const Eigen::SparseMatrix<double>& b) const {
+  HPC_VERIFY(b.cols() == size_, "B A⁻¹ Bᵀ: B has the wrong number of columns");
+  const auto m = b.rows();
+  bool inside = impl_->n_trailing > 0;
+  for (int col = 0; inside && col < b.outerSize(); ++col)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(b, col); it; ++it)
+      if (it.value() != 0.0 && impl_->trailing_position[it.col()] < 0) inside = false;
+  Eigen::MatrixXd result(m, m);
+  if (inside) {
+    Eigen::MatrixXd bt = Eigen::MatrixXd::Zero(impl_->n_trailing, m);  // (B P_tᵀ)ᵀ
+    for (int col = 0; col < b.outerSize(); ++col)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(b, col); it; ++it)
+        bt(impl_->trailing_position[it.col()], it.row()) += it.value();
+    impl_->trailing_factor.triangularView<Eigen::Lower>().solveInPlace(bt);
+    result.setZero();
+    result.selfadjointView<Eigen::Lower>().rankUpdate(bt.transpose());
+    return result.selfadjointView<Eigen::Lower>();
+  }
+  const Eigen::SparseMatrix<double> bt = b.transpose();
+  constexpr int block = 64;
+  for (Eigen::Index first = 0; first < m; first += block) {
+    const auto count = std::min<Eigen::Index>(block, m - first);
+    result.middleCols(first, count) = b * solve(Eigen::MatrixXd(bt.middleCols(first, count)));
+  }
+  // Round-off leaves the product slightly unsymmetric; symmetric eigen solvers want it exact.
+  return 0.5 * (result + result.transpose());
+}
+
+std::vector<int> nonzero_columns(const Eigen::SparseMatrix<double>& b) {
+  std::vector<char> used(b.cols(), 0);
+  for (int col = 0; col < b.outerSize(); ++col)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(b, col); it; ++it)
+      if (it.value() != 0.0) used[it.col()] = 1;
+  std::vector<int> out;
+  for (int j = 0; j < static_cast<int>(b.cols()); ++j)
+    if (used[j]) out.push_back(j);
+  return out;
 }
 
 }  // namespace hpcontact::linalg

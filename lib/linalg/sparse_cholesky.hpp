@@ -1,18 +1,28 @@
-// Sparse symmetric positive definite direct solver: CHOLMOD (supernodal LLᵀ) through Eigen.
+// Sparse symmetric positive definite direct solver: CHOLMOD's supernodal LLᵀ, optionally with a
+// set of unknowns (the Γ_C trace) ordered last, which turns every Schur complement B A⁻¹ Bᵀ with B
+// supported on that set into dense algebra on the trailing block of the factor.
 #pragma once
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <memory>
+#include <vector>
 
 namespace hpcontact::linalg {
 
 /// Factorizes once, solves many times. The matrix must be symmetric positive definite; only its
 /// lower triangle is read.
+///
+/// With `trailing` (indices into 0..n-1), the fill-reducing ordering is constrained (CAMD) to put
+/// those unknowns last: P A Pᵀ = L Lᵀ with L = [L_ii 0; L_ti L_tt]. For B whose columns lie in
+/// the trailing set, L⁻¹ P Bᵀ vanishes outside the trailing rows, so
+///     B A⁻¹ Bᵀ = Wᵀ W,   W = L_tt⁻¹ (B P_tᵀ)ᵀ,
+/// i.e. the Steklov–Poincaré condensation onto the trace: one factorization, then dense work of
+/// size |trailing| — no solve with the full factor per column of B.
 class SparseCholesky {
  public:
   /// @throws NumericalError if the matrix is not positive definite (with the failing column).
-  explicit SparseCholesky(const Eigen::SparseMatrix<double>& matrix);
+  explicit SparseCholesky(const Eigen::SparseMatrix<double>& matrix, const std::vector<int>& trailing = {});
   ~SparseCholesky();
   SparseCholesky(SparseCholesky&&) noexcept;
   SparseCholesky& operator=(SparseCholesky&&) noexcept;
@@ -21,11 +31,23 @@ class SparseCholesky {
   /// Solves for several right-hand sides at once, shape (n, k).
   Eigen::MatrixXd solve(const Eigen::MatrixXd& rhs) const;
   int size() const { return size_; }
+  /// Number of unknowns ordered last (0 without a trailing set).
+  int n_trailing() const;
+  /// Nonzeros of the factor L (a measure of the factorization's cost and memory).
+  long long factor_nonzeros() const;
+
+  /// B A⁻¹ Bᵀ, dense symmetric (m, m), for B of shape (m, n). Through the trailing block when
+  /// every column of B with a nonzero lies in the trailing set, otherwise by solves in blocks of
+  /// 64 columns.
+  Eigen::MatrixXd schur_complement(const Eigen::SparseMatrix<double>& b) const;
 
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
   int size_ = 0;
 };
+
+/// The columns of B that hold a nonzero: the trailing set that makes B A⁻¹ Bᵀ cheap.
+std::vector<int> nonzero_columns(const Eigen::SparseMatrix<double>& b);
 
 }  // namespace hpcontact::linalg

@@ -10,7 +10,7 @@
 #include "basis/lobatto.hpp"
 #include "basis/quadrature.hpp"
 #include "core/error.hpp"
-#include "linalg/schur_complement.hpp"
+#include "linalg/sparse_cholesky.hpp"
 #include "mesh/refine.hpp"
 
 namespace hpcontact::norms {
@@ -88,8 +88,9 @@ Eigen::MatrixXd extension_norm_gram(const mesh::QuadMesh& mesh, const std::vecto
   const space::H1Space space(fine, degrees);
   const mesh::ContactBoundary contact(fine);
   const auto matrices = assembly::assemble_volume_matrices(space, {.stiffness = true, .mass = true});
-  const linalg::SparseCholesky a(matrices.stiffness + matrices.mass);
-  return linalg::schur_complement(a, assembly::assemble_coupling(space, contact, multipliers));
+  const auto coupling = assembly::assemble_coupling(space, contact, multipliers);
+  const linalg::SparseCholesky a(matrices.stiffness + matrices.mass, linalg::nonzero_columns(coupling));
+  return a.schur_complement(coupling);
 }
 
 }  // namespace hpcontact::norms
