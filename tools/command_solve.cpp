@@ -146,8 +146,12 @@ int run_solve(const SolveOptions& o) {
     summary["solver"]["log"].push_back({{"iteration", step.iteration},
                                         {"active_set_changes", step.active_set_changes},
                                         {"kkt_residual", step.kkt_residual}});
-  summary["seconds"] = {{"assembly_and_condensation", solution.seconds_setup},
-                        {"contact_qp", solution.seconds_qp},
+  summary["n_trace"] = solution.n_trace;
+  summary["seconds"] = {{"assembly", solution.seconds.assembly},
+                        {"factorization", solution.seconds.factorization},
+                        {"condensation", solution.seconds.condensation},
+                        {"contact_qp", solution.seconds.qp},
+                        {"recovery", solution.seconds.recovery},
                         {"total", clock.seconds()}};
   const std::filesystem::path out(o.out);
   io::ensure_writable_directory(out);

@@ -46,7 +46,7 @@ ContactSolution solve_contact(const ContactSetup& setup) {
   if (signorini && !setup.obstacle) throw InputError("Signorini problem: the obstacle g is missing");
   if (!signorini && !setup.bound) throw InputError("friction problem: the friction bound s is missing");
 
-  Stopwatch setup_clock;
+  Stopwatch assembly_clock;
   const space::H1Space space(*setup.mesh, setup.cell_degrees);
   const mesh::ContactBoundary contact(*setup.mesh);
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
@@ -134,11 +134,16 @@ ContactSolution solve_contact(const ContactSetup& setup) {
 
   // Condensation onto the Γ_C trace: the trace dofs ordered last in the factorization, so that
   // S = B K⁻¹ Bᵀ is dense algebra on the trailing block of the factor (sparse_cholesky.hpp).
+  out.seconds.assembly = assembly_clock.seconds();
+  Stopwatch factorization_clock;
   const linalg::SparseCholesky k_factor(stiffness, linalg::nonzero_columns(coupling));
+  out.seconds.factorization = factorization_clock.seconds();
+  Stopwatch condensation_clock;
   const Eigen::VectorXd u_free = k_factor.solve(load);
   const Eigen::MatrixXd s = k_factor.schur_complement(coupling);
   const Eigen::VectorXd d = coupling * u_free - gap_offset;
-  out.seconds_setup = setup_clock.seconds();
+  out.seconds.condensation = condensation_clock.seconds();
+  out.n_trace = k_factor.n_trailing();
 
   Stopwatch qp_clock;
   // Bounds on the coefficients: the active-set method, which ends in a few steps with an exact
@@ -169,7 +174,8 @@ ContactSolution solve_contact(const ContactSetup& setup) {
                                                    : fallback_reason + "; then " + error.what());
     }
   }
-  out.seconds_qp = qp_clock.seconds();
+  out.seconds.qp = qp_clock.seconds();
+  Stopwatch recovery_clock;
   out.lambda_legendre = to_nodal.transpose() * out.lambda;  // V⁻¹ c_nodal
   const Eigen::VectorXd reduced_load = load - coupling.transpose() * out.lambda;
   out.u = k_factor.solve(reduced_load);
@@ -178,6 +184,7 @@ ContactSolution solve_contact(const ContactSetup& setup) {
   out.gap_scale = (coupling * u_free).lpNorm<Eigen::Infinity>() + gap_offset.lpNorm<Eigen::Infinity>() +
                   (s * out.lambda).lpNorm<Eigen::Infinity>();
   out.energy = 0.5 * out.u.dot(stiffness * out.u) - load.dot(out.u);
+  out.seconds.recovery = recovery_clock.seconds();
   return out;
 }
 

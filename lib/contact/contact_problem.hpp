@@ -81,7 +81,14 @@ struct ContactSolution {
   double gap_scale = 0.0;
   double energy = 0.0;               ///< E(u) = ½ uᵀKu − Fᵀu
   QpReport qp;
-  double seconds_setup = 0.0, seconds_qp = 0.0;
+  int n_trace = 0;  ///< trace dofs the condensation works on (ordered last in the factor)
+  struct Seconds {
+    double assembly = 0.0;       ///< spaces, K, F, B, constraints
+    double factorization = 0.0;  ///< sparse Cholesky of K with the trace ordered last
+    double condensation = 0.0;   ///< S = B K⁻¹ Bᵀ from the trailing block, d
+    double qp = 0.0;             ///< the multiplier problem
+    double recovery = 0.0;       ///< u = K⁻¹(F − Bᵀλ), gap, energy
+  } seconds;
 };
 
 /// @throws InputError for missing data or s < 0; NumericalError if the QP does not converge.
