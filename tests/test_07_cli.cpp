@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
+#include <vector>
 
 #include "cli_runner.hpp"
 
@@ -145,5 +147,35 @@ TEST(Cli, SolveWithMoreConstraintPointsUsesInteriorPointAndRefusesTooFew) {
   EXPECT_EQ(bad.exit_code, 2) << bad.output;
   EXPECT_NE(bad.output.find("--constraint-points"), std::string::npos) << bad.output;
   EXPECT_NE(bad.output.find("p_C + 1 = 4"), std::string::npos) << bad.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "bad"));
+}
+
+TEST(Cli, BenchmarkWritesRatiosAgainstTheBaselineOfTheSameRun) {
+  const auto dir = scratch("benchmark");
+  std::ofstream(dir / "bench.toml") << "[benchmark]\np = 2\npC = 1\nratio = \"1/2\"\nn = [4, 8]\n"
+                                       "kinds = [\"signorini\", \"alpha\"]\n";
+  const auto result = run("benchmark " + (dir / "bench.toml").string() + " --out " + (dir / "out").string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  std::ifstream csv(dir / "out" / "benchmark.csv");
+  std::string header, line;
+  std::getline(csv, header);
+  EXPECT_EQ(header, "kind,p,pC,n,m,ndofs,nmult,n_trace,seconds_assembly,seconds_baseline,seconds,ratio,peak_rss_mb");
+  int rows = 0;
+  while (std::getline(csv, line)) {
+    ++rows;
+    // ratio = seconds / seconds_baseline, both positive
+    std::vector<double> cells;
+    std::stringstream stream(line.substr(line.find(',') + 1));
+    for (std::string cell; std::getline(stream, cell, ',');) cells.push_back(std::stod(cell));
+    ASSERT_EQ(cells.size(), 12u) << line;
+    EXPECT_GT(cells[8], 0.0) << line;
+    EXPECT_NEAR(cells[10], cells[9] / cells[8], 1e-12 * cells[10]) << line;
+  }
+  EXPECT_EQ(rows, 8);  // per level: linear_K, signorini, linear_AG, alpha
+  EXPECT_TRUE(std::filesystem::exists(dir / "out" / "scaling.csv"));
+  std::ofstream(dir / "bad.toml") << "[benchmark]\np = 2\npC = 1\nratio = \"1/3\"\nn = [4]\n";
+  const auto bad = run("benchmark " + (dir / "bad.toml").string() + " --out " + (dir / "bad").string());
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+  EXPECT_NE(bad.output.find("benchmark.n"), std::string::npos) << bad.output;
   EXPECT_FALSE(std::filesystem::exists(dir / "bad"));
 }

@@ -18,6 +18,9 @@ void add_sweep_command(CLI::App& app, CommandAction& action);
 /// Adds `solve`.
 void add_solve_command(CLI::App& app, CommandAction& action);
 
+/// Adds `benchmark`.
+void add_benchmark_command(CLI::App& app, CommandAction& action);
+
 /// Adds `infsup`.
 void add_infsup_command(CLI::App& app, CommandAction& action);
 

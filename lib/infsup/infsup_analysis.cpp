@@ -20,6 +20,7 @@ EigenBackend parse_eigen_backend(const std::string& text, const std::string& ori
 InfSupResult analyse_infsup(const InfSupSetup& setup, EigenBackend backend) {
   Stopwatch clock;
   const InfSupOperators operators = assemble_infsup_operators(setup);
+  Stopwatch eigen_clock;
   const SmallestEigenpair pair = backend == EigenBackend::slepc
                                      ? smallest_eigenpair_slepc(operators.s_g, operators.gram)
                                      : smallest_eigenpair_dense(operators.s_g, operators.gram);
@@ -40,6 +41,10 @@ InfSupResult analyse_infsup(const InfSupSetup& setup, EigenBackend backend) {
   result.n_multiplier_dofs = operators.n_multiplier_dofs;
   result.method = pair.method;
   result.residual = pair.residual;
+  result.seconds_eigen = eigen_clock.seconds();
+  result.seconds_assembly = operators.seconds_assembly;
+  result.seconds_primal = operators.seconds_primal;
+  result.seconds_gram = operators.seconds_gram;
   result.seconds = clock.seconds();
   return result;
 }

@@ -26,6 +26,7 @@ struct InfSupResult {
   double h = 0.0, H = 0.0;
   int n_primal_dofs = 0, n_multiplier_dofs = 0;
   double seconds = 0.0;        ///< operators + eigenproblem
+  double seconds_assembly = 0.0, seconds_primal = 0.0, seconds_gram = 0.0, seconds_eigen = 0.0;  ///< its parts
   std::string method;          ///< eigen solver used
   double residual = 0.0;       ///< relative eigen residual
 };

@@ -74,13 +74,15 @@ InfSupOperators assemble_infsup_operators(const InfSupSetup& setup) {
     throw InputError("the friction inf-sup problem (22) needs the friction bound s");
 
   InfSupOperators out;
-  Stopwatch primal_clock;
+  Stopwatch assembly_clock;
   const space::H1Space space(*setup.mesh, setup.cell_degrees);
   const mesh::ContactBoundary contact(*setup.mesh);
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
   const auto matrices = assembly::assemble_volume_matrices(space, {.stiffness = true, .mass = true});
   const auto coupling = assembly::assemble_coupling(
       space, contact, multipliers, friction ? setup.friction_bound : assembly::BoundaryFunction{});
+  out.seconds_assembly = assembly_clock.seconds();
+  Stopwatch primal_clock;
   // The trace dofs the coupling touches are ordered last: S_G comes from the factor's trailing block.
   const linalg::SparseCholesky a_g(matrices.stiffness + matrices.mass, linalg::nonzero_columns(coupling));
   const Eigen::MatrixXd s_g = a_g.schur_complement(coupling);

@@ -45,7 +45,8 @@ struct InfSupOperators {
   int n_multiplier_dofs = 0;
   double h = 0.0;  ///< longest edge of T_h
   double H = 0.0;  ///< longest segment of T_{C,H}
-  double seconds_primal = 0.0;  ///< assembly and factorization of A_G, B, S_G
+  double seconds_assembly = 0.0;  ///< spaces, A_G = K + M, B
+  double seconds_primal = 0.0;    ///< factorization of A_G (trace ordered last) and S_G
   double seconds_gram = 0.0;
 };
 

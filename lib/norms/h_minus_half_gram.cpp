@@ -4,6 +4,7 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "assembly/coupling.hpp"
 #include "assembly/poisson_assembly.hpp"
@@ -14,6 +15,46 @@
 #include "mesh/refine.hpp"
 
 namespace hpcontact::norms {
+
+Eigen::MatrixXd inverse_sqrt_gram_dense(const Eigen::SparseMatrix<double>& a, const Eigen::SparseMatrix<double>& m,
+                                        const Eigen::SparseMatrix<double>& c) {
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eigen{Eigen::MatrixXd(a), Eigen::MatrixXd(m)};
+  if (eigen.info() != Eigen::Success)
+    throw NumericalError("interpolation norm: the reference eigenproblem K_W Φ = M_W Φ Λ failed");
+  const Eigen::MatrixXd scaled = eigen.eigenvectors().transpose() * c;  // Φᵀ C, shape (n_w, n_mult)
+  const Eigen::VectorXd inverse_sqrt = eigen.eigenvalues().cwiseSqrt().cwiseInverse();
+  return scaled.transpose() * inverse_sqrt.asDiagonal() * scaled;
+}
+
+Eigen::MatrixXd inverse_sqrt_gram_quadrature(const Eigen::SparseMatrix<double>& a,
+                                             const Eigen::SparseMatrix<double>& m,
+                                             const Eigen::SparseMatrix<double>& c, double lambda_max) {
+  // Spectrum of (A, M) in [1, λ_max] (A − M = K_W ≥ 0). The trapezoidal rule over all of ℤ,
+  //   ∫ e^s/(λ + e^{2s}) ds ≈ h Σ_k e^{s_k}/(λ + e^{2 s_k}),   s_k = s_lo + k h,
+  // is spectrally accurate; nodes are computed on [s_lo, s_hi] = [−8, ½ log λ_max + 8], and the
+  // nodes beyond sum in closed form, per eigenvalue λ,
+  //   below: h Σ_{j≥1} e^{s_lo − jh}/λ = ρ e^{s_lo}/λ,   above: h Σ_{j≥1} e^{−s_hi − jh} = ρ e^{−s_hi},
+  // ρ = h e^{−h}/(1 − e^{−h}), to relative errors e^{2 s_lo}/λ and λ e^{−2 s_hi} of terms that are
+  // themselves ≤ e^{−8} of the total: about 1e-10 overall. (Truncating the integral instead, with
+  // half weights at the ends, leaves an O(h² e^{−8}) Euler–Maclaurin error.) As operators the
+  // tails are e^{s_lo} Cᵀ A⁻¹ C and e^{−s_hi} Cᵀ M⁻¹ C.
+  constexpr double step = 0.35, margin = 8.0;
+  const double s_lo = -margin, s_hi = 0.5 * std::log(lambda_max) + margin;
+  const int n_nodes = static_cast<int>(std::ceil((s_hi - s_lo) / step)) + 1;
+  const double h = (s_hi - s_lo) / (n_nodes - 1);
+  const double tail = h * std::exp(-h) / (1.0 - std::exp(-h));
+  const Eigen::MatrixXd c_dense = Eigen::MatrixXd(c);
+  auto sandwich = [&](const Eigen::SparseMatrix<double>& matrix) {  // Cᵀ matrix⁻¹ C
+    const linalg::SparseCholesky factor(matrix);
+    return Eigen::MatrixXd(c.transpose() * factor.solve(c_dense));
+  };
+  Eigen::MatrixXd integral = tail * (std::exp(s_lo) * sandwich(a) + std::exp(-s_hi) * sandwich(m));
+  for (int k = 0; k < n_nodes; ++k) {
+    const double s = s_lo + k * h;
+    integral += h * std::exp(s) * sandwich(a + std::exp(2.0 * s) * m);
+  }
+  return (2.0 / std::numbers::pi) * integral;
+}
 
 Eigen::MatrixXd interpolation_norm_gram(const mesh::ContactBoundary& contact,
                                         const space::MultiplierSpace& multipliers,
@@ -32,9 +73,8 @@ Eigen::MatrixXd interpolation_norm_gram(const mesh::ContactBoundary& contact,
   const int n_intervals = static_cast<int>(nodes.size()) - 1;
   // Dofs: vertices 0..n_intervals, then q - 1 bubbles per interval.
   const int n_w = n_intervals + 1 + n_intervals * (q - 1);
-  Eigen::MatrixXd stiffness_plus_mass = Eigen::MatrixXd::Zero(n_w, n_w);
-  Eigen::MatrixXd mass = Eigen::MatrixXd::Zero(n_w, n_w);
-  Eigen::MatrixXd coupling = Eigen::MatrixXd::Zero(n_w, multipliers.n_dofs());
+  std::vector<Eigen::Triplet<double>> a_entries, m_entries, c_entries;
+  double lambda_max = 1.0;  // max over intervals of λ_max(A_e, M_e) bounds λ_max(A_W, M_W)
   const int pc_max = multipliers.max_degree();
   const auto& rule = basis::gauss_legendre(basis::gauss_points_for_degree(2 * q + pc_max));
   const auto table = basis::tabulate_lobatto(q, rule.points);
@@ -44,6 +84,8 @@ Eigen::MatrixXd interpolation_norm_gram(const mesh::ContactBoundary& contact,
     const double half = 0.5 * (nodes[k + 1] - nodes[k]);
     const int segment = multipliers.boundary_mesh().segment_at(0.5 * (nodes[k] + nodes[k + 1]));
     const int first = multipliers.first_dof(segment), pc = multipliers.segment_degree(segment);
+    Eigen::MatrixXd a_local = Eigen::MatrixXd::Zero(q + 1, q + 1), m_local = a_local;
+    Eigen::MatrixXd c_local = Eigen::MatrixXd::Zero(q + 1, pc + 1);
     for (std::size_t g = 0; g < rule.points.size(); ++g) {
       const double w = rule.weights[g] * half;
       const double s = nodes[k] + half * (rule.points[g] + 1.0);
@@ -53,21 +95,31 @@ Eigen::MatrixXd interpolation_norm_gram(const mesh::ContactBoundary& contact,
         const double value_a = table.values(g, a), slope_a = table.derivatives(g, a) / half;
         for (int b = 0; b <= q; ++b) {
           const double product = w * value_a * table.values(g, b);
-          mass(dofs[a], dofs[b]) += product;
-          stiffness_plus_mass(dofs[a], dofs[b]) +=
-              product + w * slope_a * table.derivatives(g, b) / half;
+          m_local(a, b) += product;
+          a_local(a, b) += product + w * slope_a * table.derivatives(g, b) / half;
         }
-        coupling.row(dofs[a]).segment(first, pc + 1) += w * value_a * mu.transpose();
+        c_local.row(a) += w * value_a * mu.transpose();
       }
     }
+    lambda_max = std::max(lambda_max, Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd>(
+                                          a_local, m_local, Eigen::EigenvaluesOnly)
+                                          .eigenvalues()
+                                          .maxCoeff());
+    for (int a = 0; a <= q; ++a) {
+      for (int b = 0; b <= q; ++b) {
+        a_entries.emplace_back(dofs[a], dofs[b], a_local(a, b));
+        m_entries.emplace_back(dofs[a], dofs[b], m_local(a, b));
+      }
+      for (int j = 0; j <= pc; ++j) c_entries.emplace_back(dofs[a], first + j, c_local(a, j));
+    }
   }
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eigen(stiffness_plus_mass, mass);
-  if (eigen.info() != Eigen::Success)
-    throw NumericalError("interpolation norm: the reference eigenproblem K_W Φ = M_W Φ Λ failed");
-  const Eigen::MatrixXd scaled =
-      eigen.eigenvectors().transpose() * coupling;  // Φᵀ C, shape (n_w, n_mult)
-  const Eigen::VectorXd inverse_sqrt = eigen.eigenvalues().cwiseSqrt().cwiseInverse();
-  Eigen::MatrixXd gram = scaled.transpose() * inverse_sqrt.asDiagonal() * scaled;
+  Eigen::SparseMatrix<double> stiffness_plus_mass(n_w, n_w), mass(n_w, n_w), coupling(n_w, multipliers.n_dofs());
+  stiffness_plus_mass.setFromTriplets(a_entries.begin(), a_entries.end());
+  mass.setFromTriplets(m_entries.begin(), m_entries.end());
+  coupling.setFromTriplets(c_entries.begin(), c_entries.end());
+  Eigen::MatrixXd gram = n_w <= reference.dense_limit
+                             ? inverse_sqrt_gram_dense(stiffness_plus_mass, mass, coupling)
+                             : inverse_sqrt_gram_quadrature(stiffness_plus_mass, mass, coupling, lambda_max);
   return 0.5 * (gram + gram.transpose());
 }
 

@@ -6,6 +6,13 @@
 // ‖w‖² = wᵀ M_W Φ Λ^{1/2} Φᵀ M_W w and its dual norm over W gives
 //     G = Cᵀ Φ Λ^{-1/2} Φᵀ C,     C_kj = ∫_{Γ_C} w_k μ_j ds.
 //
+// Two ways to apply Φ Λ^{-1/2} Φᵀ: the dense generalized eigendecomposition (O(n_W³), for small W),
+// and, for large W, the integral  Φ Λ^{-1/2} Φᵀ = (2/π) ∫_0^∞ (K_W + t² M_W)⁻¹ dt  by the
+// trapezoidal rule in s = log t (the scalar integrand is sech(s − ½ log λ) / (2√λ), analytic in a
+// strip of half-width π/2, so step h gives an error near e^{-π²/h}), with the tails beyond the
+// nodes in closed form (K_W⁻¹ below, M_W⁻¹ above). Each node is one sparse (banded) Cholesky
+// solve with the columns of C; the tests check that both ways agree.
+//
 // Extension norm (Lemma 1 of the paper). ‖μ‖_{-1/2} = ‖u^μ‖₁ with u^μ ∈ H¹(Ω, Γ_D) solving
 // (∇u^μ, ∇v) + (u^μ, v) = (μ, v)_{Γ_C}; on a refined reference space S_ref
 //     G = B_ref A_ref⁻¹ B_refᵀ,   A_ref = K_ref + M_ref.
@@ -15,6 +22,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 
 #include "mesh/contact_boundary.hpp"
 #include "space/multiplier_space.hpp"
@@ -26,12 +34,23 @@ namespace hpcontact::norms {
 struct InterpolationReference {
   int subdivisions = 2;
   int degree = 0;  ///< 0: max p_C + 6 (α changes by < 0.1% beyond, see tests)
+  /// W up to this dimension uses the dense eigendecomposition, larger W the quadrature.
+  int dense_limit = 200;
 };
 
 /// Dense, symmetric positive definite, shape (n_multiplier_dofs, n_multiplier_dofs).
 Eigen::MatrixXd interpolation_norm_gram(const mesh::ContactBoundary& contact,
                                         const space::MultiplierSpace& multipliers,
                                         const InterpolationReference& reference = {});
+
+/// Cᵀ Φ Λ^{-1/2} Φᵀ C for the pencil A Φ = M Φ Λ (A, M symmetric positive definite, sparse), by the
+/// dense eigendecomposition, or by the quadrature above given λ_max(A, M) ≤ lambda_max (and
+/// λ_min ≥ 1, i.e. A − M positive semi-definite). Shape (c.cols(), c.cols()).
+Eigen::MatrixXd inverse_sqrt_gram_dense(const Eigen::SparseMatrix<double>& a, const Eigen::SparseMatrix<double>& m,
+                                        const Eigen::SparseMatrix<double>& c);
+Eigen::MatrixXd inverse_sqrt_gram_quadrature(const Eigen::SparseMatrix<double>& a,
+                                             const Eigen::SparseMatrix<double>& m,
+                                             const Eigen::SparseMatrix<double>& c, double lambda_max);
 
 /// S_ref: T_h refined uniformly `refinements` times, degree p_T + `extra_degree`.
 struct ExtensionReference {

@@ -1,0 +1,176 @@
+// The performance benchmark: per level, assemble once, time the baselines, then the contact
+// solves and α, each as a ratio to the baseline of its matrix.
+#include "studies/performance_benchmark.hpp"
+
+#include <fmt/format.h>
+#include <sys/resource.h>
+
+#include <cmath>
+#include <map>
+
+#include "assembly/poisson_assembly.hpp"
+#include "contact/contact_problem.hpp"
+#include "core/error.hpp"
+#include "core/timer.hpp"
+#include "infsup/infsup_analysis.hpp"
+#include "io/toml_reader.hpp"
+#include "linalg/sparse_cholesky.hpp"
+#include "mesh/rectangle_mesh.hpp"
+#include "studies/stability_sweep.hpp"
+
+namespace hpcontact::studies {
+
+PerformanceBenchmark read_performance_benchmark(const std::string& path) {
+  const auto root = io::parse_toml_file(path);
+  PerformanceBenchmark out;
+  out.file = path;
+  const auto table = root.table("benchmark", true);
+  out.p = static_cast<int>(table.integer("p", 1, 20));
+  out.pc = static_cast<int>(table.integer("pC", 0, 19));
+  out.ratio = table.string_list("ratio", std::vector<std::string>{"1/2"}).front();
+  const double ratio = parse_ratio(out.ratio, path + ": key 'benchmark.ratio'");
+  for (long long n : table.integer_list("n", 2, 4096)) {
+    const double m = n * ratio;
+    if (n % 2 != 0 || std::abs(m - std::round(m)) > 1e-9 || m < 1)
+      throw_bad_input(path, "benchmark.n", std::to_string(n), "even, with n · ratio a whole number >= 1");
+    out.levels.push_back(static_cast<int>(n));
+  }
+  const std::vector<std::string> allowed{"signorini", "friction", "friction_s", "alpha"};
+  out.kinds = table.string_list("kinds", allowed);
+  for (const auto& kind : out.kinds)
+    if (std::find(allowed.begin(), allowed.end(), kind) == allowed.end())
+      throw_bad_input(path, "benchmark.kinds", kind, "any of signorini, friction, friction_s, alpha");
+  table.reject_unknown_keys();
+  root.reject_unknown_keys();
+  return out;
+}
+
+namespace {
+
+double peak_rss_mb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss / 1024.0;  // Linux reports kilobytes
+}
+
+// One linear solve of `matrix`: factorization with CHOLMOD's own ordering, then one solve.
+double time_linear_solve(const Eigen::SparseMatrix<double>& matrix, const Eigen::VectorXd& rhs) {
+  Stopwatch clock;
+  const linalg::SparseCholesky factor(matrix);
+  const Eigen::VectorXd x = factor.solve(rhs);
+  HPC_VERIFY(x.allFinite(), "baseline solve gave a non-finite result");
+  return clock.seconds();
+}
+
+}  // namespace
+
+std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& benchmark,
+                                                    const std::function<void(const BenchmarkRow&)>& on_row) {
+  std::vector<BenchmarkRow> rows;
+  const double ratio = parse_ratio(benchmark.ratio, benchmark.file);
+  auto add = [&](BenchmarkRow row) {
+    row.ratio = row.seconds / row.seconds_baseline;
+    row.peak_rss_mb = peak_rss_mb();
+    rows.push_back(row);
+    if (on_row) on_row(rows.back());
+  };
+  for (int n : benchmark.levels) {
+    const int m = static_cast<int>(std::lround(n * ratio));
+    const auto mesh = mesh::make_paper_square_mesh(n);
+    const auto boundary = mesh::BoundaryMesh::uniform(2.0, m);
+    const space::H1Space space(mesh, benchmark.p);
+    BenchmarkRow base;
+    base.p = benchmark.p;
+    base.pc = benchmark.pc;
+    base.n = n;
+    base.m = m;
+    base.ndofs = space.n_dofs();
+    base.nmult = m * (benchmark.pc + 1);
+
+    // Baselines, each with its own assembly time.
+    Stopwatch assembly_k;
+    const auto k = assembly::assemble_volume_matrices(space, {.stiffness = true, .mass = false}).stiffness;
+    const Eigen::VectorXd load = assembly::assemble_volume_load(space, [](const mesh::Point&) { return -1.0; });
+    BenchmarkRow linear_k = base;
+    linear_k.kind = "linear_K";
+    linear_k.seconds_assembly = assembly_k.seconds();
+    linear_k.seconds_baseline = linear_k.seconds = time_linear_solve(k, load);
+    add(linear_k);
+
+    for (const auto& kind : benchmark.kinds) {
+      if (kind == "alpha") continue;
+      contact::ContactSetup setup;
+      setup.mesh = &mesh;
+      setup.cell_degrees.assign(mesh.n_cells(), benchmark.p);
+      setup.boundary_mesh = &boundary;
+      setup.segment_degrees.assign(m, benchmark.pc);
+      setup.problem = kind == "signorini" ? contact::ContactProblem::signorini
+                      : kind == "friction" ? contact::ContactProblem::friction
+                                           : contact::ContactProblem::friction_s;
+      setup.f = [](const mesh::Point&) { return -1.0; };
+      setup.obstacle = [](const mesh::Point& x) { return -x.x() * x.x(); };
+      setup.bound = [](const mesh::Point& x) { return (1.0 - x.x()) * (1.0 - x.x()); };
+      const auto solution = contact::solve_contact(setup);
+      BenchmarkRow row = base;
+      row.kind = kind;
+      row.n_trace = solution.n_trace;
+      row.seconds_assembly = solution.seconds.assembly;
+      row.seconds_baseline = linear_k.seconds_baseline;
+      row.seconds = solution.seconds.factorization + solution.seconds.condensation + solution.seconds.qp +
+                    solution.seconds.recovery;
+      add(row);
+    }
+
+    if (std::find(benchmark.kinds.begin(), benchmark.kinds.end(), "alpha") != benchmark.kinds.end()) {
+      Stopwatch assembly_ag;
+      const auto matrices = assembly::assemble_volume_matrices(space, {.stiffness = true, .mass = true});
+      const Eigen::SparseMatrix<double> a_g = matrices.stiffness + matrices.mass;
+      BenchmarkRow linear_ag = base;
+      linear_ag.kind = "linear_AG";
+      linear_ag.seconds_assembly = assembly_ag.seconds();
+      linear_ag.seconds_baseline = linear_ag.seconds = time_linear_solve(a_g, load);
+      add(linear_ag);
+      infsup::InfSupSetup setup;
+      setup.mesh = &mesh;
+      setup.cell_degrees.assign(mesh.n_cells(), benchmark.p);
+      setup.boundary_mesh = &boundary;
+      setup.segment_degrees.assign(m, benchmark.pc);
+      const auto result = infsup::analyse_infsup(setup, infsup::EigenBackend::slepc);
+      BenchmarkRow row = base;
+      row.kind = "alpha";
+      row.seconds_assembly = result.seconds_assembly;
+      row.seconds_baseline = linear_ag.seconds_baseline;
+      row.seconds = result.seconds - result.seconds_assembly;
+      add(row);
+    }
+  }
+  return rows;
+}
+
+io::CsvTable benchmark_table(const std::vector<BenchmarkRow>& rows) {
+  io::CsvTable table({"kind", "p", "pC", "n", "m", "ndofs", "nmult", "n_trace", "seconds_assembly",
+                      "seconds_baseline", "seconds", "ratio", "peak_rss_mb"});
+  for (const auto& r : rows)
+    table.add_row({r.kind, (long long)r.p, (long long)r.pc, (long long)r.n, (long long)r.m, (long long)r.ndofs,
+                   (long long)r.nmult, (long long)r.n_trace, r.seconds_assembly, r.seconds_baseline, r.seconds,
+                   r.ratio, r.peak_rss_mb});
+  return table;
+}
+
+io::CsvTable scaling_exponents(const std::vector<BenchmarkRow>& rows) {
+  std::map<std::string, std::vector<std::pair<double, double>>> points;
+  for (const auto& r : rows)
+    if (r.seconds > 0) points[r.kind].emplace_back(std::log(r.ndofs), std::log(r.seconds));
+  io::CsvTable table({"kind", "exponent", "rows"});
+  for (const auto& [kind, xy] : points) {
+    if (xy.size() < 2) continue;
+    double mx = 0, my = 0;
+    for (const auto& [x, y] : xy) mx += x / xy.size(), my += y / xy.size();
+    double sxy = 0, sxx = 0;
+    for (const auto& [x, y] : xy) sxy += (x - mx) * (y - my), sxx += (x - mx) * (x - mx);
+    table.add_row({kind, sxx > 0 ? sxy / sxx : 0.0, (long long)xy.size()});
+  }
+  return table;
+}
+
+}  // namespace hpcontact::studies

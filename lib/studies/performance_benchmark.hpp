@@ -1,0 +1,48 @@
+// Performance benchmark: every cost as a ratio against a baseline timed in the same run, the
+// time of one linear solve (CHOLMOD factorization with its own ordering + one solve) of the same
+// matrix — K for the contact problems, A_G = K + M for α — on the §7 data.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "io/csv_writer.hpp"
+
+namespace hpcontact::studies {
+
+/// A benchmark file (TOML), e.g. studies/performance/benchmark.toml:
+///   [benchmark] p, pC (degrees), ratio (h/H), n (list of levels, cells per side),
+///               kinds (any of "signorini", "friction", "friction_s", "alpha")
+struct PerformanceBenchmark {
+  std::string file;
+  int p = 4, pc = 3;
+  std::string ratio = "1/2";
+  std::vector<int> levels;
+  std::vector<std::string> kinds;
+};
+
+/// @throws InputError naming file, key, value and the allowed range.
+PerformanceBenchmark read_performance_benchmark(const std::string& path);
+
+struct BenchmarkRow {
+  std::string kind;  ///< "linear_K", "linear_AG", a contact problem, or "alpha"
+  int p = 0, pc = 0, n = 0, m = 0, ndofs = 0, nmult = 0, n_trace = 0;
+  double seconds_assembly = 0.0;  ///< not part of either side of the ratio
+  double seconds_baseline = 0.0;  ///< one linear solve of the same matrix
+  double seconds = 0.0;           ///< the measured operation (assembly excluded)
+  double ratio = 0.0;             ///< seconds / seconds_baseline
+  double peak_rss_mb = 0.0;       ///< the process's peak resident memory after this row
+};
+
+/// Runs every level (in the given order) and kind; `on_row` after each row (progress).
+std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& benchmark,
+                                                    const std::function<void(const BenchmarkRow&)>& on_row = {});
+
+/// Columns kind,p,pC,n,m,ndofs,nmult,n_trace,seconds_assembly,seconds_baseline,seconds,ratio,peak_rss_mb.
+io::CsvTable benchmark_table(const std::vector<BenchmarkRow>& rows);
+
+/// Least-squares exponent b of seconds ≈ a · ndofs^b per kind: columns kind,exponent,rows.
+io::CsvTable scaling_exponents(const std::vector<BenchmarkRow>& rows);
+
+}  // namespace hpcontact::studies
