@@ -3,12 +3,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "assembly/poisson_assembly.hpp"
 #include "basis/quadrature.hpp"
 #include "core/error.hpp"
 #include "core/timer.hpp"
 #include "linalg/sparse_cholesky.hpp"
+#include "norms/trace_factor.hpp"
 #include "mesh/contact_boundary.hpp"
 #include "space/multiplier_space.hpp"
 
@@ -74,26 +76,38 @@ InfSupOperators assemble_infsup_operators(const InfSupSetup& setup) {
     throw InputError("the friction inf-sup problem (22) needs the friction bound s");
 
   InfSupOperators out;
-  Stopwatch assembly_clock;
-  const space::H1Space space(*setup.mesh, setup.cell_degrees);
-  const mesh::ContactBoundary contact(*setup.mesh);
+  // A_G factorized with the whole Γ_C trace last: S_G comes from the factor's trailing block.
+  std::unique_ptr<norms::TraceFactor> own_primal;
+  if (!setup.primal) {
+    own_primal = std::make_unique<norms::TraceFactor>(*setup.mesh, setup.cell_degrees);
+    out.seconds_assembly = own_primal->seconds_assembly();
+    out.seconds_primal = own_primal->seconds_factorization();
+  }
+  const norms::TraceFactor& primal = setup.primal ? *setup.primal : *own_primal;
+  HPC_VERIFY(&primal.space().mesh() == setup.mesh, "shared A_G factor of another mesh");
+  const auto& space = primal.space();
+  const auto& contact = primal.contact();
+  Stopwatch coupling_clock;
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
-  const auto matrices = assembly::assemble_volume_matrices(space, {.stiffness = true, .mass = true});
   const auto coupling = assembly::assemble_coupling(
       space, contact, multipliers, friction ? setup.friction_bound : assembly::BoundaryFunction{});
-  out.seconds_assembly = assembly_clock.seconds();
+  out.seconds_assembly += coupling_clock.seconds();
   Stopwatch primal_clock;
-  // The trace dofs the coupling touches are ordered last: S_G comes from the factor's trailing block.
-  const linalg::SparseCholesky a_g(matrices.stiffness + matrices.mass, linalg::nonzero_columns(coupling));
-  const Eigen::MatrixXd s_g = a_g.schur_complement(coupling);
-  out.seconds_primal = primal_clock.seconds();
+  const Eigen::MatrixXd s_g = primal.factor().schur_complement(coupling);
+  out.seconds_primal += primal_clock.seconds();
 
   Stopwatch gram_clock;
-  const Eigen::MatrixXd gram =
-      setup.norm == GramNorm::interpolation
-          ? norms::interpolation_norm_gram(contact, multipliers, setup.interpolation_reference)
-          : norms::extension_norm_gram(*setup.mesh, setup.cell_degrees, multipliers,
-                                       setup.extension_reference);
+  Eigen::MatrixXd gram;
+  if (setup.gram) {
+    gram = *setup.gram;
+  } else if (setup.norm == GramNorm::interpolation) {
+    gram = norms::interpolation_norm_gram(contact, multipliers, setup.interpolation_reference);
+  } else {
+    gram = setup.extension ? norms::extension_norm_gram(*setup.extension, multipliers)
+                           : norms::extension_norm_gram(*setup.mesh, setup.cell_degrees, multipliers,
+                                                        setup.extension_reference);
+  }
+  HPC_VERIFY(gram.rows() == multipliers.n_dofs(), "shared Gram matrix of another multiplier space");
   out.seconds_gram = gram_clock.seconds();
 
   if (friction) {

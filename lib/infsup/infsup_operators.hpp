@@ -33,6 +33,12 @@ struct InfSupSetup {
   assembly::BoundaryFunction friction_bound;  ///< s, required for the friction problem
   norms::InterpolationReference interpolation_reference;
   norms::ExtensionReference extension_reference;
+  // Optional parts shared between points of a sweep (built here when absent). They must belong to
+  // this setup: `primal` to (mesh, cell_degrees), `extension` to (mesh, cell_degrees,
+  // extension_reference), `gram` to (boundary_mesh, segment_degrees, norm and its reference).
+  const norms::TraceFactor* primal = nullptr;
+  const norms::ExtensionReferenceFactor* extension = nullptr;
+  const Eigen::MatrixXd* gram = nullptr;
 };
 
 struct InfSupOperators {
@@ -45,8 +51,8 @@ struct InfSupOperators {
   int n_multiplier_dofs = 0;
   double h = 0.0;  ///< longest edge of T_h
   double H = 0.0;  ///< longest segment of T_{C,H}
-  double seconds_assembly = 0.0;  ///< spaces, A_G = K + M, B
-  double seconds_primal = 0.0;    ///< factorization of A_G (trace ordered last) and S_G
+  double seconds_assembly = 0.0;  ///< spaces, A_G = K + M, B (0 for a shared A_G, except B)
+  double seconds_primal = 0.0;    ///< factorization of A_G (trace ordered last, unless shared) and S_G
   double seconds_gram = 0.0;
 };
 

@@ -123,26 +123,32 @@ Eigen::MatrixXd interpolation_norm_gram(const mesh::ContactBoundary& contact,
   return 0.5 * (gram + gram.transpose());
 }
 
-Eigen::MatrixXd extension_norm_gram(const mesh::QuadMesh& mesh, const std::vector<int>& cell_degrees,
-                                    const space::MultiplierSpace& multipliers,
-                                    const ExtensionReference& reference) {
+ExtensionReferenceFactor::ExtensionReferenceFactor(const mesh::QuadMesh& mesh, const std::vector<int>& cell_degrees,
+                                                   const ExtensionReference& reference) {
   if (reference.refinements < 0 || reference.extra_degree < 0)
     throw InputError("extension norm: refinements and extra_degree must be >= 0");
-  mesh::QuadMesh fine = mesh;
+  fine_ = std::make_unique<mesh::QuadMesh>(mesh);
   std::vector<int> degrees = cell_degrees;
   for (int level = 0; level < reference.refinements; ++level) {
-    fine = mesh::refine_uniformly(fine);
+    *fine_ = mesh::refine_uniformly(*fine_);
     std::vector<int> children;
     for (int p : degrees) children.insert(children.end(), 4, p);  // children of cell c: 4c..4c+3
     degrees = std::move(children);
   }
   for (int& p : degrees) p += reference.extra_degree;
-  const space::H1Space space(fine, degrees);
-  const mesh::ContactBoundary contact(fine);
-  const auto matrices = assembly::assemble_volume_matrices(space, {.stiffness = true, .mass = true});
-  const auto coupling = assembly::assemble_coupling(space, contact, multipliers);
-  const linalg::SparseCholesky a(matrices.stiffness + matrices.mass, linalg::nonzero_columns(coupling));
-  return a.schur_complement(coupling);
+  factor_ = std::make_unique<TraceFactor>(*fine_, std::move(degrees));
+}
+
+Eigen::MatrixXd extension_norm_gram(const ExtensionReferenceFactor& reference,
+                                    const space::MultiplierSpace& multipliers) {
+  const auto& factor = reference.trace_factor();
+  return factor.factor().schur_complement(assembly::assemble_coupling(factor.space(), factor.contact(), multipliers));
+}
+
+Eigen::MatrixXd extension_norm_gram(const mesh::QuadMesh& mesh, const std::vector<int>& cell_degrees,
+                                    const space::MultiplierSpace& multipliers,
+                                    const ExtensionReference& reference) {
+  return extension_norm_gram(ExtensionReferenceFactor(mesh, cell_degrees, reference), multipliers);
 }
 
 }  // namespace hpcontact::norms

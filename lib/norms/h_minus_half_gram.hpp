@@ -24,7 +24,10 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include <memory>
+
 #include "mesh/contact_boundary.hpp"
+#include "norms/trace_factor.hpp"
 #include "space/multiplier_space.hpp"
 
 namespace hpcontact::norms {
@@ -58,8 +61,24 @@ struct ExtensionReference {
   int extra_degree = 2;
 };
 
+/// The extension norm's reference space S_ref with its K + M factorized, trace last: built once
+/// per (T_h, p), it serves every multiplier space on Γ_C.
+class ExtensionReferenceFactor {
+ public:
+  ExtensionReferenceFactor(const mesh::QuadMesh& mesh, const std::vector<int>& cell_degrees,
+                           const ExtensionReference& reference);
+  const TraceFactor& trace_factor() const { return *factor_; }
+
+ private:
+  std::unique_ptr<mesh::QuadMesh> fine_;
+  std::unique_ptr<TraceFactor> factor_;
+};
+
 /// Dense, symmetric positive definite, shape (n_multiplier_dofs, n_multiplier_dofs).
-/// `cell_degrees` is the degree distribution of the discretization on `mesh`.
+Eigen::MatrixXd extension_norm_gram(const ExtensionReferenceFactor& reference,
+                                    const space::MultiplierSpace& multipliers);
+
+/// The same, building the reference first. `cell_degrees` is the degree distribution on `mesh`.
 Eigen::MatrixXd extension_norm_gram(const mesh::QuadMesh& mesh, const std::vector<int>& cell_degrees,
                                     const space::MultiplierSpace& multipliers,
                                     const ExtensionReference& reference = {});

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <set>
 #include <sstream>
 #include <tuple>
@@ -15,6 +16,9 @@
 #include "io/atomic_file.hpp"
 #include "io/toml_reader.hpp"
 #include "mesh/rectangle_mesh.hpp"
+#include "norms/h_minus_half_gram.hpp"
+#include "norms/trace_factor.hpp"
+#include "space/multiplier_space.hpp"
 
 namespace hpcontact::studies {
 
@@ -130,6 +134,7 @@ std::string point_key(const std::string& problem, const std::string& norm, int p
 void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::path& alpha_csv,
                          const std::function<void(int, int, const std::string&)>& progress) {
   std::set<std::string> done;
+  std::map<std::tuple<int, long, int>, Eigen::MatrixXd> interpolation_grams;  // (n, m, p_C) → G
   std::string content = io::CsvTable(alpha_columns()).to_string();
   for (const auto& row : read_csv(alpha_csv)) {
     done.insert(point_key(row.at("problem"), row.at("norm"), std::stoi(row.at("p")),
@@ -144,50 +149,95 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
   }
 
   struct Point { std::string problem, norm, ratio; int p, pc, n; };
+  // Grouped by (n, p): the points of a group share T_h and S^p(T_h), so A_G (and the extension
+  // norm's reference) is factorized once per group; the interpolation-norm Gram matrix depends only
+  // on (n, h/H, p_C) and is kept for the level.
   std::vector<Point> points;
-  for (const auto& problem : sweep.problems)
-    for (const auto& norm : sweep.norms)
-      for (int p : sweep.degrees)
-        for (int pc : sweep.multiplier_degrees) {
-          if (sweep.pc_below_p && pc >= p) continue;
-          for (const auto& ratio : sweep.ratios)
-            for (int n : sweep.levels) points.push_back({problem, norm, ratio, p, pc, n});
-        }
+  for (int n : sweep.levels)
+    for (int p : sweep.degrees)
+      for (const auto& problem : sweep.problems)
+        for (const auto& norm : sweep.norms)
+          for (int pc : sweep.multiplier_degrees) {
+            if (sweep.pc_below_p && pc >= p) continue;
+            for (const auto& ratio : sweep.ratios) points.push_back({problem, norm, ratio, p, pc, n});
+          }
   const auto backend = infsup::parse_eigen_backend(sweep.eigensolver, sweep.file);
+  auto key_of = [&](const Point& point) {
+    const long m = std::lround(point.n * parse_ratio(point.ratio, sweep.file));
+    return point_key(point.problem, infsup::to_string(infsup::parse_gram_norm(point.norm, "")), point.p, point.pc,
+                     point.n, m);
+  };
   int index = 0;
-  for (const auto& point : points) {
-    ++index;
-    const double ratio = parse_ratio(point.ratio, sweep.file);
-    const long m = std::lround(point.n * ratio);
-    const std::string key = point_key(point.problem, infsup::to_string(infsup::parse_gram_norm(point.norm, "")), point.p, point.pc, point.n, m);
-    if (done.contains(key)) continue;
-    if (progress)
-      progress(index, static_cast<int>(points.size()),
-               fmt::format("{} {} p={} pC={} n={} h/H={}", point.problem, point.norm, point.p,
-                           point.pc, point.n, point.ratio));
-    const auto mesh = mesh::make_paper_square_mesh(point.n);
-    const auto boundary = mesh::BoundaryMesh::uniform(2.0, static_cast<int>(m));
-    infsup::InfSupSetup setup;
-    setup.mesh = &mesh;
-    setup.cell_degrees.assign(mesh.n_cells(), point.p);
-    setup.boundary_mesh = &boundary;
-    setup.segment_degrees.assign(m, point.pc);
-    setup.norm = infsup::parse_gram_norm(point.norm, sweep.file);
-    setup.problem = infsup::parse_pairing_problem(point.problem, sweep.file);
-    setup.friction_bound = [](const mesh::Point& x) { return (1.0 - x.x()) * (1.0 - x.x()); };
-    setup.interpolation_reference = sweep.interpolation_reference;
-    setup.extension_reference = sweep.extension_reference;
-    const auto result = infsup::analyse_infsup(setup, backend);
-    io::CsvTable row(alpha_columns());
-    row.add_row({point.problem, infsup::to_string(setup.norm), static_cast<long long>(point.p),
-                 static_cast<long long>(point.pc), static_cast<long long>(point.n),
-                 static_cast<long long>(m), result.h, result.H, ratio, result.pi, result.alpha,
-                 static_cast<long long>(result.n_primal_dofs),
-                 static_cast<long long>(result.n_multiplier_dofs), result.seconds});
-    const std::string text = row.to_string();
-    content += text.substr(text.find('\n') + 1);
+  std::size_t first = 0;
+  while (first < points.size()) {
+    const int n = points[first].n, p = points[first].p;
+    std::size_t last = first;
+    bool any_todo = false, any_extension = false;
+    while (last < points.size() && points[last].n == n && points[last].p == p) {
+      if (!done.contains(key_of(points[last]))) {
+        any_todo = true;
+        any_extension = any_extension || infsup::parse_gram_norm(points[last].norm, sweep.file) == infsup::GramNorm::extension;
+      }
+      ++last;
+    }
+    if (!any_todo) {
+      index += static_cast<int>(last - first);
+      first = last;
+      continue;
+    }
+    const auto mesh = mesh::make_paper_square_mesh(n);
+    const std::vector<int> cell_degrees(mesh.n_cells(), p);
+    const norms::TraceFactor primal(mesh, cell_degrees);
+    std::unique_ptr<norms::ExtensionReferenceFactor> extension;
+    if (any_extension)
+      extension = std::make_unique<norms::ExtensionReferenceFactor>(mesh, cell_degrees, sweep.extension_reference);
+    for (std::size_t k = first; k < last; ++k) {
+      const Point& point = points[k];
+      ++index;
+      const std::string key = key_of(point);
+      if (done.contains(key)) continue;
+      if (progress)
+        progress(index, static_cast<int>(points.size()),
+                 fmt::format("{} {} p={} pC={} n={} h/H={}", point.problem, point.norm, point.p, point.pc, point.n,
+                             point.ratio));
+      const double ratio = parse_ratio(point.ratio, sweep.file);
+      const long m = std::lround(point.n * ratio);
+      const auto boundary = mesh::BoundaryMesh::uniform(2.0, static_cast<int>(m));
+      infsup::InfSupSetup setup;
+      setup.mesh = &mesh;
+      setup.cell_degrees = cell_degrees;
+      setup.boundary_mesh = &boundary;
+      setup.segment_degrees.assign(m, point.pc);
+      setup.norm = infsup::parse_gram_norm(point.norm, sweep.file);
+      setup.problem = infsup::parse_pairing_problem(point.problem, sweep.file);
+      setup.friction_bound = [](const mesh::Point& x) { return (1.0 - x.x()) * (1.0 - x.x()); };
+      setup.interpolation_reference = sweep.interpolation_reference;
+      setup.extension_reference = sweep.extension_reference;
+      setup.primal = &primal;
+      setup.extension = extension.get();
+      if (setup.norm == infsup::GramNorm::interpolation) {
+        auto& gram = interpolation_grams[{n, m, point.pc}];
+        if (gram.size() == 0) {
+          const space::MultiplierSpace multipliers(boundary, setup.segment_degrees);
+          gram = norms::interpolation_norm_gram(primal.contact(), multipliers, sweep.interpolation_reference);
+        }
+        setup.gram = &gram;
+      }
+      const auto result = infsup::analyse_infsup(setup, backend);
+      io::CsvTable row(alpha_columns());
+      row.add_row({point.problem, infsup::to_string(setup.norm), static_cast<long long>(point.p),
+                   static_cast<long long>(point.pc), static_cast<long long>(point.n), static_cast<long long>(m),
+                   result.h, result.H, ratio, result.pi, result.alpha, static_cast<long long>(result.n_primal_dofs),
+                   static_cast<long long>(result.n_multiplier_dofs), result.seconds});
+      const std::string text = row.to_string();
+      content += text.substr(text.find('\n') + 1);
+      done.insert(key);
+    }
+    // Saved once per group: an interrupted sweep resumes from the last finished (n, p).
     io::write_file_atomically(alpha_csv, content);
-    done.insert(key);
+    // Grams of a finished level are not needed again.
+    if (last == points.size() || points[last].n != n) interpolation_grams.clear();
+    first = last;
   }
 }
 
