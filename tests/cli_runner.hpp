@@ -16,8 +16,9 @@ struct Run {
   std::string output;  ///< standard output and error together
 };
 
-inline Run run(const std::string& arguments) {
-  const std::string command = std::string(HPCONTACT_CLI) + " " + arguments + " 2>&1";
+/// Runs a whole shell command line (stderr merged into the output).
+inline Run run_command(const std::string& command_line) {
+  const std::string command = command_line + " 2>&1";
   std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
   std::string output;
   std::array<char, 4096> buffer;
@@ -25,6 +26,9 @@ inline Run run(const std::string& arguments) {
   const int status = pclose(pipe.release());
   return {WEXITSTATUS(status), output};
 }
+
+/// Runs hpcontact with `arguments`.
+inline Run run(const std::string& arguments) { return run_command(std::string(HPCONTACT_CLI) + " " + arguments); }
 
 inline std::filesystem::path scratch(const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() / ("hpcontact_cli_" + name);

@@ -2,6 +2,7 @@
 // no output, and the convergence subcommand writes its CSV.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -13,6 +14,7 @@
 namespace {
 
 using hpcontact::testing::run;
+using hpcontact::testing::run_command;
 using hpcontact::testing::scratch;
 
 const char* kStudy = R"toml([solution]
@@ -178,4 +180,33 @@ TEST(Cli, BenchmarkWritesRatiosAgainstTheBaselineOfTheSameRun) {
   EXPECT_EQ(bad.exit_code, 2) << bad.output;
   EXPECT_NE(bad.output.find("benchmark.n"), std::string::npos) << bad.output;
   EXPECT_FALSE(std::filesystem::exists(dir / "bad"));
+}
+
+// `mpirun -n 2 hpcontact sweep` distributes the (n, p) groups over the ranks and writes the same
+// alpha.csv and verdicts.csv as a serial run (compared without the timing column). Both runs use
+// one BLAS thread per process, so that every floating-point operation is the same.
+TEST(Cli, SweepUnderMpirunWritesTheSerialCsv) {
+  const auto dir = scratch("sweep_mpi");
+  std::ofstream(dir / "sweep.toml") << "[sweep]\np = \"1..3\"\npC = \"0..2\"\nn = [4, 8, 16]\n"
+                                       "ratio = [1, \"1/2\"]\nnorm = [\"interp\", \"extension\"]\n"
+                                       "problem = [\"signorini\", \"friction\"]\n";
+  const std::string env = "env OPENBLAS_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ";
+  const auto serial = run_command(env + HPCONTACT_CLI " sweep " + (dir / "sweep.toml").string() + " --out " +
+                                  (dir / "serial").string());
+  ASSERT_EQ(serial.exit_code, 0) << serial.output;
+  const auto parallel = run_command(env + "mpirun -n 2 --oversubscribe " HPCONTACT_CLI " sweep " +
+                                    (dir / "sweep.toml").string() + " --out " + (dir / "parallel").string());
+  ASSERT_EQ(parallel.exit_code, 0) << parallel.output;
+  EXPECT_NE(parallel.output.find("on 2 ranks"), std::string::npos) << parallel.output;
+  auto without_seconds = [](const std::filesystem::path& path) {
+    std::ifstream in(path);
+    std::string text, line;
+    while (std::getline(in, line)) text += line.substr(0, line.rfind(',')) + "\n";
+    return text;
+  };
+  const std::string serial_alpha = without_seconds(dir / "serial" / "alpha.csv");
+  EXPECT_EQ(std::count(serial_alpha.begin(), serial_alpha.end(), '\n'), 1 + 2 * 2 * 6 * 3 * 2);
+  EXPECT_EQ(serial_alpha, without_seconds(dir / "parallel" / "alpha.csv"));
+  std::ifstream a(dir / "serial" / "verdicts.csv"), b(dir / "parallel" / "verdicts.csv");
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(a), {}), std::string(std::istreambuf_iterator<char>(b), {}));
 }

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "commands.hpp"
+#include "core/petsc_session.hpp"
 #include "core/timer.hpp"
 #include "io/atomic_file.hpp"
 #include "studies/stability_sweep.hpp"
@@ -28,8 +29,9 @@ void add_sweep_command(CLI::App& app, CommandAction& action) {
       const auto sweep = studies::read_stability_sweep(*study_file);
       io::ensure_writable_directory(*out_dir);
       const auto alpha_csv = std::filesystem::path(*out_dir) / "alpha.csv";
-      // 2. Run, with a progress line on stderr when it is a terminal.
-      const bool terminal = isatty(STDERR_FILENO);
+      // 2. Run, with a progress line on stderr when it is a terminal (rank 0 only under mpirun).
+      const auto [rank, size] = mpi_rank_and_size();
+      const bool terminal = rank == 0 && isatty(STDERR_FILENO);
       Stopwatch clock;
       studies::run_stability_sweep(sweep, alpha_csv, [&](int done, int total, const std::string& label) {
         if (!terminal) return;
@@ -38,12 +40,13 @@ void add_sweep_command(CLI::App& app, CommandAction& action) {
                    std::string(width - filled, '.'), done, total, clock.seconds(), label);
       });
       if (terminal) fmt::print(stderr, "\n");
-      // 3. Fit rates and write verdicts.
+      // 3. Fit rates and write verdicts (rank 0; alpha.csv is complete on every rank here).
+      if (rank != 0) return 0;
       const auto verdicts = studies::fit_verdicts(alpha_csv, sweep.fit_levels);
       verdicts.write(std::filesystem::path(*out_dir) / "verdicts.csv");
-      fmt::print("wrote {} and {} ({} configurations, {:.1f} s)\n", alpha_csv.string(),
+      fmt::print("wrote {} and {} ({} configurations, {:.1f} s on {} rank{})\n", alpha_csv.string(),
                  (std::filesystem::path(*out_dir) / "verdicts.csv").string(), verdicts.n_rows(),
-                 clock.seconds());
+                 clock.seconds(), size, size > 1 ? "s" : "");
       return 0;
     };
   });

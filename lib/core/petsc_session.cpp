@@ -1,6 +1,8 @@
 // PetscSession and split_petsc_options.
 #include "core/petsc_session.hpp"
 
+#include <mpi.h>
+
 #include <slepcsys.h>
 
 #include <regex>
@@ -49,5 +51,16 @@ PetscSession::PetscSession(const std::vector<std::string>& petsc_arguments)
 }
 
 PetscSession::~PetscSession() { SlepcFinalize(); }
+
+std::pair<int, int> mpi_rank_and_size() {
+  int initialized = 0, finalized = 0;
+  MPI_Initialized(&initialized);
+  MPI_Finalized(&finalized);
+  if (!initialized || finalized) return {0, 1};
+  int rank = 0, size = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  return {rank, size};
+}
 
 }  // namespace hpcontact

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace hpcontact {
@@ -31,5 +32,8 @@ class PetscSession {
   std::vector<std::string> storage_;
   std::vector<char*> argv_;
 };
+
+/// (rank, size) in MPI_COMM_WORLD; (0, 1) when MPI is not initialized (unit tests, libraries).
+std::pair<int, int> mpi_rank_and_size();
 
 }  // namespace hpcontact

@@ -2,6 +2,7 @@
 #include "studies/stability_sweep.hpp"
 
 #include <fmt/format.h>
+#include <mpi.h>
 
 #include <algorithm>
 #include <cmath>
@@ -13,6 +14,7 @@
 #include <tuple>
 
 #include "core/error.hpp"
+#include "core/petsc_session.hpp"
 #include "io/atomic_file.hpp"
 #include "io/toml_reader.hpp"
 #include "mesh/rectangle_mesh.hpp"
@@ -124,6 +126,29 @@ std::vector<std::map<std::string, std::string>> read_csv(const std::filesystem::
   return rows;
 }
 
+// Every rank's (index, line) pairs, on rank 0 sorted by index (empty elsewhere).
+std::vector<std::pair<int, std::string>> gather_rows_on_rank_zero(const std::vector<std::pair<int, std::string>>& rows) {
+  const auto [rank, size] = mpi_rank_and_size();
+  std::string packed;
+  for (const auto& [index, line] : rows) packed += std::to_string(index) + '\t' + line;  // line ends in '\n'
+  int length = static_cast<int>(packed.size());
+  std::vector<int> lengths(size), offsets(size, 0);
+  MPI_Gather(&length, 1, MPI_INT, lengths.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+  std::string all;
+  if (rank == 0) {
+    for (int r = 1; r < size; ++r) offsets[r] = offsets[r - 1] + lengths[r - 1];
+    all.resize(static_cast<std::size_t>(offsets[size - 1] + lengths[size - 1]));
+  }
+  MPI_Gatherv(packed.data(), length, MPI_CHAR, all.data(), lengths.data(), offsets.data(), MPI_CHAR, 0,
+              MPI_COMM_WORLD);
+  std::vector<std::pair<int, std::string>> out;
+  std::stringstream stream(all);
+  for (std::string index, line; std::getline(stream, index, '\t') && std::getline(stream, line);)
+    out.emplace_back(std::stoi(index), line + '\n');
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 // Identifies a point for resuming: the ratio is compared through m = n · ratio.
 std::string point_key(const std::string& problem, const std::string& norm, int p, int pc, int n, long m) {
   return fmt::format("{}/{}/{}/{}/{}/{}", problem, norm, p, pc, n, m);
@@ -167,22 +192,52 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
     return point_key(point.problem, infsup::to_string(infsup::parse_gram_norm(point.norm, "")), point.p, point.pc,
                      point.n, m);
   };
-  int index = 0;
-  std::size_t first = 0;
-  while (first < points.size()) {
-    const int n = points[first].n, p = points[first].p;
-    std::size_t last = first;
-    bool any_todo = false, any_extension = false;
-    while (last < points.size() && points[last].n == n && points[last].p == p) {
-      if (!done.contains(key_of(points[last]))) {
-        any_todo = true;
-        any_extension = any_extension || infsup::parse_gram_norm(points[last].norm, sweep.file) == infsup::GramNorm::extension;
+  // Groups of points sharing (n, p), with what is left to do in each and a cost estimate: the
+  // factorizations grow like (dofs)^1.2 (dofs ~ (n p)², and ~ (2 n (p + 2))² for the extension
+  // norm's reference), each point adds a little.
+  struct Group { std::size_t first, last; bool todo, extension; double cost; int owner = 0; };
+  std::vector<Group> groups;
+  for (std::size_t first = 0; first < points.size();) {
+    Group g{first, first, false, false, 0.0};
+    int todo_points = 0;
+    while (g.last < points.size() && points[g.last].n == points[first].n && points[g.last].p == points[first].p) {
+      if (!done.contains(key_of(points[g.last]))) {
+        g.todo = true;
+        ++todo_points;
+        g.extension = g.extension || infsup::parse_gram_norm(points[g.last].norm, sweep.file) == infsup::GramNorm::extension;
       }
-      ++last;
+      ++g.last;
     }
-    if (!any_todo) {
+    const double dofs = std::pow(points[first].n * points[first].p, 2.0);
+    const double reference = std::pow(2.0 * points[first].n * (points[first].p + 2), 2.0);
+    g.cost = std::pow(dofs, 1.2) + (g.extension ? std::pow(reference, 1.2) : 0.0) + 0.05 * todo_points * dofs;
+    groups.push_back(g);
+    first = g.last;
+  }
+  // Under mpirun the groups are scheduled on the ranks longest first, each to the least loaded
+  // rank (LPT); rank 0 gathers the rows and writes them in the serial order, so the file is the
+  // same as a serial run's.
+  const auto [rank, size] = mpi_rank_and_size();
+  {
+    std::vector<std::size_t> order(groups.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return groups[a].cost > groups[b].cost; });
+    std::vector<double> load(size, 0.0);
+    for (std::size_t i : order) {
+      if (!groups[i].todo) continue;
+      const int owner = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
+      groups[i].owner = owner;
+      load[owner] += groups[i].cost;
+    }
+  }
+  std::vector<std::pair<int, std::string>> new_rows;  // (point index, CSV line), parallel runs
+  int index = 0;
+  for (const Group& g : groups) {
+    const std::size_t first = g.first, last = g.last;
+    const int n = points[first].n, p = points[first].p;
+    const bool any_extension = g.extension;
+    if (!g.todo || g.owner != rank) {
       index += static_cast<int>(last - first);
-      first = last;
       continue;
     }
     const auto mesh = mesh::make_paper_square_mesh(n);
@@ -230,14 +285,22 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
                    result.h, result.H, ratio, result.pi, result.alpha, static_cast<long long>(result.n_primal_dofs),
                    static_cast<long long>(result.n_multiplier_dofs), result.seconds});
       const std::string text = row.to_string();
-      content += text.substr(text.find('\n') + 1);
+      if (size == 1) content += text.substr(text.find('\n') + 1);
+      else new_rows.emplace_back(index, text.substr(text.find('\n') + 1));
       done.insert(key);
     }
     // Saved once per group: an interrupted sweep resumes from the last finished (n, p).
-    io::write_file_atomically(alpha_csv, content);
+    if (size == 1) io::write_file_atomically(alpha_csv, content);
     // Grams of a finished level are not needed again.
     if (last == points.size() || points[last].n != n) interpolation_grams.clear();
-    first = last;
+  }
+  if (size > 1) {
+    const auto all = gather_rows_on_rank_zero(new_rows);
+    if (rank == 0) {
+      for (const auto& [point_index, line] : all) content += line;
+      io::write_file_atomically(alpha_csv, content);
+    }
+    MPI_Barrier(MPI_COMM_WORLD);  // alpha.csv is complete before any rank goes on
   }
 }
 

@@ -41,7 +41,9 @@ double parse_ratio(const std::string& text, const std::string& where);
 std::vector<std::string> alpha_columns();
 
 /// Runs every point not already in `alpha_csv` (resumable), rewriting the file atomically after
-/// each point. `progress(done, total, label)` is called before each point.
+/// each group of points sharing (n, p). `progress(done, total, label)` is called before each point.
+/// Under mpirun the groups are distributed round-robin over the ranks of MPI_COMM_WORLD and rank 0
+/// writes the rows in the serial order (the file is then written once, at the end).
 void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::path& alpha_csv,
                          const std::function<void(int, int, const std::string&)>& progress = {});
 
