@@ -6,9 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <functional>
-#include <sstream>
 #include <map>
 
 #include "core/error.hpp"
@@ -20,13 +18,7 @@
 
 namespace hpcontact::io {
 
-Scene read_scene(const std::string& path) {
-  std::ifstream file(path);
-  if (!file) throw InputError(path + ": cannot open the scene file");
-  std::stringstream text;
-  text << file.rdbuf();
-  return parse_scene(text.str(), path);
-}
+Scene read_scene(const std::string& path) { return parse_scene(read_text_file(path), path); }
 
 Scene parse_scene(const std::string& text, const std::string& path) {
   const TomlTable root = parse_toml_string(text, path);

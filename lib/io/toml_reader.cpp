@@ -251,13 +251,15 @@ TomlTable wrap(toml::table parsed, const std::string& name) {
 
 }  // namespace
 
-TomlTable parse_toml_file(const std::string& path) {
+std::string read_text_file(const std::string& path) {
   std::ifstream file(path);
   if (!file) throw InputError(path + ": cannot open the file");
   std::stringstream text;
   text << file.rdbuf();
-  return parse_toml_string(text.str(), path);
+  return text.str();
 }
+
+TomlTable parse_toml_file(const std::string& path) { return parse_toml_string(read_text_file(path), path); }
 
 TomlTable parse_toml_string(const std::string& text, const std::string& name) {
   try {

@@ -70,6 +70,9 @@ class TomlTable {
   mutable std::set<std::string> asked_;
 };
 
+/// The whole file as text. @throws InputError naming the file if it cannot be read.
+std::string read_text_file(const std::string& path);
+
 /// Parses a TOML file. @throws InputError with line and column if it cannot be read or parsed.
 TomlTable parse_toml_file(const std::string& path);
 /// Parses TOML text; `name` stands for the file in messages.
