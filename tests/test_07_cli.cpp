@@ -210,3 +210,35 @@ TEST(Cli, SweepUnderMpirunWritesTheSerialCsv) {
   std::ifstream a(dir / "serial" / "verdicts.csv"), b(dir / "parallel" / "verdicts.csv");
   EXPECT_EQ(std::string(std::istreambuf_iterator<char>(a), {}), std::string(std::istreambuf_iterator<char>(b), {}));
 }
+
+// summary.json lists every operator a run built. A run builds only what its problem needs and
+// nothing twice: α reuses K and the coupling of the contact solve; Signorini builds no B^s and
+// friction no obstacle functional; without α no mass matrix, no A_G factor and no Gram matrix.
+TEST(Cli, SolveBuildsOnlyTheOperatorsItsProblemNeedsAndNothingTwice) {
+  struct Case { std::string scene, options; std::vector<std::string> built, absent; };
+  const std::vector<Case> cases{
+      {"figure1_signorini", "--no-alpha", {"K", "F", "B", "g", "factor(K)", "S"},
+       {"M", "B^s", "factor(K+M)", "S_G", "G (interpolation norm)"}},
+      {"figure1_signorini", "", {"K", "F", "B", "g", "factor(K)", "S", "M", "factor(K+M)", "S_G", "G (interpolation norm)"},
+       {"B^s"}},
+      {"figure4_friction", "", {"K", "F", "B^s", "factor(K)", "S", "M", "factor(K+M)", "S_G", "G (interpolation norm)"},
+       {"B", "g"}},
+      {"figure6_friction_s", "", {"K", "F", "B", "factor(K)", "S", "M", "factor(K+M)", "S_G"}, {"B^s", "g"}},
+  };
+  for (const auto& c : cases) {
+    const auto dir = scratch("operators_" + c.scene);
+    const auto result = run("solve " + std::string(HPCONTACT_SOURCE_DIR) + "/studies/paper/" + c.scene + ".toml " +
+                            c.options + " --out " + (dir / "out").string());
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    std::ifstream in(dir / "out" / "summary.json");
+    const std::string json((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    auto count = [&](const std::string& name) {
+      const std::string needle = "\"name\": \"" + name + "\"";
+      int n = 0;
+      for (auto at = json.find(needle); at != std::string::npos; at = json.find(needle, at + 1)) ++n;
+      return n;
+    };
+    for (const auto& name : c.built) EXPECT_EQ(count(name), 1) << c.scene << " " << c.options << ": " << name;
+    for (const auto& name : c.absent) EXPECT_EQ(count(name), 0) << c.scene << " " << c.options << ": " << name;
+  }
+}

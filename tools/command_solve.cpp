@@ -11,11 +11,13 @@
 #include "contact/contact_output.hpp"
 #include "core/error.hpp"
 #include "core/expression.hpp"
+#include "core/operator_log.hpp"
 #include "core/timer.hpp"
 #include "infsup/infsup_analysis.hpp"
 #include "io/atomic_file.hpp"
 #include "io/scene.hpp"
 #include "io/vtu_writer.hpp"
+#include "norms/primal_operators.hpp"
 
 namespace hpcontact::tools {
 namespace {
@@ -97,7 +99,10 @@ int run_solve(const SolveOptions& o) {
 
   io::check_output_directory(o.out);
 
-  // 3. Solve.
+  // 3. Solve. The operators of S^p(T_h) are shared with α below, and every one built is logged.
+  OperatorLog operators;
+  const norms::PrimalOperators primal(mesh, setup.cell_degrees, &operators);
+  setup.primal = &primal;
   const auto solution = contact::solve_contact(setup);
   const auto samples = contact::sample_boundary(setup, solution);
 
@@ -113,6 +118,7 @@ int run_solve(const SolveOptions& o) {
                                ? infsup::PairingProblem::friction
                                : infsup::PairingProblem::signorini;
     infsup_setup.friction_bound = setup.bound;
+    infsup_setup.primal = &primal;
     const auto alpha = infsup::analyse_infsup(infsup_setup, infsup::EigenBackend::slepc);
     summary["alpha"] = alpha.alpha;
     summary["lambda_unique"] = !alpha.singular;
@@ -122,6 +128,9 @@ int run_solve(const SolveOptions& o) {
   }
 
   // 5. Save: everything computed, now write the three files.
+  for (const auto& record : operators.records())
+    summary["operators"].push_back(
+        {{"name", record.name}, {"rows", record.rows}, {"cols", record.cols}, {"seconds", record.seconds}});
   summary["scene"] = o.scene;
   summary["problem"] = scene.contact_problem;
   summary["p"] = scene.p_rule.empty() ? nlohmann::json(scene.p) : nlohmann::json(scene.p_rule);
@@ -156,7 +165,7 @@ int run_solve(const SolveOptions& o) {
   const std::filesystem::path out(o.out);
   io::ensure_writable_directory(out);
   samples.table.write(out / "boundary.csv");
-  io::write_vtu(out / "solution.vtu", space::H1Space(mesh, setup.cell_degrees), solution.u);
+  io::write_vtu(out / "solution.vtu", primal.space(), solution.u);
   io::write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
   fmt::print("energy = {:.17g}\n# {} p {} pC {} m {}: {} {} steps, KKT residual {:.2e}, "
              "contact set length {:.4f}{}\nwrote {}/boundary.csv, solution.vtu, summary.json\n",

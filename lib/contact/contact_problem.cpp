@@ -7,6 +7,7 @@
 #include <Eigen/LU>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <numbers>
 
 #include "assembly/coupling.hpp"
@@ -16,6 +17,7 @@
 #include "core/error.hpp"
 #include "core/timer.hpp"
 #include "linalg/sparse_cholesky.hpp"
+#include "core/operator_log.hpp"
 #include "mesh/contact_boundary.hpp"
 #include "space/multiplier_space.hpp"
 
@@ -47,17 +49,25 @@ ContactSolution solve_contact(const ContactSetup& setup) {
   if (!signorini && !setup.bound) throw InputError("friction problem: the friction bound s is missing");
 
   Stopwatch assembly_clock;
-  const space::H1Space space(*setup.mesh, setup.cell_degrees);
-  const mesh::ContactBoundary contact(*setup.mesh);
+  std::unique_ptr<norms::PrimalOperators> own_primal;
+  if (!setup.primal) own_primal = std::make_unique<norms::PrimalOperators>(*setup.mesh, setup.cell_degrees);
+  const norms::PrimalOperators& primal = setup.primal ? *setup.primal : *own_primal;
+  HPC_VERIFY(&primal.mesh() == setup.mesh && primal.space().cell_degrees() == setup.cell_degrees,
+             "shared primal operators of another mesh or degree distribution");
+  OperatorLog* log = primal.log();
+  const auto& space = primal.space();
+  const auto& contact = primal.contact();
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
-  const auto stiffness = assembly::assemble_volume_matrices(space, {.stiffness = true, .mass = false}).stiffness;
+  const auto& stiffness = primal.stiffness();
+  Stopwatch load_clock;
   Eigen::VectorXd load = assembly::assemble_volume_load(space, setup.f);
   if (setup.traction)
     load += assembly::assemble_boundary_load(
         space, {mesh::BoundaryPart::neumann, mesh::BoundaryPart::contact}, setup.traction);
+  if (log) log->record("F", load.size(), 1, load_clock.seconds());
   const bool weighted = setup.problem == ContactProblem::friction;
-  const Eigen::SparseMatrix<double> coupling_legendre = assembly::assemble_coupling(
-      space, contact, multipliers, weighted ? setup.bound : assembly::BoundaryFunction{});
+  const Eigen::SparseMatrix<double>& coupling_legendre =
+      primal.coupling(multipliers, weighted ? setup.bound : assembly::BoundaryFunction{}, weighted ? "B^s" : "B");
 
   // Legendre → Lagrange at the nodal points, segment by segment: c_nodal = V c_legendre with
   // V_ik = P_k(τ_i), so the nodal basis functions are ℓ = V⁻ᵀ P and B_nodal = V⁻ᵀ B_legendre.
@@ -130,19 +140,24 @@ ContactSolution solve_contact(const ContactSetup& setup) {
   const Eigen::SparseMatrix<double> to_nodal_sparse = to_nodal.sparseView();
   const Eigen::SparseMatrix<double> coupling = (to_nodal_sparse * coupling_legendre).pruned();
   Eigen::VectorXd gap_offset = Eigen::VectorXd::Zero(n);
-  if (signorini) gap_offset = to_nodal * assembly::assemble_multiplier_load(contact, multipliers, setup.obstacle);
+  if (signorini) {
+    Stopwatch obstacle_clock;
+    gap_offset = to_nodal * assembly::assemble_multiplier_load(contact, multipliers, setup.obstacle);
+    if (log) log->record("g", n, 1, obstacle_clock.seconds());
+  }
 
   // Condensation onto the Γ_C trace: the trace dofs ordered last in the factorization, so that
   // S = B K⁻¹ Bᵀ is dense algebra on the trailing block of the factor (sparse_cholesky.hpp).
   out.seconds.assembly = assembly_clock.seconds();
   Stopwatch factorization_clock;
-  const linalg::SparseCholesky k_factor(stiffness, linalg::nonzero_columns(coupling));
+  const linalg::SparseCholesky& k_factor = primal.stiffness_factor();
   out.seconds.factorization = factorization_clock.seconds();
   Stopwatch condensation_clock;
   const Eigen::VectorXd u_free = k_factor.solve(load);
   const Eigen::MatrixXd s = k_factor.schur_complement(coupling);
   const Eigen::VectorXd d = coupling * u_free - gap_offset;
   out.seconds.condensation = condensation_clock.seconds();
+  if (log) log->record("S", s.rows(), s.cols(), out.seconds.condensation);
   out.n_trace = k_factor.n_trailing();
 
   Stopwatch qp_clock;
@@ -175,6 +190,7 @@ ContactSolution solve_contact(const ContactSetup& setup) {
     }
   }
   out.seconds.qp = qp_clock.seconds();
+  if (log) log->record("contact QP (" + out.qp.method + ")", s.rows(), s.cols(), out.seconds.qp);
   Stopwatch recovery_clock;
   out.lambda_legendre = to_nodal.transpose() * out.lambda;  // V⁻¹ c_nodal
   const Eigen::VectorXd reduced_load = load - coupling.transpose() * out.lambda;

@@ -10,7 +10,7 @@
 #include "core/error.hpp"
 #include "core/timer.hpp"
 #include "linalg/sparse_cholesky.hpp"
-#include "norms/trace_factor.hpp"
+#include "norms/primal_operators.hpp"
 #include "mesh/contact_boundary.hpp"
 #include "space/multiplier_space.hpp"
 
@@ -77,24 +77,26 @@ InfSupOperators assemble_infsup_operators(const InfSupSetup& setup) {
 
   InfSupOperators out;
   // A_G factorized with the whole Γ_C trace last: S_G comes from the factor's trailing block.
-  std::unique_ptr<norms::TraceFactor> own_primal;
-  if (!setup.primal) {
-    own_primal = std::make_unique<norms::TraceFactor>(*setup.mesh, setup.cell_degrees);
-    out.seconds_assembly = own_primal->seconds_assembly();
-    out.seconds_primal = own_primal->seconds_factorization();
-  }
-  const norms::TraceFactor& primal = setup.primal ? *setup.primal : *own_primal;
-  HPC_VERIFY(&primal.space().mesh() == setup.mesh, "shared A_G factor of another mesh");
+  std::unique_ptr<norms::PrimalOperators> own_primal;
+  if (!setup.primal) own_primal = std::make_unique<norms::PrimalOperators>(*setup.mesh, setup.cell_degrees);
+  const norms::PrimalOperators& primal = setup.primal ? *setup.primal : *own_primal;
+  HPC_VERIFY(&primal.mesh() == setup.mesh && primal.space().cell_degrees() == setup.cell_degrees,
+             "shared primal operators of another mesh or degree distribution");
   const auto& space = primal.space();
   const auto& contact = primal.contact();
-  Stopwatch coupling_clock;
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
-  const auto coupling = assembly::assemble_coupling(
-      space, contact, multipliers, friction ? setup.friction_bound : assembly::BoundaryFunction{});
-  out.seconds_assembly += coupling_clock.seconds();
+  Stopwatch assembly_clock;  // (what is not built yet)
+  const auto& coupling = primal.coupling(multipliers, friction ? setup.friction_bound : assembly::BoundaryFunction{},
+                                         friction ? "B^s" : "B");
+  primal.stiffness();
+  primal.mass();
+  out.seconds_assembly = assembly_clock.seconds();
   Stopwatch primal_clock;
-  const Eigen::MatrixXd s_g = primal.factor().schur_complement(coupling);
-  out.seconds_primal += primal_clock.seconds();
+  const auto& a_g = primal.gram_factor();
+  Stopwatch schur_clock;
+  const Eigen::MatrixXd s_g = a_g.schur_complement(coupling);
+  if (primal.log()) primal.log()->record("S_G", s_g.rows(), s_g.cols(), schur_clock.seconds());
+  out.seconds_primal = primal_clock.seconds();
 
   Stopwatch gram_clock;
   Eigen::MatrixXd gram;
@@ -109,6 +111,9 @@ InfSupOperators assemble_infsup_operators(const InfSupSetup& setup) {
   }
   HPC_VERIFY(gram.rows() == multipliers.n_dofs(), "shared Gram matrix of another multiplier space");
   out.seconds_gram = gram_clock.seconds();
+  if (primal.log() && !setup.gram)
+    primal.log()->record(setup.norm == GramNorm::interpolation ? "G (interpolation norm)" : "G (extension norm)",
+                         gram.rows(), gram.cols(), out.seconds_gram);
 
   if (friction) {
     out.active_dofs = dofs_meeting_support(contact, multipliers, setup.friction_bound);

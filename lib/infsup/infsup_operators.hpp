@@ -12,6 +12,7 @@
 #include "mesh/boundary_mesh.hpp"
 #include "mesh/quad_mesh.hpp"
 #include "norms/h_minus_half_gram.hpp"
+#include "norms/primal_operators.hpp"
 
 namespace hpcontact::infsup {
 
@@ -33,10 +34,11 @@ struct InfSupSetup {
   assembly::BoundaryFunction friction_bound;  ///< s, required for the friction problem
   norms::InterpolationReference interpolation_reference;
   norms::ExtensionReference extension_reference;
-  // Optional parts shared between points of a sweep (built here when absent). They must belong to
-  // this setup: `primal` to (mesh, cell_degrees), `extension` to (mesh, cell_degrees,
+  // Optional parts shared with other computations (built here when absent): a contact solve on the
+  // same T_h, or the points of a sweep. They must belong to this setup: `primal` to (mesh,
+  // cell_degrees), `extension` to (mesh, cell_degrees,
   // extension_reference), `gram` to (boundary_mesh, segment_degrees, norm and its reference).
-  const norms::TraceFactor* primal = nullptr;
+  const norms::PrimalOperators* primal = nullptr;
   const norms::ExtensionReferenceFactor* extension = nullptr;
   const Eigen::MatrixXd* gram = nullptr;
 };
@@ -51,8 +53,8 @@ struct InfSupOperators {
   int n_multiplier_dofs = 0;
   double h = 0.0;  ///< longest edge of T_h
   double H = 0.0;  ///< longest segment of T_{C,H}
-  double seconds_assembly = 0.0;  ///< spaces, A_G = K + M, B (0 for a shared A_G, except B)
-  double seconds_primal = 0.0;    ///< factorization of A_G (trace ordered last, unless shared) and S_G
+  double seconds_assembly = 0.0;  ///< what this call assembled of S^p(T_h), K, M, B
+  double seconds_primal = 0.0;    ///< what this call factorized of A_G (trace last), and S_G
   double seconds_gram = 0.0;
 };
 

@@ -136,13 +136,15 @@ ExtensionReferenceFactor::ExtensionReferenceFactor(const mesh::QuadMesh& mesh, c
     degrees = std::move(children);
   }
   for (int& p : degrees) p += reference.extra_degree;
-  factor_ = std::make_unique<TraceFactor>(*fine_, std::move(degrees));
+  operators_ = std::make_unique<PrimalOperators>(*fine_, std::move(degrees));
+  operators_->gram_factor();
 }
 
 Eigen::MatrixXd extension_norm_gram(const ExtensionReferenceFactor& reference,
                                     const space::MultiplierSpace& multipliers) {
-  const auto& factor = reference.trace_factor();
-  return factor.factor().schur_complement(assembly::assemble_coupling(factor.space(), factor.contact(), multipliers));
+  const auto& reference_operators = reference.operators();
+  return reference_operators.gram_factor().schur_complement(assembly::assemble_coupling(
+      reference_operators.space(), reference_operators.contact(), multipliers));
 }
 
 Eigen::MatrixXd extension_norm_gram(const mesh::QuadMesh& mesh, const std::vector<int>& cell_degrees,

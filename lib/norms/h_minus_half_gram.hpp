@@ -27,7 +27,7 @@
 #include <memory>
 
 #include "mesh/contact_boundary.hpp"
-#include "norms/trace_factor.hpp"
+#include "norms/primal_operators.hpp"
 #include "space/multiplier_space.hpp"
 
 namespace hpcontact::norms {
@@ -67,11 +67,11 @@ class ExtensionReferenceFactor {
  public:
   ExtensionReferenceFactor(const mesh::QuadMesh& mesh, const std::vector<int>& cell_degrees,
                            const ExtensionReference& reference);
-  const TraceFactor& trace_factor() const { return *factor_; }
+  const PrimalOperators& operators() const { return *operators_; }
 
  private:
   std::unique_ptr<mesh::QuadMesh> fine_;
-  std::unique_ptr<TraceFactor> factor_;
+  std::unique_ptr<PrimalOperators> operators_;
 };
 
 /// Dense, symmetric positive definite, shape (n_multiplier_dofs, n_multiplier_dofs).

@@ -36,6 +36,7 @@ class H1Space {
   const mesh::QuadMesh& mesh() const { return *mesh_; }
   int n_dofs() const { return n_dofs_; }
   int cell_degree(int cell) const { return cell_degrees_[cell]; }
+  const std::vector<int>& cell_degrees() const { return cell_degrees_; }
   int edge_degree(int edge) const { return edge_degrees_[edge]; }
   int max_degree() const { return max_degree_; }
   /// Local shape functions of a cell (vertices, edges, interior), with their global dofs.

@@ -19,7 +19,7 @@
 #include "io/toml_reader.hpp"
 #include "mesh/rectangle_mesh.hpp"
 #include "norms/h_minus_half_gram.hpp"
-#include "norms/trace_factor.hpp"
+#include "norms/primal_operators.hpp"
 #include "space/multiplier_space.hpp"
 
 namespace hpcontact::studies {
@@ -242,7 +242,7 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
     }
     const auto mesh = mesh::make_paper_square_mesh(n);
     const std::vector<int> cell_degrees(mesh.n_cells(), p);
-    const norms::TraceFactor primal(mesh, cell_degrees);
+    const norms::PrimalOperators primal(mesh, cell_degrees);
     std::unique_ptr<norms::ExtensionReferenceFactor> extension;
     if (any_extension)
       extension = std::make_unique<norms::ExtensionReferenceFactor>(mesh, cell_degrees, sweep.extension_reference);

@@ -1,0 +1,95 @@
+// PrimalOperators: lazy members, each logged once. The trace dofs are the columns a full-degree
+// multiplier space on the edges of T_h|Γ_C touches (Legendre polynomials up to p span every trace
+// function's restriction to an edge).
+#include "norms/primal_operators.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "assembly/poisson_assembly.hpp"
+#include "core/timer.hpp"
+#include "mesh/boundary_mesh.hpp"
+
+namespace hpcontact::norms {
+
+PrimalOperators::PrimalOperators(const mesh::QuadMesh& mesh, std::vector<int> cell_degrees, OperatorLog* log)
+    : mesh_(&mesh), log_(log) {
+  Stopwatch clock;
+  space_ = std::make_unique<space::H1Space>(mesh, std::move(cell_degrees));
+  contact_ = std::make_unique<mesh::ContactBoundary>(mesh);
+  if (log_) log_->record("S^p(T_h)", space_->n_dofs(), 0, clock.seconds());
+}
+
+PrimalOperators::~PrimalOperators() = default;
+
+const Eigen::SparseMatrix<double>& PrimalOperators::stiffness() const {
+  if (!stiffness_) {
+    Stopwatch clock;
+    stiffness_ = std::make_unique<Eigen::SparseMatrix<double>>(
+        assembly::assemble_volume_matrices(*space_, {.stiffness = true, .mass = false}).stiffness);
+    if (log_) log_->record("K", stiffness_->rows(), stiffness_->cols(), clock.seconds());
+  }
+  return *stiffness_;
+}
+
+const Eigen::SparseMatrix<double>& PrimalOperators::mass() const {
+  if (!mass_) {
+    Stopwatch clock;
+    mass_ = std::make_unique<Eigen::SparseMatrix<double>>(
+        assembly::assemble_volume_matrices(*space_, {.stiffness = false, .mass = true}).mass);
+    if (log_) log_->record("M", mass_->rows(), mass_->cols(), clock.seconds());
+  }
+  return *mass_;
+}
+
+const std::vector<int>& PrimalOperators::trace_dofs() const {
+  if (!trace_dofs_) {
+    const int p_max = *std::max_element(space_->cell_degrees().begin(), space_->cell_degrees().end());
+    const mesh::BoundaryMesh edges(contact_->breakpoints(), "trace of T_h");
+    const space::MultiplierSpace full_trace(edges, p_max);
+    trace_dofs_ = std::make_unique<std::vector<int>>(
+        linalg::nonzero_columns(assembly::assemble_coupling(*space_, *contact_, full_trace)));
+  }
+  return *trace_dofs_;
+}
+
+const linalg::SparseCholesky& PrimalOperators::stiffness_factor() const {
+  if (!stiffness_factor_) {
+    const auto& k = stiffness();
+    const auto& trace = trace_dofs();
+    Stopwatch clock;
+    stiffness_factor_ = std::make_unique<linalg::SparseCholesky>(k, trace);
+    if (log_) log_->record("factor(K)", k.rows(), k.cols(), clock.seconds());
+  }
+  return *stiffness_factor_;
+}
+
+const linalg::SparseCholesky& PrimalOperators::gram_factor() const {
+  if (!gram_factor_) {
+    const Eigen::SparseMatrix<double> a_g = stiffness() + mass();
+    const auto& trace = trace_dofs();
+    Stopwatch clock;
+    gram_factor_ = std::make_unique<linalg::SparseCholesky>(a_g, trace);
+    if (log_) log_->record("factor(K+M)", a_g.rows(), a_g.cols(), clock.seconds());
+  }
+  return *gram_factor_;
+}
+
+const Eigen::SparseMatrix<double>& PrimalOperators::coupling(const space::MultiplierSpace& multipliers,
+                                                             const assembly::BoundaryFunction& weight,
+                                                             const std::string& name) const {
+  // The layout of the multiplier space identifies it: its segments and their degrees.
+  std::string key = name;
+  for (int k = 0; k < multipliers.n_segments(); ++k)
+    key += fmt::format("|{:.17g}:{}", multipliers.boundary_mesh().segment_end(k), multipliers.segment_degree(k));
+  auto found = couplings_.find(key);
+  if (found == couplings_.end()) {
+    Stopwatch clock;
+    found = couplings_.emplace(key, assembly::assemble_coupling(*space_, *contact_, multipliers, weight)).first;
+    if (log_) log_->record(name, found->second.rows(), found->second.cols(), clock.seconds());
+  }
+  return found->second;
+}
+
+}  // namespace hpcontact::norms

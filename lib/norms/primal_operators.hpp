@@ -1,0 +1,56 @@
+// The operators of S^p(T_h) that the contact problems and the inf-sup analysis share, built on
+// first use and never twice: K, M, the couplings with multiplier spaces on Γ_C, and the
+// factorizations of K and A_G = K + M with every Γ_C trace dof ordered last, so that
+// B A⁻¹ Bᵀ for ANY multiplier space on Γ_C (any p_C, H, weight s) is dense work on the trace
+// only. One object per (T_h, p): a `solve` with α, or all sweep points on (n, p), share it.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "assembly/coupling.hpp"
+#include "core/operator_log.hpp"
+#include "linalg/sparse_cholesky.hpp"
+#include "mesh/contact_boundary.hpp"
+#include "space/h1_space.hpp"
+#include "space/multiplier_space.hpp"
+
+namespace hpcontact::norms {
+
+class PrimalOperators {
+ public:
+  /// `mesh` (and `log`, when given) must outlive the object. Builds the space and Γ_C only.
+  PrimalOperators(const mesh::QuadMesh& mesh, std::vector<int> cell_degrees, OperatorLog* log = nullptr);
+  ~PrimalOperators();
+
+  const mesh::QuadMesh& mesh() const { return *mesh_; }
+  const space::H1Space& space() const { return *space_; }
+  const mesh::ContactBoundary& contact() const { return *contact_; }
+
+  const Eigen::SparseMatrix<double>& stiffness() const;  ///< K, logged as "K"
+  const Eigen::SparseMatrix<double>& mass() const;       ///< M, logged as "M"
+  /// K factorized with the trace last ("factor(K)"), and A_G = K + M likewise ("factor(K+M)").
+  const linalg::SparseCholesky& stiffness_factor() const;
+  const linalg::SparseCholesky& gram_factor() const;
+  /// B_ij = ∫ μ_i φ_j ("B"), or with the weight s ("B^s"), for a multiplier space on Γ_C; kept per
+  /// (name, multiplier space layout), so that the contact solve and α share it.
+  const Eigen::SparseMatrix<double>& coupling(const space::MultiplierSpace& multipliers,
+                                              const assembly::BoundaryFunction& weight, const std::string& name) const;
+  /// Every dof with a trace on Γ_C (the trailing set of both factorizations).
+  const std::vector<int>& trace_dofs() const;
+  OperatorLog* log() const { return log_; }
+
+ private:
+  const mesh::QuadMesh* mesh_;
+  std::unique_ptr<space::H1Space> space_;
+  std::unique_ptr<mesh::ContactBoundary> contact_;
+  OperatorLog* log_;
+  mutable std::unique_ptr<Eigen::SparseMatrix<double>> stiffness_, mass_;
+  mutable std::unique_ptr<linalg::SparseCholesky> stiffness_factor_, gram_factor_;
+  mutable std::unique_ptr<std::vector<int>> trace_dofs_;
+  mutable std::map<std::string, Eigen::SparseMatrix<double>> couplings_;
+};
+
+}  // namespace hpcontact::norms
