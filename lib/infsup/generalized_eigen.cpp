@@ -378,7 +378,10 @@ SmallestEigenpair smallest_eigenpair_slepc(const Eigen::MatrixXd& S, const Eigen
   HPC_PETSC_CALL(EPSSetOperators(eps.get(), s.get(), g.get()));
   HPC_PETSC_CALL(EPSSetProblemType(eps.get(), EPS_GHEP));
   HPC_PETSC_CALL(EPSSetType(eps.get(), EPSKRYLOVSCHUR));
-  HPC_PETSC_CALL(EPSSetDimensions(eps.get(), 1, PETSC_DEFAULT, PETSC_DEFAULT));
+  // A wider Krylov space than SLEPc's default (16): for stable pairings the spectrum of
+  // (S_G, G) clusters in [α², 1], and at 1e6 dofs the default did not separate λ_min to 1e-12 in
+  // 100 restarts. The operators are small and dense, so 64 vectors cost little.
+  HPC_PETSC_CALL(EPSSetDimensions(eps.get(), 1, std::min<PetscInt>(static_cast<PetscInt>(n), 64), PETSC_DEFAULT));
   HPC_PETSC_CALL(EPSSetWhichEigenpairs(eps.get(), EPS_TARGET_MAGNITUDE));
   HPC_PETSC_CALL(EPSSetTarget(eps.get(), sigma));
   ST st = nullptr;
