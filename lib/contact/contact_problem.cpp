@@ -50,10 +50,8 @@ ContactSolution solve_contact(const ContactSetup& setup) {
 
   Stopwatch assembly_clock;
   std::unique_ptr<norms::PrimalOperators> own_primal;
-  if (!setup.primal) own_primal = std::make_unique<norms::PrimalOperators>(*setup.mesh, setup.cell_degrees);
-  const norms::PrimalOperators& primal = setup.primal ? *setup.primal : *own_primal;
-  HPC_VERIFY(&primal.mesh() == setup.mesh && primal.space().cell_degrees() == setup.cell_degrees,
-             "shared primal operators of another mesh or degree distribution");
+  const norms::PrimalOperators& primal =
+      norms::shared_or_own(setup.primal, *setup.mesh, setup.cell_degrees, own_primal);
   OperatorLog* log = primal.log();
   const auto& space = primal.space();
   const auto& contact = primal.contact();

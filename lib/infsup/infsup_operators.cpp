@@ -78,10 +78,8 @@ InfSupOperators assemble_infsup_operators(const InfSupSetup& setup) {
   InfSupOperators out;
   // A_G factorized with the whole Γ_C trace last: S_G comes from the factor's trailing block.
   std::unique_ptr<norms::PrimalOperators> own_primal;
-  if (!setup.primal) own_primal = std::make_unique<norms::PrimalOperators>(*setup.mesh, setup.cell_degrees);
-  const norms::PrimalOperators& primal = setup.primal ? *setup.primal : *own_primal;
-  HPC_VERIFY(&primal.mesh() == setup.mesh && primal.space().cell_degrees() == setup.cell_degrees,
-             "shared primal operators of another mesh or degree distribution");
+  const norms::PrimalOperators& primal =
+      norms::shared_or_own(setup.primal, *setup.mesh, setup.cell_degrees, own_primal);
   const auto& space = primal.space();
   const auto& contact = primal.contact();
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);

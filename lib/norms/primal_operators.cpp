@@ -8,6 +8,7 @@
 #include <algorithm>
 
 #include "assembly/poisson_assembly.hpp"
+#include "core/error.hpp"
 #include "core/timer.hpp"
 #include "mesh/boundary_mesh.hpp"
 
@@ -90,6 +91,17 @@ const Eigen::SparseMatrix<double>& PrimalOperators::coupling(const space::Multip
     if (log_) log_->record(name, found->second.rows(), found->second.cols(), clock.seconds());
   }
   return found->second;
+}
+
+const PrimalOperators& shared_or_own(const PrimalOperators* shared, const mesh::QuadMesh& mesh,
+                                     const std::vector<int>& cell_degrees, std::unique_ptr<PrimalOperators>& own) {
+  if (!shared) {
+    own = std::make_unique<PrimalOperators>(mesh, cell_degrees);
+    return *own;
+  }
+  HPC_VERIFY(&shared->mesh() == &mesh && shared->space().cell_degrees() == cell_degrees,
+             "shared primal operators of another mesh or degree distribution");
+  return *shared;
 }
 
 }  // namespace hpcontact::norms

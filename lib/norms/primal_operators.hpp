@@ -53,4 +53,8 @@ class PrimalOperators {
   mutable std::map<std::string, Eigen::SparseMatrix<double>> couplings_;
 };
 
+/// `shared` when given (checked to belong to mesh and degrees), else a new object kept in `own`.
+const PrimalOperators& shared_or_own(const PrimalOperators* shared, const mesh::QuadMesh& mesh,
+                                     const std::vector<int>& cell_degrees, std::unique_ptr<PrimalOperators>& own);
+
 }  // namespace hpcontact::norms
