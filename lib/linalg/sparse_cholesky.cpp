@@ -1,4 +1,4 @@
-// SparseCholesky on CHOLMOD's C interface (supernodal LLᵀ, CAMD-constrained ordering for a trailing
+// SparseCholesky on CHOLMOD's C interface (supernodal LLᵀ, interior-first AMD ordering for a trailing
 // set, the trailing block read straight out of the supernodes). CHOLMOD's headers stay in here.
 #include "linalg/sparse_cholesky.hpp"
 
@@ -158,7 +158,7 @@ SparseCholesky::SparseCholesky(const Eigen::SparseMatrix<double>& matrix, const 
   impl_->trailing_position.assign(size_, -1);
   for (int k = offset; k < size_; ++k) impl_->trailing_position[perm[k]] = k - offset;
   for (int index : trailing)
-    HPC_VERIFY(impl_->trailing_position[index] >= 0, "CAMD did not order the trailing set last");
+    HPC_VERIFY(impl_->trailing_position[index] >= 0, "the factorization did not keep the trailing set last");
   const auto* factor = impl_->factor;
   const int* super = static_cast<const int*>(factor->super);
   const int* pi = static_cast<const int*>(factor->pi);

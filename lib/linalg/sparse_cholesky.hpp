@@ -13,8 +13,8 @@ namespace hpcontact::linalg {
 /// Factorizes once, solves many times. The matrix must be symmetric positive definite; only its
 /// lower triangle is read.
 ///
-/// With `trailing` (indices into 0..n-1), the fill-reducing ordering is constrained (CAMD) to put
-/// those unknowns last: P A Pᵀ = L Lᵀ with L = [L_ii 0; L_ti L_tt]. For B whose columns lie in
+/// With `trailing` (indices into 0..n-1), the fill-reducing ordering is AMD on the other unknowns
+/// followed by those: P A Pᵀ = L Lᵀ with L = [L_ii 0; L_ti L_tt]. For B whose columns lie in
 /// the trailing set, L⁻¹ P Bᵀ vanishes outside the trailing rows, so
 ///     B A⁻¹ Bᵀ = Wᵀ W,   W = L_tt⁻¹ (B P_tᵀ)ᵀ,
 /// i.e. the Steklov–Poincaré condensation onto the trace: one factorization, then dense work of

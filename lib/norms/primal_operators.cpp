@@ -24,25 +24,27 @@ PrimalOperators::PrimalOperators(const mesh::QuadMesh& mesh, std::vector<int> ce
 
 PrimalOperators::~PrimalOperators() = default;
 
-const Eigen::SparseMatrix<double>& PrimalOperators::stiffness() const {
-  if (!stiffness_) {
+namespace {
+
+// Assembles K or M into `slot` on first use and logs it.
+const Eigen::SparseMatrix<double>& volume_matrix(const space::H1Space& space, bool stiffness,
+                                                 std::unique_ptr<Eigen::SparseMatrix<double>>& slot, OperatorLog* log) {
+  if (!slot) {
     Stopwatch clock;
-    stiffness_ = std::make_unique<Eigen::SparseMatrix<double>>(
-        assembly::assemble_volume_matrices(*space_, {.stiffness = true, .mass = false}).stiffness);
-    if (log_) log_->record("K", stiffness_->rows(), stiffness_->cols(), clock.seconds());
+    auto matrices = assembly::assemble_volume_matrices(space, {.stiffness = stiffness, .mass = !stiffness});
+    slot = std::make_unique<Eigen::SparseMatrix<double>>(std::move(stiffness ? matrices.stiffness : matrices.mass));
+    if (log) log->record(stiffness ? "K" : "M", slot->rows(), slot->cols(), clock.seconds());
   }
-  return *stiffness_;
+  return *slot;
 }
 
-const Eigen::SparseMatrix<double>& PrimalOperators::mass() const {
-  if (!mass_) {
-    Stopwatch clock;
-    mass_ = std::make_unique<Eigen::SparseMatrix<double>>(
-        assembly::assemble_volume_matrices(*space_, {.stiffness = false, .mass = true}).mass);
-    if (log_) log_->record("M", mass_->rows(), mass_->cols(), clock.seconds());
-  }
-  return *mass_;
+}  // namespace
+
+const Eigen::SparseMatrix<double>& PrimalOperators::stiffness() const {
+  return volume_matrix(*space_, true, stiffness_, log_);
 }
+
+const Eigen::SparseMatrix<double>& PrimalOperators::mass() const { return volume_matrix(*space_, false, mass_, log_); }
 
 const std::vector<int>& PrimalOperators::trace_dofs() const {
   if (!trace_dofs_) {
