@@ -87,7 +87,7 @@ echo "== contact problems of Figures 1, 4, 6: studies/paper/*.toml -> results/pa
 for figure in figure1_signorini figure4_friction figure6_friction_s; do
   build/bin/hpcontact solve "studies/paper/$figure.toml" --out "results/paper/$figure"
   "$python" plots/plot_paper.py "results/paper/$figure"
-  cp "results/paper/$figure/figure.png" "studies/paper/$figure.png"
+  cp "results/paper/$figure/figure_${figure#*_}.png" "studies/paper/$figure.png"
 done
 echo "== multiplier panels of Figures 2, 3, 5, 7 -> results/paper/panels" >&2
 for problem in signorini friction friction_s; do
@@ -98,7 +98,7 @@ for problem in signorini friction friction_s; do
   esac
   for pairing in "${pairings[@]}"; do
     set -- $pairing
-    build/bin/hpcontact solve "studies/paper/$scene.toml" --p "$1" --pc "$2" --ratio "$3" --no-alpha \
+    build/bin/hpcontact solve "studies/paper/$scene.toml" --p "$1" --pc "$2" --ratio "$3" --effects "$problem" \
       --out "results/paper/panels/${problem}_p$1_pC$2_hH${3//\//-}" > /dev/null
   done
 done

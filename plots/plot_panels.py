@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Multiplier panels like the paper's Figures 2, 3, 5 and 7: λ_H on Γ_C for several pairings.
 
-Reads DIR/<name>/boundary.csv for every sub-folder DIR/<name> written by `hpcontact solve`,
+Reads DIR/<name>/boundary_<problem>.csv for every sub-folder DIR/<name> written by `hpcontact solve`,
 where <name> = <problem>_p<p>_pC<pc>_hH<ratio with '-' for '/'>; writes DIR/panels_<problem>.png.
 Usage: plot_panels.py DIR
 """
@@ -21,15 +21,17 @@ def main():
         sys.exit(__doc__)
     folder = Path(sys.argv[1])
     by_problem = defaultdict(list)
-    for sub in sorted(p for p in folder.iterdir() if (p / "boundary.csv").exists()):
+    for sub in sorted(p for p in folder.iterdir() if p.is_dir()):
         problem, p, pc, ratio = sub.name.rsplit("_", 3)
+        if not (sub / f"boundary_{problem}.csv").exists():
+            continue
         by_problem[problem].append((sub, p[1:], pc[2:], ratio[2:].replace("-", "/")))
     for problem, panels in by_problem.items():
         columns = 2 if len(panels) <= 4 else 3
         rows = (len(panels) + columns - 1) // columns
         figure, axes = plt.subplots(rows, columns, figsize=(4.2 * columns, 2.8 * rows), squeeze=False)
         for axis, (sub, p, pc, ratio) in zip(axes.flat, panels):
-            with open(sub / "boundary.csv", newline="") as handle:
+            with open(sub / f"boundary_{problem}.csv", newline="") as handle:
                 data = list(csv.DictReader(handle))
             axis.plot([float(r["x"]) for r in data], [float(r["lambda"]) for r in data], linewidth=1)
             axis.set_title(f"p={p}  pC={pc}  h/H={ratio}", fontsize=9)

@@ -2,6 +2,7 @@
 // point location.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.hpp"
@@ -99,4 +100,31 @@ TEST(CellMap, InverseRoundTripAndLocator) {
   }
   EXPECT_FALSE(locator.locate({1.5, 0.0}).has_value());
   EXPECT_TRUE(locator.locate({1.0, 1.0}).has_value());
+}
+
+// Geometric grading towards points (the hp meshes of the work–precision study): the point becomes
+// a node, the cells next to it shrink by the ratio per layer, and bad requests are refused.
+TEST(GradedNodes, ShrinkGeometricallyTowardsEachPoint) {
+  const double ratio = 0.2;
+  const int layers = 4;
+  const auto nodes = mesh::graded_nodes(-1.0, 1.0, 8, {0.59, 1.0}, ratio, layers, "test");
+  // 8 cells, +2 layers sets at the interior point, +1 at the end point x = 1.
+  ASSERT_EQ(nodes.size(), 9u + 3 * layers);
+  for (std::size_t i = 0; i + 1 < nodes.size(); ++i) EXPECT_LT(nodes[i], nodes[i + 1]);
+  EXPECT_EQ(nodes.front(), -1.0);
+  EXPECT_EQ(nodes.back(), 1.0);
+  const auto at = std::find(nodes.begin(), nodes.end(), 0.59);
+  ASSERT_NE(at, nodes.end());
+  const auto i = static_cast<std::size_t>(at - nodes.begin());
+  // The snapped node's neighbours were 0.25 and 0.75; the layers sit at distances
+  // (neighbour distance) · ratio^k, k = 1..layers, on both sides.
+  for (int k = 1; k <= layers; ++k) {
+    EXPECT_NEAR(nodes[i] - nodes[i - k], 0.34 * std::pow(ratio, layers + 1 - k), 1e-14) << k;
+    EXPECT_NEAR(nodes[i + k] - nodes[i], 0.16 * std::pow(ratio, layers + 1 - k), 1e-14) << k;
+  }
+  EXPECT_NEAR(nodes[i] - nodes[i - layers - 1], 0.34, 1e-14);
+  EXPECT_NEAR(nodes.back() - nodes[nodes.size() - 2], 0.25 * std::pow(ratio, layers), 1e-14);
+  EXPECT_THROW(mesh::graded_nodes(-1.0, 1.0, 8, {1.5}, ratio, layers, "test"), InputError);
+  EXPECT_THROW(mesh::graded_nodes(-1.0, 1.0, 8, {0.01, 0.02}, ratio, layers, "test"), InputError);
+  EXPECT_THROW(mesh::graded_nodes(-1.0, 1.0, 8, {0.0}, 1.5, layers, "test"), InputError);
 }

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <sstream>
 #include <vector>
 
@@ -113,11 +114,11 @@ TEST(Cli, SolveWritesBoundaryCsvVtuAndSummary) {
   const std::string scene = std::string(HPCONTACT_SOURCE_DIR) + "/studies/paper/figure1_signorini.toml";
   const auto result = run("solve " + scene + " --out " + (dir / "out").string());
   ASSERT_EQ(result.exit_code, 0) << result.output;
-  std::ifstream csv(dir / "out" / "boundary.csv");
+  std::ifstream csv(dir / "out" / "boundary_signorini.csv");
   std::string header;
   std::getline(csv, header);
   EXPECT_EQ(header.substr(0, 21), "x,u,obstacle,lambda,y");
-  EXPECT_TRUE(std::filesystem::exists(dir / "out" / "solution.vtu"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "out" / "solution_signorini.vtu"));
   std::ifstream summary(dir / "out" / "summary.json");
   const std::string json((std::istreambuf_iterator<char>(summary)), std::istreambuf_iterator<char>());
   EXPECT_NE(json.find("\"kkt_residual\""), std::string::npos);
@@ -139,13 +140,13 @@ TEST(Cli, SolveWithoutObstacleIsBadInputAndWritesNothing) {
 TEST(Cli, SolveWithMoreConstraintPointsUsesInteriorPointAndRefusesTooFew) {
   const auto dir = scratch("solve_points");
   const std::string scene = std::string(HPCONTACT_SOURCE_DIR) + "/studies/paper/figure6_friction_s.toml";
-  const auto good = run("solve " + scene + " --no-alpha --constraint-points 6 --out " + (dir / "out").string());
+  const auto good = run("solve " + scene + " --effects friction_s --constraint-points 6 --out " + (dir / "out").string());
   ASSERT_EQ(good.exit_code, 0) << good.output;
   std::ifstream summary(dir / "out" / "summary.json");
   const std::string json((std::istreambuf_iterator<char>(summary)), std::istreambuf_iterator<char>());
   EXPECT_NE(json.find("\"interior-point\""), std::string::npos) << json.substr(0, 600);
   EXPECT_NE(json.find("\"active_set_changes\""), std::string::npos);
-  const auto bad = run("solve " + scene + " --no-alpha --pc 3 --constraint-points 3 --out " + (dir / "bad").string());
+  const auto bad = run("solve " + scene + " --effects friction_s --pc 3 --constraint-points 3 --out " + (dir / "bad").string());
   EXPECT_EQ(bad.exit_code, 2) << bad.output;
   EXPECT_NE(bad.output.find("--constraint-points"), std::string::npos) << bad.output;
   EXPECT_NE(bad.output.find("p_C + 1 = 4"), std::string::npos) << bad.output;
@@ -211,24 +212,39 @@ TEST(Cli, SweepUnderMpirunWritesTheSerialCsv) {
   EXPECT_EQ(std::string(std::istreambuf_iterator<char>(a), {}), std::string(std::istreambuf_iterator<char>(b), {}));
 }
 
-// summary.json lists every operator a run built. A run builds only what its problem needs and
-// nothing twice: α reuses K and the coupling of the contact solve; Signorini builds no B^s and
-// friction no obstacle functional; without α no mass matrix, no A_G factor and no Gram matrix.
-TEST(Cli, SolveBuildsOnlyTheOperatorsItsProblemNeedsAndNothingTwice) {
-  struct Case { std::string scene, options; std::vector<std::string> built, absent; };
+// summary.json lists every operator a run built, and a run builds only what its effects need,
+// nothing twice: α reuses K and the coupling of the contact solve; Signorini and (15) share F, B
+// and S; Signorini builds no B^s and friction no obstacle functional; without α no mass matrix,
+// no A_G factor and no Gram matrix; an inf-sup scene assembles no load and solves no contact problem.
+TEST(Cli, SolveBuildsOnlyTheOperatorsItsEffectsNeedAndNothingTwice) {
+  struct Case {
+    std::string scene, effects;
+    std::map<std::string, int> count;  ///< operator name -> times built (0: never)
+  };
   const std::vector<Case> cases{
-      {"figure1_signorini", "--no-alpha", {"K", "F", "B", "g", "factor(K)", "S"},
-       {"M", "B^s", "factor(K+M)", "S_G", "G (interpolation norm)"}},
-      {"figure1_signorini", "", {"K", "F", "B", "g", "factor(K)", "S", "M", "factor(K+M)", "S_G", "G (interpolation norm)"},
-       {"B^s"}},
-      {"figure4_friction", "", {"K", "F", "B^s", "factor(K)", "S", "M", "factor(K+M)", "S_G", "G (interpolation norm)"},
-       {"B", "g"}},
-      {"figure6_friction_s", "", {"K", "F", "B", "factor(K)", "S", "M", "factor(K+M)", "S_G"}, {"B^s", "g"}},
+      {"work_precision/base", "infsup",
+       {{"S^p(T_h)", 1}, {"K", 1}, {"M", 1}, {"B", 1}, {"factor(K+M)", 1}, {"S_G", 1}, {"G (interpolation norm)", 1},
+        {"F", 0}, {"g", 0}, {"B^s", 0}, {"factor(K)", 0}, {"S", 0}, {"contact QP (active-set+proximal)", 0}}},
+      {"work_precision/base", "signorini",
+       {{"K", 1}, {"F", 1}, {"B", 1}, {"g", 1}, {"factor(K)", 1}, {"S", 1}, {"contact QP (active-set+proximal)", 1},
+        {"M", 0}, {"B^s", 0}, {"factor(K+M)", 0}, {"S_G", 0}, {"G (interpolation norm)", 0}}},
+      {"work_precision/base", "friction",
+       {{"K", 1}, {"F", 1}, {"B^s", 1}, {"factor(K)", 1}, {"S", 1}, {"B", 0}, {"g", 0}, {"M", 0}, {"S_G", 0}}},
+      {"work_precision/base", "signorini,friction_s",
+       {{"K", 1}, {"F", 1}, {"B", 1}, {"g", 1}, {"factor(K)", 1}, {"S", 1}, {"contact QP (active-set+proximal)", 2},
+        {"B^s", 0}, {"M", 0}}},
+      {"work_precision/base", "signorini,friction,friction_s,infsup",
+       {{"K", 1}, {"F", 1}, {"B", 1}, {"B^s", 1}, {"g", 1}, {"factor(K)", 1}, {"S", 2}, {"M", 1},
+        {"factor(K+M)", 1}, {"S_G", 1}, {"G (interpolation norm)", 1}}},
+      {"paper/figure4_friction", "",  // [infsup] problem = "friction": α of (22) reuses B^s
+       {{"K", 1}, {"F", 1}, {"B^s", 1}, {"factor(K)", 1}, {"S", 1}, {"M", 1}, {"factor(K+M)", 1}, {"S_G", 1},
+        {"G (interpolation norm)", 1}, {"B", 0}, {"g", 0}}},
   };
   for (const auto& c : cases) {
-    const auto dir = scratch("operators_" + c.scene);
-    const auto result = run("solve " + std::string(HPCONTACT_SOURCE_DIR) + "/studies/paper/" + c.scene + ".toml " +
-                            c.options + " --out " + (dir / "out").string());
+    const auto dir = scratch("operators");
+    std::filesystem::remove_all(dir / "out");
+    const auto result = run("solve " + std::string(HPCONTACT_SOURCE_DIR) + "/studies/" + c.scene + ".toml " +
+                            (c.effects.empty() ? "" : "--effects " + c.effects) + " --out " + (dir / "out").string());
     ASSERT_EQ(result.exit_code, 0) << result.output;
     std::ifstream in(dir / "out" / "summary.json");
     const std::string json((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -238,7 +254,36 @@ TEST(Cli, SolveBuildsOnlyTheOperatorsItsProblemNeedsAndNothingTwice) {
       for (auto at = json.find(needle); at != std::string::npos; at = json.find(needle, at + 1)) ++n;
       return n;
     };
-    for (const auto& name : c.built) EXPECT_EQ(count(name), 1) << c.scene << " " << c.options << ": " << name;
-    for (const auto& name : c.absent) EXPECT_EQ(count(name), 0) << c.scene << " " << c.options << ": " << name;
+    for (const auto& [name, times] : c.count) EXPECT_EQ(count(name), times) << c.scene << " " << c.effects << ": " << name;
+  }
+}
+
+// The convergence effect refines the scene's mesh uniformly and compares every level with the
+// finest: energy errors shrink and every level of every problem gets a row.
+TEST(Cli, ConvergenceEffectWritesOneRowPerLevelAndProblem) {
+  const auto dir = scratch("convergence_effect");
+  std::filesystem::remove_all(dir / "out");
+  const auto result = run("solve " + std::string(HPCONTACT_SOURCE_DIR) +
+                          "/studies/work_precision/base.toml --effects signorini,friction_s,convergence --out " +
+                          (dir / "out").string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  std::ifstream csv(dir / "out" / "convergence.csv");
+  std::string header, line;
+  std::getline(csv, header);
+  EXPECT_EQ(header, "problem,level,p,pC,n,m,ndofs,nmult,energy,error_energy,error_lambda,seconds");
+  std::map<std::string, std::vector<double>> errors;
+  while (std::getline(csv, line)) {
+    std::vector<std::string> cells;
+    std::stringstream stream(line);
+    for (std::string cell; std::getline(stream, cell, ',');) cells.push_back(cell);
+    ASSERT_EQ(cells.size(), 12u) << line;
+    errors[cells[0]].push_back(std::stod(cells[9]));
+  }
+  ASSERT_EQ(errors.size(), 2u);
+  for (const auto& [problem, e] : errors) {
+    ASSERT_EQ(e.size(), 4u) << problem;  // the scene's mesh and three refinements (the default)
+    EXPECT_EQ(e.back(), 0.0) << problem;  // the finest level is the reference
+    EXPECT_GT(e[0], e[1]) << problem;
+    EXPECT_GT(e[0], 0.0) << problem;
   }
 }

@@ -8,6 +8,7 @@
 #include <random>
 
 #include "assembly/coupling.hpp"
+#include "contact/multiplier_distance.hpp"
 #include "core/error.hpp"
 #include "fe/fe_function.hpp"
 #include "mesh/contact_boundary.hpp"
@@ -141,4 +142,43 @@ TEST(Coupling, MultiplierLoadIntegratesTheObstacle) {
   double total = 0.0;
   for (int k = 0; k < 3; ++k) total += g(multipliers.first_dof(k));
   EXPECT_NEAR(total, -2.0 / 3.0, 1e-14);
+}
+
+namespace {
+
+struct DistanceIntegrand {
+  const space::MultiplierSpace *a, *b;
+  const Eigen::VectorXd *ca, *cb;
+};
+
+double squared_difference(double s, void* data) {
+  const auto& d = *static_cast<DistanceIntegrand*>(data);
+  const double difference = d.a->evaluate(*d.ca, s) - d.b->evaluate(*d.cb, s);
+  return difference * difference;
+}
+
+}  // namespace
+
+// ‖μ_a − μ_b‖_{L²} of multipliers on non-nested meshes with different degrees, against adaptive
+// GSL quadrature with every breakpoint of both meshes given.
+TEST(MultiplierDistance, ExactOnTheCommonRefinement) {
+  const mesh::BoundaryMesh mesh_a = mesh::BoundaryMesh::uniform(2.0, 3), mesh_b({0.0, 0.5, 1.7, 2.0});
+  const space::MultiplierSpace a(mesh_a, std::vector<int>{2, 0, 3}), b(mesh_b, 1);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> value(-1.0, 1.0);
+  Eigen::VectorXd ca(a.n_dofs()), cb(b.n_dofs());
+  for (auto& c : ca) c = value(random);
+  for (auto& c : cb) c = value(random);
+  DistanceIntegrand data{&a, &b, &ca, &cb};
+  gsl_function f{&squared_difference, &data};
+  std::vector<double> points{0.0, 0.5, 2.0 / 3.0, 4.0 / 3.0, 1.7, 2.0};
+  gsl_integration_workspace* workspace = gsl_integration_workspace_alloc(1000);
+  double result = 0.0, error = 0.0;
+  gsl_integration_qagp(&f, points.data(), points.size(), 1e-14, 1e-12, 1000, workspace, &result, &error);
+  gsl_integration_workspace_free(workspace);
+  EXPECT_NEAR(contact::multiplier_l2_distance(a, ca, b, cb), std::sqrt(result), 1e-12);
+  EXPECT_NEAR(contact::multiplier_l2_distance(a, ca, a, ca), 0.0, 1e-15);
+  EXPECT_THROW(contact::multiplier_l2_distance(a, ca, space::MultiplierSpace(mesh::BoundaryMesh::uniform(1.0, 2), 1),
+                                               Eigen::VectorXd::Zero(4)),
+               std::invalid_argument);
 }

@@ -2,11 +2,15 @@
 // physical groups, and one error per class of bad scene input.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
 #include "core/error.hpp"
 #include "io/scene.hpp"
+#include "io/scene_variants.hpp"
+#include "io/toml_reader.hpp"
 #include "mesh/contact_boundary.hpp"
 
 using namespace hpcontact;
@@ -112,4 +116,58 @@ TEST(Scene, DegreeRulesGiveDistributions) {
   } catch (const InputError& error) {
     EXPECT_NE(std::string(error.what()).find("discretization.p"), std::string::npos) << error.what();
   }
+}
+
+// A graded rectangle: the grading points become vertices, and ratio = h/H follows T_h|Γ_C (1/k
+// merges k edges), refinements split T_h and T_{C,H} alike.
+TEST(Scene, GradedRectangleAndRefinementsKeepTheRatio) {
+  std::string text = with("n_y = 4", "n_y = 4\ngrading_x = [0.3]\ngrading = 0.25\ngrading_layers = 2\nrefinements = 1");
+  text.replace(text.find("m = 2"), 5, "ratio = \"1/2\"");
+  const auto scene = io::read_scene(write_scene("graded", text));
+  const auto mesh = io::build_scene_mesh(scene);
+  const mesh::ContactBoundary contact(mesh);
+  // 4 cells + 2 · 2 layers around x = 0.3, refined once: 16 edges on Γ_C.
+  ASSERT_EQ(contact.edges().size(), 16u);
+  const auto arcs = contact.breakpoints();
+  EXPECT_NE(std::find_if(arcs.begin(), arcs.end(), [](double s) { return std::abs(s - 1.3) < 1e-14; }), arcs.end());
+  const auto boundary = io::build_scene_boundary_mesh(scene, contact);
+  ASSERT_EQ(boundary.n_segments(), 8);
+  for (int k = 0; k < 8; ++k) EXPECT_NEAR(boundary.segment_end(k), arcs[2 * k + 2], 1e-14) << k;
+  // m is split by the refinements too.
+  const auto refined = io::read_scene(write_scene("refined_m", with("n_y = 4", "n_y = 4\nrefinements = 2")));
+  const auto refined_mesh = io::build_scene_mesh(refined);
+  EXPECT_EQ(io::build_scene_boundary_mesh(refined, mesh::ContactBoundary(refined_mesh)).n_segments(), 8);
+  EXPECT_NE(error_of(with("n_y = 4", "n_y = 4\ngrading_x = [3.0]\ngrading_layers = 1")).find("grading"), std::string::npos);
+}
+
+// Study files extend a base scene: `set` replaces keys in every variant, `vary` moves dotted keys
+// jointly; each variant is a checked scene, and errors name the variant.
+TEST(Scene, VariantsSetAndVaryKeysOfABaseScene) {
+  const auto base = write_scene("variants_base", kGood);
+  const auto study = io::parse_toml_string(
+      "set = { discretization = { pC = 0 } }\nvary = { \"domain.n_x\" = [4, 8], \"discretization.p\" = \"1..2\" }\n",
+      "study.toml");
+  const auto variants = io::scene_variants(base, study.table("set"), study.table("vary"), "study.toml");
+  ASSERT_EQ(variants.size(), 2u);
+  EXPECT_EQ(variants[0].scene.n_x, 4);
+  EXPECT_EQ(variants[1].scene.n_x, 8);
+  EXPECT_EQ(variants[1].scene.p, 2);
+  EXPECT_EQ(variants[1].scene.pc, 0);
+  EXPECT_EQ(variants[1].scene.n_y, 4);
+  EXPECT_EQ(variants[1].label, "discretization.p=2 domain.n_x=8");
+  auto error_of_study = [&](const std::string& text) {
+    try {
+      const auto table = io::parse_toml_string(text, "study.toml");
+      io::scene_variants(base, table.table("set"), table.table("vary"), "study.toml");
+    } catch (const InputError& error) {
+      return std::string(error.what());
+    }
+    return std::string("(no error)");
+  };
+  EXPECT_NE(error_of_study("vary = { \"domain.n_x\" = [4, 8], \"discretization.p\" = [1] }\n").find("move together"),
+            std::string::npos);
+  const auto bad_variant = error_of_study("vary = { \"discretization.p\" = [2, 0] }\n");
+  EXPECT_NE(bad_variant.find("variant 2"), std::string::npos) << bad_variant;
+  EXPECT_NE(bad_variant.find("discretization.p"), std::string::npos) << bad_variant;
+  EXPECT_NE(error_of_study("vary = { \"p\" = [2] }\n").find("section.key"), std::string::npos);
 }

@@ -30,8 +30,8 @@ pC = 1
 f = "-1"
 g = "-x^2"
 s = "(1 - x)^2"
-[solve]
-problem = "signorini"
+[run]
+effects = ["signorini"]
 )toml";
 
 std::string replaced(const std::string& from, const std::string& to) {
@@ -48,7 +48,7 @@ void expect_bad_input(const std::string& name, const std::string& text, const st
   const auto scene = dir / "scene.toml";
   std::ofstream(scene) << text;
   const auto out = dir / "out";
-  const auto result = run("solve " + scene.string() + " --no-alpha --out " + out.string() + " " + extra);
+  const auto result = run("solve " + scene.string() + " --out " + out.string() + " " + extra);
   EXPECT_EQ(result.exit_code, 2) << name << ": " << result.output;
   for (const auto& word : mentions)
     EXPECT_NE(result.output.find(word), std::string::npos) << name << ": missing '" << word << "' in\n" << result.output;
@@ -60,7 +60,7 @@ void expect_bad_input(const std::string& name, const std::string& text, const st
 TEST(BadInput, TheValidSceneRuns) {
   const auto dir = scratch("bad_valid");
   std::ofstream(dir / "scene.toml") << kScene;
-  const auto result = run("solve " + (dir / "scene.toml").string() + " --no-alpha --out " + (dir / "out").string());
+  const auto result = run("solve " + (dir / "scene.toml").string() + " --out " + (dir / "out").string());
   EXPECT_EQ(result.exit_code, 0) << result.output;
 }
 
@@ -69,7 +69,7 @@ TEST(BadInput, MalformedToml) {
 }
 
 TEST(BadInput, UnknownKeySuggestsTheNearest) {
-  expect_bad_input("unknown", replaced("problem = ", "problme = "), {"scene.toml", "problme", "did you mean 'problem'"});
+  expect_bad_input("unknown", replaced("effects = ", "efects = "), {"scene.toml", "efects", "did you mean 'effects'"});
 }
 
 TEST(BadInput, MissingRequiredKey) {
@@ -92,7 +92,7 @@ TEST(BadInput, RatioNotPositive) {
 }
 
 TEST(BadInput, FewerConstraintPointsThanPcPlusOne) {
-  expect_bad_input("points_scene", replaced("pC = 1", "pC = 3") + "constraint_points = 3\n",
+  expect_bad_input("points_scene", replaced("pC = 1", "pC = 3") + "[solve]\nconstraint_points = 3\n",
                    {"scene.toml", "solve.constraint_points", "3", "p_C + 1 = 4"});
   expect_bad_input("points_option", replaced("pC = 1", "pC = 3"), {"--constraint-points", "2", "p_C + 1 = 4"},
                    "--constraint-points 2");
@@ -109,9 +109,26 @@ TEST(BadInput, ExpressionThatIsNotFinite) {
 
 TEST(BadInput, NegativeFrictionBound) {
   std::string text = replaced("s = \"(1 - x)^2\"", "s = \"x\"");
-  const std::string signorini = "problem = \"signorini\"";
-  text.replace(text.find(signorini), signorini.size(), "problem = \"friction_s\"");
+  const std::string signorini = "effects = [\"signorini\"]";
+  text.replace(text.find(signorini), signorini.size(), "effects = [\"friction_s\"]");
   expect_bad_input("s_negative", text, {"scene.toml", "data.s", ">= 0"});
+}
+
+TEST(BadInput, EffectsAndOutputsThatDoNotApply) {
+  const std::string effects = "effects = [\"signorini\"]";
+  expect_bad_input("effect_unknown", replaced(effects, "effects = [\"signorini\", \"plasticity\"]"),
+                   {"scene.toml", "run.effects", "plasticity", "friction_s"});
+  expect_bad_input("effect_twice", replaced(effects, "effects = [\"signorini\", \"signorini\"]"),
+                   {"scene.toml", "run.effects", "at most once"});
+  expect_bad_input("convergence_alone", replaced(effects, "effects = [\"infsup\", \"convergence\"]"),
+                   {"scene.toml", "run.effects", "convergence", "contact problems"});
+  expect_bad_input("mode_without_infsup", replaced(effects, effects + "\noutputs = [\"mode\"]"),
+                   {"scene.toml", "run.outputs", "mode", "infsup"});
+  expect_bad_input("vtu_without_contact", replaced(effects, "effects = [\"infsup\"]\noutputs = [\"vtu\"]"),
+                   {"scene.toml", "run.outputs", "vtu"});
+  expect_bad_input("signorini_without_g", replaced("g = \"-x^2\"\n", ""), {"scene.toml", "data.g", "obstacle"});
+  expect_bad_input("effects_option", kScene, {"--effects", "elasticity"}, "--effects elasticity");
+  expect_bad_input("effects_missing", replaced("[run]\neffects = [\"signorini\"]\n", ""), {"scene.toml", "run.effects", "--effects"});
 }
 
 TEST(BadInput, ContactBoundaryEmptyOrOverlappingDirichlet) {
@@ -130,7 +147,7 @@ TEST(BadInput, OutputFolderThatCannotBeWritten) {
   const auto dir = scratch("bad_output");
   std::ofstream(dir / "scene.toml") << kScene;
   std::ofstream(dir / "a_file") << "not a folder\n";
-  const auto result = run("solve " + (dir / "scene.toml").string() + " --no-alpha --out " + (dir / "a_file" / "out").string());
+  const auto result = run("solve " + (dir / "scene.toml").string() + " --out " + (dir / "a_file" / "out").string());
   EXPECT_EQ(result.exit_code, 2) << result.output;
   EXPECT_NE(result.output.find("a_file"), std::string::npos) << result.output;
 }

@@ -1,11 +1,11 @@
 // `hpcontact sweep STUDY.toml --out DIR`: α over a grid of (problem, norm, p, p_C, n, h/H) into
 // DIR/alpha.csv (resumable), then rate fits and verdicts into DIR/verdicts.csv.
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <filesystem>
 
 #include "commands.hpp"
+#include "progress_bar.hpp"
 #include "core/petsc_session.hpp"
 #include "core/timer.hpp"
 #include "io/atomic_file.hpp"
@@ -31,15 +31,12 @@ void add_sweep_command(CLI::App& app, CommandAction& action) {
       const auto alpha_csv = std::filesystem::path(*out_dir) / "alpha.csv";
       // 2. Run, with a progress line on stderr when it is a terminal (rank 0 only under mpirun).
       const auto [rank, size] = mpi_rank_and_size();
-      const bool terminal = rank == 0 && isatty(STDERR_FILENO);
       Stopwatch clock;
+      const auto bar = progress_bar(rank == 0);
       studies::run_stability_sweep(sweep, alpha_csv, [&](int done, int total, const std::string& label) {
-        if (!terminal) return;
-        const int width = 30, filled = width * (done - 1) / total;
-        fmt::print(stderr, "\r[{}{}] {}/{} {:.0f}s {:<60}", std::string(filled, '#'),
-                   std::string(width - filled, '.'), done, total, clock.seconds(), label);
+        if (bar) bar(done - 1, total, label);
       });
-      if (terminal) fmt::print(stderr, "\n");
+      finish_progress_bar(bar);
       // 3. Fit rates and write verdicts (rank 0; alpha.csv is complete on every rank here).
       if (rank != 0) return 0;
       const auto verdicts = studies::fit_verdicts(alpha_csv, sweep.fit_levels);

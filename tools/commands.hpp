@@ -21,6 +21,9 @@ void add_solve_command(CLI::App& app, CommandAction& action);
 /// Adds `benchmark`.
 void add_benchmark_command(CLI::App& app, CommandAction& action);
 
+/// Adds `work-precision`.
+void add_work_precision_command(CLI::App& app, CommandAction& action);
+
 /// Adds `infsup`.
 void add_infsup_command(CLI::App& app, CommandAction& action);
 

@@ -57,15 +57,26 @@ ContactSolution solve_contact(const ContactSetup& setup) {
   const auto& contact = primal.contact();
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
   const auto& stiffness = primal.stiffness();
-  Stopwatch load_clock;
-  Eigen::VectorXd load = assembly::assemble_volume_load(space, setup.f);
-  if (setup.traction)
-    load += assembly::assemble_boundary_load(
-        space, {mesh::BoundaryPart::neumann, mesh::BoundaryPart::contact}, setup.traction);
-  if (log) log->record("F", load.size(), 1, load_clock.seconds());
+  auto assemble_load = [&] {
+    Eigen::VectorXd load = assembly::assemble_volume_load(space, setup.f);
+    if (setup.traction)
+      load += assembly::assemble_boundary_load(
+          space, {mesh::BoundaryPart::neumann, mesh::BoundaryPart::contact}, setup.traction);
+    return load;
+  };
+  // F is shared with the other problems on `primal` when the setup names its data (load_key).
+  Eigen::VectorXd own_load;
+  if (setup.load_key.empty()) {
+    Stopwatch load_clock;
+    own_load = assemble_load();
+    if (log) log->record("F", own_load.size(), 1, load_clock.seconds());
+  }
+  const Eigen::VectorXd& load =
+      setup.load_key.empty() ? own_load : primal.derived_vector("F", setup.load_key, assemble_load);
   const bool weighted = setup.problem == ContactProblem::friction;
+  const std::string coupling_name = weighted ? "B^s" : "B";
   const Eigen::SparseMatrix<double>& coupling_legendre =
-      primal.coupling(multipliers, weighted ? setup.bound : assembly::BoundaryFunction{}, weighted ? "B^s" : "B");
+      primal.coupling(multipliers, weighted ? setup.bound : assembly::BoundaryFunction{}, coupling_name);
 
   // Legendre → Lagrange at the nodal points, segment by segment: c_nodal = V c_legendre with
   // V_ik = P_k(τ_i), so the nodal basis functions are ℓ = V⁻ᵀ P and B_nodal = V⁻ᵀ B_legendre.
@@ -152,10 +163,13 @@ ContactSolution solve_contact(const ContactSetup& setup) {
   out.seconds.factorization = factorization_clock.seconds();
   Stopwatch condensation_clock;
   const Eigen::VectorXd u_free = k_factor.solve(load);
-  const Eigen::MatrixXd s = k_factor.schur_complement(coupling);
+  // S depends on the coupling alone (the nodal basis follows from the multiplier space's
+  // layout, which the coupling's key holds): problems sharing B share S.
+  const Eigen::MatrixXd& s =
+      primal.derived_matrix("S", norms::PrimalOperators::coupling_key(multipliers, coupling_name),
+                            [&] { return Eigen::MatrixXd(k_factor.schur_complement(coupling)); });
   const Eigen::VectorXd d = coupling * u_free - gap_offset;
   out.seconds.condensation = condensation_clock.seconds();
-  if (log) log->record("S", s.rows(), s.cols(), out.seconds.condensation);
   out.n_trace = k_factor.n_trailing();
 
   Stopwatch qp_clock;

@@ -46,6 +46,9 @@ struct ContactSetup {
   std::vector<int> segment_degrees;
   ContactProblem problem = ContactProblem::signorini;
   PointFunction f;          ///< volume load
+  /// Names f and the traction: problems solved on the same `primal` with the same non-empty key
+  /// share the assembled F. Empty: F is assembled for this solve alone.
+  std::string load_key;
   PointFunction obstacle;   ///< g, Signorini only
   PointFunction bound;      ///< s, friction problems only (s ≥ 0)
   /// Optional boundary traction t(x, n) on Γ_N and Γ_C, added to the load as ∫ t v ds (Neumann

@@ -13,6 +13,18 @@ namespace hpcontact::io {
 
 std::string format_full_precision(double value) { return fmt::format("{:.17g}", value); }
 
+namespace {
+
+/// RFC 4180: a field with a comma, quote or line break is quoted, its quotes doubled.
+std::string quoted_if_needed(const std::string& text) {
+  if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
+  std::string out = "\"";
+  for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+}  // namespace
+
 CsvTable::CsvTable(std::vector<std::string> columns) : columns_(std::move(columns)) {}
 
 void CsvTable::add_row(std::vector<CsvCell> row) {
@@ -27,7 +39,7 @@ std::string CsvTable::to_string() const {
   for (const auto& row : rows_) {
     for (std::size_t k = 0; k < row.size(); ++k) {
       if (k) out += ',';
-      if (const auto* text = std::get_if<std::string>(&row[k])) out += *text;
+      if (const auto* text = std::get_if<std::string>(&row[k])) out += quoted_if_needed(*text);
       else if (const auto* number = std::get_if<double>(&row[k])) out += format_full_precision(*number);
       else out += std::to_string(std::get<long long>(row[k]));
     }

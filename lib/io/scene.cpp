@@ -2,7 +2,9 @@
 #include "io/scene.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -14,18 +16,79 @@
 #include "io/toml_reader.hpp"
 #include "mesh/cell_map.hpp"
 #include "mesh/gmsh_reader.hpp"
+#include "mesh/refine.hpp"
 #include "studies/stability_sweep.hpp"
 
 namespace hpcontact::io {
 
 Scene read_scene(const std::string& path) { return parse_scene(read_text_file(path), path); }
 
+const std::vector<std::string>& effect_names() {
+  static const std::vector<std::string> names{"signorini", "friction", "friction_s", "infsup", "convergence"};
+  return names;
+}
+
+const std::vector<std::string>& output_names() {
+  static const std::vector<std::string> names{"summary", "boundary", "vtu", "mode"};
+  return names;
+}
+
+bool Scene::has_effect(const std::string& effect) const {
+  return std::find(effects.begin(), effects.end(), effect) != effects.end();
+}
+
+bool Scene::wants_output(const std::string& output) const {
+  return std::find(outputs.begin(), outputs.end(), output) != outputs.end();
+}
+
+std::vector<std::string> Scene::contact_effects() const {
+  std::vector<std::string> problems;
+  for (const char* problem : {"signorini", "friction", "friction_s"})
+    if (has_effect(problem)) problems.push_back(problem);
+  return problems;
+}
+
+void check_effects(const Scene& scene, const std::string& where) {
+  if (scene.effects.empty()) throw_bad_input(where, "run.effects", "[]", "at least one of " + fmt::format("{}", fmt::join(effect_names(), ", ")));
+  for (std::size_t i = 0; i < scene.effects.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (scene.effects[i] == scene.effects[j]) throw_bad_input(where, "run.effects", scene.effects[i], "each effect at most once");
+  if (scene.has_effect("signorini") && scene.obstacle.empty())
+    throw_bad_input(scene.file, "data.g", "(missing)", "the effect 'signorini' (problem (9)) needs the obstacle g");
+  for (const char* problem : {"friction", "friction_s"})
+    if (scene.has_effect(problem) && scene.friction_bound.empty())
+      throw_bad_input(scene.file, "data.s", "(missing)", fmt::format("the effect '{}' needs the friction bound s", problem));
+  if (scene.has_effect("convergence") && scene.contact_effects().empty())
+    throw_bad_input(where, "run.effects", "convergence", "'convergence' refines the contact problems of the scene: add signorini, friction or friction_s");
+  if (scene.outputs_given && scene.wants_output("mode") && !scene.has_effect("infsup"))
+    throw_bad_input(where, "run.outputs", "mode", "the spurious mode needs the effect 'infsup'");
+  for (const char* output : {"boundary", "vtu"})
+    if (scene.outputs_given && scene.wants_output(output) && scene.contact_effects().empty())
+      throw_bad_input(where, "run.outputs", output, "needs a contact problem among the effects (signorini, friction, friction_s)");
+}
+
+namespace {
+
+/// A list of finite numbers (numbers or their text) under `key`; empty when absent.
+std::vector<double> number_list(const TomlTable& table, const std::string& key, const std::string& allowed) {
+  std::vector<double> values;
+  for (const auto& text : table.string_list(key, std::vector<std::string>{})) {
+    char* end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    if (text.empty() || *end != '\0' || !std::isfinite(value)) throw_bad_input(table.file(), table.qualified(key), text, allowed);
+    values.push_back(value);
+  }
+  return values;
+}
+
+}  // namespace
+
 Scene parse_scene(const std::string& text, const std::string& path) {
   const TomlTable root = parse_toml_string(text, path);
   Scene scene;
   scene.file = path;
   // Misspelt section names are reported before "missing section" errors.
-  for (const char* section : {"domain", "boundary", "contact_mesh", "discretization", "data", "infsup", "solve"})
+  for (const char* section : {"domain", "boundary", "contact_mesh", "discretization", "data", "infsup", "solve", "run", "convergence"})
     root.has(section);
   root.reject_unknown_keys();
 
@@ -48,6 +111,13 @@ Scene parse_scene(const std::string& text, const std::string& path) {
   }
   scene.perturb = domain.number_in("perturb", 0.0, 0.24, 0.0);
   scene.seed = static_cast<std::uint32_t>(domain.integer("seed", 0, 1u << 30, 1));
+  scene.grading_x = number_list(domain, "grading_x", "x coordinates (numbers) inside the rectangle");
+  scene.grading_y = number_list(domain, "grading_y", "y coordinates (numbers) inside the rectangle");
+  scene.domain_grading = domain.number_in("grading", 0.01, 0.99, 0.5);
+  scene.grading_layers = static_cast<int>(domain.integer("grading_layers", 0, 40, 0));
+  if ((!scene.grading_x.empty() || !scene.grading_y.empty()) && !scene.rectangle)
+    throw_bad_input(path, "domain.grading_x", "", "grading applies to a rectangle, not to a Gmsh mesh");
+  scene.refinements = static_cast<int>(domain.integer("refinements", 0, 10, 0));
   domain.reject_unknown_keys();
 
   const auto boundary = root.table("boundary", true);
@@ -74,15 +144,10 @@ Scene parse_scene(const std::string& text, const std::string& path) {
     scene.ratio = contact_mesh.string_list("ratio").front();
     studies::parse_ratio(scene.ratio, path + ": key 'contact_mesh.ratio'");
   }
-  if (contact_mesh.has("breakpoints"))
-    for (const auto& text : contact_mesh.string_list("breakpoints")) {
-      char* end = nullptr;
-      const double value = std::strtod(text.c_str(), &end);
-      if (text.empty() || *end != '\0' || !std::isfinite(value) || value <= 0.0)
-        throw_bad_input(path, "contact_mesh.breakpoints", text,
-                        "positive arc lengths (numbers), strictly increasing, the last the length of Γ_C");
-      scene.breakpoints.push_back(value);
-    }
+  const char* breakpoints_allowed = "positive arc lengths (numbers), strictly increasing, the last the length of Γ_C";
+  scene.breakpoints = number_list(contact_mesh, "breakpoints", breakpoints_allowed);
+  for (double value : scene.breakpoints)
+    if (value <= 0.0) throw_bad_input(path, "contact_mesh.breakpoints", fmt::format("{}", value), breakpoints_allowed);
   scene.grading = contact_mesh.number_in("grading", 1e-3, 1.0, 1.0);
   contact_mesh.reject_unknown_keys();
 
@@ -117,21 +182,51 @@ Scene parse_scene(const std::string& text, const std::string& path) {
   scene.problem = infsup.choice("problem", {"signorini", "friction"}, "signorini");
   infsup.reject_unknown_keys();
   const auto solve = root.table("solve");
-  scene.contact_problem = solve.choice("problem", {"signorini", "friction", "friction_s"}, "signorini");
   // The lower limit p_C + 1 depends on the segment; it is checked when the constraints are built.
   if (solve.has("constraint_points")) scene.constraint_points = static_cast<int>(solve.integer("constraint_points", 1, 64));
   solve.reject_unknown_keys();
   if (scene.problem == "friction" && scene.friction_bound.empty())
     throw_bad_input(path, "data.s", "(missing)", "the friction problem needs the friction bound s");
+
+  const auto run = root.table("run");
+  auto chosen = [&](const char* key, const std::vector<std::string>& allowed, std::vector<std::string>& values) {
+    if (!run.has(key)) return;
+    values = run.string_list(key);
+    for (const auto& value : values)
+      if (std::find(allowed.begin(), allowed.end(), value) == allowed.end())
+        throw_bad_input(path, std::string("run.") + key, value, fmt::format("any of {}", fmt::join(allowed, ", ")));
+  };
+  chosen("effects", effect_names(), scene.effects);
+  chosen("outputs", output_names(), scene.outputs);
+  scene.outputs_given = run.has("outputs");
+  run.reject_unknown_keys();
+  const auto convergence = root.table("convergence");
+  scene.convergence_refinements = static_cast<int>(convergence.integer("refinements", 1, 6, 3));
+  convergence.reject_unknown_keys();
   root.reject_unknown_keys();
+  if (run.has("effects") || run.has("outputs")) check_effects(scene, path);
   return scene;
 }
 
+namespace {
+
+mesh::QuadMesh build_rectangle(const Scene& scene) {
+  const auto& r = *scene.rectangle;
+  if (scene.grading_x.empty() && scene.grading_y.empty()) return mesh::make_rectangle_mesh(r, scene.n_x, scene.n_y);
+  return mesh::make_tensor_mesh(
+      mesh::graded_nodes(r.x_min, r.x_max, scene.n_x, scene.grading_x, scene.domain_grading, scene.grading_layers,
+                         scene.file + ": key 'domain.grading_x'"),
+      mesh::graded_nodes(r.y_min, r.y_max, scene.n_y, scene.grading_y, scene.domain_grading, scene.grading_layers,
+                         scene.file + ": key 'domain.grading_y'"),
+      scene.file + ": graded rectangle");
+}
+
+}  // namespace
+
 mesh::QuadMesh build_scene_mesh(const Scene& scene) {
-  mesh::QuadMesh mesh = scene.mesh_file.empty()
-                            ? mesh::make_rectangle_mesh(*scene.rectangle, scene.n_x, scene.n_y)
-                            : mesh::read_gmsh_mesh(scene.mesh_file);
+  mesh::QuadMesh mesh = scene.mesh_file.empty() ? build_rectangle(scene) : mesh::read_gmsh_mesh(scene.mesh_file);
   if (scene.perturb > 0) mesh::perturb_interior_vertices(mesh, scene.perturb, scene.seed);
+  for (int k = 0; k < scene.refinements; ++k) mesh = mesh::refine_uniformly(mesh);
   auto predicate = [&](const std::string& text, const char* key) {
     const Expression expression(text, scene.file + ": key 'boundary." + key + "'");
     return [expression](const mesh::Point& x) { return expression(x.x(), x.y()) != 0.0; };
@@ -202,24 +297,52 @@ std::vector<int> scene_segment_degrees(const Scene& scene, const mesh::ContactBo
 }
 
 mesh::BoundaryMesh build_scene_boundary_mesh(const Scene& scene, const mesh::ContactBoundary& contact) {
+  const int split = 1 << scene.refinements;  // segments per segment of the scene's own T_{C,H}
   if (!scene.breakpoints.empty()) {
-    auto nodes = scene.breakpoints;
-    if (std::abs(nodes.back() - contact.length()) > 1e-10 * contact.length())
-      throw_bad_input(scene.file, "contact_mesh.breakpoints", fmt::format("last = {}", nodes.back()),
+    auto given = scene.breakpoints;
+    if (std::abs(given.back() - contact.length()) > 1e-10 * contact.length())
+      throw_bad_input(scene.file, "contact_mesh.breakpoints", fmt::format("last = {}", given.back()),
                       fmt::format("must run from 0 to the length of Γ_C, {}", contact.length()));
+    given.back() = contact.length();
+    given.insert(given.begin(), 0.0);
+    std::vector<double> nodes{0.0};
+    for (std::size_t k = 0; k + 1 < given.size(); ++k)
+      for (int i = 1; i <= split; ++i) nodes.push_back(given[k] + (given[k + 1] - given[k]) * i / split);
     nodes.back() = contact.length();
     return mesh::BoundaryMesh(nodes, scene.file + ": key 'contact_mesh.breakpoints'");
   }
-  int m = scene.m;
-  if (!scene.ratio.empty()) {
-    const int n = static_cast<int>(contact.edges().size());
-    const double exact = n * studies::parse_ratio(scene.ratio, scene.file);
-    m = static_cast<int>(std::lround(exact));
+  if (scene.ratio.empty()) return mesh::BoundaryMesh::graded(contact.length(), scene.m * split, scene.grading);
+  // ratio = h/H. On a uniform T_h|Γ_C: m = n · ratio equal segments. On a graded one, T_{C,H}
+  // follows T_h|Γ_C: ratio 1/k merges k neighbouring edges (the last segment also takes the
+  // n mod k left over), ratio k splits every edge in k.
+  const auto edges = contact.breakpoints();
+  const int n = static_cast<int>(edges.size()) - 1;
+  const double ratio = studies::parse_ratio(scene.ratio, scene.file);
+  bool uniform = true;
+  for (int e = 0; e < n; ++e) uniform = uniform && std::abs(edges[e + 1] - edges[e] - contact.length() / n) < 1e-9 * contact.length() / n;
+  if (uniform) {
+    const double exact = n * ratio;
+    const int m = static_cast<int>(std::lround(exact));
     if (m < 1 || std::abs(exact - m) > 1e-9 * exact)
       throw_bad_input(scene.file, "contact_mesh.ratio", scene.ratio,
                       fmt::format("Γ_C has {} edges of T_h; {} · ratio = {} must be a whole number of segments", n, n, exact));
+    return mesh::BoundaryMesh::graded(contact.length(), m, scene.grading);
   }
-  return mesh::BoundaryMesh::graded(contact.length(), m, scene.grading);
+  const long merge = std::lround(1.0 / ratio), divide = std::lround(ratio);
+  std::vector<double> nodes{0.0};
+  if (merge >= 1 && std::abs(merge * ratio - 1.0) < 1e-9 && n >= merge) {
+    // Groups of k edges; the last segment takes the n mod k edges left over.
+    for (int e = static_cast<int>(merge); e <= n; e += static_cast<int>(merge)) nodes.push_back(edges[e]);
+    if (n % merge != 0) nodes.back() = edges[n];
+  } else if (divide >= 1 && std::abs(ratio - static_cast<double>(divide)) < 1e-9) {
+    for (int e = 0; e < n; ++e)
+      for (long i = 1; i <= divide; ++i) nodes.push_back(edges[e] + (edges[e + 1] - edges[e]) * i / divide);
+  } else {
+    throw_bad_input(scene.file, "contact_mesh.ratio", scene.ratio,
+                    fmt::format("T_h is not uniform on Γ_C ({} edges): the ratio must be 1/k with k <= {}, or a whole number", n, n));
+  }
+  nodes.back() = contact.length();
+  return mesh::BoundaryMesh(nodes, scene.file + ": key 'contact_mesh.ratio'");
 }
 
 }  // namespace hpcontact::io

@@ -1,6 +1,6 @@
 // Scene files (TOML): the geometry, boundary parts, contact mesh, discretization and data of one
-// run. This is the part of the scene format that the inf-sup analysis reads; the full format
-// (loads, obstacle, effects, outputs) extends it. Every key is documented in studies/README.md.
+// run, and which effects (contact problems, inf-sup constant, convergence under refinement) and
+// outputs the run produces. Every key is documented in studies/README.md.
 #pragma once
 
 #include <cstdint>
@@ -23,6 +23,14 @@ struct Scene {
   std::string mesh_file;
   double perturb = 0.0;
   std::uint32_t seed = 1;
+  /// Rectangle only: `grading_layers` geometric layers (sizes shrinking by `domain_grading`)
+  /// towards each of these x (y) coordinates; see mesh::graded_nodes.
+  std::vector<double> grading_x, grading_y;
+  double domain_grading = 0.5;
+  int grading_layers = 0;
+  /// Uniform refinements of the mesh (each cell into four) after building and perturbing it;
+  /// T_{C,H} follows (m and breakpoint segments split alike, ratio kept).
+  int refinements = 0;
   // [boundary]: predicates in x, y on edge midpoints (non-zero = inside), or Gmsh group names.
   std::string contact_predicate, dirichlet_predicate;
   std::vector<std::string> contact_groups, dirichlet_groups;
@@ -42,9 +50,31 @@ struct Scene {
   // [infsup]
   std::string norm = "interp", problem = "signorini";
   // [solve]
-  std::string contact_problem = "signorini";  ///< signorini | friction | friction_s
-  std::optional<int> constraint_points;       ///< |𝒞| per segment (Remark 3); empty: p_C + 1
+  std::optional<int> constraint_points;  ///< |𝒞| per segment (Remark 3); empty: p_C + 1
+  // [run]: what the run computes and writes (see `effect_names`, `output_names`).
+  /// Empty when the scene has no [run] table: `solve` then needs --effects; `infsup --scene` and
+  /// sweeps over the scene do not read it.
+  std::vector<std::string> effects;
+  std::vector<std::string> outputs = {"summary", "boundary", "vtu", "mode"};
+  bool outputs_given = false;  ///< listed outputs must apply; the default writes those that do
+  // [convergence]: levels of uniform refinement beyond the scene's own mesh.
+  int convergence_refinements = 3;
+
+  bool has_effect(const std::string& effect) const;
+  /// The contact problems among the effects, in the order signorini, friction, friction_s.
+  std::vector<std::string> contact_effects() const;
+  bool wants_output(const std::string& output) const;
 };
+
+/// Allowed values of [run] effects: signorini, friction, friction_s, infsup, convergence.
+const std::vector<std::string>& effect_names();
+/// Allowed values of [run] outputs: summary, boundary, vtu, mode.
+const std::vector<std::string>& output_names();
+
+/// Checks the effects against the data (g for signorini, s for friction problems, a contact
+/// problem for convergence) and the outputs against the effects; `where` names the source of the
+/// effects in messages. @throws InputError.
+void check_effects(const Scene& scene, const std::string& where);
 
 /// @throws InputError naming file, key, value and the allowed range.
 Scene read_scene(const std::string& path);

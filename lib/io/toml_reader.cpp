@@ -191,6 +191,11 @@ std::vector<std::string> TomlTable::string_list(
   return values;
 }
 
+const toml::table& TomlTable::raw() const {
+  static const toml::table empty;
+  return table_ ? *table_ : empty;
+}
+
 TomlTable TomlTable::table(const std::string& key, bool required) const {
   if (!has(key)) {
     if (required) fail(key, "(missing)", "a table [" + qualified(key) + "] is required");

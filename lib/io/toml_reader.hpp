@@ -54,6 +54,10 @@ class TomlTable {
   /// An array of tables ([[key]] blocks).
   std::vector<TomlTable> table_array(const std::string& key, bool required = false) const;
 
+  /// The underlying toml++ table (an empty one for an absent table), for code that copies whole
+  /// sub-trees (scene variants).
+  const toml::table& raw() const;
+
   /// @throws InputError for the first key of this table that no getter asked for, with the
   /// nearest known key as suggestion. Call after reading the table.
   void reject_unknown_keys() const;

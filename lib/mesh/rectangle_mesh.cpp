@@ -3,7 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <random>
+
+#include <fmt/format.h>
 
 #include "core/error.hpp"
 
@@ -14,28 +17,77 @@ QuadMesh make_rectangle_mesh(const Rectangle& r, int n_x, int n_y) {
   if (n_y < 1) throw_bad_input("rectangle mesh", "n_y", std::to_string(n_y), "must be >= 1");
   if (!(r.x_max > r.x_min) || !(r.y_max > r.y_min))
     throw InputError("rectangle mesh: the bounds must satisfy x_min < x_max and y_min < y_max");
+  std::vector<double> x(n_x + 1), y(n_y + 1);
+  for (int i = 0; i <= n_x; ++i) x[i] = r.x_min + (r.x_max - r.x_min) * i / n_x;
+  for (int j = 0; j <= n_y; ++j) y[j] = r.y_min + (r.y_max - r.y_min) * j / n_y;
+  return make_tensor_mesh(x, y, "rectangle mesh");
+}
+
+QuadMesh make_tensor_mesh(const std::vector<double>& x, const std::vector<double>& y, const std::string& origin) {
+  for (const auto* nodes : {&x, &y})
+    if (nodes->size() < 2 || !std::is_sorted(nodes->begin(), nodes->end(), std::less_equal<>()))
+      throw InputError(origin + ": the nodes must be strictly increasing, at least two in each direction");
+  const int n_x = static_cast<int>(x.size()) - 1, n_y = static_cast<int>(y.size()) - 1;
   std::vector<Point> vertices;
   vertices.reserve(static_cast<std::size_t>(n_x + 1) * (n_y + 1));
   for (int j = 0; j <= n_y; ++j)
-    for (int i = 0; i <= n_x; ++i)
-      vertices.emplace_back(r.x_min + (r.x_max - r.x_min) * i / n_x,
-                            r.y_min + (r.y_max - r.y_min) * j / n_y);
+    for (int i = 0; i <= n_x; ++i) vertices.emplace_back(x[i], y[j]);
   auto index = [n_x](int i, int j) { return j * (n_x + 1) + i; };
   std::vector<std::array<int, 4>> cells;
   cells.reserve(static_cast<std::size_t>(n_x) * n_y);
   for (int j = 0; j < n_y; ++j)
     for (int i = 0; i < n_x; ++i)
       cells.push_back({index(i, j), index(i + 1, j), index(i + 1, j + 1), index(i, j + 1)});
-  QuadMesh mesh(std::move(vertices), std::move(cells), "rectangle mesh");
-  const double tol_x = 1e-9 * (r.x_max - r.x_min), tol_y = 1e-9 * (r.y_max - r.y_min);
+  QuadMesh mesh(std::move(vertices), std::move(cells), origin);
+  const double tol_x = 1e-9 * (x.back() - x.front()), tol_y = 1e-9 * (y.back() - y.front());
   for (int e : mesh.boundary_edges()) {
     const Point m = mesh.edge_midpoint(e);
-    if (std::abs(m.y() - r.y_min) < tol_y) mesh.set_edge_label(e, "bottom");
-    else if (std::abs(m.x() - r.x_max) < tol_x) mesh.set_edge_label(e, "right");
-    else if (std::abs(m.y() - r.y_max) < tol_y) mesh.set_edge_label(e, "top");
+    if (std::abs(m.y() - y.front()) < tol_y) mesh.set_edge_label(e, "bottom");
+    else if (std::abs(m.x() - x.back()) < tol_x) mesh.set_edge_label(e, "right");
+    else if (std::abs(m.y() - y.back()) < tol_y) mesh.set_edge_label(e, "top");
     else mesh.set_edge_label(e, "left");
   }
   return mesh;
+}
+
+std::vector<double> graded_nodes(double a, double b, int n, const std::vector<double>& points, double ratio,
+                                 int layers, const std::string& origin) {
+  if (!(ratio > 0.0 && ratio < 1.0))
+    throw_bad_input(origin, "grading", fmt::format("{}", ratio), "must be in (0, 1)");
+  if (n < 1) throw_bad_input(origin, "cells", std::to_string(n), "must be >= 1");
+  std::vector<double> nodes(n + 1);
+  for (int i = 0; i <= n; ++i) nodes[i] = a + (b - a) * i / n;
+  const double h = (b - a) / n;
+  // 1. Snap the nearest node to each point (end nodes only to points at the ends).
+  std::vector<int> snapped;
+  for (double point : points) {
+    if (!(point >= a - 1e-12 * (b - a) && point <= b + 1e-12 * (b - a)))
+      throw_bad_input(origin, "grading point", fmt::format("{}", point), fmt::format("must lie in [{}, {}]", a, b));
+    int i = static_cast<int>(std::lround((point - a) / h));
+    if ((i == 0 || i == n) && std::abs(nodes[i] - point) > 1e-12 * (b - a)) i = i == 0 ? 1 : n - 1;
+    if (i <= 0 || i >= n ? std::abs(nodes[i] - point) > 1e-12 * (b - a) : false)
+      throw_bad_input(origin, "grading point", fmt::format("{}", point), "too close to an end of the interval for this many cells");
+    if (std::find(snapped.begin(), snapped.end(), i) != snapped.end())
+      throw_bad_input(origin, "grading point", fmt::format("{}", point), "two grading points share the nearest node: use more cells");
+    nodes[i] = point;
+    snapped.push_back(i);
+  }
+  for (int i = 0; i < n; ++i)
+    if (!(nodes[i + 1] - nodes[i] > 0.25 * h))
+      throw_bad_input(origin, "grading point", fmt::format("{}", nodes[i + 1]),
+                      "snapping it to the nearest node leaves a cell thinner than h/4: use more cells");
+  // 2. Geometric layers in both neighbouring cells of each snapped node: nodes at distance
+  //    (cell size) · ratio^k, k = 1..layers, so that cell sizes shrink by `ratio` towards the point.
+  std::vector<double> all = nodes;
+  for (int i : snapped)
+    for (int side : {-1, 1}) {
+      const int neighbour = i + side;
+      if (neighbour < 0 || neighbour > n) continue;
+      const double size = std::abs(nodes[neighbour] - nodes[i]);
+      for (int k = 1; k <= layers; ++k) all.push_back(nodes[i] + side * size * std::pow(ratio, k));
+    }
+  std::sort(all.begin(), all.end());
+  return all;
 }
 
 void perturb_interior_vertices(QuadMesh& mesh, double amplitude, std::uint32_t seed) {

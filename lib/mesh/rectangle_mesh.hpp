@@ -6,6 +6,7 @@
 #include <functional>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "mesh/quad_mesh.hpp"
 
@@ -19,6 +20,20 @@ struct Rectangle {
 /// "top", "left"; all boundary parts start as Neumann.
 /// @throws InputError if n_x, n_y < 1 or the rectangle is empty.
 QuadMesh make_rectangle_mesh(const Rectangle& rectangle, int n_x, int n_y);
+
+/// Tensor-product mesh with the given x and y nodes (each strictly increasing, at least two);
+/// labels as make_rectangle_mesh. @throws InputError naming `origin` otherwise.
+QuadMesh make_tensor_mesh(const std::vector<double>& x_nodes, const std::vector<double>& y_nodes,
+                          const std::string& origin = "tensor mesh");
+
+/// n uniform cells on [a, b], geometrically refined towards each coordinate in `points`: the
+/// nearest node moves onto the point, and each of its two neighbouring cells gets `layers` extra
+/// nodes at distances size · ratio^k (k = 1..layers) from it, so that cell sizes shrink by `ratio`
+/// towards the point (the geometric meshes of hp-FEM). n + (layers per side) cells in all.
+/// @throws InputError if a point lies outside [a, b], two points share a node, or snapping
+/// would leave a cell thinner than h/4.
+std::vector<double> graded_nodes(double a, double b, int n, const std::vector<double>& points, double ratio,
+                                 int layers, const std::string& origin);
 
 /// Moves every interior vertex by a uniformly random offset of at most `amplitude` times the
 /// smallest adjacent edge length in each coordinate (deterministic for a given seed).

@@ -82,10 +82,7 @@ const linalg::SparseCholesky& PrimalOperators::gram_factor() const {
 const Eigen::SparseMatrix<double>& PrimalOperators::coupling(const space::MultiplierSpace& multipliers,
                                                              const assembly::BoundaryFunction& weight,
                                                              const std::string& name) const {
-  // The layout of the multiplier space identifies it: its segments and their degrees.
-  std::string key = name;
-  for (int k = 0; k < multipliers.n_segments(); ++k)
-    key += fmt::format("|{:.17g}:{}", multipliers.boundary_mesh().segment_end(k), multipliers.segment_degree(k));
+  const std::string key = coupling_key(multipliers, name);
   auto found = couplings_.find(key);
   if (found == couplings_.end()) {
     Stopwatch clock;
@@ -93,6 +90,40 @@ const Eigen::SparseMatrix<double>& PrimalOperators::coupling(const space::Multip
     if (log_) log_->record(name, found->second.rows(), found->second.cols(), clock.seconds());
   }
   return found->second;
+}
+
+std::string PrimalOperators::coupling_key(const space::MultiplierSpace& multipliers, const std::string& name) {
+  // The layout of the multiplier space identifies it: its segments and their degrees.
+  std::string key = name;
+  for (int k = 0; k < multipliers.n_segments(); ++k)
+    key += fmt::format("|{:.17g}:{}", multipliers.boundary_mesh().segment_end(k), multipliers.segment_degree(k));
+  return key;
+}
+
+namespace {
+
+template <class Value>
+const Value& memoized(std::map<std::string, Value>& slots, const std::string& name, const std::string& key,
+                      const std::function<Value()>& build, OperatorLog* log) {
+  auto found = slots.find(key);
+  if (found == slots.end()) {
+    Stopwatch clock;
+    found = slots.emplace(key, build()).first;
+    if (log) log->record(name, found->second.rows(), found->second.cols(), clock.seconds());
+  }
+  return found->second;
+}
+
+}  // namespace
+
+const Eigen::VectorXd& PrimalOperators::derived_vector(const std::string& name, const std::string& key,
+                                                       const std::function<Eigen::VectorXd()>& build) const {
+  return memoized(derived_vectors_, name, name + "#" + key, build, log_);
+}
+
+const Eigen::MatrixXd& PrimalOperators::derived_matrix(const std::string& name, const std::string& key,
+                                                       const std::function<Eigen::MatrixXd()>& build) const {
+  return memoized(derived_matrices_, name, name + "#" + key, build, log_);
 }
 
 const PrimalOperators& shared_or_own(const PrimalOperators* shared, const mesh::QuadMesh& mesh,

@@ -5,6 +5,7 @@
 // only. One object per (T_h, p): a `solve` with α, or all sweep points on (n, p), share it.
 #pragma once
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -38,6 +39,15 @@ class PrimalOperators {
   /// (name, multiplier space layout), so that the contact solve and α share it.
   const Eigen::SparseMatrix<double>& coupling(const space::MultiplierSpace& multipliers,
                                               const assembly::BoundaryFunction& weight, const std::string& name) const;
+  /// The key under which `coupling` keeps B: `name` and the multiplier space's layout.
+  static std::string coupling_key(const space::MultiplierSpace& multipliers, const std::string& name);
+  /// A vector or dense matrix derived from the operators above (the load F of one f, the
+  /// condensed S = B K⁻¹ Bᵀ of one coupling), built by `build` on first use under `key` and
+  /// logged as `name`, so that problems sharing data share it (Signorini and (15) share B and S).
+  const Eigen::VectorXd& derived_vector(const std::string& name, const std::string& key,
+                                        const std::function<Eigen::VectorXd()>& build) const;
+  const Eigen::MatrixXd& derived_matrix(const std::string& name, const std::string& key,
+                                        const std::function<Eigen::MatrixXd()>& build) const;
   /// Every dof with a trace on Γ_C (the trailing set of both factorizations).
   const std::vector<int>& trace_dofs() const;
   OperatorLog* log() const { return log_; }
@@ -51,6 +61,8 @@ class PrimalOperators {
   mutable std::unique_ptr<linalg::SparseCholesky> stiffness_factor_, gram_factor_;
   mutable std::unique_ptr<std::vector<int>> trace_dofs_;
   mutable std::map<std::string, Eigen::SparseMatrix<double>> couplings_;
+  mutable std::map<std::string, Eigen::VectorXd> derived_vectors_;
+  mutable std::map<std::string, Eigen::MatrixXd> derived_matrices_;
 };
 
 /// `shared` when given (checked to belong to mesh and degrees), else a new object kept in `own`.

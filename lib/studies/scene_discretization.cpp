@@ -1,0 +1,89 @@
+// Building a scene's discretization and contact problem.
+#include "studies/scene_discretization.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "core/error.hpp"
+#include "core/expression.hpp"
+#include "core/timer.hpp"
+
+namespace hpcontact::studies {
+
+std::unique_ptr<SceneDiscretization> discretize_scene(const io::Scene& scene) {
+  auto d = std::make_unique<SceneDiscretization>(SceneDiscretization{io::build_scene_mesh(scene), {}, {}, {}, {}, {}});
+  d->contact = std::make_unique<mesh::ContactBoundary>(d->mesh);
+  d->boundary_mesh = std::make_unique<mesh::BoundaryMesh>(io::build_scene_boundary_mesh(scene, *d->contact));
+  d->cell_degrees = io::scene_cell_degrees(scene, d->mesh);
+  d->segment_degrees = io::scene_segment_degrees(scene, *d->contact, *d->boundary_mesh);
+  d->multipliers = std::make_unique<space::MultiplierSpace>(*d->boundary_mesh, d->segment_degrees);
+  return d;
+}
+
+contact::ContactProblem contact_problem_of(const std::string& effect) {
+  if (effect == "signorini") return contact::ContactProblem::signorini;
+  if (effect == "friction") return contact::ContactProblem::friction;
+  if (effect == "friction_s") return contact::ContactProblem::friction_s;
+  throw InputError("not a contact problem: '" + effect + "' (signorini, friction, friction_s)");
+}
+
+namespace {
+
+contact::PointFunction function_of(const std::string& text, const std::string& origin) {
+  if (text.empty()) return {};
+  const Expression expression(text, origin);
+  return [expression](const mesh::Point& x) { return expression(x.x(), x.y()); };
+}
+
+}  // namespace
+
+contact::ContactSetup contact_setup_of(const io::Scene& scene, const SceneDiscretization& d,
+                                       contact::ContactProblem problem, const norms::PrimalOperators& primal,
+                                       const ValueOrigin& origin) {
+  contact::ContactSetup setup;
+  setup.mesh = &d.mesh;
+  setup.cell_degrees = d.cell_degrees;
+  setup.boundary_mesh = d.boundary_mesh.get();
+  setup.segment_degrees = d.segment_degrees;
+  setup.problem = problem;
+  setup.constraint_points = scene.constraint_points;
+  for (int pc : setup.segment_degrees) {
+    try {
+      contact::segment_constraint_points(problem, pc, setup.constraint_points);
+    } catch (const InputError&) {
+      throw_bad_input(origin.source, origin.key, std::to_string(*setup.constraint_points),
+                      fmt::format("at least p_C + 1 = {} (the largest p_C of the scene's segments is {})", pc + 1,
+                                  *std::max_element(setup.segment_degrees.begin(), setup.segment_degrees.end())));
+    }
+  }
+  setup.f = function_of(scene.load, scene.file + ": key 'data.f'");
+  setup.load_key = "f = " + scene.load;
+  if (problem == contact::ContactProblem::signorini)
+    setup.obstacle = function_of(scene.obstacle, scene.file + ": key 'data.g'");
+  else
+    setup.bound = function_of(scene.friction_bound, scene.file + ": key 'data.s'");
+  if (setup.bound)  // s ≥ 0 is part of the data's contract: report it against the scene's key
+    setup.bound = [bound = setup.bound, file = scene.file, text = scene.friction_bound](const mesh::Point& x) {
+      const double value = bound(x);
+      if (value < 0)
+        throw_bad_input(file, "data.s", fmt::format("\"{}\" = {} at (x, y) = ({}, {})", text, value, x.x(), x.y()),
+                        "the friction bound must be >= 0 on Γ_C");
+      return value;
+    };
+  setup.primal = &primal;
+  return setup;
+}
+
+SceneContactRun solve_scene_contact(const io::Scene& scene, contact::ContactProblem problem,
+                                    const ValueOrigin& origin, OperatorLog* log) {
+  Stopwatch clock;
+  SceneContactRun run;
+  run.discretization = discretize_scene(scene);
+  const norms::PrimalOperators primal(run.discretization->mesh, run.discretization->cell_degrees, log);
+  run.solution = contact::solve_contact(contact_setup_of(scene, *run.discretization, problem, primal, origin));
+  run.seconds = clock.seconds();
+  return run;
+}
+
+}  // namespace hpcontact::studies

@@ -1,0 +1,60 @@
+// A scene turned into a discretization: T_h, Γ_C, T_{C,H} and the degrees, and the contact
+// problem set up on them. Shared by `solve` (every effect), the convergence effect and the
+// work–precision study, so that all read scenes the same way.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "contact/contact_problem.hpp"
+#include "io/scene.hpp"
+#include "mesh/boundary_mesh.hpp"
+#include "mesh/contact_boundary.hpp"
+#include "mesh/quad_mesh.hpp"
+#include "norms/primal_operators.hpp"
+#include "space/multiplier_space.hpp"
+
+namespace hpcontact::studies {
+
+struct SceneDiscretization {
+  mesh::QuadMesh mesh;
+  std::unique_ptr<mesh::ContactBoundary> contact;        ///< refers to `mesh`
+  std::unique_ptr<mesh::BoundaryMesh> boundary_mesh;
+  std::vector<int> cell_degrees, segment_degrees;
+  std::unique_ptr<space::MultiplierSpace> multipliers;   ///< M^{p_C}(T_{C,H}), refers to boundary_mesh
+};
+
+/// Builds the meshes and degrees. Held by pointer: its parts refer to each other.
+/// @throws InputError as the scene's builders do.
+std::unique_ptr<SceneDiscretization> discretize_scene(const io::Scene& scene);
+
+/// "signorini" → (9), "friction" → (13), "friction_s" → (15). @throws InputError otherwise.
+contact::ContactProblem contact_problem_of(const std::string& effect);
+
+/// Where the constraint-point count came from, for messages: the scene key or a command-line
+/// option.
+struct ValueOrigin {
+  std::string source, key;
+};
+
+/// The contact problem `problem` of the scene on `discretization` (data from the scene's
+/// expressions, s ≥ 0 checked where evaluated). `primal` must belong to the discretization.
+/// @throws InputError if the constraint points are fewer than p_C + 1 somewhere (naming `origin`).
+contact::ContactSetup contact_setup_of(const io::Scene& scene, const SceneDiscretization& discretization,
+                                       contact::ContactProblem problem, const norms::PrimalOperators& primal,
+                                       const ValueOrigin& origin);
+
+/// One contact problem of a scene, solved from scratch with its own operators.
+struct SceneContactRun {
+  std::unique_ptr<SceneDiscretization> discretization;
+  contact::ContactSolution solution;
+  double seconds = 0.0;  ///< wall time from the meshes to u: what this discretization costs
+};
+
+/// Discretizes the scene and solves `problem`; operators built are recorded in `log` if given.
+SceneContactRun solve_scene_contact(const io::Scene& scene, contact::ContactProblem problem,
+                                    const ValueOrigin& origin, OperatorLog* log = nullptr);
+
+}  // namespace hpcontact::studies

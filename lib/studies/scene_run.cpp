@@ -1,0 +1,200 @@
+// The effects of a scene and their outputs.
+#include "studies/scene_run.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "contact/contact_output.hpp"
+#include "contact/multiplier_distance.hpp"
+#include "core/expression.hpp"
+#include "core/operator_log.hpp"
+#include "core/timer.hpp"
+#include "infsup/infsup_analysis.hpp"
+#include "io/atomic_file.hpp"
+#include "io/csv_writer.hpp"
+#include "io/vtu_writer.hpp"
+
+namespace hpcontact::studies {
+namespace {
+
+struct ContactEffect {
+  std::string problem;
+  contact::ContactSetup setup;
+  contact::ContactSolution solution;
+  contact::BoundarySamples samples;
+  double seconds = 0.0;
+};
+
+std::string degree_text(int value, const std::string& rule) { return rule.empty() ? std::to_string(value) : rule; }
+
+nlohmann::json contact_summary(const ContactEffect& effect) {
+  const auto& solution = effect.solution;
+  nlohmann::json j;
+  j["energy"] = solution.energy;
+  j["nmult"] = solution.lambda.size();
+  j["contact_set_length"] = effect.samples.contact_set_length;
+  const auto& q = solution.constraint_points;
+  j["constraint_points_per_segment"] = {{"min", *std::min_element(q.begin(), q.end())},
+                                        {"max", *std::max_element(q.begin(), q.end())},
+                                        {"total", solution.constraint_s.size()}};
+  j["solver"] = {{"method", solution.qp.method},
+                 {"converged", solution.qp.converged},
+                 {"kkt_residual", solution.qp.kkt_residual},
+                 {"iterations", solution.qp.iterations},
+                 {"proximal_steps", solution.qp.proximal_steps}};
+  if (!solution.qp.fallback_reason.empty()) j["solver"]["fallback_reason"] = solution.qp.fallback_reason;
+  for (const auto& step : solution.qp.log)
+    j["solver"]["log"].push_back({{"iteration", step.iteration},
+                                  {"active_set_changes", step.active_set_changes},
+                                  {"kkt_residual", step.kkt_residual}});
+  j["n_trace"] = solution.n_trace;
+  j["seconds"] = {{"assembly", solution.seconds.assembly},
+                  {"factorization", solution.seconds.factorization},
+                  {"condensation", solution.seconds.condensation},
+                  {"contact_qp", solution.seconds.qp},
+                  {"recovery", solution.seconds.recovery},
+                  {"total", effect.seconds}};
+  return j;
+}
+
+// Every contact problem of the scene on one discretization, sharing `primal`.
+std::vector<ContactEffect> solve_contact_effects(const io::Scene& scene, const SceneDiscretization& d,
+                                                 const norms::PrimalOperators& primal, const SceneRunOptions& options,
+                                                 const std::string& where) {
+  std::vector<ContactEffect> effects;
+  for (const auto& problem : scene.contact_effects()) {
+    if (options.progress) options.progress("solving " + problem + where);
+    Stopwatch clock;
+    auto setup = contact_setup_of(scene, d, contact_problem_of(problem), primal, options.constraint_points);
+    auto solution = contact::solve_contact(setup);
+    const double seconds = clock.seconds();
+    auto samples = contact::sample_boundary(setup, solution);
+    effects.push_back({problem, std::move(setup), std::move(solution), std::move(samples), seconds});
+  }
+  return effects;
+}
+
+// The convergence effect: the scene's contact problems on `convergence_refinements` uniform
+// refinements beyond its own mesh, each level with its own operators shared by its problems; the
+// finest level is the reference for the errors of the others.
+void add_convergence_rows(const io::Scene& scene, const std::vector<ContactEffect>& base, const SceneDiscretization& base_mesh,
+                          const SceneRunOptions& options, OperatorLog& log, io::CsvTable& table) {
+  struct Level {
+    const SceneDiscretization* discretization;
+    const std::vector<ContactEffect>* effects;
+  };
+  std::vector<Level> levels{{&base_mesh, &base}};
+  std::vector<std::unique_ptr<SceneDiscretization>> refined_meshes;
+  std::vector<std::unique_ptr<std::vector<ContactEffect>>> refined_effects;
+  for (int k = 1; k <= scene.convergence_refinements; ++k) {
+    io::Scene refined = scene;
+    refined.refinements += k;
+    auto d = discretize_scene(refined);
+    OperatorLog level_log;
+    const norms::PrimalOperators primal(d->mesh, d->cell_degrees, &level_log);
+    refined_effects.push_back(std::make_unique<std::vector<ContactEffect>>(
+        solve_contact_effects(refined, *d, primal, options, fmt::format(" (convergence level {})", k))));
+    for (const auto& record : level_log.records())
+      log.record(fmt::format("{} (convergence level {})", record.name, k), record.rows, record.cols, record.seconds);
+    levels.push_back({d.get(), refined_effects.back().get()});
+    refined_meshes.push_back(std::move(d));
+  }
+  const Level& finest = levels.back();
+  for (std::size_t e = 0; e < finest.effects->size(); ++e)
+    for (std::size_t k = 0; k < levels.size(); ++k) {
+      const auto& d = *levels[k].discretization;
+      const auto& effect = (*levels[k].effects)[e];
+      const auto& reference = (*finest.effects)[e].solution;
+      table.add_row({effect.problem, static_cast<long long>(k), degree_text(scene.p, scene.p_rule),
+                     degree_text(scene.pc, scene.pc_rule), static_cast<long long>(d.contact->edges().size()),
+                     static_cast<long long>(d.boundary_mesh->n_segments()),
+                     static_cast<long long>(effect.solution.u.size()),
+                     static_cast<long long>(effect.solution.lambda.size()), effect.solution.energy,
+                     std::abs(effect.solution.energy - reference.energy),
+                     contact::multiplier_l2_distance(*d.multipliers, effect.solution.lambda_legendre,
+                                                     *finest.discretization->multipliers, reference.lambda_legendre),
+                     effect.seconds});
+    }
+}
+
+}  // namespace
+
+std::vector<std::string> refinement_columns() {
+  return {"problem", "level", "p", "pC", "n", "m", "ndofs", "nmult", "energy", "error_energy", "error_lambda", "seconds"};
+}
+
+nlohmann::json run_scene(const io::Scene& scene, const SceneRunOptions& options) {
+  Stopwatch clock;
+  auto say = [&](const std::string& line) {
+    if (options.progress) options.progress(line);
+  };
+  // 1. Meshes and degrees; the operators of S^p(T_h) are built on first use and shared.
+  const auto d = discretize_scene(scene);
+  OperatorLog log;
+  const norms::PrimalOperators primal(d->mesh, d->cell_degrees, &log);
+
+  // 2. The contact problems.
+  const std::vector<ContactEffect> contacts = solve_contact_effects(scene, *d, primal, options, "");
+
+  // 3. The inf-sup constant of the pairing: whether λ is unique.
+  nlohmann::json summary;
+  std::optional<io::CsvTable> mode;
+  if (scene.has_effect("infsup")) {
+    say("inf-sup constant");
+    infsup::InfSupSetup setup;
+    setup.mesh = &d->mesh;
+    setup.cell_degrees = d->cell_degrees;
+    setup.boundary_mesh = d->boundary_mesh.get();
+    setup.segment_degrees = d->segment_degrees;
+    setup.problem = infsup::parse_pairing_problem(scene.problem, scene.file);
+    setup.norm = infsup::parse_gram_norm(scene.norm, scene.file);
+    if (setup.problem == infsup::PairingProblem::friction) {
+      const Expression bound(scene.friction_bound, scene.file + ": key 'data.s'");
+      setup.friction_bound = [bound](const mesh::Point& x) { return bound(x.x(), x.y()); };
+    }
+    setup.primal = &primal;
+    const auto alpha = infsup::analyse_infsup(setup, infsup::EigenBackend::slepc);
+    summary["infsup"] = {{"alpha", alpha.alpha},         {"lambda_unique", !alpha.singular},
+                         {"problem", scene.problem},     {"norm", scene.norm},
+                         {"lambda_min", alpha.lambda_min}, {"lambda_max", alpha.lambda_max},
+                         {"Pi", alpha.pi},               {"eigensolver", alpha.method},
+                         {"residual", alpha.residual},   {"seconds", alpha.seconds}};
+    if (scene.wants_output("mode")) mode = infsup::sample_mode(d->mesh, *d->multipliers, alpha.mode);
+  }
+
+  // 4. Convergence under uniform refinement of every contact problem of the scene.
+  std::optional<io::CsvTable> convergence;
+  if (scene.has_effect("convergence")) {
+    convergence.emplace(refinement_columns());
+    add_convergence_rows(scene, contacts, *d, options, log, *convergence);
+  }
+
+  // 5. The summary, then every file at once.
+  summary["scene"] = scene.file;
+  summary["effects"] = scene.effects;
+  summary["p"] = degree_text(scene.p, scene.p_rule);
+  summary["pC"] = degree_text(scene.pc, scene.pc_rule);
+  summary["edges_on_contact"] = d->contact->edges().size();
+  summary["m"] = d->boundary_mesh->n_segments();
+  summary["ndofs"] = primal.space().n_dofs();
+  summary["nmult"] = d->multipliers->n_dofs();
+  for (const auto& effect : contacts) summary[effect.problem] = contact_summary(effect);
+  if (convergence) summary["convergence"] = {{"refinements", scene.convergence_refinements}, {"file", "convergence.csv"}};
+  for (const auto& record : log.records())
+    summary["operators"].push_back({{"name", record.name}, {"rows", record.rows}, {"cols", record.cols}, {"seconds", record.seconds}});
+  summary["seconds_total"] = clock.seconds();
+
+  io::ensure_writable_directory(options.out);
+  for (const auto& effect : contacts) {
+    if (scene.wants_output("boundary")) effect.samples.table.write(options.out / ("boundary_" + effect.problem + ".csv"));
+    if (scene.wants_output("vtu")) io::write_vtu(options.out / ("solution_" + effect.problem + ".vtu"), primal.space(), effect.solution.u);
+  }
+  if (mode) mode->write(options.out / "mode.csv");
+  if (convergence) convergence->write(options.out / "convergence.csv");
+  if (scene.wants_output("summary")) io::write_file_atomically(options.out / "summary.json", summary.dump(2) + "\n");
+  return summary;
+}
+
+}  // namespace hpcontact::studies

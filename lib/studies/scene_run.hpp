@@ -1,0 +1,36 @@
+// Running a scene: exactly the effects its [run] table asks for (contact problems (9), (13), (15),
+// the inf-sup constant, convergence under refinement), building each operator at most once, then
+// writing the outputs it asks for. `hpcontact solve` is this function plus option parsing.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "io/scene.hpp"
+#include "studies/scene_discretization.hpp"
+
+namespace hpcontact::studies {
+
+struct SceneRunOptions {
+  std::filesystem::path out;      ///< output folder (created when everything is computed)
+  ValueOrigin constraint_points;  ///< where the constraint-point count came from, for messages
+  std::function<void(const std::string&)> progress;  ///< one line per step, if given
+};
+
+/// Runs the effects of `scene` and writes into `out`:
+///   summary.json              (output "summary") every effect's results, the operators built with
+///                              their sizes and seconds, and timings
+///   boundary_<problem>.csv    (output "boundary") u, obstacle or bound, λ sampled on Γ_C
+///   solution_<problem>.vtu    (output "vtu") u on Ω
+///   mode.csv                  (output "mode", effect infsup) the eigenvector of α
+///   convergence.csv           (effect convergence) problem,level,p,pC,n,m,ndofs,nmult,energy,
+///                              error_energy,error_lambda,seconds; errors against the finest level
+/// Nothing is written unless every effect succeeded. Returns the summary.
+nlohmann::json run_scene(const io::Scene& scene, const SceneRunOptions& options);
+
+/// The columns of convergence.csv and of the work–precision study's rows.
+std::vector<std::string> refinement_columns();
+
+}  // namespace hpcontact::studies

@@ -1,0 +1,185 @@
+// The work–precision study: reading, solving, comparing with the reference, choosing the cheapest.
+#include "studies/work_precision.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+
+#include "contact/multiplier_distance.hpp"
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/csv_writer.hpp"
+#include "io/toml_reader.hpp"
+#include "studies/scene_discretization.hpp"
+
+namespace hpcontact::studies {
+namespace {
+
+const std::vector<std::string> kProblems{"signorini", "friction", "friction_s"};
+
+std::vector<std::string> problem_list(const io::TomlTable& table, const std::string& key,
+                                      const std::vector<std::string>& fallback) {
+  auto problems = table.string_list(key, fallback);
+  for (const auto& problem : problems)
+    if (std::find(kProblems.begin(), kProblems.end(), problem) == kProblems.end())
+      throw_bad_input(table.file(), table.qualified(key), problem, "any of signorini, friction, friction_s");
+  return problems;
+}
+
+/// The problem's effect only, so that parse-time checks ask for the data this problem needs.
+io::Scene for_problem(io::Scene scene, const std::string& problem) {
+  scene.effects = {problem};
+  return scene;
+}
+
+/// One solve, timed as the fastest of `repeats` when it is short (timer noise), kept with its
+/// discretization for the λ comparison.
+SceneContactRun timed_solve(const io::Scene& scene, const std::string& problem, int repeats) {
+  const ValueOrigin origin{scene.file, "solve.constraint_points"};
+  auto run = solve_scene_contact(scene, contact_problem_of(problem), origin);
+  for (int k = 1; k < repeats && run.seconds < 1.0; ++k)
+    run.seconds = std::min(run.seconds, solve_scene_contact(scene, contact_problem_of(problem), origin).seconds);
+  return run;
+}
+
+std::string degree_text(int value, const std::string& rule) { return rule.empty() ? std::to_string(value) : rule; }
+
+}  // namespace
+
+WorkPrecisionStudy read_work_precision_study(const std::string& path) {
+  const auto root = io::parse_toml_file(path);
+  WorkPrecisionStudy study;
+  study.file = path;
+  for (const char* section : {"study", "reference", "family"}) root.has(section);
+  root.reject_unknown_keys();
+  const auto head = root.table("study", true);
+  const std::string base = (std::filesystem::path(path).parent_path() / head.string("scene")).string();
+  study.problems = problem_list(head, "problems", kProblems);
+  for (const auto& text : head.string_list("tolerances", std::vector<std::string>{"1e-3", "1e-6", "1e-9"})) {
+    char* end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    if (*end != '\0' || !(value > 0 && value < 1)) throw_bad_input(path, "study.tolerances", text, "numbers in (0, 1)");
+    study.tolerances.push_back(value);
+  }
+  study.repeats = static_cast<int>(head.integer("repeats", 1, 20, 3));
+  head.reject_unknown_keys();
+
+  for (const auto& reference : root.table_array("reference", true)) {
+    const std::string problem = reference.choice("problem", kProblems);
+    const std::string where = fmt::format("{}: reference for {}", path, problem);
+    reference.has("set");
+    reference.reject_unknown_keys();
+    auto variants = io::scene_variants(base, reference.table("set"), reference.table("vary"), where);  // no vary: one scene
+    auto scene = for_problem(variants.front().scene, problem);
+    io::check_effects(scene, where);
+    if (scene.refinements < 1)
+      throw_bad_input(path, "reference.set.domain.refinements", std::to_string(scene.refinements),
+                      ">= 1: the reference's accuracy is estimated against it one refinement coarser");
+    auto coarser = scene;
+    coarser.refinements -= 1;
+    study.references.push_back({problem, scene, coarser});
+  }
+  for (const auto& problem : study.problems)
+    if (std::none_of(study.references.begin(), study.references.end(), [&](const auto& r) { return r.problem == problem; }))
+      throw_bad_input(path, "reference", "(none for " + problem + ")", "one [[reference]] per problem of study.problems");
+
+  int index = 0;
+  for (const auto& family : root.table_array("family", true)) {
+    ++index;
+    WorkPrecisionStudy::Family f;
+    f.name = family.string("name");
+    f.problems = problem_list(family, "problems", study.problems);
+    family.has("set");
+    family.has("vary");
+    family.reject_unknown_keys();
+    const std::string where = fmt::format("{}: family '{}'", path, f.name);
+    f.variants = io::scene_variants(base, family.table("set"), family.table("vary"), where);
+    for (const auto& problem : f.problems)
+      for (const auto& variant : f.variants) io::check_effects(for_problem(variant.scene, problem), where);
+    study.families.push_back(std::move(f));
+  }
+  return study;
+}
+
+void run_work_precision_study(const WorkPrecisionStudy& study, const std::filesystem::path& out,
+                              const std::function<void(int, int, const std::string&)>& progress) {
+  int total = 2 * static_cast<int>(study.problems.size()), done = 0;
+  for (const auto& family : study.families)
+    for (const auto& problem : family.problems)
+      total += std::count(study.problems.begin(), study.problems.end(), problem) * static_cast<int>(family.variants.size());
+  auto say = [&](const std::string& label) {
+    if (progress) progress(done, total, label);
+    ++done;
+  };
+
+  io::CsvTable rows({"problem", "p", "pC", "n", "m", "ndofs", "nmult", "error_energy", "error_lambda", "seconds", "family", "energy"});
+  io::CsvTable references({"problem", "energy", "energy_coarser", "accuracy_energy", "accuracy_lambda", "ndofs", "seconds"});
+  io::CsvTable cheapest({"problem", "tolerance", "verdict", "family", "p", "pC", "n", "ndofs", "error_energy", "seconds"});
+  for (const auto& problem : study.problems) {
+    // 1. The reference and its accuracy.
+    const auto& reference = *std::find_if(study.references.begin(), study.references.end(),
+                                          [&](const auto& r) { return r.problem == problem; });
+    say(problem + ": reference");
+    const auto fine = timed_solve(for_problem(reference.scene, problem), problem, 1);
+    say(problem + ": reference, one refinement coarser");
+    const auto coarse = timed_solve(for_problem(reference.coarser, problem), problem, 1);
+    const double accuracy_energy = std::abs(fine.solution.energy - coarse.solution.energy);
+    const double accuracy_lambda = contact::multiplier_l2_distance(
+        *coarse.discretization->multipliers, coarse.solution.lambda_legendre, *fine.discretization->multipliers,
+        fine.solution.lambda_legendre);
+    references.add_row({problem, fine.solution.energy, coarse.solution.energy, accuracy_energy, accuracy_lambda,
+                        static_cast<long long>(fine.solution.u.size()), fine.seconds});
+
+    // 2. Every family's runs against it.
+    struct Best {
+      double seconds = std::numeric_limits<double>::infinity();
+      std::vector<io::CsvCell> row;
+    };
+    std::vector<Best> best(study.tolerances.size());
+    for (const auto& family : study.families) {
+      if (std::find(family.problems.begin(), family.problems.end(), problem) == family.problems.end()) continue;
+      for (const auto& variant : family.variants) {
+        say(fmt::format("{}: {} {}", problem, family.name, variant.label));
+        const auto& scene = variant.scene;
+        const auto run = timed_solve(for_problem(scene, problem), problem, study.repeats);
+        const auto& d = *run.discretization;
+        const double error_energy = std::abs(run.solution.energy - fine.solution.energy);
+        const double error_lambda = contact::multiplier_l2_distance(*d.multipliers, run.solution.lambda_legendre,
+                                                                    *fine.discretization->multipliers,
+                                                                    fine.solution.lambda_legendre);
+        const auto p = degree_text(scene.p, scene.p_rule), pc = degree_text(scene.pc, scene.pc_rule);
+        const auto n = static_cast<long long>(d.contact->edges().size());
+        const auto ndofs = static_cast<long long>(run.solution.u.size());
+        rows.add_row({problem, p, pc, n, static_cast<long long>(d.boundary_mesh->n_segments()), ndofs,
+                      static_cast<long long>(run.solution.lambda.size()), error_energy, error_lambda, run.seconds,
+                      family.name, run.solution.energy});
+        for (std::size_t t = 0; t < study.tolerances.size(); ++t)
+          if (error_energy + accuracy_energy <= study.tolerances[t] && run.seconds < best[t].seconds)
+            best[t] = {run.seconds, {family.name, p, pc, n, ndofs, error_energy, run.seconds}};
+      }
+    }
+    // 3. The cheapest run per tolerance, where the reference can decide it.
+    for (std::size_t t = 0; t < study.tolerances.size(); ++t) {
+      const double tolerance = study.tolerances[t];
+      std::vector<io::CsvCell> row{problem, fmt::format("{:g}", tolerance)};
+      if (tolerance < accuracy_energy) {
+        row.insert(row.end(), {std::string("below reference accuracy"), "", "", "", "", "", "", ""});
+      } else if (best[t].row.empty()) {
+        row.insert(row.end(), {std::string("not reached"), "", "", "", "", "", "", ""});
+      } else {
+        row.push_back(std::string("reached"));
+        row.insert(row.end(), best[t].row.begin(), best[t].row.end());
+      }
+      cheapest.add_row(row);
+    }
+  }
+  io::ensure_writable_directory(out);
+  rows.write(out / "work_precision.csv");
+  references.write(out / "reference.csv");
+  cheapest.write(out / "cheapest.csv");
+}
+
+}  // namespace hpcontact::studies
