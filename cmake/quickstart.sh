@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # One-command set-up and run on Debian 12: installs the missing Debian packages (apt-get, through
 # sudo when not root), configures and builds with CMake (Release, build/), then runs
-#   study  the main job: the studies, writing CSV and PNG into results/ (and the README figures)
+#   study  the main job: the studies (convergence, stability, the paper's §7 figures, work-precision),
+#          writing CSV and PNG into results/ (and the README figures)
 #   test   the GoogleTest suite through CTest; then the same suite built with clang under
 #          AddressSanitizer + UndefinedBehaviorSanitizer (build-sanitize/), and the scene fuzzer
 #          (libFuzzer) for 60 s from its seed corpus
@@ -106,4 +107,10 @@ done
 for problem in signorini friction friction_s; do
   cp "results/paper/panels/panels_$problem.png" "studies/paper/panels_$problem.png"
 done
+echo "== work-precision study: studies/work_precision/study.toml -> results/work_precision" >&2
+build/bin/hpcontact work-precision studies/work_precision/study.toml --out results/work_precision
+"$python" plots/plot_work_precision.py results/work_precision
+cp results/work_precision/work_precision.png studies/work_precision/work_precision.png
+cp results/work_precision/cheapest.csv studies/work_precision/cheapest.csv
+cp results/work_precision/reference.csv studies/work_precision/reference.csv
 echo "quickstart: done; CSV and PNG in results/" >&2

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <random>
 
 #include "assembly/coupling.hpp"
@@ -149,11 +150,12 @@ namespace {
 struct DistanceIntegrand {
   const space::MultiplierSpace *a, *b;
   const Eigen::VectorXd *ca, *cb;
+  std::function<double(double)> weight = [](double) { return 1.0; };
 };
 
 double squared_difference(double s, void* data) {
   const auto& d = *static_cast<DistanceIntegrand*>(data);
-  const double difference = d.a->evaluate(*d.ca, s) - d.b->evaluate(*d.cb, s);
+  const double difference = d.weight(s) * (d.a->evaluate(*d.ca, s) - d.b->evaluate(*d.cb, s));
   return difference * difference;
 }
 
@@ -169,7 +171,7 @@ TEST(MultiplierDistance, ExactOnTheCommonRefinement) {
   Eigen::VectorXd ca(a.n_dofs()), cb(b.n_dofs());
   for (auto& c : ca) c = value(random);
   for (auto& c : cb) c = value(random);
-  DistanceIntegrand data{&a, &b, &ca, &cb};
+  DistanceIntegrand data{&a, &b, &ca, &cb, [](double) { return 1.0; }};
   gsl_function f{&squared_difference, &data};
   std::vector<double> points{0.0, 0.5, 2.0 / 3.0, 4.0 / 3.0, 1.7, 2.0};
   gsl_integration_workspace* workspace = gsl_integration_workspace_alloc(1000);
@@ -178,6 +180,12 @@ TEST(MultiplierDistance, ExactOnTheCommonRefinement) {
   gsl_integration_workspace_free(workspace);
   EXPECT_NEAR(contact::multiplier_l2_distance(a, ca, b, cb), std::sqrt(result), 1e-12);
   EXPECT_NEAR(contact::multiplier_l2_distance(a, ca, a, ca), 0.0, 1e-15);
+  // With the weight w(s) = (2 - s)², as s = (1 - x)² on the §7 Γ_C: ∫ w² (μ_a − μ_b)².
+  data.weight = [](double s) { return (2.0 - s) * (2.0 - s); };
+  workspace = gsl_integration_workspace_alloc(1000);
+  gsl_integration_qagp(&f, points.data(), points.size(), 1e-14, 1e-12, 1000, workspace, &result, &error);
+  gsl_integration_workspace_free(workspace);
+  EXPECT_NEAR(contact::multiplier_l2_distance(a, ca, b, cb, data.weight), std::sqrt(result), 1e-12);
   EXPECT_THROW(contact::multiplier_l2_distance(a, ca, space::MultiplierSpace(mesh::BoundaryMesh::uniform(1.0, 2), 1),
                                                Eigen::VectorXd::Zero(4)),
                std::invalid_argument);

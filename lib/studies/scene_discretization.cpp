@@ -75,6 +75,17 @@ contact::ContactSetup contact_setup_of(const io::Scene& scene, const SceneDiscre
   return setup;
 }
 
+std::function<double(double)> multiplier_error_weight(const io::Scene& scene, const SceneDiscretization& d,
+                                                      contact::ContactProblem problem) {
+  if (problem != contact::ContactProblem::friction) return {};
+  const Expression bound(scene.friction_bound, scene.file + ": key 'data.s'");
+  const mesh::ContactBoundary* contact = d.contact.get();
+  return [bound, contact](double s) {
+    const mesh::Point x = contact->point_at(s);
+    return bound(x.x(), x.y());
+  };
+}
+
 SceneContactRun solve_scene_contact(const io::Scene& scene, contact::ContactProblem problem,
                                     const ValueOrigin& origin, OperatorLog* log) {
   Stopwatch clock;

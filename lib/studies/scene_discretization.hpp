@@ -3,6 +3,7 @@
 // work–precision study, so that all read scenes the same way.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -45,6 +46,12 @@ struct ValueOrigin {
 contact::ContactSetup contact_setup_of(const io::Scene& scene, const SceneDiscretization& discretization,
                                        contact::ContactProblem problem, const norms::PrimalOperators& primal,
                                        const ValueOrigin& origin);
+
+/// The weight of the norm in which multiplier errors of `problem` are measured, as a function of
+/// the arc length on Γ_C: s for (13), where the data determine only sλ (λ itself not where s
+/// vanishes, so ‖λ_H − λ‖ would measure an undetermined part); none (L²) for (9) and (15).
+std::function<double(double)> multiplier_error_weight(const io::Scene& scene, const SceneDiscretization& discretization,
+                                                      contact::ContactProblem problem);
 
 /// One contact problem of a scene, solved from scratch with its own operators.
 struct SceneContactRun {

@@ -113,8 +113,10 @@ void add_convergence_rows(const io::Scene& scene, const std::vector<ContactEffec
                      static_cast<long long>(effect.solution.u.size()),
                      static_cast<long long>(effect.solution.lambda.size()), effect.solution.energy,
                      std::abs(effect.solution.energy - reference.energy),
-                     contact::multiplier_l2_distance(*d.multipliers, effect.solution.lambda_legendre,
-                                                     *finest.discretization->multipliers, reference.lambda_legendre),
+                     contact::multiplier_l2_distance(
+                         *d.multipliers, effect.solution.lambda_legendre, *finest.discretization->multipliers,
+                         reference.lambda_legendre,
+                         multiplier_error_weight(scene, *finest.discretization, contact_problem_of(effect.problem))),
                      effect.seconds});
     }
 }

@@ -127,9 +127,10 @@ void run_work_precision_study(const WorkPrecisionStudy& study, const std::filesy
     say(problem + ": reference, one refinement coarser");
     const auto coarse = timed_solve(for_problem(reference.coarser, problem), problem, 1);
     const double accuracy_energy = std::abs(fine.solution.energy - coarse.solution.energy);
+    const auto weight = multiplier_error_weight(reference.scene, *fine.discretization, contact_problem_of(problem));
     const double accuracy_lambda = contact::multiplier_l2_distance(
         *coarse.discretization->multipliers, coarse.solution.lambda_legendre, *fine.discretization->multipliers,
-        fine.solution.lambda_legendre);
+        fine.solution.lambda_legendre, weight);
     references.add_row({problem, fine.solution.energy, coarse.solution.energy, accuracy_energy, accuracy_lambda,
                         static_cast<long long>(fine.solution.u.size()), fine.seconds});
 
@@ -149,7 +150,7 @@ void run_work_precision_study(const WorkPrecisionStudy& study, const std::filesy
         const double error_energy = std::abs(run.solution.energy - fine.solution.energy);
         const double error_lambda = contact::multiplier_l2_distance(*d.multipliers, run.solution.lambda_legendre,
                                                                     *fine.discretization->multipliers,
-                                                                    fine.solution.lambda_legendre);
+                                                                    fine.solution.lambda_legendre, weight);
         const auto p = degree_text(scene.p, scene.p_rule), pc = degree_text(scene.pc, scene.pc_rule);
         const auto n = static_cast<long long>(d.contact->edges().size());
         const auto ndofs = static_cast<long long>(run.solution.u.size());

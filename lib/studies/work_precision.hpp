@@ -41,7 +41,8 @@ WorkPrecisionStudy read_work_precision_study(const std::string& path);
 /// Runs the study and writes into `out`:
 ///   work_precision.csv  problem,p,pC,n,m,ndofs,nmult,error_energy,error_lambda,seconds,family,energy
 ///                       (n: edges of T_h on Γ_C, m: segments of T_{C,H}; error_energy = |E(u_h) − E_ref|,
-///                       error_lambda = ‖λ_H − λ_ref‖_{L²(Γ_C)}; seconds: wall time meshes → u)
+///                       error_lambda = ‖λ_H − λ_ref‖_{L²(Γ_C)} for (9), (15), ‖s(λ_H − λ_ref)‖_{L²(Γ_C)} for (13)
+///                       (studies::multiplier_error_weight); seconds: wall time meshes → u)
 ///   reference.csv       problem,energy,energy_coarser,accuracy_energy,accuracy_lambda,ndofs,seconds
 ///   cheapest.csv        problem,tolerance,verdict,family,p,pC,n,ndofs,error_energy,seconds: the fastest
 ///                       run whose error is certainly below the tolerance, error_energy + the
