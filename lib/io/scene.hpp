@@ -60,6 +60,10 @@ struct Scene {
   // [convergence]: levels of uniform refinement beyond the scene's own mesh.
   int convergence_refinements = 3;
 
+  /// p and p_C as written: the integer, or the degree rule's text.
+  std::string p_label() const { return p_rule.empty() ? std::to_string(p) : p_rule; }
+  std::string pc_label() const { return pc_rule.empty() ? std::to_string(pc) : pc_rule; }
+
   bool has_effect(const std::string& effect) const;
   /// The contact problems among the effects, in the order signorini, friction, friction_s.
   std::vector<std::string> contact_effects() const;

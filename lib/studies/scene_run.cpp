@@ -27,8 +27,6 @@ struct ContactEffect {
   double seconds = 0.0;
 };
 
-std::string degree_text(int value, const std::string& rule) { return rule.empty() ? std::to_string(value) : rule; }
-
 nlohmann::json contact_summary(const ContactEffect& effect) {
   const auto& solution = effect.solution;
   nlohmann::json j;
@@ -107,8 +105,8 @@ void add_convergence_rows(const io::Scene& scene, const std::vector<ContactEffec
       const auto& d = *levels[k].discretization;
       const auto& effect = (*levels[k].effects)[e];
       const auto& reference = (*finest.effects)[e].solution;
-      table.add_row({effect.problem, static_cast<long long>(k), degree_text(scene.p, scene.p_rule),
-                     degree_text(scene.pc, scene.pc_rule), static_cast<long long>(d.contact->edges().size()),
+      table.add_row({effect.problem, static_cast<long long>(k), scene.p_label(),
+                     scene.pc_label(), static_cast<long long>(d.contact->edges().size()),
                      static_cast<long long>(d.boundary_mesh->n_segments()),
                      static_cast<long long>(effect.solution.u.size()),
                      static_cast<long long>(effect.solution.lambda.size()), effect.solution.energy,
@@ -176,8 +174,8 @@ nlohmann::json run_scene(const io::Scene& scene, const SceneRunOptions& options)
   // 5. The summary, then every file at once.
   summary["scene"] = scene.file;
   summary["effects"] = scene.effects;
-  summary["p"] = degree_text(scene.p, scene.p_rule);
-  summary["pC"] = degree_text(scene.pc, scene.pc_rule);
+  summary["p"] = scene.p_label();
+  summary["pC"] = scene.pc_label();
   summary["edges_on_contact"] = d->contact->edges().size();
   summary["m"] = d->boundary_mesh->n_segments();
   summary["ndofs"] = primal.space().n_dofs();

@@ -45,8 +45,6 @@ SceneContactRun timed_solve(const io::Scene& scene, const std::string& problem, 
   return run;
 }
 
-std::string degree_text(int value, const std::string& rule) { return rule.empty() ? std::to_string(value) : rule; }
-
 }  // namespace
 
 WorkPrecisionStudy read_work_precision_study(const std::string& path) {
@@ -151,7 +149,7 @@ void run_work_precision_study(const WorkPrecisionStudy& study, const std::filesy
         const double error_lambda = contact::multiplier_l2_distance(*d.multipliers, run.solution.lambda_legendre,
                                                                     *fine.discretization->multipliers,
                                                                     fine.solution.lambda_legendre, weight);
-        const auto p = degree_text(scene.p, scene.p_rule), pc = degree_text(scene.pc, scene.pc_rule);
+        const auto p = scene.p_label(), pc = scene.pc_label();
         const auto n = static_cast<long long>(d.contact->edges().size());
         const auto ndofs = static_cast<long long>(run.solution.u.size());
         rows.add_row({problem, p, pc, n, static_cast<long long>(d.boundary_mesh->n_segments()), ndofs,
