@@ -84,6 +84,12 @@ done
 for picture in stable_map alpha_vs_h alpha_vs_pi modes; do
   cp "results/stability/$picture.png" "studies/stability/$picture.png"
 done
+echo "== stability on geometric meshes: studies/stability/graded*.toml -> results/stability_graded*" >&2
+for study in graded graded_anisotropic; do
+  build/bin/hpcontact sweep "studies/stability/$study.toml" --out "results/stability_$study"
+  "$python" plots/plot_stability.py "results/stability_$study"
+  cp "results/stability_$study/alpha_vs_h.png" "studies/stability/${study}_alpha_vs_h.png"
+done
 echo "== contact problems of Figures 1, 4, 6: studies/paper/*.toml -> results/paper" >&2
 for figure in figure1_signorini figure4_friction figure6_friction_s; do
   build/bin/hpcontact solve "studies/paper/$figure.toml" --out "results/paper/$figure"

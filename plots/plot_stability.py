@@ -43,7 +43,8 @@ def plot_alpha_vs_h(rows, folder):
     groups = defaultdict(list)
     for row in rows:
         key = (row["problem"], row["norm"], float(row["ratio"]), int(row["p"]), int(row["pC"]))
-        groups[key].append((float(row["h"]), float(row["alpha"])))
+        # h_min, the shortest edge on Γ_C: h on uniform meshes, the finest layer on graded ones.
+        groups[key].append((float(row["h_min"]), float(row["alpha"])))
     ratios = sorted({key[2] for key in groups}, reverse=True)
     figure, axes = plt.subplots(1, len(ratios), figsize=(4.2 * len(ratios), 4.2), squeeze=False)
     for axis, ratio in zip(axes[0], ratios):
@@ -55,11 +56,11 @@ def plot_alpha_vs_h(rows, folder):
             axis.loglog(h, [max(a, 1e-8) for a in alpha], "o-", markersize=3, linewidth=1,
                         label=f"p={key[3]} pC={key[4]}" + ("" if key[0] == "signorini" else f" {key[0]}"))
         axis.set_title(f"h/H = {ratio_label(ratio)}")
-        axis.set_xlabel("h")
+        axis.set_xlabel(r"$h_{\min}$ (shortest edge on $\Gamma_C$)")
         axis.grid(True, which="both", alpha=0.3)
     axes[0][0].set_ylabel(r"$\alpha$")
     axes[0][-1].legend(fontsize=6, ncol=2, loc="lower right")
-    figure.suptitle(r"inf-sup constant $\alpha$ against h (slope 1 = unstable pairing)")
+    figure.suptitle(r"inf-sup constant $\alpha$ against $h_{\min}$ (slope 1 = unstable pairing)")
     figure.tight_layout()
     save(figure, folder / "alpha_vs_h.png")
 

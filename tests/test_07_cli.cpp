@@ -188,7 +188,9 @@ TEST(Cli, BenchmarkWritesRatiosAgainstTheBaselineOfTheSameRun) {
 // one BLAS thread per process, so that every floating-point operation is the same.
 TEST(Cli, SweepUnderMpirunWritesTheSerialCsv) {
   const auto dir = scratch("sweep_mpi");
-  std::ofstream(dir / "sweep.toml") << "[sweep]\np = \"1..3\"\npC = \"0..2\"\nn = [4, 8, 16]\n"
+  std::filesystem::copy_file(HPCONTACT_SOURCE_DIR "/studies/stability/square.toml", dir / "square.toml");
+  std::ofstream(dir / "sweep.toml") << "[sweep]\nscene = \"square.toml\"\np = \"1..3\"\npC = \"0..2\"\n"
+                                       "levels = { \"domain.n_x\" = [4, 8, 16], \"domain.n_y\" = [4, 8, 16] }\n"
                                        "ratio = [1, \"1/2\"]\nnorm = [\"interp\", \"extension\"]\n"
                                        "problem = [\"signorini\", \"friction\"]\n";
   const std::string env = "env OPENBLAS_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ";

@@ -1,12 +1,18 @@
 // Stage 10, inf-sup constant: the paper's §7 pairings (stable / decaying), SLEPc against the
 // dense path on stable, unstable and singular configurations, convergence of both H^{-1/2}
-// reference realizations, the friction variant (22) with supp s ≠ Γ_C, and mode sampling.
+// reference realizations, the friction variant (22) with supp s ≠ Γ_C, mode sampling, and
+// stability sweeps over the levels of a base scene.
 #include <gtest/gtest.h>
 
 #include "slepc_test_environment.hpp"
 #include <slepcsys.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <sstream>
 
 #include "core/error.hpp"
 #include "mesh/contact_boundary.hpp"
@@ -14,6 +20,7 @@
 #include "space/multiplier_space.hpp"
 #include "infsup/infsup_analysis.hpp"
 #include "mesh/rectangle_mesh.hpp"
+#include "studies/stability_sweep.hpp"
 
 using namespace hpcontact;
 
@@ -183,4 +190,147 @@ TEST(InfSup, InterpolationGramQuadratureEqualsDenseEigendecomposition) {
   const double dense_alpha = alpha(c).alpha;
   c.interpolation.dense_limit = 0;
   EXPECT_NEAR(alpha(c).alpha, dense_alpha, 1e-9);
+}
+
+// Sweeps read a base scene: on the §7 square with n × n levels, every row of alpha.csv equals α
+// computed on the built-in geometry (make_paper_square_mesh, uniform T_{C,H}), and rerunning the
+// sweep into the same folder computes nothing (the file is unchanged).
+namespace {
+
+std::filesystem::path sweep_folder(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / ("hpcontact_sweep_" + name);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+const char* kSquareScene = R"toml(
+[domain]
+n_x = 4
+n_y = 4
+[boundary]
+contact = "abs(y + 1) < 1e-9"
+dirichlet = "abs(y - 1) < 1e-9 || (abs(x - 1) < 1e-9 && y > 0)"
+[contact_mesh]
+ratio = 1
+[discretization]
+p = 2
+pC = 1
+[data]
+s = "(1 - x)^2"
+)toml";
+
+std::vector<std::map<std::string, std::string>> read_rows(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> header;
+  std::stringstream head(line);
+  for (std::string cell; std::getline(head, cell, ',');) header.push_back(cell);
+  std::vector<std::map<std::string, std::string>> rows;
+  while (std::getline(in, line)) {
+    std::stringstream cells(line);
+    std::map<std::string, std::string> row;
+    for (std::size_t k = 0; k < header.size() && std::getline(cells, row[header[k]], ','); ++k) {}
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+std::string text_of(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+std::string sweep_error(const std::filesystem::path& dir, const std::string& sweep_text) {
+  std::ofstream(dir / "sweep.toml") << sweep_text;
+  try {
+    studies::read_stability_sweep((dir / "sweep.toml").string());
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "(no error)";
+}
+
+}  // namespace
+
+TEST(Sweep, SceneLevelsGiveTheAlphaOfTheBuiltInGeometryAndResume) {
+  const auto dir = sweep_folder("levels");
+  std::ofstream(dir / "square.toml") << kSquareScene;
+  std::ofstream(dir / "sweep.toml") << R"toml([sweep]
+scene = "square.toml"
+levels = { "domain.n_x" = [4, 8], "domain.n_y" = [4, 8] }
+p = [1, 3]
+pC = "0..2"
+ratio = [1, "1/2"]
+norm = ["interp", "extension"]
+problem = ["signorini", "friction"]
+eigensolver = "dense"
+)toml";
+  const auto sweep = studies::read_stability_sweep((dir / "sweep.toml").string());
+  ASSERT_EQ(sweep.levels.size(), 2u);
+  studies::run_stability_sweep(sweep, dir / "alpha.csv");
+  const auto rows = read_rows(dir / "alpha.csv");
+  // Pairs with p_C < p: (1, 0), (3, 0), (3, 1), (3, 2); × 2 levels × 2 ratios × 2 norms × 2 problems.
+  ASSERT_EQ(rows.size(), 4u * 2 * 2 * 2 * 2);
+  for (const auto& row : rows) {
+    Configuration c{std::stoi(row.at("p")), std::stoi(row.at("pC")), std::stoi(row.at("n")), std::stoi(row.at("m"))};
+    c.norm = infsup::parse_gram_norm(row.at("norm"), "test");
+    c.problem = infsup::parse_pairing_problem(row.at("problem"), "test");
+    EXPECT_EQ(std::stoi(row.at("level")), c.n == 4 ? 1 : 2);
+    EXPECT_NEAR(std::stod(row.at("alpha")), alpha(c).alpha, 1e-9) << row.at("problem") << " " << row.at("norm")
+                                                                  << " p " << c.p << " pC " << c.pc << " n " << c.n;
+  }
+  const std::string first = text_of(dir / "alpha.csv");
+  int calls = 0;
+  studies::run_stability_sweep(sweep, dir / "alpha.csv", [&](int, int, const std::string&) { ++calls; });
+  EXPECT_EQ(calls, 0);
+  EXPECT_EQ(text_of(dir / "alpha.csv"), first);
+}
+
+// Without p, pC and ratio the sweep uses the scene's own: here a degree rule and a contact mesh
+// of m segments, over levels given by uniform refinements (m follows: 2, 4, 8).
+TEST(Sweep, SceneDegreeRulesAndContactMeshWhenTheSweepGivesNone) {
+  const auto dir = sweep_folder("rules");
+  std::string scene = kSquareScene;
+  scene.replace(scene.find("ratio = 1"), 9, "m = 2");
+  scene.replace(scene.find("p = 2\n"), 6, "p = \"x < 0 ? 2 : 3\"\n");
+  std::ofstream(dir / "square.toml") << scene;
+  std::ofstream(dir / "sweep.toml") << R"toml([sweep]
+scene = "square.toml"
+levels = { "domain.refinements" = "0..2" }
+)toml";
+  const auto sweep = studies::read_stability_sweep((dir / "sweep.toml").string());
+  studies::run_stability_sweep(sweep, dir / "alpha.csv");
+  const auto rows = read_rows(dir / "alpha.csv");
+  ASSERT_EQ(rows.size(), 3u);
+  for (int level = 0; level < 3; ++level) {
+    const auto& row = rows[level];
+    EXPECT_EQ(row.at("p"), "2");   // the smallest p_T of the rule
+    EXPECT_EQ(row.at("pC"), "1");
+    EXPECT_EQ(std::stoi(row.at("n")), 4 << level);
+    EXPECT_EQ(std::stoi(row.at("m")), 2 << level);
+    EXPECT_EQ(row.at("problem"), "signorini");
+    EXPECT_GT(std::stod(row.at("alpha")), 0.1);  // h/H = 1/2 with p_C < p: stable
+  }
+}
+
+TEST(Sweep, BadInputNamesTheKeyAndTheLevel) {
+  const auto dir = sweep_folder("bad");
+  std::ofstream(dir / "square.toml") << kSquareScene;
+  std::string scene_without_s = kSquareScene;
+  scene_without_s.resize(scene_without_s.find("[data]"));
+  std::ofstream(dir / "no_s.toml") << scene_without_s;
+  auto contains = [](const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; };
+  std::string error = sweep_error(dir, "[sweep]\nscene = \"missing.toml\"\n");
+  EXPECT_TRUE(contains(error, "sweep.scene")) << error;
+  error = sweep_error(dir, "[sweep]\nscene = \"square.toml\"\nlevels = { \"domain.n_x\" = [4, 6], \"domain.n_y\" = [4, 6] }\nratio = \"1/4\"\n");
+  EXPECT_TRUE(contains(error, "level 2")) << error;
+  EXPECT_TRUE(contains(error, "contact_mesh.ratio")) << error;
+  error = sweep_error(dir, "[sweep]\nscene = \"no_s.toml\"\nproblem = \"friction\"\n");
+  EXPECT_TRUE(contains(error, "data.s")) << error;
+  error = sweep_error(dir, "[sweep]\nscene = \"square.toml\"\np = 0\n");
+  EXPECT_TRUE(contains(error, "sweep.p")) << error;
+  error = sweep_error(dir, "[sweep]\nscene = \"square.toml\"\nlevel = { \"domain.n_x\" = [4] }\n");
+  EXPECT_TRUE(contains(error, "levels")) << error;  // unknown key, nearest suggested
 }

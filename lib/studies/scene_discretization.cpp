@@ -86,6 +86,27 @@ std::function<double(double)> multiplier_error_weight(const io::Scene& scene, co
   };
 }
 
+infsup::InfSupSetup infsup_setup_of(const io::Scene& scene, const mesh::QuadMesh& mesh, std::vector<int> cell_degrees,
+                                    const mesh::BoundaryMesh& boundary_mesh, std::vector<int> segment_degrees,
+                                    const std::string& problem, const std::string& norm,
+                                    const norms::PrimalOperators& primal) {
+  infsup::InfSupSetup setup;
+  setup.mesh = &mesh;
+  setup.cell_degrees = std::move(cell_degrees);
+  setup.boundary_mesh = &boundary_mesh;
+  setup.segment_degrees = std::move(segment_degrees);
+  setup.problem = infsup::parse_pairing_problem(problem, scene.file);
+  setup.norm = infsup::parse_gram_norm(norm, scene.file);
+  if (setup.problem == infsup::PairingProblem::friction) {
+    if (scene.friction_bound.empty())
+      throw_bad_input(scene.file, "data.s", "(missing)", "the friction pairing (22) needs the friction bound s");
+    const Expression bound(scene.friction_bound, scene.file + ": key 'data.s'");
+    setup.friction_bound = [bound](const mesh::Point& x) { return bound(x.x(), x.y()); };
+  }
+  setup.primal = &primal;
+  return setup;
+}
+
 SceneContactRun solve_scene_contact(const io::Scene& scene, contact::ContactProblem problem,
                                     const ValueOrigin& origin, OperatorLog* log) {
   Stopwatch clock;

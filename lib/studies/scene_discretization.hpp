@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "contact/contact_problem.hpp"
+#include "infsup/infsup_operators.hpp"
 #include "io/scene.hpp"
 #include "mesh/boundary_mesh.hpp"
 #include "mesh/contact_boundary.hpp"
@@ -52,6 +53,14 @@ contact::ContactSetup contact_setup_of(const io::Scene& scene, const SceneDiscre
 /// vanishes, so ‖λ_H − λ‖ would measure an undetermined part); none (L²) for (9) and (15).
 std::function<double(double)> multiplier_error_weight(const io::Scene& scene, const SceneDiscretization& discretization,
                                                       contact::ContactProblem problem);
+
+/// The inf-sup pairing `problem` ("signorini": (11), "friction": (22) with the scene's s) in the
+/// H^{-1/2} realization `norm` on T_h (`mesh`, `cell_degrees`) and T_{C,H} (`boundary_mesh`,
+/// `segment_degrees`); `primal` must belong to T_h. @throws InputError for a bad problem or norm.
+infsup::InfSupSetup infsup_setup_of(const io::Scene& scene, const mesh::QuadMesh& mesh, std::vector<int> cell_degrees,
+                                    const mesh::BoundaryMesh& boundary_mesh, std::vector<int> segment_degrees,
+                                    const std::string& problem, const std::string& norm,
+                                    const norms::PrimalOperators& primal);
 
 /// One contact problem of a scene, solved from scratch with its own operators.
 struct SceneContactRun {

@@ -143,18 +143,8 @@ nlohmann::json run_scene(const io::Scene& scene, const SceneRunOptions& options)
   std::optional<io::CsvTable> mode;
   if (scene.has_effect("infsup")) {
     say("inf-sup constant");
-    infsup::InfSupSetup setup;
-    setup.mesh = &d->mesh;
-    setup.cell_degrees = d->cell_degrees;
-    setup.boundary_mesh = d->boundary_mesh.get();
-    setup.segment_degrees = d->segment_degrees;
-    setup.problem = infsup::parse_pairing_problem(scene.problem, scene.file);
-    setup.norm = infsup::parse_gram_norm(scene.norm, scene.file);
-    if (setup.problem == infsup::PairingProblem::friction) {
-      const Expression bound(scene.friction_bound, scene.file + ": key 'data.s'");
-      setup.friction_bound = [bound](const mesh::Point& x) { return bound(x.x(), x.y()); };
-    }
-    setup.primal = &primal;
+    const auto setup = infsup_setup_of(scene, d->mesh, d->cell_degrees, *d->boundary_mesh, d->segment_degrees,
+                                       scene.problem, scene.norm, primal);
     const auto alpha = infsup::analyse_infsup(setup, infsup::EigenBackend::slepc);
     summary["infsup"] = {{"alpha", alpha.alpha},         {"lambda_unique", !alpha.singular},
                          {"problem", scene.problem},     {"norm", scene.norm},

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <tuple>
@@ -17,7 +18,8 @@
 #include "core/petsc_session.hpp"
 #include "io/atomic_file.hpp"
 #include "io/toml_reader.hpp"
-#include "mesh/rectangle_mesh.hpp"
+#include "mesh/contact_boundary.hpp"
+#include "studies/scene_discretization.hpp"
 #include "norms/h_minus_half_gram.hpp"
 #include "norms/primal_operators.hpp"
 #include "space/multiplier_space.hpp"
@@ -53,6 +55,31 @@ std::vector<int> to_int(const std::vector<long long>& values) {
   return {values.begin(), values.end()};
 }
 
+/// The scene of one point: the level's scene with the sweep's p, p_C (replacing degree rules) and
+/// ratio (replacing the scene's m, ratio or breakpoints) where the sweep gives them.
+io::Scene point_scene(io::Scene scene, int p, int pc, const std::string& ratio) {
+  if (p > 0) {
+    scene.p = p;
+    scene.p_rule.clear();
+  }
+  if (pc >= 0) {
+    scene.pc = pc;
+    scene.pc_rule.clear();
+  }
+  if (!ratio.empty()) {
+    scene.ratio = ratio;
+    scene.m = 0;
+    scene.breakpoints.clear();
+  }
+  return scene;
+}
+
+/// "level 2 (domain.n_x=24 domain.n_y=24)", for messages and progress.
+std::string level_name(const StabilitySweep& sweep, std::size_t level) {
+  const auto& label = sweep.levels[level].label;
+  return fmt::format("level {}{}", level + 1, label.empty() ? "" : " (" + label + ")");
+}
+
 }  // namespace
 
 StabilitySweep read_stability_sweep(const std::string& path) {
@@ -60,26 +87,22 @@ StabilitySweep read_stability_sweep(const std::string& path) {
   StabilitySweep sweep;
   sweep.file = path;
   const auto table = root.table("sweep", true);
-  sweep.degrees = to_int(table.integer_list("p", 1, 20));
-  sweep.multiplier_degrees = to_int(table.integer_list("pC", 0, 19));
-  sweep.levels = to_int(table.integer_list("n", 2, 4096));
+  const std::string base = (std::filesystem::path(path).parent_path() / table.string("scene")).string();
+  if (!std::filesystem::is_regular_file(base))
+    throw_bad_input(path, "sweep.scene", table.string("scene"), "a scene file, relative to the sweep file (" + base + " does not exist)");
+  table.has("set");
+  table.has("levels");
+  sweep.levels = io::scene_variants(base, table.table("set"), table.table("levels"), path + ": key 'sweep.levels'");
+  if (table.has("p")) sweep.degrees = to_int(table.integer_list("p", 1, 20));
+  if (table.has("pC")) sweep.multiplier_degrees = to_int(table.integer_list("pC", 0, 19));
   sweep.pc_below_p = table.choice("pc_rule", {"below_p", "all"}, "below_p") == "below_p";
-  sweep.ratios = table.string_list("ratio", std::vector<std::string>{"1"});
-  for (const auto& r : sweep.ratios) {
-    const double ratio = parse_ratio(r, path + ": key 'sweep.ratio'");
-    for (int n : sweep.levels) {
-      const double m = n * ratio;
-      if (n % 2 != 0 || std::abs(m - std::lround(m)) > 1e-9 * m || std::lround(m) < 1)
-        throw_bad_input(path, "sweep.n", std::to_string(n),
-                        "must be even and n · ratio a whole number for every ratio (ratio " + r +
-                            " gives " + fmt::format("{}", m) + ")");
-    }
-  }
-  sweep.norms = table.string_list("norm", std::vector<std::string>{"interp"});
+  sweep.ratios = table.string_list("ratio", std::vector<std::string>{});
+  for (const auto& r : sweep.ratios) parse_ratio(r, path + ": key 'sweep.ratio'");
+  const io::Scene& first = sweep.levels.front().scene;
+  sweep.norms = table.string_list("norm", std::vector<std::string>{first.norm});
   for (const auto& norm : sweep.norms) infsup::parse_gram_norm(norm, path + ": key 'sweep.norm'");
-  sweep.problems = table.string_list("problem", std::vector<std::string>{"signorini"});
-  for (const auto& problem : sweep.problems)
-    infsup::parse_pairing_problem(problem, path + ": key 'sweep.problem'");
+  sweep.problems = table.string_list("problem", std::vector<std::string>{first.problem});
+  for (const auto& problem : sweep.problems) infsup::parse_pairing_problem(problem, path + ": key 'sweep.problem'");
   sweep.fit_levels = static_cast<int>(table.integer("fit_levels", 2, 20, 3));
   sweep.eigensolver = table.choice("eigensolver", {"slepc", "dense"}, "slepc");
   table.reject_unknown_keys();
@@ -93,11 +116,50 @@ StabilitySweep read_stability_sweep(const std::string& path) {
       static_cast<int>(reference.integer("extension_extra_degree", 0, 10, 2));
   reference.reject_unknown_keys();
   root.reject_unknown_keys();
+
+  // Every level's meshes, degrees and data, checked now: a sweep does not stop half-way on input.
+  const bool friction = std::find(sweep.problems.begin(), sweep.problems.end(), "friction") != sweep.problems.end();
+  const std::vector<std::string> ratios = sweep.ratios.empty() ? std::vector<std::string>{""} : sweep.ratios;
+  for (std::size_t level = 0; level < sweep.levels.size(); ++level) {
+    const io::Scene& scene = sweep.levels[level].scene;
+    try {
+      if (friction && scene.friction_bound.empty())
+        throw_bad_input(scene.file, "data.s", "(missing)",
+                        "the friction pairing (22) of sweep.problem needs the friction bound s");
+      const auto mesh = io::build_scene_mesh(scene);
+      const mesh::ContactBoundary contact(mesh);
+      StabilitySweep::LevelFacts facts;
+      facts.cells = mesh.n_cells();
+      facts.contact_edges = static_cast<int>(contact.edges().size());
+      const auto nodes = contact.breakpoints();
+      facts.contact_h_min = nodes.back() - nodes.front();
+      for (std::size_t k = 0; k + 1 < nodes.size(); ++k) facts.contact_h_min = std::min(facts.contact_h_min, nodes[k + 1] - nodes[k]);
+      const auto cell_degrees = io::scene_cell_degrees(scene, mesh);
+      facts.scene_p = *std::min_element(cell_degrees.begin(), cell_degrees.end());
+      for (const auto& ratio : ratios) {
+        const auto at_point = point_scene(scene, 0, -1, ratio);
+        std::optional<mesh::BoundaryMesh> built;
+        try {
+          built.emplace(io::build_scene_boundary_mesh(at_point, contact));
+        } catch (const InputError& error) {
+          if (ratio.empty()) throw;
+          throw InputError(fmt::format("with sweep.ratio = {}: {}", ratio, error.what()));
+        }
+        const auto& boundary_mesh = *built;
+        const auto segment_degrees = io::scene_segment_degrees(at_point, contact, boundary_mesh);
+        facts.segments.push_back(boundary_mesh.n_segments());
+        facts.scene_pc.push_back(*std::max_element(segment_degrees.begin(), segment_degrees.end()));
+      }
+      sweep.level_facts.push_back(std::move(facts));
+    } catch (const InputError& error) {
+      throw InputError(fmt::format("{}: {} of the scene {}: {}", path, level_name(sweep, level), base, error.what()));
+    }
+  }
   return sweep;
 }
 
 std::vector<std::string> alpha_columns() {
-  return {"problem", "norm", "p", "pC", "n", "m", "h", "H", "ratio", "Pi", "alpha", "ndofs",
+  return {"problem", "norm", "p", "pC", "level", "n", "m", "h", "h_min", "H", "ratio", "Pi", "alpha", "ndofs",
           "nmult", "seconds"};
 }
 
@@ -149,9 +211,9 @@ std::vector<std::pair<int, std::string>> gather_rows_on_rank_zero(const std::vec
   return out;
 }
 
-// Identifies a point for resuming: the ratio is compared through m = n · ratio.
-std::string point_key(const std::string& problem, const std::string& norm, int p, int pc, int n, long m) {
-  return fmt::format("{}/{}/{}/{}/{}/{}", problem, norm, p, pc, n, m);
+// Identifies a point for resuming: the ratio is compared through m, degrees as reported.
+std::string point_key(const std::string& problem, const std::string& norm, int p, int pc, int level, long m) {
+  return fmt::format("{}/{}/{}/{}/{}/{}", problem, norm, p, pc, level, m);
 }
 
 }  // namespace
@@ -159,11 +221,10 @@ std::string point_key(const std::string& problem, const std::string& norm, int p
 void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::path& alpha_csv,
                          const std::function<void(int, int, const std::string&)>& progress) {
   std::set<std::string> done;
-  std::map<std::tuple<int, long, int>, Eigen::MatrixXd> interpolation_grams;  // (n, m, p_C) → G
   std::string content = io::CsvTable(alpha_columns()).to_string();
   for (const auto& row : read_csv(alpha_csv)) {
-    done.insert(point_key(row.at("problem"), row.at("norm"), std::stoi(row.at("p")),
-                          std::stoi(row.at("pC")), std::stoi(row.at("n")), std::stol(row.at("m"))));
+    done.insert(point_key(row.at("problem"), row.at("norm"), std::stoi(row.at("p")), std::stoi(row.at("pC")),
+                          std::stoi(row.at("level")), std::stol(row.at("m"))));
   }
   if (std::filesystem::exists(alpha_csv)) {
     std::ifstream in(alpha_csv);
@@ -173,43 +234,58 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
     if (!content.empty() && content.back() != '\n') content += '\n';
   }
 
-  struct Point { std::string problem, norm, ratio; int p, pc, n; };
-  // Grouped by (n, p): the points of a group share T_h and S^p(T_h), so A_G (and the extension
-  // norm's reference) is factorized once per group; the interpolation-norm Gram matrix depends only
-  // on (n, h/H, p_C) and is kept for the level.
+  // A point: a level, the sweep's p and p_C (0 and -1: the scene's), a ratio index into
+  // `ratios` (the scene's contact mesh when the sweep gives none), a problem and a norm.
+  const std::vector<std::string> ratios = sweep.ratios.empty() ? std::vector<std::string>{""} : sweep.ratios;
+  struct Point {
+    std::string problem, norm;
+    std::size_t level, ratio;
+    int p, pc;            ///< as given to the scene (0, -1: the scene's own)
+    int reported_p, reported_pc;
+    long m;
+  };
+  // Grouped by (level, p): the points of a group share T_h and S^p(T_h), so A_G (and the
+  // extension norm's reference) is factorized once per group; the interpolation-norm Gram matrix
+  // depends only on T_{C,H} and p_C and is kept for the level.
+  const std::vector<int> degrees = sweep.degrees.empty() ? std::vector<int>{0} : sweep.degrees;
+  const std::vector<int> multiplier_degrees = sweep.multiplier_degrees.empty() ? std::vector<int>{-1} : sweep.multiplier_degrees;
   std::vector<Point> points;
-  for (int n : sweep.levels)
-    for (int p : sweep.degrees)
+  for (std::size_t level = 0; level < sweep.levels.size(); ++level) {
+    const auto& facts = sweep.level_facts[level];
+    for (int p : degrees)
       for (const auto& problem : sweep.problems)
         for (const auto& norm : sweep.norms)
-          for (int pc : sweep.multiplier_degrees) {
-            if (sweep.pc_below_p && pc >= p) continue;
-            for (const auto& ratio : sweep.ratios) points.push_back({problem, norm, ratio, p, pc, n});
-          }
+          for (int pc : multiplier_degrees)
+            for (std::size_t r = 0; r < ratios.size(); ++r) {
+              const int reported_p = p > 0 ? p : facts.scene_p, reported_pc = pc >= 0 ? pc : facts.scene_pc[r];
+              if (sweep.pc_below_p && reported_pc >= reported_p) continue;
+              points.push_back({problem, infsup::to_string(infsup::parse_gram_norm(norm, sweep.file)), level, r, p, pc,
+                                reported_p, reported_pc, facts.segments[r]});
+            }
+  }
   const auto backend = infsup::parse_eigen_backend(sweep.eigensolver, sweep.file);
   auto key_of = [&](const Point& point) {
-    const long m = std::lround(point.n * parse_ratio(point.ratio, sweep.file));
-    return point_key(point.problem, infsup::to_string(infsup::parse_gram_norm(point.norm, "")), point.p, point.pc,
-                     point.n, m);
+    return point_key(point.problem, point.norm, point.reported_p, point.reported_pc, static_cast<int>(point.level) + 1,
+                     point.m);
   };
-  // Groups of points sharing (n, p), with what is left to do in each and a cost estimate: the
-  // factorizations grow like (dofs)^1.2 (dofs ~ (n p)², and ~ (2 n (p + 2))² for the extension
+  // Groups of points sharing (level, p), with what is left to do in each and a cost estimate: the
+  // factorizations grow like (dofs)^1.2 (dofs ~ cells p², and ~ 4 cells (p + 2)² for the extension
   // norm's reference), each point adds a little.
   struct Group { std::size_t first, last; bool todo, extension; double cost; int owner = 0; };
   std::vector<Group> groups;
   for (std::size_t first = 0; first < points.size();) {
     Group g{first, first, false, false, 0.0};
     int todo_points = 0;
-    while (g.last < points.size() && points[g.last].n == points[first].n && points[g.last].p == points[first].p) {
+    while (g.last < points.size() && points[g.last].level == points[first].level && points[g.last].p == points[first].p) {
       if (!done.contains(key_of(points[g.last]))) {
         g.todo = true;
         ++todo_points;
-        g.extension = g.extension || infsup::parse_gram_norm(points[g.last].norm, sweep.file) == infsup::GramNorm::extension;
+        g.extension = g.extension || points[g.last].norm == infsup::to_string(infsup::GramNorm::extension);
       }
       ++g.last;
     }
-    const double dofs = std::pow(points[first].n * points[first].p, 2.0);
-    const double reference = std::pow(2.0 * points[first].n * (points[first].p + 2), 2.0);
+    const double cells = sweep.level_facts[points[first].level].cells, p = points[first].reported_p;
+    const double dofs = cells * p * p, reference = 4.0 * cells * (p + 2) * (p + 2);
     g.cost = std::pow(dofs, 1.2) + (g.extension ? std::pow(reference, 1.2) : 0.0) + 0.05 * todo_points * dofs;
     groups.push_back(g);
     first = g.last;
@@ -231,20 +307,26 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
     }
   }
   std::vector<std::pair<int, std::string>> new_rows;  // (point index, CSV line), parallel runs
+  // Interpolation-norm Gram matrices of the current level: (ratio, p_C as given) → G.
+  std::map<std::pair<std::size_t, int>, Eigen::MatrixXd> interpolation_grams;
+  std::size_t gram_level = 0;
   int index = 0;
   for (const Group& g : groups) {
     const std::size_t first = g.first, last = g.last;
-    const int n = points[first].n, p = points[first].p;
-    const bool any_extension = g.extension;
     if (!g.todo || g.owner != rank) {
       index += static_cast<int>(last - first);
       continue;
     }
-    const auto mesh = mesh::make_paper_square_mesh(n);
-    const std::vector<int> cell_degrees(mesh.n_cells(), p);
+    const std::size_t level = points[first].level;
+    if (level != gram_level) interpolation_grams.clear();  // not needed again
+    gram_level = level;
+    const io::Scene level_scene = point_scene(sweep.levels[level].scene, points[first].p, -1, "");
+    const auto mesh = io::build_scene_mesh(level_scene);
+    const mesh::ContactBoundary contact(mesh);
+    const std::vector<int> cell_degrees = io::scene_cell_degrees(level_scene, mesh);
     const norms::PrimalOperators primal(mesh, cell_degrees);
     std::unique_ptr<norms::ExtensionReferenceFactor> extension;
-    if (any_extension)
+    if (g.extension)
       extension = std::make_unique<norms::ExtensionReferenceFactor>(mesh, cell_degrees, sweep.extension_reference);
     for (std::size_t k = first; k < last; ++k) {
       const Point& point = points[k];
@@ -253,25 +335,17 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
       if (done.contains(key)) continue;
       if (progress)
         progress(index, static_cast<int>(points.size()),
-                 fmt::format("{} {} p={} pC={} n={} h/H={}", point.problem, point.norm, point.p, point.pc, point.n,
-                             point.ratio));
-      const double ratio = parse_ratio(point.ratio, sweep.file);
-      const long m = std::lround(point.n * ratio);
-      const auto boundary = mesh::BoundaryMesh::uniform(2.0, static_cast<int>(m));
-      infsup::InfSupSetup setup;
-      setup.mesh = &mesh;
-      setup.cell_degrees = cell_degrees;
-      setup.boundary_mesh = &boundary;
-      setup.segment_degrees.assign(m, point.pc);
-      setup.norm = infsup::parse_gram_norm(point.norm, sweep.file);
-      setup.problem = infsup::parse_pairing_problem(point.problem, sweep.file);
-      setup.friction_bound = [](const mesh::Point& x) { return (1.0 - x.x()) * (1.0 - x.x()); };
+                 fmt::format("{} {} p={} pC={} {}{}", point.problem, point.norm, point.reported_p, point.reported_pc,
+                             level_name(sweep, level), ratios[point.ratio].empty() ? "" : " h/H=" + ratios[point.ratio]));
+      const io::Scene scene = point_scene(level_scene, 0, point.pc, ratios[point.ratio]);
+      const auto boundary = io::build_scene_boundary_mesh(scene, contact);
+      auto setup = infsup_setup_of(scene, mesh, cell_degrees, boundary, io::scene_segment_degrees(scene, contact, boundary),
+                                   point.problem, point.norm, primal);
       setup.interpolation_reference = sweep.interpolation_reference;
       setup.extension_reference = sweep.extension_reference;
-      setup.primal = &primal;
       setup.extension = extension.get();
       if (setup.norm == infsup::GramNorm::interpolation) {
-        auto& gram = interpolation_grams[{n, m, point.pc}];
+        auto& gram = interpolation_grams[{point.ratio, point.pc}];
         if (gram.size() == 0) {
           const space::MultiplierSpace multipliers(boundary, setup.segment_degrees);
           gram = norms::interpolation_norm_gram(primal.contact(), multipliers, sweep.interpolation_reference);
@@ -279,20 +353,21 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
         setup.gram = &gram;
       }
       const auto result = infsup::analyse_infsup(setup, backend);
+      const double ratio = ratios[point.ratio].empty() ? static_cast<double>(point.m) / sweep.level_facts[level].contact_edges
+                                                       : parse_ratio(ratios[point.ratio], sweep.file);
       io::CsvTable row(alpha_columns());
-      row.add_row({point.problem, infsup::to_string(setup.norm), static_cast<long long>(point.p),
-                   static_cast<long long>(point.pc), static_cast<long long>(point.n), static_cast<long long>(m),
-                   result.h, result.H, ratio, result.pi, result.alpha, static_cast<long long>(result.n_primal_dofs),
+      row.add_row({point.problem, point.norm, static_cast<long long>(point.reported_p),
+                   static_cast<long long>(point.reported_pc), static_cast<long long>(level + 1),
+                   static_cast<long long>(sweep.level_facts[level].contact_edges), static_cast<long long>(point.m),
+                   result.h, sweep.level_facts[level].contact_h_min, result.H, ratio, result.pi, result.alpha, static_cast<long long>(result.n_primal_dofs),
                    static_cast<long long>(result.n_multiplier_dofs), result.seconds});
       const std::string text = row.to_string();
       if (size == 1) content += text.substr(text.find('\n') + 1);
       else new_rows.emplace_back(index, text.substr(text.find('\n') + 1));
       done.insert(key);
     }
-    // Saved once per group: an interrupted sweep resumes from the last finished (n, p).
+    // Saved once per group: an interrupted sweep resumes from the last finished (level, p).
     if (size == 1) io::write_file_atomically(alpha_csv, content);
-    // Grams of a finished level are not needed again.
-    if (last == points.size() || points[last].n != n) interpolation_grams.clear();
   }
   if (size > 1) {
     const auto all = gather_rows_on_rank_zero(new_rows);
@@ -306,13 +381,13 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
 
 io::CsvTable fit_verdicts(const std::filesystem::path& alpha_csv, int fit_levels) {
   using Key = std::tuple<std::string, std::string, int, int, std::string>;
-  std::map<Key, std::vector<std::pair<double, double>>> series;  // (h, α)
+  std::map<Key, std::vector<std::pair<double, double>>> series;  // (h_min, α)
   std::map<Key, double> ratio_value;
   for (const auto& row : read_csv(alpha_csv)) {
     const double ratio = std::stod(row.at("ratio"));
     const Key key{row.at("problem"), row.at("norm"), std::stoi(row.at("p")), std::stoi(row.at("pC")),
                   fmt::format("{:.6g}", ratio)};
-    series[key].emplace_back(std::stod(row.at("h")), std::stod(row.at("alpha")));
+    series[key].emplace_back(std::stod(row.at("h_min")), std::stod(row.at("alpha")));
     ratio_value[key] = ratio;
   }
   io::CsvTable verdicts({"problem", "norm", "p", "pC", "ratio", "rate", "C", "alpha_finest", "verdict"});
@@ -339,9 +414,13 @@ io::CsvTable fit_verdicts(const std::filesystem::path& alpha_csv, int fit_levels
         sxx += dx * dx;
         sxy += dx * (std::log(std::max(it->second, 1e-300)) - mean_y);
       }
-      rate = sxy / sxx;
-      constant = std::exp(mean_y - rate * mean_x);
-      verdict = rate >= 0.3 ? "decaying" : "stable";
+      if (sxx < 1e-6 * count) {  // log h_min varies by less than 0.1 %: the levels do not refine Γ_C
+        verdict = "h_unchanged";
+      } else {
+        rate = sxy / sxx;
+        constant = std::exp(mean_y - rate * mean_x);
+        verdict = rate >= 0.3 ? "decaying" : "stable";
+      }
     }
     const auto& [problem, norm, p, pc, ratio_text] = key;
     verdicts.add_row({problem, norm, static_cast<long long>(p), static_cast<long long>(pc),

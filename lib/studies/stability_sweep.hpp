@@ -1,5 +1,5 @@
-// Stability sweeps: α(h, H, p, p_C) over lists of p, p_C, n, h/H, norms and problems on the
-// paper's §7 geometry, with a fitted rate α ≈ C h^r and a verdict per configuration.
+// Stability sweeps: α(h, H, p, p_C) over the levels of a base scene and lists of p, p_C, h/H,
+// norms and problems, with a fitted rate α ≈ C h^r and a verdict per configuration.
 #pragma once
 
 #include <filesystem>
@@ -9,20 +9,35 @@
 
 #include "infsup/infsup_analysis.hpp"
 #include "io/csv_writer.hpp"
+#include "io/scene_variants.hpp"
 
 namespace hpcontact::studies {
 
 /// A sweep file (TOML), e.g. studies/stability/study.toml; every key is documented in
 /// studies/README.md:
-///   [sweep] p, pC, n (integers, lists or "a..b"), pc_rule ("below_p" | "all"), ratio (list of
-///           numbers or fractions "2/3"), norm (["interp", "extension"]), problem
-///           (["signorini", "friction"]), fit_levels, eigensolver ("slepc" | "dense")
+///   [sweep] scene (the base scene, relative to the sweep file), set (scene keys replaced),
+///           levels (scene keys varied jointly, one level per value: the mesh sequence of the fit),
+///           p, pC (integers, lists or "a..b"; absent: the scene's degree or rule),
+///           pc_rule ("below_p" | "all"), ratio (h/H: numbers or fractions "2/3"; absent: the
+///           scene's contact mesh), norm, problem (absent: the scene's [infsup] norm, problem),
+///           fit_levels, eigensolver ("slepc" | "dense")
 ///   [reference] interp_subdivisions, interp_degree, extension_refinements, extension_extra_degree
 struct StabilitySweep {
   std::string file;
-  std::vector<int> degrees, multiplier_degrees, levels;
+  std::vector<io::SceneVariant> levels;  ///< the base scene at each level, coarsest first
+  /// What each level's meshes are, found when the file is read (resuming and scheduling need
+  /// them before anything is built): per level, and per ratio (one entry, the scene's contact
+  /// mesh, when `ratios` is empty).
+  struct LevelFacts {
+    int cells = 0, contact_edges = 0;
+    double contact_h_min = 0.0;           ///< shortest edge of T_h on Γ_C
+    int scene_p = 0;                      ///< smallest p_T of the scene's own degree (rule)
+    std::vector<int> segments, scene_pc;  ///< per ratio: m, largest p_C of the scene's own degree
+  };
+  std::vector<LevelFacts> level_facts;
+  std::vector<int> degrees, multiplier_degrees;  ///< empty: the scene's p (p_C) or degree rule
   bool pc_below_p = true;
-  std::vector<std::string> ratios;  ///< as written ("1/2"), parsed where used
+  std::vector<std::string> ratios;  ///< as written ("1/2"), parsed where used; empty: the scene's
   std::vector<std::string> norms, problems;
   int fit_levels = 3;
   std::string eigensolver = "slepc";
@@ -30,28 +45,36 @@ struct StabilitySweep {
   norms::ExtensionReference extension_reference;
 };
 
-/// @throws InputError naming file, key, value and the allowed range (also when n · ratio is not
-/// a whole number for some n and ratio).
+/// Reads the file and checks every level's scene, contact mesh (n_C · ratio whole for every
+/// ratio) and data (s for the friction problem) before anything is computed.
+/// @throws InputError naming file, key, value and the allowed range, and the level.
 StabilitySweep read_stability_sweep(const std::string& path);
 
 /// A ratio h/H given as a number or fraction ("1", "0.5", "2/3"). @throws InputError.
 double parse_ratio(const std::string& text, const std::string& where);
 
-/// Columns of alpha.csv (one row per point).
+/// Columns of alpha.csv (one row per point). `level` counts the sweep's levels from 1, `n` is
+/// the number of edges of T_h on Γ_C, `m` the number of segments of T_{C,H}, h the longest edge
+/// of T_h and h_min the shortest edge of T_h on Γ_C; for degree rules p is
+/// the smallest p_T and pC the largest p_C (the worst case, as in Π).
 std::vector<std::string> alpha_columns();
 
 /// Runs every point not already in `alpha_csv` (resumable), rewriting the file atomically after
-/// each group of points sharing (n, p). `progress(done, total, label)` is called before each point.
-/// Under mpirun the groups are distributed round-robin over the ranks of MPI_COMM_WORLD and rank 0
+/// each group of points sharing (level, p). `progress(done, total, label)` is called before each
+/// point. Under mpirun the groups are distributed over the ranks of MPI_COMM_WORLD and rank 0
 /// writes the rows in the serial order (the file is then written once, at the end).
 void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::path& alpha_csv,
                          const std::function<void(int, int, const std::string&)>& progress = {});
 
-/// Fits α ≈ C h^r over the `fit_levels` finest levels of each configuration in alpha.csv and
-/// returns verdicts.csv: problem,norm,p,pC,ratio,rate,C,alpha_finest,verdict with verdict
-///   singular  α_finest ≤ 1e-6 (α² ≤ 1e-12 λ_max, as λ_max ≤ 1 here: zero to working precision)
-///   decaying  r ≥ 0.3 (α → 0 like h^r)
-///   stable    otherwise (α bounded below)
+/// Fits α ≈ C h_min^r over the `fit_levels` finest levels of each configuration in alpha.csv
+/// (h_min, the shortest edge on Γ_C, is h on uniform meshes and the size of the finest layer on
+/// graded ones, where checkerboard modes live) and returns verdicts.csv:
+/// problem,norm,p,pC,ratio,rate,C,alpha_finest,verdict with verdict
+///   singular        α_finest ≤ 1e-6 (α² ≤ 1e-12 λ_max, λ_max ≤ 1 here: zero to working precision)
+///   decaying        r ≥ 0.3 (α → 0 like h_min^r)
+///   stable          otherwise (α bounded below)
+///   too_few_levels  one level only
+///   h_unchanged     the levels do not refine Γ_C (no rate can be fitted)
 io::CsvTable fit_verdicts(const std::filesystem::path& alpha_csv, int fit_levels);
 
 }  // namespace hpcontact::studies
