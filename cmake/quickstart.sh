@@ -73,7 +73,7 @@ build/bin/hpcontact convergence studies/convergence/study.toml --out results/con
 cp results/convergence/convergence.png studies/convergence/convergence.png
 
 echo "== stability sweep: studies/stability/quick.toml -> results/stability" >&2
-build/bin/hpcontact sweep studies/stability/quick.toml --out results/stability
+build/bin/hpcontact sweep studies/stability/quick.toml --out results/stability --restart
 # Spurious modes of the paper's Figure 2 and 3 pairings (and the stable neighbours) at n = 24.
 for pairing in "1 0 1" "1 0 1/2" "2 1 1" "3 2 1" "3 2 1/2" "3 1 1"; do
   set -- $pairing
@@ -86,7 +86,7 @@ for picture in stable_map alpha_vs_h alpha_vs_pi modes; do
 done
 echo "== stability on geometric meshes: studies/stability/graded*.toml -> results/stability_graded*" >&2
 for study in graded graded_anisotropic; do
-  build/bin/hpcontact sweep "studies/stability/$study.toml" --out "results/stability_$study"
+  build/bin/hpcontact sweep "studies/stability/$study.toml" --out "results/stability_$study" --restart
   "$python" plots/plot_stability.py "results/stability_$study"
   cp "results/stability_$study/alpha_vs_h.png" "studies/stability/${study}_alpha_vs_h.png"
 done

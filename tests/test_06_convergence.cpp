@@ -5,10 +5,12 @@
 
 #include <cmath>
 
+#include "assembly/poisson_assembly.hpp"
 #include "fe/error_norms.hpp"
 #include "manufactured_solution.hpp"
 #include "mesh/rectangle_mesh.hpp"
 #include "problems/poisson_problem.hpp"
+#include "space/h1_space.hpp"
 
 using namespace hpcontact;
 
@@ -60,5 +62,33 @@ TEST(Convergence, ExponentialInPOnFixedMeshes) {
     }
     EXPECT_LT(covariance / variance, -1.5) << "perturbation " << perturbation;
     EXPECT_LT(errors.back(), 1e-9) << "perturbation " << perturbation;
+  }
+}
+
+// Parallelogram cells take their element matrices from Kronecker products of 1D matrices; on a
+// sheared, stretched mesh with mixed degrees (minimum rule, so some edge modes are dropped) and on
+// a perturbed mesh (general quadrilaterals, quadrature everywhere) they equal the quadrature path.
+TEST(Assembly, KroneckerParallelogramsEqualQuadrature) {
+  auto sheared = mesh::make_rectangle_mesh(mesh::Rectangle{0.0, 3.0, -1.0, 0.5}, 5, 3);
+  std::vector<mesh::Point> moved;
+  for (int v = 0; v < sheared.n_vertices(); ++v) {
+    const auto& x = sheared.vertex(v);
+    moved.emplace_back(x.x() + 0.4 * x.y(), 0.7 * x.y() - 0.2 * x.x());
+  }
+  sheared.move_vertices(moved, "test");
+  auto perturbed = mesh::make_rectangle_mesh(mesh::Rectangle{}, 4, 4);
+  mesh::perturb_interior_vertices(perturbed, 0.2, 7);
+  for (const auto* mesh : {&sheared, &perturbed}) {
+    std::vector<int> degrees;
+    for (int c = 0; c < mesh->n_cells(); ++c) degrees.push_back(1 + (3 * c) % 7);
+    const space::H1Space space(*mesh, degrees);
+    const auto fast = assembly::assemble_volume_matrices(space, {.stiffness = true, .mass = true});
+    const auto quadrature = assembly::assemble_volume_matrices(
+        space, {.stiffness = true, .mass = true, .kronecker_parallelograms = false});
+    const Eigen::MatrixXd k_difference = Eigen::MatrixXd(fast.stiffness) - Eigen::MatrixXd(quadrature.stiffness);
+    const Eigen::MatrixXd m_difference = Eigen::MatrixXd(fast.mass) - Eigen::MatrixXd(quadrature.mass);
+    EXPECT_LT(k_difference.cwiseAbs().maxCoeff(), 1e-12 * Eigen::MatrixXd(quadrature.stiffness).cwiseAbs().maxCoeff());
+    EXPECT_LT(m_difference.cwiseAbs().maxCoeff(), 1e-12 * Eigen::MatrixXd(quadrature.mass).cwiseAbs().maxCoeff());
+    EXPECT_GT(quadrature.stiffness.nonZeros(), 0);
   }
 }

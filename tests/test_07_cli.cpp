@@ -214,6 +214,27 @@ TEST(Cli, SweepUnderMpirunWritesTheSerialCsv) {
   EXPECT_EQ(std::string(std::istreambuf_iterator<char>(a), {}), std::string(std::istreambuf_iterator<char>(b), {}));
 }
 
+// A folder holding an alpha.csv of other columns (an older version's) is refused with a hint;
+// --restart replaces it.
+TEST(Cli, SweepRefusesAForeignAlphaCsvUnlessRestarted) {
+  const auto dir = scratch("sweep_restart");
+  std::filesystem::copy_file(HPCONTACT_SOURCE_DIR "/studies/stability/square.toml", dir / "square.toml");
+  std::ofstream(dir / "sweep.toml") << "[sweep]\nscene = \"square.toml\"\np = 1\npC = 0\n"
+                                       "levels = { \"domain.n_x\" = [4, 8], \"domain.n_y\" = [4, 8] }\n";
+  std::filesystem::create_directories(dir / "out");
+  std::ofstream(dir / "out" / "alpha.csv") << "problem,norm,p,pC,n,m,alpha\nsignorini,interp,1,0,4,4,0.5\n";
+  const std::string command = "sweep " + (dir / "sweep.toml").string() + " --out " + (dir / "out").string();
+  const auto refused = run(command);
+  EXPECT_EQ(refused.exit_code, 2) << refused.output;
+  EXPECT_NE(refused.output.find("--restart"), std::string::npos) << refused.output;
+  const auto restarted = run(command + " --restart");
+  ASSERT_EQ(restarted.exit_code, 0) << restarted.output;
+  std::ifstream in(dir / "out" / "alpha.csv");
+  const std::string text{std::istreambuf_iterator<char>(in), {}};
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1 + 2);  // header + one point per level
+  EXPECT_EQ(text.find("problem,norm,p,pC,level,"), 0u) << text;
+}
+
 // summary.json lists every operator a run built, and a run builds only what its effects need,
 // nothing twice: α reuses K and the coupling of the contact solve; Signorini and (15) share F, B
 // and S; Signorini builds no B^s and friction no obstacle functional; without α no mass matrix,

@@ -2,6 +2,8 @@
 // DIR/alpha.csv (resumable), then rate fits and verdicts into DIR/verdicts.csv.
 #include <fmt/format.h>
 
+#include <mpi.h>
+
 #include <filesystem>
 
 #include "commands.hpp"
@@ -23,14 +25,18 @@ void add_sweep_command(CLI::App& app, CommandAction& action) {
       ->check(CLI::ExistingFile);
   command->add_option("--out", *out_dir, "Output folder (points already in alpha.csv are skipped)")
       ->capture_default_str();
-  command->callback([&action, study_file, out_dir] {
-    action = [study_file, out_dir] {
+  auto restart = std::make_shared<bool>(false);
+  command->add_flag("--restart", *restart, "Start afresh: replace DIR/alpha.csv instead of resuming it");
+  command->callback([&action, study_file, out_dir, restart] {
+    action = [study_file, out_dir, restart] {
       // 1. Read and check the whole sweep before computing anything.
       const auto sweep = studies::read_stability_sweep(*study_file);
       io::ensure_writable_directory(*out_dir);
       const auto alpha_csv = std::filesystem::path(*out_dir) / "alpha.csv";
-      // 2. Run, with a progress line on stderr when it is a terminal (rank 0 only under mpirun).
       const auto [rank, size] = mpi_rank_and_size();
+      if (*restart && rank == 0) std::filesystem::remove(alpha_csv);
+      if (*restart && size > 1) MPI_Barrier(MPI_COMM_WORLD);  // no rank reads the old file
+      // 2. Run, with a progress line on stderr when it is a terminal (rank 0 only under mpirun).
       Stopwatch clock;
       const auto bar = progress_bar(rank == 0);
       studies::run_stability_sweep(sweep, alpha_csv, [&](int done, int total, const std::string& label) {

@@ -17,6 +17,9 @@ using SparseMatrix = Eigen::SparseMatrix<double>;
 struct VolumeMatrixRequest {
   bool stiffness = true;  ///< K_jk = (∇φ_j, ∇φ_k)
   bool mass = false;      ///< M_jk = (φ_j, φ_k)
+  /// Parallelogram cells by Kronecker products of 1D matrices (exact, O(p⁴) per cell); false:
+  /// every cell by quadrature (O(p⁶)), the independent path the tests compare against.
+  bool kronecker_parallelograms = true;
 };
 
 struct VolumeMatrices {

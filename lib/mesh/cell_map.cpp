@@ -18,6 +18,8 @@ CellMap::CellMap(const QuadMesh& mesh, int cell) {
 
 Point CellMap::map(double xi, double eta) const { return a_ + b_ * xi + c_ * eta + d_ * xi * eta; }
 
+bool CellMap::is_parallelogram() const { return d_.norm() <= 1e-13 * (b_.norm() + c_.norm()); }
+
 Eigen::Matrix2d CellMap::jacobian(double xi, double eta) const {
   Eigen::Matrix2d j;
   j.col(0) = b_ + d_ * eta;

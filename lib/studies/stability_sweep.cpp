@@ -176,7 +176,7 @@ std::vector<std::map<std::string, std::string>> read_csv(const std::filesystem::
   for (std::string cell; std::getline(header_stream, cell, ',');) header.push_back(cell);
   if (header != alpha_columns())
     throw InputError("'" + path.string() + "' is not an alpha.csv written by hpcontact sweep " +
-                     "(other columns): choose another --out folder");
+                     "(other columns, e.g. from an older version): choose another --out folder, or --restart");
   while (std::getline(in, line)) {
     if (line.empty()) continue;
     std::map<std::string, std::string> row;
@@ -244,9 +244,10 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
     int reported_p, reported_pc;
     long m;
   };
-  // Grouped by (level, p): the points of a group share T_h and S^p(T_h), so A_G (and the
-  // extension norm's reference) is factorized once per group; the interpolation-norm Gram matrix
-  // depends only on T_{C,H} and p_C and is kept for the level.
+  // Grouped by (level, p): the points of a group share T_h and S^p(T_h), so A_G is factorized
+  // once per group. The Gram matrices depend only on T_{C,H}, p_C and the reference, which is
+  // one per level (the extension norm's on the level's T_h refined, of degree the sweep's largest
+  // p plus extension_extra_degree), so they are kept for the level.
   const std::vector<int> degrees = sweep.degrees.empty() ? std::vector<int>{0} : sweep.degrees;
   const std::vector<int> multiplier_degrees = sweep.multiplier_degrees.empty() ? std::vector<int>{-1} : sweep.multiplier_degrees;
   std::vector<Point> points;
@@ -270,7 +271,7 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
   };
   // Groups of points sharing (level, p), with what is left to do in each and a cost estimate: the
   // factorizations grow like (dofs)^1.2 (dofs ~ cells p², and ~ 4 cells (p + 2)² for the extension
-  // norm's reference), each point adds a little.
+  // norm's reference, built by the first group of the level a rank runs), each point adds a little.
   struct Group { std::size_t first, last; bool todo, extension; double cost; int owner = 0; };
   std::vector<Group> groups;
   for (std::size_t first = 0; first < points.size();) {
@@ -307,9 +308,14 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
     }
   }
   std::vector<std::pair<int, std::string>> new_rows;  // (point index, CSV line), parallel runs
-  // Interpolation-norm Gram matrices of the current level: (ratio, p_C as given) → G.
-  std::map<std::pair<std::size_t, int>, Eigen::MatrixXd> interpolation_grams;
-  std::size_t gram_level = 0;
+  // What the points of the current level share: the extension norm's reference and the Gram
+  // matrices, (norm, ratio, p_C as given) → G.
+  struct LevelShared {
+    std::size_t level = 0;
+    std::unique_ptr<norms::ExtensionReferenceFactor> extension;
+    std::map<std::tuple<std::string, std::size_t, int>, Eigen::MatrixXd> grams;
+  } shared;
+  const int largest_p = sweep.degrees.empty() ? 0 : *std::max_element(sweep.degrees.begin(), sweep.degrees.end());
   int index = 0;
   for (const Group& g : groups) {
     const std::size_t first = g.first, last = g.last;
@@ -318,16 +324,17 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
       continue;
     }
     const std::size_t level = points[first].level;
-    if (level != gram_level) interpolation_grams.clear();  // not needed again
-    gram_level = level;
+    if (level != shared.level) shared = LevelShared{level, {}, {}};  // the last level's are not needed again
     const io::Scene level_scene = point_scene(sweep.levels[level].scene, points[first].p, -1, "");
     const auto mesh = io::build_scene_mesh(level_scene);
     const mesh::ContactBoundary contact(mesh);
     const std::vector<int> cell_degrees = io::scene_cell_degrees(level_scene, mesh);
     const norms::PrimalOperators primal(mesh, cell_degrees);
-    std::unique_ptr<norms::ExtensionReferenceFactor> extension;
-    if (g.extension)
-      extension = std::make_unique<norms::ExtensionReferenceFactor>(mesh, cell_degrees, sweep.extension_reference);
+    if (g.extension && !shared.extension) {
+      const auto reference_scene = point_scene(level_scene, largest_p, -1, "");
+      shared.extension = std::make_unique<norms::ExtensionReferenceFactor>(
+          mesh, io::scene_cell_degrees(reference_scene, mesh), sweep.extension_reference);
+    }
     for (std::size_t k = first; k < last; ++k) {
       const Point& point = points[k];
       ++index;
@@ -343,15 +350,14 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
                                    point.problem, point.norm, primal);
       setup.interpolation_reference = sweep.interpolation_reference;
       setup.extension_reference = sweep.extension_reference;
-      setup.extension = extension.get();
-      if (setup.norm == infsup::GramNorm::interpolation) {
-        auto& gram = interpolation_grams[{point.ratio, point.pc}];
-        if (gram.size() == 0) {
-          const space::MultiplierSpace multipliers(boundary, setup.segment_degrees);
-          gram = norms::interpolation_norm_gram(primal.contact(), multipliers, sweep.interpolation_reference);
-        }
-        setup.gram = &gram;
+      auto& gram = shared.grams[{point.norm, point.ratio, point.pc}];
+      if (gram.size() == 0) {
+        const space::MultiplierSpace multipliers(boundary, setup.segment_degrees);
+        gram = setup.norm == infsup::GramNorm::interpolation
+                   ? norms::interpolation_norm_gram(primal.contact(), multipliers, sweep.interpolation_reference)
+                   : norms::extension_norm_gram(*shared.extension, multipliers);
       }
+      setup.gram = &gram;
       const auto result = infsup::analyse_infsup(setup, backend);
       const double ratio = ratios[point.ratio].empty() ? static_cast<double>(point.m) / sweep.level_facts[level].contact_edges
                                                        : parse_ratio(ratios[point.ratio], sweep.file);
