@@ -100,8 +100,7 @@ infsup::InfSupSetup infsup_setup_of(const io::Scene& scene, const mesh::QuadMesh
   if (setup.problem == infsup::PairingProblem::friction) {
     if (scene.friction_bound.empty())
       throw_bad_input(scene.file, "data.s", "(missing)", "the friction pairing (22) needs the friction bound s");
-    const Expression bound(scene.friction_bound, scene.file + ": key 'data.s'");
-    setup.friction_bound = [bound](const mesh::Point& x) { return bound(x.x(), x.y()); };
+    setup.friction_bound = function_of(scene.friction_bound, scene.file + ": key 'data.s'");
   }
   setup.primal = &primal;
   return setup;

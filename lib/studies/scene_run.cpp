@@ -8,7 +8,6 @@
 
 #include "contact/contact_output.hpp"
 #include "contact/multiplier_distance.hpp"
-#include "core/expression.hpp"
 #include "core/operator_log.hpp"
 #include "core/timer.hpp"
 #include "infsup/infsup_analysis.hpp"
