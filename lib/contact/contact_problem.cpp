@@ -16,7 +16,6 @@
 #include "basis/quadrature.hpp"
 #include "core/error.hpp"
 #include "core/timer.hpp"
-#include "linalg/sparse_cholesky.hpp"
 #include "core/operator_log.hpp"
 #include "mesh/contact_boundary.hpp"
 #include "space/multiplier_space.hpp"
@@ -56,7 +55,6 @@ ContactSolution solve_contact(const ContactSetup& setup) {
   const auto& space = primal.space();
   const auto& contact = primal.contact();
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
-  const auto& stiffness = primal.stiffness();
   auto assemble_load = [&] {
     Eigen::VectorXd load = assembly::assemble_volume_load(space, setup.f);
     if (setup.traction)
@@ -156,10 +154,10 @@ ContactSolution solve_contact(const ContactSetup& setup) {
   }
 
   // Condensation onto the Γ_C trace: the trace dofs ordered last in the factorization, so that
-  // S = B K⁻¹ Bᵀ is dense algebra on the trailing block of the factor (sparse_cholesky.hpp).
+  // S = B K⁻¹ Bᵀ is dense algebra on the trailing block of the factor (condensed_factor.hpp, sparse_cholesky.hpp).
   out.seconds.assembly = assembly_clock.seconds();
   Stopwatch factorization_clock;
-  const linalg::SparseCholesky& k_factor = primal.stiffness_factor();
+  const assembly::CondensedFactor& k_factor = primal.stiffness_factor();
   out.seconds.factorization = factorization_clock.seconds();
   Stopwatch condensation_clock;
   const Eigen::VectorXd u_free = k_factor.solve(load);
@@ -211,7 +209,8 @@ ContactSolution solve_contact(const ContactSetup& setup) {
   if (!use_interior_point) out.constraint_multiplier = out.gap;  // C = I: stationarity y = d − S λ = gap
   out.gap_scale = (coupling * u_free).lpNorm<Eigen::Infinity>() + gap_offset.lpNorm<Eigen::Infinity>() +
                   (s * out.lambda).lpNorm<Eigen::Infinity>();
-  out.energy = 0.5 * out.u.dot(stiffness * out.u) - load.dot(out.u);
+  // uᵀ K u from the factor's eliminated blocks: K itself is never assembled.
+  out.energy = 0.5 * k_factor.quadratic_form(out.u) - load.dot(out.u);
   out.seconds.recovery = recovery_clock.seconds();
   return out;
 }

@@ -9,7 +9,6 @@
 #include "basis/quadrature.hpp"
 #include "core/error.hpp"
 #include "core/timer.hpp"
-#include "linalg/sparse_cholesky.hpp"
 #include "norms/primal_operators.hpp"
 #include "mesh/contact_boundary.hpp"
 #include "space/multiplier_space.hpp"
@@ -86,8 +85,6 @@ InfSupOperators assemble_infsup_operators(const InfSupSetup& setup) {
   Stopwatch assembly_clock;  // (what is not built yet)
   const auto& coupling = primal.coupling(multipliers, friction ? setup.friction_bound : assembly::BoundaryFunction{},
                                          friction ? "B^s" : "B");
-  primal.stiffness();
-  primal.mass();
   out.seconds_assembly = assembly_clock.seconds();
   Stopwatch primal_clock;
   const auto& a_g = primal.gram_factor();

@@ -57,26 +57,29 @@ const std::vector<int>& PrimalOperators::trace_dofs() const {
   return *trace_dofs_;
 }
 
-const linalg::SparseCholesky& PrimalOperators::stiffness_factor() const {
-  if (!stiffness_factor_) {
-    const auto& k = stiffness();
-    const auto& trace = trace_dofs();
+namespace {
+
+// Factorizes stiffness_weight K + mass_weight M into `slot` on first use and logs it as `name`.
+const assembly::CondensedFactor& condensed_factor(const space::H1Space& space, double stiffness_weight,
+                                                  double mass_weight, const std::vector<int>& trace,
+                                                  std::unique_ptr<assembly::CondensedFactor>& slot,
+                                                  const char* name, OperatorLog* log) {
+  if (!slot) {
     Stopwatch clock;
-    stiffness_factor_ = std::make_unique<linalg::SparseCholesky>(k, trace);
-    if (log_) log_->record("factor(K)", k.rows(), k.cols(), clock.seconds());
+    slot = std::make_unique<assembly::CondensedFactor>(space, stiffness_weight, mass_weight, trace);
+    if (log) log->record(name, slot->size(), slot->size(), clock.seconds());
   }
-  return *stiffness_factor_;
+  return *slot;
 }
 
-const linalg::SparseCholesky& PrimalOperators::gram_factor() const {
-  if (!gram_factor_) {
-    const Eigen::SparseMatrix<double> a_g = stiffness() + mass();
-    const auto& trace = trace_dofs();
-    Stopwatch clock;
-    gram_factor_ = std::make_unique<linalg::SparseCholesky>(a_g, trace);
-    if (log_) log_->record("factor(K+M)", a_g.rows(), a_g.cols(), clock.seconds());
-  }
-  return *gram_factor_;
+}  // namespace
+
+const assembly::CondensedFactor& PrimalOperators::stiffness_factor() const {
+  return condensed_factor(*space_, 1.0, 0.0, trace_dofs(), stiffness_factor_, "factor(K)", log_);
+}
+
+const assembly::CondensedFactor& PrimalOperators::gram_factor() const {
+  return condensed_factor(*space_, 1.0, 1.0, trace_dofs(), gram_factor_, "factor(K+M)", log_);
 }
 
 const Eigen::SparseMatrix<double>& PrimalOperators::coupling(const space::MultiplierSpace& multipliers,

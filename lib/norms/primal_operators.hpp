@@ -1,8 +1,9 @@
 // The operators of S^p(T_h) that the contact problems and the inf-sup analysis share, built on
-// first use and never twice: K, M, the couplings with multiplier spaces on Γ_C, and the
-// factorizations of K and A_G = K + M with every Γ_C trace dof ordered last, so that
+// first use and never twice: the couplings with multiplier spaces on Γ_C, and the factorizations
+// of K and A_G = K + M (cell interiors condensed out, every Γ_C trace dof ordered last), so that
 // B A⁻¹ Bᵀ for ANY multiplier space on Γ_C (any p_C, H, weight s) is dense work on the trace
-// only. One object per (T_h, p): a `solve` with α, or all sweep points on (n, p), share it.
+// only; the assembled K and M only for whoever asks for them. One object per (T_h, p): a `solve`
+// with α, or all sweep points on (n, p), share it.
 #pragma once
 
 #include <functional>
@@ -11,9 +12,9 @@
 #include <string>
 #include <vector>
 
+#include "assembly/condensed_factor.hpp"
 #include "assembly/coupling.hpp"
 #include "core/operator_log.hpp"
-#include "linalg/sparse_cholesky.hpp"
 #include "mesh/contact_boundary.hpp"
 #include "space/h1_space.hpp"
 #include "space/multiplier_space.hpp"
@@ -32,9 +33,10 @@ class PrimalOperators {
 
   const Eigen::SparseMatrix<double>& stiffness() const;  ///< K, logged as "K"
   const Eigen::SparseMatrix<double>& mass() const;       ///< M, logged as "M"
-  /// K factorized with the trace last ("factor(K)"), and A_G = K + M likewise ("factor(K+M)").
-  const linalg::SparseCholesky& stiffness_factor() const;
-  const linalg::SparseCholesky& gram_factor() const;
+  /// K factorized with the trace last ("factor(K)"), and A_G = K + M likewise ("factor(K+M)"),
+  /// both by static condensation from the element matrices (neither needs K or M assembled).
+  const assembly::CondensedFactor& stiffness_factor() const;
+  const assembly::CondensedFactor& gram_factor() const;
   /// B_ij = ∫ μ_i φ_j ("B"), or with the weight s ("B^s"), for a multiplier space on Γ_C; kept per
   /// (name, multiplier space layout), so that the contact solve and α share it.
   const Eigen::SparseMatrix<double>& coupling(const space::MultiplierSpace& multipliers,
@@ -58,7 +60,7 @@ class PrimalOperators {
   std::unique_ptr<mesh::ContactBoundary> contact_;
   OperatorLog* log_;
   mutable std::unique_ptr<Eigen::SparseMatrix<double>> stiffness_, mass_;
-  mutable std::unique_ptr<linalg::SparseCholesky> stiffness_factor_, gram_factor_;
+  mutable std::unique_ptr<assembly::CondensedFactor> stiffness_factor_, gram_factor_;
   mutable std::unique_ptr<std::vector<int>> trace_dofs_;
   mutable std::map<std::string, Eigen::SparseMatrix<double>> couplings_;
   mutable std::map<std::string, Eigen::VectorXd> derived_vectors_;

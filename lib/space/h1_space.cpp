@@ -70,6 +70,7 @@ void H1Space::build() {
       next += edge_degrees_[e] - 1;
     }
 
+  n_skeleton_dofs_ = next;
   cell_shapes_.assign(mesh.n_cells(), {});
   for (int c = 0; c < mesh.n_cells(); ++c) {
     auto& shapes = cell_shapes_[c];

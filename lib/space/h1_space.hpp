@@ -35,6 +35,10 @@ class H1Space {
 
   const mesh::QuadMesh& mesh() const { return *mesh_; }
   int n_dofs() const { return n_dofs_; }
+  /// Vertex and edge dofs, numbered 0 … n_skeleton_dofs() − 1 before every interior mode: the
+  /// unknowns left when each cell's interior modes (its own, coupled to no other cell) are
+  /// condensed out.
+  int n_skeleton_dofs() const { return n_skeleton_dofs_; }
   int cell_degree(int cell) const { return cell_degrees_[cell]; }
   const std::vector<int>& cell_degrees() const { return cell_degrees_; }
   int edge_degree(int edge) const { return edge_degrees_[edge]; }
@@ -50,6 +54,7 @@ class H1Space {
   std::vector<int> edge_degrees_;
   std::vector<std::vector<LocalShape>> cell_shapes_;
   int n_dofs_ = 0;
+  int n_skeleton_dofs_ = 0;
   int max_degree_ = 1;
 };
 

@@ -1,0 +1,87 @@
+// Parallelogram cells (DΨ_T = J constant) take their element matrices from Kronecker products of
+// 1D Lobatto matrices: O(p⁴) per cell instead of the O(p⁶) of quadrature, which is what makes
+// degree 10 affordable (the extension norm's reference). Other cells use tensor Gauss rules and
+// dense products K_T = Gxᵀ W Gx + Gyᵀ W Gy, M_T = Φᵀ W Φ.
+#include "assembly/element_matrices.hpp"
+
+#include <Eigen/LU>
+
+#include "assembly/cell_values.hpp"
+#include "basis/lobatto.hpp"
+#include "basis/quadrature.hpp"
+#include "mesh/cell_map.hpp"
+
+namespace hpcontact::assembly {
+
+ElementMatrices::ElementMatrices(const space::H1Space& space, bool kronecker_parallelograms)
+    : space_(&space), kronecker_parallelograms_(kronecker_parallelograms) {}
+
+/// 1D matrices of the Lobatto shapes l_0…l_p on [-1, 1]: stiffness ∫ l_a' l_b', mass ∫ l_a l_b,
+/// mixed ∫ l_a' l_b (p + 1 Gauss points integrate all three exactly).
+const ElementMatrices::LineMatrices& ElementMatrices::line(int degree) {
+  auto found = lines_.find(degree);
+  if (found != lines_.end()) return found->second;
+  const auto& rule = basis::gauss_legendre(degree + 1);
+  const auto table = basis::tabulate_lobatto(degree, rule.points);
+  const Eigen::VectorXd weights =
+      Eigen::Map<const Eigen::VectorXd>(rule.weights.data(), static_cast<Eigen::Index>(rule.weights.size()));
+  const auto w = weights.asDiagonal();
+  return lines_
+      .emplace(degree, LineMatrices{table.derivatives.transpose() * w * table.derivatives,
+                                    table.values.transpose() * w * table.values,
+                                    table.derivatives.transpose() * w * table.values})
+      .first->second;
+}
+
+bool ElementMatrices::constant_jacobian(int cell, Eigen::Matrix2d& jacobian) const {
+  if (!kronecker_parallelograms_) return false;
+  const mesh::CellMap map(space_->mesh(), cell);
+  if (!map.is_parallelogram()) return false;
+  jacobian = map.jacobian(0.0, 0.0);
+  return true;
+}
+
+void ElementMatrices::compute(int cell, Eigen::MatrixXd* stiffness, Eigen::MatrixXd* mass) {
+  const auto& shapes = space_->cell_shapes(cell);
+  const int n = static_cast<int>(shapes.size());
+  Eigen::Matrix2d jacobian;
+  if (constant_jacobian(cell, jacobian)) {
+    // Shape s = sign_s l_{i_s}(ξ) l_{j_s}(η), ∇φ = J⁻ᵀ ∇_ξ φ, G = J⁻¹ J⁻ᵀ, A, M, C the line matrices:
+    //   M_st = det J · M[i_s,i_t] M[j_s,j_t]
+    //   K_st = det J · (G₀₀ A[i_s,i_t] M[j_s,j_t] + G₁₁ M[i_s,i_t] A[j_s,j_t]
+    //                   + G₀₁ (C[i_s,i_t] C[j_t,j_s] + C[i_t,i_s] C[j_s,j_t]))
+    const double det = jacobian.determinant();
+    const Eigen::Matrix2d inverse = jacobian.inverse();
+    const Eigen::Matrix2d g = inverse * inverse.transpose();
+    const auto& lines = line(space_->cell_degree(cell));
+    const auto &a = lines.stiffness, &m = lines.mass, &c = lines.mixed;
+    if (stiffness) stiffness->resize(n, n);
+    if (mass) mass->resize(n, n);
+    for (int t = 0; t < n; ++t) {
+      const int it = shapes[t].i, jt = shapes[t].j;
+      for (int s = 0; s < n; ++s) {
+        const int is = shapes[s].i, js = shapes[s].j;
+        const double scale = det * shapes[s].sign * shapes[t].sign;
+        if (stiffness)
+          (*stiffness)(s, t) = scale * (g(0, 0) * a(is, it) * m(js, jt) + g(1, 1) * m(is, it) * a(js, jt) +
+                                        g(0, 1) * (c(is, it) * c(jt, js) + c(it, is) * c(js, jt)));
+        if (mass) (*mass)(s, t) = scale * m(is, it) * m(js, jt);
+      }
+    }
+    return;
+  }
+  const auto& rule = basis::gauss_legendre(cell_quadrature_points(space_->cell_degree(cell)));
+  const CellValues values = tabulate_cell(*space_, cell, rule.points, rule.points);
+  Eigen::VectorXd weights(values.jacobians.size());
+  for (std::size_t b = 0; b < rule.points.size(); ++b)
+    for (std::size_t a = 0; a < rule.points.size(); ++a) {
+      const auto q = a + rule.points.size() * b;
+      weights(q) = rule.weights[a] * rule.weights[b] * values.jacobians(q);
+    }
+  const auto w = weights.asDiagonal();
+  if (stiffness)
+    *stiffness = values.grad_x.transpose() * w * values.grad_x + values.grad_y.transpose() * w * values.grad_y;
+  if (mass) *mass = values.values.transpose() * w * values.values;
+}
+
+}  // namespace hpcontact::assembly
