@@ -84,6 +84,9 @@ done
 for picture in stable_map alpha_vs_h alpha_vs_pi modes; do
   cp "results/stability/$picture.png" "studies/stability/$picture.png"
 done
+echo "== full stability grid: studies/stability/study.toml -> results/stability_full" >&2
+build/bin/hpcontact sweep studies/stability/study.toml --out results/stability_full --restart
+cp results/stability_full/verdicts.csv studies/stability/verdicts_full.csv
 echo "== stability on geometric meshes: studies/stability/graded*.toml -> results/stability_graded*" >&2
 for study in graded graded_anisotropic; do
   build/bin/hpcontact sweep "studies/stability/$study.toml" --out "results/stability_$study" --restart

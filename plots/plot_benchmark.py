@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Plots the performance benchmark: seconds against primal dofs per kind (log-log, fitted
-exponents in the legend) and the ratio to one linear solve of the same matrix, with peak memory.
+exponents in the legend; dashed: the assembled matrices) and the ratio to one linear solve of the
+same matrix, with the peak memory per size (condensed path, and assembled matrices if measured).
 
 Reads only DIR/benchmark.csv and DIR/scaling.csv (written by `hpcontact benchmark`) and writes
 DIR/benchmark.png.
@@ -19,6 +20,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 STYLE = {
     "linear_K": ("k", "o", "one linear solve of K"),
     "linear_AG": ("0.5", "o", "one linear solve of A_G"),
+    "linear_K_assembled": ("k", "x", "K assembled, CHOLMOD on all dofs"),
+    "linear_AG_assembled": ("0.5", "x", "A_G assembled, CHOLMOD on all dofs"),
     "signorini": ("C0", "s", "contact (9)"),
     "friction": ("C1", "^", "friction (13)"),
     "friction_s": ("C2", "v", "friction (15)"),
@@ -44,7 +47,8 @@ def main():
         ndofs = [int(r["ndofs"]) for r in series]
         seconds = [float(r["seconds"]) for r in series]
         fit = f", slope {exponents[kind]:.2f}" if kind in exponents else ""
-        times.loglog(ndofs, seconds, marker=marker, color=colour, label=label + fit)
+        style = "--" if kind.endswith("_assembled") else "-"
+        times.loglog(ndofs, seconds, marker=marker, color=colour, ls=style, label=label + fit)
         if not kind.startswith("linear"):
             ratios.semilogx(ndofs, [float(r["ratio"]) for r in series], marker=marker, color=colour, label=label)
     times.set_xlabel("primal dofs")
@@ -59,9 +63,15 @@ def main():
     ratios.set_title("cost relative to one linear solve")
     ratios.grid(True, which="both", alpha=0.3)
     memory = ratios.twinx()
-    linear = by_kind.get("linear_K", [])
-    memory.semilogx([int(r["ndofs"]) for r in linear], [float(r["peak_rss_mb"]) / 1024 for r in linear],
-                    color="0.6", ls="--", label="peak memory (GB, right)")
+    for assembled, style, label in ((False, "--", "peak memory (GB, right)"),
+                                    (True, ":", "peak memory, assembled (GB, right)")):
+        peak = defaultdict(float)
+        for row in rows:
+            if row["kind"].endswith("_assembled") == assembled:
+                peak[int(row["ndofs"])] = max(peak[int(row["ndofs"])], float(row["peak_rss_mb"]) / 1024)
+        if peak:
+            sizes = sorted(peak)
+            memory.semilogx(sizes, [peak[size] for size in sizes], color="0.6", ls=style, label=label)
     memory.set_ylabel("peak resident memory, GB")
     lines = ratios.get_legend_handles_labels()
     extra = memory.get_legend_handles_labels()

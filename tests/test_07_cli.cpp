@@ -156,25 +156,29 @@ TEST(Cli, SolveWithMoreConstraintPointsUsesInteriorPointAndRefusesTooFew) {
 TEST(Cli, BenchmarkWritesRatiosAgainstTheBaselineOfTheSameRun) {
   const auto dir = scratch("benchmark");
   std::ofstream(dir / "bench.toml") << "[benchmark]\np = 2\npC = 1\nratio = \"1/2\"\nn = [4, 8]\n"
-                                       "kinds = [\"signorini\", \"alpha\"]\n";
+                                       "kinds = [\"signorini\", \"alpha\", \"assembled\"]\n";
   const auto result = run("benchmark " + (dir / "bench.toml").string() + " --out " + (dir / "out").string());
   ASSERT_EQ(result.exit_code, 0) << result.output;
   std::ifstream csv(dir / "out" / "benchmark.csv");
   std::string header, line;
   std::getline(csv, header);
   EXPECT_EQ(header, "kind,p,pC,n,m,ndofs,nmult,n_trace,seconds_assembly,seconds_baseline,seconds,ratio,peak_rss_mb");
-  int rows = 0;
+  std::vector<std::string> kinds;
   while (std::getline(csv, line)) {
-    ++rows;
     // ratio = seconds / seconds_baseline, both positive
     std::vector<double> cells;
     std::stringstream stream(line.substr(line.find(',') + 1));
     for (std::string cell; std::getline(stream, cell, ',');) cells.push_back(std::stod(cell));
     ASSERT_EQ(cells.size(), 12u) << line;
     EXPECT_GT(cells[8], 0.0) << line;
+    kinds.push_back(line.substr(0, line.find(',')));
     EXPECT_NEAR(cells[10], cells[9] / cells[8], 1e-12 * cells[10]) << line;
   }
-  EXPECT_EQ(rows, 8);  // per level: linear_K, signorini, linear_AG, alpha
+  const std::vector<std::string> level{"linear_K", "signorini", "linear_AG", "alpha", "linear_K_assembled",
+                                       "linear_AG_assembled"};
+  std::vector<std::string> expected = level;
+  expected.insert(expected.end(), level.begin(), level.end());
+  EXPECT_EQ(kinds, expected);
   EXPECT_TRUE(std::filesystem::exists(dir / "out" / "scaling.csv"));
   std::ofstream(dir / "bad.toml") << "[benchmark]\np = 2\npC = 1\nratio = \"1/3\"\nn = [4]\n";
   const auto bad = run("benchmark " + (dir / "bad.toml").string() + " --out " + (dir / "bad").string());

@@ -278,7 +278,11 @@ eigensolver = "dense"
     Configuration c{std::stoi(row.at("p")), std::stoi(row.at("pC")), std::stoi(row.at("n")), std::stoi(row.at("m"))};
     c.norm = infsup::parse_gram_norm(row.at("norm"), "test");
     c.problem = infsup::parse_pairing_problem(row.at("problem"), "test");
-    c.extension.extra_degree = 3 + 2 - c.p;  // the sweep's reference: largest p (3) + 2 for every p
+    // The sweep's references, the same for every point of a level: the extension norm's of degree
+    // the largest p (3) + 2, the interpolation norm's of degree the largest p_C (2) + 6 (every
+    // point's G is then a principal submatrix of the p_C = 2 one).
+    c.extension.extra_degree = 3 + 2 - c.p;
+    c.interpolation.degree = 2 + 6;
     EXPECT_EQ(std::stoi(row.at("level")), c.n == 4 ? 1 : 2);
     EXPECT_NEAR(std::stod(row.at("alpha")), alpha(c).alpha, 1e-9) << row.at("problem") << " " << row.at("norm")
                                                                   << " p " << c.p << " pC " << c.pc << " n " << c.n;

@@ -123,6 +123,21 @@ Eigen::MatrixXd interpolation_norm_gram(const mesh::ContactBoundary& contact,
   return 0.5 * (gram + gram.transpose());
 }
 
+Eigen::MatrixXd restrict_gram(const Eigen::MatrixXd& envelope_gram, const space::MultiplierSpace& envelope,
+                              const space::MultiplierSpace& sub) {
+  HPC_VERIFY(envelope_gram.rows() == envelope.n_dofs() && sub.n_segments() == envelope.n_segments(),
+             "restrict_gram: the spaces do not share their segments");
+  std::vector<int> modes;
+  for (int k = 0; k < sub.n_segments(); ++k) {
+    HPC_VERIFY(std::abs(sub.boundary_mesh().segment_end(k) - envelope.boundary_mesh().segment_end(k)) <=
+                       1e-12 * envelope.boundary_mesh().length() &&
+                   sub.segment_degree(k) <= envelope.segment_degree(k),
+               "restrict_gram: the spaces do not share their segments, or the envelope's degree is lower");
+    for (int j = 0; j <= sub.segment_degree(k); ++j) modes.push_back(envelope.first_dof(k) + j);
+  }
+  return envelope_gram(modes, modes);
+}
+
 ExtensionReferenceFactor::ExtensionReferenceFactor(const mesh::QuadMesh& mesh, const std::vector<int>& cell_degrees,
                                                    const ExtensionReference& reference) {
   if (reference.refinements < 0 || reference.extra_degree < 0)

@@ -36,7 +36,9 @@ namespace hpcontact::norms {
 /// and T_{C,H}, every interval split into `subdivisions` equal parts.
 struct InterpolationReference {
   int subdivisions = 2;
-  int degree = 0;  ///< 0: max p_C + 6 (α changes by < 0.1% beyond, see tests)
+  /// 0: max p_C + 6. Finer references move α little: subdividing further by < 0.1 % (test
+  /// InfSup.ReferenceSpacesAreFineEnough), degree 13 instead of p_C + 6 by ≤ 0.3 % on the stability grid.
+  int degree = 0;
   /// W up to this dimension uses the dense eigendecomposition, larger W the quadrature.
   int dense_limit = 200;
 };
@@ -54,6 +56,13 @@ Eigen::MatrixXd inverse_sqrt_gram_dense(const Eigen::SparseMatrix<double>& a, co
 Eigen::MatrixXd inverse_sqrt_gram_quadrature(const Eigen::SparseMatrix<double>& a,
                                              const Eigen::SparseMatrix<double>& m,
                                              const Eigen::SparseMatrix<double>& c, double lambda_max);
+
+/// The Gram matrix of `sub` from that of `envelope`, a multiplier space on the same segments with
+/// degrees at least those of `sub`: the principal submatrix of the modes j ≤ p_C(k) of every
+/// segment k (the Legendre basis is hierarchical, and both realizations are Gram matrices of the
+/// basis functions in one inner product, fixed by the reference). Shape (sub.n_dofs(), sub.n_dofs()).
+Eigen::MatrixXd restrict_gram(const Eigen::MatrixXd& envelope_gram, const space::MultiplierSpace& envelope,
+                              const space::MultiplierSpace& sub);
 
 /// S_ref: T_h refined uniformly `refinements` times, degree p_T + `extra_degree`.
 struct ExtensionReference {

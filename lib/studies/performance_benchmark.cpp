@@ -6,8 +6,10 @@
 #include <sys/resource.h>
 
 #include <cmath>
+#include <fstream>
 #include <map>
 
+#include "assembly/condensed_factor.hpp"
 #include "assembly/poisson_assembly.hpp"
 #include "contact/contact_problem.hpp"
 #include "core/error.hpp"
@@ -35,11 +37,11 @@ PerformanceBenchmark read_performance_benchmark(const std::string& path) {
       throw_bad_input(path, "benchmark.n", std::to_string(n), "even, with n · ratio a whole number >= 1");
     out.levels.push_back(static_cast<int>(n));
   }
-  const std::vector<std::string> allowed{"signorini", "friction", "friction_s", "alpha"};
+  const std::vector<std::string> allowed{"signorini", "friction", "friction_s", "alpha", "assembled"};
   out.kinds = table.string_list("kinds", allowed);
   for (const auto& kind : out.kinds)
     if (std::find(allowed.begin(), allowed.end(), kind) == allowed.end())
-      throw_bad_input(path, "benchmark.kinds", kind, "any of signorini, friction, friction_s, alpha");
+      throw_bad_input(path, "benchmark.kinds", kind, "any of signorini, friction, friction_s, alpha, assembled");
   table.reject_unknown_keys();
   root.reject_unknown_keys();
   return out;
@@ -47,14 +49,31 @@ PerformanceBenchmark read_performance_benchmark(const std::string& path) {
 
 namespace {
 
+// Peak resident memory since the last reset_peak_rss (VmHWM; writing 5 to clear_refs resets it,
+// Linux ≥ 4.0), so that each row reports its own peak, not an earlier row's.
+void reset_peak_rss() { std::ofstream("/proc/self/clear_refs") << "5"; }
+
 double peak_rss_mb() {
-  rusage usage{};
+  std::ifstream status("/proc/self/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;  // kB
+  rusage usage{};  // no /proc: the process's peak
   getrusage(RUSAGE_SELF, &usage);
-  return usage.ru_maxrss / 1024.0;  // Linux reports kilobytes
+  return usage.ru_maxrss / 1024.0;
 }
 
-// One linear solve of `matrix`: factorization with CHOLMOD's own ordering, then one solve.
-double time_linear_solve(const Eigen::SparseMatrix<double>& matrix, const Eigen::VectorXd& rhs) {
+// One linear solve with the solver the contact problems and α use: static condensation of the
+// cell interiors, CHOLMOD (its own ordering) on the skeleton, one solve. Nothing is assembled.
+double time_condensed_solve(const space::H1Space& space, double mass_weight, const Eigen::VectorXd& rhs) {
+  Stopwatch clock;
+  const assembly::CondensedFactor factor(space, 1.0, mass_weight);
+  const Eigen::VectorXd x = factor.solve(rhs);
+  HPC_VERIFY(x.allFinite(), "baseline solve gave a non-finite result");
+  return clock.seconds();
+}
+
+// One linear solve of the assembled matrix: CHOLMOD with its own ordering on all of it.
+double time_assembled_solve(const Eigen::SparseMatrix<double>& matrix, const Eigen::VectorXd& rhs) {
   Stopwatch clock;
   const linalg::SparseCholesky factor(matrix);
   const Eigen::VectorXd x = factor.solve(rhs);
@@ -73,6 +92,11 @@ std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& 
     row.peak_rss_mb = peak_rss_mb();
     rows.push_back(row);
     if (on_row) on_row(rows.back());
+    reset_peak_rss();
+  };
+  reset_peak_rss();
+  auto has = [&](const char* kind) {
+    return std::find(benchmark.kinds.begin(), benchmark.kinds.end(), kind) != benchmark.kinds.end();
   };
   for (int n : benchmark.levels) {
     const int m = static_cast<int>(std::lround(n * ratio));
@@ -87,18 +111,14 @@ std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& 
     base.ndofs = space.n_dofs();
     base.nmult = m * (benchmark.pc + 1);
 
-    // Baselines, each with its own assembly time.
-    Stopwatch assembly_k;
-    const auto k = assembly::assemble_volume_matrices(space, {.stiffness = true, .mass = false}).stiffness;
     const Eigen::VectorXd load = assembly::assemble_volume_load(space, [](const mesh::Point&) { return -1.0; });
     BenchmarkRow linear_k = base;
     linear_k.kind = "linear_K";
-    linear_k.seconds_assembly = assembly_k.seconds();
-    linear_k.seconds_baseline = linear_k.seconds = time_linear_solve(k, load);
+    linear_k.seconds_baseline = linear_k.seconds = time_condensed_solve(space, 0.0, load);
     add(linear_k);
 
     for (const auto& kind : benchmark.kinds) {
-      if (kind == "alpha") continue;
+      if (kind == "alpha" || kind == "assembled") continue;
       contact::ContactSetup setup;
       setup.mesh = &mesh;
       setup.cell_degrees.assign(mesh.n_cells(), benchmark.p);
@@ -121,15 +141,13 @@ std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& 
       add(row);
     }
 
-    if (std::find(benchmark.kinds.begin(), benchmark.kinds.end(), "alpha") != benchmark.kinds.end()) {
-      Stopwatch assembly_ag;
-      const auto matrices = assembly::assemble_volume_matrices(space, {.stiffness = true, .mass = true});
-      const Eigen::SparseMatrix<double> a_g = matrices.stiffness + matrices.mass;
-      BenchmarkRow linear_ag = base;
-      linear_ag.kind = "linear_AG";
-      linear_ag.seconds_assembly = assembly_ag.seconds();
-      linear_ag.seconds_baseline = linear_ag.seconds = time_linear_solve(a_g, load);
+    BenchmarkRow linear_ag = base;
+    linear_ag.kind = "linear_AG";
+    if (has("alpha") || has("assembled")) {
+      linear_ag.seconds_baseline = linear_ag.seconds = time_condensed_solve(space, 1.0, load);
       add(linear_ag);
+    }
+    if (has("alpha")) {
       infsup::InfSupSetup setup;
       setup.mesh = &mesh;
       setup.cell_degrees.assign(mesh.n_cells(), benchmark.p);
@@ -142,6 +160,22 @@ std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& 
       row.seconds_baseline = linear_ag.seconds_baseline;
       row.seconds = result.seconds - result.seconds_assembly;
       add(row);
+    }
+    // The same solves on the assembled K and A_G, as ratios to the condensed ones: what static
+    // condensation saves in time, and (peak_rss_mb) in memory.
+    if (has("assembled")) {
+      for (const bool mass : {false, true}) {
+        BenchmarkRow row = base;
+        row.kind = mass ? "linear_AG_assembled" : "linear_K_assembled";
+        Stopwatch assembly_clock;
+        const auto matrices = assembly::assemble_volume_matrices(space, {.stiffness = true, .mass = mass});
+        const Eigen::SparseMatrix<double> matrix = mass ? Eigen::SparseMatrix<double>(matrices.stiffness + matrices.mass)
+                                                        : matrices.stiffness;
+        row.seconds_assembly = assembly_clock.seconds();
+        row.seconds_baseline = (mass ? linear_ag : linear_k).seconds;
+        row.seconds = time_assembled_solve(matrix, load);
+        add(row);
+      }
     }
   }
   return rows;

@@ -1,6 +1,7 @@
 // Performance benchmark: every cost as a ratio against a baseline timed in the same run, the
-// time of one linear solve (CHOLMOD factorization with its own ordering + one solve) of the same
-// matrix — K for the contact problems, A_G = K + M for α — on the §7 data.
+// time of one linear solve of the same matrix with the same solver (static condensation of the
+// cell interiors, CHOLMOD on the skeleton, one solve) — K for the contact problems, A_G = K + M
+// for α — on the §7 data; optionally the same solves on the assembled matrices for comparison.
 #pragma once
 
 #include <functional>
@@ -13,7 +14,8 @@ namespace hpcontact::studies {
 
 /// A benchmark file (TOML), e.g. studies/performance/benchmark.toml:
 ///   [benchmark] p, pC (degrees), ratio (h/H), n (list of levels, cells per side),
-///               kinds (any of "signorini", "friction", "friction_s", "alpha")
+///               kinds (any of "signorini", "friction", "friction_s", "alpha", and "assembled":
+///               CHOLMOD on the assembled K and A_G, as ratios to the condensed solves)
 struct PerformanceBenchmark {
   std::string file;
   int p = 4, pc = 3;
@@ -26,13 +28,13 @@ struct PerformanceBenchmark {
 PerformanceBenchmark read_performance_benchmark(const std::string& path);
 
 struct BenchmarkRow {
-  std::string kind;  ///< "linear_K", "linear_AG", a contact problem, or "alpha"
+  std::string kind;  ///< "linear_K", "linear_AG", a contact problem, "alpha", "linear_K_assembled", "linear_AG_assembled"
   int p = 0, pc = 0, n = 0, m = 0, ndofs = 0, nmult = 0, n_trace = 0;
   double seconds_assembly = 0.0;  ///< not part of either side of the ratio
   double seconds_baseline = 0.0;  ///< one linear solve of the same matrix
   double seconds = 0.0;           ///< the measured operation (assembly excluded)
   double ratio = 0.0;             ///< seconds / seconds_baseline
-  double peak_rss_mb = 0.0;       ///< the process's peak resident memory after this row
+  double peak_rss_mb = 0.0;       ///< peak resident memory during this row (with what earlier rows left resident)
 };
 
 /// Runs every level (in the given order) and kind; `on_row` after each row (progress).

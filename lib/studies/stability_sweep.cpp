@@ -18,6 +18,7 @@
 #include "core/petsc_session.hpp"
 #include "io/atomic_file.hpp"
 #include "io/toml_reader.hpp"
+#include "mesh/boundary_mesh.hpp"
 #include "mesh/contact_boundary.hpp"
 #include "studies/scene_discretization.hpp"
 #include "norms/h_minus_half_gram.hpp"
@@ -251,6 +252,7 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
   const std::vector<int> degrees = sweep.degrees.empty() ? std::vector<int>{0} : sweep.degrees;
   const std::vector<int> multiplier_degrees = sweep.multiplier_degrees.empty() ? std::vector<int>{-1} : sweep.multiplier_degrees;
   std::vector<Point> points;
+  std::map<std::pair<std::size_t, std::size_t>, std::set<int>> multiplier_degrees_used;  // (level, ratio) → p_C as given
   for (std::size_t level = 0; level < sweep.levels.size(); ++level) {
     const auto& facts = sweep.level_facts[level];
     for (int p : degrees)
@@ -262,6 +264,7 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
               if (sweep.pc_below_p && reported_pc >= reported_p) continue;
               points.push_back({problem, infsup::to_string(infsup::parse_gram_norm(norm, sweep.file)), level, r, p, pc,
                                 reported_p, reported_pc, facts.segments[r]});
+              multiplier_degrees_used[{level, r}].insert(pc);
             }
   }
   const auto backend = infsup::parse_eigen_backend(sweep.eigensolver, sweep.file);
@@ -308,12 +311,19 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
     }
   }
   std::vector<std::pair<int, std::string>> new_rows;  // (point index, CSV line), parallel runs
-  // What the points of the current level share: the extension norm's reference and the Gram
-  // matrices, (norm, ratio, p_C as given) → G.
+  // What the points of the current level share: the extension norm's reference, and per (norm,
+  // ratio) the Gram matrix of the envelope multiplier space, whose degree on each segment is the
+  // largest of the sweep's p_C there: every point's G is a principal submatrix of it
+  // (norms::restrict_gram), so one Gram matrix serves all p_C.
+  struct EnvelopeGram {
+    std::unique_ptr<mesh::BoundaryMesh> boundary;
+    std::unique_ptr<space::MultiplierSpace> multipliers;
+    Eigen::MatrixXd gram;
+  };
   struct LevelShared {
     std::size_t level = 0;
     std::unique_ptr<norms::ExtensionReferenceFactor> extension;
-    std::map<std::tuple<std::string, std::size_t, int>, Eigen::MatrixXd> grams;
+    std::map<std::pair<std::string, std::size_t>, EnvelopeGram> grams;
   } shared;
   const int largest_p = sweep.degrees.empty() ? 0 : *std::max_element(sweep.degrees.begin(), sweep.degrees.end());
   int index = 0;
@@ -350,13 +360,22 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
                                    point.problem, point.norm, primal);
       setup.interpolation_reference = sweep.interpolation_reference;
       setup.extension_reference = sweep.extension_reference;
-      auto& gram = shared.grams[{point.norm, point.ratio, point.pc}];
-      if (gram.size() == 0) {
-        const space::MultiplierSpace multipliers(boundary, setup.segment_degrees);
-        gram = setup.norm == infsup::GramNorm::interpolation
-                   ? norms::interpolation_norm_gram(primal.contact(), multipliers, sweep.interpolation_reference)
-                   : norms::extension_norm_gram(*shared.extension, multipliers);
+      auto& envelope = shared.grams[{point.norm, point.ratio}];
+      if (!envelope.multipliers) {
+        envelope.boundary = std::make_unique<mesh::BoundaryMesh>(boundary);
+        std::vector<int> degrees(boundary.n_segments(), 0);
+        for (int pc : multiplier_degrees_used[{level, point.ratio}]) {
+          const auto at_pc = io::scene_segment_degrees(point_scene(level_scene, 0, pc, ratios[point.ratio]), contact, boundary);
+          for (std::size_t k = 0; k < degrees.size(); ++k) degrees[k] = std::max(degrees[k], at_pc[k]);
+        }
+        envelope.multipliers = std::make_unique<space::MultiplierSpace>(*envelope.boundary, std::move(degrees));
+        envelope.gram = setup.norm == infsup::GramNorm::interpolation
+                            ? norms::interpolation_norm_gram(primal.contact(), *envelope.multipliers,
+                                                             sweep.interpolation_reference)
+                            : norms::extension_norm_gram(*shared.extension, *envelope.multipliers);
       }
+      const Eigen::MatrixXd gram = norms::restrict_gram(
+          envelope.gram, *envelope.multipliers, space::MultiplierSpace(boundary, setup.segment_degrees));
       setup.gram = &gram;
       const auto result = infsup::analyse_infsup(setup, backend);
       const double ratio = ratios[point.ratio].empty() ? static_cast<double>(point.m) / sweep.level_facts[level].contact_edges
