@@ -139,6 +139,12 @@ SparseCholesky::SparseCholesky(const Eigen::SparseMatrix<double>& matrix, const 
     permutation = interior_first_ordering(*source, trailing, c);
     c.nmethods = 1;
     c.method[0].ordering = CHOLMOD_GIVEN;
+  } else {
+    // AMD alone: CHOLMOD's default also tries METIS when AMD's fill is high, which on the 2D
+    // finite element matrices here costs more time than its smaller factor saves (1e6 dofs of
+    // degree 4, condensed: 10.2 s against 7.1 s).
+    c.nmethods = 1;
+    c.method[0].ordering = CHOLMOD_AMD;
   }
   impl_->factor = cholmod_analyze_p(&a, permutation.empty() ? nullptr : permutation.data(), nullptr, 0, &c);
   if (!impl_->factor) throw NumericalError(fmt::format("CHOLMOD analysis failed, status {}", c.status));
