@@ -7,7 +7,6 @@
 
 #include <algorithm>
 
-#include "assembly/poisson_assembly.hpp"
 #include "core/error.hpp"
 #include "core/timer.hpp"
 #include "mesh/boundary_mesh.hpp"
@@ -23,28 +22,6 @@ PrimalOperators::PrimalOperators(const mesh::QuadMesh& mesh, std::vector<int> ce
 }
 
 PrimalOperators::~PrimalOperators() = default;
-
-namespace {
-
-// Assembles K or M into `slot` on first use and logs it.
-const Eigen::SparseMatrix<double>& volume_matrix(const space::H1Space& space, bool stiffness,
-                                                 std::unique_ptr<Eigen::SparseMatrix<double>>& slot, OperatorLog* log) {
-  if (!slot) {
-    Stopwatch clock;
-    auto matrices = assembly::assemble_volume_matrices(space, {.stiffness = stiffness, .mass = !stiffness});
-    slot = std::make_unique<Eigen::SparseMatrix<double>>(std::move(stiffness ? matrices.stiffness : matrices.mass));
-    if (log) log->record(stiffness ? "K" : "M", slot->rows(), slot->cols(), clock.seconds());
-  }
-  return *slot;
-}
-
-}  // namespace
-
-const Eigen::SparseMatrix<double>& PrimalOperators::stiffness() const {
-  return volume_matrix(*space_, true, stiffness_, log_);
-}
-
-const Eigen::SparseMatrix<double>& PrimalOperators::mass() const { return volume_matrix(*space_, false, mass_, log_); }
 
 const std::vector<int>& PrimalOperators::trace_dofs() const {
   if (!trace_dofs_) {

@@ -2,8 +2,8 @@
 // first use and never twice: the couplings with multiplier spaces on Γ_C, and the factorizations
 // of K and A_G = K + M (cell interiors condensed out, every Γ_C trace dof ordered last), so that
 // B A⁻¹ Bᵀ for ANY multiplier space on Γ_C (any p_C, H, weight s) is dense work on the trace
-// only; the assembled K and M only for whoever asks for them. One object per (T_h, p): a `solve`
-// with α, or all sweep points on (n, p), share it.
+// only. K and M themselves are never assembled. One object per (T_h, p): a `solve` with α, or
+// all sweep points on (n, p), share it.
 #pragma once
 
 #include <functional>
@@ -31,8 +31,6 @@ class PrimalOperators {
   const space::H1Space& space() const { return *space_; }
   const mesh::ContactBoundary& contact() const { return *contact_; }
 
-  const Eigen::SparseMatrix<double>& stiffness() const;  ///< K, logged as "K"
-  const Eigen::SparseMatrix<double>& mass() const;       ///< M, logged as "M"
   /// K factorized with the trace last ("factor(K)"), and A_G = K + M likewise ("factor(K+M)"),
   /// both by static condensation from the element matrices (neither needs K or M assembled).
   const assembly::CondensedFactor& stiffness_factor() const;
@@ -59,7 +57,6 @@ class PrimalOperators {
   std::unique_ptr<space::H1Space> space_;
   std::unique_ptr<mesh::ContactBoundary> contact_;
   OperatorLog* log_;
-  mutable std::unique_ptr<Eigen::SparseMatrix<double>> stiffness_, mass_;
   mutable std::unique_ptr<assembly::CondensedFactor> stiffness_factor_, gram_factor_;
   mutable std::unique_ptr<std::vector<int>> trace_dofs_;
   mutable std::map<std::string, Eigen::SparseMatrix<double>> couplings_;
