@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -216,6 +217,61 @@ TEST(Cli, SweepUnderMpirunWritesTheSerialCsv) {
   EXPECT_EQ(serial_alpha, without_seconds(dir / "parallel" / "alpha.csv"));
   std::ifstream a(dir / "serial" / "verdicts.csv"), b(dir / "parallel" / "verdicts.csv");
   EXPECT_EQ(std::string(std::istreambuf_iterator<char>(a), {}), std::string(std::istreambuf_iterator<char>(b), {}));
+}
+
+// `mpirun -n 2 hpcontact solve` factorizes K and A_G over the ranks (MPIAIJ + MUMPS, the skeleton
+// split by cells) and gives the serial run's contact solution and α: every number of the
+// boundary CSV to 1e-8 of its column's size, the energies and α to 1e-10.
+TEST(Cli, SolveUnderMpirunGivesTheSerialSolutionAndAlpha) {
+  const std::string env = "env OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ";
+  auto number_after = [](const std::string& text, const std::string& key) {
+    const auto at = text.find(key);
+    return at == std::string::npos ? NAN : std::stod(text.substr(at + key.size()));
+  };
+  auto table = [](const std::filesystem::path& path) {
+    std::ifstream in(path);
+    std::string line;
+    std::getline(in, line);
+    std::vector<std::vector<double>> rows;
+    while (std::getline(in, line)) {
+      rows.emplace_back();
+      std::stringstream cells(line);
+      for (std::string cell; std::getline(cells, cell, ',');) rows.back().push_back(std::stod(cell));
+    }
+    return rows;
+  };
+  const std::vector<std::pair<std::string, std::string>> cases{{"figure1_signorini", "signorini,infsup"},
+                                                               {"figure6_friction_s", "friction_s"}};
+  for (const auto& [scene, effects] : cases) {
+    const auto dir = scratch("solve_mpi_" + scene);
+    const std::string arguments = " solve " HPCONTACT_SOURCE_DIR "/studies/paper/" + scene + ".toml --effects " + effects;
+    const auto serial = run_command(env + HPCONTACT_CLI + arguments + " --out " + (dir / "serial").string());
+    ASSERT_EQ(serial.exit_code, 0) << serial.output;
+    const auto parallel = run_command(env + "mpirun -n 2 --oversubscribe " HPCONTACT_CLI + arguments + " --out " +
+                                      (dir / "parallel").string());
+    ASSERT_EQ(parallel.exit_code, 0) << parallel.output;
+    EXPECT_NE(parallel.output.find("on 2 ranks"), std::string::npos) << parallel.output;
+    const double energy = number_after(serial.output, "energy = ");
+    EXPECT_NEAR(number_after(parallel.output, "energy = "), energy, 1e-10 * std::abs(energy)) << parallel.output;
+    if (effects.find("infsup") != std::string::npos) {
+      const double alpha = number_after(serial.output, "alpha = ");
+      EXPECT_GT(alpha, 0.1);
+      EXPECT_NEAR(number_after(parallel.output, "alpha = "), alpha, 1e-10) << parallel.output;
+    }
+    const std::string problem = effects.substr(0, effects.find(','));
+    const auto a = table(dir / "serial" / ("boundary_" + problem + ".csv"));
+    const auto b = table(dir / "parallel" / ("boundary_" + problem + ".csv"));
+    ASSERT_EQ(a.size(), b.size());
+    ASSERT_GT(a.size(), 100u);
+    for (std::size_t column = 0; column < a.front().size(); ++column) {
+      double scale = 0.0, difference = 0.0;
+      for (std::size_t row = 0; row < a.size(); ++row) {
+        scale = std::max(scale, std::abs(a[row][column]));
+        difference = std::max(difference, std::abs(a[row][column] - b[row][column]));
+      }
+      EXPECT_LE(difference, 1e-8 * scale) << scene << " column " << column;
+    }
+  }
 }
 
 // A folder holding an alpha.csv of other columns (an older version's) is refused with a hint;

@@ -11,6 +11,7 @@
 
 #include "commands.hpp"
 #include "core/error.hpp"
+#include "core/petsc_session.hpp"
 #include "io/atomic_file.hpp"
 #include "io/scene.hpp"
 #include "studies/scene_run.hpp"
@@ -62,9 +63,15 @@ int run_solve(const SolveOptions& o) {
                                 fmt::join(io::effect_names(), ", ")));
   io::check_output_directory(o.out);
 
-  // 2. Run; progress goes to stderr so that stdout stays the result.
-  studies::SceneRunOptions options{o.out, points_origin, [](const std::string& line) { fmt::print(stderr, "# {}\n", line); }};
+  // 2. Run; progress goes to stderr so that stdout stays the result. Under mpirun every rank runs
+  // the scene, K and A_G are factorized over the ranks, and rank 0 reports and writes.
+  const auto [rank, ranks] = mpi_rank_and_size();
+  studies::SceneRunOptions options{o.out, points_origin, [rank](const std::string& line) {
+                                     if (rank == 0) fmt::print(stderr, "# {}\n", line);
+                                   }};
+  options.distributed = ranks > 1;
   const auto summary = studies::run_scene(scene, options);
+  if (rank != 0) return 0;
 
   // 3. One line per effect.
   for (const auto& problem : scene.contact_effects()) {
@@ -77,9 +84,9 @@ int run_solve(const SolveOptions& o) {
   if (summary.contains("infsup"))
     fmt::print("infsup: alpha = {:.10g} ({})\n", summary["infsup"]["alpha"].get<double>(),
                summary["infsup"]["lambda_unique"].get<bool>() ? "lambda unique" : "singular: lambda not unique");
-  fmt::print("# p {} pC {} m {} ndofs {}: wrote {} in {:.2f} s\n", summary["p"].get<std::string>(),
+  fmt::print("# p {} pC {} m {} ndofs {}: wrote {} in {:.2f} s on {} rank{}\n", summary["p"].get<std::string>(),
              summary["pC"].get<std::string>(), summary["m"].get<int>(), summary["ndofs"].get<int>(), o.out,
-             summary["seconds_total"].get<double>());
+             summary["seconds_total"].get<double>(), ranks, ranks > 1 ? "s" : "");
   return 0;
 }
 

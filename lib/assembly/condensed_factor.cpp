@@ -12,6 +12,7 @@
 
 #include "assembly/element_matrices.hpp"
 #include "core/error.hpp"
+#include "core/petsc_session.hpp"
 
 namespace hpcontact::assembly {
 
@@ -42,18 +43,27 @@ std::array<long long, 4> rounded_jacobian(const Eigen::Matrix2d& jacobian) {
 }  // namespace
 
 CondensedFactor::CondensedFactor(const space::H1Space& space, double stiffness_weight, double mass_weight,
-                                 const std::vector<int>& trailing)
-    : space_(&space),
-      size_(space.n_dofs()),
-      skeleton_(eliminate_interiors(stiffness_weight, mass_weight), checked_trailing(space, trailing)) {}
-
-const std::vector<int>& CondensedFactor::checked_trailing(const space::H1Space& space, const std::vector<int>& trailing) {
+                                 const std::vector<int>& trailing, bool distributed)
+    : space_(&space), size_(space.n_dofs()), n_trailing_(static_cast<int>(trailing.size())) {
   for (int index : trailing)
     HPC_VERIFY(index >= 0 && index < space.n_skeleton_dofs(), "trailing set outside the skeleton dofs");
-  return trailing;
+  const int n_cells = space.mesh().n_cells(), n_skeleton = space.n_skeleton_dofs();
+  if (distributed) {
+    const auto [rank, ranks] = mpi_rank_and_size();
+    const int first = static_cast<int>(static_cast<long long>(n_cells) * rank / ranks);
+    const int last = static_cast<int>(static_cast<long long>(n_cells) * (rank + 1) / ranks);
+    distributed_ = std::make_unique<linalg::DistributedCholesky>(
+        n_skeleton, eliminate_interiors(stiffness_weight, mass_weight, first, last));
+    return;
+  }
+  const auto lower = eliminate_interiors(stiffness_weight, mass_weight, 0, n_cells);
+  Eigen::SparseMatrix<double> schur(n_skeleton, n_skeleton);
+  schur.setFromTriplets(lower.begin(), lower.end());
+  serial_ = std::make_unique<linalg::SparseCholesky>(schur, trailing);
 }
 
-Eigen::SparseMatrix<double> CondensedFactor::eliminate_interiors(double stiffness_weight, double mass_weight) {
+std::vector<Eigen::Triplet<double>> CondensedFactor::eliminate_interiors(double stiffness_weight, double mass_weight,
+                                                                         int first_cell, int last_cell) {
   const auto& space = *space_;
   const auto& mesh = space.mesh();
   ElementMatrices element(space);
@@ -97,6 +107,7 @@ Eigen::SparseMatrix<double> CondensedFactor::eliminate_interiors(double stiffnes
       if (key) congruent.emplace(*key, block_of_cell_[c]);
       blocks_.push_back(std::move(block));
     }
+    if (c < first_cell || c >= last_cell) continue;
     const CellBlock& block = *blocks_[block_of_cell_[c]];
     // The lower triangle (all CHOLMOD reads); exact zeros (Lobatto orthogonality on
     // parallelograms) stay out of the pattern.
@@ -110,23 +121,19 @@ Eigen::SparseMatrix<double> CondensedFactor::eliminate_interiors(double stiffnes
       }
     }
   }
-  Eigen::SparseMatrix<double> schur(space.n_skeleton_dofs(), space.n_skeleton_dofs());
-  schur.setFromTriplets(lower.begin(), lower.end());
-  return schur;
+  return lower;
 }
 
 CondensedFactor::~CondensedFactor() = default;
 CondensedFactor::CondensedFactor(CondensedFactor&&) noexcept = default;
 CondensedFactor& CondensedFactor::operator=(CondensedFactor&&) noexcept = default;
 
-long long CondensedFactor::factor_nonzeros() const {
-  long long count = skeleton_.factor_nonzeros();
-  for (const auto& block : blocks_) count += static_cast<long long>(block->interior.size() * (block->interior.size() + 1) / 2);
-  return count;
+Eigen::MatrixXd CondensedFactor::skeleton_solve(const Eigen::MatrixXd& rhs) const {
+  return serial_ ? serial_->solve(rhs) : distributed_->solve(rhs);
 }
 
 Eigen::MatrixXd CondensedFactor::condense(const Eigen::MatrixXd& rhs) const {
-  Eigen::MatrixXd out = rhs.topRows(skeleton_.size());
+  Eigen::MatrixXd out = rhs.topRows(n_skeleton());
   for (int c = 0; c < static_cast<int>(block_of_cell_.size()); ++c) {
     const CellBlock& block = *blocks_[block_of_cell_[c]];
     if (block.interior.empty()) continue;
@@ -145,7 +152,7 @@ Eigen::MatrixXd CondensedFactor::condense(const Eigen::MatrixXd& rhs) const {
 Eigen::MatrixXd CondensedFactor::solve(const Eigen::MatrixXd& rhs) const {
   HPC_VERIFY(rhs.rows() == size_, "right-hand side of the wrong size");
   Eigen::MatrixXd out(size_, rhs.cols());
-  out.topRows(skeleton_.size()) = skeleton_.solve(condense(rhs));
+  out.topRows(n_skeleton()) = skeleton_solve(condense(rhs));
   for (int c = 0; c < static_cast<int>(block_of_cell_.size()); ++c) {
     const CellBlock& block = *blocks_[block_of_cell_[c]];
     if (block.interior.empty()) continue;
@@ -167,12 +174,15 @@ Eigen::VectorXd CondensedFactor::solve(const Eigen::VectorXd& rhs) const { retur
 
 Eigen::MatrixXd CondensedFactor::schur_complement(const Eigen::SparseMatrix<double>& b) const {
   HPC_VERIFY(b.cols() == size_, "B A⁻¹ Bᵀ: B has the wrong number of columns");
-  const int n_skeleton = skeleton_.size();
+  const int n_skeleton = this->n_skeleton();
   bool skeleton_only = true;
   for (int col = n_skeleton; skeleton_only && col < b.outerSize(); ++col)
     for (Eigen::SparseMatrix<double>::InnerIterator it(b, col); it; ++it)
       if (it.value() != 0.0) skeleton_only = false;
-  if (skeleton_only) return skeleton_.schur_complement(b.leftCols(n_skeleton));
+  if (skeleton_only) {
+    const Eigen::SparseMatrix<double> b_skeleton = b.leftCols(n_skeleton);
+    return serial_ ? serial_->schur_complement(b_skeleton) : distributed_->schur_complement(b_skeleton);
+  }
   const Eigen::MatrixXd result = b * solve(Eigen::MatrixXd(b.transpose()));
   return 0.5 * (result + result.transpose());
 }

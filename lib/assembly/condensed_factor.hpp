@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include "linalg/distributed_cholesky.hpp"
 #include "linalg/sparse_cholesky.hpp"
 #include "space/h1_space.hpp"
 
@@ -23,30 +24,35 @@ namespace hpcontact::assembly {
 /// Parallelogram cells with equal Jacobian and degrees share their elimination (uniform meshes
 /// eliminate one cell). Since a trace coupling B has no interior columns, B A⁻¹ Bᵀ = B_s S⁻¹ B_sᵀ:
 /// the Steklov–Poincaré condensation of SparseCholesky applies to S unchanged.
+///
+/// Distributed (under mpirun): every rank eliminates every cell (vectors stay replicated) but
+/// contributes to S only its share of the cells, and S is factorized over the ranks by MUMPS
+/// (DistributedCholesky); B A⁻¹ Bᵀ then comes from solves with Bᵀ instead of the trailing block.
 class CondensedFactor {
  public:
-  /// `trailing`: dofs (skeleton dofs only) ordered last in the factorization of S.
+  /// `trailing`: dofs (skeleton dofs only) ordered last in the factorization of S (serial only).
   /// @throws NumericalError if A is not positive definite.
   CondensedFactor(const space::H1Space& space, double stiffness_weight, double mass_weight,
-                  const std::vector<int>& trailing = {});
+                  const std::vector<int>& trailing = {}, bool distributed = false);
   ~CondensedFactor();
   CondensedFactor(CondensedFactor&&) noexcept;
   CondensedFactor& operator=(CondensedFactor&&) noexcept;
 
   /// Number of unknowns of A: space.n_dofs().
   int size() const { return size_; }
-  int n_skeleton() const { return skeleton_.size(); }
-  int n_trailing() const { return skeleton_.n_trailing(); }
+  int n_skeleton() const { return space_->n_skeleton_dofs(); }
+  /// The trace dofs the Schur complements are taken on (the trailing set).
+  int n_trailing() const { return n_trailing_; }
   /// Distinct interior eliminations: 1 on a uniform mesh of one degree, n_cells on a general mesh.
   int n_eliminations() const { return static_cast<int>(blocks_.size()); }
-  /// Nonzeros of the skeleton factor plus those of the distinct interior factors.
-  long long factor_nonzeros() const;
+  bool distributed() const { return distributed_ != nullptr; }
 
-  /// A⁻¹ rhs, shape (n) or (n, k).
+  /// A⁻¹ rhs, shape (n) or (n, k). Distributed: collective, rhs and result the same on every rank.
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const;
   Eigen::MatrixXd solve(const Eigen::MatrixXd& rhs) const;
   /// B A⁻¹ Bᵀ, dense symmetric (m, m), for B of shape (m, n): on the skeleton factor's trailing
   /// block when B has no interior columns (any trace coupling), otherwise by solves.
+  /// Distributed: collective, by solves with Bᵀ in blocks of 64 columns.
   Eigen::MatrixXd schur_complement(const Eigen::SparseMatrix<double>& b) const;
   /// uᵀ A u, cell by cell from the eliminated blocks (a sum of non-negative terms, so as accurate
   /// as u itself), without A.
@@ -54,9 +60,12 @@ class CondensedFactor {
 
  private:
   struct CellBlock;
-  /// Fills blocks_ and block_of_cell_; returns the lower triangle of S.
-  Eigen::SparseMatrix<double> eliminate_interiors(double stiffness_weight, double mass_weight);
-  static const std::vector<int>& checked_trailing(const space::H1Space& space, const std::vector<int>& trailing);
+  /// Fills blocks_ and block_of_cell_ for every cell; returns the entries of the lower triangle
+  /// of S that the cells [first_cell, last_cell) contribute.
+  std::vector<Eigen::Triplet<double>> eliminate_interiors(double stiffness_weight, double mass_weight, int first_cell,
+                                                          int last_cell);
+  /// S⁻¹ rhs on the skeleton, shape (n_skeleton, k).
+  Eigen::MatrixXd skeleton_solve(const Eigen::MatrixXd& rhs) const;
   /// f_s − A_si A_ii⁻¹ f_i, shape (n_skeleton, k).
   Eigen::MatrixXd condense(const Eigen::MatrixXd& rhs) const;
 
@@ -64,7 +73,9 @@ class CondensedFactor {
   int size_ = 0;
   std::vector<std::unique_ptr<CellBlock>> blocks_;
   std::vector<int> block_of_cell_;
-  linalg::SparseCholesky skeleton_;
+  int n_trailing_ = 0;
+  std::unique_ptr<linalg::SparseCholesky> serial_;          ///< one of the two
+  std::unique_ptr<linalg::DistributedCholesky> distributed_;
 };
 
 }  // namespace hpcontact::assembly

@@ -17,6 +17,7 @@
 
 #include "core/error.hpp"
 #include "core/petsc_check.hpp"
+#include "core/petsc_handle.hpp"
 
 namespace hpcontact::infsup {
 namespace {
@@ -121,25 +122,6 @@ SmallestEigenpair finish(const Pencil& pencil, double lambda, Eigen::VectorXd x,
 
 // ---------------------------------------------------------------------------------------------
 // PETSc/SLEPc helpers.
-
-/// Owns one PETSc object; destroys it (errors ignored: destructors must not throw) when done.
-template <typename Object, PetscErrorCode (*destroy)(Object*)>
-class PetscHandle {
- public:
-  PetscHandle() = default;
-  PetscHandle(PetscHandle&& other) noexcept : object_(std::exchange(other.object_, nullptr)) {}
-  PetscHandle& operator=(PetscHandle&&) = delete;
-  PetscHandle(const PetscHandle&) = delete;
-  PetscHandle& operator=(const PetscHandle&) = delete;
-  ~PetscHandle() {
-    if (object_ != nullptr) destroy(&object_);
-  }
-  Object get() const { return object_; }
-  Object* out() { return &object_; }
-
- private:
-  Object object_ = nullptr;
-};
 
 using MatHandle = PetscHandle<Mat, MatDestroy>;
 using VecHandle = PetscHandle<Vec, VecDestroy>;

@@ -9,6 +9,7 @@
 #include "contact/contact_output.hpp"
 #include "contact/multiplier_distance.hpp"
 #include "core/operator_log.hpp"
+#include "core/petsc_session.hpp"
 #include "core/timer.hpp"
 #include "infsup/infsup_analysis.hpp"
 #include "io/atomic_file.hpp"
@@ -90,7 +91,7 @@ void add_convergence_rows(const io::Scene& scene, const std::vector<ContactEffec
     refined.refinements += k;
     auto d = discretize_scene(refined);
     OperatorLog level_log;
-    const norms::PrimalOperators primal(d->mesh, d->cell_degrees, &level_log);
+    const norms::PrimalOperators primal(d->mesh, d->cell_degrees, &level_log, options.distributed);
     refined_effects.push_back(std::make_unique<std::vector<ContactEffect>>(
         solve_contact_effects(refined, *d, primal, options, fmt::format(" (convergence level {})", k))));
     for (const auto& record : level_log.records())
@@ -132,7 +133,7 @@ nlohmann::json run_scene(const io::Scene& scene, const SceneRunOptions& options)
   // 1. Meshes and degrees; the operators of S^p(T_h) are built on first use and shared.
   const auto d = discretize_scene(scene);
   OperatorLog log;
-  const norms::PrimalOperators primal(d->mesh, d->cell_degrees, &log);
+  const norms::PrimalOperators primal(d->mesh, d->cell_degrees, &log, options.distributed);
 
   // 2. The contact problems.
   const std::vector<ContactEffect> contacts = solve_contact_effects(scene, *d, primal, options, "");
@@ -174,6 +175,9 @@ nlohmann::json run_scene(const io::Scene& scene, const SceneRunOptions& options)
   for (const auto& record : log.records())
     summary["operators"].push_back({{"name", record.name}, {"rows", record.rows}, {"cols", record.cols}, {"seconds", record.seconds}});
   summary["seconds_total"] = clock.seconds();
+  const auto [rank, ranks] = mpi_rank_and_size();
+  summary["ranks"] = ranks;
+  if (rank != 0) return summary;
 
   io::ensure_writable_directory(options.out);
   for (const auto& effect : contacts) {

@@ -17,6 +17,9 @@ struct SceneRunOptions {
   std::filesystem::path out;      ///< output folder (created when everything is computed)
   ValueOrigin constraint_points;  ///< where the constraint-point count came from, for messages
   std::function<void(const std::string&)> progress;  ///< one line per step, if given
+  /// Under mpirun: every rank runs the scene with K and A_G factorized over the ranks
+  /// (MUMPS), and rank 0 alone writes the files.
+  bool distributed = false;
 };
 
 /// Runs the effects of `scene` and writes into `out`:
