@@ -65,7 +65,7 @@ int run_solve(const SolveOptions& o) {
 
   // 2. Run; progress goes to stderr so that stdout stays the result. Under mpirun every rank runs
   // the scene, K and A_G are factorized over the ranks, and rank 0 reports and writes.
-  const auto [rank, ranks] = mpi_rank_and_size();
+  const int rank = mpi_rank_and_size().first, ranks = mpi_rank_and_size().second;  // (a lambda captures rank)
   studies::SceneRunOptions options{o.out, points_origin, [rank](const std::string& line) {
                                      if (rank == 0) fmt::print(stderr, "# {}\n", line);
                                    }};
