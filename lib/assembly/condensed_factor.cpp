@@ -40,6 +40,24 @@ std::array<long long, 4> rounded_jacobian(const Eigen::Matrix2d& jacobian) {
           std::llround(jacobian(1, 1) / unit)};
 }
 
+// Rows of `values` (global dof order) at a cell's interior shapes `local`.
+Eigen::MatrixXd interior_rows(const std::vector<space::LocalShape>& shapes, const std::vector<int>& local,
+                              const Eigen::Ref<const Eigen::MatrixXd>& values) {
+  Eigen::MatrixXd out(local.size(), values.cols());
+  for (std::size_t k = 0; k < local.size(); ++k) out.row(k) = values.row(shapes[local[k]].dof);
+  return out;
+}
+
+// Rows of `values` at a cell's skeleton shapes `local`, times their signs (0 for Dirichlet dofs):
+// the coefficients of the cell's unsigned element block.
+Eigen::MatrixXd signed_skeleton_rows(const std::vector<space::LocalShape>& shapes, const std::vector<int>& local,
+                                     const Eigen::Ref<const Eigen::MatrixXd>& values) {
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(local.size(), values.cols());
+  for (std::size_t s = 0; s < local.size(); ++s)
+    if (const auto& shape = shapes[local[s]]; shape.dof >= 0) out.row(s) = shape.sign * values.row(shape.dof);
+  return out;
+}
+
 }  // namespace
 
 CondensedFactor::CondensedFactor(const space::H1Space& space, double stiffness_weight, double mass_weight,
@@ -138,9 +156,8 @@ Eigen::MatrixXd CondensedFactor::condense(const Eigen::MatrixXd& rhs) const {
     const CellBlock& block = *blocks_[block_of_cell_[c]];
     if (block.interior.empty()) continue;
     const auto& shapes = space_->cell_shapes(c);
-    Eigen::MatrixXd interior_rhs(block.interior.size(), rhs.cols());
-    for (std::size_t k = 0; k < block.interior.size(); ++k) interior_rhs.row(k) = rhs.row(shapes[block.interior[k]].dof);
-    const Eigen::MatrixXd correction = block.interior_solve.transpose() * interior_rhs;  // (A_ii⁻¹ A_is)ᵀ f_i
+    // (A_ii⁻¹ A_is)ᵀ f_i
+    const Eigen::MatrixXd correction = block.interior_solve.transpose() * interior_rows(shapes, block.interior, rhs);
     for (std::size_t s = 0; s < block.skeleton.size(); ++s) {
       const auto& shape = shapes[block.skeleton[s]];
       if (shape.dof >= 0) out.row(shape.dof) -= shape.sign * correction.row(s);
@@ -157,14 +174,9 @@ Eigen::MatrixXd CondensedFactor::solve(const Eigen::MatrixXd& rhs) const {
     const CellBlock& block = *blocks_[block_of_cell_[c]];
     if (block.interior.empty()) continue;
     const auto& shapes = space_->cell_shapes(c);
-    Eigen::MatrixXd interior(block.interior.size(), rhs.cols()), skeleton(block.skeleton.size(), rhs.cols());
-    for (std::size_t k = 0; k < block.interior.size(); ++k) interior.row(k) = rhs.row(shapes[block.interior[k]].dof);
-    for (std::size_t s = 0; s < block.skeleton.size(); ++s) {
-      const auto& shape = shapes[block.skeleton[s]];
-      skeleton.row(s) = shape.dof >= 0 ? Eigen::RowVectorXd(shape.sign * out.row(shape.dof))
-                                       : Eigen::RowVectorXd::Zero(rhs.cols());
-    }
-    interior = block.interior_factor.solve(interior) - block.interior_solve * skeleton;
+    const Eigen::MatrixXd interior =
+        block.interior_factor.solve(interior_rows(shapes, block.interior, rhs)) -
+        block.interior_solve * signed_skeleton_rows(shapes, block.skeleton, out);
     for (std::size_t k = 0; k < block.interior.size(); ++k) out.row(shapes[block.interior[k]].dof) = interior.row(k);
   }
   return out;
@@ -194,16 +206,10 @@ double CondensedFactor::quadratic_form(const Eigen::VectorXd& u) const {
   for (int c = 0; c < static_cast<int>(block_of_cell_.size()); ++c) {
     const CellBlock& block = *blocks_[block_of_cell_[c]];
     const auto& shapes = space_->cell_shapes(c);
-    Eigen::VectorXd skeleton(block.skeleton.size());
-    for (std::size_t s = 0; s < block.skeleton.size(); ++s) {
-      const auto& shape = shapes[block.skeleton[s]];
-      skeleton(s) = shape.dof >= 0 ? shape.sign * u(shape.dof) : 0.0;
-    }
+    const Eigen::VectorXd skeleton = signed_skeleton_rows(shapes, block.skeleton, u);
     sum += skeleton.dot(block.schur * skeleton);
     if (block.interior.empty()) continue;
-    Eigen::VectorXd interior(block.interior.size());
-    for (std::size_t k = 0; k < block.interior.size(); ++k) interior(k) = u(shapes[block.interior[k]].dof);
-    interior += block.interior_solve * skeleton;
+    const Eigen::VectorXd interior = interior_rows(shapes, block.interior, u) + block.interior_solve * skeleton;
     sum += (block.interior_factor.matrixU() * interior).squaredNorm();
   }
   return sum;

@@ -19,6 +19,17 @@ struct DistributedCholesky::Impl {
   PetscInt row_begin = 0, row_end = 0;
 };
 
+namespace {
+
+// Sums `matrix` over the ranks, in place; every rank gets the same sum.
+void sum_over_ranks(Eigen::MatrixXd& matrix) {
+  HPC_VERIFY(MPI_Allreduce(MPI_IN_PLACE, matrix.data(), static_cast<int>(matrix.size()), MPI_DOUBLE, MPI_SUM,
+                           PETSC_COMM_WORLD) == MPI_SUCCESS,
+             "MPI_Allreduce failed");
+}
+
+}  // namespace
+
 DistributedCholesky::DistributedCholesky(int n, const std::vector<Eigen::Triplet<double>>& lower_entries)
     : impl_(std::make_unique<Impl>()), size_(n) {
   std::vector<PetscInt> rows, cols;
@@ -73,9 +84,7 @@ Eigen::MatrixXd DistributedCholesky::solve(const Eigen::MatrixXd& rhs) const {
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(size_, rhs.cols());
   if (rhs.cols() == 0) return out;
   out.middleRows(impl_->row_begin, impl_->row_end - impl_->row_begin) = solve_owned_rows(rhs);
-  HPC_VERIFY(MPI_Allreduce(MPI_IN_PLACE, out.data(), static_cast<int>(out.size()), MPI_DOUBLE, MPI_SUM,
-                           PETSC_COMM_WORLD) == MPI_SUCCESS,
-             "MPI_Allreduce failed");
+  sum_over_ranks(out);  // each row is non-zero on its owner only
   return out;
 }
 
@@ -91,9 +100,7 @@ Eigen::MatrixXd DistributedCholesky::schur_complement(const Eigen::SparseMatrix<
     const auto count = std::min<Eigen::Index>(block, m - first);
     result.middleCols(first, count) = b_owned * solve_owned_rows(Eigen::MatrixXd(bt.middleCols(first, count)));
   }
-  HPC_VERIFY(MPI_Allreduce(MPI_IN_PLACE, result.data(), static_cast<int>(result.size()), MPI_DOUBLE, MPI_SUM,
-                           PETSC_COMM_WORLD) == MPI_SUCCESS,
-             "MPI_Allreduce failed");
+  sum_over_ranks(result);
   return 0.5 * (result + result.transpose());
 }
 

@@ -62,20 +62,13 @@ double peak_rss_mb() {
   return usage.ru_maxrss / 1024.0;
 }
 
-// One linear solve with the solver the contact problems and α use: static condensation of the
-// cell interiors, CHOLMOD (its own ordering) on the skeleton, one solve. Nothing is assembled.
-double time_condensed_solve(const space::H1Space& space, double mass_weight, const Eigen::VectorXd& rhs) {
+// One linear solve: Factor(arguments...) factorizes, then one solve with `rhs`. The baselines use
+// CondensedFactor (the solver the contact problems and α use: static condensation, CHOLMOD with
+// AMD on the skeleton, nothing assembled) and, for comparison, SparseCholesky on an assembled matrix.
+template <class Factor, class... Arguments>
+double time_linear_solve(const Eigen::VectorXd& rhs, const Arguments&... arguments) {
   Stopwatch clock;
-  const assembly::CondensedFactor factor(space, 1.0, mass_weight);
-  const Eigen::VectorXd x = factor.solve(rhs);
-  HPC_VERIFY(x.allFinite(), "baseline solve gave a non-finite result");
-  return clock.seconds();
-}
-
-// One linear solve of the assembled matrix: CHOLMOD with its own ordering on all of it.
-double time_assembled_solve(const Eigen::SparseMatrix<double>& matrix, const Eigen::VectorXd& rhs) {
-  Stopwatch clock;
-  const linalg::SparseCholesky factor(matrix);
+  const Factor factor(arguments...);
   const Eigen::VectorXd x = factor.solve(rhs);
   HPC_VERIFY(x.allFinite(), "baseline solve gave a non-finite result");
   return clock.seconds();
@@ -114,7 +107,7 @@ std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& 
     const Eigen::VectorXd load = assembly::assemble_volume_load(space, [](const mesh::Point&) { return -1.0; });
     BenchmarkRow linear_k = base;
     linear_k.kind = "linear_K";
-    linear_k.seconds_baseline = linear_k.seconds = time_condensed_solve(space, 0.0, load);
+    linear_k.seconds_baseline = linear_k.seconds = time_linear_solve<assembly::CondensedFactor>(load, space, 1.0, 0.0);
     add(linear_k);
 
     for (const auto& kind : benchmark.kinds) {
@@ -144,7 +137,7 @@ std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& 
     BenchmarkRow linear_ag = base;
     linear_ag.kind = "linear_AG";
     if (has("alpha") || has("assembled")) {
-      linear_ag.seconds_baseline = linear_ag.seconds = time_condensed_solve(space, 1.0, load);
+      linear_ag.seconds_baseline = linear_ag.seconds = time_linear_solve<assembly::CondensedFactor>(load, space, 1.0, 1.0);
       add(linear_ag);
     }
     if (has("alpha")) {
@@ -173,7 +166,7 @@ std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& 
                                                         : matrices.stiffness;
         row.seconds_assembly = assembly_clock.seconds();
         row.seconds_baseline = (mass ? linear_ag : linear_k).seconds;
-        row.seconds = time_assembled_solve(matrix, load);
+        row.seconds = time_linear_solve<linalg::SparseCholesky>(load, matrix);
         add(row);
       }
     }
