@@ -8,6 +8,7 @@
 #include "core/error.hpp"
 #include "fe/point_locator.hpp"
 #include "mesh/cell_map.hpp"
+#include "mesh/point_grading.hpp"
 #include "mesh/rectangle_mesh.hpp"
 
 using namespace hpcontact;
@@ -127,4 +128,62 @@ TEST(GradedNodes, ShrinkGeometricallyTowardsEachPoint) {
   EXPECT_THROW(mesh::graded_nodes(-1.0, 1.0, 8, {1.5}, ratio, layers, "test"), InputError);
   EXPECT_THROW(mesh::graded_nodes(-1.0, 1.0, 8, {0.01, 0.02}, ratio, layers, "test"), InputError);
   EXPECT_THROW(mesh::graded_nodes(-1.0, 1.0, 8, {0.0}, 1.5, layers, "test"), InputError);
+}
+
+namespace {
+double cell_area(const mesh::QuadMesh& m, int c) {
+  double area = 0.0;  // shoelace
+  for (int k = 0; k < 4; ++k) {
+    const auto &a = m.vertex(m.cell(c)[k]), &b = m.vertex(m.cell(c)[(k + 1) % 4]);
+    area += 0.5 * (a.x() * b.y() - b.x() * a.y());
+  }
+  return area;
+}
+}  // namespace
+
+// Local geometric refinement towards vertices: on an edge (two cells), at a corner (one) and
+// inside (four). The result must tile the same square without hanging nodes (a hanging node would
+// leave an interior edge with one cell, lengthening the boundary), keep the boundary labels, and
+// shrink the cells at each centre by ratio^layers.
+TEST(PointGrading, StarsBecomeConformingGeometricLayers) {
+  const auto coarse = mesh::make_rectangle_mesh({}, 4, 4);  // h = 0.5
+  const std::vector<mesh::Point> points{{0.0, -1.0}, {1.0, 1.0}, {0.0, 0.0}};
+  std::vector<int> centres;
+  for (const auto& point : points) centres.push_back(mesh::vertex_at(coarse, point, "test"));
+  const double ratio = 0.2;
+  for (int layers : {0, 1, 5}) {
+    const auto graded = mesh::grade_towards_vertices(coarse, centres, ratio, layers, "test");
+    // 7 star cells, each replaced by 2 trapezoids per layer and its scaled copy.
+    EXPECT_EQ(graded.n_cells(), 16 - 7 + 7 * (2 * layers + 1)) << layers;
+    double area = 0.0, boundary = 0.0;
+    for (int c = 0; c < graded.n_cells(); ++c) {
+      EXPECT_GT(cell_area(graded, c), 0.0);
+      area += cell_area(graded, c);
+    }
+    EXPECT_NEAR(area, 4.0, 1e-13);
+    for (int e : graded.boundary_edges()) {
+      boundary += graded.edge_length(e);
+      const auto mid = graded.edge_midpoint(e);
+      const std::string expected = std::abs(mid.y() + 1) < 1e-12 ? "bottom"
+                                   : std::abs(mid.x() - 1) < 1e-12 ? "right"
+                                   : std::abs(mid.y() - 1) < 1e-12 ? "top" : "left";
+      EXPECT_EQ(graded.edge_label(e), expected) << mid.transpose();
+    }
+    EXPECT_NEAR(boundary, 8.0, 1e-13) << "a hanging node or a gap";
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      double shortest = INFINITY;
+      for (int e = 0; e < graded.n_edges(); ++e)
+        for (int v : graded.edge(e))
+          if (v == centres[k]) shortest = std::min(shortest, graded.edge_length(e));
+      EXPECT_NEAR(shortest, 0.5 * std::pow(ratio, layers), 1e-14) << k;  // input vertex indices are kept
+    }
+  }
+}
+
+TEST(PointGrading, OverlappingStarsAndNonVerticesAreRefused) {
+  const auto coarse = mesh::make_rectangle_mesh({}, 4, 4);
+  const int a = mesh::vertex_at(coarse, {0.0, -1.0}, "test"), b = mesh::vertex_at(coarse, {0.5, -1.0}, "test");
+  EXPECT_THROW(mesh::grade_towards_vertices(coarse, {a, b}, 0.2, 3, "test"), InputError);  // neighbours share a cell
+  EXPECT_THROW(mesh::vertex_at(coarse, {0.1, -1.0}, "test"), InputError);
+  EXPECT_THROW(mesh::grade_towards_vertices(coarse, {a}, 1.0, 3, "test"), InputError);
 }

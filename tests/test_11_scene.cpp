@@ -140,6 +140,28 @@ TEST(Scene, GradedRectangleAndRefinementsKeepTheRatio) {
   EXPECT_NE(error_of(with("n_y = 4", "n_y = 4\ngrading_x = [3.0]\ngrading_layers = 1")).find("grading"), std::string::npos);
 }
 
+// Grading points: local geometric layers around a point of Γ_C, which stays a breakpoint of
+// T_{C,H} when ratio 1/k merges edges (k = 2 and an odd number of edges before the point, where
+// merging from the end of Γ_C would straddle it); bad points name the key.
+TEST(Scene, GradingPointsStayBreakpointsOfTheContactMesh) {
+  std::string text = with("n_y = 4", "n_y = 4\ngrading_points = [[0.3, -1]]\ngrading = 0.2\ngrading_layers = 2");
+  text.replace(text.find("m = 2"), 5, "ratio = \"1/2\"");
+  const auto scene = io::read_scene(write_scene("graded_point", text));
+  const auto mesh = io::build_scene_mesh(scene);
+  const mesh::ContactBoundary contact(mesh);
+  const auto arcs = contact.breakpoints();
+  const auto at_point = std::find_if(arcs.begin(), arcs.end(), [](double s) { return std::abs(s - 1.3) < 1e-14; });
+  ASSERT_NE(at_point, arcs.end());
+  ASSERT_EQ((at_point - arcs.begin()) % 2, 1) << "the test needs an odd number of edges before the point";
+  const auto boundary = io::build_scene_boundary_mesh(scene, contact);
+  bool breakpoint = false;
+  for (int k = 0; k < boundary.n_segments(); ++k) breakpoint = breakpoint || std::abs(boundary.segment_end(k) - 1.3) < 1e-14;
+  EXPECT_TRUE(breakpoint);
+  EXPECT_NE(error_of(with("n_y = 4", "n_y = 4\ngrading_points = [[1]]")).find("domain.grading_points"), std::string::npos);
+  EXPECT_NE(error_of(with("n_y = 4", "n_y = 4\ngrading_points = [[0.0, -1], [0.5, -1]]\ngrading_layers = 1")).find("share a cell"),
+            std::string::npos);
+}
+
 // Study files extend a base scene: `set` replaces keys in every variant, `vary` moves dotted keys
 // jointly; each variant is a checked scene, and errors name the variant.
 TEST(Scene, VariantsSetAndVaryKeysOfABaseScene) {

@@ -131,7 +131,9 @@ int block_principal_pivoting(const Eigen::MatrixXd& a, const Eigen::VectorXd& b,
 
 }  // namespace
 
-BoxQpResult solve_box_qp(const Eigen::MatrixXd& s, const Eigen::VectorXd& d,
+namespace {
+
+BoxQpResult solve_scaled_box_qp(const Eigen::MatrixXd& s, const Eigen::VectorXd& d,
                          const Eigen::VectorXd& lo, const Eigen::VectorXd& hi,
                          const BoxQpOptions& options) {
   const Eigen::Index n = d.size();
@@ -166,6 +168,25 @@ BoxQpResult solve_box_qp(const Eigen::MatrixXd& s, const Eigen::VectorXd& d,
         "contact QP did not converge: KKT residual {:.3e} > tolerance {:.1e} after {} active-set "
         "steps in {} proximal steps",
         result.kkt_residual, options.tolerance, steps, result.proximal_steps));
+  return result;
+}
+
+}  // namespace
+
+BoxQpResult solve_box_qp(const Eigen::MatrixXd& s, const Eigen::VectorXd& d, const Eigen::VectorXd& lo,
+                         const Eigen::VectorXd& hi, const BoxQpOptions& options) {
+  const Eigen::Index n = d.size();
+  HPC_VERIFY(s.rows() == n && s.cols() == n && lo.size() == n && hi.size() == n, "box QP sizes");
+  // Jacobi scaling x = D y, D = diag(S)^{-1/2}: on geometric meshes the multipliers of the
+  // smallest and largest segments differ in curvature S_ii by 1e10 and more, and without it the
+  // proximal term and the residual, both relative to the largest, would not see the small ones.
+  // D > 0 keeps the box a box.
+  const double largest = n > 0 ? std::max(s.diagonal().maxCoeff(), 1e-300) : 1.0;
+  Eigen::VectorXd scale(n);
+  for (Eigen::Index i = 0; i < n; ++i) scale[i] = 1.0 / std::sqrt(s(i, i) > 1e-14 * largest ? s(i, i) : largest);
+  const Eigen::MatrixXd scaled = scale.asDiagonal() * s * scale.asDiagonal();
+  auto result = solve_scaled_box_qp(scaled, scale.cwiseProduct(d), lo.cwiseQuotient(scale), hi.cwiseQuotient(scale), options);
+  result.x = scale.cwiseProduct(result.x);
   return result;
 }
 

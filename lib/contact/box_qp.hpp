@@ -20,8 +20,9 @@ struct BoxQpOptions {
 
 struct BoxQpResult {
   Eigen::VectorXd x;
-  /// ‖x − P_[lo,hi](x − c (S x − d))‖_∞ / (‖x‖_∞ + c ‖d‖_∞), c = 1/‖S‖_∞: zero exactly at a KKT
-  /// point, and unchanged when (S, d) or the bounds are scaled.
+  /// ‖x − P_[lo,hi](x − c (S x − d))‖_∞ / (‖x‖_∞ + c ‖d‖_∞), c = 1/‖S‖_∞, of the Jacobi-scaled
+  /// problem (x = D y, D = diag(S)^{-1/2}, see solve_box_qp): zero exactly at a KKT point, and
+  /// unchanged when (S, d) or the bounds are scaled.
   double kkt_residual = 0.0;
   int newton_steps = 0;
   int proximal_steps = 0;
@@ -36,7 +37,9 @@ struct BoxQpResult {
 /// repeated from x_k = the previous solution until the KKT residual of the original problem is
 /// below tolerance. Each subproblem is strictly convex, so the method is well defined even for singular
 /// S; components in the null space of S stay where the previous iterate put them (x_0 = 0), which
-/// selects one of the many solutions when S is singular.
+/// selects one of the many solutions when S is singular. The method works on the Jacobi-scaled
+/// problem (x = D y, D = diag(S)^{-1/2}), so that unknowns of very different curvature (multipliers
+/// on the segments of a geometric mesh) are resolved alike.
 /// @throws NumericalError with the residuals if it does not converge.
 BoxQpResult solve_box_qp(const Eigen::MatrixXd& s, const Eigen::VectorXd& d,
                          const Eigen::VectorXd& lo, const Eigen::VectorXd& hi,

@@ -16,6 +16,7 @@
 #include "io/toml_reader.hpp"
 #include "mesh/cell_map.hpp"
 #include "mesh/gmsh_reader.hpp"
+#include "mesh/point_grading.hpp"
 #include "mesh/refine.hpp"
 #include "studies/stability_sweep.hpp"
 
@@ -113,6 +114,7 @@ Scene parse_scene(const std::string& text, const std::string& path) {
   scene.seed = static_cast<std::uint32_t>(domain.integer("seed", 0, 1u << 30, 1));
   scene.grading_x = number_list(domain, "grading_x", "x coordinates (numbers) inside the rectangle");
   scene.grading_y = number_list(domain, "grading_y", "y coordinates (numbers) inside the rectangle");
+  for (const auto& [x, y] : domain.pair_list("grading_points")) scene.grading_points.emplace_back(x, y);
   scene.domain_grading = domain.number_in("grading", 0.01, 0.99, 0.5);
   scene.grading_layers = static_cast<int>(domain.integer("grading_layers", 0, 40, 0));
   if ((!scene.grading_x.empty() || !scene.grading_y.empty()) && !scene.rectangle)
@@ -210,21 +212,37 @@ Scene parse_scene(const std::string& text, const std::string& path) {
 
 namespace {
 
+/// The tensor mesh, graded towards the lines of grading_x, grading_y, with a node at every
+/// coordinate of the grading points (whose local layers come after).
 mesh::QuadMesh build_rectangle(const Scene& scene) {
   const auto& r = *scene.rectangle;
-  if (scene.grading_x.empty() && scene.grading_y.empty()) return mesh::make_rectangle_mesh(r, scene.n_x, scene.n_y);
+  std::vector<double> point_x, point_y;
+  for (const auto& point : scene.grading_points) {
+    point_x.push_back(point.x());
+    point_y.push_back(point.y());
+  }
   return mesh::make_tensor_mesh(
       mesh::graded_nodes(r.x_min, r.x_max, scene.n_x, scene.grading_x, scene.domain_grading, scene.grading_layers,
-                         scene.file + ": key 'domain.grading_x'"),
+                         scene.file + ": key 'domain.grading_x'", point_x),
       mesh::graded_nodes(r.y_min, r.y_max, scene.n_y, scene.grading_y, scene.domain_grading, scene.grading_layers,
-                         scene.file + ": key 'domain.grading_y'"),
-      scene.file + ": graded rectangle");
+                         scene.file + ": key 'domain.grading_y'", point_y),
+      scene.file + ": rectangle");
+}
+
+/// Local geometric layers towards the scene's grading points.
+mesh::QuadMesh grade_towards_points(const mesh::QuadMesh& mesh, const Scene& scene) {
+  if (scene.grading_points.empty()) return mesh;
+  const std::string origin = scene.file + ": key 'domain.grading_points'";
+  std::vector<int> centres;
+  for (const auto& point : scene.grading_points) centres.push_back(mesh::vertex_at(mesh, point, origin));
+  return mesh::grade_towards_vertices(mesh, centres, scene.domain_grading, scene.grading_layers, origin);
 }
 
 }  // namespace
 
 mesh::QuadMesh build_scene_mesh(const Scene& scene) {
-  mesh::QuadMesh mesh = scene.mesh_file.empty() ? build_rectangle(scene) : mesh::read_gmsh_mesh(scene.mesh_file);
+  mesh::QuadMesh mesh = grade_towards_points(
+      scene.mesh_file.empty() ? build_rectangle(scene) : mesh::read_gmsh_mesh(scene.mesh_file), scene);
   if (scene.perturb > 0) mesh::perturb_interior_vertices(mesh, scene.perturb, scene.seed);
   for (int k = 0; k < scene.refinements; ++k) mesh = mesh::refine_uniformly(mesh);
   auto predicate = [&](const std::string& text, const char* key) {
@@ -296,6 +314,42 @@ std::vector<int> scene_segment_degrees(const Scene& scene, const mesh::ContactBo
   return degrees;
 }
 
+namespace {
+
+/// Indices k of the trace vertices s_k (1 ≤ k ≤ n, n always last) that are grading points, or at
+/// which Γ_C meets one of the scene's grading lines x = c or y = c at an isolated vertex: the
+/// singular points the mesh is graded towards. A line Γ_C runs along (grading towards Γ_C
+/// itself) marks none of its vertices.
+std::vector<int> grading_nodes_on_contact(const Scene& scene, const mesh::ContactBoundary& contact) {
+  const auto s = contact.breakpoints();
+  const int n = static_cast<int>(s.size()) - 1;
+  const double tolerance = 1e-12 * contact.length();
+  auto on_a_line = [&](int k, bool along_x) {
+    const auto point = contact.point_at(s[k]);
+    const double coordinate = along_x ? point.x() : point.y();
+    for (double c : along_x ? scene.grading_x : scene.grading_y)
+      if (std::abs(coordinate - c) < tolerance) return true;
+    return false;
+  };
+  auto a_grading_point = [&](int k) {
+    const auto point = contact.point_at(s[k]);
+    return std::any_of(scene.grading_points.begin(), scene.grading_points.end(),
+                       [&](const mesh::Point& q) { return (q - point).norm() < tolerance; });
+  };
+  auto meets_a_line = [&](int k) {
+    for (bool along_x : {true, false})
+      if (on_a_line(k, along_x) && !(on_a_line(k - 1, along_x) && on_a_line(k + 1, along_x))) return true;
+    return false;
+  };
+  std::vector<int> nodes;
+  for (int k = 1; k < n; ++k)
+    if (a_grading_point(k) || meets_a_line(k)) nodes.push_back(k);
+  nodes.push_back(n);
+  return nodes;
+}
+
+}  // namespace
+
 mesh::BoundaryMesh build_scene_boundary_mesh(const Scene& scene, const mesh::ContactBoundary& contact) {
   const int split = 1 << scene.refinements;  // segments per segment of the scene's own T_{C,H}
   if (!scene.breakpoints.empty()) {
@@ -331,9 +385,18 @@ mesh::BoundaryMesh build_scene_boundary_mesh(const Scene& scene, const mesh::Con
   const long merge = std::lround(1.0 / ratio), divide = std::lround(ratio);
   std::vector<double> nodes{0.0};
   if (merge >= 1 && std::abs(merge * ratio - 1.0) < 1e-9 && n >= merge) {
-    // Groups of k edges; the last segment takes the n mod k edges left over.
-    for (int e = static_cast<int>(merge); e <= n; e += static_cast<int>(merge)) nodes.push_back(edges[e]);
-    if (n % merge != 0) nodes.back() = edges[n];
+    // Groups of k edges within each run between grading nodes, so that the singular points the
+    // mesh is graded towards stay breakpoints of T_{C,H} (a segment straddling the end of a
+    // contact set cannot represent λ's square-root onset); a run's last segment also takes the
+    // edges left over, a run shorter than k is one segment.
+    const auto runs = grading_nodes_on_contact(scene, contact);
+    int run_begin = 0;
+    for (int run_end : runs) {
+      const int length = run_end - run_begin, groups = std::max(1, length / static_cast<int>(merge));
+      for (int g = 1; g < groups; ++g) nodes.push_back(edges[run_begin + g * static_cast<int>(merge)]);
+      nodes.push_back(edges[run_end]);
+      run_begin = run_end;
+    }
   } else if (divide >= 1 && std::abs(ratio - static_cast<double>(divide)) < 1e-9) {
     for (int e = 0; e < n; ++e)
       for (long i = 1; i <= divide; ++i) nodes.push_back(edges[e] + (edges[e + 1] - edges[e]) * i / divide);

@@ -26,6 +26,9 @@ struct Scene {
   /// Rectangle only: `grading_layers` geometric layers (sizes shrinking by `domain_grading`)
   /// towards each of these x (y) coordinates; see mesh::graded_nodes.
   std::vector<double> grading_x, grading_y;
+  /// Points (vertices after snapping) whose surrounding cells get `grading_layers` local
+  /// geometric layers; see mesh::grade_towards_vertices. Rectangle or Gmsh mesh.
+  std::vector<mesh::Point> grading_points;
   double domain_grading = 0.5;
   int grading_layers = 0;
   /// Uniform refinements of the mesh (each cell into four) after building and perturbing it;

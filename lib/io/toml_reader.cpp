@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <fstream>
 #include <numeric>
 #include <regex>
@@ -189,6 +190,29 @@ std::vector<std::string> TomlTable::string_list(
   }
   if (values.empty()) fail(key, "[]", "must not be empty");
   return values;
+}
+
+bool TomlTable::boolean(const std::string& key, bool fallback) const {
+  if (!has(key)) return fallback;
+  const auto* node = table_->get(key);
+  if (!node->is_boolean()) fail(key, value_text(key), "must be true or false");
+  return node->as_boolean()->get();
+}
+
+std::vector<std::array<double, 2>> TomlTable::pair_list(const std::string& key) const {
+  std::vector<std::array<double, 2>> pairs;
+  if (!has(key)) return pairs;
+  const auto* node = table_->get(key);
+  if (!node->is_array()) fail(key, value_text(key), "must be a list of pairs [[x, y], ...]");
+  for (const auto& element : *node->as_array()) {
+    const auto* pair = element.as_array();
+    if (!pair || pair->size() != 2 || !(*pair)[0].is_number() || !(*pair)[1].is_number())
+      fail(key, value_text(key), "must be a list of pairs of numbers [[x, y], ...]");
+    const std::array<double, 2> values{numeric_value((*pair)[0]), numeric_value((*pair)[1])};
+    if (!std::isfinite(values[0]) || !std::isfinite(values[1])) fail(key, value_text(key), "must hold finite numbers");
+    pairs.push_back(values);
+  }
+  return pairs;
 }
 
 const toml::table& TomlTable::raw() const {

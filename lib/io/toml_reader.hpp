@@ -3,6 +3,7 @@
 // the key, the value and what is allowed.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <set>
@@ -49,6 +50,9 @@ class TomlTable {
   std::vector<std::string> string_list(const std::string& key,
                                        std::optional<std::vector<std::string>> fallback =
                                            std::nullopt) const;
+  bool boolean(const std::string& key, bool fallback) const;
+  /// Pairs of numbers [[x, y], ...] (points); an empty list if absent.
+  std::vector<std::array<double, 2>> pair_list(const std::string& key) const;
   /// A sub-table; an empty one if absent and not required.
   TomlTable table(const std::string& key, bool required = false) const;
   /// An array of tables ([[key]] blocks).

@@ -51,7 +51,7 @@ QuadMesh make_tensor_mesh(const std::vector<double>& x, const std::vector<double
 }
 
 std::vector<double> graded_nodes(double a, double b, int n, const std::vector<double>& points, double ratio,
-                                 int layers, const std::string& origin) {
+                                 int layers, const std::string& origin, const std::vector<double>& snapped_only) {
   if (!(ratio > 0.0 && ratio < 1.0))
     throw_bad_input(origin, "grading", fmt::format("{}", ratio), "must be in (0, 1)");
   if (n < 1) throw_bad_input(origin, "cells", std::to_string(n), "must be >= 1");
@@ -59,8 +59,18 @@ std::vector<double> graded_nodes(double a, double b, int n, const std::vector<do
   for (int i = 0; i <= n; ++i) nodes[i] = a + (b - a) * i / n;
   const double h = (b - a) / n;
   // 1. Snap the nearest node to each point (end nodes only to points at the ends).
-  std::vector<int> snapped;
-  for (double point : points) {
+  std::vector<int> snapped;      // nodes of all points
+  std::vector<int> layered;      // nodes of `points`, which get layers
+  std::vector<double> placed;    // coordinates already snapped
+  auto targets = points;
+  targets.insert(targets.end(), snapped_only.begin(), snapped_only.end());
+  for (std::size_t t = 0; t < targets.size(); ++t) {
+    const double point = targets[t];
+    const auto same = std::find_if(placed.begin(), placed.end(), [&](double q) { return std::abs(q - point) <= 1e-12 * (b - a); });
+    if (same != placed.end()) {
+      if (t < points.size()) layered.push_back(snapped[same - placed.begin()]);
+      continue;
+    }
     if (!(point >= a - 1e-12 * (b - a) && point <= b + 1e-12 * (b - a)))
       throw_bad_input(origin, "grading point", fmt::format("{}", point), fmt::format("must lie in [{}, {}]", a, b));
     int i = static_cast<int>(std::lround((point - a) / h));
@@ -71,6 +81,8 @@ std::vector<double> graded_nodes(double a, double b, int n, const std::vector<do
       throw_bad_input(origin, "grading point", fmt::format("{}", point), "two grading points share the nearest node: use more cells");
     nodes[i] = point;
     snapped.push_back(i);
+    placed.push_back(point);
+    if (t < points.size()) layered.push_back(i);
   }
   for (int i = 0; i < n; ++i)
     if (!(nodes[i + 1] - nodes[i] > 0.25 * h))
@@ -79,7 +91,9 @@ std::vector<double> graded_nodes(double a, double b, int n, const std::vector<do
   // 2. Geometric layers in both neighbouring cells of each snapped node: nodes at distance
   //    (cell size) · ratio^k, k = 1..layers, so that cell sizes shrink by `ratio` towards the point.
   std::vector<double> all = nodes;
-  for (int i : snapped)
+  std::sort(layered.begin(), layered.end());
+  layered.erase(std::unique(layered.begin(), layered.end()), layered.end());
+  for (int i : layered)
     for (int side : {-1, 1}) {
       const int neighbour = i + side;
       if (neighbour < 0 || neighbour > n) continue;

@@ -13,6 +13,7 @@
 #include "io/atomic_file.hpp"
 #include "io/csv_writer.hpp"
 #include "io/toml_reader.hpp"
+#include "studies/free_boundary_fit.hpp"
 #include "studies/scene_discretization.hpp"
 
 namespace hpcontact::studies {
@@ -69,16 +70,28 @@ WorkPrecisionStudy read_work_precision_study(const std::string& path) {
     const std::string problem = reference.choice("problem", kProblems);
     const std::string where = fmt::format("{}: reference for {}", path, problem);
     reference.has("set");
+    reference.has("vary");
+    const bool fit = reference.boolean("fit_free_boundary", false);
     reference.reject_unknown_keys();
-    auto variants = io::scene_variants(base, reference.table("set"), reference.table("vary"), where);  // no vary: one scene
-    auto scene = for_problem(variants.front().scene, problem);
-    io::check_effects(scene, where);
-    if (scene.refinements < 1)
-      throw_bad_input(path, "reference.set.domain.refinements", std::to_string(scene.refinements),
-                      ">= 1: the reference's accuracy is estimated against it one refinement coarser");
+    // With `vary`, the last variant is the reference and the one before it the comparison for its
+    // accuracy; without, the comparison is the reference one uniform refinement coarser.
+    auto variants = io::scene_variants(base, reference.table("set"), reference.table("vary"), where);
+    for (auto& variant : variants) {
+      variant.scene = for_problem(variant.scene, problem);
+      io::check_effects(variant.scene, where);
+    }
+    const auto scene = variants.back().scene;
     auto coarser = scene;
-    coarser.refinements -= 1;
-    study.references.push_back({problem, scene, coarser});
+    if (variants.size() >= 2) {
+      coarser = variants[variants.size() - 2].scene;
+    } else if (scene.refinements >= 1) {
+      coarser.refinements -= 1;
+    } else {
+      throw_bad_input(path, "reference.set.domain.refinements", std::to_string(scene.refinements),
+                      ">= 1, or a reference.vary with at least two variants: the reference's accuracy is estimated "
+                      "against it one refinement coarser or against the variant before it");
+    }
+    study.references.push_back({problem, scene, coarser, fit});
   }
   for (const auto& problem : study.problems)
     if (std::none_of(study.references.begin(), study.references.end(), [&](const auto& r) { return r.problem == problem; }))
@@ -114,23 +127,35 @@ void run_work_precision_study(const WorkPrecisionStudy& study, const std::filesy
   };
 
   io::CsvTable rows({"problem", "p", "pC", "n", "m", "ndofs", "nmult", "error_energy", "error_lambda", "seconds", "family", "energy"});
-  io::CsvTable references({"problem", "energy", "energy_coarser", "accuracy_energy", "accuracy_lambda", "ndofs", "seconds"});
+  io::CsvTable references({"problem", "energy", "energy_coarser", "accuracy_energy", "accuracy_lambda", "ndofs", "seconds",
+                           "free_boundary", "free_boundary_moved"});
   io::CsvTable cheapest({"problem", "tolerance", "verdict", "family", "p", "pC", "n", "ndofs", "error_energy", "seconds"});
   for (const auto& problem : study.problems) {
     // 1. The reference and its accuracy.
     const auto& reference = *std::find_if(study.references.begin(), study.references.end(),
                                           [&](const auto& r) { return r.problem == problem; });
     say(problem + ": reference");
-    const auto fine = timed_solve(for_problem(reference.scene, problem), problem, 1);
-    say(problem + ": reference, one refinement coarser");
-    const auto coarse = timed_solve(for_problem(reference.coarser, problem), problem, 1);
+    io::Scene fine_scene = reference.scene, coarse_scene = reference.coarser;
+    std::string free_boundary;
+    double free_boundary_moved = 0.0;
+    if (reference.fit_free_boundary) {
+      const auto fit = fit_free_boundary(fine_scene, contact_problem_of(problem), {fine_scene.file, "solve.constraint_points"});
+      fine_scene = fit.scene;
+      coarse_scene.grading_points.insert(coarse_scene.grading_points.end(), fit.points.begin(), fit.points.end());
+      for (const auto& point : fit.points)
+        free_boundary += fmt::format("{}{:.12g} {:.12g}", free_boundary.empty() ? "" : ";", point.x(), point.y());
+      free_boundary_moved = fit.moved;
+    }
+    const auto fine = timed_solve(fine_scene, problem, 1);
+    say(problem + ": reference, coarser");
+    const auto coarse = timed_solve(coarse_scene, problem, 1);
     const double accuracy_energy = std::abs(fine.solution.energy - coarse.solution.energy);
     const auto weight = multiplier_error_weight(reference.scene, *fine.discretization, contact_problem_of(problem));
     const double accuracy_lambda = contact::multiplier_l2_distance(
         *coarse.discretization->multipliers, coarse.solution.lambda_legendre, *fine.discretization->multipliers,
         fine.solution.lambda_legendre, weight);
     references.add_row({problem, fine.solution.energy, coarse.solution.energy, accuracy_energy, accuracy_lambda,
-                        static_cast<long long>(fine.solution.u.size()), fine.seconds});
+                        static_cast<long long>(fine.solution.u.size()), fine.seconds, free_boundary, free_boundary_moved});
 
     // 2. Every family's runs against it.
     struct Best {

@@ -1,7 +1,8 @@
 // The work–precision study: what accuracy costs in time. Families of discretizations of a base
 // scene (h-refinement at fixed p, p-refinement on a fixed mesh, geometric meshes with growing p)
 // are solved for each contact problem and compared with a far finer reference whose own accuracy
-// is estimated from the same reference one uniform refinement coarser.
+// is estimated against a coarser one (one uniform refinement or a lower degree); references may
+// be fitted to the free boundary.
 #pragma once
 
 #include <filesystem>
@@ -15,7 +16,8 @@ namespace hpcontact::studies {
 
 /// A study file (TOML), e.g. studies/work_precision/study.toml; keys in studies/README.md:
 ///   [study]      scene (base scene, relative to the study file), problems, tolerances, repeats
-///   [[reference]] problem, set (scene keys; must refine the mesh at least once: domain.refinements)
+///   [[reference]] problem, set (scene keys), coarser (scene keys of the accuracy estimate; default
+///                one refinement less), fit_free_boundary
 ///   [[family]]   name, problems (default: all), set, vary (see io/scene_variants.hpp)
 struct WorkPrecisionStudy {
   std::string file;
@@ -24,7 +26,11 @@ struct WorkPrecisionStudy {
   int repeats = 3;  ///< solves under 1 s are timed this many times; the fastest counts
   struct Reference {
     std::string problem;
-    io::Scene scene, coarser;  ///< `coarser`: one uniform refinement less, for the accuracy estimate
+    /// `coarser`: the scene with the reference's `coarser` keys applied (default: one uniform
+    /// refinement less), for the accuracy estimate.
+    io::Scene scene, coarser;
+    /// Grade both towards the free boundary, located iteratively (studies::fit_free_boundary).
+    bool fit_free_boundary = false;
   };
   std::vector<Reference> references;  ///< one per problem, in `problems` order
   struct Family {
@@ -43,7 +49,8 @@ WorkPrecisionStudy read_work_precision_study(const std::string& path);
 ///                       (n: edges of T_h on Γ_C, m: segments of T_{C,H}; error_energy = |E(u_h) − E_ref|,
 ///                       error_lambda = ‖λ_H − λ_ref‖_{L²(Γ_C)} for (9), (15), ‖s(λ_H − λ_ref)‖_{L²(Γ_C)} for (13)
 ///                       (studies::multiplier_error_weight); seconds: wall time meshes → u)
-///   reference.csv       problem,energy,energy_coarser,accuracy_energy,accuracy_lambda,ndofs,seconds
+///   reference.csv       problem,energy,energy_coarser,accuracy_energy,accuracy_lambda,ndofs,seconds,
+///                       free_boundary (fitted points "x y" separated by ";"), free_boundary_moved
 ///   cheapest.csv        problem,tolerance,verdict,family,p,pC,n,ndofs,error_energy,seconds: the fastest
 ///                       run whose error is certainly below the tolerance, error_energy + the
 ///                       reference's accuracy ≤ tolerance ("reached"); "not reached"; or "below

@@ -1,0 +1,87 @@
+// Local geometric refinement towards vertices: star replacement by trapezoid layers.
+#include "mesh/point_grading.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <utility>
+
+#include "core/error.hpp"
+
+namespace hpcontact::mesh {
+
+int vertex_at(const QuadMesh& mesh, const Point& point, const std::string& origin) {
+  const double tolerance = 1e-9 * mesh.longest_edge();
+  for (int v = 0; v < mesh.n_vertices(); ++v)
+    if ((mesh.vertex(v) - point).norm() < tolerance) return v;
+  throw_bad_input(origin, "grading point", fmt::format("({}, {})", point.x(), point.y()), "must be a vertex of the mesh");
+}
+
+QuadMesh grade_towards_vertices(const QuadMesh& mesh, const std::vector<int>& centres, double ratio, int layers,
+                                const std::string& origin) {
+  if (!(ratio > 0.0 && ratio < 1.0)) throw_bad_input(origin, "grading", fmt::format("{}", ratio), "must be in (0, 1)");
+  if (layers < 0) throw_bad_input(origin, "grading_layers", std::to_string(layers), "must be >= 0");
+  // 1. Which star each cell belongs to.
+  std::vector<int> star_of(mesh.n_cells(), -1);
+  for (std::size_t s = 0; s < centres.size(); ++s) {
+    if (centres[s] < 0 || centres[s] >= mesh.n_vertices())
+      throw_bad_input(origin, "grading point", std::to_string(centres[s]), "must be a vertex of the mesh");
+    for (int c = 0; c < mesh.n_cells(); ++c) {
+      const auto& cell = mesh.cell(c);
+      if (std::find(cell.begin(), cell.end(), centres[s]) == cell.end()) continue;
+      if (star_of[c] >= 0) {
+        const auto &a = mesh.vertex(centres[star_of[c]]), &b = mesh.vertex(centres[s]);
+        throw_bad_input(origin, "grading points", fmt::format("({}, {}) and ({}, {})", a.x(), a.y(), b.x(), b.y()),
+                        "share a cell of the mesh before grading: use more cells");
+      }
+      star_of[c] = static_cast<int>(s);
+    }
+  }
+  // 2. Vertices: the input's, then S_k(V) for every (centre, outer vertex V, level k ≥ 1).
+  std::vector<Point> vertices = mesh.vertices();
+  std::map<std::tuple<int, int, int>, int> scaled;  // (star, V, k) -> vertex
+  std::vector<std::pair<int, int>> ray_of(vertices.size(), {-1, -1});  // new vertex -> (P, V) it lies between
+  auto at_level = [&](int star, int v, int k) {
+    if (k == 0) return v;
+    const auto key = std::make_tuple(star, v, k);
+    if (auto found = scaled.find(key); found != scaled.end()) return found->second;
+    const Point& centre = mesh.vertex(centres[star]);
+    vertices.push_back(centre + std::pow(ratio, k) * (mesh.vertex(v) - centre));
+    ray_of.emplace_back(centres[star], v);
+    return scaled[key] = static_cast<int>(vertices.size()) - 1;
+  };
+  // 3. Cells: those outside the stars, then each star cell's layers and centre cell.
+  std::vector<std::array<int, 4>> cells;
+  for (int c = 0; c < mesh.n_cells(); ++c)
+    if (star_of[c] < 0) cells.push_back(mesh.cell(c));
+  for (int c = 0; c < mesh.n_cells(); ++c) {
+    const int star = star_of[c];
+    if (star < 0) continue;
+    const auto& cell = mesh.cell(c);
+    const int i = static_cast<int>(std::find(cell.begin(), cell.end(), centres[star]) - cell.begin());
+    const int v1 = cell[(i + 1) % 4], v2 = cell[(i + 2) % 4], v3 = cell[(i + 3) % 4];
+    for (auto [q, r] : {std::pair{v1, v2}, std::pair{v2, v3}})
+      for (int k = 0; k < layers; ++k)
+        cells.push_back({at_level(star, q, k + 1), at_level(star, q, k), at_level(star, r, k), at_level(star, r, k + 1)});
+    cells.push_back({centres[star], at_level(star, v1, layers), at_level(star, v2, layers), at_level(star, v3, layers)});
+  }
+  QuadMesh graded(std::move(vertices), std::move(cells), origin);
+  // 4. Boundary edges lie on a boundary edge of the input: the same vertices, or on the ray P–V.
+  std::map<std::pair<int, int>, int> edge_of;
+  for (int e = 0; e < mesh.n_edges(); ++e) edge_of[{mesh.edge(e)[0], mesh.edge(e)[1]}] = e;
+  for (int e : graded.boundary_edges()) {
+    auto [a, b] = graded.edge(e);
+    std::pair<int, int> original{a, b};
+    for (int v : {a, b})
+      if (v < static_cast<int>(ray_of.size()) && ray_of[v].first >= 0) original = ray_of[v];
+    if (original.first > original.second) std::swap(original.first, original.second);
+    const int source = edge_of.at(original);
+    graded.set_edge_label(e, mesh.edge_label(source));
+    graded.set_edge_part(e, mesh.edge_part(source));
+  }
+  return graded;
+}
+
+}  // namespace hpcontact::mesh

@@ -1,0 +1,70 @@
+// The free-boundary fitting loop.
+#include "studies/free_boundary_fit.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "contact/free_boundary.hpp"
+#include "core/error.hpp"
+
+namespace hpcontact::studies {
+namespace {
+
+/// One point per cluster of transitions lying within one segment of T_{C,H} (or `resolution`) of
+/// each other: a mesh not yet fitted lets λ flicker between free and held over a few constraint
+/// points near the free boundary. An odd cluster is one change of regime (its middle point); an
+/// even one is no change (a flicker island) and is dropped.
+std::vector<double> cluster_transitions(const std::vector<contact::FreeBoundaryPoint>& points,
+                                        const mesh::BoundaryMesh& boundary_mesh, double resolution) {
+  auto reach = [&](double s) {
+    const int k = boundary_mesh.segment_at(s);
+    return std::max(resolution, boundary_mesh.segment_end(k) - boundary_mesh.segment_begin(k));
+  };
+  std::vector<double> located;
+  for (std::size_t begin = 0, end = 0; begin < points.size(); begin = end) {
+    end = begin + 1;
+    while (end < points.size() && points[end].s - points[end - 1].s <= std::max(reach(points[end - 1].s), reach(points[end].s)))
+      ++end;
+    if ((end - begin) % 2 == 1) located.push_back(points[(begin + end) / 2].s);
+  }
+  return located;
+}
+
+}  // namespace
+
+FreeBoundaryFit fit_free_boundary(const io::Scene& scene, contact::ContactProblem problem, const ValueOrigin& origin,
+                                  double tolerance, int max_solves) {
+  FreeBoundaryFit fit{scene, {}, INFINITY, 0};
+  std::vector<double> fitted_s;  // arc lengths of fit.points
+  while (fit.solves < max_solves) {
+    // Layer k of the fit goes no deeper than k layers: cells much smaller than the distance to
+    // the free boundary leave λ's point values there undetermined (only its H^{-1/2} norm is
+    // controlled), and their flicker would be taken for the free boundary.
+    fit.scene.grading_layers = std::min(scene.grading_layers, fit.solves + 1);
+    const auto run = solve_scene_contact(fit.scene, problem, origin);
+    ++fit.solves;
+    const auto& contact = *run.discretization->contact;
+    const auto located = cluster_transitions(contact::locate_free_boundary(run.solution), *run.discretization->boundary_mesh,
+                                             tolerance * contact.length());
+    if (located.size() == fitted_s.size()) {
+      fit.moved = 0.0;
+      for (std::size_t k = 0; k < located.size(); ++k) fit.moved = std::max(fit.moved, std::abs(located[k] - fitted_s[k]));
+      if (fit.moved <= tolerance * contact.length()) {
+        fit.scene.grading_layers = scene.grading_layers;
+        return fit;
+      }
+    }
+    fitted_s = located;
+    fit.points.clear();
+    for (double s : located) fit.points.push_back(contact.point_at(s));
+    fit.scene.grading_points = scene.grading_points;
+    fit.scene.grading_points.insert(fit.scene.grading_points.end(), fit.points.begin(), fit.points.end());
+  }
+  throw NumericalError(fmt::format("{}: the free boundary did not settle in {} solves (last move {:.3g} in arc length, "
+                                   "tolerance {:.3g} · |Γ_C|); more grading layers or a higher degree resolve it better",
+                                   scene.file, max_solves, fit.moved, tolerance));
+}
+
+}  // namespace hpcontact::studies

@@ -1,0 +1,31 @@
+// A discretization fitted to the free boundary of a contact problem: the scene's mesh is graded
+// (local geometric layers, mesh::grade_towards_vertices) towards the ends of the discrete contact
+// set or stick zone, located on the previous solution, until they stop moving. With the
+// singularities at vertices of geometric meshes, hp refinement converges exponentially; this is
+// how the work–precision study computes references accurate beyond 1e-9.
+#pragma once
+
+#include <vector>
+
+#include "io/scene.hpp"
+#include "studies/scene_discretization.hpp"
+
+namespace hpcontact::studies {
+
+struct FreeBoundaryFit {
+  io::Scene scene;                  ///< the input scene with the fitted points added to domain.grading_points
+  std::vector<mesh::Point> points;  ///< the fitted free-boundary points, in order along Γ_C
+  double moved = 0.0;               ///< arc length the points moved in the last iteration
+  int solves = 0;
+};
+
+/// Solves `problem` on the scene, adds the located free-boundary points (contact::locate_free_boundary)
+/// to its grading points, and repeats until their number is unchanged and none moves by more
+/// than `tolerance` · |Γ_C| (points closer than that count as one). The default 1e-6 is about
+/// what the discrete multiplier can resolve and, the singularity being d^{3/2}, moves the energy
+/// by far less than 1e-12. @throws NumericalError if that takes more than `max_solves` solves;
+/// InputError if a point cannot be a grading point of the scene's mesh (too close to another).
+FreeBoundaryFit fit_free_boundary(const io::Scene& scene, contact::ContactProblem problem, const ValueOrigin& origin,
+                                  double tolerance = 1e-6, int max_solves = 12);
+
+}  // namespace hpcontact::studies
