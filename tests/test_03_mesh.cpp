@@ -180,10 +180,12 @@ TEST(PointGrading, StarsBecomeConformingGeometricLayers) {
   }
 }
 
-TEST(PointGrading, OverlappingStarsAndNonVerticesAreRefused) {
+TEST(PointGrading, OverlappingStarsNonVerticesAndTooDeepLayersAreRefused) {
   const auto coarse = mesh::make_rectangle_mesh({}, 4, 4);
   const int a = mesh::vertex_at(coarse, {0.0, -1.0}, "test"), b = mesh::vertex_at(coarse, {0.5, -1.0}, "test");
   EXPECT_THROW(mesh::grade_towards_vertices(coarse, {a, b}, 0.2, 3, "test"), InputError);  // neighbours share a cell
   EXPECT_THROW(mesh::vertex_at(coarse, {0.1, -1.0}, "test"), InputError);
   EXPECT_THROW(mesh::grade_towards_vertices(coarse, {a}, 1.0, 3, "test"), InputError);
+  EXPECT_NO_THROW(mesh::grade_towards_vertices(coarse, {a}, 0.2, 12, "test"));
+  EXPECT_THROW(mesh::grade_towards_vertices(coarse, {a}, 0.2, 14, "test"), InputError);  // cells of 4e-11: round-off
 }

@@ -39,6 +39,19 @@ QuadMesh grade_towards_vertices(const QuadMesh& mesh, const std::vector<int>& ce
       star_of[c] = static_cast<int>(s);
     }
   }
+  // The innermost cells have the star's shortest edge times ratio^layers.
+  const auto& all = mesh.vertices();
+  double extent = 0.0, shortest = INFINITY;
+  for (const auto& v : all) extent = std::max(extent, (v - all.front()).norm());
+  for (int e = 0; e < mesh.n_edges(); ++e)
+    for (int c : mesh.edge_cells(e))
+      if (c >= 0 && star_of[c] >= 0) shortest = std::min(shortest, mesh.edge_length(e));
+  if (std::isfinite(shortest) && shortest * std::pow(ratio, layers) < kFinestRelativeCell * extent)
+    throw_bad_input(origin, "grading_layers", std::to_string(layers),
+                    fmt::format("at most {} with grading {}: deeper, the innermost cells ({:.2g} of the domain's extent) would be "
+                                "below {:.0e} of it, where round-off in the vertex coordinates distorts them",
+                                static_cast<int>(std::floor(std::log(kFinestRelativeCell * extent / shortest) / std::log(ratio))),
+                                ratio, shortest * std::pow(ratio, layers) / extent, kFinestRelativeCell));
   // 2. Vertices: the input's, then S_k(V) for every (centre, outer vertex V, level k ≥ 1).
   std::vector<Point> vertices = mesh.vertices();
   std::map<std::tuple<int, int, int>, int> scaled;  // (star, V, k) -> vertex

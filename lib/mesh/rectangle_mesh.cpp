@@ -93,6 +93,10 @@ std::vector<double> graded_nodes(double a, double b, int n, const std::vector<do
   std::vector<double> all = nodes;
   std::sort(layered.begin(), layered.end());
   layered.erase(std::unique(layered.begin(), layered.end()), layered.end());
+  if (!layered.empty() && 0.25 * h * std::pow(ratio, layers) < kFinestRelativeCell * (b - a))
+    throw_bad_input(origin, "grading_layers", std::to_string(layers),
+                    fmt::format("too deep for grading {}: the innermost cells would be below {:.0e} of the interval, where "
+                                "round-off in the coordinates distorts them", ratio, kFinestRelativeCell));
   for (int i : layered)
     for (int side : {-1, 1}) {
       const int neighbour = i + side;
