@@ -188,6 +188,42 @@ TEST(Cli, BenchmarkWritesRatiosAgainstTheBaselineOfTheSameRun) {
   EXPECT_FALSE(std::filesystem::exists(dir / "bad"));
 }
 
+// The work–precision study end to end on a small scale: a reference fitted to the free boundary
+// (two ends of the contact set of (9)) whose accuracy is its change from the variant before it,
+// and a reference that has no coarser discretization is refused, naming the key.
+TEST(Cli, WorkPrecisionFitsTheReferenceAndEstimatesItsAccuracy) {
+  const auto dir = scratch("work_precision");
+  const std::string head = "[study]\nscene = \"" + std::string(HPCONTACT_SOURCE_DIR) +
+                           "/studies/work_precision/base.toml\"\nproblems = [\"signorini\"]\ntolerances = [1e-3]\nrepeats = 1\n"
+                           "[[family]]\nname = \"p\"\nvary = { \"discretization.p\" = [2, 3], \"discretization.pC\" = [1, 2] }\n";
+  std::ofstream(dir / "study.toml")
+      << head << "[[reference]]\nproblem = \"signorini\"\nfit_free_boundary = true\n"
+      << "set = { domain = { grading_points = [[1, 0]], grading = 0.2, grading_layers = 8 }, contact_mesh = { ratio = 1 } }\n"
+      << "vary = { \"discretization.p\" = [6, 8], \"discretization.pC\" = [4, 6] }\n";
+  const auto result = run("work-precision " + (dir / "study.toml").string() + " --out " + (dir / "out").string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  std::ifstream csv(dir / "out" / "reference.csv");
+  std::string header, row;
+  std::getline(csv, header);
+  std::getline(csv, row);
+  EXPECT_EQ(header, "problem,energy,energy_coarser,accuracy_energy,accuracy_lambda,ndofs,seconds,free_boundary,free_boundary_moved");
+  std::vector<std::string> cells;
+  std::stringstream stream(row);
+  for (std::string cell; std::getline(stream, cell, ',');) cells.push_back(cell);
+  ASSERT_EQ(cells.size(), 9u) << row;
+  const double energy = std::stod(cells[1]), coarser = std::stod(cells[2]), accuracy = std::stod(cells[3]);
+  EXPECT_NEAR(accuracy, std::abs(energy - coarser), 1e-15);
+  EXPECT_LT(accuracy, 1e-7) << "p 6 -> 8 on the fitted mesh";
+  EXPECT_EQ(std::count(cells[7].begin(), cells[7].end(), ';'), 1) << "two ends of the contact set: " << cells[7];
+  EXPECT_LE(std::stod(cells[8]), 2e-6);
+
+  std::ofstream(dir / "bad.toml") << head << "[[reference]]\nproblem = \"signorini\"\nset = { discretization = { p = 4 } }\n";
+  const auto bad = run("work-precision " + (dir / "bad.toml").string() + " --out " + (dir / "bad").string());
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+  EXPECT_NE(bad.output.find("reference.set.domain.refinements"), std::string::npos) << bad.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "bad"));
+}
+
 // `mpirun -n 2 hpcontact sweep` distributes the (n, p) groups over the ranks and writes the same
 // alpha.csv and verdicts.csv as a serial run (compared without the timing column). Both runs use
 // one BLAS thread per process, so that every floating-point operation is the same.

@@ -1,6 +1,8 @@
 // L² distance of multipliers on two boundary meshes.
 #include "contact/multiplier_distance.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -15,7 +17,8 @@ double multiplier_l2_distance(const space::MultiplierSpace& a, const Eigen::Vect
   const auto& mesh_a = a.boundary_mesh();
   const auto& mesh_b = b.boundary_mesh();
   if (std::abs(mesh_a.length() - mesh_b.length()) > 1e-10 * mesh_a.length())
-    throw std::invalid_argument("multiplier_l2_distance: the boundary meshes cover different lengths");
+    throw std::invalid_argument(fmt::format("multiplier_l2_distance: the boundary meshes cover different lengths ({} and {})",
+                                            mesh_a.length(), mesh_b.length()));
   if (ca.size() != a.n_dofs() || cb.size() != b.n_dofs())
     throw std::invalid_argument("multiplier_l2_distance: coefficient vectors do not match their spaces");
   // The difference is a polynomial of degree ≤ max p_C on every interval of the common refinement;

@@ -85,8 +85,8 @@ class QuadMesh {
 /// The smallest cell size, relative to the extent of the domain, that grading may create. Vertex
 /// coordinates carry absolute round-off, so a cell of relative size 1e-12 has its shape only to
 /// about 1e-4; measured on the §7 problems, energies on meshes graded to 1e-12 move by 1e-9 …
-/// 6e-7, while down to 5e-10 they agree with shallower meshes to 1e-12.
-inline constexpr double kFinestRelativeCell = 2e-10;
+/// 6e-7, while down to 1e-10 they agree with shallower meshes to 1e-11.
+inline constexpr double kFinestRelativeCell = 1e-10;
 
 /// Local vertex pair (start, end) of each local edge, in the local direction.
 inline constexpr std::array<std::array<int, 2>, 4> kLocalEdgeVertices{

@@ -46,8 +46,16 @@ FreeBoundaryFit fit_free_boundary(const io::Scene& scene, contact::ContactProble
     const auto run = solve_scene_contact(fit.scene, problem, origin);
     ++fit.solves;
     const auto& contact = *run.discretization->contact;
-    const auto located = cluster_transitions(contact::locate_free_boundary(run.solution), *run.discretization->boundary_mesh,
-                                             tolerance * contact.length());
+    // Transitions within a coarse cell of a given grading point are left to its layers: they
+    // could not be grading points of their own, and they arise where the data make λ undetermined
+    // (for (13) at x = 1 of §7, where s vanishes).
+    const double coarse_cell = run.discretization->mesh.longest_edge();
+    std::vector<double> located;
+    for (double s : cluster_transitions(contact::locate_free_boundary(run.solution), *run.discretization->boundary_mesh,
+                                        tolerance * contact.length()))
+      if (std::none_of(scene.grading_points.begin(), scene.grading_points.end(),
+                       [&](const mesh::Point& given) { return (given - contact.point_at(s)).norm() < coarse_cell; }))
+        located.push_back(s);
     if (located.size() == fitted_s.size()) {
       fit.moved = 0.0;
       for (std::size_t k = 0; k < located.size(); ++k) fit.moved = std::max(fit.moved, std::abs(located[k] - fitted_s[k]));

@@ -20,7 +20,8 @@ struct FreeBoundaryFit {
 };
 
 /// Solves `problem` on the scene, adds the located free-boundary points (contact::locate_free_boundary)
-/// to its grading points, and repeats until their number is unchanged and none moves by more
+/// to its grading points (except those within the longest edge of a grading point the scene
+/// gives), and repeats until their number is unchanged and none moves by more
 /// than `tolerance` · |Γ_C| (points closer than that count as one). The default 1e-6 is about
 /// what the discrete multiplier can resolve and, the singularity being d^{3/2}, moves the energy
 /// by far less than 1e-12. @throws NumericalError if that takes more than `max_solves` solves;
