@@ -4,6 +4,7 @@ find_package(PkgConfig REQUIRED)
 find_package(Eigen3 3.4 REQUIRED NO_MODULE)
 find_package(GSL REQUIRED)
 find_package(MPI REQUIRED COMPONENTS C CXX)
+find_package(Threads REQUIRED)  # the interpolation norm's quadrature nodes run on threads
 pkg_check_modules(PETSC REQUIRED IMPORTED_TARGET PETSc>=3.18)
 pkg_check_modules(SLEPC REQUIRED IMPORTED_TARGET SLEPc>=3.18)
 pkg_check_modules(MUPARSER REQUIRED IMPORTED_TARGET muparser)

@@ -2,9 +2,13 @@
 #include "norms/h_minus_half_gram.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <numbers>
+#include <thread>
+#include <vector>
 
 #include "assembly/coupling.hpp"
 #include "assembly/poisson_assembly.hpp"
@@ -44,15 +48,41 @@ Eigen::MatrixXd inverse_sqrt_gram_quadrature(const Eigen::SparseMatrix<double>& 
   const double h = (s_hi - s_lo) / (n_nodes - 1);
   const double tail = h * std::exp(-h) / (1.0 - std::exp(-h));
   const Eigen::MatrixXd c_dense = Eigen::MatrixXd(c);
+  // W is one-dimensional: its matrices are banded after AMD, and a simplicial LDLᵀ of each is
+  // cheap; most of the time goes into the solves with the n_mult columns of C. The nodes are
+  // independent, so they run on up to kPartials threads; node k always adds into partial sum
+  // k mod kPartials, summed in a fixed order, so the result does not depend on the thread count.
   auto sandwich = [&](const Eigen::SparseMatrix<double>& matrix) {  // Cᵀ matrix⁻¹ C
-    const linalg::SparseCholesky factor(matrix);
+    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor(matrix);
+    if (factor.info() != Eigen::Success)
+      throw NumericalError("interpolation norm: a shifted reference matrix K_W + t² M_W is not positive definite");
     return Eigen::MatrixXd(c.transpose() * factor.solve(c_dense));
   };
+  constexpr int kPartials = 4;
+  std::vector<Eigen::MatrixXd> partial(kPartials, Eigen::MatrixXd::Zero(c.cols(), c.cols()));
+  std::vector<std::exception_ptr> failure(kPartials);
+  auto accumulate = [&](int which) {
+    try {
+      for (int k = which; k < n_nodes; k += kPartials) {
+        const double s = s_lo + k * h;
+        partial[which] += h * std::exp(s) * sandwich(a + std::exp(2.0 * s) * m);
+      }
+    } catch (...) {
+      failure[which] = std::current_exception();
+    }
+  };
+  const int threads = std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, kPartials);
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t)
+    pool.emplace_back([&, t] {
+      for (int which = t; which < kPartials; which += threads) accumulate(which);
+    });
+  for (int which = 0; which < kPartials; which += threads) accumulate(which);
+  for (auto& thread : pool) thread.join();
+  for (const auto& error : failure)
+    if (error) std::rethrow_exception(error);
   Eigen::MatrixXd integral = tail * (std::exp(s_lo) * sandwich(a) + std::exp(-s_hi) * sandwich(m));
-  for (int k = 0; k < n_nodes; ++k) {
-    const double s = s_lo + k * h;
-    integral += h * std::exp(s) * sandwich(a + std::exp(2.0 * s) * m);
-  }
+  for (const auto& sum : partial) integral += sum;
   return (2.0 / std::numbers::pi) * integral;
 }
 
