@@ -81,6 +81,10 @@ WorkPrecisionStudy read_work_precision_study(const std::string& path) {
       io::check_effects(variant.scene, where);
     }
     const auto scene = variants.back().scene;
+    if (fit && !scene.rectangle)
+      throw_bad_input(path, "reference.fit_free_boundary", "true",
+                      "a rectangle domain: the located points become vertices by moving the nearest nodes, "
+                      "which a Gmsh mesh does not allow");
     auto coarser = scene;
     if (variants.size() >= 2) {
       coarser = variants[variants.size() - 2].scene;
