@@ -273,10 +273,12 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
                      point.m);
   };
   // Groups of points sharing (level, p), with what is left to do in each and a cost estimate: the
-  // factorizations grow like (dofs)^1.2 (dofs ~ cells p², and ~ 4 cells (p + 2)² for the extension
-  // norm's reference, built by the first group of the level a rank runs), each point adds a little.
+  // factorizations grow like (dofs)^1.2 (dofs ~ cells p²), each point adds a little. What a level
+  // shares (the extension norm's reference, ~ 4 cells (p + 2)² dofs, and the Gram matrices) is
+  // built once by every rank that runs a group of the level.
   struct Group { std::size_t first, last; bool todo, extension; double cost; int owner = 0; };
   std::vector<Group> groups;
+  std::vector<double> level_shared_cost(sweep.levels.size(), 0.0);
   for (std::size_t first = 0; first < points.size();) {
     Group g{first, first, false, false, 0.0};
     int todo_points = 0;
@@ -288,27 +290,67 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
       }
       ++g.last;
     }
-    const double cells = sweep.level_facts[points[first].level].cells, p = points[first].reported_p;
-    const double dofs = cells * p * p, reference = 4.0 * cells * (p + 2) * (p + 2);
-    g.cost = std::pow(dofs, 1.2) + (g.extension ? std::pow(reference, 1.2) : 0.0) + 0.05 * todo_points * dofs;
+    const std::size_t level = points[first].level;
+    const double cells = sweep.level_facts[level].cells, p = points[first].reported_p;
+    const double dofs = cells * p * p;
+    g.cost = std::pow(dofs, 1.2) + 0.05 * todo_points * dofs;
+    if (g.extension) {
+      const double largest = sweep.degrees.empty() ? p : *std::max_element(sweep.degrees.begin(), sweep.degrees.end());
+      level_shared_cost[level] = std::pow(4.0 * cells * (largest + 2) * (largest + 2), 1.2);
+    }
     groups.push_back(g);
     first = g.last;
   }
-  // Under mpirun the groups are scheduled on the ranks longest first, each to the least loaded
-  // rank (LPT); rank 0 gathers the rows and writes them in the serial order, so the file is the
-  // same as a serial run's.
+  // Under mpirun the groups are scheduled on the ranks in two ways, and the one that finishes
+  // first by the estimates is taken: whole levels longest first, each to the least loaded rank
+  // (no shared work is repeated), or single groups longest first, each to the rank that would
+  // finish it first, counting the level's shared work on a rank that has no group of the level
+  // yet (balances better when there are fewer levels than ranks). Rank 0 gathers the rows and
+  // writes them in the serial order, so the file is the same as a serial run's.
   const auto [rank, size] = mpi_rank_and_size();
   {
-    std::vector<std::size_t> order(groups.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return groups[a].cost > groups[b].cost; });
-    std::vector<double> load(size, 0.0);
-    for (std::size_t i : order) {
+    auto longest_first = [](std::vector<std::size_t> order, const std::vector<double>& cost) {
+      std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
+      return order;
+    };
+    std::vector<std::size_t> todo;
+    std::vector<double> group_cost(groups.size()), level_cost(sweep.levels.size(), 0.0);
+    for (std::size_t i = 0; i < groups.size(); ++i) {
+      group_cost[i] = groups[i].cost;
       if (!groups[i].todo) continue;
-      const int owner = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
-      groups[i].owner = owner;
-      load[owner] += groups[i].cost;
+      todo.push_back(i);
+      level_cost[points[groups[i].first].level] += groups[i].cost;
     }
+    std::vector<std::size_t> levels;
+    for (std::size_t level = 0; level < level_cost.size(); ++level)
+      if (level_cost[level] > 0) {
+        level_cost[level] += level_shared_cost[level];
+        levels.push_back(level);
+      }
+    // (a) Whole levels.
+    std::vector<double> load(size, 0.0);
+    std::vector<int> level_owner(sweep.levels.size(), 0);
+    for (std::size_t level : longest_first(levels, level_cost)) {
+      level_owner[level] = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
+      load[level_owner[level]] += level_cost[level];
+    }
+    const double by_levels = *std::max_element(load.begin(), load.end());
+    // (b) Single groups.
+    std::fill(load.begin(), load.end(), 0.0);
+    std::vector<int> group_owner(groups.size(), 0);
+    std::set<std::pair<int, std::size_t>> has_level;  // (rank, level)
+    for (std::size_t i : longest_first(todo, group_cost)) {
+      const std::size_t level = points[groups[i].first].level;
+      auto finish = [&](int r) { return load[r] + groups[i].cost + (has_level.contains({r, level}) ? 0.0 : level_shared_cost[level]); };
+      int owner = 0;
+      for (int r = 1; r < size; ++r)
+        if (finish(r) < finish(owner)) owner = r;
+      load[owner] = finish(owner);
+      has_level.insert({owner, level});
+      group_owner[i] = owner;
+    }
+    const double by_groups = *std::max_element(load.begin(), load.end());
+    for (std::size_t i : todo) groups[i].owner = by_levels <= by_groups ? level_owner[points[groups[i].first].level] : group_owner[i];
   }
   std::vector<std::pair<int, std::string>> new_rows;  // (point index, CSV line), parallel runs
   // What the points of the current level share: the extension norm's reference, and per (norm,
