@@ -39,7 +39,7 @@ FreeBoundaryFit fit_free_boundary(const io::Scene& scene, contact::ContactProble
   FreeBoundaryFit fit{scene, {}, INFINITY, 0};
   std::vector<double> fitted_s;  // arc lengths of fit.points
   while (fit.solves < max_solves) {
-    // Layer k of the fit goes no deeper than k layers: cells much smaller than the distance to
+    // Solve k of the fit grades no deeper than k layers: cells much smaller than the distance to
     // the free boundary leave λ's point values there undetermined (only its H^{-1/2} norm is
     // controlled), and their flicker would be taken for the free boundary.
     fit.scene.grading_layers = std::min(scene.grading_layers, fit.solves + 1);
