@@ -158,6 +158,9 @@ TEST(Scene, GradingPointsStayBreakpointsOfTheContactMesh) {
   for (int k = 0; k < boundary.n_segments(); ++k) breakpoint = breakpoint || std::abs(boundary.segment_end(k) - 1.3) < 1e-14;
   EXPECT_TRUE(breakpoint);
   EXPECT_NE(error_of(with("n_y = 4", "n_y = 4\ngrading_points = [[1]]")).find("domain.grading_points"), std::string::npos);
+  for (const char* outside : {"[[3, -1]]", "[[-0.99, -1]]"})  // outside; snapping leaves a thin cell
+    EXPECT_NE(error_of(with("n_y = 4", std::string("n_y = 4\ngrading_points = ") + outside)).find("domain.grading_points"),
+              std::string::npos) << outside;
   EXPECT_NE(error_of(with("n_y = 4", "n_y = 4\ngrading_points = [[0.0, -1], [0.5, -1]]\ngrading_layers = 1")).find("share a cell"),
             std::string::npos);
 }

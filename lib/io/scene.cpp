@@ -223,9 +223,11 @@ mesh::QuadMesh build_rectangle(const Scene& scene) {
   }
   return mesh::make_tensor_mesh(
       mesh::graded_nodes(r.x_min, r.x_max, scene.n_x, scene.grading_x, scene.domain_grading, scene.grading_layers,
-                         scene.file + ": key 'domain.grading_x'", point_x),
+                         scene.file + ": key 'domain.grading_x'", point_x,
+                         scene.file + ": key 'domain.grading_points' (an x coordinate)"),
       mesh::graded_nodes(r.y_min, r.y_max, scene.n_y, scene.grading_y, scene.domain_grading, scene.grading_layers,
-                         scene.file + ": key 'domain.grading_y'", point_y),
+                         scene.file + ": key 'domain.grading_y'", point_y,
+                         scene.file + ": key 'domain.grading_points' (a y coordinate)"),
       scene.file + ": rectangle");
 }
 

@@ -51,7 +51,8 @@ QuadMesh make_tensor_mesh(const std::vector<double>& x, const std::vector<double
 }
 
 std::vector<double> graded_nodes(double a, double b, int n, const std::vector<double>& points, double ratio,
-                                 int layers, const std::string& origin, const std::vector<double>& snapped_only) {
+                                 int layers, const std::string& origin, const std::vector<double>& snapped_only,
+                                 const std::string& snapped_origin) {
   if (!(ratio > 0.0 && ratio < 1.0))
     throw_bad_input(origin, "grading", fmt::format("{}", ratio), "must be in (0, 1)");
   if (n < 1) throw_bad_input(origin, "cells", std::to_string(n), "must be >= 1");
@@ -64,30 +65,35 @@ std::vector<double> graded_nodes(double a, double b, int n, const std::vector<do
   std::vector<double> placed;    // coordinates already snapped
   auto targets = points;
   targets.insert(targets.end(), snapped_only.begin(), snapped_only.end());
+  std::vector<const std::string*> moved_by(n + 1, nullptr);  // which key moved each node, for the h/4 check
   for (std::size_t t = 0; t < targets.size(); ++t) {
     const double point = targets[t];
+    const std::string& where = t < points.size() || snapped_origin.empty() ? origin : snapped_origin;
     const auto same = std::find_if(placed.begin(), placed.end(), [&](double q) { return std::abs(q - point) <= 1e-12 * (b - a); });
     if (same != placed.end()) {
       if (t < points.size()) layered.push_back(snapped[same - placed.begin()]);
       continue;
     }
     if (!(point >= a - 1e-12 * (b - a) && point <= b + 1e-12 * (b - a)))
-      throw_bad_input(origin, "grading point", fmt::format("{}", point), fmt::format("must lie in [{}, {}]", a, b));
+      throw_bad_input(where, "grading point", fmt::format("{}", point), fmt::format("must lie in [{}, {}]", a, b));
     int i = static_cast<int>(std::lround((point - a) / h));
     if ((i == 0 || i == n) && std::abs(nodes[i] - point) > 1e-12 * (b - a)) i = i == 0 ? 1 : n - 1;
     if (i <= 0 || i >= n ? std::abs(nodes[i] - point) > 1e-12 * (b - a) : false)
-      throw_bad_input(origin, "grading point", fmt::format("{}", point), "too close to an end of the interval for this many cells");
+      throw_bad_input(where, "grading point", fmt::format("{}", point), "too close to an end of the interval for this many cells");
     if (std::find(snapped.begin(), snapped.end(), i) != snapped.end())
-      throw_bad_input(origin, "grading point", fmt::format("{}", point), "two grading points share the nearest node: use more cells");
+      throw_bad_input(where, "grading point", fmt::format("{}", point), "two grading points share the nearest node: use more cells");
     nodes[i] = point;
+    moved_by[i] = &where;
     snapped.push_back(i);
     placed.push_back(point);
     if (t < points.size()) layered.push_back(i);
   }
   for (int i = 0; i < n; ++i)
-    if (!(nodes[i + 1] - nodes[i] > 0.25 * h))
-      throw_bad_input(origin, "grading point", fmt::format("{}", nodes[i + 1]),
+    if (!(nodes[i + 1] - nodes[i] > 0.25 * h)) {
+      const int moved = moved_by[i + 1] ? i + 1 : i;
+      throw_bad_input(moved_by[moved] ? *moved_by[moved] : origin, "grading point", fmt::format("{}", nodes[moved]),
                       "snapping it to the nearest node leaves a cell thinner than h/4: use more cells");
+    }
   // 2. Geometric layers in both neighbouring cells of each snapped node: nodes at distance
   //    (cell size) · ratio^k, k = 1..layers, so that cell sizes shrink by `ratio` towards the point.
   std::vector<double> all = nodes;

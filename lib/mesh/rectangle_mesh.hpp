@@ -31,11 +31,13 @@ QuadMesh make_tensor_mesh(const std::vector<double>& x_nodes, const std::vector<
 /// nodes at distances size · ratio^k (k = 1..layers) from it, so that cell sizes shrink by `ratio`
 /// towards the point (the geometric meshes of hp-FEM). n + (layers per side) cells in all.
 /// Coordinates in `snapped_only` also get a node (the nearest moves onto them) but no layers:
-/// the points that grade_towards_vertices refines locally. Equal coordinates share their node.
+/// the points that grade_towards_vertices refines locally; errors about them name
+/// `snapped_origin` (default `origin`). Equal coordinates share their node.
 /// @throws InputError if a point lies outside [a, b], two points share a node, or snapping
 /// would leave a cell thinner than h/4.
 std::vector<double> graded_nodes(double a, double b, int n, const std::vector<double>& points, double ratio,
-                                 int layers, const std::string& origin, const std::vector<double>& snapped_only = {});
+                                 int layers, const std::string& origin, const std::vector<double>& snapped_only = {},
+                                 const std::string& snapped_origin = "");
 
 /// Moves every interior vertex by a uniformly random offset of at most `amplitude` times the
 /// smallest adjacent edge length in each coordinate (deterministic for a given seed).
