@@ -1,6 +1,7 @@
 // Stage 7, command line: --help lists the subcommands, bad input exits with code 2 and leaves
 // no output, and the convergence subcommand writes its CSV.
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -151,6 +152,57 @@ TEST(Cli, SolveWithMoreConstraintPointsUsesInteriorPointAndRefusesTooFew) {
   EXPECT_EQ(bad.exit_code, 2) << bad.output;
   EXPECT_NE(bad.output.find("--constraint-points"), std::string::npos) << bad.output;
   EXPECT_NE(bad.output.find("p_C + 1 = 4"), std::string::npos) << bad.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "bad"));
+}
+
+// `[solve] fit_free_boundary`: the mesh is graded towards the free boundary of every contact
+// problem of the scene (two ends of the contact set of (9), one stick-slip point shared by (13)
+// and (15)) before the effects run on it, and the summary says where; a scene that cannot be fitted
+// is refused, naming the key.
+TEST(Cli, SolveFitsTheMeshToTheFreeBoundaryOfItsProblems) {
+  const auto dir = scratch("solve_fit");
+  const std::string scene = R"TOML([domain]
+n_x = 8
+n_y = 8
+grading_points = [[1, 0]]
+grading = 0.2
+grading_layers = 8
+[boundary]
+contact = "abs(y + 1) < 1e-12"
+dirichlet = "abs(y - 1) < 1e-12 || (abs(x - 1) < 1e-12 && y > 0)"
+[contact_mesh]
+ratio = 1
+[discretization]
+p = 8
+pC = 6
+[data]
+g = "-x^2"
+s = "(1 - x)^2"
+[solve]
+fit_free_boundary = true
+[run]
+effects = ["signorini", "friction_s"]
+outputs = ["summary"]
+)TOML";
+  std::ofstream(dir / "fit.toml") << scene;
+  const auto result = run("solve " + (dir / "fit.toml").string() + " --out " + (dir / "out").string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  std::ifstream file(dir / "out" / "summary.json");
+  const auto summary = nlohmann::json::parse(file);
+  const auto& points = summary.at("free_boundary").at("points");
+  ASSERT_EQ(points.size(), 3u) << summary.at("free_boundary").dump();
+  for (const auto& point : points) EXPECT_DOUBLE_EQ(point[1].get<double>(), -1.0);  // on Γ_C
+  EXPECT_LE(summary.at("free_boundary").at("moved").get<double>(), 2e-6);
+  // The effects ran on the fitted mesh: 8 edges on Γ_C, and 8 layers on each side of each point.
+  EXPECT_EQ(summary.at("edges_on_contact").get<int>(), 8 + 3 * 2 * 8);
+
+  std::string infsup_only = scene;
+  const std::string effects = "[\"signorini\", \"friction_s\"]";
+  infsup_only.replace(infsup_only.find(effects), effects.size(), "[\"infsup\"]");
+  std::ofstream(dir / "bad.toml") << infsup_only;
+  const auto bad = run("solve " + (dir / "bad.toml").string() + " --out " + (dir / "bad").string());
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+  EXPECT_NE(bad.output.find("solve.fit_free_boundary"), std::string::npos) << bad.output;
   EXPECT_FALSE(std::filesystem::exists(dir / "bad"));
 }
 

@@ -103,7 +103,7 @@ double energy(const io::Scene& scene, const std::string& effect) {
 // convergence.
 TEST(FreeBoundary, FittedMeshesConvergeExponentially) {
   for (const std::string effect : {"signorini", "friction_s"}) {
-    const auto fit = studies::fit_free_boundary(paper_scene(effect, 8, 8), studies::contact_problem_of(effect),
+    const auto fit = studies::fit_free_boundary(paper_scene(effect, 8, 8), {studies::contact_problem_of(effect)},
                                                 {"paper_scene.toml", "solve.constraint_points"});
     EXPECT_EQ(fit.points.size(), effect == "signorini" ? 2u : 1u) << effect;
     EXPECT_LE(fit.moved, 1e-6 * 2.0) << effect;

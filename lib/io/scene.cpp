@@ -59,6 +59,8 @@ void check_effects(const Scene& scene, const std::string& where) {
   for (const char* problem : {"friction", "friction_s"})
     if (scene.has_effect(problem) && scene.friction_bound.empty())
       throw_bad_input(scene.file, "data.s", "(missing)", fmt::format("the effect '{}' needs the friction bound s", problem));
+  if (scene.fit_free_boundary && scene.contact_effects().empty())
+    throw_bad_input(where, "solve.fit_free_boundary", "true", "needs a contact problem among the effects (signorini, friction, friction_s)");
   if (scene.has_effect("convergence") && scene.contact_effects().empty())
     throw_bad_input(where, "run.effects", "convergence", "'convergence' refines the contact problems of the scene: add signorini, friction or friction_s");
   if (scene.outputs_given && scene.wants_output("mode") && !scene.has_effect("infsup"))
@@ -186,6 +188,11 @@ Scene parse_scene(const std::string& text, const std::string& path) {
   const auto solve = root.table("solve");
   // The lower limit p_C + 1 depends on the segment; it is checked when the constraints are built.
   if (solve.has("constraint_points")) scene.constraint_points = static_cast<int>(solve.integer("constraint_points", 1, 64));
+  scene.fit_free_boundary = solve.boolean("fit_free_boundary", false);
+  if (scene.fit_free_boundary && !scene.rectangle)
+    throw_bad_input(path, "solve.fit_free_boundary", "true",
+                    "a rectangle domain: the located points become vertices by moving the nearest nodes, which a "
+                    "Gmsh mesh does not allow");
   solve.reject_unknown_keys();
   if (scene.problem == "friction" && scene.friction_bound.empty())
     throw_bad_input(path, "data.s", "(missing)", "the friction problem needs the friction bound s");

@@ -54,6 +54,9 @@ struct Scene {
   std::string norm = "interp", problem = "signorini";
   // [solve]
   std::optional<int> constraint_points;  ///< |𝒞| per segment (Remark 3); empty: p_C + 1
+  /// Grade the mesh towards the free boundary of the scene's contact problems before running its
+  /// effects (studies::fit_free_boundary; rectangle domains).
+  bool fit_free_boundary = false;
   // [run]: what the run computes and writes (see `effect_names`, `output_names`).
   /// Empty when the scene has no [run] table: `solve` then needs --effects; `infsup --scene` and
   /// sweeps over the scene do not read it.

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <numeric>
 
 #include "contact/free_boundary.hpp"
 #include "core/error.hpp"
@@ -34,28 +36,44 @@ std::vector<double> cluster_transitions(const std::vector<contact::FreeBoundaryP
 
 }  // namespace
 
-FreeBoundaryFit fit_free_boundary(const io::Scene& scene, contact::ContactProblem problem, const ValueOrigin& origin,
-                                  double tolerance, int max_solves) {
+FreeBoundaryFit fit_free_boundary(const io::Scene& scene, const std::vector<contact::ContactProblem>& problems,
+                                  const ValueOrigin& origin, double tolerance, int max_solves) {
   FreeBoundaryFit fit{scene, {}, INFINITY, 0};
-  std::vector<double> fitted_s;  // arc lengths of fit.points
+  std::vector<double> fitted_s;  // arc lengths of fit.points, which the current mesh is graded towards
   while (fit.solves < max_solves) {
     // Solve k of the fit grades no deeper than k layers: cells much smaller than the distance to
     // the free boundary leave λ's point values there undetermined (only its H^{-1/2} norm is
     // controlled), and their flicker would be taken for the free boundary.
     fit.scene.grading_layers = std::min(scene.grading_layers, fit.solves + 1);
-    const auto run = solve_scene_contact(fit.scene, problem, origin);
-    ++fit.solves;
-    const auto& contact = *run.discretization->contact;
-    // Transitions within a coarse cell of a given grading point are left to its layers: they
-    // could not be grading points of their own, and they arise where the data make λ undetermined
-    // (for (13) at x = 1 of §7, where s vanishes).
-    const double coarse_cell = run.discretization->mesh.longest_edge();
     std::vector<double> located;
-    for (double s : cluster_transitions(contact::locate_free_boundary(run.solution), *run.discretization->boundary_mesh,
-                                        tolerance * contact.length()))
-      if (std::none_of(scene.grading_points.begin(), scene.grading_points.end(),
-                       [&](const mesh::Point& given) { return (given - contact.point_at(s)).norm() < coarse_cell; }))
-        located.push_back(s);
+    std::unique_ptr<SceneDiscretization> last;  // for the geometry of Γ_C
+    for (const auto problem : problems) {
+      auto run = solve_scene_contact(fit.scene, problem, origin);
+      const auto& contact = *run.discretization->contact;
+      // Transitions within a coarse cell of a given grading point are left to its layers: they
+      // could not be grading points of their own, and they arise where the data make λ
+      // undetermined (for (13) at x = 1 of §7, where s vanishes).
+      const double coarse_cell = run.discretization->mesh.longest_edge();
+      for (double s : cluster_transitions(contact::locate_free_boundary(run.solution), *run.discretization->boundary_mesh,
+                                          tolerance * contact.length()))
+        if (std::none_of(scene.grading_points.begin(), scene.grading_points.end(),
+                         [&](const mesh::Point& given) { return (given - contact.point_at(s)).norm() < coarse_cell; }))
+          located.push_back(s);
+      last = std::move(run.discretization);
+    }
+    ++fit.solves;
+    // Points within one coarse cell of each other are one, at their mean: they could not both be
+    // grading points, and those of different problems converge to one point where the problems
+    // share their exact solution ((13) and (15)).
+    const auto& contact = *last->contact;
+    const double coarse_cell = last->mesh.longest_edge();
+    std::sort(located.begin(), located.end());
+    std::vector<double> merged;
+    for (std::size_t begin = 0, end = 0; begin < located.size(); begin = end) {
+      for (end = begin + 1; end < located.size() && located[end] - located[end - 1] < coarse_cell;) ++end;
+      merged.push_back(std::accumulate(located.begin() + begin, located.begin() + end, 0.0) / (end - begin));
+    }
+    located = merged;
     if (located.size() == fitted_s.size()) {
       fit.moved = 0.0;
       for (std::size_t k = 0; k < located.size(); ++k) fit.moved = std::max(fit.moved, std::abs(located[k] - fitted_s[k]));

@@ -16,17 +16,18 @@ struct FreeBoundaryFit {
   io::Scene scene;                  ///< the input scene with the fitted points added to domain.grading_points
   std::vector<mesh::Point> points;  ///< the fitted free-boundary points, in order along Γ_C
   double moved = 0.0;               ///< arc length the points moved in the last iteration
-  int solves = 0;
+  int solves = 0;  ///< rounds: each solves every problem once
 };
 
-/// Solves `problem` on the scene, adds the located free-boundary points (contact::locate_free_boundary)
+/// Solves each of `problems` on the scene, adds the located free-boundary points of all of them
+/// (contact::locate_free_boundary; points within one coarse cell of each other are one, at their mean)
 /// to its grading points (except those within the longest edge of a grading point the scene
 /// gives), and repeats until their number is unchanged and none moves by more
 /// than `tolerance` · |Γ_C| (points closer than that count as one). The default 1e-6 is about
 /// what the discrete multiplier can resolve and, the singularity being d^{3/2}, moves the energy
 /// by far less than 1e-12. @throws NumericalError if that takes more than `max_solves` solves;
 /// InputError if a point cannot be a grading point of the scene's mesh (too close to another).
-FreeBoundaryFit fit_free_boundary(const io::Scene& scene, contact::ContactProblem problem, const ValueOrigin& origin,
-                                  double tolerance = 1e-6, int max_solves = 12);
+FreeBoundaryFit fit_free_boundary(const io::Scene& scene, const std::vector<contact::ContactProblem>& problems,
+                                  const ValueOrigin& origin, double tolerance = 1e-6, int max_solves = 12);
 
 }  // namespace hpcontact::studies

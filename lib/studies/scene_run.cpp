@@ -15,6 +15,7 @@
 #include "io/atomic_file.hpp"
 #include "io/csv_writer.hpp"
 #include "io/vtu_writer.hpp"
+#include "studies/free_boundary_fit.hpp"
 
 namespace hpcontact::studies {
 namespace {
@@ -125,11 +126,26 @@ std::vector<std::string> refinement_columns() {
   return {"problem", "level", "p", "pC", "n", "m", "ndofs", "nmult", "energy", "error_energy", "error_lambda", "seconds"};
 }
 
-nlohmann::json run_scene(const io::Scene& scene, const SceneRunOptions& options) {
+nlohmann::json run_scene(const io::Scene& given_scene, const SceneRunOptions& options) {
   Stopwatch clock;
   auto say = [&](const std::string& line) {
     if (options.progress) options.progress(line);
   };
+  // 0. Optionally, the mesh graded towards the free boundary of every contact problem of the
+  //    scene; the effects then run on that mesh.
+  io::Scene scene = given_scene;
+  nlohmann::json free_boundary;
+  if (scene.fit_free_boundary) {
+    say("fitting the mesh to the free boundary");
+    std::vector<contact::ContactProblem> problems;
+    for (const auto& effect : scene.contact_effects()) problems.push_back(contact_problem_of(effect));
+    Stopwatch fit_clock;
+    const auto fit = fit_free_boundary(scene, problems, options.constraint_points);
+    scene = fit.scene;
+    free_boundary = {{"points", nlohmann::json::array()}, {"rounds", fit.solves}, {"moved", fit.moved},
+                     {"seconds", fit_clock.seconds()}};
+    for (const auto& point : fit.points) free_boundary["points"].push_back({point.x(), point.y()});
+  }
   // 1. Meshes and degrees; the operators of S^p(T_h) are built on first use and shared.
   const auto d = discretize_scene(scene);
   OperatorLog log;
@@ -163,6 +179,7 @@ nlohmann::json run_scene(const io::Scene& scene, const SceneRunOptions& options)
 
   // 5. The summary, then every file at once.
   summary["scene"] = scene.file;
+  if (!free_boundary.is_null()) summary["free_boundary"] = free_boundary;
   summary["effects"] = scene.effects;
   summary["p"] = scene.p_label();
   summary["pC"] = scene.pc_label();

@@ -143,7 +143,7 @@ void run_work_precision_study(const WorkPrecisionStudy& study, const std::filesy
     std::string free_boundary;
     double free_boundary_moved = 0.0;
     if (reference.fit_free_boundary) {
-      const auto fit = fit_free_boundary(fine_scene, contact_problem_of(problem), {fine_scene.file, "solve.constraint_points"});
+      const auto fit = fit_free_boundary(fine_scene, {contact_problem_of(problem)}, {fine_scene.file, "solve.constraint_points"});
       fine_scene = fit.scene;
       coarse_scene.grading_points.insert(coarse_scene.grading_points.end(), fit.points.begin(), fit.points.end());
       for (const auto& point : fit.points)
