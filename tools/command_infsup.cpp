@@ -9,7 +9,9 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/expression.hpp"
+#include "core/petsc_session.hpp"
 #include "infsup/infsup_analysis.hpp"
+#include "norms/primal_operators.hpp"
 #include "io/atomic_file.hpp"
 #include "io/scene.hpp"
 #include "studies/stability_sweep.hpp"
@@ -111,8 +113,13 @@ int run_infsup(const InfSupOptions& given) {
   setup.interpolation_reference = {o.reference_subdivisions, o.reference_degree};
   setup.extension_reference = {o.reference_refinements, o.reference_extra_degree};
 
-  // 3. Solve the eigenproblem.
+  // 3. Solve the eigenproblem. Under mpirun A_G is factorized over the ranks (MUMPS), and rank 0
+  // reports and writes.
+  const auto [rank, ranks] = mpi_rank_and_size();
+  const norms::PrimalOperators primal(mesh, setup.cell_degrees, nullptr, ranks > 1);
+  setup.primal = &primal;
   const auto result = infsup::analyse_infsup(setup, backend);
+  if (rank != 0) return 0;
 
   // 4. Report and save.
   fmt::print("alpha = {:.17g}\n", result.alpha);
