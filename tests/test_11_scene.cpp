@@ -55,6 +55,13 @@ std::string with(const std::string& from, const std::string& to) {
   return text;
 }
 
+/// kGood with these [domain] keys added and T_{C,H} following T_h with h/H = 1/2.
+io::Scene graded_scene(const std::string& name, const std::string& domain_keys) {
+  std::string text = with("n_y = 4", "n_y = 4\n" + domain_keys);
+  text.replace(text.find("m = 2"), 5, "ratio = \"1/2\"");
+  return io::read_scene(write_scene(name, text));
+}
+
 }  // namespace
 
 TEST(Scene, PaperSceneMatchesBuiltInGeometry) {
@@ -121,9 +128,7 @@ TEST(Scene, DegreeRulesGiveDistributions) {
 // A graded rectangle: the grading points become vertices, and ratio = h/H follows T_h|Γ_C (1/k
 // merges k edges), refinements split T_h and T_{C,H} alike.
 TEST(Scene, GradedRectangleAndRefinementsKeepTheRatio) {
-  std::string text = with("n_y = 4", "n_y = 4\ngrading_x = [0.3]\ngrading = 0.25\ngrading_layers = 2\nrefinements = 1");
-  text.replace(text.find("m = 2"), 5, "ratio = \"1/2\"");
-  const auto scene = io::read_scene(write_scene("graded", text));
+  const auto scene = graded_scene("graded", "grading_x = [0.3]\ngrading = 0.25\ngrading_layers = 2\nrefinements = 1");
   const auto mesh = io::build_scene_mesh(scene);
   const mesh::ContactBoundary contact(mesh);
   // 4 cells + 2 · 2 layers around x = 0.3, refined once: 16 edges on Γ_C.
@@ -144,9 +149,7 @@ TEST(Scene, GradedRectangleAndRefinementsKeepTheRatio) {
 // T_{C,H} when ratio 1/k merges edges (k = 2 and an odd number of edges before the point, where
 // merging from the end of Γ_C would straddle it); bad points name the key.
 TEST(Scene, GradingPointsStayBreakpointsOfTheContactMesh) {
-  std::string text = with("n_y = 4", "n_y = 4\ngrading_points = [[0.3, -1]]\ngrading = 0.2\ngrading_layers = 2");
-  text.replace(text.find("m = 2"), 5, "ratio = \"1/2\"");
-  const auto scene = io::read_scene(write_scene("graded_point", text));
+  const auto scene = graded_scene("graded_point", "grading_points = [[0.3, -1]]\ngrading = 0.2\ngrading_layers = 2");
   const auto mesh = io::build_scene_mesh(scene);
   const mesh::ContactBoundary contact(mesh);
   const auto arcs = contact.breakpoints();

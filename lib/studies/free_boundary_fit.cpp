@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <memory>
 #include <numeric>
 
 #include "contact/free_boundary.hpp"
@@ -45,28 +44,26 @@ FreeBoundaryFit fit_free_boundary(const io::Scene& scene, const std::vector<cont
     // the free boundary leave λ's point values there undetermined (only its H^{-1/2} norm is
     // controlled), and their flicker would be taken for the free boundary.
     fit.scene.grading_layers = std::min(scene.grading_layers, fit.solves + 1);
+    // One discretization per round, its operators (factor(K), F) shared by the problems.
+    const auto d = discretize_scene(fit.scene);
+    const norms::PrimalOperators primal(d->mesh, d->cell_degrees);
+    const auto& contact = *d->contact;
+    // Transitions within a coarse cell of a given grading point are left to its layers: they could
+    // not be grading points of their own, and they arise where the data make λ undetermined (for
+    // (13) at x = 1 of §7, where s vanishes).
+    const double coarse_cell = d->mesh.longest_edge();
     std::vector<double> located;
-    std::unique_ptr<SceneDiscretization> last;  // for the geometry of Γ_C
     for (const auto problem : problems) {
-      auto run = solve_scene_contact(fit.scene, problem, origin);
-      const auto& contact = *run.discretization->contact;
-      // Transitions within a coarse cell of a given grading point are left to its layers: they
-      // could not be grading points of their own, and they arise where the data make λ
-      // undetermined (for (13) at x = 1 of §7, where s vanishes).
-      const double coarse_cell = run.discretization->mesh.longest_edge();
-      for (double s : cluster_transitions(contact::locate_free_boundary(run.solution), *run.discretization->boundary_mesh,
-                                          tolerance * contact.length()))
+      const auto solution = contact::solve_contact(contact_setup_of(fit.scene, *d, problem, primal, origin));
+      for (double s : cluster_transitions(contact::locate_free_boundary(solution), *d->boundary_mesh, tolerance * contact.length()))
         if (std::none_of(scene.grading_points.begin(), scene.grading_points.end(),
                          [&](const mesh::Point& given) { return (given - contact.point_at(s)).norm() < coarse_cell; }))
           located.push_back(s);
-      last = std::move(run.discretization);
     }
     ++fit.solves;
     // Points within one coarse cell of each other are one, at their mean: they could not both be
     // grading points, and those of different problems converge to one point where the problems
     // share their exact solution ((13) and (15)).
-    const auto& contact = *last->contact;
-    const double coarse_cell = last->mesh.longest_edge();
     std::sort(located.begin(), located.end());
     std::vector<double> merged;
     for (std::size_t begin = 0, end = 0; begin < located.size(); begin = end) {

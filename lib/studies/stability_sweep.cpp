@@ -309,14 +309,13 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
   // writes them in the serial order, so the file is the same as a serial run's.
   const auto [rank, size] = mpi_rank_and_size();
   {
-    auto longest_first = [](std::vector<std::size_t> order, const std::vector<double>& cost) {
-      std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
+    auto longest_first = [](std::vector<std::size_t> order, auto cost) {
+      std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cost(a) > cost(b); });
       return order;
     };
     std::vector<std::size_t> todo;
-    std::vector<double> group_cost(groups.size()), level_cost(sweep.levels.size(), 0.0);
+    std::vector<double> level_cost(sweep.levels.size(), 0.0);
     for (std::size_t i = 0; i < groups.size(); ++i) {
-      group_cost[i] = groups[i].cost;
       if (!groups[i].todo) continue;
       todo.push_back(i);
       level_cost[points[groups[i].first].level] += groups[i].cost;
@@ -330,7 +329,7 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
     // (a) Whole levels.
     std::vector<double> load(size, 0.0);
     std::vector<int> level_owner(sweep.levels.size(), 0);
-    for (std::size_t level : longest_first(levels, level_cost)) {
+    for (std::size_t level : longest_first(levels, [&](std::size_t l) { return level_cost[l]; })) {
       level_owner[level] = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
       load[level_owner[level]] += level_cost[level];
     }
@@ -339,7 +338,7 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
     std::fill(load.begin(), load.end(), 0.0);
     std::vector<int> group_owner(groups.size(), 0);
     std::set<std::pair<int, std::size_t>> has_level;  // (rank, level)
-    for (std::size_t i : longest_first(todo, group_cost)) {
+    for (std::size_t i : longest_first(todo, [&](std::size_t g) { return groups[g].cost; })) {
       const std::size_t level = points[groups[i].first].level;
       auto finish = [&](int r) { return load[r] + groups[i].cost + (has_level.contains({r, level}) ? 0.0 : level_shared_cost[level]); };
       int owner = 0;
