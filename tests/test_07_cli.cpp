@@ -307,25 +307,29 @@ TEST(Cli, SweepUnderMpirunWritesTheSerialCsv) {
   EXPECT_EQ(std::string(std::istreambuf_iterator<char>(a), {}), std::string(std::istreambuf_iterator<char>(b), {}));
 }
 
-// `mpirun -n 2 hpcontact solve` factorizes K and A_G over the ranks (MPIAIJ + MUMPS, the skeleton
-// split by cells) and gives the serial run's contact solution and α: every number of the
-// boundary CSV to 1e-8 of its column's size, the energies and α to 1e-10.
+// `mpirun -n 2 hpcontact solve` factorizes K and A_G over the ranks (by default substructuring:
+// the cells split by coordinate bisection, CHOLMOD per rank, a dense interface problem) and gives
+// the serial run's contact solution and α: every number of the boundary CSV to 1e-8 of its
+// column's size, the energies and α to 1e-10.
 // `mpirun -n 2 hpcontact infsup` factorizes A_G over the ranks and prints the serial α, in both
-// H^{-1/2} realizations; only rank 0 prints.
+// H^{-1/2} realizations and with both distributed solvers; only rank 0 prints.
 TEST(Cli, InfsupUnderMpirunGivesTheSerialAlpha) {
   const std::string env = "env OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ";
   for (const char* norm : {"interp", "extension"}) {
     const std::string arguments = std::string(" infsup --n 16 --p 3 --pc 2 --ratio 1/2 --norm ") + norm;
     const auto serial = run(arguments);
-    const auto parallel = run_command(env + "mpirun -n 2 " + HPCONTACT_CLI + arguments);
     ASSERT_EQ(serial.exit_code, 0) << serial.output;
-    ASSERT_EQ(parallel.exit_code, 0) << parallel.output;
-    const std::string key = "alpha = ";
-    ASSERT_NE(parallel.output.find(key), std::string::npos) << parallel.output;
-    EXPECT_EQ(parallel.output.find(key), parallel.output.rfind(key)) << "printed by one rank only: " << parallel.output;
-    const double alpha = std::stod(serial.output.substr(serial.output.find(key) + key.size()));
-    const double alpha_mpi = std::stod(parallel.output.substr(parallel.output.find(key) + key.size()));
-    EXPECT_NEAR(alpha_mpi, alpha, 1e-10 * alpha) << norm;
+    for (const char* solver : {"substructuring", "mumps"}) {
+      const auto parallel =
+          run_command(env + "mpirun -n 2 " + HPCONTACT_CLI + arguments + " --distributed-solver " + solver);
+      ASSERT_EQ(parallel.exit_code, 0) << parallel.output;
+      const std::string key = "alpha = ";
+      ASSERT_NE(parallel.output.find(key), std::string::npos) << parallel.output;
+      EXPECT_EQ(parallel.output.find(key), parallel.output.rfind(key)) << "printed by one rank only: " << parallel.output;
+      const double alpha = std::stod(serial.output.substr(serial.output.find(key) + key.size()));
+      const double alpha_mpi = std::stod(parallel.output.substr(parallel.output.find(key) + key.size()));
+      EXPECT_NEAR(alpha_mpi, alpha, 1e-10 * alpha) << norm << ", " << solver;
+    }
   }
 }
 

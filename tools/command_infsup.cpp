@@ -11,6 +11,7 @@
 #include "core/expression.hpp"
 #include "core/petsc_session.hpp"
 #include "infsup/infsup_analysis.hpp"
+#include "linalg/distribution.hpp"
 #include "norms/primal_operators.hpp"
 #include "io/atomic_file.hpp"
 #include "io/scene.hpp"
@@ -23,7 +24,7 @@ namespace {
 struct InfSupOptions {
   int p = 1, pc = 0, n = 8;
   std::string ratio = "1";
-  std::string norm = "interp", problem = "signorini", eigensolver = "slepc";
+  std::string norm = "interp", problem = "signorini", eigensolver = "slepc", distributed_solver = "substructuring";
   std::string csv, mode, scene;
   bool p_given = false, pc_given = false, n_given = false, ratio_given = false, norm_given = false,
        problem_given = false;
@@ -94,6 +95,7 @@ int run_infsup(const InfSupOptions& given) {
   setup.norm = infsup::parse_gram_norm(o.norm, where);
   setup.problem = infsup::parse_pairing_problem(o.problem, where);
   const auto backend = infsup::parse_eigen_backend(o.eigensolver, where);
+  const auto distributed_solver = linalg::parse_distributed_solver(o.distributed_solver, where, "--distributed-solver");
   for (const auto& file : {o.csv, o.mode})
     if (!file.empty())
       io::ensure_writable_directory(std::filesystem::absolute(file).parent_path());
@@ -113,10 +115,11 @@ int run_infsup(const InfSupOptions& given) {
   setup.interpolation_reference = {o.reference_subdivisions, o.reference_degree};
   setup.extension_reference = {o.reference_refinements, o.reference_extra_degree};
 
-  // 3. Solve the eigenproblem. Under mpirun A_G is factorized over the ranks (MUMPS), and rank 0
-  // reports and writes.
+  // 3. Solve the eigenproblem. Under mpirun A_G is factorized over the ranks, and rank 0 reports
+  // and writes.
   const auto [rank, ranks] = mpi_rank_and_size();
-  const norms::PrimalOperators primal(mesh, setup.cell_degrees, nullptr, ranks > 1);
+  const norms::PrimalOperators primal(mesh, setup.cell_degrees, nullptr,
+                                      linalg::distribution_over(ranks, distributed_solver));
   setup.primal = &primal;
   const auto result = infsup::analyse_infsup(setup, backend);
   if (rank != 0) return 0;
@@ -167,6 +170,9 @@ void add_infsup_command(CLI::App& app, CommandAction& action) {
       ->capture_default_str();
   command->add_option("--eigensolver", o->eigensolver,
                       "slepc (EPS, options -infsup_eps_*) | dense (LAPACK-type, Eigen)")
+      ->capture_default_str();
+  command->add_option("--distributed-solver", o->distributed_solver,
+                      "Under mpirun: substructuring (CHOLMOD per rank, dense interface) | mumps (MPIAIJ + MUMPS)")
       ->capture_default_str();
   command->add_option("--csv", o->csv, "Append one row to this CSV file");
   command->add_option("--mode", o->mode, "Write the spurious mode as CSV x,mu (20 samples/segment)");

@@ -14,6 +14,7 @@
 #include "core/petsc_session.hpp"
 #include "io/atomic_file.hpp"
 #include "io/scene.hpp"
+#include "linalg/distribution.hpp"
 #include "studies/scene_run.hpp"
 
 namespace hpcontact::tools {
@@ -24,6 +25,7 @@ struct SolveOptions {
   std::vector<std::string> effects;  ///< empty: the scene's
   std::optional<int> p, pc, constraint_points;
   std::string ratio;
+  std::string distributed_solver = "substructuring";
 };
 
 int run_solve(const SolveOptions& o) {
@@ -61,6 +63,7 @@ int run_solve(const SolveOptions& o) {
     throw_bad_input(o.scene, "run.effects", "(missing)",
                     fmt::format("a [run] table with effects = [...] (any of {}), or the option --effects",
                                 fmt::join(io::effect_names(), ", ")));
+  const auto distributed_solver = linalg::parse_distributed_solver(o.distributed_solver, where, "--distributed-solver");
   io::check_output_directory(o.out);
 
   // 2. Run; progress goes to stderr so that stdout stays the result. Under mpirun every rank runs
@@ -69,7 +72,7 @@ int run_solve(const SolveOptions& o) {
   studies::SceneRunOptions options{o.out, points_origin, [rank](const std::string& line) {
                                      if (rank == 0) fmt::print(stderr, "# {}\n", line);
                                    }};
-  options.distributed = ranks > 1;
+  options.distribution = linalg::distribution_over(ranks, distributed_solver);
   const auto summary = studies::run_scene(scene, options);
   if (rank != 0) return 0;
 
@@ -108,6 +111,9 @@ void add_solve_command(CLI::App& app, CommandAction& action) {
   command->add_option("--ratio", o->ratio, "Override the scene's contact mesh: h/H, e.g. 1/2");
   command->add_option("--constraint-points", o->constraint_points,
                       "Override the scene's constraint points per segment (Remark 3; >= p_C + 1)");
+  command->add_option("--distributed-solver", o->distributed_solver,
+                      "Under mpirun: substructuring (CHOLMOD per rank, dense interface) | mumps (MPIAIJ + MUMPS)")
+      ->capture_default_str();
   command->callback([&action, o] { action = [o] { return run_solve(*o); }; });
 }
 

@@ -13,6 +13,7 @@
 #include "assembly/element_matrices.hpp"
 #include "core/error.hpp"
 #include "core/petsc_session.hpp"
+#include "mesh/cell_partition.hpp"
 
 namespace hpcontact::assembly {
 
@@ -61,27 +62,38 @@ Eigen::MatrixXd signed_skeleton_rows(const std::vector<space::LocalShape>& shape
 }  // namespace
 
 CondensedFactor::CondensedFactor(const space::H1Space& space, double stiffness_weight, double mass_weight,
-                                 const std::vector<int>& trailing, bool distributed)
-    : space_(&space), size_(space.n_dofs()), n_trailing_(static_cast<int>(trailing.size())) {
+                                 const std::vector<int>& trailing, linalg::Distribution distribution)
+    : space_(&space), size_(space.n_dofs()), n_trailing_(static_cast<int>(trailing.size())),
+      distribution_(distribution) {
   for (int index : trailing)
     HPC_VERIFY(index >= 0 && index < space.n_skeleton_dofs(), "trailing set outside the skeleton dofs");
   const int n_cells = space.mesh().n_cells(), n_skeleton = space.n_skeleton_dofs();
-  if (distributed) {
+  std::vector<char> contributes(n_cells, 1);
+  if (distribution != linalg::Distribution::serial) {
     const auto [rank, ranks] = mpi_rank_and_size();
-    const int first = static_cast<int>(static_cast<long long>(n_cells) * rank / ranks);
-    const int last = static_cast<int>(static_cast<long long>(n_cells) * (rank + 1) / ranks);
-    distributed_ = std::make_unique<linalg::DistributedCholesky>(
-        n_skeleton, eliminate_interiors(stiffness_weight, mass_weight, first, last));
-    return;
+    const std::vector<int> part_of_cell = mesh::bisect_cells(space.mesh(), ranks);
+    for (int c = 0; c < n_cells; ++c) contributes[c] = part_of_cell[c] == rank;
   }
-  const auto lower = eliminate_interiors(stiffness_weight, mass_weight, 0, n_cells);
-  Eigen::SparseMatrix<double> schur(n_skeleton, n_skeleton);
-  schur.setFromTriplets(lower.begin(), lower.end());
-  serial_ = std::make_unique<linalg::SparseCholesky>(schur, trailing);
+  auto lower = eliminate_interiors(stiffness_weight, mass_weight, contributes);
+  switch (distribution) {
+    case linalg::Distribution::serial: {
+      Eigen::SparseMatrix<double> schur(n_skeleton, n_skeleton);
+      schur.setFromTriplets(lower.begin(), lower.end());
+      lower = {};
+      serial_ = std::make_unique<linalg::SparseCholesky>(schur, trailing);
+      break;
+    }
+    case linalg::Distribution::substructuring:
+      substructured_ = std::make_unique<linalg::SubstructuredCholesky>(n_skeleton, lower, trailing);
+      break;
+    case linalg::Distribution::mumps:
+      mumps_ = std::make_unique<linalg::DistributedCholesky>(n_skeleton, lower);
+      break;
+  }
 }
 
 std::vector<Eigen::Triplet<double>> CondensedFactor::eliminate_interiors(double stiffness_weight, double mass_weight,
-                                                                         int first_cell, int last_cell) {
+                                                                         const std::vector<char>& contributes) {
   const auto& space = *space_;
   const auto& mesh = space.mesh();
   ElementMatrices element(space);
@@ -125,7 +137,7 @@ std::vector<Eigen::Triplet<double>> CondensedFactor::eliminate_interiors(double 
       if (key) congruent.emplace(*key, block_of_cell_[c]);
       blocks_.push_back(std::move(block));
     }
-    if (c < first_cell || c >= last_cell) continue;
+    if (!contributes[c]) continue;
     const CellBlock& block = *blocks_[block_of_cell_[c]];
     // The lower triangle (all CHOLMOD reads); exact zeros (Lobatto orthogonality on
     // parallelograms) stay out of the pattern.
@@ -147,7 +159,8 @@ CondensedFactor::CondensedFactor(CondensedFactor&&) noexcept = default;
 CondensedFactor& CondensedFactor::operator=(CondensedFactor&&) noexcept = default;
 
 Eigen::MatrixXd CondensedFactor::skeleton_solve(const Eigen::MatrixXd& rhs) const {
-  return serial_ ? serial_->solve(rhs) : distributed_->solve(rhs);
+  if (serial_) return serial_->solve(rhs);
+  return substructured_ ? substructured_->solve(rhs) : mumps_->solve(rhs);
 }
 
 Eigen::MatrixXd CondensedFactor::condense(const Eigen::MatrixXd& rhs) const {
@@ -193,7 +206,8 @@ Eigen::MatrixXd CondensedFactor::schur_complement(const Eigen::SparseMatrix<doub
       if (it.value() != 0.0) skeleton_only = false;
   if (skeleton_only) {
     const Eigen::SparseMatrix<double> b_skeleton = b.leftCols(n_skeleton);
-    return serial_ ? serial_->schur_complement(b_skeleton) : distributed_->schur_complement(b_skeleton);
+    if (serial_) return serial_->schur_complement(b_skeleton);
+    return substructured_ ? substructured_->schur_complement(b_skeleton) : mumps_->schur_complement(b_skeleton);
   }
   const Eigen::MatrixXd result = b * solve(Eigen::MatrixXd(b.transpose()));
   return 0.5 * (result + result.transpose());

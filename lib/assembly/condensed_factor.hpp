@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "linalg/distributed_cholesky.hpp"
+#include "linalg/distribution.hpp"
+#include "linalg/substructured_cholesky.hpp"
 #include "linalg/sparse_cholesky.hpp"
 #include "space/h1_space.hpp"
 
@@ -25,15 +27,20 @@ namespace hpcontact::assembly {
 /// eliminate one cell). Since a trace coupling B has no interior columns, B A⁻¹ Bᵀ = B_s S⁻¹ B_sᵀ:
 /// the Steklov–Poincaré condensation of SparseCholesky applies to S unchanged.
 ///
-/// Distributed (under mpirun): every rank eliminates every cell (vectors stay replicated) but
-/// contributes to S only its share of the cells, and S is factorized over the ranks by MUMPS
-/// (DistributedCholesky); B A⁻¹ Bᵀ then comes from solves with Bᵀ instead of the trailing block.
+/// Distributed (under mpirun): the cells are split into one part per rank by coordinate bisection
+/// (short interfaces); every rank eliminates every cell (vectors stay replicated) but contributes
+/// to S only its own part's S_T. S is then factorized either by substructuring (default,
+/// SubstructuredCholesky): each rank factorizes the skeleton dofs only its part touches, and the
+/// dofs between parts and the trailing set form a small dense interface problem whose trailing
+/// block gives B A⁻¹ Bᵀ; or by MUMPS on an MPIAIJ matrix (DistributedCholesky), where B A⁻¹ Bᵀ
+/// comes from solves with Bᵀ.
 class CondensedFactor {
  public:
-  /// `trailing`: dofs (skeleton dofs only) ordered last in the factorization of S (serial only).
+  /// `trailing`: dofs (skeleton dofs only) ordered last in the factorization of S.
   /// @throws NumericalError if A is not positive definite.
   CondensedFactor(const space::H1Space& space, double stiffness_weight, double mass_weight,
-                  const std::vector<int>& trailing = {}, bool distributed = false);
+                  const std::vector<int>& trailing = {},
+                  linalg::Distribution distribution = linalg::Distribution::serial);
   ~CondensedFactor();
   CondensedFactor(CondensedFactor&&) noexcept;
   CondensedFactor& operator=(CondensedFactor&&) noexcept;
@@ -45,14 +52,17 @@ class CondensedFactor {
   int n_trailing() const { return n_trailing_; }
   /// Distinct interior eliminations: 1 on a uniform mesh of one degree, n_cells on a general mesh.
   int n_eliminations() const { return static_cast<int>(blocks_.size()); }
-  bool distributed() const { return distributed_ != nullptr; }
+  linalg::Distribution distribution() const { return distribution_; }
+  /// Substructuring: the size of the dense interface problem (dofs between the ranks' parts, and
+  /// the trailing set); 0 otherwise.
+  int interface_size() const { return substructured_ ? substructured_->interface_size() : 0; }
 
   /// A⁻¹ rhs, shape (n) or (n, k). Distributed: collective, rhs and result the same on every rank.
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const;
   Eigen::MatrixXd solve(const Eigen::MatrixXd& rhs) const;
   /// B A⁻¹ Bᵀ, dense symmetric (m, m), for B of shape (m, n): on the skeleton factor's trailing
   /// block when B has no interior columns (any trace coupling), otherwise by solves.
-  /// Distributed: collective, by solves with Bᵀ in blocks of 64 columns.
+  /// Distributed: collective.
   Eigen::MatrixXd schur_complement(const Eigen::SparseMatrix<double>& b) const;
   /// uᵀ A u, cell by cell from the eliminated blocks (a sum of non-negative terms, so as accurate
   /// as u itself), without A.
@@ -61,9 +71,9 @@ class CondensedFactor {
  private:
   struct CellBlock;
   /// Fills blocks_ and block_of_cell_ for every cell; returns the entries of the lower triangle
-  /// of S that the cells [first_cell, last_cell) contribute.
-  std::vector<Eigen::Triplet<double>> eliminate_interiors(double stiffness_weight, double mass_weight, int first_cell,
-                                                          int last_cell);
+  /// of S that the cells c with contributes[c] add.
+  std::vector<Eigen::Triplet<double>> eliminate_interiors(double stiffness_weight, double mass_weight,
+                                                          const std::vector<char>& contributes);
   /// S⁻¹ rhs on the skeleton, shape (n_skeleton, k).
   Eigen::MatrixXd skeleton_solve(const Eigen::MatrixXd& rhs) const;
   /// f_s − A_si A_ii⁻¹ f_i, shape (n_skeleton, k).
@@ -74,8 +84,10 @@ class CondensedFactor {
   std::vector<std::unique_ptr<CellBlock>> blocks_;
   std::vector<int> block_of_cell_;
   int n_trailing_ = 0;
-  std::unique_ptr<linalg::SparseCholesky> serial_;          ///< one of the two
-  std::unique_ptr<linalg::DistributedCholesky> distributed_;
+  linalg::Distribution distribution_;
+  std::unique_ptr<linalg::SparseCholesky> serial_;  ///< one of the three, by distribution_
+  std::unique_ptr<linalg::SubstructuredCholesky> substructured_;
+  std::unique_ptr<linalg::DistributedCholesky> mumps_;
 };
 
 }  // namespace hpcontact::assembly

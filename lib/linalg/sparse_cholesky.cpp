@@ -135,10 +135,13 @@ SparseCholesky::SparseCholesky(const Eigen::SparseMatrix<double>& matrix, const 
   if (!trailing.empty() && static_cast<int>(trailing.size()) < size_) {
     // AMD on the interior block alone, the trailing unknowns appended. (Constrained AMD on the
     // whole matrix factorized 30 % slower at 1e6 dofs; METIS cost more than it saved.)
-    // Postordering keeps the trailing set last: it is the dense chain at the root of the tree.
+    // No postordering: it would move unknowns past the trailing set whenever the trailing set is
+    // not connected through the interior (a rank's part in SubstructuredCholesky), and AMD's
+    // order is postordered already (1e6 dofs: the factorization takes the same time).
     permutation = interior_first_ordering(*source, trailing, c);
     c.nmethods = 1;
     c.method[0].ordering = CHOLMOD_GIVEN;
+    c.postorder = 0;
   } else {
     // AMD alone: CHOLMOD's default also tries METIS when AMD's fill is high, which on the 2D
     // finite element matrices here costs more time than its smaller factor saves (1e6 dofs of
@@ -190,6 +193,8 @@ SparseCholesky::SparseCholesky(SparseCholesky&&) noexcept = default;
 SparseCholesky& SparseCholesky::operator=(SparseCholesky&&) noexcept = default;
 
 int SparseCholesky::n_trailing() const { return impl_->n_trailing; }
+const Eigen::MatrixXd& SparseCholesky::trailing_factor() const { return impl_->trailing_factor; }
+const std::vector<int>& SparseCholesky::trailing_position() const { return impl_->trailing_position; }
 
 long long SparseCholesky::factor_nonzeros() const {
   const auto* factor = impl_->factor;

@@ -33,6 +33,11 @@ class SparseCholesky {
   int size() const { return size_; }
   /// Number of unknowns ordered last (0 without a trailing set).
   int n_trailing() const;
+  /// The trailing block L_tt of the factor, dense lower triangular (n_trailing, n_trailing):
+  /// L_tt L_ttᵀ is the Schur complement of the other unknowns onto the trailing set. Row k belongs
+  /// to the index i with trailing_position()[i] == k (−1 for indices outside the set).
+  const Eigen::MatrixXd& trailing_factor() const;
+  const std::vector<int>& trailing_position() const;
   /// Nonzeros of the factor L (a measure of the factorization's cost and memory).
   long long factor_nonzeros() const;
 

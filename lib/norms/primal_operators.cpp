@@ -14,8 +14,8 @@
 namespace hpcontact::norms {
 
 PrimalOperators::PrimalOperators(const mesh::QuadMesh& mesh, std::vector<int> cell_degrees, OperatorLog* log,
-                                 bool distributed)
-    : mesh_(&mesh), log_(log), distributed_(distributed) {
+                                 linalg::Distribution distribution)
+    : mesh_(&mesh), log_(log), distribution_(distribution) {
   Stopwatch clock;
   space_ = std::make_unique<space::H1Space>(mesh, std::move(cell_degrees));
   contact_ = std::make_unique<mesh::ContactBoundary>(mesh);
@@ -39,12 +39,13 @@ namespace {
 
 // Factorizes stiffness_weight K + mass_weight M into `slot` on first use and logs it as `name`.
 const assembly::CondensedFactor& condensed_factor(const space::H1Space& space, double stiffness_weight,
-                                                  double mass_weight, const std::vector<int>& trace, bool distributed,
+                                                  double mass_weight, const std::vector<int>& trace,
+                                                  linalg::Distribution distribution,
                                                   std::unique_ptr<assembly::CondensedFactor>& slot,
                                                   const char* name, OperatorLog* log) {
   if (!slot) {
     Stopwatch clock;
-    slot = std::make_unique<assembly::CondensedFactor>(space, stiffness_weight, mass_weight, trace, distributed);
+    slot = std::make_unique<assembly::CondensedFactor>(space, stiffness_weight, mass_weight, trace, distribution);
     if (log) log->record(name, slot->size(), slot->size(), clock.seconds());
   }
   return *slot;
@@ -53,11 +54,11 @@ const assembly::CondensedFactor& condensed_factor(const space::H1Space& space, d
 }  // namespace
 
 const assembly::CondensedFactor& PrimalOperators::stiffness_factor() const {
-  return condensed_factor(*space_, 1.0, 0.0, trace_dofs(), distributed_, stiffness_factor_, "factor(K)", log_);
+  return condensed_factor(*space_, 1.0, 0.0, trace_dofs(), distribution_, stiffness_factor_, "factor(K)", log_);
 }
 
 const assembly::CondensedFactor& PrimalOperators::gram_factor() const {
-  return condensed_factor(*space_, 1.0, 1.0, trace_dofs(), distributed_, gram_factor_, "factor(K+M)", log_);
+  return condensed_factor(*space_, 1.0, 1.0, trace_dofs(), distribution_, gram_factor_, "factor(K+M)", log_);
 }
 
 const Eigen::SparseMatrix<double>& PrimalOperators::coupling(const space::MultiplierSpace& multipliers,

@@ -24,10 +24,10 @@ namespace hpcontact::norms {
 class PrimalOperators {
  public:
   /// `mesh` (and `log`, when given) must outlive the object. Builds the space and Γ_C only.
-  /// `distributed`: the factors are factorized over the MPI ranks (every rank must construct the
-  /// object and make the same calls on it, in the same order).
+  /// `distribution` other than serial: the factors are factorized over the MPI ranks (every rank
+  /// must construct the object and make the same calls on it, in the same order).
   PrimalOperators(const mesh::QuadMesh& mesh, std::vector<int> cell_degrees, OperatorLog* log = nullptr,
-                  bool distributed = false);
+                  linalg::Distribution distribution = linalg::Distribution::serial);
   ~PrimalOperators();
 
   const mesh::QuadMesh& mesh() const { return *mesh_; }
@@ -60,7 +60,7 @@ class PrimalOperators {
   std::unique_ptr<space::H1Space> space_;
   std::unique_ptr<mesh::ContactBoundary> contact_;
   OperatorLog* log_;
-  bool distributed_;
+  linalg::Distribution distribution_;
   mutable std::unique_ptr<assembly::CondensedFactor> stiffness_factor_, gram_factor_;
   mutable std::unique_ptr<std::vector<int>> trace_dofs_;
   mutable std::map<std::string, Eigen::SparseMatrix<double>> couplings_;

@@ -92,7 +92,7 @@ void add_convergence_rows(const io::Scene& scene, const std::vector<ContactEffec
     refined.refinements += k;
     auto d = discretize_scene(refined);
     OperatorLog level_log;
-    const norms::PrimalOperators primal(d->mesh, d->cell_degrees, &level_log, options.distributed);
+    const norms::PrimalOperators primal(d->mesh, d->cell_degrees, &level_log, options.distribution);
     refined_effects.push_back(std::make_unique<std::vector<ContactEffect>>(
         solve_contact_effects(refined, *d, primal, options, fmt::format(" (convergence level {})", k))));
     for (const auto& record : level_log.records())
@@ -149,7 +149,7 @@ nlohmann::json run_scene(const io::Scene& given_scene, const SceneRunOptions& op
   // 1. Meshes and degrees; the operators of S^p(T_h) are built on first use and shared.
   const auto d = discretize_scene(scene);
   OperatorLog log;
-  const norms::PrimalOperators primal(d->mesh, d->cell_degrees, &log, options.distributed);
+  const norms::PrimalOperators primal(d->mesh, d->cell_degrees, &log, options.distribution);
 
   // 2. The contact problems.
   const std::vector<ContactEffect> contacts = solve_contact_effects(scene, *d, primal, options, "");
@@ -194,6 +194,7 @@ nlohmann::json run_scene(const io::Scene& given_scene, const SceneRunOptions& op
   summary["seconds_total"] = clock.seconds();
   const auto [rank, ranks] = mpi_rank_and_size();
   summary["ranks"] = ranks;
+  summary["distributed_solver"] = linalg::to_string(options.distribution);
   if (rank != 0) return summary;
 
   io::ensure_writable_directory(options.out);

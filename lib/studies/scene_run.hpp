@@ -9,6 +9,7 @@
 #include <string>
 
 #include "io/scene.hpp"
+#include "linalg/distribution.hpp"
 #include "studies/scene_discretization.hpp"
 
 namespace hpcontact::studies {
@@ -17,9 +18,9 @@ struct SceneRunOptions {
   std::filesystem::path out;      ///< output folder (created when everything is computed)
   ValueOrigin constraint_points;  ///< where the constraint-point count came from, for messages
   std::function<void(const std::string&)> progress;  ///< one line per step, if given
-  /// Under mpirun: every rank runs the scene with K and A_G factorized over the ranks
-  /// (MUMPS), and rank 0 alone writes the files.
-  bool distributed = false;
+  /// Under mpirun: every rank runs the scene with K and A_G factorized over the ranks by this
+  /// solver, and rank 0 alone writes the files.
+  linalg::Distribution distribution = linalg::Distribution::serial;
 };
 
 /// Runs the effects of `scene` and writes into `out`:

@@ -1,0 +1,242 @@
+// SubstructuredCholesky: the interface found from which ranks contribute to which unknowns, each
+// rank's CHOLMOD factor with its interface unknowns last, the dense interface problem summed over
+// the ranks (MPI_Allreduce) and factorized on each.
+#include "linalg/substructured_cholesky.hpp"
+
+#include <fmt/format.h>
+#include <mpi.h>
+
+#include <algorithm>
+#include <exception>
+
+#include "core/error.hpp"
+#include "core/petsc_session.hpp"
+
+namespace hpcontact::linalg {
+
+struct SubstructuredCholesky::Impl {
+  int rank = 0, ranks = 1;
+  std::vector<int> interface;  ///< global index of every interface position (G \ C, then C)
+  std::vector<int> interface_position;  ///< per global index: its position in G, or −1
+  int n_trailing = 0;
+  std::vector<int> interior;       ///< this rank's interior unknowns (global, ascending)
+  std::vector<int> own_interface;  ///< interface positions this rank touches (ascending)
+  std::unique_ptr<SparseCholesky>
+      local;  ///< [interior; own interface] of A_r + D_r (null without interior)
+  Eigen::MatrixXd shifted_schur;                 ///< S_r + D_r on own_interface
+  Eigen::LLT<Eigen::MatrixXd> interface_factor;  ///< S_G = L_G L_Gᵀ
+
+  int n_local() const { return static_cast<int>(interior.size() + own_interface.size()); }
+  /// Factorizes this rank's part A_r + D_r (interior unknowns first, own interface positions
+  /// last) into `local` and keeps S_r + D_r in `shifted_schur`; returns D_r.
+  Eigen::VectorXd factor_own_part(const std::vector<Eigen::Triplet<double>>& lower_entries,
+                                  const std::vector<int>& local_index);
+};
+
+namespace {
+
+// Sums data[0 .. count) over the ranks, in place (in chunks: MPI counts are int).
+void sum_over_ranks(double* data, std::size_t count, int ranks) {
+  if (ranks == 1) return;
+  constexpr std::size_t chunk = std::size_t{1} << 26;
+  for (std::size_t first = 0; first < count; first += chunk)
+    HPC_VERIFY(
+        MPI_Allreduce(MPI_IN_PLACE, data + first, static_cast<int>(std::min(chunk, count - first)),
+                      MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD) == MPI_SUCCESS,
+        "MPI_Allreduce failed");
+}
+
+}  // namespace
+
+Eigen::VectorXd SubstructuredCholesky::Impl::factor_own_part(
+    const std::vector<Eigen::Triplet<double>>& lower_entries, const std::vector<int>& local_index) {
+  Impl& d = *this;
+  const int n_interior = static_cast<int>(d.interior.size()),
+            n_own = static_cast<int>(d.own_interface.size());
+  const int n_local = n_interior + n_own;
+  std::vector<Eigen::Triplet<double>> local_entries;
+  local_entries.reserve(lower_entries.size() + n_own);
+  Eigen::VectorXd shift = Eigen::VectorXd::Zero(n_own);
+  for (const auto& entry : lower_entries) {
+    const int row = local_index[entry.row()], col = local_index[entry.col()];
+    local_entries.emplace_back(std::max(row, col), std::min(row, col), entry.value());
+    if (row == col && row >= n_interior) shift(row - n_interior) += entry.value();
+  }
+  for (int k = 0; k < n_own; ++k) {
+    if (!(shift(k) > 0.0))
+      throw NumericalError(fmt::format(
+          "substructured Cholesky: the diagonal entry of unknown {} is {} (not positive definite)",
+          d.interface[d.own_interface[k]], shift(k)));
+    local_entries.emplace_back(n_interior + k, n_interior + k, shift(k));
+  }
+  Eigen::SparseMatrix<double> local_matrix(n_local, n_local);
+  local_matrix.setFromTriplets(local_entries.begin(), local_entries.end());
+  local_entries = {};
+  if (n_interior == 0) {
+    d.shifted_schur = Eigen::MatrixXd(local_matrix).selfadjointView<Eigen::Lower>();
+  } else if (n_own == 0) {
+    d.local = std::make_unique<SparseCholesky>(local_matrix);
+  } else {
+    std::vector<int> own(n_own);
+    for (int k = 0; k < n_own; ++k) own[k] = n_interior + k;
+    d.local = std::make_unique<SparseCholesky>(local_matrix, own);
+    Eigen::MatrixXd product = Eigen::MatrixXd::Zero(n_own, n_own);
+    product.selfadjointView<Eigen::Lower>().rankUpdate(d.local->trailing_factor());
+    std::vector<int> position(n_own);
+    for (int k = 0; k < n_own; ++k) position[k] = d.local->trailing_position()[n_interior + k];
+    const Eigen::MatrixXd full = product.selfadjointView<Eigen::Lower>();
+    d.shifted_schur = full(position, position);
+  }
+  return shift;
+}
+
+SubstructuredCholesky::SubstructuredCholesky(
+    int n, const std::vector<Eigen::Triplet<double>>& lower_entries,
+    const std::vector<int>& trailing)
+    : impl_(std::make_unique<Impl>()), size_(n) {
+  Impl& d = *impl_;
+  std::tie(d.rank, d.ranks) = mpi_rank_and_size();
+  // 1. Which ranks touch which unknowns (a count per unknown, summed over the ranks).
+  std::vector<double> touching(n, 0.0);
+  for (const auto& entry : lower_entries) {
+    HPC_VERIFY(entry.col() >= 0 && entry.row() >= entry.col() && entry.row() < n,
+               "substructured Cholesky: entry outside the lower triangle");
+    touching[entry.row()] = touching[entry.col()] = 1.0;
+  }
+  const std::vector<double> touched_here = touching;
+  sum_over_ranks(touching.data(), touching.size(), d.ranks);
+  std::vector<char> is_trailing(n, 0);
+  for (int index : trailing) {
+    HPC_VERIFY(index >= 0 && index < n, "trailing index out of range");
+    is_trailing[index] = 1;
+  }
+  // 2. The interface: shared unknowns, then the trailing set, each in index order.
+  d.interface_position.assign(n, -1);
+  for (int pass = 0; pass < 2; ++pass)
+    for (int i = 0; i < n; ++i) {
+      if (touching[i] == 0.0)
+        throw NumericalError(
+            fmt::format("substructured Cholesky: unknown {} of {} has no entries", i, n));
+      if ((pass == 0 && touching[i] >= 2.0 && !is_trailing[i]) || (pass == 1 && is_trailing[i])) {
+        d.interface_position[i] = static_cast<int>(d.interface.size());
+        d.interface.push_back(i);
+      }
+    }
+  d.n_trailing = static_cast<int>(std::count(is_trailing.begin(), is_trailing.end(), 1));
+  // 3. This rank's unknowns: its interior first, then the interface positions it touches.
+  std::vector<int> local_index(n, -1);
+  for (int i = 0; i < n; ++i)
+    if (touched_here[i] != 0.0 && d.interface_position[i] < 0)
+      local_index[i] = static_cast<int>(d.interior.size()), d.interior.push_back(i);
+  const int n_interior = static_cast<int>(d.interior.size());
+  for (int g = 0; g < static_cast<int>(d.interface.size()); ++g)
+    if (touched_here[d.interface[g]] != 0.0) {
+      local_index[d.interface[g]] = n_interior + static_cast<int>(d.own_interface.size());
+      d.own_interface.push_back(g);
+    }
+  // 4. S_r + D_r: the trailing block of the local factor, or the matrix itself without interior.
+  // A failure on one rank is agreed on by all, so that none waits in a collective call.
+  Eigen::VectorXd shift;  // D_r: this rank's own diagonal on G
+  std::exception_ptr failure;
+  try {
+    shift = d.factor_own_part(lower_entries, local_index);
+  } catch (...) {
+    failure = std::current_exception();
+  }
+  double failed = failure ? 1.0 : 0.0;
+  sum_over_ranks(&failed, 1, d.ranks);
+  if (failure) std::rethrow_exception(failure);
+  if (failed != 0.0)
+    throw NumericalError("substructured Cholesky: the factorization failed on another rank");
+  const int n_own = static_cast<int>(d.own_interface.size());
+  // 5. S_G = Σ_r (S_r + D_r − D_r), every rank factorizes it.
+  const int n_interface = static_cast<int>(d.interface.size());
+  Eigen::MatrixXd interface_matrix = Eigen::MatrixXd::Zero(n_interface, n_interface);
+  for (int k = 0; k < n_own; ++k)
+    for (int l = 0; l < n_own; ++l)
+      interface_matrix(d.own_interface[k], d.own_interface[l]) +=
+          d.shifted_schur(k, l) - (k == l ? shift(k) : 0.0);
+  sum_over_ranks(interface_matrix.data(), interface_matrix.size(), d.ranks);
+  d.interface_factor.compute(interface_matrix);
+  if (d.interface_factor.info() != Eigen::Success)
+    throw NumericalError(
+        fmt::format("substructured Cholesky: the {0}x{0} interface problem of a {1}x{1} matrix is "
+                    "not positive definite",
+                    n_interface, n));
+}
+
+SubstructuredCholesky::~SubstructuredCholesky() = default;
+SubstructuredCholesky::SubstructuredCholesky(SubstructuredCholesky&&) noexcept = default;
+SubstructuredCholesky& SubstructuredCholesky::operator=(SubstructuredCholesky&&) noexcept = default;
+
+int SubstructuredCholesky::interface_size() const {
+  return static_cast<int>(impl_->interface.size());
+}
+int SubstructuredCholesky::n_interior() const { return static_cast<int>(impl_->interior.size()); }
+
+Eigen::MatrixXd SubstructuredCholesky::solve(const Eigen::MatrixXd& rhs) const {
+  HPC_VERIFY(rhs.rows() == size_, "right-hand side of the wrong size");
+  const Impl& d = *impl_;
+  const auto k = rhs.cols();
+  const int n_interior = static_cast<int>(d.interior.size()),
+            n_own = static_cast<int>(d.own_interface.size());
+  // Condense: g_r = −A_GI A_II⁻¹ f_I = (S_r + D_r) y, where [x; y] solves (A_r + D_r)[x; y] = [f_I;
+  // 0].
+  Eigen::MatrixXd local_rhs = Eigen::MatrixXd::Zero(d.n_local(), k), condensed_here;
+  local_rhs.topRows(n_interior) = rhs(d.interior, Eigen::all);
+  Eigen::MatrixXd interface_rhs = Eigen::MatrixXd::Zero(d.interface.size(), k);
+  if (d.local && n_own > 0) {
+    condensed_here = d.shifted_schur * d.local->solve(local_rhs).bottomRows(n_own);
+    interface_rhs(d.own_interface, Eigen::all) = condensed_here;
+  }
+  sum_over_ranks(interface_rhs.data(), interface_rhs.size(), d.ranks);
+  interface_rhs += rhs(d.interface, Eigen::all);
+  const Eigen::MatrixXd interface_solution = d.interface_factor.solve(interface_rhs);
+  // Back-substitute: with the trailing right-hand side (S_r + D_r) u_G − g_r the local solve
+  // returns y = u_G, hence x = A_II⁻¹ (f_I − A_IG u_G).
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(size_, k);
+  if (d.local) {
+    if (n_own > 0)
+      local_rhs.bottomRows(n_own) =
+          d.shifted_schur * interface_solution(d.own_interface, Eigen::all) - condensed_here;
+    out(d.interior, Eigen::all) = d.local->solve(local_rhs).topRows(n_interior);
+  }
+  if (d.rank == 0) out(d.interface, Eigen::all) = interface_solution;
+  sum_over_ranks(out.data(), out.size(), d.ranks);  // every row is set by one rank only
+  return out;
+}
+
+Eigen::MatrixXd SubstructuredCholesky::schur_complement(
+    const Eigen::SparseMatrix<double>& b) const {
+  HPC_VERIFY(b.cols() == size_, "B A⁻¹ Bᵀ: B has the wrong number of columns");
+  const Impl& d = *impl_;
+  const auto m = b.rows();
+  const int n_interface = static_cast<int>(d.interface.size()), offset = n_interface - d.n_trailing;
+  bool inside = d.n_trailing > 0;
+  for (int col = 0; inside && col < b.outerSize(); ++col)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(b, col); it; ++it)
+      if (it.value() != 0.0 && d.interface_position[it.col()] < offset) inside = false;
+  Eigen::MatrixXd result(m, m);
+  if (inside) {
+    Eigen::MatrixXd bt = Eigen::MatrixXd::Zero(d.n_trailing, m);  // B_Cᵀ
+    for (int col = 0; col < b.outerSize(); ++col)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(b, col); it; ++it)
+        bt(d.interface_position[it.col()] - offset, it.row()) += it.value();
+    d.interface_factor.matrixLLT()
+        .bottomRightCorner(d.n_trailing, d.n_trailing)
+        .triangularView<Eigen::Lower>()
+        .solveInPlace(bt);
+    result.setZero();
+    result.selfadjointView<Eigen::Lower>().rankUpdate(bt.transpose());
+    return result.selfadjointView<Eigen::Lower>();
+  }
+  const Eigen::SparseMatrix<double> bt = b.transpose();
+  constexpr int block = 64;
+  for (Eigen::Index first = 0; first < m; first += block) {
+    const auto count = std::min<Eigen::Index>(block, m - first);
+    result.middleCols(first, count) = b * solve(Eigen::MatrixXd(bt.middleCols(first, count)));
+  }
+  return 0.5 * (result + result.transpose());
+}
+
+}  // namespace hpcontact::linalg

@@ -1,0 +1,62 @@
+// Sparse symmetric positive definite direct solver over the MPI ranks by substructuring: every
+// rank factorizes (CHOLMOD) the unknowns only its own entries touch, and the unknowns shared
+// between ranks plus a trailing set (the Γ_C trace) form a small dense interface problem that
+// every rank holds. Right-hand sides and results are replicated on every rank.
+#pragma once
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <memory>
+#include <vector>
+
+#include "linalg/sparse_cholesky.hpp"
+
+namespace hpcontact::linalg {
+
+/// A = Σ_r A_r, where A_r holds rank r's entries (e.g. the element matrices of its cells). An
+/// unknown touched by one rank only is that rank's interior (I_r); the others, and the trailing
+/// set C, are the interface G (ordered G \ C, then C). With A_r split accordingly,
+///
+///     A_r = [A_II   A_IG ]     S_r = A_GG,r − A_GI A_II⁻¹ A_IG   (rank r alone, CHOLMOD with
+///           [A_GI   A_GG,r]                                        G ∩ r ordered last),
+///
+/// the interface problem S_G = Σ_r S_r (dense, |G| × |G|, summed over the ranks) is factorized
+/// by every rank: S_G = L_G L_Gᵀ. A solve condenses each rank's interior right-hand side onto G,
+/// solves with L_G, and back-substitutes on each rank; B A⁻¹ Bᵀ for B supported on C is Wᵀ W
+/// with W = L_CC⁻¹ B_Cᵀ, from the trailing block of L_G. Rank r's A_GG,r alone is only semi-
+/// definite where its part of the domain floats, so it factorizes A_r + D_r (D_r its own diagonal
+/// on G ∩ r) and subtracts D_r from the trailing block again. On one rank G = C: the serial
+/// trailing-block factorization.
+class SubstructuredCholesky {
+ public:
+  /// `lower_entries`: this rank's contributions (row ≥ col) to the lower triangle of the n × n
+  /// matrix; contributions to one entry are summed. `trailing`: the same on every rank.
+  /// Collective on MPI_COMM_WORLD (or serial when MPI is not initialized).
+  /// @throws NumericalError if A (or an interior block) is not positive definite, or an unknown
+  /// has no entries.
+  SubstructuredCholesky(int n, const std::vector<Eigen::Triplet<double>>& lower_entries,
+                        const std::vector<int>& trailing);
+  ~SubstructuredCholesky();
+  SubstructuredCholesky(SubstructuredCholesky&&) noexcept;
+  SubstructuredCholesky& operator=(SubstructuredCholesky&&) noexcept;
+
+  int size() const { return size_; }
+  /// |G|: the size of the dense interface problem (unknowns shared by ranks, and the trailing set).
+  int interface_size() const;
+  /// Unknowns this rank eliminates on its own.
+  int n_interior() const;
+  /// A⁻¹ rhs, shape (n, k), the same on every rank. Collective.
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& rhs) const;
+  /// B A⁻¹ Bᵀ, dense symmetric (m, m), the same on every rank, for B (m, n) replicated: from the
+  /// trailing block of L_G when B's nonzero columns lie in the trailing set, otherwise by solves
+  /// in blocks of 64 columns. Collective.
+  Eigen::MatrixXd schur_complement(const Eigen::SparseMatrix<double>& b) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  int size_ = 0;
+};
+
+}  // namespace hpcontact::linalg

@@ -1,0 +1,119 @@
+// Helper of test_06_distributed_factor, run under mpirun: every rank contributes its share of the
+// element matrices of a random weighted graph Laplacian on a grid (semidefinite per element, so a
+// rank's part floats unless it holds some of the "Dirichlet" diagonal), factorizes their sum over
+// the ranks, and rank 0 prints the relative differences from CHOLMOD on the assembled matrix.
+//
+//   distributed_factor_check SOLVER SPLIT [indefinite]
+//     SOLVER  substructuring | mumps
+//     SPLIT   strips (elements in strips of x, one per rank) | scattered (element e on rank e %
+//     ranks) indefinite: one Dirichlet diagonal is −50 (the factorization must fail on every rank)
+#include <fmt/format.h>
+
+#include <random>
+#include <string>
+
+#include "core/error.hpp"
+#include "core/petsc_session.hpp"
+#include "linalg/distributed_cholesky.hpp"
+#include "linalg/sparse_cholesky.hpp"
+#include "linalg/substructured_cholesky.hpp"
+
+using namespace hpcontact;
+
+namespace {
+
+constexpr int kNx = 24, kNy = 16;
+
+int node(int i, int j) { return j * kNx + i; }
+
+double relative_difference(const Eigen::MatrixXd& value, const Eigen::MatrixXd& reference) {
+  return (value - reference).cwiseAbs().maxCoeff() / reference.cwiseAbs().maxCoeff();
+}
+
+int run(const std::string& solver, const std::string& split, bool indefinite) {
+  const auto [rank, ranks] = mpi_rank_and_size();
+  const int n = kNx * kNy;
+  std::mt19937 random(7);  // the same numbers on every rank
+  std::uniform_real_distribution<double> weight(0.5, 2.0), value(-1.0, 1.0);
+  std::vector<Eigen::Triplet<double>> all, mine;
+  int element = 0;
+  auto add_element = [&](const std::vector<Eigen::Triplet<double>>& entries, int owner) {
+    for (const auto& entry : entries) {
+      all.push_back(entry);
+      if (owner == rank) mine.push_back(entry);
+    }
+    ++element;
+  };
+  // Cells: w (e_a − e_b)(e_a − e_b)ᵀ over the six pairs of the cell's nodes (lower triangle).
+  for (int j = 0; j + 1 < kNy; ++j)
+    for (int i = 0; i + 1 < kNx; ++i) {
+      const int nodes[4] = {node(i, j), node(i + 1, j), node(i + 1, j + 1), node(i, j + 1)};
+      std::vector<Eigen::Triplet<double>> entries;
+      for (int a = 0; a < 4; ++a)
+        for (int b = a + 1; b < 4; ++b) {
+          const double w = weight(random);
+          const int hi = std::max(nodes[a], nodes[b]), lo = std::min(nodes[a], nodes[b]);
+          entries.emplace_back(hi, hi, w), entries.emplace_back(lo, lo, w),
+              entries.emplace_back(hi, lo, -w);
+        }
+      add_element(entries, split == "strips" ? i * ranks / (kNx - 1) : element % ranks);
+    }
+  // "Dirichlet" diagonal on the top row, all on rank 0 (it touches every strip's top nodes).
+  for (int i = 0; i < kNx; ++i)
+    add_element(
+        {{node(i, kNy - 1), node(i, kNy - 1), indefinite && i == kNx / 2 ? -50.0 : weight(random)}},
+        0);
+  // The trailing set: the bottom row. B: 10 rows on it; B_out also reaches one interior node.
+  std::vector<int> trailing;
+  for (int i = 0; i < kNx; ++i) trailing.push_back(node(i, 0));
+  std::vector<Eigen::Triplet<double>> b_entries;
+  for (int r = 0; r < 10; ++r)
+    for (int k = 0; k < 5; ++k)
+      b_entries.emplace_back(r, trailing[(3 * r + 5 * k) % kNx], value(random));
+  Eigen::SparseMatrix<double> b(10, n), b_out(10, n);
+  b.setFromTriplets(b_entries.begin(), b_entries.end());
+  b_entries.emplace_back(4, node(kNx / 2, kNy / 2), 1.0);
+  b_out.setFromTriplets(b_entries.begin(), b_entries.end());
+  Eigen::MatrixXd rhs(n, 3);
+  for (Eigen::Index k = 0; k < rhs.size(); ++k) rhs.data()[k] = value(random);
+
+  Eigen::MatrixXd solution, schur, schur_out;
+  int interface = 0;
+  if (solver == "substructuring") {
+    const linalg::SubstructuredCholesky factor(n, mine, trailing);
+    solution = factor.solve(rhs), schur = factor.schur_complement(b),
+    schur_out = factor.schur_complement(b_out);
+    interface = factor.interface_size();
+  } else if (solver == "mumps") {
+    const linalg::DistributedCholesky factor(n, mine);
+    solution = factor.solve(rhs), schur = factor.schur_complement(b),
+    schur_out = factor.schur_complement(b_out);
+  } else {
+    throw_bad_input("distributed_factor_check", "SOLVER", solver, "substructuring | mumps");
+  }
+  if (rank != 0) return 0;
+  Eigen::SparseMatrix<double> a(n, n);
+  a.setFromTriplets(all.begin(), all.end());
+  const linalg::SparseCholesky reference(a);
+  fmt::print("solve {:.3e}\n", relative_difference(solution, reference.solve(rhs)));
+  fmt::print("schur_trailing {:.3e}\n", relative_difference(schur, reference.schur_complement(b)));
+  fmt::print("schur_fallback {:.3e}\n",
+             relative_difference(schur_out, reference.schur_complement(b_out)));
+  fmt::print("interface {}\n", interface);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const PetscSession session({argv[0]});
+  try {
+    if (argc < 3)
+      throw_bad_input("distributed_factor_check", "arguments", std::to_string(argc - 1),
+                      "SOLVER SPLIT [indefinite]");
+    return run(argv[1], argv[2], argc > 3 && std::string(argv[3]) == "indefinite");
+  } catch (const std::exception& error) {
+    if (mpi_rank_and_size().first == 0) fmt::print("error: {}\n", error.what());
+    return 3;
+  }
+}
