@@ -1,12 +1,15 @@
-// PetscSession and split_petsc_options.
+// PetscSession, split_petsc_options and the MPI helpers (rank and size, sums over the ranks).
 #include "core/petsc_session.hpp"
 
 #include <mpi.h>
 
 #include <slepcsys.h>
 
+#include <algorithm>
 #include <regex>
 #include <stdexcept>
+
+#include "core/error.hpp"
 
 namespace hpcontact {
 namespace {
@@ -61,6 +64,15 @@ std::pair<int, int> mpi_rank_and_size() {
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &size);
   return {rank, size};
+}
+
+void sum_over_ranks(double* data, std::size_t count) {
+  if (mpi_rank_and_size().second == 1) return;
+  constexpr std::size_t chunk = std::size_t{1} << 26;
+  for (std::size_t first = 0; first < count; first += chunk)
+    HPC_VERIFY(MPI_Allreduce(MPI_IN_PLACE, data + first, static_cast<int>(std::min(chunk, count - first)), MPI_DOUBLE,
+                             MPI_SUM, MPI_COMM_WORLD) == MPI_SUCCESS,
+               "MPI_Allreduce failed");
 }
 
 }  // namespace hpcontact

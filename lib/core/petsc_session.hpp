@@ -2,6 +2,7 @@
 // command line into hpcontact's own arguments and PETSc/SLEPc options (-eps_type arpack, ...).
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <utility>
 #include <vector>
@@ -35,5 +36,9 @@ class PetscSession {
 
 /// (rank, size) in MPI_COMM_WORLD; (0, 1) when MPI is not initialized (unit tests, libraries).
 std::pair<int, int> mpi_rank_and_size();
+
+/// Sums data[0 .. count) over the ranks of MPI_COMM_WORLD, in place, so that every rank holds the
+/// sum (in chunks: MPI counts are int). Collective; nothing to do on one rank.
+void sum_over_ranks(double* data, std::size_t count);
 
 }  // namespace hpcontact

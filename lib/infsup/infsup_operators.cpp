@@ -98,7 +98,10 @@ InfSupOperators assemble_infsup_operators(const InfSupSetup& setup) {
   if (setup.gram) {
     gram = *setup.gram;
   } else if (setup.norm == GramNorm::interpolation) {
-    gram = norms::interpolation_norm_gram(contact, multipliers, setup.interpolation_reference);
+    // With the factorizations over the ranks every rank is here: the quadrature is split too.
+    auto reference = setup.interpolation_reference;
+    reference.split_over_ranks = primal.distribution() != linalg::Distribution::serial;
+    gram = norms::interpolation_norm_gram(contact, multipliers, reference);
   } else {
     gram = setup.extension ? norms::extension_norm_gram(*setup.extension, multipliers)
                            : norms::extension_norm_gram(*setup.mesh, setup.cell_degrees, multipliers,

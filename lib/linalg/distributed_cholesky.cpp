@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "core/petsc_check.hpp"
 #include "core/petsc_handle.hpp"
+#include "core/petsc_session.hpp"
 
 namespace hpcontact::linalg {
 
@@ -19,16 +20,6 @@ struct DistributedCholesky::Impl {
   PetscInt row_begin = 0, row_end = 0;
 };
 
-namespace {
-
-// Sums `matrix` over the ranks, in place; every rank gets the same sum.
-void sum_over_ranks(Eigen::MatrixXd& matrix) {
-  HPC_VERIFY(MPI_Allreduce(MPI_IN_PLACE, matrix.data(), static_cast<int>(matrix.size()), MPI_DOUBLE, MPI_SUM,
-                           PETSC_COMM_WORLD) == MPI_SUCCESS,
-             "MPI_Allreduce failed");
-}
-
-}  // namespace
 
 DistributedCholesky::DistributedCholesky(int n, const std::vector<Eigen::Triplet<double>>& lower_entries)
     : impl_(std::make_unique<Impl>()), size_(n) {
@@ -84,7 +75,7 @@ Eigen::MatrixXd DistributedCholesky::solve(const Eigen::MatrixXd& rhs) const {
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(size_, rhs.cols());
   if (rhs.cols() == 0) return out;
   out.middleRows(impl_->row_begin, impl_->row_end - impl_->row_begin) = solve_owned_rows(rhs);
-  sum_over_ranks(out);  // each row is non-zero on its owner only
+  sum_over_ranks(out.data(), out.size());  // each row is non-zero on its owner only
   return out;
 }
 
@@ -100,7 +91,7 @@ Eigen::MatrixXd DistributedCholesky::schur_complement(const Eigen::SparseMatrix<
     const auto count = std::min<Eigen::Index>(block, m - first);
     result.middleCols(first, count) = b_owned * solve_owned_rows(Eigen::MatrixXd(bt.middleCols(first, count)));
   }
-  sum_over_ranks(result);
+  sum_over_ranks(result.data(), result.size());
   return 0.5 * (result + result.transpose());
 }
 

@@ -15,7 +15,7 @@
 namespace hpcontact::linalg {
 
 struct SubstructuredCholesky::Impl {
-  int rank = 0, ranks = 1;
+  int rank = 0;
   std::vector<int> interface;  ///< global index of every interface position (G \ C, then C)
   std::vector<int> interface_position;  ///< per global index: its position in G, or −1
   int n_trailing = 0;
@@ -33,20 +33,6 @@ struct SubstructuredCholesky::Impl {
                                   const std::vector<int>& local_index);
 };
 
-namespace {
-
-// Sums data[0 .. count) over the ranks, in place (in chunks: MPI counts are int).
-void sum_over_ranks(double* data, std::size_t count, int ranks) {
-  if (ranks == 1) return;
-  constexpr std::size_t chunk = std::size_t{1} << 26;
-  for (std::size_t first = 0; first < count; first += chunk)
-    HPC_VERIFY(
-        MPI_Allreduce(MPI_IN_PLACE, data + first, static_cast<int>(std::min(chunk, count - first)),
-                      MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD) == MPI_SUCCESS,
-        "MPI_Allreduce failed");
-}
-
-}  // namespace
 
 Eigen::VectorXd SubstructuredCholesky::Impl::factor_own_part(
     const std::vector<Eigen::Triplet<double>>& lower_entries, const std::vector<int>& local_index) {
@@ -95,7 +81,7 @@ SubstructuredCholesky::SubstructuredCholesky(
     const std::vector<int>& trailing)
     : impl_(std::make_unique<Impl>()), size_(n) {
   Impl& d = *impl_;
-  std::tie(d.rank, d.ranks) = mpi_rank_and_size();
+  d.rank = mpi_rank_and_size().first;
   // 1. Which ranks touch which unknowns (a count per unknown, summed over the ranks).
   std::vector<double> touching(n, 0.0);
   for (const auto& entry : lower_entries) {
@@ -104,7 +90,7 @@ SubstructuredCholesky::SubstructuredCholesky(
     touching[entry.row()] = touching[entry.col()] = 1.0;
   }
   const std::vector<double> touched_here = touching;
-  sum_over_ranks(touching.data(), touching.size(), d.ranks);
+  sum_over_ranks(touching.data(), touching.size());
   std::vector<char> is_trailing(n, 0);
   for (int index : trailing) {
     HPC_VERIFY(index >= 0 && index < n, "trailing index out of range");
@@ -144,7 +130,7 @@ SubstructuredCholesky::SubstructuredCholesky(
     failure = std::current_exception();
   }
   double failed = failure ? 1.0 : 0.0;
-  sum_over_ranks(&failed, 1, d.ranks);
+  sum_over_ranks(&failed, 1);
   if (failure) std::rethrow_exception(failure);
   if (failed != 0.0)
     throw NumericalError("substructured Cholesky: the factorization failed on another rank");
@@ -156,7 +142,7 @@ SubstructuredCholesky::SubstructuredCholesky(
     for (int l = 0; l < n_own; ++l)
       interface_matrix(d.own_interface[k], d.own_interface[l]) +=
           d.shifted_schur(k, l) - (k == l ? shift(k) : 0.0);
-  sum_over_ranks(interface_matrix.data(), interface_matrix.size(), d.ranks);
+  sum_over_ranks(interface_matrix.data(), interface_matrix.size());
   d.interface_factor.compute(interface_matrix);
   if (d.interface_factor.info() != Eigen::Success)
     throw NumericalError(
@@ -189,7 +175,7 @@ Eigen::MatrixXd SubstructuredCholesky::solve(const Eigen::MatrixXd& rhs) const {
     condensed_here = d.shifted_schur * d.local->solve(local_rhs).bottomRows(n_own);
     interface_rhs(d.own_interface, Eigen::all) = condensed_here;
   }
-  sum_over_ranks(interface_rhs.data(), interface_rhs.size(), d.ranks);
+  sum_over_ranks(interface_rhs.data(), interface_rhs.size());
   interface_rhs += rhs(d.interface, Eigen::all);
   const Eigen::MatrixXd interface_solution = d.interface_factor.solve(interface_rhs);
   // Back-substitute: with the trailing right-hand side (S_r + D_r) u_G − g_r the local solve
@@ -202,7 +188,7 @@ Eigen::MatrixXd SubstructuredCholesky::solve(const Eigen::MatrixXd& rhs) const {
     out(d.interior, Eigen::all) = d.local->solve(local_rhs).topRows(n_interior);
   }
   if (d.rank == 0) out(d.interface, Eigen::all) = interface_solution;
-  sum_over_ranks(out.data(), out.size(), d.ranks);  // every row is set by one rank only
+  sum_over_ranks(out.data(), out.size());  // every row is set by one rank only
   return out;
 }
 

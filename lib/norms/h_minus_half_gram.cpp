@@ -15,6 +15,7 @@
 #include "basis/lobatto.hpp"
 #include "basis/quadrature.hpp"
 #include "core/error.hpp"
+#include "core/petsc_session.hpp"
 #include "linalg/sparse_cholesky.hpp"
 #include "mesh/refine.hpp"
 
@@ -32,7 +33,8 @@ Eigen::MatrixXd inverse_sqrt_gram_dense(const Eigen::SparseMatrix<double>& a, co
 
 Eigen::MatrixXd inverse_sqrt_gram_quadrature(const Eigen::SparseMatrix<double>& a,
                                              const Eigen::SparseMatrix<double>& m,
-                                             const Eigen::SparseMatrix<double>& c, double lambda_max) {
+                                             const Eigen::SparseMatrix<double>& c, double lambda_max,
+                                             bool split_over_ranks) {
   // Spectrum of (A, M) in [1, λ_max] (A − M = K_W ≥ 0). The trapezoidal rule over all of ℤ,
   //   ∫ e^s/(λ + e^{2s}) ds ≈ h Σ_k e^{s_k}/(λ + e^{2 s_k}),   s_k = s_lo + k h,
   // is spectrally accurate; nodes are computed on [s_lo, s_hi] = [−8, ½ log λ_max + 8], and the
@@ -52,6 +54,8 @@ Eigen::MatrixXd inverse_sqrt_gram_quadrature(const Eigen::SparseMatrix<double>& 
   // cheap; most of the time goes into the solves with the n_mult columns of C. The nodes are
   // independent, so they run on up to kPartials threads; node k always adds into partial sum
   // k mod kPartials, summed in a fixed order, so the result does not depend on the thread count.
+  // Split over the ranks, partial sum k is computed by rank k mod ranks alone (zero elsewhere)
+  // and summed over the ranks: adding zeros is exact, so neither does it depend on the ranks.
   auto sandwich = [&](const Eigen::SparseMatrix<double>& matrix) {  // Cᵀ matrix⁻¹ C
     const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor(matrix);
     if (factor.info() != Eigen::Success)
@@ -71,16 +75,28 @@ Eigen::MatrixXd inverse_sqrt_gram_quadrature(const Eigen::SparseMatrix<double>& 
       failure[which] = std::current_exception();
     }
   };
-  const int threads = std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, kPartials);
+  const auto [rank, ranks] = split_over_ranks ? mpi_rank_and_size() : std::pair{0, 1};
+  std::vector<int> mine;
+  for (int which = rank; which < kPartials; which += ranks) mine.push_back(which);
+  // The ranks of one machine share its cores.
+  const int threads = std::clamp(static_cast<int>(std::thread::hardware_concurrency()) / ranks, 1,
+                                 std::max(1, static_cast<int>(mine.size())));
   std::vector<std::thread> pool;
   for (int t = 1; t < threads; ++t)
     pool.emplace_back([&, t] {
-      for (int which = t; which < kPartials; which += threads) accumulate(which);
+      for (std::size_t k = t; k < mine.size(); k += threads) accumulate(mine[k]);
     });
-  for (int which = 0; which < kPartials; which += threads) accumulate(which);
+  for (std::size_t k = 0; k < mine.size(); k += threads) accumulate(mine[k]);
   for (auto& thread : pool) thread.join();
+  // A failure on one rank is agreed on by all, so that none waits in the sum.
+  double failed = 0.0;
+  for (const auto& error : failure) failed += error ? 1.0 : 0.0;
+  if (ranks > 1) sum_over_ranks(&failed, 1);
   for (const auto& error : failure)
     if (error) std::rethrow_exception(error);
+  if (failed != 0.0) throw NumericalError("interpolation norm: the quadrature failed on another rank");
+  for (auto& sum : partial)
+    if (ranks > 1) sum_over_ranks(sum.data(), sum.size());
   Eigen::MatrixXd integral = tail * (std::exp(s_lo) * sandwich(a) + std::exp(-s_hi) * sandwich(m));
   for (const auto& sum : partial) integral += sum;
   return (2.0 / std::numbers::pi) * integral;
@@ -149,7 +165,8 @@ Eigen::MatrixXd interpolation_norm_gram(const mesh::ContactBoundary& contact,
   coupling.setFromTriplets(c_entries.begin(), c_entries.end());
   Eigen::MatrixXd gram = n_w <= reference.dense_limit
                              ? inverse_sqrt_gram_dense(stiffness_plus_mass, mass, coupling)
-                             : inverse_sqrt_gram_quadrature(stiffness_plus_mass, mass, coupling, lambda_max);
+                             : inverse_sqrt_gram_quadrature(stiffness_plus_mass, mass, coupling, lambda_max,
+                                                            reference.split_over_ranks);
   return 0.5 * (gram + gram.transpose());
 }
 

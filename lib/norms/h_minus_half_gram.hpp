@@ -41,6 +41,9 @@ struct InterpolationReference {
   int degree = 0;
   /// W up to this dimension uses the dense eigendecomposition, larger W the quadrature.
   int dense_limit = 200;
+  /// The quadrature's nodes split over the MPI ranks and summed (collective: every rank calls,
+  /// as for a distributed factorization); the result is the same as on one rank, bit for bit.
+  bool split_over_ranks = false;
 };
 
 /// Dense, symmetric positive definite, shape (n_multiplier_dofs, n_multiplier_dofs).
@@ -55,7 +58,8 @@ Eigen::MatrixXd inverse_sqrt_gram_dense(const Eigen::SparseMatrix<double>& a, co
                                         const Eigen::SparseMatrix<double>& c);
 Eigen::MatrixXd inverse_sqrt_gram_quadrature(const Eigen::SparseMatrix<double>& a,
                                              const Eigen::SparseMatrix<double>& m,
-                                             const Eigen::SparseMatrix<double>& c, double lambda_max);
+                                             const Eigen::SparseMatrix<double>& c, double lambda_max,
+                                             bool split_over_ranks = false);
 
 /// The Gram matrix of `sub` from that of `envelope`, a multiplier space on the same segments with
 /// degrees at least those of `sub`: the principal submatrix of the modes j ≤ p_C(k) of every

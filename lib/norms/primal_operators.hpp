@@ -54,6 +54,7 @@ class PrimalOperators {
   /// Every dof with a trace on Γ_C (the trailing set of both factorizations).
   const std::vector<int>& trace_dofs() const;
   OperatorLog* log() const { return log_; }
+  linalg::Distribution distribution() const { return distribution_; }
 
  private:
   const mesh::QuadMesh* mesh_;
