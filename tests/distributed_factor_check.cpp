@@ -31,7 +31,8 @@ double relative_difference(const Eigen::MatrixXd& value, const Eigen::MatrixXd& 
 }
 
 int run(const std::string& solver, const std::string& split, bool indefinite) {
-  const auto [rank, ranks] = mpi_rank_and_size();
+  // (not a structured binding: clang 14 refuses to capture one in the lambda below)
+  const int rank = mpi_rank_and_size().first, ranks = mpi_rank_and_size().second;
   const int n = kNx * kNy;
   std::mt19937 random(7);  // the same numbers on every rank
   std::uniform_real_distribution<double> weight(0.5, 2.0), value(-1.0, 1.0);

@@ -43,13 +43,16 @@ TEST(DistributedFactor, SubstructuringAndMumpsEqualCholmodOnEverySplit) {
           // The interface: the trailing row (24) alone on one rank; with strips, plus the nodes
           // between strips and the top nodes rank 0 shares; scattered, nearly every node.
           const double interface = number_after(run.output, "interface");
-          if (ranks == 1) EXPECT_EQ(interface, 24) << where;
+          if (ranks == 1) {
+            EXPECT_EQ(interface, 24) << where;
+          }
           if (ranks > 1 && std::string(split) == "strips") {
             EXPECT_GT(interface, 24 + 15 * (ranks - 1)) << where;
             EXPECT_LT(interface, 24 * 16 / 2) << where;
           }
-          if (ranks > 1 && std::string(split) == "scattered")
+          if (ranks > 1 && std::string(split) == "scattered") {
             EXPECT_GT(interface, 24 * 16 / 2) << where;
+          }
         }
       }
 }

@@ -63,8 +63,7 @@ Eigen::MatrixXd signed_skeleton_rows(const std::vector<space::LocalShape>& shape
 
 CondensedFactor::CondensedFactor(const space::H1Space& space, double stiffness_weight, double mass_weight,
                                  const std::vector<int>& trailing, linalg::Distribution distribution)
-    : space_(&space), size_(space.n_dofs()), n_trailing_(static_cast<int>(trailing.size())),
-      distribution_(distribution) {
+    : space_(&space), size_(space.n_dofs()), n_trailing_(static_cast<int>(trailing.size())) {
   for (int index : trailing)
     HPC_VERIFY(index >= 0 && index < space.n_skeleton_dofs(), "trailing set outside the skeleton dofs");
   const int n_cells = space.mesh().n_cells(), n_skeleton = space.n_skeleton_dofs();

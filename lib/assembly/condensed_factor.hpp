@@ -52,10 +52,6 @@ class CondensedFactor {
   int n_trailing() const { return n_trailing_; }
   /// Distinct interior eliminations: 1 on a uniform mesh of one degree, n_cells on a general mesh.
   int n_eliminations() const { return static_cast<int>(blocks_.size()); }
-  linalg::Distribution distribution() const { return distribution_; }
-  /// Substructuring: the size of the dense interface problem (dofs between the ranks' parts, and
-  /// the trailing set); 0 otherwise.
-  int interface_size() const { return substructured_ ? substructured_->interface_size() : 0; }
 
   /// A⁻¹ rhs, shape (n) or (n, k). Distributed: collective, rhs and result the same on every rank.
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const;
@@ -84,8 +80,7 @@ class CondensedFactor {
   std::vector<std::unique_ptr<CellBlock>> blocks_;
   std::vector<int> block_of_cell_;
   int n_trailing_ = 0;
-  linalg::Distribution distribution_;
-  std::unique_ptr<linalg::SparseCholesky> serial_;  ///< one of the three, by distribution_
+  std::unique_ptr<linalg::SparseCholesky> serial_;  ///< one of the three, by the distribution
   std::unique_ptr<linalg::SubstructuredCholesky> substructured_;
   std::unique_ptr<linalg::DistributedCholesky> mumps_;
 };

@@ -3,7 +3,6 @@
 // split like the matrix's, results summed over the ranks.
 #include "linalg/distributed_cholesky.hpp"
 
-#include <mpi.h>
 #include <petscmat.h>
 
 #include <algorithm>
@@ -19,7 +18,6 @@ struct DistributedCholesky::Impl {
   PetscHandle<Mat, MatDestroy> matrix, factor;
   PetscInt row_begin = 0, row_end = 0;
 };
-
 
 DistributedCholesky::DistributedCholesky(int n, const std::vector<Eigen::Triplet<double>>& lower_entries)
     : impl_(std::make_unique<Impl>()), size_(n) {

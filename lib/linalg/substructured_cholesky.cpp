@@ -1,16 +1,17 @@
 // SubstructuredCholesky: the interface found from which ranks contribute to which unknowns, each
 // rank's CHOLMOD factor with its interface unknowns last, the dense interface problem summed over
-// the ranks (MPI_Allreduce) and factorized on each.
+// the ranks and factorized on each.
 #include "linalg/substructured_cholesky.hpp"
 
+#include <Eigen/Cholesky>
 #include <fmt/format.h>
-#include <mpi.h>
 
 #include <algorithm>
 #include <exception>
 
 #include "core/error.hpp"
 #include "core/petsc_session.hpp"
+#include "linalg/sparse_cholesky.hpp"
 
 namespace hpcontact::linalg {
 
@@ -158,7 +159,6 @@ SubstructuredCholesky& SubstructuredCholesky::operator=(SubstructuredCholesky&&)
 int SubstructuredCholesky::interface_size() const {
   return static_cast<int>(impl_->interface.size());
 }
-int SubstructuredCholesky::n_interior() const { return static_cast<int>(impl_->interior.size()); }
 
 Eigen::MatrixXd SubstructuredCholesky::solve(const Eigen::MatrixXd& rhs) const {
   HPC_VERIFY(rhs.rows() == size_, "right-hand side of the wrong size");

@@ -4,13 +4,10 @@
 // every rank holds. Right-hand sides and results are replicated on every rank.
 #pragma once
 
-#include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <memory>
 #include <vector>
-
-#include "linalg/sparse_cholesky.hpp"
 
 namespace hpcontact::linalg {
 
@@ -44,8 +41,6 @@ class SubstructuredCholesky {
   int size() const { return size_; }
   /// |G|: the size of the dense interface problem (unknowns shared by ranks, and the trailing set).
   int interface_size() const;
-  /// Unknowns this rank eliminates on its own.
-  int n_interior() const;
   /// A⁻¹ rhs, shape (n, k), the same on every rank. Collective.
   Eigen::MatrixXd solve(const Eigen::MatrixXd& rhs) const;
   /// B A⁻¹ Bᵀ, dense symmetric (m, m), the same on every rank, for B (m, n) replicated: from the
