@@ -8,6 +8,7 @@
 #include <algorithm>
 
 #include "core/error.hpp"
+#include "linalg/schur_complement.hpp"
 
 namespace hpcontact::linalg {
 
@@ -228,30 +229,8 @@ Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& rhs) const {
 
 Eigen::MatrixXd SparseCholesky::schur_complement(const Eigen::SparseMatrix<double>& b) const {
   HPC_VERIFY(b.cols() == size_, "B A⁻¹ Bᵀ: B has the wrong number of columns");
-  const auto m = b.rows();
-  bool inside = impl_->n_trailing > 0;
-  for (int col = 0; inside && col < b.outerSize(); ++col)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(b, col); it; ++it)
-      if (it.value() != 0.0 && impl_->trailing_position[it.col()] < 0) inside = false;
-  Eigen::MatrixXd result(m, m);
-  if (inside) {
-    Eigen::MatrixXd bt = Eigen::MatrixXd::Zero(impl_->n_trailing, m);  // (B P_tᵀ)ᵀ
-    for (int col = 0; col < b.outerSize(); ++col)
-      for (Eigen::SparseMatrix<double>::InnerIterator it(b, col); it; ++it)
-        bt(impl_->trailing_position[it.col()], it.row()) += it.value();
-    impl_->trailing_factor.triangularView<Eigen::Lower>().solveInPlace(bt);
-    result.setZero();
-    result.selfadjointView<Eigen::Lower>().rankUpdate(bt.transpose());
-    return result.selfadjointView<Eigen::Lower>();
-  }
-  const Eigen::SparseMatrix<double> bt = b.transpose();
-  constexpr int block = 64;
-  for (Eigen::Index first = 0; first < m; first += block) {
-    const auto count = std::min<Eigen::Index>(block, m - first);
-    result.middleCols(first, count) = b * solve(Eigen::MatrixXd(bt.middleCols(first, count)));
-  }
-  // Round-off leaves the product slightly unsymmetric; symmetric eigen solvers want it exact.
-  return 0.5 * (result + result.transpose());
+  return schur_complement_through_trailing(b, impl_->trailing_factor, impl_->trailing_position,
+                                           [this](const Eigen::MatrixXd& rhs) { return solve(rhs); });
 }
 
 std::vector<int> nonzero_columns(const Eigen::SparseMatrix<double>& b) {

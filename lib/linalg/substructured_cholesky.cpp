@@ -11,6 +11,7 @@
 
 #include "core/error.hpp"
 #include "core/petsc_session.hpp"
+#include "linalg/schur_complement.hpp"
 #include "linalg/sparse_cholesky.hpp"
 
 namespace hpcontact::linalg {
@@ -18,8 +19,8 @@ namespace hpcontact::linalg {
 struct SubstructuredCholesky::Impl {
   int rank = 0;
   std::vector<int> interface;  ///< global index of every interface position (G \ C, then C)
-  std::vector<int> interface_position;  ///< per global index: its position in G, or −1
   int n_trailing = 0;
+  std::vector<int> trailing_position;  ///< per global index: its row in the trailing block of L_G, or −1
   std::vector<int> interior;       ///< this rank's interior unknowns (global, ascending)
   std::vector<int> own_interface;  ///< interface positions this rank touches (ascending)
   std::unique_ptr<SparseCholesky>
@@ -98,22 +99,23 @@ SubstructuredCholesky::SubstructuredCholesky(
     is_trailing[index] = 1;
   }
   // 2. The interface: shared unknowns, then the trailing set, each in index order.
-  d.interface_position.assign(n, -1);
+  std::vector<char> in_interface(n, 0);
+  d.trailing_position.assign(n, -1);
   for (int pass = 0; pass < 2; ++pass)
     for (int i = 0; i < n; ++i) {
       if (touching[i] == 0.0)
         throw NumericalError(
             fmt::format("substructured Cholesky: unknown {} of {} has no entries", i, n));
       if ((pass == 0 && touching[i] >= 2.0 && !is_trailing[i]) || (pass == 1 && is_trailing[i])) {
-        d.interface_position[i] = static_cast<int>(d.interface.size());
+        in_interface[i] = 1;
+        if (pass == 1) d.trailing_position[i] = d.n_trailing++;
         d.interface.push_back(i);
       }
     }
-  d.n_trailing = static_cast<int>(std::count(is_trailing.begin(), is_trailing.end(), 1));
   // 3. This rank's unknowns: its interior first, then the interface positions it touches.
   std::vector<int> local_index(n, -1);
   for (int i = 0; i < n; ++i)
-    if (touched_here[i] != 0.0 && d.interface_position[i] < 0)
+    if (touched_here[i] != 0.0 && !in_interface[i])
       local_index[i] = static_cast<int>(d.interior.size()), d.interior.push_back(i);
   const int n_interior = static_cast<int>(d.interior.size());
   for (int g = 0; g < static_cast<int>(d.interface.size()); ++g)
@@ -192,37 +194,12 @@ Eigen::MatrixXd SubstructuredCholesky::solve(const Eigen::MatrixXd& rhs) const {
   return out;
 }
 
-Eigen::MatrixXd SubstructuredCholesky::schur_complement(
-    const Eigen::SparseMatrix<double>& b) const {
+Eigen::MatrixXd SubstructuredCholesky::schur_complement(const Eigen::SparseMatrix<double>& b) const {
   HPC_VERIFY(b.cols() == size_, "B A⁻¹ Bᵀ: B has the wrong number of columns");
   const Impl& d = *impl_;
-  const auto m = b.rows();
-  const int n_interface = static_cast<int>(d.interface.size()), offset = n_interface - d.n_trailing;
-  bool inside = d.n_trailing > 0;
-  for (int col = 0; inside && col < b.outerSize(); ++col)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(b, col); it; ++it)
-      if (it.value() != 0.0 && d.interface_position[it.col()] < offset) inside = false;
-  Eigen::MatrixXd result(m, m);
-  if (inside) {
-    Eigen::MatrixXd bt = Eigen::MatrixXd::Zero(d.n_trailing, m);  // B_Cᵀ
-    for (int col = 0; col < b.outerSize(); ++col)
-      for (Eigen::SparseMatrix<double>::InnerIterator it(b, col); it; ++it)
-        bt(d.interface_position[it.col()] - offset, it.row()) += it.value();
-    d.interface_factor.matrixLLT()
-        .bottomRightCorner(d.n_trailing, d.n_trailing)
-        .triangularView<Eigen::Lower>()
-        .solveInPlace(bt);
-    result.setZero();
-    result.selfadjointView<Eigen::Lower>().rankUpdate(bt.transpose());
-    return result.selfadjointView<Eigen::Lower>();
-  }
-  const Eigen::SparseMatrix<double> bt = b.transpose();
-  constexpr int block = 64;
-  for (Eigen::Index first = 0; first < m; first += block) {
-    const auto count = std::min<Eigen::Index>(block, m - first);
-    result.middleCols(first, count) = b * solve(Eigen::MatrixXd(bt.middleCols(first, count)));
-  }
-  return 0.5 * (result + result.transpose());
+  return schur_complement_through_trailing(
+      b, d.interface_factor.matrixLLT().bottomRightCorner(d.n_trailing, d.n_trailing), d.trailing_position,
+      [this](const Eigen::MatrixXd& rhs) { return solve(rhs); });
 }
 
 }  // namespace hpcontact::linalg
