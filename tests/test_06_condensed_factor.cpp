@@ -14,6 +14,7 @@
 #include "assembly/poisson_assembly.hpp"
 #include "linalg/sparse_cholesky.hpp"
 #include "mesh/contact_boundary.hpp"
+#include "mesh/point_grading.hpp"
 #include "mesh/rectangle_mesh.hpp"
 #include "space/multiplier_space.hpp"
 
@@ -118,4 +119,26 @@ TEST(CondensedFactor, CongruentCellsShareOneElimination) {
   EXPECT_EQ(assembly::CondensedFactor(space::H1Space(square, 3), 1.0, 0.0).n_eliminations(), 1);
   // Perturbed: no two cells alike.
   EXPECT_EQ(assembly::CondensedFactor(space::H1Space(meshes[1], 4), 1.0, 1.0).n_eliminations(), meshes[1].n_cells());
+}
+
+// A geometric mesh has similar parallelograms of different sizes (the centre cell of a star and
+// the cells of the coarse mesh): they share K's element matrix but not M's, which scales with the
+// area, so K + M must not share their elimination (it did, and α on graded meshes was off).
+TEST(CondensedFactor, SimilarCellsOfDifferentSizesKeepTheirOwnMass) {
+  const auto coarse = mesh::make_paper_square_mesh(4);
+  const int corner = mesh::vertex_at(coarse, mesh::Point(-1.0, -1.0), "test");
+  for (int layers : {2, 3}) {
+    const auto graded = mesh::grade_towards_vertices(coarse, {corner}, 0.2, layers, "test");
+    const space::H1Space space(graded, 3);
+    const mesh::ContactBoundary contact(graded);
+    const auto boundary = mesh::BoundaryMesh::uniform(contact.length(), 3);
+    const space::MultiplierSpace multipliers(boundary, 1);
+    const Eigen::SparseMatrix<double> b = assembly::assemble_coupling(space, contact, multipliers);
+    const auto volume = assembly::assemble_volume_matrices(space, {.stiffness = true, .mass = true});
+    const Eigen::LLT<Eigen::MatrixXd> dense(Eigen::MatrixXd(volume.stiffness) + Eigen::MatrixXd(volume.mass));
+    const assembly::CondensedFactor factor(space, 1.0, 1.0, linalg::nonzero_columns(b));
+    const Eigen::MatrixXd bt = Eigen::MatrixXd(b.transpose());
+    EXPECT_LT(relative_difference(factor.schur_complement(b), Eigen::MatrixXd(b) * dense.solve(bt)), 1e-11)
+        << layers << " layers";
+  }
 }

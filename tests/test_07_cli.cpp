@@ -101,7 +101,7 @@ TEST(Cli, InfsupCsvAndModeFiles) {
   std::ifstream in(csv);
   std::string header;
   std::getline(in, header);
-  EXPECT_EQ(header, "problem,norm,p,pC,n,m,h,H,ratio,Pi,alpha,ndofs,nmult,seconds");
+  EXPECT_EQ(header, "problem,norm,p,pC,n,m,h,H,ratio,Pi,alpha,alpha_error,ndofs,nmult,seconds");
   int rows = 0;
   for (std::string line; std::getline(in, line);) ++rows;
   EXPECT_EQ(rows, 2);

@@ -31,8 +31,6 @@ struct Configuration {
   infsup::GramNorm norm = infsup::GramNorm::interpolation;
   infsup::PairingProblem problem = infsup::PairingProblem::signorini;
   assembly::BoundaryFunction s = [](const mesh::Point& x) { return (1 - x.x()) * (1 - x.x()); };
-  norms::InterpolationReference interpolation{};
-  norms::ExtensionReference extension{};
 };
 
 infsup::InfSupResult alpha(const Configuration& c,
@@ -47,8 +45,6 @@ infsup::InfSupResult alpha(const Configuration& c,
   setup.norm = c.norm;
   setup.problem = c.problem;
   setup.friction_bound = c.s;
-  setup.interpolation_reference = c.interpolation;
-  setup.extension_reference = c.extension;
   return infsup::analyse_infsup(setup, backend);
 }
 
@@ -94,29 +90,6 @@ TEST(InfSup, SingularPairingIsReportedAsZero) {
     EXPECT_GE(result.alpha, 0.0);
     EXPECT_LT(result.alpha, 1e-5);
   }
-}
-
-// The reference spaces of both realizations are refined until α no longer changes; the changes
-// shrink and the last one is small.
-TEST(InfSup, ReferenceSpacesAreFineEnough) {
-  Configuration c{2, 1, 8, 8};
-  std::vector<double> interpolation, extension;
-  for (int subdivisions : {1, 2, 4}) {
-    c.interpolation = {subdivisions, 0};
-    interpolation.push_back(alpha(c).alpha);
-  }
-  c.norm = infsup::GramNorm::extension;
-  for (int refinements : {0, 1, 2}) {
-    c.extension = {refinements, 2};
-    extension.push_back(alpha(c).alpha);
-  }
-  EXPECT_LT(std::abs(interpolation[2] - interpolation[1]), std::abs(interpolation[1] - interpolation[0]));
-  EXPECT_LT(std::abs(interpolation[2] - interpolation[1]) / interpolation[2], 1e-3);
-  EXPECT_LT(std::abs(extension[2] - extension[1]), std::abs(extension[1] - extension[0]));
-  EXPECT_LT(std::abs(extension[2] - extension[1]) / extension[2], 1e-2);
-  // The checkerboard mode oscillates on the scale h, where both norms behave like
-  // sqrt(1 + k²) for frequency k: the two realizations agree closely for it.
-  EXPECT_NEAR(extension[2] / interpolation[2], 1.0, 5e-3);
 }
 
 TEST(InfSup, FrictionRestrictsMultipliersToSupportOfS) {
@@ -165,31 +138,6 @@ TEST(InfSup, ModeSamplesTwentyPointsPerSegment) {
   EXPECT_EQ(table.n_rows(), 60u);
   EXPECT_EQ(table.columns().front(), "x");
   EXPECT_EQ(table.columns()[1], "mu");
-}
-
-// The two ways of applying Φ Λ^{-1/2} Φᵀ in the interpolation norm: the dense eigendecomposition
-// and the sinc quadrature of (2/π) ∫ (K_W + t² M_W)⁻¹ dt with closed-form tails. Same Gram matrix
-// to 1e-9 (relative, max norm) for uniform and mixed degrees, non-nested h/H, and the same α.
-TEST(InfSup, InterpolationGramQuadratureEqualsDenseEigendecomposition) {
-  for (const auto& [n, pc, m] : {std::tuple{8, 0, 8}, {12, 3, 8}, {16, 1, 12}}) {
-    const auto mesh = mesh::make_paper_square_mesh(n);
-    const mesh::ContactBoundary contact(mesh);
-    const auto boundary = mesh::BoundaryMesh::uniform(2.0, m);
-    std::vector<int> degrees(m, pc);
-    degrees[m / 2] = pc + 2;  // a degree distribution
-    const space::MultiplierSpace multipliers(boundary, degrees);
-    norms::InterpolationReference dense_reference, quadrature_reference;
-    dense_reference.dense_limit = 1 << 30;
-    quadrature_reference.dense_limit = 0;
-    const Eigen::MatrixXd dense = norms::interpolation_norm_gram(contact, multipliers, dense_reference);
-    const Eigen::MatrixXd quadrature = norms::interpolation_norm_gram(contact, multipliers, quadrature_reference);
-    EXPECT_LT((dense - quadrature).cwiseAbs().maxCoeff(), 1e-9 * dense.cwiseAbs().maxCoeff())
-        << "n " << n << " pC " << pc << " m " << m;
-  }
-  Configuration c{3, 2, 8, 8};
-  const double dense_alpha = alpha(c).alpha;
-  c.interpolation.dense_limit = 0;
-  EXPECT_NEAR(alpha(c).alpha, dense_alpha, 1e-9);
 }
 
 // Sweeps read a base scene: on the §7 square with n × n levels, every row of alpha.csv equals α
@@ -278,14 +226,12 @@ eigensolver = "dense"
     Configuration c{std::stoi(row.at("p")), std::stoi(row.at("pC")), std::stoi(row.at("n")), std::stoi(row.at("m"))};
     c.norm = infsup::parse_gram_norm(row.at("norm"), "test");
     c.problem = infsup::parse_pairing_problem(row.at("problem"), "test");
-    // The sweep's references, the same for every point of a level: the extension norm's of degree
-    // the largest p (3) + 2, the interpolation norm's of degree the largest p_C (2) + 6 (every
-    // point's G is then a principal submatrix of the p_C = 2 one).
-    c.extension.extra_degree = 3 + 2 - c.p;
-    c.interpolation.degree = 2 + 6;
+    // The sweep's extension-norm references are those of the largest p (3) for every point of a
+    // level, so α agrees within the two error estimates there; the interpolation norm is exact.
     EXPECT_EQ(std::stoi(row.at("level")), c.n == 4 ? 1 : 2);
-    EXPECT_NEAR(std::stod(row.at("alpha")), alpha(c).alpha, 1e-9) << row.at("problem") << " " << row.at("norm")
-                                                                  << " p " << c.p << " pC " << c.pc << " n " << c.n;
+    const auto own = alpha(c);
+    EXPECT_NEAR(std::stod(row.at("alpha")), own.alpha, 1e-9 + std::stod(row.at("alpha_error")) + own.alpha_error)
+        << row.at("problem") << " " << row.at("norm") << " p " << c.p << " pC " << c.pc << " n " << c.n;
   }
   const std::string first = text_of(dir / "alpha.csv");
   int calls = 0;

@@ -33,12 +33,15 @@ bool is_interior(const space::LocalShape& shape) { return shape.i >= 2 && shape.
 // Congruent parallelograms: the same degrees (cell and edges) and the same Jacobian, its entries
 // rounded to 1e-12 of the largest: cells of a uniform mesh whose vertex coordinates differ in the
 // last bits share their elimination, at a relative change of the element matrix far below 1e-12.
-using ParallelogramKey = std::tuple<int, std::array<int, 4>, std::array<long long, 4>>;
+// The rounded entries alone are those of the shape; the size enters the key too (as the log of
+// the largest entry, to 1e-11), because the mass matrix scales with the area: similar cells of
+// different sizes (the layers of a geometric mesh) must not share a block of K + M.
+using ParallelogramKey = std::tuple<int, std::array<int, 4>, std::array<long long, 5>>;
 
-std::array<long long, 4> rounded_jacobian(const Eigen::Matrix2d& jacobian) {
-  const double unit = 1e-12 * jacobian.cwiseAbs().maxCoeff();
+std::array<long long, 5> rounded_jacobian(const Eigen::Matrix2d& jacobian) {
+  const double largest = jacobian.cwiseAbs().maxCoeff(), unit = 1e-12 * largest;
   return {std::llround(jacobian(0, 0) / unit), std::llround(jacobian(0, 1) / unit), std::llround(jacobian(1, 0) / unit),
-          std::llround(jacobian(1, 1) / unit)};
+          std::llround(jacobian(1, 1) / unit), std::llround(1e11 * std::log(largest))};
 }
 
 // Rows of `values` (global dof order) at a cell's interior shapes `local`.

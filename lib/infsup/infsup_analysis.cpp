@@ -3,6 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+
+#include <fmt/format.h>
 
 #include "core/error.hpp"
 #include "core/timer.hpp"
@@ -17,16 +20,43 @@ EigenBackend parse_eigen_backend(const std::string& text, const std::string& ori
   throw_bad_input(origin, "eigensolver", text, "must be one of: slepc, dense");
 }
 
+namespace {
+
+std::unique_ptr<norms::GramLadder> own_ladder(const InfSupSetup& setup, const space::MultiplierSpace& multipliers) {
+  if (setup.norm == GramNorm::interpolation)
+    return std::make_unique<norms::GramLadder>(norms::interpolation_gram_ladder(multipliers));
+  return std::make_unique<norms::GramLadder>(norms::extension_gram_ladder(*setup.mesh, setup.cell_degrees, multipliers));
+}
+
+}  // namespace
+
 InfSupResult analyse_infsup(const InfSupSetup& setup, EigenBackend backend) {
+  if (!(setup.alpha_tolerance > 0.0 && setup.alpha_tolerance <= 0.1))
+    throw_bad_input("inf-sup analysis", "alpha_tol", fmt::format("{}", setup.alpha_tolerance), "must be in (0, 0.1]");
   Stopwatch clock;
   const InfSupOperators operators = assemble_infsup_operators(setup);
-  Stopwatch eigen_clock;
-  const SmallestEigenpair pair = backend == EigenBackend::slepc
-                                     ? smallest_eigenpair_slepc(operators.s_g, operators.gram)
-                                     : smallest_eigenpair_dense(operators.s_g, operators.gram);
+  const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
+  const std::unique_ptr<norms::GramLadder> own = setup.grams ? nullptr : own_ladder(setup, multipliers);
+  const norms::GramLadder& grams = setup.grams ? *setup.grams : *own;
+  const double seconds_gram_before = grams.seconds();
   InfSupResult result;
-  result.lambda_min = std::max(pair.eigenvalue, 0.0);
-  result.alpha = std::sqrt(result.lambda_min);
+  SmallestEigenpair pair;
+  for (int level = 1;; ++level) {
+    const Eigen::MatrixXd fine = restrict(grams.at(level), operators.active_dofs);
+    Stopwatch eigen_clock;
+    pair = backend == EigenBackend::slepc ? smallest_eigenpair_slepc(operators.s_g, fine)
+                                          : smallest_eigenpair_dense(operators.s_g, fine);
+    result.seconds_eigen += eigen_clock.seconds();
+    result.lambda_min = std::max(pair.eigenvalue, 0.0);
+    result.alpha = std::sqrt(result.lambda_min);
+    const Eigen::VectorXd& x = pair.eigenvector;
+    const double fine_norm = x.dot(fine * x);
+    const double coarse_norm = x.dot(restrict(grams.at(level - 1), operators.active_dofs) * x);
+    result.alpha_error = result.alpha * std::abs(std::sqrt(fine_norm / coarse_norm) - 1.0);
+    result.reference_level = level;
+    result.alpha_converged = grams.geometric() && result.alpha_error <= setup.alpha_tolerance * result.alpha;
+    if (result.alpha_converged || !grams.geometric() || level == grams.top_level()) break;
+  }
   result.lambda_max = pair.largest_eigenvalue;
   result.singular = result.lambda_min <= kRoundOffZero * result.lambda_max;
   result.mode = Eigen::VectorXd::Zero(operators.n_multiplier_dofs);
@@ -41,10 +71,12 @@ InfSupResult analyse_infsup(const InfSupSetup& setup, EigenBackend backend) {
   result.n_multiplier_dofs = operators.n_multiplier_dofs;
   result.method = pair.method;
   result.residual = pair.residual;
-  result.seconds_eigen = eigen_clock.seconds();
   result.seconds_assembly = operators.seconds_assembly;
   result.seconds_primal = operators.seconds_primal;
-  result.seconds_gram = operators.seconds_gram;
+  result.seconds_gram = grams.seconds() - seconds_gram_before;
+  if (operators.log && result.seconds_gram > 0.0)
+    operators.log->record(setup.norm == GramNorm::interpolation ? "G (interpolation norm)" : "G (extension norm)",
+                          multipliers.n_dofs(), multipliers.n_dofs(), result.seconds_gram);
   result.seconds = clock.seconds();
   return result;
 }

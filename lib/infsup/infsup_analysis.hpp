@@ -1,5 +1,14 @@
 // The inf-sup constant α(h, H, p, p_C) of (11) or (22): α² = λ_min(S_G, G), with the spurious
-// multiplier mode (the eigenvector) and the indicator Π of (20).
+// multiplier mode (the eigenvector), the indicator Π of (20), and an estimate of α's error from
+// the H^{-1/2} reference.
+//
+// Error control. With G_ℓ the Gram matrix of reference level ℓ (norms/gram_ladder.hpp), α_ℓ is
+// computed on level ℓ + 1 and compared with level ℓ through its own eigenvector x (xᵀG_{ℓ+1}x = 1):
+//     α_ℓ² = min_y yᵀS_G y / yᵀG_ℓ y ≤ α_{ℓ+1}² / xᵀG_ℓ x,
+// and G_ℓ ≤ G_{ℓ+1} gives α_ℓ ≥ α_{ℓ+1}, so  0 ≤ α_ℓ − α_{ℓ+1} ≤ α_{ℓ+1} (1/√(xᵀG_ℓx) − 1) =: e.
+// e costs no second eigensolve. The levels converge geometrically (by a factor ≥ 4 per level,
+// test InfSup.AlphaErrorBoundsTheChangeToTheNextReference), so e also bounds |α_{ℓ+1} − α_∞|; ℓ
+// grows until e ≤ tolerance · α or the ladder ends.
 #pragma once
 
 #include <Eigen/Core>
@@ -25,6 +34,11 @@ struct InfSupResult {
   double pi = 0.0;             ///< Π(h, H, p, p_C), θ = 1
   double h = 0.0, H = 0.0;
   int n_primal_dofs = 0, n_multiplier_dofs = 0;
+  double alpha_error = 0.0;    ///< estimate of |α − α_∞| from the reference (header)
+  int reference_level = 0;     ///< level of the ladder α was computed on
+  /// alpha_error ≤ the setup's tolerance · α, on a ladder that converges geometrically (an
+  /// extension-norm reference that cannot be graded makes alpha_error too low: false)
+  bool alpha_converged = true;
   double seconds = 0.0;        ///< operators + eigenproblem
   double seconds_assembly = 0.0, seconds_primal = 0.0, seconds_gram = 0.0, seconds_eigen = 0.0;  ///< its parts
   std::string method;          ///< eigen solver used

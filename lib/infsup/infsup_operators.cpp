@@ -59,14 +59,12 @@ std::vector<int> dofs_meeting_support(const mesh::ContactBoundary& contact,
   return dofs;
 }
 
-Eigen::MatrixXd restrict(const Eigen::MatrixXd& matrix, const std::vector<int>& dofs) {
-  Eigen::MatrixXd out(dofs.size(), dofs.size());
-  for (std::size_t i = 0; i < dofs.size(); ++i)
-    for (std::size_t j = 0; j < dofs.size(); ++j) out(i, j) = matrix(dofs[i], dofs[j]);
-  return out;
-}
-
 }  // namespace
+
+Eigen::MatrixXd restrict(const Eigen::MatrixXd& matrix, const std::vector<int>& dofs) {
+  if (static_cast<Eigen::Index>(dofs.size()) == matrix.rows()) return matrix;  // every dof active
+  return matrix(dofs, dofs);
+}
 
 InfSupOperators assemble_infsup_operators(const InfSupSetup& setup) {
   HPC_VERIFY(setup.mesh && setup.boundary_mesh, "inf-sup setup without meshes");
@@ -93,38 +91,17 @@ InfSupOperators assemble_infsup_operators(const InfSupSetup& setup) {
   if (primal.log()) primal.log()->record("S_G", s_g.rows(), s_g.cols(), schur_clock.seconds());
   out.seconds_primal = primal_clock.seconds();
 
-  Stopwatch gram_clock;
-  Eigen::MatrixXd gram;
-  if (setup.gram) {
-    gram = *setup.gram;
-  } else if (setup.norm == GramNorm::interpolation) {
-    // With the factorizations over the ranks every rank is here: the quadrature is split too.
-    auto reference = setup.interpolation_reference;
-    reference.split_over_ranks = primal.distribution() != linalg::Distribution::serial;
-    gram = norms::interpolation_norm_gram(contact, multipliers, reference);
-  } else {
-    gram = setup.extension ? norms::extension_norm_gram(*setup.extension, multipliers)
-                           : norms::extension_norm_gram(*setup.mesh, setup.cell_degrees, multipliers,
-                                                        setup.extension_reference);
-  }
-  HPC_VERIFY(gram.rows() == multipliers.n_dofs(), "shared Gram matrix of another multiplier space");
-  out.seconds_gram = gram_clock.seconds();
-  if (primal.log() && !setup.gram)
-    primal.log()->record(setup.norm == GramNorm::interpolation ? "G (interpolation norm)" : "G (extension norm)",
-                         gram.rows(), gram.cols(), out.seconds_gram);
-
   if (friction) {
     out.active_dofs = dofs_meeting_support(contact, multipliers, setup.friction_bound);
     if (out.active_dofs.empty())
       throw InputError("the friction bound s vanishes on all of Γ_C: no multiplier is left");
     out.s_g = restrict(s_g, out.active_dofs);
-    out.gram = restrict(gram, out.active_dofs);
   } else {
     out.active_dofs.resize(multipliers.n_dofs());
     for (int i = 0; i < multipliers.n_dofs(); ++i) out.active_dofs[i] = i;
     out.s_g = s_g;
-    out.gram = gram;
   }
+  out.log = primal.log();
   out.n_primal_dofs = space.n_dofs();
   out.n_multiplier_dofs = multipliers.n_dofs();
   out.h = setup.mesh->longest_edge();

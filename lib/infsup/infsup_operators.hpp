@@ -1,7 +1,7 @@
 // The matrices of the discrete inf-sup problem on S^p(T_h) × M^{p_C}(T_{C,H}):
 //   α² = λ_min of  S_G x = λ G x,   S_G = B A_G⁻¹ Bᵀ,   A_G = K + M,
 // with B the coupling (Signorini, (11)) or B^s (friction, (22); multipliers restricted to supp s)
-// and G the H^{-1/2}(Γ_C) Gram matrix in one of two realizations.
+// and G the H^{-1/2}(Γ_C) Gram matrix in one of two realizations (norms/gram_ladder.hpp).
 #pragma once
 
 #include <Eigen/Core>
@@ -11,7 +11,7 @@
 #include "assembly/coupling.hpp"
 #include "mesh/boundary_mesh.hpp"
 #include "mesh/quad_mesh.hpp"
-#include "norms/h_minus_half_gram.hpp"
+#include "norms/gram_ladder.hpp"
 #include "norms/primal_operators.hpp"
 
 namespace hpcontact::infsup {
@@ -32,20 +32,17 @@ struct InfSupSetup {
   GramNorm norm = GramNorm::interpolation;
   PairingProblem problem = PairingProblem::signorini;
   assembly::BoundaryFunction friction_bound;  ///< s, required for the friction problem
-  norms::InterpolationReference interpolation_reference;
-  norms::ExtensionReference extension_reference;
+  /// α is refined on the reference ladder until its estimated error is below this fraction of α.
+  double alpha_tolerance = 1e-4;
   // Optional parts shared with other computations (built here when absent): a contact solve on the
   // same T_h, or the points of a sweep. They must belong to this setup: `primal` to (mesh,
-  // cell_degrees), `extension` to (mesh, cell_degrees,
-  // extension_reference), `gram` to (boundary_mesh, segment_degrees, norm and its reference).
+  // cell_degrees), `grams` to (boundary_mesh, segment_degrees, norm).
   const norms::PrimalOperators* primal = nullptr;
-  const norms::ExtensionReferenceFactor* extension = nullptr;
-  const Eigen::MatrixXd* gram = nullptr;
+  const norms::GramLadder* grams = nullptr;
 };
 
 struct InfSupOperators {
   Eigen::MatrixXd s_g;   ///< B A_G⁻¹ Bᵀ restricted to the active multipliers, (n_active, n_active)
-  Eigen::MatrixXd gram;  ///< G restricted likewise
   /// Multiplier dofs kept (all of them for Signorini; those of segments meeting supp s for
   /// friction), in increasing order.
   std::vector<int> active_dofs;
@@ -55,11 +52,15 @@ struct InfSupOperators {
   double H = 0.0;  ///< longest segment of T_{C,H}
   double seconds_assembly = 0.0;  ///< what this call assembled of S^p(T_h), K, M, B
   double seconds_primal = 0.0;    ///< what this call factorized of A_G (trace last), and S_G
-  double seconds_gram = 0.0;
+  OperatorLog* log = nullptr;     ///< the primal operators' log, if any
 };
 
+/// S_G and the active multipliers (G comes from the ladder: infsup_analysis.hpp).
 /// @throws InputError on inconsistent setups (no friction bound, s ≡ 0 on Γ_C, ...).
 InfSupOperators assemble_infsup_operators(const InfSupSetup& setup);
+
+/// `matrix` (n_multiplier_dofs square) restricted to the rows and columns `dofs`.
+Eigen::MatrixXd restrict(const Eigen::MatrixXd& matrix, const std::vector<int>& dofs);
 
 /// Π(h, H, p, p_C) = h H⁻¹ max(1, p_C)² p⁻¹ of (20) with θ = 1; for degree distributions the
 /// worst case (largest p_C, smallest p).

@@ -184,6 +184,7 @@ Scene parse_scene(const std::string& text, const std::string& path) {
   const auto infsup = root.table("infsup");
   scene.norm = infsup.choice("norm", {"interp", "extension"}, "interp");
   scene.problem = infsup.choice("problem", {"signorini", "friction"}, "signorini");
+  scene.alpha_tolerance = infsup.number_in("alpha_tol", 1e-12, 0.1, 1e-4);
   infsup.reject_unknown_keys();
   const auto solve = root.table("solve");
   // The lower limit p_C + 1 depends on the segment; it is checked when the constraints are built.

@@ -52,6 +52,7 @@ struct Scene {
   std::string obstacle;        ///< g (Signorini)
   // [infsup]
   std::string norm = "interp", problem = "signorini";
+  double alpha_tolerance = 1e-4;  ///< relative error of α (alpha_tol)
   // [solve]
   std::optional<int> constraint_points;  ///< |𝒞| per segment (Remark 3); empty: p_C + 1
   /// Grade the mesh towards the free boundary of the scene's contact problems before running its

@@ -21,7 +21,7 @@ int vertex_at(const QuadMesh& mesh, const Point& point, const std::string& origi
 }
 
 QuadMesh grade_towards_vertices(const QuadMesh& mesh, const std::vector<int>& centres, double ratio, int layers,
-                                const std::string& origin) {
+                                const std::string& origin, std::vector<int>* parents) {
   if (!(ratio > 0.0 && ratio < 1.0)) throw_bad_input(origin, "grading", fmt::format("{}", ratio), "must be in (0, 1)");
   if (layers < 0) throw_bad_input(origin, "grading_layers", std::to_string(layers), "must be >= 0");
   // 1. Which star each cell belongs to.
@@ -68,8 +68,12 @@ QuadMesh grade_towards_vertices(const QuadMesh& mesh, const std::vector<int>& ce
   };
   // 3. Cells: those outside the stars, then each star cell's layers and centre cell.
   std::vector<std::array<int, 4>> cells;
+  std::vector<int> parent;
   for (int c = 0; c < mesh.n_cells(); ++c)
-    if (star_of[c] < 0) cells.push_back(mesh.cell(c));
+    if (star_of[c] < 0) {
+      cells.push_back(mesh.cell(c));
+      parent.push_back(c);
+    }
   for (int c = 0; c < mesh.n_cells(); ++c) {
     const int star = star_of[c];
     if (star < 0) continue;
@@ -80,7 +84,9 @@ QuadMesh grade_towards_vertices(const QuadMesh& mesh, const std::vector<int>& ce
       for (int k = 0; k < layers; ++k)
         cells.push_back({at_level(star, q, k + 1), at_level(star, q, k), at_level(star, r, k), at_level(star, r, k + 1)});
     cells.push_back({centres[star], at_level(star, v1, layers), at_level(star, v2, layers), at_level(star, v3, layers)});
+    parent.resize(cells.size(), c);
   }
+  if (parents) *parents = std::move(parent);
   QuadMesh graded(std::move(vertices), std::move(cells), origin);
   // 4. Boundary edges lie on a boundary edge of the input: the same vertices, or on the ray P–V.
   std::map<std::pair<int, int>, int> edge_of;

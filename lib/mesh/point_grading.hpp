@@ -17,11 +17,12 @@ namespace hpcontact::mesh {
 /// becomes P S_L V1 S_L V2 S_L V3 at the centre. The outer boundary is unchanged, so the result
 /// is conforming; cells shrink by `ratio` per layer towards P and keep their shape. Boundary
 /// edges inherit label and part from the edge they lie on. Vertex indices of the input are kept
-/// (new vertices follow); cells outside the stars keep their order and come first.
+/// (new vertices follow); cells outside the stars keep their order and come first. `parents`, if
+/// given, receives the input cell that each output cell lies in.
 /// @throws InputError naming `origin` if ratio ∉ (0, 1), layers < 0, a centre is not a vertex, or
 /// two stars share a cell (centres too close for this mesh: refine it first).
 QuadMesh grade_towards_vertices(const QuadMesh& mesh, const std::vector<int>& centres, double ratio, int layers,
-                                const std::string& origin);
+                                const std::string& origin, std::vector<int>* parents = nullptr);
 
 /// Index of the vertex at `point` (within 1e-9 of the mesh size). @throws InputError naming
 /// `origin` if there is none.

@@ -1,13 +1,11 @@
-// interpolation_norm_gram and extension_norm_gram.
+// interpolation_norm_gram_on_reference and extension_norm_gram.
 #include "norms/h_minus_half_gram.hpp"
 
 #include <Eigen/Eigenvalues>
-#include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
-#include <exception>
-#include <numbers>
-#include <thread>
+#include <map>
+#include <optional>
 #include <vector>
 
 #include "assembly/coupling.hpp"
@@ -15,96 +13,14 @@
 #include "basis/lobatto.hpp"
 #include "basis/quadrature.hpp"
 #include "core/error.hpp"
-#include "core/petsc_session.hpp"
-#include "linalg/sparse_cholesky.hpp"
+#include "mesh/point_grading.hpp"
 #include "mesh/refine.hpp"
 
 namespace hpcontact::norms {
 
-Eigen::MatrixXd inverse_sqrt_gram_dense(const Eigen::SparseMatrix<double>& a, const Eigen::SparseMatrix<double>& m,
-                                        const Eigen::SparseMatrix<double>& c) {
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eigen{Eigen::MatrixXd(a), Eigen::MatrixXd(m)};
-  if (eigen.info() != Eigen::Success)
-    throw NumericalError("interpolation norm: the reference eigenproblem K_W Φ = M_W Φ Λ failed");
-  const Eigen::MatrixXd scaled = eigen.eigenvectors().transpose() * c;  // Φᵀ C, shape (n_w, n_mult)
-  const Eigen::VectorXd inverse_sqrt = eigen.eigenvalues().cwiseSqrt().cwiseInverse();
-  return scaled.transpose() * inverse_sqrt.asDiagonal() * scaled;
-}
-
-Eigen::MatrixXd inverse_sqrt_gram_quadrature(const Eigen::SparseMatrix<double>& a,
-                                             const Eigen::SparseMatrix<double>& m,
-                                             const Eigen::SparseMatrix<double>& c, double lambda_max,
-                                             bool split_over_ranks) {
-  // Spectrum of (A, M) in [1, λ_max] (A − M = K_W ≥ 0). The trapezoidal rule over all of ℤ,
-  //   ∫ e^s/(λ + e^{2s}) ds ≈ h Σ_k e^{s_k}/(λ + e^{2 s_k}),   s_k = s_lo + k h,
-  // is spectrally accurate; nodes are computed on [s_lo, s_hi] = [−8, ½ log λ_max + 8], and the
-  // nodes beyond sum in closed form, per eigenvalue λ,
-  //   below: h Σ_{j≥1} e^{s_lo − jh}/λ = ρ e^{s_lo}/λ,   above: h Σ_{j≥1} e^{−s_hi − jh} = ρ e^{−s_hi},
-  // ρ = h e^{−h}/(1 − e^{−h}), to relative errors e^{2 s_lo}/λ and λ e^{−2 s_hi} of terms that are
-  // themselves ≤ e^{−8} of the total: about 1e-10 overall. (Truncating the integral instead, with
-  // half weights at the ends, leaves an O(h² e^{−8}) Euler–Maclaurin error.) As operators the
-  // tails are e^{s_lo} Cᵀ A⁻¹ C and e^{−s_hi} Cᵀ M⁻¹ C.
-  constexpr double step = 0.35, margin = 8.0;
-  const double s_lo = -margin, s_hi = 0.5 * std::log(lambda_max) + margin;
-  const int n_nodes = static_cast<int>(std::ceil((s_hi - s_lo) / step)) + 1;
-  const double h = (s_hi - s_lo) / (n_nodes - 1);
-  const double tail = h * std::exp(-h) / (1.0 - std::exp(-h));
-  const Eigen::MatrixXd c_dense = Eigen::MatrixXd(c);
-  // W is one-dimensional: its matrices are banded after AMD, and a simplicial LDLᵀ of each is
-  // cheap; most of the time goes into the solves with the n_mult columns of C. The nodes are
-  // independent, so they run on up to kPartials threads; node k always adds into partial sum
-  // k mod kPartials, summed in a fixed order, so the result does not depend on the thread count.
-  // Split over the ranks, partial sum k is computed by rank k mod ranks alone (zero elsewhere)
-  // and summed over the ranks: adding zeros is exact, so neither does it depend on the ranks.
-  auto sandwich = [&](const Eigen::SparseMatrix<double>& matrix) {  // Cᵀ matrix⁻¹ C
-    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor(matrix);
-    if (factor.info() != Eigen::Success)
-      throw NumericalError("interpolation norm: a shifted reference matrix K_W + t² M_W is not positive definite");
-    return Eigen::MatrixXd(c.transpose() * factor.solve(c_dense));
-  };
-  constexpr int kPartials = 4;
-  std::vector<Eigen::MatrixXd> partial(kPartials, Eigen::MatrixXd::Zero(c.cols(), c.cols()));
-  std::vector<std::exception_ptr> failure(kPartials);
-  auto accumulate = [&](int which) {
-    try {
-      for (int k = which; k < n_nodes; k += kPartials) {
-        const double s = s_lo + k * h;
-        partial[which] += h * std::exp(s) * sandwich(a + std::exp(2.0 * s) * m);
-      }
-    } catch (...) {
-      failure[which] = std::current_exception();
-    }
-  };
-  const auto [rank, ranks] = split_over_ranks ? mpi_rank_and_size() : std::pair{0, 1};
-  std::vector<int> mine;
-  for (int which = rank; which < kPartials; which += ranks) mine.push_back(which);
-  // The ranks of one machine share its cores.
-  const int threads = std::clamp(static_cast<int>(std::thread::hardware_concurrency()) / ranks, 1,
-                                 std::max(1, static_cast<int>(mine.size())));
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t)
-    pool.emplace_back([&, t] {
-      for (std::size_t k = t; k < mine.size(); k += threads) accumulate(mine[k]);
-    });
-  for (std::size_t k = 0; k < mine.size(); k += threads) accumulate(mine[k]);
-  for (auto& thread : pool) thread.join();
-  // A failure on one rank is agreed on by all, so that none waits in the sum.
-  double failed = 0.0;
-  for (const auto& error : failure) failed += error ? 1.0 : 0.0;
-  if (ranks > 1) sum_over_ranks(&failed, 1);
-  for (const auto& error : failure)
-    if (error) std::rethrow_exception(error);
-  if (failed != 0.0) throw NumericalError("interpolation norm: the quadrature failed on another rank");
-  for (auto& sum : partial)
-    if (ranks > 1) sum_over_ranks(sum.data(), sum.size());
-  Eigen::MatrixXd integral = tail * (std::exp(s_lo) * sandwich(a) + std::exp(-s_hi) * sandwich(m));
-  for (const auto& sum : partial) integral += sum;
-  return (2.0 / std::numbers::pi) * integral;
-}
-
-Eigen::MatrixXd interpolation_norm_gram(const mesh::ContactBoundary& contact,
-                                        const space::MultiplierSpace& multipliers,
-                                        const InterpolationReference& reference) {
+Eigen::MatrixXd interpolation_norm_gram_on_reference(const mesh::ContactBoundary& contact,
+                                                     const space::MultiplierSpace& multipliers,
+                                                     const InterpolationReference& reference) {
   if (reference.subdivisions < 1)
     throw_bad_input("interpolation norm", "subdivisions", std::to_string(reference.subdivisions),
                     "must be >= 1");
@@ -120,7 +36,6 @@ Eigen::MatrixXd interpolation_norm_gram(const mesh::ContactBoundary& contact,
   // Dofs: vertices 0..n_intervals, then q - 1 bubbles per interval.
   const int n_w = n_intervals + 1 + n_intervals * (q - 1);
   std::vector<Eigen::Triplet<double>> a_entries, m_entries, c_entries;
-  double lambda_max = 1.0;  // max over intervals of λ_max(A_e, M_e) bounds λ_max(A_W, M_W)
   const int pc_max = multipliers.max_degree();
   const auto& rule = basis::gauss_legendre(basis::gauss_points_for_degree(2 * q + pc_max));
   const auto table = basis::tabulate_lobatto(q, rule.points);
@@ -147,10 +62,6 @@ Eigen::MatrixXd interpolation_norm_gram(const mesh::ContactBoundary& contact,
         c_local.row(a) += w * value_a * mu.transpose();
       }
     }
-    lambda_max = std::max(lambda_max, Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd>(
-                                          a_local, m_local, Eigen::EigenvaluesOnly)
-                                          .eigenvalues()
-                                          .maxCoeff());
     for (int a = 0; a <= q; ++a) {
       for (int b = 0; b <= q; ++b) {
         a_entries.emplace_back(dofs[a], dofs[b], a_local(a, b));
@@ -163,10 +74,13 @@ Eigen::MatrixXd interpolation_norm_gram(const mesh::ContactBoundary& contact,
   stiffness_plus_mass.setFromTriplets(a_entries.begin(), a_entries.end());
   mass.setFromTriplets(m_entries.begin(), m_entries.end());
   coupling.setFromTriplets(c_entries.begin(), c_entries.end());
-  Eigen::MatrixXd gram = n_w <= reference.dense_limit
-                             ? inverse_sqrt_gram_dense(stiffness_plus_mass, mass, coupling)
-                             : inverse_sqrt_gram_quadrature(stiffness_plus_mass, mass, coupling, lambda_max,
-                                                            reference.split_over_ranks);
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eigen{Eigen::MatrixXd(stiffness_plus_mass),
+                                                                           Eigen::MatrixXd(mass)};
+  if (eigen.info() != Eigen::Success)
+    throw NumericalError("interpolation norm: the reference eigenproblem K_W Φ = M_W Φ Λ failed");
+  const Eigen::MatrixXd scaled = eigen.eigenvectors().transpose() * coupling;  // Φᵀ C, shape (n_w, n_mult)
+  const Eigen::VectorXd inverse_sqrt = eigen.eigenvalues().cwiseSqrt().cwiseInverse();
+  const Eigen::MatrixXd gram = scaled.transpose() * inverse_sqrt.asDiagonal() * scaled;
   return 0.5 * (gram + gram.transpose());
 }
 
@@ -185,17 +99,73 @@ Eigen::MatrixXd restrict_gram(const Eigen::MatrixXd& envelope_gram, const space:
   return envelope_gram(modes, modes);
 }
 
+ExtensionReference extension_reference_at(int level) {
+  return {.refinements = 1, .layers = 2 + 2 * level, .grading = 0.2, .extra_degree = 2 + level};
+}
+
+namespace {
+
+// The vertices of `mesh` at the arc lengths `points` on Γ_C, or nothing if one is not a vertex or
+// two share a cell (grading needs disjoint stars).
+std::optional<std::vector<int>> grading_vertices(const mesh::QuadMesh& mesh, const std::vector<double>& points) {
+  const mesh::ContactBoundary contact(mesh);
+  const auto trace = contact.breakpoints();
+  const double tolerance = 1e-9 * contact.length();
+  std::map<int, int> wanted;  // vertex -> cells of its star seen so far
+  std::vector<int> vertices;
+  for (double s : points) {
+    const auto at = std::lower_bound(trace.begin(), trace.end(), s - tolerance);
+    if (at == trace.end() || std::abs(*at - s) > tolerance) return std::nullopt;
+    // The trace vertex is an end of the trace edge beside it.
+    const auto& edge = contact.edges()[std::min<std::size_t>(at - trace.begin(), contact.edges().size() - 1)];
+    const auto [a, b] = mesh.edge(edge.edge);
+    const mesh::Point x = contact.point_at(*at);
+    vertices.push_back((mesh.vertex(a) - x).norm() < (mesh.vertex(b) - x).norm() ? a : b);
+    wanted[vertices.back()] = 0;
+  }
+  std::vector<int> star_of(mesh.n_cells(), -1);
+  for (int c = 0; c < mesh.n_cells(); ++c)
+    for (int v : mesh.cell(c))
+      if (wanted.contains(v)) {
+        if (star_of[c] >= 0 && star_of[c] != v) return std::nullopt;  // two stars share the cell
+        star_of[c] = v;
+      }
+  return vertices;
+}
+
+}  // namespace
+
 ExtensionReferenceFactor::ExtensionReferenceFactor(const mesh::QuadMesh& mesh, const std::vector<int>& cell_degrees,
-                                                   const ExtensionReference& reference) {
-  if (reference.refinements < 0 || reference.extra_degree < 0)
-    throw InputError("extension norm: refinements and extra_degree must be >= 0");
+                                                   const ExtensionReference& reference,
+                                                   const std::vector<double>& grading_points) {
+  if (reference.refinements < 0 || reference.extra_degree < 0 || reference.layers < 0)
+    throw InputError("extension norm: refinements, layers and extra_degree must be >= 0");
   fine_ = std::make_unique<mesh::QuadMesh>(mesh);
   std::vector<int> degrees = cell_degrees;
-  for (int level = 0; level < reference.refinements; ++level) {
+  auto refine = [&] {
     *fine_ = mesh::refine_uniformly(*fine_);
     std::vector<int> children;
     for (int p : degrees) children.insert(children.end(), 4, p);  // children of cell c: 4c..4c+3
     degrees = std::move(children);
+  };
+  for (int level = 0; level < reference.refinements; ++level) refine();
+  if (reference.layers > 0 && !grading_points.empty()) {
+    // Breakpoints of T_{C,H} inside edges of T_h become vertices after enough refinements (two
+    // more at most; beyond that the grading is left out and the error estimate shows it).
+    auto centres = grading_vertices(*fine_, grading_points);
+    for (int extra = 0; !centres && extra < 2; ++extra) {
+      refine();
+      centres = grading_vertices(*fine_, grading_points);
+    }
+    graded_ = centres.has_value();
+    if (centres) {
+      std::vector<int> parents;
+      *fine_ = mesh::grade_towards_vertices(*fine_, *centres, reference.grading, reference.layers,
+                                            "extension reference", &parents);
+      std::vector<int> graded(parents.size());
+      for (std::size_t c = 0; c < parents.size(); ++c) graded[c] = degrees[parents[c]];
+      degrees = std::move(graded);
+    }
   }
   for (int& p : degrees) p += reference.extra_degree;
   operators_ = std::make_unique<PrimalOperators>(*fine_, std::move(degrees));
@@ -210,9 +180,11 @@ Eigen::MatrixXd extension_norm_gram(const ExtensionReferenceFactor& reference,
 }
 
 Eigen::MatrixXd extension_norm_gram(const mesh::QuadMesh& mesh, const std::vector<int>& cell_degrees,
-                                    const space::MultiplierSpace& multipliers,
-                                    const ExtensionReference& reference) {
-  return extension_norm_gram(ExtensionReferenceFactor(mesh, cell_degrees, reference), multipliers);
+                                    const space::MultiplierSpace& multipliers, const ExtensionReference& reference,
+                                    bool* graded) {
+  const ExtensionReferenceFactor factor(mesh, cell_degrees, reference, multipliers.boundary_mesh().nodes());
+  if (graded) *graded = factor.graded();
+  return extension_norm_gram(factor, multipliers);
 }
 
 }  // namespace hpcontact::norms

@@ -1,24 +1,18 @@
 // The H^{-1/2}(Γ_C) Gram matrix G of the multiplier space, in two realizations (DESIGN.md).
 //
-// Interpolation norm. H^{1/2}(Γ_C) = [L², H¹]_{1/2} (no boundary conditions at the ends of Γ_C),
-// computed on a fine continuous reference space W on Γ_C. With M_W the mass matrix, K_W the
+// Interpolation norm. H^{1/2}(Γ_C) = [L², H¹]_{1/2} (no boundary conditions at the ends of Γ_C).
+// The toolkit computes it from its kernel (interpolation_norm_kernel.hpp); here, as the
+// independent check, on a continuous reference space W on Γ_C: with M_W the mass matrix, K_W the
 // stiffness + mass matrix of W, and K_W Φ = M_W Φ Λ, Φᵀ M_W Φ = I, the H^{1/2} norm of w ∈ W is
 // ‖w‖² = wᵀ M_W Φ Λ^{1/2} Φᵀ M_W w and its dual norm over W gives
-//     G = Cᵀ Φ Λ^{-1/2} Φᵀ C,     C_kj = ∫_{Γ_C} w_k μ_j ds.
-//
-// Two ways to apply Φ Λ^{-1/2} Φᵀ: the dense generalized eigendecomposition (O(n_W³), for small W),
-// and, for large W, the integral  Φ Λ^{-1/2} Φᵀ = (2/π) ∫_0^∞ (K_W + t² M_W)⁻¹ dt  by the
-// trapezoidal rule in s = log t (the scalar integrand is sech(s − ½ log λ) / (2√λ), analytic in a
-// strip of half-width π/2, so step h gives an error near e^{-π²/h}), with the tails beyond the
-// nodes in closed form (K_W⁻¹ below, M_W⁻¹ above). Each node is one sparse (banded) Cholesky
-// solve with the columns of C; the tests check that both ways agree.
+//     G_W = Cᵀ Φ Λ^{-1/2} Φᵀ C,     C_kj = ∫_{Γ_C} w_k μ_j ds,
+// by a dense generalized eigendecomposition. G_W ≤ G, and G − G_W falls like the square of W's
+// interval length only (the Riesz representative of a discontinuous μ has x log|x| kinks), which
+// is why W is not the production path: 16 subdivisions of degree p_C + 12 still leave 3e-6.
 //
 // Extension norm (Lemma 1 of the paper). ‖μ‖_{-1/2} = ‖u^μ‖₁ with u^μ ∈ H¹(Ω, Γ_D) solving
-// (∇u^μ, ∇v) + (u^μ, v) = (μ, v)_{Γ_C}; on a refined reference space S_ref
+// (∇u^μ, ∇v) + (u^μ, v) = (μ, v)_{Γ_C}; on a reference space S_ref finer than the discretization
 //     G = B_ref A_ref⁻¹ B_refᵀ,   A_ref = K_ref + M_ref.
-//
-// Both are computed on reference spaces finer than the discretization; tests show that α no
-// longer changes when the reference is refined further.
 #pragma once
 
 #include <Eigen/Core>
@@ -36,30 +30,13 @@ namespace hpcontact::norms {
 /// and T_{C,H}, every interval split into `subdivisions` equal parts.
 struct InterpolationReference {
   int subdivisions = 2;
-  /// 0: max p_C + 6. Finer references move α little: subdividing further by < 0.1 % (test
-  /// InfSup.ReferenceSpacesAreFineEnough), degree 13 instead of p_C + 6 by ≤ 0.3 % on the stability grid.
-  int degree = 0;
-  /// W up to this dimension uses the dense eigendecomposition, larger W the quadrature.
-  int dense_limit = 200;
-  /// The quadrature's nodes split over the MPI ranks and summed (collective: every rank calls,
-  /// as for a distributed factorization); the result is the same as on one rank, bit for bit.
-  bool split_over_ranks = false;
+  int degree = 0;  ///< 0: max p_C + 6
 };
 
-/// Dense, symmetric positive definite, shape (n_multiplier_dofs, n_multiplier_dofs).
-Eigen::MatrixXd interpolation_norm_gram(const mesh::ContactBoundary& contact,
-                                        const space::MultiplierSpace& multipliers,
-                                        const InterpolationReference& reference = {});
-
-/// Cᵀ Φ Λ^{-1/2} Φᵀ C for the pencil A Φ = M Φ Λ (A, M symmetric positive definite, sparse), by the
-/// dense eigendecomposition, or by the quadrature above given λ_max(A, M) ≤ lambda_max (and
-/// λ_min ≥ 1, i.e. A − M positive semi-definite). Shape (c.cols(), c.cols()).
-Eigen::MatrixXd inverse_sqrt_gram_dense(const Eigen::SparseMatrix<double>& a, const Eigen::SparseMatrix<double>& m,
-                                        const Eigen::SparseMatrix<double>& c);
-Eigen::MatrixXd inverse_sqrt_gram_quadrature(const Eigen::SparseMatrix<double>& a,
-                                             const Eigen::SparseMatrix<double>& m,
-                                             const Eigen::SparseMatrix<double>& c, double lambda_max,
-                                             bool split_over_ranks = false);
+/// G_W, dense, symmetric positive definite, shape (n_multiplier_dofs, n_multiplier_dofs).
+Eigen::MatrixXd interpolation_norm_gram_on_reference(const mesh::ContactBoundary& contact,
+                                                     const space::MultiplierSpace& multipliers,
+                                                     const InterpolationReference& reference = {});
 
 /// The Gram matrix of `sub` from that of `envelope`, a multiplier space on the same segments with
 /// degrees at least those of `sub`: the principal submatrix of the modes j ≤ p_C(k) of every
@@ -68,21 +45,37 @@ Eigen::MatrixXd inverse_sqrt_gram_quadrature(const Eigen::SparseMatrix<double>& 
 Eigen::MatrixXd restrict_gram(const Eigen::MatrixXd& envelope_gram, const space::MultiplierSpace& envelope,
                               const space::MultiplierSpace& sub);
 
-/// S_ref: T_h refined uniformly `refinements` times, degree p_T + `extra_degree`.
+/// S_ref: T_h refined uniformly `refinements` times (more where the grading points need it), then
+/// graded geometrically (`layers` layers of ratio `grading`) towards the grading points on Γ_C,
+/// degree p_T + `extra_degree`. u^μ of a piecewise polynomial μ has an r log r singularity at every
+/// jump of μ, so the grading points are the breakpoints of T_{C,H}: on a uniform refinement α
+/// converged like h_ref² (0.3 % … 1.5 % high with one refinement, measured against the kernel
+/// realization of the interpolation norm, which it approaches), on the graded one geometrically.
 struct ExtensionReference {
   int refinements = 1;
+  int layers = 0;
+  double grading = 0.2;
   int extra_degree = 2;
 };
 
+/// The reference of resolution `level` (0, 1, …) of the sequence that error-controlled α walks.
+ExtensionReference extension_reference_at(int level);
+
 /// The extension norm's reference space S_ref with its K + M factorized, trace last: built once
-/// per (T_h, p), it serves every multiplier space on Γ_C.
+/// per (T_h, p, grading points), it serves every multiplier space on Γ_C with those breakpoints.
 class ExtensionReferenceFactor {
  public:
+  /// `grading_points`: arc lengths on Γ_C of `mesh`.
   ExtensionReferenceFactor(const mesh::QuadMesh& mesh, const std::vector<int>& cell_degrees,
-                           const ExtensionReference& reference);
+                           const ExtensionReference& reference, const std::vector<double>& grading_points = {});
   const PrimalOperators& operators() const { return *operators_; }
+  /// Whether S_ref is graded towards every grading point (they are vertices of T_h refined at most
+  /// twice more, with disjoint stars). Without it α converges algebraically, slowly, and the
+  /// difference of two levels no longer bounds the error.
+  bool graded() const { return graded_; }
 
  private:
+  bool graded_ = false;
   std::unique_ptr<mesh::QuadMesh> fine_;
   std::unique_ptr<PrimalOperators> operators_;
 };
@@ -91,9 +84,11 @@ class ExtensionReferenceFactor {
 Eigen::MatrixXd extension_norm_gram(const ExtensionReferenceFactor& reference,
                                     const space::MultiplierSpace& multipliers);
 
-/// The same, building the reference first. `cell_degrees` is the degree distribution on `mesh`.
+/// The same, building the reference first, graded towards the breakpoints of `multipliers`.
+/// `cell_degrees` is the degree distribution on `mesh`. `graded`, if given, receives
+/// ExtensionReferenceFactor::graded().
 Eigen::MatrixXd extension_norm_gram(const mesh::QuadMesh& mesh, const std::vector<int>& cell_degrees,
-                                    const space::MultiplierSpace& multipliers,
-                                    const ExtensionReference& reference = {});
+                                    const space::MultiplierSpace& multipliers, const ExtensionReference& reference,
+                                    bool* graded = nullptr);
 
 }  // namespace hpcontact::norms

@@ -97,6 +97,7 @@ infsup::InfSupSetup infsup_setup_of(const io::Scene& scene, const mesh::QuadMesh
   setup.segment_degrees = std::move(segment_degrees);
   setup.problem = infsup::parse_pairing_problem(problem, scene.file);
   setup.norm = infsup::parse_gram_norm(norm, scene.file);
+  setup.alpha_tolerance = scene.alpha_tolerance;
   if (setup.problem == infsup::PairingProblem::friction) {
     if (scene.friction_bound.empty())
       throw_bad_input(scene.file, "data.s", "(missing)", "the friction pairing (22) needs the friction bound s");

@@ -162,7 +162,9 @@ nlohmann::json run_scene(const io::Scene& given_scene, const SceneRunOptions& op
     const auto setup = infsup_setup_of(scene, d->mesh, d->cell_degrees, *d->boundary_mesh, d->segment_degrees,
                                        scene.problem, scene.norm, primal);
     const auto alpha = infsup::analyse_infsup(setup, infsup::EigenBackend::slepc);
-    summary["infsup"] = {{"alpha", alpha.alpha},         {"lambda_unique", !alpha.singular},
+    summary["infsup"] = {{"alpha", alpha.alpha},         {"alpha_error", alpha.alpha_error},
+                         {"alpha_converged", alpha.alpha_converged}, {"reference_level", alpha.reference_level},
+                         {"lambda_unique", !alpha.singular},
                          {"problem", scene.problem},     {"norm", scene.norm},
                          {"lambda_min", alpha.lambda_min}, {"lambda_max", alpha.lambda_max},
                          {"Pi", alpha.pi},               {"eigensolver", alpha.method},

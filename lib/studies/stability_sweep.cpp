@@ -106,16 +106,8 @@ StabilitySweep read_stability_sweep(const std::string& path) {
   for (const auto& problem : sweep.problems) infsup::parse_pairing_problem(problem, path + ": key 'sweep.problem'");
   sweep.fit_levels = static_cast<int>(table.integer("fit_levels", 2, 20, 3));
   sweep.eigensolver = table.choice("eigensolver", {"slepc", "dense"}, "slepc");
+  sweep.alpha_tolerance = table.number_in("alpha_tol", 1e-12, 0.1, 1e-4);
   table.reject_unknown_keys();
-  const auto reference = root.table("reference");
-  sweep.interpolation_reference.subdivisions =
-      static_cast<int>(reference.integer("interp_subdivisions", 1, 64, 2));
-  sweep.interpolation_reference.degree = static_cast<int>(reference.integer("interp_degree", 0, 40, 0));
-  sweep.extension_reference.refinements =
-      static_cast<int>(reference.integer("extension_refinements", 0, 4, 1));
-  sweep.extension_reference.extra_degree =
-      static_cast<int>(reference.integer("extension_extra_degree", 0, 10, 2));
-  reference.reject_unknown_keys();
   root.reject_unknown_keys();
 
   // Every level's meshes, degrees and data, checked now: a sweep does not stop half-way on input.
@@ -160,8 +152,8 @@ StabilitySweep read_stability_sweep(const std::string& path) {
 }
 
 std::vector<std::string> alpha_columns() {
-  return {"problem", "norm", "p", "pC", "level", "n", "m", "h", "h_min", "H", "ratio", "Pi", "alpha", "ndofs",
-          "nmult", "seconds"};
+  return {"problem", "norm", "p", "pC", "level", "n", "m", "h", "h_min", "H", "ratio", "Pi", "alpha", "alpha_error",
+          "ndofs", "nmult", "seconds"};
 }
 
 namespace {
@@ -352,18 +344,18 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
     for (std::size_t i : todo) groups[i].owner = by_levels <= by_groups ? level_owner[points[groups[i].first].level] : group_owner[i];
   }
   std::vector<std::pair<int, std::string>> new_rows;  // (point index, CSV line), parallel runs
-  // What the points of the current level share: the extension norm's reference, and per (norm,
-  // ratio) the Gram matrix of the envelope multiplier space, whose degree on each segment is the
-  // largest of the sweep's p_C there: every point's G is a principal submatrix of it
-  // (norms::restrict_gram), so one Gram matrix serves all p_C.
+  // What the points of the current level share: per (norm, ratio) the Gram ladder of the envelope
+  // multiplier space, whose degree on each segment is the largest of the sweep's p_C there: every
+  // point's G is a principal submatrix of it (norms::restrict_gram), so one Gram matrix per
+  // reference level serves all p_C (and, for the extension norm, one reference at the sweep's
+  // largest p serves all p).
   struct EnvelopeGram {
     std::unique_ptr<mesh::BoundaryMesh> boundary;
     std::unique_ptr<space::MultiplierSpace> multipliers;
-    Eigen::MatrixXd gram;
+    std::unique_ptr<norms::GramLadder> ladder;
   };
   struct LevelShared {
     std::size_t level = 0;
-    std::unique_ptr<norms::ExtensionReferenceFactor> extension;
     std::map<std::pair<std::string, std::size_t>, EnvelopeGram> grams;
   } shared;
   const int largest_p = sweep.degrees.empty() ? 0 : *std::max_element(sweep.degrees.begin(), sweep.degrees.end());
@@ -375,17 +367,12 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
       continue;
     }
     const std::size_t level = points[first].level;
-    if (level != shared.level) shared = LevelShared{level, {}, {}};  // the last level's are not needed again
+    if (level != shared.level) shared = LevelShared{level, {}};  // the last level's are not needed again
     const io::Scene level_scene = point_scene(sweep.levels[level].scene, points[first].p, -1, "");
     const auto mesh = io::build_scene_mesh(level_scene);
     const mesh::ContactBoundary contact(mesh);
     const std::vector<int> cell_degrees = io::scene_cell_degrees(level_scene, mesh);
     const norms::PrimalOperators primal(mesh, cell_degrees);
-    if (g.extension && !shared.extension) {
-      const auto reference_scene = point_scene(level_scene, largest_p, -1, "");
-      shared.extension = std::make_unique<norms::ExtensionReferenceFactor>(
-          mesh, io::scene_cell_degrees(reference_scene, mesh), sweep.extension_reference);
-    }
     for (std::size_t k = first; k < last; ++k) {
       const Point& point = points[k];
       ++index;
@@ -399,8 +386,7 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
       const auto boundary = io::build_scene_boundary_mesh(scene, contact);
       auto setup = infsup_setup_of(scene, mesh, cell_degrees, boundary, io::scene_segment_degrees(scene, contact, boundary),
                                    point.problem, point.norm, primal);
-      setup.interpolation_reference = sweep.interpolation_reference;
-      setup.extension_reference = sweep.extension_reference;
+      setup.alpha_tolerance = sweep.alpha_tolerance;
       auto& envelope = shared.grams[{point.norm, point.ratio}];
       if (!envelope.multipliers) {
         envelope.boundary = std::make_unique<mesh::BoundaryMesh>(boundary);
@@ -410,14 +396,16 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
           for (std::size_t k = 0; k < degrees.size(); ++k) degrees[k] = std::max(degrees[k], at_pc[k]);
         }
         envelope.multipliers = std::make_unique<space::MultiplierSpace>(*envelope.boundary, std::move(degrees));
-        envelope.gram = setup.norm == infsup::GramNorm::interpolation
-                            ? norms::interpolation_norm_gram(primal.contact(), *envelope.multipliers,
-                                                             sweep.interpolation_reference)
-                            : norms::extension_norm_gram(*shared.extension, *envelope.multipliers);
+        envelope.ladder = std::make_unique<norms::GramLadder>(
+            setup.norm == infsup::GramNorm::interpolation
+                ? norms::interpolation_gram_ladder(*envelope.multipliers)
+                : norms::extension_gram_ladder(
+                      mesh, io::scene_cell_degrees(point_scene(level_scene, largest_p, -1, ""), mesh),
+                      *envelope.multipliers));
       }
-      const Eigen::MatrixXd gram = norms::restrict_gram(
-          envelope.gram, *envelope.multipliers, space::MultiplierSpace(boundary, setup.segment_degrees));
-      setup.gram = &gram;
+      const norms::GramLadder grams = norms::restricted_ladder(
+          *envelope.ladder, *envelope.multipliers, space::MultiplierSpace(boundary, setup.segment_degrees));
+      setup.grams = &grams;
       const auto result = infsup::analyse_infsup(setup, backend);
       const double ratio = ratios[point.ratio].empty() ? static_cast<double>(point.m) / sweep.level_facts[level].contact_edges
                                                        : parse_ratio(ratios[point.ratio], sweep.file);
@@ -425,7 +413,7 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
       row.add_row({point.problem, point.norm, static_cast<long long>(point.reported_p),
                    static_cast<long long>(point.reported_pc), static_cast<long long>(level + 1),
                    static_cast<long long>(sweep.level_facts[level].contact_edges), static_cast<long long>(point.m),
-                   result.h, sweep.level_facts[level].contact_h_min, result.H, ratio, result.pi, result.alpha, static_cast<long long>(result.n_primal_dofs),
+                   result.h, sweep.level_facts[level].contact_h_min, result.H, ratio, result.pi, result.alpha, result.alpha_error, static_cast<long long>(result.n_primal_dofs),
                    static_cast<long long>(result.n_multiplier_dofs), result.seconds});
       const std::string text = row.to_string();
       if (size == 1) content += text.substr(text.find('\n') + 1);

@@ -20,8 +20,7 @@ namespace hpcontact::studies {
 ///           p, pC (integers, lists or "a..b"; absent: the scene's degree or rule),
 ///           pc_rule ("below_p" | "all"), ratio (h/H: numbers or fractions "2/3"; absent: the
 ///           scene's contact mesh), norm, problem (absent: the scene's [infsup] norm, problem),
-///           fit_levels, eigensolver ("slepc" | "dense")
-///   [reference] interp_subdivisions, interp_degree, extension_refinements, extension_extra_degree
+///           fit_levels, eigensolver ("slepc" | "dense"), alpha_tol (relative error of every α)
 struct StabilitySweep {
   std::string file;
   std::vector<io::SceneVariant> levels;  ///< the base scene at each level, coarsest first
@@ -41,8 +40,7 @@ struct StabilitySweep {
   std::vector<std::string> norms, problems;
   int fit_levels = 3;
   std::string eigensolver = "slepc";
-  norms::InterpolationReference interpolation_reference;
-  norms::ExtensionReference extension_reference;
+  double alpha_tolerance = 1e-4;
 };
 
 /// Reads the file and checks every level's scene, contact mesh (n_C · ratio whole for every
