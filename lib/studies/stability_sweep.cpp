@@ -108,6 +108,9 @@ StabilitySweep read_stability_sweep(const std::string& path) {
   sweep.eigensolver = table.choice("eigensolver", {"slepc", "dense"}, "slepc");
   sweep.alpha_tolerance = table.number_in("alpha_tol", 1e-12, 0.1, 1e-4);
   table.reject_unknown_keys();
+  if (root.has("reference"))
+    throw_bad_input(path, "reference", "(table)",
+                    "no longer read: the H^{-1/2} references are refined until alpha_error is below [sweep] alpha_tol");
   root.reject_unknown_keys();
 
   // Every level's meshes, degrees and data, checked now: a sweep does not stop half-way on input.
