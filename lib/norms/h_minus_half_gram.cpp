@@ -100,7 +100,9 @@ Eigen::MatrixXd restrict_gram(const Eigen::MatrixXd& envelope_gram, const space:
 }
 
 ExtensionReference extension_reference_at(int level) {
-  return {.refinements = 1, .layers = 2 + 2 * level, .grading = 0.2, .extra_degree = 2 + level};
+  // No refinement unless the grading needs it (breakpoints one edge apart, or inside edges): the
+  // references of h/H ≤ 1/2 on T_h itself cost a quarter, at the same accuracy (α within 2e-5).
+  return {.refinements = 0, .layers = 2 + 2 * level, .grading = 0.2, .extra_degree = 2 + level};
 }
 
 namespace {
