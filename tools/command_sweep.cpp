@@ -5,13 +5,16 @@
 #include <mpi.h>
 
 #include <filesystem>
+#include <memory>
 
 #include "commands.hpp"
 #include "progress_bar.hpp"
 #include "core/petsc_session.hpp"
+#include "core/rank_agreement.hpp"
 #include "core/timer.hpp"
 #include "io/atomic_file.hpp"
 #include "studies/stability_sweep.hpp"
+#include "studies/sweep_rows.hpp"
 
 namespace hpcontact::tools {
 
@@ -34,8 +37,16 @@ void add_sweep_command(CLI::App& app, CommandAction& action) {
       io::ensure_writable_directory(*out_dir);
       const auto alpha_csv = std::filesystem::path(*out_dir) / "alpha.csv";
       const auto [rank, size] = mpi_rank_and_size();
-      if (*restart && rank == 0) std::filesystem::remove(alpha_csv);
-      if (*restart && size > 1) MPI_Barrier(MPI_COMM_WORLD);  // no rank reads the old file
+      // One sweep per folder at a time (rank 0 holds the lock until the process ends).
+      std::unique_ptr<studies::FolderLock> lock;
+      run_on_all_ranks_agreeing([&] {
+        if (rank != 0) return;
+        lock = std::make_unique<studies::FolderLock>(*out_dir);
+        if (*restart) {
+          std::filesystem::remove(alpha_csv);
+          for (const auto& shard : studies::existing_shards(alpha_csv)) std::filesystem::remove(shard);
+        }
+      });  // no rank reads the old files before they are gone
       // 2. Run, with a progress line on stderr when it is a terminal (rank 0 only under mpirun).
       Stopwatch clock;
       const auto bar = progress_bar(rank == 0);

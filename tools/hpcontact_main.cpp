@@ -1,16 +1,36 @@
 // hpcontact: the command-line tool. Splits PETSc/SLEPc options off the command line, initializes
-// SLEPc once, runs one subcommand and maps errors to exit codes (2 bad input, 3 numerical failure).
+// SLEPc once, runs one subcommand and maps errors to exit codes: 0 ok, 2 bad input, 3 numerical
+// failure, 4 I/O failure, 130 interrupted (SIGINT, SIGTERM), 1 a bug.
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <memory>
 
 #include "commands.hpp"
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "core/petsc_session.hpp"
+#include "core/rank_agreement.hpp"
+
+namespace {
+
+// The message for an exit code, printed once: by every rank for a failure of its own, by rank 0
+// alone for one that all ranks agreed on.
+int report(const std::exception& error) {
+  using namespace hpcontact;
+  const int code = exit_code_of(error);
+  if (failure_agreed() && mpi_rank_and_size().first != 0) return code;
+  const char* kind = code == 2 ? "error" : code == 3 ? "numerical failure" : code == 4 ? "I/O failure" : "internal error";
+  fmt::print(stderr, "hpcontact: {}: {}\n", kind, error.what());
+  return code;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace hpcontact;
+  install_interrupt_handlers();
   // 1. Separate PETSc/SLEPc options (-eps_type arpack, ...) from our own arguments.
   const SplitCommandLine command_line = split_petsc_options(argc, argv);
 
@@ -38,18 +58,20 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : 2;
   }
 
-  // 4. Run with PETSc/SLEPc initialized once for the whole process.
+  // 4. Run with PETSc/SLEPc initialized once for the whole process; a failure is reported while
+  // MPI is still up (finalizing first could leave the message unprinted).
+  std::unique_ptr<PetscSession> session;
   try {
-    PetscSession session(command_line.petsc);
-    return action();
-  } catch (const InputError& error) {
-    fmt::print(stderr, "hpcontact: error: {}\n", error.what());
-    return 2;
-  } catch (const NumericalError& error) {
-    fmt::print(stderr, "hpcontact: numerical failure: {}\n", error.what());
-    return 3;
+    session = std::make_unique<PetscSession>(command_line.petsc);
   } catch (const std::exception& error) {
-    fmt::print(stderr, "hpcontact: internal error: {}\n", error.what());
-    return 1;
+    return report(error);
   }
+  int code = 0;
+  try {
+    code = action();
+  } catch (const std::exception& error) {
+    code = report(error);
+  }
+  session.reset();
+  return code;
 }

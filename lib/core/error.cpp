@@ -1,5 +1,8 @@
-// Message helpers for InputError.
+// Message helpers for InputError and IoError; exit codes.
 #include "core/error.hpp"
+
+#include <cerrno>
+#include <cstring>
 
 namespace hpcontact {
 
@@ -13,6 +16,18 @@ std::string describe_bad_input(const std::string& where, const std::string& key,
 void throw_bad_input(const std::string& where, const std::string& key, const std::string& value,
                      const std::string& allowed) {
   throw InputError(describe_bad_input(where, key, value, allowed));
+}
+
+std::string describe_io_failure(const std::string& what, const std::string& path) {
+  const int error = errno;
+  return what + " '" + path + "': " + (error != 0 ? std::strerror(error) : "unknown reason");
+}
+
+int exit_code_of(const std::exception& error) {
+  if (dynamic_cast<const InputError*>(&error)) return 2;
+  if (dynamic_cast<const NumericalError*>(&error)) return 3;
+  if (dynamic_cast<const IoError*>(&error)) return 4;
+  return 1;
 }
 
 }  // namespace hpcontact

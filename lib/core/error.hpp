@@ -1,5 +1,5 @@
-// Exception types of hpcontact: bad user input versus numerical failure, so that the command line
-// can map them to distinct exit codes (2 for input, 3 for numerics).
+// Exception types of hpcontact, one per exit code of the command line: 2 bad input, 3 numerical
+// failure, 4 I/O failure (1 is left for bugs, 130 for an interrupt).
 #pragma once
 
 #include <stdexcept>
@@ -19,6 +19,19 @@ class NumericalError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+/// An I/O failure on a path the input was right to name (disk full, file size limit, a folder
+/// removed under a run). The message names the path and the system's reason.
+class IoError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// "<what> '<path>': <strerror(errno)>" for the current errno.
+std::string describe_io_failure(const std::string& what, const std::string& path);
+
+/// The exit code of the command line for an exception: 2, 3, 4, or 1 (a bug).
+int exit_code_of(const std::exception& error);
 
 /// Builds the standard message "<where>: key '<key>' = <value>: <allowed>".
 std::string describe_bad_input(const std::string& where, const std::string& key,

@@ -1,11 +1,16 @@
-// AtomicFile: temporary name + rename (atomic on POSIX within one file system).
+// AtomicFile: temporary name + fsync + rename (atomic on POSIX within one file system) + fsync of
+// the folder.
 #include "io/atomic_file.hpp"
 
+#include <fcntl.h>
 #include <unistd.h>
+
+#include <cerrno>
 
 #include <system_error>
 
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 
 namespace hpcontact::io {
 
@@ -32,13 +37,27 @@ void check_output_directory(const std::filesystem::path& directory) {
                      "' is not writable");
 }
 
+void sync_to_disk(const std::filesystem::path& path) {
+  errno = 0;
+  const int fd = open(path.c_str(), O_RDONLY);
+  if (fd < 0) throw IoError(describe_io_failure("cannot open for syncing", path.string()));
+  const bool synced = fsync(fd) == 0;
+  const std::string reason = synced ? "" : describe_io_failure("cannot sync to disk", path.string());
+  close(fd);
+  if (!synced) throw IoError(reason);
+}
+
 AtomicFile::AtomicFile(std::filesystem::path path) : path_(std::move(path)) {
   temporary_ = path_;
   temporary_ += ".tmp-" + std::to_string(getpid());
+  interrupt_slot_ = register_file_in_progress(temporary_.string());
+  errno = 0;
   stream_.open(temporary_, std::ios::out | std::ios::trunc);
-  if (!stream_)
-    throw InputError("cannot write output file '" + path_.string() +
-                     "' (is the folder writable?)");
+  if (!stream_) {
+    const std::string reason = describe_io_failure("cannot write output file", path_.string());
+    release_file_in_progress(interrupt_slot_);
+    throw IoError(reason);
+  }
 }
 
 AtomicFile::~AtomicFile() {
@@ -46,18 +65,23 @@ AtomicFile::~AtomicFile() {
   stream_.close();
   std::error_code ignored;
   std::filesystem::remove(temporary_, ignored);
+  release_file_in_progress(interrupt_slot_);
 }
 
 void AtomicFile::commit() {
+  // errno still holds the reason of a write that failed earlier (buffered writes of the caller).
   stream_.flush();
   const bool good = static_cast<bool>(stream_);
+  const std::string reason = describe_io_failure("writing output file", path_.string());
   stream_.close();
-  if (!good) throw InputError("writing output file '" + path_.string() + "' failed");
+  if (!good) throw IoError(reason + " failed");
+  sync_to_disk(temporary_);
   std::error_code error;
   std::filesystem::rename(temporary_, path_, error);
-  if (error)
-    throw InputError("cannot move output into '" + path_.string() + "': " + error.message());
+  if (error) throw IoError("cannot move output into '" + path_.string() + "': " + error.message());
   committed_ = true;
+  release_file_in_progress(interrupt_slot_);
+  sync_to_disk(std::filesystem::absolute(path_).parent_path());
 }
 
 void write_file_atomically(const std::filesystem::path& path, const std::string& content) {

@@ -1,5 +1,6 @@
-// Output files written under a temporary name and renamed on success, so that a failed run
-// never leaves a half-written file behind.
+// Output files written under a temporary name, synced to disk and renamed on success (and the
+// folder synced), so that neither a failed run nor a power loss leaves a half-written or empty
+// file behind; an interrupt (core/interrupt.hpp) removes the temporary file.
 #pragma once
 
 #include <filesystem>
@@ -19,7 +20,7 @@ void ensure_writable_directory(const std::filesystem::path& directory);
 
 class AtomicFile {
  public:
-  /// Opens "<path>.tmp-<pid>" for writing. @throws InputError if it cannot be created.
+  /// Opens "<path>.tmp-<pid>" for writing. @throws IoError if it cannot be created.
   explicit AtomicFile(std::filesystem::path path);
   /// Removes the temporary file unless commit() succeeded.
   ~AtomicFile();
@@ -27,7 +28,8 @@ class AtomicFile {
   AtomicFile& operator=(const AtomicFile&) = delete;
 
   std::ofstream& stream() { return stream_; }
-  /// Flushes, closes and renames onto the final path. @throws InputError on I/O failure.
+  /// Flushes, syncs, closes and renames onto the final path, then syncs the folder.
+  /// @throws IoError (path and the system's reason) on failure; the temporary file is removed.
   void commit();
 
  private:
@@ -35,7 +37,11 @@ class AtomicFile {
   std::filesystem::path temporary_;
   std::ofstream stream_;
   bool committed_ = false;
+  int interrupt_slot_ = -1;
 };
+
+/// fsync of an existing file or folder. @throws IoError naming it.
+void sync_to_disk(const std::filesystem::path& path);
 
 /// Writes `content` to `path` atomically.
 void write_file_atomically(const std::filesystem::path& path, const std::string& content);

@@ -16,11 +16,13 @@
 
 #include "core/error.hpp"
 #include "core/petsc_session.hpp"
+#include "core/rank_agreement.hpp"
 #include "io/atomic_file.hpp"
 #include "io/toml_reader.hpp"
 #include "mesh/boundary_mesh.hpp"
 #include "mesh/contact_boundary.hpp"
 #include "studies/scene_discretization.hpp"
+#include "studies/sweep_rows.hpp"
 #include "norms/h_minus_half_gram.hpp"
 #include "norms/primal_operators.hpp"
 #include "space/multiplier_space.hpp"
@@ -207,29 +209,10 @@ std::vector<std::pair<int, std::string>> gather_rows_on_rank_zero(const std::vec
   return out;
 }
 
-// Identifies a point for resuming: the ratio is compared through m, degrees as reported.
-std::string point_key(const std::string& problem, const std::string& norm, int p, int pc, int level, long m) {
-  return fmt::format("{}/{}/{}/{}/{}/{}", problem, norm, p, pc, level, m);
-}
-
 }  // namespace
 
 void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::path& alpha_csv,
                          const std::function<void(int, int, const std::string&)>& progress) {
-  std::set<std::string> done;
-  std::string content = io::CsvTable(alpha_columns()).to_string();
-  for (const auto& row : read_csv(alpha_csv)) {
-    done.insert(point_key(row.at("problem"), row.at("norm"), std::stoi(row.at("p")), std::stoi(row.at("pC")),
-                          std::stoi(row.at("level")), std::stol(row.at("m"))));
-  }
-  if (std::filesystem::exists(alpha_csv)) {
-    std::ifstream in(alpha_csv);
-    std::stringstream existing;
-    existing << in.rdbuf();
-    content = existing.str();
-    if (!content.empty() && content.back() != '\n') content += '\n';
-  }
-
   // A point: a level, the sweep's p and p_C (0 and -1: the scene's), a ratio index into
   // `ratios` (the scene's contact mesh when the sweep gives none), a problem and a norm.
   const std::vector<std::string> ratios = sweep.ratios.empty() ? std::vector<std::string>{""} : sweep.ratios;
@@ -266,7 +249,25 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
   auto key_of = [&](const Point& point) {
     return point_key(point.problem, point.norm, point.reported_p, point.reported_pc, static_cast<int>(point.level) + 1,
                      point.m);
+  };  // Rows stored by an earlier run (alpha.csv and the shards of an interrupted mpirun), validated:
+  // bad or foreign rows are computed again. The file is always written in the order of `points`.
+  const auto [rank, size] = mpi_rank_and_size();
+  std::map<std::string, std::size_t> index_of_key;
+  for (std::size_t k = 0; k < points.size(); ++k) index_of_key[key_of(points[k])] = k;
+  std::set<std::string> keys;
+  for (const auto& [key, index] : index_of_key) keys.insert(key);
+  std::map<std::string, std::string> stored = read_stored_rows(alpha_csv, keys, rank == 0);
+  std::set<std::string> done;
+  for (const auto& [key, line] : stored) done.insert(key);
+  auto ordered_content = [&] {
+    std::vector<std::pair<std::size_t, const std::string*>> lines;
+    for (const auto& [key, line] : stored) lines.emplace_back(index_of_key.at(key), &line);
+    std::sort(lines.begin(), lines.end());
+    std::string content = io::CsvTable(alpha_columns()).to_string();
+    for (const auto& [index, line] : lines) content += *line;
+    return content;
   };
+
   // Groups of points sharing (level, p), with what is left to do in each and a cost estimate: the
   // factorizations grow like (dofs)^1.2 (dofs ~ cells p²), each point adds a little. What a level
   // shares (the extension norm's reference, ~ 4 cells (p + 2)² dofs, and the Gram matrices) is
@@ -302,7 +303,6 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
   // finish it first, counting the level's shared work on a rank that has no group of the level
   // yet (balances better when there are fewer levels than ranks). Rank 0 gathers the rows and
   // writes them in the serial order, so the file is the same as a serial run's.
-  const auto [rank, size] = mpi_rank_and_size();
   {
     auto longest_first = [](std::vector<std::size_t> order, auto cost) {
       std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cost(a) > cost(b); });
@@ -363,8 +363,11 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
   } shared;
   const int largest_p = sweep.degrees.empty() ? 0 : *std::max_element(sweep.degrees.begin(), sweep.degrees.end());
   int index = 0;
+  // A failure on one rank (bad data at a level, a full disk) ends the run on every rank.
+  run_on_all_ranks_agreeing([&] {
   for (const Group& g : groups) {
     const std::size_t first = g.first, last = g.last;
+    std::string group_lines;
     if (!g.todo || g.owner != rank) {
       index += static_cast<int>(last - first);
       continue;
@@ -419,21 +422,28 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
                    result.h, sweep.level_facts[level].contact_h_min, result.H, ratio, result.pi, result.alpha, result.alpha_error, static_cast<long long>(result.n_primal_dofs),
                    static_cast<long long>(result.n_multiplier_dofs), result.seconds});
       const std::string text = row.to_string();
-      if (size == 1) content += text.substr(text.find('\n') + 1);
-      else new_rows.emplace_back(index, text.substr(text.find('\n') + 1));
+      const std::string line = text.substr(text.find('\n') + 1);
+      stored[key] = line;
+      group_lines += line;
+      if (size > 1) new_rows.emplace_back(static_cast<int>(index_of_key.at(key)), line);
       done.insert(key);
     }
-    // Saved once per group: an interrupted sweep resumes from the last finished (level, p).
-    if (size == 1) io::write_file_atomically(alpha_csv, content);
+    // Saved once per group, durably: an interrupted sweep resumes from the last finished (level, p).
+    if (size == 1) io::write_file_atomically(alpha_csv, ordered_content());
+    else if (!group_lines.empty()) append_durably(shard_path(alpha_csv, rank), group_lines);
   }
-  if (size > 1) {
-    const auto all = gather_rows_on_rank_zero(new_rows);
-    if (rank == 0) {
-      for (const auto& [point_index, line] : all) content += line;
-      io::write_file_atomically(alpha_csv, content);
+  });
+  // Every rank's rows into alpha.csv (rank 0), and the shards removed once it is complete.
+  run_on_all_ranks_agreeing([&] {
+    if (size > 1) {
+      for (const auto& [point_index, line] : gather_rows_on_rank_zero(new_rows))
+        stored[key_of(points[static_cast<std::size_t>(point_index)])] = line;
     }
-    MPI_Barrier(MPI_COMM_WORLD);  // alpha.csv is complete before any rank goes on
-  }
+    if (rank == 0) {
+      io::write_file_atomically(alpha_csv, ordered_content());
+      for (const auto& shard : existing_shards(alpha_csv)) std::filesystem::remove(shard);
+    }
+  });
 }
 
 io::CsvTable fit_verdicts(const std::filesystem::path& alpha_csv, int fit_levels) {

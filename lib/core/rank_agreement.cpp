@@ -1,0 +1,56 @@
+// run_on_all_ranks_agreeing: a MAX reduction of the exit codes, then the lowest failing rank's
+// message broadcast to all.
+#include "core/rank_agreement.hpp"
+
+#include <mpi.h>
+
+#include <exception>
+#include <stdexcept>
+#include <string>
+
+#include "core/error.hpp"
+#include "core/petsc_session.hpp"
+
+namespace hpcontact {
+namespace {
+bool agreed = false;
+}  // namespace
+
+bool failure_agreed() { return agreed; }
+
+void run_on_all_ranks_agreeing(const std::function<void()>& work) {
+  const auto [rank, size] = mpi_rank_and_size();
+  if (size == 1) {
+    work();
+    return;
+  }
+  int code = 0;
+  std::string message;
+  try {
+    work();
+  } catch (const std::exception& error) {
+    code = exit_code_of(error);
+    message = error.what();
+  }
+  int worst = 0;
+  MPI_Allreduce(&code, &worst, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  if (worst == 0) return;
+  const int candidate = code != 0 ? rank : size;
+  int first = size;
+  MPI_Allreduce(&candidate, &first, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
+  int shared_code = code, length = static_cast<int>(message.size());
+  MPI_Bcast(&shared_code, 1, MPI_INT, first, MPI_COMM_WORLD);
+  MPI_Bcast(&length, 1, MPI_INT, first, MPI_COMM_WORLD);
+  message.resize(static_cast<std::size_t>(length));
+  MPI_Bcast(message.data(), length, MPI_CHAR, first, MPI_COMM_WORLD);
+  if (first != 0) message = "on rank " + std::to_string(first) + ": " + message;
+  agreed = true;
+  switch (shared_code) {
+    case 2: throw InputError(message);
+    case 3: throw NumericalError(message);
+    case 4: throw IoError(message);
+    default: throw std::runtime_error(message);
+  }
+}
+
+}  // namespace hpcontact

@@ -1,0 +1,19 @@
+// Failures under mpirun reach every rank: a rank that throws while the others wait in a collective
+// call would hang the run. Work wrapped here ends the same way on every rank.
+#pragma once
+
+#include <functional>
+
+namespace hpcontact {
+
+/// Runs `work`; if it throws on any rank, every rank throws an exception of the same type (input,
+/// numerical, I/O, or other) with the message of the lowest failing rank ("on rank r: ..." when
+/// that is not rank 0). Collective under mpirun: every rank must call it with its share of the
+/// work. On one rank it only runs `work`.
+void run_on_all_ranks_agreeing(const std::function<void()>& work);
+
+/// Whether the last failure thrown by run_on_all_ranks_agreeing was agreed on by all ranks, so that
+/// rank 0 alone reports it.
+bool failure_agreed();
+
+}  // namespace hpcontact

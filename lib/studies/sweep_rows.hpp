@@ -1,0 +1,45 @@
+// The rows of a sweep's alpha.csv as they are stored between runs: read back with validation when
+// a sweep resumes, and appended durably, group by group, to one shard per MPI rank
+// ("alpha.csv.rank<r>") so that an interrupted run keeps every finished group.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace hpcontact::studies {
+
+/// Identifies a point for resuming: the ratio through m, degrees as reported.
+std::string point_key(const std::string& problem, const std::string& norm, int p, int pc, int level, long m);
+
+/// The rows stored for a sweep, key → CSV line (ending in '\n'), from alpha.csv and every shard
+/// beside it. A row is kept only if it has every column, every numeric column parses completely,
+/// and its key is one of `keys` (a point of the study); the others are dropped with one warning on
+/// stderr naming the file and line, so that they are computed again.
+/// @throws InputError if alpha.csv has other columns (another program's or version's file).
+std::map<std::string, std::string> read_stored_rows(const std::filesystem::path& alpha_csv,
+                                                    const std::set<std::string>& keys, bool warn);
+
+/// The shard of `rank` beside alpha.csv, and all shards present (of any earlier run).
+std::filesystem::path shard_path(const std::filesystem::path& alpha_csv, int rank);
+std::vector<std::filesystem::path> existing_shards(const std::filesystem::path& alpha_csv);
+
+/// Appends `lines` to `file` and syncs it to disk. @throws IoError naming the file.
+void append_durably(const std::filesystem::path& file, const std::string& lines);
+
+/// Holds an exclusive lock on `folder`/.sweep.lock for the life of the object (released when the
+/// process ends, however it ends). @throws InputError naming the process that holds it.
+class FolderLock {
+ public:
+  explicit FolderLock(const std::filesystem::path& folder);
+  ~FolderLock();
+  FolderLock(const FolderLock&) = delete;
+  FolderLock& operator=(const FolderLock&) = delete;
+
+ private:
+  int fd_ = -1;
+};
+
+}  // namespace hpcontact::studies

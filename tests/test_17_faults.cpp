@@ -1,0 +1,174 @@
+// Stage 17, faults: a full disk, an interrupt, a torn or foreign alpha.csv, two sweeps on one
+// folder, a rank that fails under mpirun. Each ends with the documented exit code (4 I/O, 130
+// interrupted, 2 bad input) and message, within seconds, and leaves nothing half-written.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/mount.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "cli_runner.hpp"
+#include "studies/sweep_rows.hpp"
+
+namespace {
+
+using hpcontact::testing::run;
+using hpcontact::testing::run_command;
+using hpcontact::testing::scratch;
+
+const std::string kMpi = "env OPENBLAS_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ";
+
+// A 16 KiB tmpfs: a disk that fills up. Unmounted by the destructor.
+struct SmallDisk {
+  std::filesystem::path path;
+  bool mounted = false;
+  explicit SmallDisk(const std::string& name) : path(scratch("small_disk_" + name)) {
+    mounted = mount("tmpfs", path.c_str(), "tmpfs", 0, "size=16k") == 0;
+  }
+  ~SmallDisk() {
+    if (mounted) umount(path.c_str());
+  }
+};
+
+bool has_temporary_files(const std::filesystem::path& folder) {
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(folder))
+    if (entry.path().filename().string().find(".tmp-") != std::string::npos) return true;
+  return false;
+}
+
+// A sweep of the §7 square on three levels, small enough for a second, big enough for 16 KiB; or
+// a longer one (about ten seconds) to be stopped on the way.
+std::filesystem::path write_sweep(const std::filesystem::path& dir, bool long_running = false) {
+  std::filesystem::copy_file(HPCONTACT_SOURCE_DIR "/studies/stability/square.toml", dir / "square.toml",
+                             std::filesystem::copy_options::overwrite_existing);
+  std::ofstream(dir / "sweep.toml")
+      << "[sweep]\nscene = \"square.toml\"\n"
+      << (long_running ? "p = \"1..5\"\npC = \"0..4\"\nnorm = [\"interp\", \"extension\"]\n"
+                         "levels = { \"domain.n_x\" = [8, 16, 24, 32], \"domain.n_y\" = [8, 16, 24, 32] }\n"
+                       : "p = \"1..3\"\npC = \"0..2\"\n"
+                         "levels = { \"domain.n_x\" = [4, 8, 16], \"domain.n_y\" = [4, 8, 16] }\n")
+      << "ratio = [1, \"1/2\"]\nproblem = [\"signorini\", \"friction\"]\n";
+  return dir / "sweep.toml";
+}
+
+std::string without_seconds(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::string text, line;
+  while (std::getline(in, line)) text += line.substr(0, line.rfind(',')) + "\n";
+  return text;
+}
+
+}  // namespace
+
+// Disk full while writing: exit 4 naming the file and the reason, no temporary file left.
+TEST(Faults, FullDiskIsAnIoFailure) {
+  SmallDisk disk("infsup");
+  if (!disk.mounted) GTEST_SKIP() << "cannot mount a tmpfs here (needs root)";
+  const auto result = run("infsup --p 2 --pc 1 --n 64 --mode " + (disk.path / "mode.csv").string());
+  EXPECT_EQ(result.exit_code, 4) << result.output;
+  EXPECT_NE(result.output.find("No space left on device"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find((disk.path / "mode.csv").string()), std::string::npos) << result.output;
+  EXPECT_FALSE(has_temporary_files(disk.path));
+  EXPECT_FALSE(std::filesystem::exists(disk.path / "mode.csv"));
+}
+
+// Under mpirun, rank 0 cannot write (a full disk): every rank ends with exit 4 and the message is
+// printed once, instead of the other ranks waiting forever in a collective call.
+TEST(Faults, FullDiskUnderMpirunEndsEveryRank) {
+  SmallDisk disk("mpirun");
+  if (!disk.mounted) GTEST_SKIP() << "cannot mount a tmpfs here (needs root)";
+  const auto dir = scratch("faults_mpi_disk");
+  const auto start = std::chrono::steady_clock::now();
+  const auto result = run_command(kMpi + "timeout 120 mpirun -n 2 --oversubscribe " HPCONTACT_CLI " sweep " +
+                                  write_sweep(dir).string() + " --out " + (disk.path / "sweep").string());
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_EQ(result.exit_code, 4) << result.output;
+  EXPECT_LT(seconds, 60.0);
+  const auto first = result.output.find("hpcontact: I/O failure");
+  ASSERT_NE(first, std::string::npos) << result.output;
+  EXPECT_EQ(result.output.find("hpcontact: I/O failure", first + 1), std::string::npos) << result.output;
+  EXPECT_FALSE(has_temporary_files(disk.path));
+}
+
+// SIGINT during a run: exit 130 and no temporary file (finished files are whole).
+TEST(Faults, InterruptExitsWith130AndLeavesNoTemporaryFile) {
+  const auto dir = scratch("faults_interrupt");
+  const auto pid_file = dir / "pid";
+  // The shell execs hpcontact in the background, records its pid, interrupts it after a moment.
+  const auto result = run_command("sh -c '" HPCONTACT_CLI " sweep " + write_sweep(dir, true).string() + " --out " +
+                                  (dir / "out").string() + " & echo $! > " + pid_file.string() +
+                                  "; sleep 2; kill -INT $!; wait $!; echo exit=$?'");
+  EXPECT_NE(result.output.find("exit=130"), std::string::npos) << result.output;
+  EXPECT_FALSE(has_temporary_files(dir / "out"));
+}
+
+// A torn last row, a row with a missing column and a number cut short are computed again, with a
+// warning naming them; the result equals a fresh run. A row of another study is dropped.
+TEST(Faults, ResumeRecomputesTornAndIncompleteRows) {
+  const auto dir = scratch("faults_resume");
+  const auto sweep = write_sweep(dir);
+  ASSERT_EQ(run("sweep " + sweep.string() + " --out " + (dir / "fresh").string()).exit_code, 0);
+  std::ifstream in(dir / "fresh" / "alpha.csv");
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  ASSERT_GT(lines.size(), 10u);
+  std::filesystem::create_directories(dir / "damaged");
+  {
+    std::ofstream out(dir / "damaged" / "alpha.csv");
+    for (std::size_t k = 0; k + 1 < lines.size(); ++k) {
+      std::string line = lines[k];
+      if (k == 3) line = line.substr(0, line.find(",", line.find(",") + 1));  // most columns missing
+      if (k == 5) line.replace(line.find("signorini"), 9, "Signorini");       // not a point of the study
+      if (k == 7) line.insert(line.find(',', line.find("0.") ), "x");         // a number that does not parse
+      out << line << "\n";
+    }
+    out << lines.back().substr(0, lines.back().size() / 2);  // torn: no newline
+  }
+  const auto resumed = run("sweep " + sweep.string() + " --out " + (dir / "damaged").string());
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
+  EXPECT_NE(resumed.output.find("4 stored rows"), std::string::npos) << resumed.output;
+  EXPECT_NE(resumed.output.find("alpha.csv:4"), std::string::npos) << resumed.output;
+  EXPECT_EQ(without_seconds(dir / "damaged" / "alpha.csv"), without_seconds(dir / "fresh" / "alpha.csv"));
+}
+
+// A second sweep on a folder in use: exit 2 naming the holder.
+TEST(Faults, SecondSweepOnOneFolderIsRefused) {
+  const auto dir = scratch("faults_lock");
+  std::filesystem::create_directories(dir / "out");
+  const hpcontact::studies::FolderLock held(dir / "out");
+  const auto result = run("sweep " + write_sweep(dir).string() + " --out " + (dir / "out").string());
+  EXPECT_EQ(result.exit_code, 2) << result.output;
+  EXPECT_NE(result.output.find("in use by another sweep (process " + std::to_string(getpid())), std::string::npos)
+      << result.output;
+}
+
+// An mpirun sweep stopped half-way keeps its finished groups in per-rank shards; the next run
+// (serial here) computes only the rest and writes the same alpha.csv as an uninterrupted run.
+TEST(Faults, InterruptedMpirunSweepKeepsFinishedGroups) {
+  const auto dir = scratch("faults_mpi_resume");
+  const auto sweep = write_sweep(dir, true);
+  const auto out = dir / "out";
+  const auto result = run_command(kMpi + "sh -c 'mpirun -n 2 --oversubscribe " HPCONTACT_CLI " sweep " + sweep.string() +
+                                  " --out " + out.string() +
+                                  " & for i in $(seq 600); do [ -s " + (out / "alpha.csv.rank0").string() +
+                                  " ] || [ -s " + (out / "alpha.csv.rank1").string() +
+                                  " ] && break; sleep 0.05; done; kill -TERM $!; wait $!'");
+  std::size_t kept = 0;
+  for (const auto& shard : hpcontact::studies::existing_shards(out / "alpha.csv")) {
+    std::ifstream in(shard);
+    for (std::string line; std::getline(in, line);) ++kept;
+  }
+  ASSERT_FALSE(std::filesystem::exists(out / "alpha.csv")) << "the run finished before it was stopped";
+  EXPECT_GT(kept, 0u) << result.output;
+  // One BLAS thread in every run, so that the floating-point operations are the same.
+  const auto resumed = run_command(kMpi + HPCONTACT_CLI " sweep " + sweep.string() + " --out " + out.string());
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
+  ASSERT_EQ(run_command(kMpi + HPCONTACT_CLI " sweep " + sweep.string() + " --out " + (dir / "fresh").string()).exit_code, 0);
+  EXPECT_EQ(without_seconds(out / "alpha.csv"), without_seconds(dir / "fresh" / "alpha.csv"));
+  EXPECT_TRUE(hpcontact::studies::existing_shards(out / "alpha.csv").empty());
+}
