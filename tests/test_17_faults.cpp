@@ -172,3 +172,57 @@ TEST(Faults, InterruptedMpirunSweepKeepsFinishedGroups) {
   EXPECT_EQ(without_seconds(out / "alpha.csv"), without_seconds(dir / "fresh" / "alpha.csv"));
   EXPECT_TRUE(hpcontact::studies::existing_shards(out / "alpha.csv").empty());
 }
+
+// PETSc options are checked before any work: a value SLEPc rejects, a name without the prefix (the
+// prefixed one suggested), a misspelled name. Exit 2 within a second, nothing computed.
+TEST(Faults, PetscOptionsAreCheckedBeforeAnyWork) {
+  struct Case { std::string options, expected; };
+  for (const auto& [options, expected] :
+       {Case{"-infsup_eps_type nonsense", "SLEPc rejects a value"}, Case{"-eps_type arpack", "did you mean -infsup_eps_type?"},
+        Case{"-infsup_eps_typo arpack", "not an option of the inf-sup eigensolver"}}) {
+    const auto result = run("infsup --p 2 --pc 1 --n 8 " + options);
+    EXPECT_EQ(result.exit_code, 2) << options << "\n" << result.output;
+    EXPECT_NE(result.output.find(expected), std::string::npos) << result.output;
+    EXPECT_EQ(result.output.find("alpha ="), std::string::npos) << result.output;
+  }
+  const auto good = run("infsup --p 2 --pc 1 --n 8 -infsup_eps_type arpack -infsup_eps_tol 1e-10 -log_view");
+  EXPECT_EQ(good.exit_code, 0) << good.output;
+}
+
+// Messages that misled: each names the key, the value and why.
+TEST(Faults, MessagesNameTheInputAndWhy) {
+  const auto dir = scratch("faults_messages");
+  const std::string base = "[domain]\nn_x = 4\nn_y = 4\n[boundary]\ncontact = \"abs(y + 1) < 1e-9\"\n"
+                           "dirichlet = \"abs(y - 1) < 1e-9\"\n[contact_mesh]\nratio = 1\n[discretization]\np = 2\n"
+                           "pC = 1\n[data]\ng = \"-x^2\"\n[run]\neffects = [\"signorini\"]\n";
+  auto scene_with = [&](const std::string& name, const std::string& from, const std::string& to) {
+    std::string text = base;
+    text.replace(text.find(from), from.size(), to);
+    std::ofstream(dir / name) << text;
+    return run("solve " + (dir / name).string() + " --out " + (dir / ("out_" + name)).string());
+  };
+  struct Case { std::string name, from, to, expected; };
+  const std::string huge(200000, '1');
+  for (const auto& c : {
+           Case{"tiny.toml", "[domain]\n", "[domain]\nx_min = 0\nx_max = 1e-300\n", "the width 1e-300 is below"},
+           Case{"equal.toml", "[domain]\n", "[domain]\nx_min = 1\nx_max = 1\n", "= 1, 1: must satisfy x_min < x_max"},
+           Case{"huge.toml", "n_x = 4\nn_y = 4", "n_x = 100000\nn_y = 100000", "at most 2^31 - 1 unknowns"},
+           Case{"free.toml", "dirichlet = \"abs(y - 1) < 1e-9\"", "dirichlet = \"x > 5\"", "has no Dirichlet part"},
+           Case{"pieces.toml", "contact = \"abs(y + 1) < 1e-9\"", "contact = \"abs(y + 1) < 1e-9 && abs(x) > 0.6\"",
+                "pieces.toml: key 'boundary.contact': Γ_C must be one open curve; it has 2 pieces"},
+           Case{"expression.toml", "g = \"-x^2\"", "g = \"" + huge + "+\"", "(200001 characters)"},
+       }) {
+    const auto result = scene_with(c.name, c.from, c.to);
+    EXPECT_EQ(result.exit_code, 2) << c.name << "\n" << result.output.substr(0, 2000);
+    EXPECT_NE(result.output.find(c.expected), std::string::npos) << c.name << "\n" << result.output.substr(0, 2000);
+    EXPECT_LT(result.output.size(), 2000u) << c.name;
+  }
+  // A misspelled physical group lists the groups the mesh has.
+  std::ofstream(dir / "groups.toml") << "[domain]\nmesh = \"" HPCONTACT_TEST_DATA "/square_2x2.msh\"\n[boundary]\n"
+                                        "contact_groups = [\"contcat\"]\ndirichlet_groups = [\"dirichlet\"]\n"
+                                        "[contact_mesh]\nratio = 1\n[discretization]\np = 2\npC = 1\n[data]\ng = \"-x^2\"\n"
+                                        "[run]\neffects = [\"signorini\"]\n";
+  const auto groups = run("solve " + (dir / "groups.toml").string() + " --out " + (dir / "out_groups").string());
+  EXPECT_EQ(groups.exit_code, 2) << groups.output;
+  EXPECT_NE(groups.output.find("the mesh has: contact, dirichlet, neumann"), std::string::npos) << groups.output;
+}

@@ -12,6 +12,7 @@
 #include "core/interrupt.hpp"
 #include "core/petsc_session.hpp"
 #include "core/rank_agreement.hpp"
+#include "infsup/generalized_eigen.hpp"
 
 namespace {
 
@@ -68,6 +69,7 @@ int main(int argc, char** argv) {
   }
   int code = 0;
   try {
+    infsup::check_petsc_options(command_line.petsc);
     code = action();
   } catch (const std::exception& error) {
     code = report(error);

@@ -9,6 +9,16 @@
 #include "core/error.hpp"
 
 namespace hpcontact {
+namespace {
+
+// Messages quote an expression, but not a megabyte of it.
+std::string shortened(const std::string& text) {
+  constexpr std::size_t kShown = 120;
+  if (text.size() <= kShown) return text;
+  return text.substr(0, kShown) + "... (" + std::to_string(text.size()) + " characters)";
+}
+
+}  // namespace
 
 struct Expression::Impl {
   std::string text;
@@ -31,7 +41,7 @@ Expression::Expression(const std::string& text, const std::string& origin)
     // muparser parses lazily: evaluate once so that syntax errors surface here.
     impl_->parser.Eval();
   } catch (const mu::Parser::exception_type& error) {
-    throw InputError(origin + ": expression \"" + text + "\" does not parse: " +
+    throw InputError(origin + ": expression \"" + shortened(text) + "\" does not parse: " +
                      error.GetMsg() + " (variables: x, y; constants: pi, e)");
   }
 }
@@ -43,11 +53,11 @@ double Expression::operator()(double x, double y) const {
   try {
     value = impl_->parser.Eval();
   } catch (const mu::Parser::exception_type& error) {
-    throw InputError(impl_->origin + ": expression \"" + impl_->text +
+    throw InputError(impl_->origin + ": expression \"" + shortened(impl_->text) +
                      "\" failed to evaluate: " + error.GetMsg());
   }
   if (!std::isfinite(value)) {
-    throw InputError(impl_->origin + ": expression \"" + impl_->text + "\" is " +
+    throw InputError(impl_->origin + ": expression \"" + shortened(impl_->text) + "\" is " +
                      std::to_string(value) + " at (x, y) = (" + std::to_string(x) + ", " +
                      std::to_string(y) + "): it must be finite on the whole domain");
   }

@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <string>
+#include <vector>
 
 namespace hpcontact::infsup {
 
@@ -50,5 +51,17 @@ SmallestEigenpair smallest_eigenpair_dense(const Eigen::MatrixXd& S, const Eigen
 ///         PETSc's message) or the EPS converges no eigenpair (with the error estimates).
 SmallestEigenpair smallest_eigenpair_slepc(const Eigen::MatrixXd& S, const Eigen::MatrixXd& G,
                                            const std::string& options_prefix = "infsup_");
+
+}  // namespace hpcontact::infsup
+
+namespace hpcontact::infsup {
+
+/// Checks the PETSc/SLEPc options of the command line (`arguments`: names and values as split off
+/// by split_petsc_options, program name first) before any work: every name must be one that the
+/// toolkit reads (`options_prefix`, a few global PETSc options: -help, -info, -log_view,
+/// -options_left, -malloc_*, -on_error_*, -mat_mumps_*), and the eigensolvers' values are set on
+/// blank EPS objects. @throws InputError naming the option (for an unprefixed one, the prefixed
+/// name).
+void check_petsc_options(const std::vector<std::string>& arguments, const std::string& options_prefix = "infsup_");
 
 }  // namespace hpcontact::infsup

@@ -1,6 +1,8 @@
 // Reading scenes and building their meshes.
 #include "io/scene.hpp"
 
+#include <unistd.h>
+
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -10,11 +12,14 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <set>
+#include <tuple>
 
 #include "core/error.hpp"
 #include "core/expression.hpp"
 #include "io/toml_reader.hpp"
 #include "mesh/cell_map.hpp"
+#include "mesh/contact_boundary.hpp"
 #include "mesh/gmsh_reader.hpp"
 #include "mesh/point_grading.hpp"
 #include "mesh/refine.hpp"
@@ -86,6 +91,33 @@ std::vector<double> number_list(const TomlTable& table, const std::string& key, 
 
 }  // namespace
 
+namespace {
+
+// A scene whose discretization cannot fit: refused before anything is allocated. The estimate is
+// the rectangle's cells (with grading layers and refinements) times (p + 1)² dofs and 1.2 KB per
+// dof, the peak measured for the condensed factorizations at p = 4 (1.2 GB at 1.05e6 dofs).
+void check_scene_size(const Scene& scene) {
+  if (!scene.rectangle) return;  // a Gmsh mesh is as large as its file
+  const double layers = 2.0 * scene.grading_layers;
+  const double cells = (scene.n_x + layers * static_cast<double>(scene.grading_x.size())) *
+                       (scene.n_y + layers * static_cast<double>(scene.grading_y.size())) *
+                       std::pow(4.0, scene.refinements);
+  const double p = scene.p_rule.empty() ? scene.p : 1.0;  // a rule: at least degree 1 everywhere
+  const double dofs = cells * p * p, bytes = 1.2e3 * dofs;
+  const double memory = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
+  const std::string size = fmt::format("{:.3g} cells ({} x {}{}) at p = {}: about {:.3g} unknowns", cells, scene.n_x,
+                                       scene.n_y, scene.refinements ? fmt::format(", {} refinements", scene.refinements) : "",
+                                       scene.p_rule.empty() ? std::to_string(scene.p) : "its rule", dofs);
+  if (dofs > 2147483647.0)
+    throw_bad_input(scene.file, "domain.n_x, domain.n_y", size, "at most 2^31 - 1 unknowns (32-bit indices)");
+  if (bytes > memory)
+    throw_bad_input(scene.file, "domain.n_x, domain.n_y", size,
+                    fmt::format("needs about {:.3g} GB (1.2 KB per unknown), more than this machine's {:.3g} GB",
+                                bytes / 1e9, memory / 1e9));
+}
+
+}  // namespace
+
 Scene parse_scene(const std::string& text, const std::string& path) {
   const TomlTable root = parse_toml_string(text, path);
   Scene scene;
@@ -106,8 +138,16 @@ Scene parse_scene(const std::string& text, const std::string& path) {
     r.x_max = domain.number("x_max", 1.0);
     r.y_min = domain.number("y_min", -1.0);
     r.y_max = domain.number("y_max", 1.0);
-    if (!(r.x_max > r.x_min) || !(r.y_max > r.y_min))
-      throw_bad_input(path, "domain.x_max / domain.y_max", "", "the rectangle must satisfy x_min < x_max and y_min < y_max");
+    for (const auto& [axis, low, high] : {std::tuple{"x", r.x_min, r.x_max}, std::tuple{"y", r.y_min, r.y_max}}) {
+      const std::string key = fmt::format("domain.{}_min, domain.{}_max", axis, axis);
+      const std::string value = fmt::format("{}, {}", low, high);
+      if (!(high > low)) throw_bad_input(path, key, value, fmt::format("must satisfy {}_min < {}_max", axis, axis));
+      // Narrower than this, the vertices of even a coarse mesh coincide in floating point.
+      if (high - low <= 1e-9 * std::max({std::abs(low), std::abs(high), 1e-290}) || high - low < 1e-280)
+        throw_bad_input(path, key, value,
+                        fmt::format("the width {:.3g} is below the resolution of the coordinates: at least 1e-9 of their "
+                                    "magnitude (and 1e-280)", high - low));
+    }
     scene.rectangle = r;
     scene.n_x = static_cast<int>(domain.integer("n_x", 1, 100000));
     scene.n_y = static_cast<int>(domain.integer("n_y", 1, 100000));
@@ -215,6 +255,7 @@ Scene parse_scene(const std::string& text, const std::string& path) {
   convergence.reject_unknown_keys();
   root.reject_unknown_keys();
   if (run.has("effects") || run.has("outputs")) check_effects(scene, path);
+  check_scene_size(scene);
   return scene;
 }
 
@@ -285,8 +326,18 @@ mesh::QuadMesh build_scene_mesh(const Scene& scene) {
     const bool by_groups = scene.contact_predicate.empty();
     std::string value = scene.contact_predicate;
     for (const auto& group : scene.contact_groups) value += (value.empty() ? "" : ", ") + group;
+    std::set<std::string> labels;
+    for (int e : mesh.boundary_edges()) labels.insert(mesh.edge_label(e));
     throw_bad_input(scene.file, by_groups ? "boundary.contact_groups" : "boundary.contact", value,
-                    "it must select at least one boundary edge (Γ_C is empty)");
+                    by_groups ? fmt::format("it must name a physical group on the boundary (Γ_C is empty); the mesh "
+                                            "has: {}", fmt::join(labels, ", "))
+                              : "it must select at least one boundary edge (Γ_C is empty)");
+  }
+  try {
+    const mesh::ContactBoundary chain(mesh);
+  } catch (const InputError& error) {
+    throw InputError(fmt::format("{}: key 'boundary.{}': {}", scene.file,
+                                 scene.contact_predicate.empty() ? "contact_groups" : "contact", error.what()));
   }
   return mesh;
 }

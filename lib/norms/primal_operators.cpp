@@ -54,6 +54,14 @@ const assembly::CondensedFactor& condensed_factor(const space::H1Space& space, d
 }  // namespace
 
 const assembly::CondensedFactor& PrimalOperators::stiffness_factor() const {
+  // Without Dirichlet edges K has the constants in its kernel: refuse as input, not as a failed
+  // factorization deep inside CHOLMOD.
+  bool dirichlet = false;
+  for (int e : mesh_->boundary_edges()) dirichlet = dirichlet || mesh_->edge_part(e) == mesh::BoundaryPart::dirichlet;
+  if (!dirichlet)
+    throw InputError("the body has no Dirichlet part (no boundary edge is in Γ_D: key 'boundary.dirichlet' or "
+                     "'boundary.dirichlet_groups'): K is singular, since u + c has the energy of u, and the contact "
+                     "problems (9), (13), (15) need u fixed somewhere (the inf-sup analysis, with K + M, does not)");
   return condensed_factor(*space_, 1.0, 0.0, trace_dofs(), distribution_, stiffness_factor_, "factor(K)", log_);
 }
 
