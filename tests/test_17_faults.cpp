@@ -226,3 +226,40 @@ TEST(Faults, MessagesNameTheInputAndWhy) {
   EXPECT_EQ(groups.exit_code, 2) << groups.output;
   EXPECT_NE(groups.output.find("the mesh has: contact, dirichlet, neumann"), std::string::npos) << groups.output;
 }
+
+// The outputs of a solve are one set: a second run replaces the first run's folder whole (no file
+// of the first run stays beside the new ones), a folder of other files is refused and left alone,
+// and a run that cannot write leaves no partial set.
+TEST(Faults, SolveOutputsAreOneSet) {
+  const auto dir = scratch("faults_output_set");
+  const std::string scene = std::string("[domain]\nn_x = 4\nn_y = 4\n[boundary]\ncontact = \"abs(y + 1) < 1e-9\"\n") +
+                            "dirichlet = \"abs(y - 1) < 1e-9\"\n[contact_mesh]\nratio = 1\n[discretization]\np = 2\n"
+                            "pC = 1\n[data]\ng = \"-x^2\"\ns = \"1\"\n";
+  std::ofstream(dir / "scene.toml") << scene;
+  const auto out = (dir / "out").string(), file = (dir / "scene.toml").string();
+  ASSERT_EQ(run("solve " + file + " --effects signorini,friction --out " + out).exit_code, 0);
+  ASSERT_TRUE(std::filesystem::exists(dir / "out" / "boundary_friction.csv"));
+  const auto second = run("solve " + file + " --effects signorini --out " + out);
+  ASSERT_EQ(second.exit_code, 0) << second.output;
+  EXPECT_TRUE(std::filesystem::exists(dir / "out" / "boundary_signorini.csv"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "out" / "boundary_friction.csv"));
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
+    EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos) << entry.path();
+
+  std::filesystem::create_directories(dir / "mine");
+  std::ofstream(dir / "mine" / "notes.txt") << "a user's file\n";
+  const auto refused = run("solve " + file + " --effects signorini --out " + (dir / "mine").string());
+  EXPECT_EQ(refused.exit_code, 2) << refused.output;
+  EXPECT_NE(refused.output.find("holds files that hpcontact did not write"), std::string::npos) << refused.output;
+  EXPECT_TRUE(std::filesystem::exists(dir / "mine" / "notes.txt"));
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir / "mine"), std::filesystem::directory_iterator()), 1);
+
+  SmallDisk disk("solve");
+  if (!disk.mounted) GTEST_SKIP() << "cannot mount a tmpfs here (needs root)";
+  std::ofstream(dir / "fine.toml") << std::string(scene).replace(scene.find("n_x = 4\nn_y = 4"), 15, "n_x = 32\nn_y = 32");
+  const auto full = run_command(kMpi + "timeout 120 mpirun -n 2 --oversubscribe " HPCONTACT_CLI " solve " +
+                                (dir / "fine.toml").string() + " --effects signorini --out " +
+                                (disk.path / "out").string());
+  EXPECT_EQ(full.exit_code, 4) << full.output;
+  EXPECT_TRUE(std::filesystem::is_empty(disk.path)) << "a partial set was left";
+}

@@ -15,4 +15,8 @@ void install_interrupt_handlers();
 int register_file_in_progress(const std::string& path);
 void release_file_in_progress(int slot);
 
+/// The same for a folder of outputs in progress: its files (not subfolders) and the folder itself
+/// are removed on an interrupt.
+int register_folder_in_progress(const std::string& path);
+
 }  // namespace hpcontact

@@ -13,7 +13,9 @@
 #include "core/timer.hpp"
 #include "infsup/infsup_analysis.hpp"
 #include "io/atomic_file.hpp"
+#include "core/rank_agreement.hpp"
 #include "io/csv_writer.hpp"
+#include "io/output_folder.hpp"
 #include "io/vtu_writer.hpp"
 #include "studies/free_boundary_fit.hpp"
 
@@ -197,16 +199,20 @@ nlohmann::json run_scene(const io::Scene& given_scene, const SceneRunOptions& op
   const auto [rank, ranks] = mpi_rank_and_size();
   summary["ranks"] = ranks;
   summary["distributed_solver"] = linalg::to_string(options.distribution);
-  if (rank != 0) return summary;
-
-  io::ensure_writable_directory(options.out);
-  for (const auto& effect : contacts) {
-    if (scene.wants_output("boundary")) effect.samples.table.write(options.out / ("boundary_" + effect.problem + ".csv"));
-    if (scene.wants_output("vtu")) io::write_vtu(options.out / ("solution_" + effect.problem + ".vtu"), primal.space(), effect.solution.u);
-  }
-  if (mode) mode->write(options.out / "mode.csv");
-  if (convergence) convergence->write(options.out / "convergence.csv");
-  if (scene.wants_output("summary")) io::write_file_atomically(options.out / "summary.json", summary.dump(2) + "\n");
+  // 5. The outputs as one set (rank 0 writes; a failure to write ends every rank the same way).
+  run_on_all_ranks_agreeing([&] {
+    if (rank != 0) return;
+    io::OutputFolder folder(options.out);
+    const auto& out = folder.path();
+    for (const auto& effect : contacts) {
+      if (scene.wants_output("boundary")) effect.samples.table.write(out / ("boundary_" + effect.problem + ".csv"));
+      if (scene.wants_output("vtu")) io::write_vtu(out / ("solution_" + effect.problem + ".vtu"), primal.space(), effect.solution.u);
+    }
+    if (mode) mode->write(out / "mode.csv");
+    if (convergence) convergence->write(out / "convergence.csv");
+    if (scene.wants_output("summary")) io::write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
+    folder.commit();
+  });
   return summary;
 }
 

@@ -1,0 +1,70 @@
+// OutputFolder: staging folder, marker file, renameat2(RENAME_EXCHANGE) into place.
+#include "io/output_folder.hpp"
+
+#include <fcntl.h>
+#include <stdio.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <fstream>
+
+#include "core/error.hpp"
+#include "core/interrupt.hpp"
+#include "io/atomic_file.hpp"
+
+namespace hpcontact::io {
+namespace {
+constexpr const char* kMarker = ".hpcontact-output";
+}  // namespace
+
+OutputFolder::OutputFolder(std::filesystem::path out) : out_(std::filesystem::absolute(std::move(out))) {
+  if (std::filesystem::exists(out_)) {
+    if (!std::filesystem::is_directory(out_))
+      throw InputError("output folder '" + out_.string() + "' exists and is not a folder");
+    // (summary.json: a folder of a version before the marker)
+    if (!std::filesystem::is_empty(out_) && !std::filesystem::exists(out_ / kMarker) &&
+        !std::filesystem::exists(out_ / "summary.json"))
+      throw InputError("output folder '" + out_.string() + "' holds files that hpcontact did not write (no " + kMarker +
+                       "): choose a new or empty folder; a folder of an earlier run is replaced whole");
+  }
+  staging_ = out_;
+  staging_ += ".tmp-" + std::to_string(getpid());
+  std::error_code error;
+  std::filesystem::remove_all(staging_, error);
+  errno = 0;
+  if (!std::filesystem::create_directories(staging_, error))
+    throw IoError("cannot create the output folder '" + staging_.string() + "': " + error.message());
+  interrupt_slot_ = register_folder_in_progress(staging_.string());
+  write_file_atomically(staging_ / kMarker, "outputs of one hpcontact run; the folder is replaced whole by the next\n");
+}
+
+OutputFolder::~OutputFolder() {
+  if (committed_) return;
+  std::error_code ignored;
+  std::filesystem::remove_all(staging_, ignored);
+  release_file_in_progress(interrupt_slot_);
+}
+
+void OutputFolder::commit() {
+  sync_to_disk(staging_);
+  errno = 0;
+  if (std::filesystem::exists(out_)) {
+    // Swap atomically: --out is this run's folder at once, the old one is now at the staging name.
+    if (renameat2(AT_FDCWD, staging_.c_str(), AT_FDCWD, out_.c_str(), RENAME_EXCHANGE) != 0)
+      throw IoError(describe_io_failure("cannot move the outputs into", out_.string()));
+    committed_ = true;
+    release_file_in_progress(interrupt_slot_);
+    std::error_code ignored;
+    std::filesystem::remove_all(staging_, ignored);
+  } else {
+    std::error_code error;
+    std::filesystem::create_directories(out_.parent_path(), error);
+    if (std::rename(staging_.c_str(), out_.c_str()) != 0)
+      throw IoError(describe_io_failure("cannot move the outputs into", out_.string()));
+    committed_ = true;
+    release_file_in_progress(interrupt_slot_);
+  }
+  sync_to_disk(out_.parent_path());
+}
+
+}  // namespace hpcontact::io
