@@ -249,9 +249,12 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
   auto key_of = [&](const Point& point) {
     return point_key(point.problem, point.norm, point.reported_p, point.reported_pc, static_cast<int>(point.level) + 1,
                      point.m);
-  };  // Rows stored by an earlier run (alpha.csv and the shards of an interrupted mpirun), validated:
+  };
+  // Rows stored by an earlier run (alpha.csv and the shards of an interrupted mpirun), validated:
   // bad or foreign rows are computed again. The file is always written in the order of `points`.
-  const auto [rank, size] = mpi_rank_and_size();
+  // Plain variables, not a structured binding: lambdas below capture them (clang 14 refuses).
+  const int rank = mpi_rank_and_size().first;
+  const int size = mpi_rank_and_size().second;
   std::map<std::string, std::size_t> index_of_key;
   for (std::size_t k = 0; k < points.size(); ++k) index_of_key[key_of(points[k])] = k;
   std::set<std::string> keys;
