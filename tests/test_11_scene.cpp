@@ -6,10 +6,14 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
+#include <cstdio>
 
 #include "core/error.hpp"
-#include "io/scene.hpp"
-#include "io/scene_variants.hpp"
+#include "scene/scene_mesh.hpp"
+#include "scene/scene_reader.hpp"
+#include "scene/scene_keys.hpp"
+#include "scene/scene_variants.hpp"
 #include "io/toml_reader.hpp"
 #include "mesh/contact_boundary.hpp"
 
@@ -25,10 +29,10 @@ std::string write_scene(const std::string& name, const std::string& text) {
 
 std::string error_of(const std::string& text) {
   try {
-    const auto scene = io::read_scene(write_scene("bad", text));
-    const auto mesh = io::build_scene_mesh(scene);
+    const auto scene = scene::read_scene(write_scene("bad", text));
+    const auto mesh = scene::build_scene_mesh(scene);
     const mesh::ContactBoundary contact(mesh);
-    io::build_scene_boundary_mesh(scene, contact);
+    scene::build_scene_boundary_mesh(scene, contact);
   } catch (const InputError& error) {
     return error.what();
   }
@@ -56,25 +60,25 @@ std::string with(const std::string& from, const std::string& to) {
 }
 
 /// kGood with these [domain] keys added and T_{C,H} following T_h with h/H = 1/2.
-io::Scene graded_scene(const std::string& name, const std::string& domain_keys) {
+scene::Scene graded_scene(const std::string& name, const std::string& domain_keys) {
   std::string text = with("n_y = 4", "n_y = 4\n" + domain_keys);
   text.replace(text.find("m = 2"), 5, "ratio = \"1/2\"");
-  return io::read_scene(write_scene(name, text));
+  return scene::read_scene(write_scene(name, text));
 }
 
 }  // namespace
 
 TEST(Scene, PaperSceneMatchesBuiltInGeometry) {
-  const auto scene = io::read_scene(std::string(HPCONTACT_TEST_DATA) + "/scene_paper.toml");
-  const auto mesh = io::build_scene_mesh(scene);
+  const auto scene = scene::read_scene(std::string(HPCONTACT_TEST_DATA) + "/scene_paper.toml");
+  const auto mesh = scene::build_scene_mesh(scene);
   const auto paper = mesh::make_paper_square_mesh(8);
   ASSERT_EQ(mesh.n_edges(), paper.n_edges());
   for (int e = 0; e < mesh.n_edges(); ++e) EXPECT_EQ(mesh.edge_part(e), paper.edge_part(e)) << e;
   const mesh::ContactBoundary contact(mesh);
-  const auto boundary = io::build_scene_boundary_mesh(scene, contact);
+  const auto boundary = scene::build_scene_boundary_mesh(scene, contact);
   EXPECT_EQ(boundary.n_segments(), 4);
-  EXPECT_EQ(scene.p, 3);
-  EXPECT_EQ(scene.pc, 2);
+  EXPECT_EQ(scene.p.value, 3);
+  EXPECT_EQ(scene.pc.value, 2);
 }
 
 TEST(Scene, GmshSceneUsesPhysicalGroups) {
@@ -82,11 +86,11 @@ TEST(Scene, GmshSceneUsesPhysicalGroups) {
                            "/square_2x2.msh\"\n[boundary]\ncontact_groups = [\"contact\"]\n"
                            "dirichlet_groups = [\"dirichlet\"]\n[contact_mesh]\nratio = 1\n"
                            "[discretization]\np = 2\npC = 0\n";
-  const auto scene = io::read_scene(write_scene("gmsh", text));
-  const auto mesh = io::build_scene_mesh(scene);
+  const auto scene = scene::read_scene(write_scene("gmsh", text));
+  const auto mesh = scene::build_scene_mesh(scene);
   const mesh::ContactBoundary contact(mesh);
   EXPECT_NEAR(contact.length(), 2.0, 1e-14);
-  EXPECT_EQ(io::build_scene_boundary_mesh(scene, contact).n_segments(), 2);
+  EXPECT_EQ(scene::build_scene_boundary_mesh(scene, contact).n_segments(), 2);
 }
 
 TEST(Scene, EachClassOfBadInputNamesTheKey) {
@@ -106,19 +110,19 @@ TEST(Scene, EachClassOfBadInputNamesTheKey) {
 }
 
 TEST(Scene, DegreeRulesGiveDistributions) {
-  const auto scene = io::read_scene(write_scene("rules", with("p = 2\npC = 1", "p = \"x < 0 ? 2 : 4\"\npC = \"x < 0 ? 0 : 1\"")));
-  const auto mesh = io::build_scene_mesh(scene);
-  const auto degrees = io::scene_cell_degrees(scene, mesh);
+  const auto scene = scene::read_scene(write_scene("rules", with("p = 2\npC = 1", "p = \"x < 0 ? 2 : 4\"\npC = \"x < 0 ? 0 : 1\"")));
+  const auto mesh = scene::build_scene_mesh(scene);
+  const auto degrees = scene::scene_cell_degrees(scene, mesh);
   int twos = 0, fours = 0;
   for (int p : degrees) (p == 2 ? twos : fours) += 1;
   EXPECT_EQ(twos, 8);
   EXPECT_EQ(fours, 8);
   const mesh::ContactBoundary contact(mesh);
-  const auto boundary = io::build_scene_boundary_mesh(scene, contact);
-  EXPECT_EQ(io::scene_segment_degrees(scene, contact, boundary), (std::vector<int>{0, 1}));
-  const auto bad = io::read_scene(write_scene("bad_rule", with("p = 2", "p = \"x + 2\"")));
+  const auto boundary = scene::build_scene_boundary_mesh(scene, contact);
+  EXPECT_EQ(scene::scene_segment_degrees(scene, contact, boundary), (std::vector<int>{0, 1}));
+  const auto bad = scene::read_scene(write_scene("bad_rule", with("p = 2", "p = \"x + 2\"")));
   try {
-    io::scene_cell_degrees(bad, io::build_scene_mesh(bad));
+    scene::scene_cell_degrees(bad, scene::build_scene_mesh(bad));
     ADD_FAILURE() << "a rule giving 1.25 must be rejected";
   } catch (const InputError& error) {
     EXPECT_NE(std::string(error.what()).find("discretization.p"), std::string::npos) << error.what();
@@ -129,19 +133,19 @@ TEST(Scene, DegreeRulesGiveDistributions) {
 // merges k edges), refinements split T_h and T_{C,H} alike.
 TEST(Scene, GradedRectangleAndRefinementsKeepTheRatio) {
   const auto scene = graded_scene("graded", "grading_x = [0.3]\ngrading = 0.25\ngrading_layers = 2\nrefinements = 1");
-  const auto mesh = io::build_scene_mesh(scene);
+  const auto mesh = scene::build_scene_mesh(scene);
   const mesh::ContactBoundary contact(mesh);
   // 4 cells + 2 · 2 layers around x = 0.3, refined once: 16 edges on Γ_C.
   ASSERT_EQ(contact.edges().size(), 16u);
   const auto arcs = contact.breakpoints();
   EXPECT_NE(std::find_if(arcs.begin(), arcs.end(), [](double s) { return std::abs(s - 1.3) < 1e-14; }), arcs.end());
-  const auto boundary = io::build_scene_boundary_mesh(scene, contact);
+  const auto boundary = scene::build_scene_boundary_mesh(scene, contact);
   ASSERT_EQ(boundary.n_segments(), 8);
   for (int k = 0; k < 8; ++k) EXPECT_NEAR(boundary.segment_end(k), arcs[2 * k + 2], 1e-14) << k;
   // m is split by the refinements too.
-  const auto refined = io::read_scene(write_scene("refined_m", with("n_y = 4", "n_y = 4\nrefinements = 2")));
-  const auto refined_mesh = io::build_scene_mesh(refined);
-  EXPECT_EQ(io::build_scene_boundary_mesh(refined, mesh::ContactBoundary(refined_mesh)).n_segments(), 8);
+  const auto refined = scene::read_scene(write_scene("refined_m", with("n_y = 4", "n_y = 4\nrefinements = 2")));
+  const auto refined_mesh = scene::build_scene_mesh(refined);
+  EXPECT_EQ(scene::build_scene_boundary_mesh(refined, mesh::ContactBoundary(refined_mesh)).n_segments(), 8);
   EXPECT_NE(error_of(with("n_y = 4", "n_y = 4\ngrading_x = [3.0]\ngrading_layers = 1")).find("grading"), std::string::npos);
 }
 
@@ -150,13 +154,13 @@ TEST(Scene, GradedRectangleAndRefinementsKeepTheRatio) {
 // merging from the end of Γ_C would straddle it); bad points name the key.
 TEST(Scene, GradingPointsStayBreakpointsOfTheContactMesh) {
   const auto scene = graded_scene("graded_point", "grading_points = [[0.3, -1]]\ngrading = 0.2\ngrading_layers = 2");
-  const auto mesh = io::build_scene_mesh(scene);
+  const auto mesh = scene::build_scene_mesh(scene);
   const mesh::ContactBoundary contact(mesh);
   const auto arcs = contact.breakpoints();
   const auto at_point = std::find_if(arcs.begin(), arcs.end(), [](double s) { return std::abs(s - 1.3) < 1e-14; });
   ASSERT_NE(at_point, arcs.end());
   ASSERT_EQ((at_point - arcs.begin()) % 2, 1) << "the test needs an odd number of edges before the point";
-  const auto boundary = io::build_scene_boundary_mesh(scene, contact);
+  const auto boundary = scene::build_scene_boundary_mesh(scene, contact);
   bool breakpoint = false;
   for (int k = 0; k < boundary.n_segments(); ++k) breakpoint = breakpoint || std::abs(boundary.segment_end(k) - 1.3) < 1e-14;
   EXPECT_TRUE(breakpoint);
@@ -175,18 +179,18 @@ TEST(Scene, VariantsSetAndVaryKeysOfABaseScene) {
   const auto study = io::parse_toml_string(
       "set = { discretization = { pC = 0 } }\nvary = { \"domain.n_x\" = [4, 8], \"discretization.p\" = \"1..2\" }\n",
       "study.toml");
-  const auto variants = io::scene_variants(base, study.table("set"), study.table("vary"), "study.toml");
+  const auto variants = scene::scene_variants(base, study.table("set"), study.table("vary"), "study.toml");
   ASSERT_EQ(variants.size(), 2u);
   EXPECT_EQ(variants[0].scene.n_x, 4);
   EXPECT_EQ(variants[1].scene.n_x, 8);
-  EXPECT_EQ(variants[1].scene.p, 2);
-  EXPECT_EQ(variants[1].scene.pc, 0);
+  EXPECT_EQ(variants[1].scene.p.value, 2);
+  EXPECT_EQ(variants[1].scene.pc.value, 0);
   EXPECT_EQ(variants[1].scene.n_y, 4);
   EXPECT_EQ(variants[1].label, "discretization.p=2 domain.n_x=8");
   auto error_of_study = [&](const std::string& text) {
     try {
       const auto table = io::parse_toml_string(text, "study.toml");
-      io::scene_variants(base, table.table("set"), table.table("vary"), "study.toml");
+      scene::scene_variants(base, table.table("set"), table.table("vary"), "study.toml");
     } catch (const InputError& error) {
       return std::string(error.what());
     }
@@ -198,4 +202,92 @@ TEST(Scene, VariantsSetAndVaryKeysOfABaseScene) {
   EXPECT_NE(bad_variant.find("variant 2"), std::string::npos) << bad_variant;
   EXPECT_NE(bad_variant.find("discretization.p"), std::string::npos) << bad_variant;
   EXPECT_NE(error_of_study("vary = { \"p\" = [2] }\n").find("section.key"), std::string::npos);
+}
+
+namespace {
+
+std::string override_error(const scene::SceneOverride& override) {
+  try {
+    scene::parse_scene(scene::paper_scene_text(), scene::paper_scene_name, {override});
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+// docs/scene_keys.md is generated from the declarations the reader parses with; it must be current.
+TEST(SceneKeys, ReferenceInDocsIsCurrent) {
+  std::ifstream file(std::string(HPCONTACT_TEST_DATA) + "/../../docs/scene_keys.md");
+  ASSERT_TRUE(file.good());
+  std::stringstream committed;
+  committed << file.rdbuf();
+  EXPECT_EQ(committed.str(), scene::scene_key_reference())
+      << "regenerate with: hpcontact scene-keys > docs/scene_keys.md";
+}
+
+// Every declared numeric range is the one the reader checks: a value beyond it, given as an
+// override, is refused with a message naming the override's origin and the key.
+TEST(SceneKeys, DeclaredRangesAreCheckedAndNameTheOrigin) {
+  int checked = 0;
+  for (const auto& key : scene::scene_keys()) {
+    double low = 0, high = 0;
+    if ((key.type != "integer" && key.type != "number") || std::sscanf(key.allowed.c_str(), "[%lf, %lf]", &low, &high) != 2)
+      continue;
+    const scene::SceneOverride::Value beyond =
+        key.type == "integer" ? scene::SceneOverride::Value(static_cast<long long>(2 * high + 1))
+                              : scene::SceneOverride::Value(2 * high + 1);
+    const std::string message = override_error({key.dotted(), beyond, "test override"});
+    EXPECT_NE(message.find("test override: key '" + key.dotted() + "'"), std::string::npos) << key.dotted() << ": " << message;
+    ++checked;
+  }
+  EXPECT_GE(checked, 10);
+}
+
+// Overrides replace single keys: one of the contact mesh's exclusive keys replaces the others,
+// a rule is replaced by an integer, unknown keys and keys that do not apply are refused.
+TEST(SceneKeys, OverridesReplaceKeysAndAreChecked) {
+  const std::string base = R"toml([domain]
+n_x = 8
+n_y = 8
+[boundary]
+contact = "abs(y + 1) < 1e-9"
+dirichlet = "abs(y - 1) < 1e-9"
+[contact_mesh]
+m = 3
+[discretization]
+p = "1 + (x > 0)"
+pC = 0
+)toml";
+  const auto scene = scene::parse_scene(base, "base.toml",
+                                        {{"contact_mesh.ratio", std::string("1/2"), "--ratio"},
+                                         {"discretization.p", 4LL, "--p"}});
+  ASSERT_TRUE(scene.ratio.has_value());
+  EXPECT_EQ(scene.ratio->text, "1/2");
+  EXPECT_EQ(scene.p.value, 4);
+  EXPECT_TRUE(scene.p.rule.empty());
+  EXPECT_EQ(scene.where("contact_mesh.ratio"), "--ratio");
+  EXPECT_EQ(scene.where("discretization.pC"), "base.toml");
+  EXPECT_NE(override_error({"discretization.q", 1LL, "--q"}).find("--q: key 'discretization.q'"), std::string::npos);
+  EXPECT_NE(override_error({"contact_mesh.ratio", std::string("0"), "--ratio"}).find("--ratio: key 'contact_mesh.ratio'"),
+            std::string::npos);
+  EXPECT_NE(override_error({"infsup.norm", std::string("h1"), "--norm"}).find("--norm: key 'infsup.norm'"),
+            std::string::npos);
+  const std::string gmsh = std::string(R"([domain]
+mesh = ")") + HPCONTACT_TEST_DATA + R"(/square_2x2.msh"
+[boundary]
+contact_groups = ["contact"]
+[contact_mesh]
+ratio = 1
+[discretization]
+p = 1
+pC = 0
+)";
+  try {
+    scene::parse_scene(gmsh, "gmsh.toml", {{"domain.n_x", 4LL, "--n"}});
+    ADD_FAILURE() << "n_x on a Gmsh scene was accepted";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("--n: key 'domain.n_x'"), std::string::npos) << error.what();
+  }
 }

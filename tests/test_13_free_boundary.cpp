@@ -9,9 +9,10 @@
 #include <functional>
 
 #include "contact/free_boundary.hpp"
-#include "io/scene.hpp"
-#include "studies/free_boundary_fit.hpp"
-#include "studies/scene_discretization.hpp"
+#include "scene/scene_mesh.hpp"
+#include "scene/scene_reader.hpp"
+#include "driver/free_boundary_fit.hpp"
+#include "driver/scene_discretization.hpp"
 
 using namespace hpcontact;
 
@@ -67,8 +68,8 @@ TEST(FreeBoundary, SquareRootOnsetIsLocatedExactly) {
 
 namespace {
 
-io::Scene paper_scene(const std::string& effect, int p, int layers) {
-  return io::parse_scene(fmt::format(R"TOML(
+scene::Scene paper_scene(const std::string& effect, int p, int layers) {
+  return scene::parse_scene(fmt::format(R"TOML(
 [domain]
 n_x = 8
 n_y = 8
@@ -91,9 +92,8 @@ effects = ["{}"]
 )TOML", layers, p, p - 2, effect), "paper_scene.toml");
 }
 
-double energy(const io::Scene& scene, const std::string& effect) {
-  return studies::solve_scene_contact(scene, studies::contact_problem_of(effect), {scene.file, "solve.constraint_points"})
-      .solution.energy;
+double energy(const scene::Scene& scene, const std::string& effect) {
+  return driver::solve_scene_contact(scene, *scene::contact_problem_of(*scene::effect_named(effect))).solution.energy;
 }
 
 }  // namespace
@@ -103,8 +103,8 @@ double energy(const io::Scene& scene, const std::string& effect) {
 // convergence.
 TEST(FreeBoundary, FittedMeshesConvergeExponentially) {
   for (const std::string effect : {"signorini", "friction_s"}) {
-    const auto fit = studies::fit_free_boundary(paper_scene(effect, 8, 8), {studies::contact_problem_of(effect)},
-                                                {"paper_scene.toml", "solve.constraint_points"});
+    const auto fit = driver::fit_free_boundary(paper_scene(effect, 8, 8),
+                                               {*scene::contact_problem_of(*scene::effect_named(effect))});
     EXPECT_EQ(fit.points.size(), effect == "signorini" ? 2u : 1u) << effect;
     EXPECT_LE(fit.moved, 1e-6 * 2.0) << effect;
     EXPECT_LE(fit.solves, 12) << effect;

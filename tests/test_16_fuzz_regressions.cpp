@@ -8,7 +8,8 @@
 #include <sstream>
 
 #include "core/error.hpp"
-#include "io/scene.hpp"
+#include "scene/scene_mesh.hpp"
+#include "scene/scene_reader.hpp"
 #include "io/toml_reader.hpp"
 
 using namespace hpcontact;
@@ -25,7 +26,7 @@ int replay(const std::filesystem::path& folder) {
     text << in.rdbuf();
     const std::string name = entry.path().filename().string();
     try {
-      io::parse_scene(text.str(), name);
+      scene::parse_scene(text.str(), name);
     } catch (const InputError& error) {
       EXPECT_NE(std::string(error.what()).find(name), std::string::npos) << name << ": " << error.what();
     } catch (const std::exception& error) {

@@ -13,9 +13,10 @@
 #include "core/error.hpp"
 #include "core/petsc_session.hpp"
 #include "io/atomic_file.hpp"
-#include "io/scene.hpp"
+#include "scene/scene_mesh.hpp"
+#include "scene/scene_reader.hpp"
 #include "linalg/distribution.hpp"
-#include "studies/scene_run.hpp"
+#include "driver/scene_run.hpp"
 
 namespace hpcontact::tools {
 namespace {
@@ -30,56 +31,41 @@ struct SolveOptions {
 
 int run_solve(const SolveOptions& o) {
   const std::string where = "hpcontact solve";
-  // 1. Read the scene and apply the overrides, checked like the scene's own keys.
-  auto scene = io::read_scene(o.scene);
-  if (o.p) {
-    if (*o.p < 1 || *o.p > 20) throw_bad_input(where, "--p", std::to_string(*o.p), "must be in [1, 20]");
-    scene.p = *o.p;
-    scene.p_rule.clear();
-  }
-  if (o.pc) {
-    if (*o.pc < 0 || *o.pc > 19) throw_bad_input(where, "--pc", std::to_string(*o.pc), "must be in [0, 19]");
-    scene.pc = *o.pc;
-    scene.pc_rule.clear();
-  }
-  if (!o.ratio.empty()) {
-    scene.ratio = o.ratio;
-    scene.m = 0;
-    scene.breakpoints.clear();
-  }
-  studies::ValueOrigin points_origin{o.scene, "solve.constraint_points"};
-  if (o.constraint_points) {
-    scene.constraint_points = o.constraint_points;
-    points_origin = {where, "--constraint-points"};
-  }
-  if (!o.effects.empty()) {
-    for (const auto& effect : o.effects)
-      if (std::find(io::effect_names().begin(), io::effect_names().end(), effect) == io::effect_names().end())
-        throw_bad_input(where, "--effects", effect, fmt::format("any of {}", fmt::join(io::effect_names(), ", ")));
-    scene.effects = o.effects;
-    io::check_effects(scene, where + " --effects");
-  }
-  if (scene.effects.empty())
+  // 1. The scene with the options as overrides, each checked like the scene's own key.
+  std::vector<scene::SceneOverride> overrides;
+  if (o.p) overrides.push_back({"discretization.p", static_cast<long long>(*o.p), where + " --p"});
+  if (o.pc) overrides.push_back({"discretization.pC", static_cast<long long>(*o.pc), where + " --pc"});
+  if (!o.ratio.empty()) overrides.push_back({"contact_mesh.ratio", o.ratio, where + " --ratio"});
+  if (o.constraint_points)
+    overrides.push_back({"solve.constraint_points", static_cast<long long>(*o.constraint_points),
+                         where + " --constraint-points"});
+  if (!o.effects.empty()) overrides.push_back({"run.effects", o.effects, where + " --effects"});
+  const auto scene = scene::read_scene(o.scene, overrides);
+  if (scene.effects.empty()) {
+    std::vector<std::string> names;
+    for (auto effect : scene::all_effects()) names.push_back(scene::to_string(effect));
     throw_bad_input(o.scene, "run.effects", "(missing)",
                     fmt::format("a [run] table with effects = [...] (any of {}), or the option --effects",
-                                fmt::join(io::effect_names(), ", ")));
+                                fmt::join(names, ", ")));
+  }
   const auto distributed_solver = linalg::parse_distributed_solver(o.distributed_solver, where, "--distributed-solver");
   io::check_output_directory(o.out);
 
   // 2. Run; progress goes to stderr so that stdout stays the result. Under mpirun every rank runs
   // the scene, K and A_G are factorized over the ranks, and rank 0 reports and writes.
   const int rank = mpi_rank_and_size().first, ranks = mpi_rank_and_size().second;  // (a lambda captures rank)
-  studies::SceneRunOptions options{o.out, points_origin, [rank](const std::string& line) {
+  driver::SceneRunOptions options{o.out, [rank](const std::string& line) {
                                      if (rank == 0) fmt::print(stderr, "# {}\n", line);
                                    }};
   options.distribution = linalg::distribution_over(ranks, distributed_solver);
-  const auto summary = studies::run_scene(scene, options);
+  const auto summary = driver::run_scene(scene, options);
   if (rank != 0) return 0;
 
   // 3. One line per effect.
-  for (const auto& problem : scene.contact_effects()) {
-    const auto& result = summary[problem];
-    fmt::print("{}: energy = {:.17g}, {} {} steps, KKT residual {:.2e}, contact set length {:.4f}\n", problem,
+  for (const auto problem : scene.contact_effects()) {
+    const std::string name = scene::to_string(scene::effect_of(problem));
+    const auto& result = summary[name];
+    fmt::print("{}: energy = {:.17g}, {} {} steps, KKT residual {:.2e}, contact set length {:.4f}\n", name,
                result["energy"].get<double>(), result["solver"]["iterations"].get<int>(),
                result["solver"]["method"].get<std::string>(), result["solver"]["kkt_residual"].get<double>(),
                result["contact_set_length"].get<double>());
@@ -99,7 +85,7 @@ void add_solve_command(CLI::App& app, CommandAction& action) {
   auto* command = app.add_subcommand(
       "solve", "Run a scene's effects (contact problems (9), (13), (15), infsup, convergence) and write its outputs");
   auto o = std::make_shared<SolveOptions>();
-  command->add_option("scene", o->scene, "Scene file (TOML); keys in studies/README.md")
+  command->add_option("scene", o->scene, "Scene file (TOML); keys in docs/scene_keys.md")
       ->required()
       ->check(CLI::ExistingFile);
   command->add_option("--out", o->out, "Output folder")->capture_default_str();

@@ -36,7 +36,7 @@ void add_sweep_command(CLI::App& app, CommandAction& action) {
       const auto sweep = studies::read_stability_sweep(*study_file);
       io::ensure_writable_directory(*out_dir);
       const auto alpha_csv = std::filesystem::path(*out_dir) / "alpha.csv";
-      const auto [rank, size] = mpi_rank_and_size();
+      const int rank = mpi_rank_and_size().first, size = mpi_rank_and_size().second;
       // One sweep per folder at a time (rank 0 holds the lock until the process ends).
       std::unique_ptr<studies::FolderLock> lock;
       run_on_all_ranks_agreeing([&] {

@@ -72,7 +72,7 @@ CondensedFactor::CondensedFactor(const space::H1Space& space, double stiffness_w
   const int n_cells = space.mesh().n_cells(), n_skeleton = space.n_skeleton_dofs();
   std::vector<char> contributes(n_cells, 1);
   if (distribution != linalg::Distribution::serial) {
-    const auto [rank, ranks] = mpi_rank_and_size();
+    const int rank = mpi_rank_and_size().first, ranks = mpi_rank_and_size().second;
     const std::vector<int> part_of_cell = mesh::bisect_cells(space.mesh(), ranks);
     for (int c = 0; c < n_cells; ++c) contributes[c] = part_of_cell[c] == rank;
   }

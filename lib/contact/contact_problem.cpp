@@ -48,9 +48,9 @@ ContactSolution solve_contact(const ContactSetup& setup) {
   if (!signorini && !setup.bound) throw InputError("friction problem: the friction bound s is missing");
 
   Stopwatch assembly_clock;
-  std::unique_ptr<norms::PrimalOperators> own_primal;
-  const norms::PrimalOperators& primal =
-      norms::shared_or_own(setup.primal, *setup.mesh, setup.cell_degrees, own_primal);
+  std::unique_ptr<operators::PrimalOperators> own_primal;
+  const operators::PrimalOperators& primal =
+      operators::shared_or_own(setup.primal, *setup.mesh, setup.cell_degrees, own_primal);
   OperatorLog* log = primal.log();
   const auto& space = primal.space();
   const auto& contact = primal.contact();
@@ -164,7 +164,7 @@ ContactSolution solve_contact(const ContactSetup& setup) {
   // S depends on the coupling alone (the nodal basis follows from the multiplier space's
   // layout, which the coupling's key holds): problems sharing B share S.
   const Eigen::MatrixXd& s =
-      primal.derived_matrix("S", norms::PrimalOperators::coupling_key(multipliers, coupling_name),
+      primal.derived_matrix("S", operators::PrimalOperators::coupling_key(multipliers, coupling_name),
                             [&] { return Eigen::MatrixXd(k_factor.schur_complement(coupling)); });
   const Eigen::VectorXd d = coupling * u_free - gap_offset;
   out.seconds.condensation = condensation_clock.seconds();

@@ -23,7 +23,7 @@
 #include "contact/qp_report.hpp"
 #include "mesh/boundary_mesh.hpp"
 #include "mesh/quad_mesh.hpp"
-#include "norms/primal_operators.hpp"
+#include "operators/primal_operators.hpp"
 
 namespace hpcontact::contact {
 
@@ -62,7 +62,7 @@ struct ContactSetup {
   /// Optional: the operators of S^p(T_h) shared with other computations (α of the same pairing),
   /// built here when absent. Must belong to (mesh, cell_degrees). Its log, if any, records what
   /// this solve builds.
-  const norms::PrimalOperators* primal = nullptr;
+  const operators::PrimalOperators* primal = nullptr;
 };
 
 struct ContactSolution {

@@ -19,7 +19,7 @@ bool agreed = false;
 bool failure_agreed() { return agreed; }
 
 void run_on_all_ranks_agreeing(const std::function<void()>& work) {
-  const auto [rank, size] = mpi_rank_and_size();
+  const int rank = mpi_rank_and_size().first, size = mpi_rank_and_size().second;
   if (size == 1) {
     work();
     return;

@@ -9,7 +9,7 @@
 #include "basis/quadrature.hpp"
 #include "core/error.hpp"
 #include "core/timer.hpp"
-#include "norms/primal_operators.hpp"
+#include "operators/primal_operators.hpp"
 #include "mesh/contact_boundary.hpp"
 #include "space/multiplier_space.hpp"
 
@@ -74,9 +74,9 @@ InfSupOperators assemble_infsup_operators(const InfSupSetup& setup) {
 
   InfSupOperators out;
   // A_G factorized with the whole Γ_C trace last: S_G comes from the factor's trailing block.
-  std::unique_ptr<norms::PrimalOperators> own_primal;
-  const norms::PrimalOperators& primal =
-      norms::shared_or_own(setup.primal, *setup.mesh, setup.cell_degrees, own_primal);
+  std::unique_ptr<operators::PrimalOperators> own_primal;
+  const operators::PrimalOperators& primal =
+      operators::shared_or_own(setup.primal, *setup.mesh, setup.cell_degrees, own_primal);
   const auto& space = primal.space();
   const auto& contact = primal.contact();
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);

@@ -12,7 +12,7 @@
 #include "mesh/boundary_mesh.hpp"
 #include "mesh/quad_mesh.hpp"
 #include "norms/gram_ladder.hpp"
-#include "norms/primal_operators.hpp"
+#include "operators/primal_operators.hpp"
 
 namespace hpcontact::infsup {
 
@@ -37,7 +37,7 @@ struct InfSupSetup {
   // Optional parts shared with other computations (built here when absent): a contact solve on the
   // same T_h, or the points of a sweep. They must belong to this setup: `primal` to (mesh,
   // cell_degrees), `grams` to (boundary_mesh, segment_degrees, norm).
-  const norms::PrimalOperators* primal = nullptr;
+  const operators::PrimalOperators* primal = nullptr;
   const norms::GramLadder* grams = nullptr;
 };
 

@@ -39,6 +39,18 @@ std::string TomlTable::qualified(const std::string& key) const {
   return prefix_.empty() ? key : prefix_ + "." + key;
 }
 
+std::string TomlTable::origin(const std::string& key) const {
+  if (origins_) {
+    const auto found = origins_->find(qualified(key));
+    if (found != origins_->end()) return found->second;
+  }
+  return file_;
+}
+
+void TomlTable::set_origins(std::map<std::string, std::string> origins) {
+  origins_ = std::make_shared<const std::map<std::string, std::string>>(std::move(origins));
+}
+
 bool TomlTable::has(const std::string& key) const {
   asked_.insert(key);
   return table_ && table_->contains(key);
@@ -46,7 +58,7 @@ bool TomlTable::has(const std::string& key) const {
 
 void TomlTable::fail(const std::string& key, const std::string& value,
                      const std::string& allowed) const {
-  throw_bad_input(file_, qualified(key), value, allowed);
+  throw_bad_input(origin(key), qualified(key), value, allowed);
 }
 
 std::string TomlTable::value_text(const std::string& key) const {
@@ -223,11 +235,15 @@ const toml::table& TomlTable::raw() const {
 TomlTable TomlTable::table(const std::string& key, bool required) const {
   if (!has(key)) {
     if (required) fail(key, "(missing)", "a table [" + qualified(key) + "] is required");
-    return TomlTable(root_, nullptr, file_, qualified(key));
+    TomlTable absent(root_, nullptr, file_, qualified(key));
+    absent.origins_ = origins_;
+    return absent;
   }
   const auto* node = table_->get(key);
   if (!node->is_table()) fail(key, value_text(key), "must be a table [" + qualified(key) + "]");
-  return TomlTable(root_, node->as_table(), file_, qualified(key));
+  TomlTable sub(root_, node->as_table(), file_, qualified(key));
+  sub.origins_ = origins_;
+  return sub;
 }
 
 std::vector<TomlTable> TomlTable::table_array(const std::string& key, bool required) const {

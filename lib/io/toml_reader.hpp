@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <map>
 #include <memory>
 #include <optional>
 #include <set>
@@ -24,6 +25,12 @@ class TomlTable {
             std::string prefix);
 
   const std::string& file() const { return file_; }
+  /// Where a key's value came from, for messages: the file, or what replaced the file's value
+  /// (e.g. "hpcontact solve --p"), as recorded by `set_origins`.
+  std::string origin(const std::string& key) const;
+  /// Dotted key (e.g. "discretization.p") → origin of its value, for keys that did not come from
+  /// the file. Tables taken from this one share the map.
+  void set_origins(std::map<std::string, std::string> origins);
   /// Dotted name of a key of this table, e.g. "runs[1].p".
   std::string qualified(const std::string& key) const;
   bool has(const std::string& key) const;
@@ -75,6 +82,7 @@ class TomlTable {
   const toml::table* table_;
   std::string file_;
   std::string prefix_;
+  std::shared_ptr<const std::map<std::string, std::string>> origins_;
   mutable std::set<std::string> asked_;
 };
 

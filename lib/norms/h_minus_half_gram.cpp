@@ -170,7 +170,7 @@ ExtensionReferenceFactor::ExtensionReferenceFactor(const mesh::QuadMesh& mesh, c
     }
   }
   for (int& p : degrees) p += reference.extra_degree;
-  operators_ = std::make_unique<PrimalOperators>(*fine_, std::move(degrees));
+  operators_ = std::make_unique<operators::PrimalOperators>(*fine_, std::move(degrees));
   operators_->gram_factor();
 }
 

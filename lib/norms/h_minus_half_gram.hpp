@@ -21,7 +21,7 @@
 #include <memory>
 
 #include "mesh/contact_boundary.hpp"
-#include "norms/primal_operators.hpp"
+#include "operators/primal_operators.hpp"
 #include "space/multiplier_space.hpp"
 
 namespace hpcontact::norms {
@@ -68,7 +68,7 @@ class ExtensionReferenceFactor {
   /// `grading_points`: arc lengths on Γ_C of `mesh`.
   ExtensionReferenceFactor(const mesh::QuadMesh& mesh, const std::vector<int>& cell_degrees,
                            const ExtensionReference& reference, const std::vector<double>& grading_points = {});
-  const PrimalOperators& operators() const { return *operators_; }
+  const operators::PrimalOperators& operators() const { return *operators_; }
   /// Whether S_ref is graded towards every grading point (they are vertices of T_h refined at most
   /// twice more, with disjoint stars). Without it α converges algebraically, slowly, and the
   /// difference of two levels no longer bounds the error.
@@ -77,7 +77,7 @@ class ExtensionReferenceFactor {
  private:
   bool graded_ = false;
   std::unique_ptr<mesh::QuadMesh> fine_;
-  std::unique_ptr<PrimalOperators> operators_;
+  std::unique_ptr<operators::PrimalOperators> operators_;
 };
 
 /// Dense, symmetric positive definite, shape (n_multiplier_dofs, n_multiplier_dofs).

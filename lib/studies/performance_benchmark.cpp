@@ -30,7 +30,7 @@ PerformanceBenchmark read_performance_benchmark(const std::string& path) {
   out.p = static_cast<int>(table.integer("p", 1, 20));
   out.pc = static_cast<int>(table.integer("pC", 0, 19));
   out.ratio = table.string_list("ratio", std::vector<std::string>{"1/2"}).front();
-  const double ratio = parse_ratio(out.ratio, path + ": key 'benchmark.ratio'");
+  const double ratio = scene::parse_ratio(out.ratio, path, "benchmark.ratio").value;
   for (long long n : table.integer_list("n", 2, 4096)) {
     const double m = n * ratio;
     if (n % 2 != 0 || std::abs(m - std::round(m)) > 1e-9 || m < 1)
@@ -79,7 +79,7 @@ double time_linear_solve(const Eigen::VectorXd& rhs, const Arguments&... argumen
 std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& benchmark,
                                                     const std::function<void(const BenchmarkRow&)>& on_row) {
   std::vector<BenchmarkRow> rows;
-  const double ratio = parse_ratio(benchmark.ratio, benchmark.file);
+  const double ratio = scene::parse_ratio(benchmark.ratio, benchmark.file, "benchmark.ratio").value;
   auto add = [&](BenchmarkRow row) {
     row.ratio = row.seconds / row.seconds_baseline;
     row.peak_rss_mb = peak_rss_mb();

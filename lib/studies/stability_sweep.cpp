@@ -21,36 +21,14 @@
 #include "io/toml_reader.hpp"
 #include "mesh/boundary_mesh.hpp"
 #include "mesh/contact_boundary.hpp"
-#include "studies/scene_discretization.hpp"
+#include "driver/scene_discretization.hpp"
+#include "scene/scene_mesh.hpp"
 #include "studies/sweep_rows.hpp"
 #include "norms/h_minus_half_gram.hpp"
-#include "norms/primal_operators.hpp"
+#include "operators/primal_operators.hpp"
 #include "space/multiplier_space.hpp"
 
 namespace hpcontact::studies {
-
-double parse_ratio(const std::string& text, const std::string& where) {
-  double value = NAN;
-  try {
-    std::size_t used = 0;
-    const auto slash = text.find('/');
-    if (slash == std::string::npos) {
-      value = std::stod(text, &used);
-      if (used != text.size()) value = NAN;
-    } else {
-      const double numerator = std::stod(text.substr(0, slash), &used);
-      const bool whole_numerator = used == slash;
-      const double denominator = std::stod(text.substr(slash + 1), &used);
-      value = (whole_numerator && used == text.size() - slash - 1) ? numerator / denominator : NAN;
-    }
-  } catch (const std::exception&) {
-    value = NAN;
-  }
-  if (!(value > 0.0) || !std::isfinite(value))
-    throw_bad_input(where, "ratio", "\"" + text + "\"",
-                    "must be a positive number or fraction such as \"2/3\"");
-  return value;
-}
 
 namespace {
 
@@ -58,23 +36,28 @@ std::vector<int> to_int(const std::vector<long long>& values) {
   return {values.begin(), values.end()};
 }
 
-/// The scene of one point: the level's scene with the sweep's p, p_C (replacing degree rules) and
-/// ratio (replacing the scene's m, ratio or breakpoints) where the sweep gives them.
-io::Scene point_scene(io::Scene scene, int p, int pc, const std::string& ratio) {
-  if (p > 0) {
-    scene.p = p;
-    scene.p_rule.clear();
-  }
-  if (pc >= 0) {
-    scene.pc = pc;
-    scene.pc_rule.clear();
-  }
-  if (!ratio.empty()) {
-    scene.ratio = ratio;
+/// The scene of one point: the level's scene with the sweep's p, p_C (replacing degree rules),
+/// ratio (replacing the scene's m, ratio or breakpoints) where the sweep gives them, and the
+/// point's pairing and norm.
+scene::Scene point_scene(scene::Scene scene, int p, int pc, const std::optional<scene::Ratio>& ratio,
+                         infsup::PairingProblem problem = infsup::PairingProblem::signorini,
+                         infsup::GramNorm norm = infsup::GramNorm::interpolation) {
+  if (p > 0) scene.p = scene::Degree{p, {}};
+  if (pc >= 0) scene.pc = scene::Degree{pc, {}};
+  if (ratio) {
+    scene.ratio = *ratio;
     scene.m = 0;
     scene.breakpoints.clear();
   }
+  scene.problem = problem;
+  scene.norm = norm;
   return scene;
+}
+
+/// The sweep's ratios, or one empty choice: the scene's own contact mesh.
+std::vector<std::optional<scene::Ratio>> ratio_choices(const StabilitySweep& sweep) {
+  if (sweep.ratios.empty()) return {std::nullopt};
+  return {sweep.ratios.begin(), sweep.ratios.end()};
 }
 
 /// "level 2 (domain.n_x=24 domain.n_y=24)", for messages and progress.
@@ -95,17 +78,17 @@ StabilitySweep read_stability_sweep(const std::string& path) {
     throw_bad_input(path, "sweep.scene", table.string("scene"), "a scene file, relative to the sweep file (" + base + " does not exist)");
   table.has("set");
   table.has("levels");
-  sweep.levels = io::scene_variants(base, table.table("set"), table.table("levels"), path + ": key 'sweep.levels'");
+  sweep.levels = scene::scene_variants(base, table.table("set"), table.table("levels"), path + ": key 'sweep.levels'");
   if (table.has("p")) sweep.degrees = to_int(table.integer_list("p", 1, 20));
   if (table.has("pC")) sweep.multiplier_degrees = to_int(table.integer_list("pC", 0, 19));
   sweep.pc_below_p = table.choice("pc_rule", {"below_p", "all"}, "below_p") == "below_p";
-  sweep.ratios = table.string_list("ratio", std::vector<std::string>{});
-  for (const auto& r : sweep.ratios) parse_ratio(r, path + ": key 'sweep.ratio'");
-  const io::Scene& first = sweep.levels.front().scene;
-  sweep.norms = table.string_list("norm", std::vector<std::string>{first.norm});
-  for (const auto& norm : sweep.norms) infsup::parse_gram_norm(norm, path + ": key 'sweep.norm'");
-  sweep.problems = table.string_list("problem", std::vector<std::string>{first.problem});
-  for (const auto& problem : sweep.problems) infsup::parse_pairing_problem(problem, path + ": key 'sweep.problem'");
+  for (const auto& r : table.string_list("ratio", std::vector<std::string>{}))
+    sweep.ratios.push_back(scene::parse_ratio(r, path, "sweep.ratio"));
+  const scene::Scene& first = sweep.levels.front().scene;
+  for (const auto& norm : table.string_list("norm", std::vector<std::string>{infsup::to_string(first.norm)}))
+    sweep.norms.push_back(infsup::parse_gram_norm(norm, path + ": key 'sweep.norm'"));
+  for (const auto& problem : table.string_list("problem", std::vector<std::string>{infsup::to_string(first.problem)}))
+    sweep.problems.push_back(infsup::parse_pairing_problem(problem, path + ": key 'sweep.problem'"));
   sweep.fit_levels = static_cast<int>(table.integer("fit_levels", 2, 20, 3));
   sweep.eigensolver = table.choice("eigensolver", {"slepc", "dense"}, "slepc");
   sweep.alpha_tolerance = table.number_in("alpha_tol", 1e-12, 0.1, 1e-4);
@@ -116,15 +99,16 @@ StabilitySweep read_stability_sweep(const std::string& path) {
   root.reject_unknown_keys();
 
   // Every level's meshes, degrees and data, checked now: a sweep does not stop half-way on input.
-  const bool friction = std::find(sweep.problems.begin(), sweep.problems.end(), "friction") != sweep.problems.end();
-  const std::vector<std::string> ratios = sweep.ratios.empty() ? std::vector<std::string>{""} : sweep.ratios;
+  const bool friction = std::find(sweep.problems.begin(), sweep.problems.end(), infsup::PairingProblem::friction) !=
+                        sweep.problems.end();
+  const auto ratios = ratio_choices(sweep);
   for (std::size_t level = 0; level < sweep.levels.size(); ++level) {
-    const io::Scene& scene = sweep.levels[level].scene;
+    const scene::Scene& scene = sweep.levels[level].scene;
     try {
       if (friction && scene.friction_bound.empty())
         throw_bad_input(scene.file, "data.s", "(missing)",
                         "the friction pairing (22) of sweep.problem needs the friction bound s");
-      const auto mesh = io::build_scene_mesh(scene);
+      const auto mesh = scene::build_scene_mesh(scene);
       const mesh::ContactBoundary contact(mesh);
       StabilitySweep::LevelFacts facts;
       facts.cells = mesh.n_cells();
@@ -132,19 +116,19 @@ StabilitySweep read_stability_sweep(const std::string& path) {
       const auto nodes = contact.breakpoints();
       facts.contact_h_min = nodes.back() - nodes.front();
       for (std::size_t k = 0; k + 1 < nodes.size(); ++k) facts.contact_h_min = std::min(facts.contact_h_min, nodes[k + 1] - nodes[k]);
-      const auto cell_degrees = io::scene_cell_degrees(scene, mesh);
+      const auto cell_degrees = scene::scene_cell_degrees(scene, mesh);
       facts.scene_p = *std::min_element(cell_degrees.begin(), cell_degrees.end());
       for (const auto& ratio : ratios) {
         const auto at_point = point_scene(scene, 0, -1, ratio);
         std::optional<mesh::BoundaryMesh> built;
         try {
-          built.emplace(io::build_scene_boundary_mesh(at_point, contact));
+          built.emplace(scene::build_scene_boundary_mesh(at_point, contact));
         } catch (const InputError& error) {
-          if (ratio.empty()) throw;
-          throw InputError(fmt::format("with sweep.ratio = {}: {}", ratio, error.what()));
+          if (!ratio) throw;
+          throw InputError(fmt::format("with sweep.ratio = {}: {}", ratio->text, error.what()));
         }
         const auto& boundary_mesh = *built;
-        const auto segment_degrees = io::scene_segment_degrees(at_point, contact, boundary_mesh);
+        const auto segment_degrees = scene::scene_segment_degrees(at_point, contact, boundary_mesh);
         facts.segments.push_back(boundary_mesh.n_segments());
         facts.scene_pc.push_back(*std::max_element(segment_degrees.begin(), segment_degrees.end()));
       }
@@ -188,7 +172,7 @@ std::vector<std::map<std::string, std::string>> read_csv(const std::filesystem::
 
 // Every rank's (index, line) pairs, on rank 0 sorted by index (empty elsewhere).
 std::vector<std::pair<int, std::string>> gather_rows_on_rank_zero(const std::vector<std::pair<int, std::string>>& rows) {
-  const auto [rank, size] = mpi_rank_and_size();
+  const int rank = mpi_rank_and_size().first, size = mpi_rank_and_size().second;
   std::string packed;
   for (const auto& [index, line] : rows) packed += std::to_string(index) + '\t' + line;  // line ends in '\n'
   int length = static_cast<int>(packed.size());
@@ -215,9 +199,11 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
                          const std::function<void(int, int, const std::string&)>& progress) {
   // A point: a level, the sweep's p and p_C (0 and -1: the scene's), a ratio index into
   // `ratios` (the scene's contact mesh when the sweep gives none), a problem and a norm.
-  const std::vector<std::string> ratios = sweep.ratios.empty() ? std::vector<std::string>{""} : sweep.ratios;
+  const auto ratios = ratio_choices(sweep);
   struct Point {
-    std::string problem, norm;
+    std::string problem, norm;  ///< labels in alpha.csv
+    infsup::PairingProblem pairing;
+    infsup::GramNorm gram;
     std::size_t level, ratio;
     int p, pc;            ///< as given to the scene (0, -1: the scene's own)
     int reported_p, reported_pc;
@@ -240,7 +226,7 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
             for (std::size_t r = 0; r < ratios.size(); ++r) {
               const int reported_p = p > 0 ? p : facts.scene_p, reported_pc = pc >= 0 ? pc : facts.scene_pc[r];
               if (sweep.pc_below_p && reported_pc >= reported_p) continue;
-              points.push_back({problem, infsup::to_string(infsup::parse_gram_norm(norm, sweep.file)), level, r, p, pc,
+              points.push_back({infsup::to_string(problem), infsup::to_string(norm), problem, norm, level, r, p, pc,
                                 reported_p, reported_pc, facts.segments[r]});
               multiplier_degrees_used[{level, r}].insert(pc);
             }
@@ -285,7 +271,7 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
       if (!done.contains(key_of(points[g.last]))) {
         g.todo = true;
         ++todo_points;
-        g.extension = g.extension || points[g.last].norm == infsup::to_string(infsup::GramNorm::extension);
+        g.extension = g.extension || points[g.last].gram == infsup::GramNorm::extension;
       }
       ++g.last;
     }
@@ -377,11 +363,11 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
     }
     const std::size_t level = points[first].level;
     if (level != shared.level) shared = LevelShared{level, {}};  // the last level's are not needed again
-    const io::Scene level_scene = point_scene(sweep.levels[level].scene, points[first].p, -1, "");
-    const auto mesh = io::build_scene_mesh(level_scene);
+    const scene::Scene level_scene = point_scene(sweep.levels[level].scene, points[first].p, -1, std::nullopt);
+    const auto mesh = scene::build_scene_mesh(level_scene);
     const mesh::ContactBoundary contact(mesh);
-    const std::vector<int> cell_degrees = io::scene_cell_degrees(level_scene, mesh);
-    const norms::PrimalOperators primal(mesh, cell_degrees);
+    const std::vector<int> cell_degrees = scene::scene_cell_degrees(level_scene, mesh);
+    const operators::PrimalOperators primal(mesh, cell_degrees);
     for (std::size_t k = first; k < last; ++k) {
       const Point& point = points[k];
       ++index;
@@ -390,18 +376,18 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
       if (progress)
         progress(index, static_cast<int>(points.size()),
                  fmt::format("{} {} p={} pC={} {}{}", point.problem, point.norm, point.reported_p, point.reported_pc,
-                             level_name(sweep, level), ratios[point.ratio].empty() ? "" : " h/H=" + ratios[point.ratio]));
-      const io::Scene scene = point_scene(level_scene, 0, point.pc, ratios[point.ratio]);
-      const auto boundary = io::build_scene_boundary_mesh(scene, contact);
-      auto setup = infsup_setup_of(scene, mesh, cell_degrees, boundary, io::scene_segment_degrees(scene, contact, boundary),
-                                   point.problem, point.norm, primal);
+                             level_name(sweep, level), ratios[point.ratio] ? " h/H=" + ratios[point.ratio]->text : ""));
+      const scene::Scene scene = point_scene(level_scene, 0, point.pc, ratios[point.ratio], point.pairing, point.gram);
+      const auto boundary = scene::build_scene_boundary_mesh(scene, contact);
+      auto setup = driver::infsup_setup_of(scene, mesh, cell_degrees, boundary, scene::scene_segment_degrees(scene, contact, boundary),
+                                   primal);
       setup.alpha_tolerance = sweep.alpha_tolerance;
       auto& envelope = shared.grams[{point.norm, point.ratio}];
       if (!envelope.multipliers) {
         envelope.boundary = std::make_unique<mesh::BoundaryMesh>(boundary);
         std::vector<int> degrees(boundary.n_segments(), 0);
         for (int pc : multiplier_degrees_used[{level, point.ratio}]) {
-          const auto at_pc = io::scene_segment_degrees(point_scene(level_scene, 0, pc, ratios[point.ratio]), contact, boundary);
+          const auto at_pc = scene::scene_segment_degrees(point_scene(level_scene, 0, pc, ratios[point.ratio]), contact, boundary);
           for (std::size_t k = 0; k < degrees.size(); ++k) degrees[k] = std::max(degrees[k], at_pc[k]);
         }
         envelope.multipliers = std::make_unique<space::MultiplierSpace>(*envelope.boundary, std::move(degrees));
@@ -409,15 +395,15 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
             setup.norm == infsup::GramNorm::interpolation
                 ? norms::interpolation_gram_ladder(*envelope.multipliers)
                 : norms::extension_gram_ladder(
-                      mesh, io::scene_cell_degrees(point_scene(level_scene, largest_p, -1, ""), mesh),
+                      mesh, scene::scene_cell_degrees(point_scene(level_scene, largest_p, -1, std::nullopt), mesh),
                       *envelope.multipliers));
       }
       const norms::GramLadder grams = norms::restricted_ladder(
           *envelope.ladder, *envelope.multipliers, space::MultiplierSpace(boundary, setup.segment_degrees));
       setup.grams = &grams;
       const auto result = infsup::analyse_infsup(setup, backend);
-      const double ratio = ratios[point.ratio].empty() ? static_cast<double>(point.m) / sweep.level_facts[level].contact_edges
-                                                       : parse_ratio(ratios[point.ratio], sweep.file);
+      const double ratio = ratios[point.ratio] ? ratios[point.ratio]->value
+                                               : static_cast<double>(point.m) / sweep.level_facts[level].contact_edges;
       io::CsvTable row(alpha_columns());
       row.add_row({point.problem, point.norm, static_cast<long long>(point.reported_p),
                    static_cast<long long>(point.reported_pc), static_cast<long long>(level + 1),

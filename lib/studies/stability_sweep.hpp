@@ -9,7 +9,8 @@
 
 #include "infsup/infsup_analysis.hpp"
 #include "io/csv_writer.hpp"
-#include "io/scene_variants.hpp"
+#include "scene/ratio.hpp"
+#include "scene/scene_variants.hpp"
 
 namespace hpcontact::studies {
 
@@ -23,7 +24,7 @@ namespace hpcontact::studies {
 ///           fit_levels, eigensolver ("slepc" | "dense"), alpha_tol (relative error of every α)
 struct StabilitySweep {
   std::string file;
-  std::vector<io::SceneVariant> levels;  ///< the base scene at each level, coarsest first
+  std::vector<scene::SceneVariant> levels;  ///< the base scene at each level, coarsest first
   /// What each level's meshes are, found when the file is read (resuming and scheduling need
   /// them before anything is built): per level, and per ratio (one entry, the scene's contact
   /// mesh, when `ratios` is empty).
@@ -36,8 +37,9 @@ struct StabilitySweep {
   std::vector<LevelFacts> level_facts;
   std::vector<int> degrees, multiplier_degrees;  ///< empty: the scene's p (p_C) or degree rule
   bool pc_below_p = true;
-  std::vector<std::string> ratios;  ///< as written ("1/2"), parsed where used; empty: the scene's
-  std::vector<std::string> norms, problems;
+  std::vector<scene::Ratio> ratios;  ///< empty: the scene's contact mesh
+  std::vector<infsup::GramNorm> norms;
+  std::vector<infsup::PairingProblem> problems;
   int fit_levels = 3;
   std::string eigensolver = "slepc";
   double alpha_tolerance = 1e-4;
@@ -47,9 +49,6 @@ struct StabilitySweep {
 /// ratio) and data (s for the friction problem) before anything is computed.
 /// @throws InputError naming file, key, value and the allowed range, and the level.
 StabilitySweep read_stability_sweep(const std::string& path);
-
-/// A ratio h/H given as a number or fraction ("1", "0.5", "2/3"). @throws InputError.
-double parse_ratio(const std::string& text, const std::string& where);
 
 /// Columns of alpha.csv (one row per point). `level` counts the sweep's levels from 1, `n` is
 /// the number of edges of T_h on Γ_C, `m` the number of segments of T_{C,H}, h the longest edge

@@ -13,8 +13,8 @@
 #include "io/atomic_file.hpp"
 #include "io/csv_writer.hpp"
 #include "io/toml_reader.hpp"
-#include "studies/free_boundary_fit.hpp"
-#include "studies/scene_discretization.hpp"
+#include "driver/free_boundary_fit.hpp"
+#include "driver/scene_discretization.hpp"
 
 namespace hpcontact::studies {
 namespace {
@@ -31,18 +31,30 @@ std::vector<std::string> problem_list(const io::TomlTable& table, const std::str
 }
 
 /// The problem's effect only, so that parse-time checks ask for the data this problem needs.
-io::Scene for_problem(io::Scene scene, const std::string& problem) {
-  scene.effects = {problem};
+scene::Scene for_problem(scene::Scene scene, const std::string& problem) {
+  scene.effects = {*scene::effect_named(problem)};  // the name is checked when the study is read
   return scene;
+}
+
+/// The scene rules between effects and data, reported against the study.
+void check_effects(const scene::Scene& scene, const std::string& where) {
+  try {
+    scene::check_effects(scene);
+  } catch (const InputError& error) {
+    throw InputError(fmt::format("{}: {}", where, error.what()));
+  }
+}
+
+contact::ContactProblem problem_named(const std::string& problem) {
+  return *scene::contact_problem_of(*scene::effect_named(problem));
 }
 
 /// One solve, timed as the fastest of `repeats` when it is short (timer noise), kept with its
 /// discretization for the λ comparison.
-SceneContactRun timed_solve(const io::Scene& scene, const std::string& problem, int repeats) {
-  const ValueOrigin origin{scene.file, "solve.constraint_points"};
-  auto run = solve_scene_contact(scene, contact_problem_of(problem), origin);
+driver::SceneContactRun timed_solve(const scene::Scene& scene, const std::string& problem, int repeats) {
+  auto run = driver::solve_scene_contact(scene, problem_named(problem));
   for (int k = 1; k < repeats && run.seconds < 1.0; ++k)
-    run.seconds = std::min(run.seconds, solve_scene_contact(scene, contact_problem_of(problem), origin).seconds);
+    run.seconds = std::min(run.seconds, driver::solve_scene_contact(scene, problem_named(problem)).seconds);
   return run;
 }
 
@@ -75,13 +87,13 @@ WorkPrecisionStudy read_work_precision_study(const std::string& path) {
     reference.reject_unknown_keys();
     // With `vary`, the last variant is the reference and the one before it the comparison for its
     // accuracy; without, the comparison is the reference one uniform refinement coarser.
-    auto variants = io::scene_variants(base, reference.table("set"), reference.table("vary"), where);
+    auto variants = scene::scene_variants(base, reference.table("set"), reference.table("vary"), where);
     for (auto& variant : variants) {
       variant.scene = for_problem(variant.scene, problem);
-      io::check_effects(variant.scene, where);
+      check_effects(variant.scene, where);
     }
     const auto scene = variants.back().scene;
-    if (fit && !scene.rectangle)
+    if (fit && !scene.is_rectangle())
       throw_bad_input(path, "reference.fit_free_boundary", "true",
                       "a rectangle domain: the located points become vertices by moving the nearest nodes, "
                       "which a Gmsh mesh does not allow");
@@ -111,9 +123,9 @@ WorkPrecisionStudy read_work_precision_study(const std::string& path) {
     family.has("vary");
     family.reject_unknown_keys();
     const std::string where = fmt::format("{}: family '{}'", path, f.name);
-    f.variants = io::scene_variants(base, family.table("set"), family.table("vary"), where);
+    f.variants = scene::scene_variants(base, family.table("set"), family.table("vary"), where);
     for (const auto& problem : f.problems)
-      for (const auto& variant : f.variants) io::check_effects(for_problem(variant.scene, problem), where);
+      for (const auto& variant : f.variants) check_effects(for_problem(variant.scene, problem), where);
     study.families.push_back(std::move(f));
   }
   return study;
@@ -139,11 +151,11 @@ void run_work_precision_study(const WorkPrecisionStudy& study, const std::filesy
     const auto& reference = *std::find_if(study.references.begin(), study.references.end(),
                                           [&](const auto& r) { return r.problem == problem; });
     say(problem + ": reference");
-    io::Scene fine_scene = reference.scene, coarse_scene = reference.coarser;
+    scene::Scene fine_scene = reference.scene, coarse_scene = reference.coarser;
     std::string free_boundary;
     double free_boundary_moved = 0.0;
     if (reference.fit_free_boundary) {
-      const auto fit = fit_free_boundary(fine_scene, {contact_problem_of(problem)}, {fine_scene.file, "solve.constraint_points"});
+      const auto fit = driver::fit_free_boundary(fine_scene, {problem_named(problem)});
       fine_scene = fit.scene;
       coarse_scene.grading_points.insert(coarse_scene.grading_points.end(), fit.points.begin(), fit.points.end());
       for (const auto& point : fit.points)
@@ -154,7 +166,7 @@ void run_work_precision_study(const WorkPrecisionStudy& study, const std::filesy
     say(problem + ": reference, coarser");
     const auto coarse = timed_solve(coarse_scene, problem, 1);
     const double accuracy_energy = std::abs(fine.solution.energy - coarse.solution.energy);
-    const auto weight = multiplier_error_weight(reference.scene, *fine.discretization, contact_problem_of(problem));
+    const auto weight = driver::multiplier_error_weight(reference.scene, *fine.discretization, problem_named(problem));
     const double accuracy_lambda = contact::multiplier_l2_distance(
         *coarse.discretization->multipliers, coarse.solution.lambda_legendre, *fine.discretization->multipliers,
         fine.solution.lambda_legendre, weight);
@@ -178,7 +190,7 @@ void run_work_precision_study(const WorkPrecisionStudy& study, const std::filesy
         const double error_lambda = contact::multiplier_l2_distance(*d.multipliers, run.solution.lambda_legendre,
                                                                     *fine.discretization->multipliers,
                                                                     fine.solution.lambda_legendre, weight);
-        const auto p = scene.p_label(), pc = scene.pc_label();
+        const auto p = scene.p.label(), pc = scene.pc.label();
         const auto n = static_cast<long long>(d.contact->edges().size());
         const auto ndofs = static_cast<long long>(run.solution.u.size());
         rows.add_row({problem, p, pc, n, static_cast<long long>(d.boundary_mesh->n_segments()), ndofs,

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "io/scene_variants.hpp"
+#include "scene/scene_variants.hpp"
 
 namespace hpcontact::studies {
 
@@ -18,7 +18,7 @@ namespace hpcontact::studies {
 ///   [study]      scene (base scene, relative to the study file), problems, tolerances, repeats
 ///   [[reference]] problem, set (scene keys), coarser (scene keys of the accuracy estimate; default
 ///                one refinement less), fit_free_boundary
-///   [[family]]   name, problems (default: all), set, vary (see io/scene_variants.hpp)
+///   [[family]]   name, problems (default: all), set, vary (see scene/scene_variants.hpp)
 struct WorkPrecisionStudy {
   std::string file;
   std::vector<std::string> problems;
@@ -28,7 +28,7 @@ struct WorkPrecisionStudy {
     std::string problem;
     /// `coarser`: the scene with the reference's `coarser` keys applied (default: one uniform
     /// refinement less), for the accuracy estimate.
-    io::Scene scene, coarser;
+    scene::Scene scene, coarser;
     /// Grade both towards the free boundary, located iteratively (studies::fit_free_boundary).
     bool fit_free_boundary = false;
   };
@@ -36,7 +36,7 @@ struct WorkPrecisionStudy {
   struct Family {
     std::string name;
     std::vector<std::string> problems;
-    std::vector<io::SceneVariant> variants;
+    std::vector<scene::SceneVariant> variants;
   };
   std::vector<Family> families;
 };
@@ -48,7 +48,7 @@ WorkPrecisionStudy read_work_precision_study(const std::string& path);
 ///   work_precision.csv  problem,p,pC,n,m,ndofs,nmult,error_energy,error_lambda,seconds,family,energy
 ///                       (n: edges of T_h on Γ_C, m: segments of T_{C,H}; error_energy = |E(u_h) − E_ref|,
 ///                       error_lambda = ‖λ_H − λ_ref‖_{L²(Γ_C)} for (9), (15), ‖s(λ_H − λ_ref)‖_{L²(Γ_C)} for (13)
-///                       (studies::multiplier_error_weight); seconds: wall time meshes → u)
+///                       (driver::multiplier_error_weight); seconds: wall time meshes → u)
 ///   reference.csv       problem,energy,energy_coarser,accuracy_energy,accuracy_lambda,ndofs,seconds,
 ///                       free_boundary (fitted points "x y" separated by ";"), free_boundary_moved
 ///   cheapest.csv        problem,tolerance,verdict,family,p,pC,n,ndofs,error_energy,seconds: the fastest

@@ -6,12 +6,13 @@
 #include <string>
 
 #include "core/error.hpp"
-#include "io/scene.hpp"
+#include "scene/scene_mesh.hpp"
+#include "scene/scene_reader.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
   try {
-    hpcontact::io::parse_scene(text, "fuzz.toml");
+    hpcontact::scene::parse_scene(text, "fuzz.toml");
   } catch (const hpcontact::InputError&) {
     // the expected answer to bad input
   }

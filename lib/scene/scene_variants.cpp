@@ -1,5 +1,5 @@
 // Scene variants: base scene + replaced keys + jointly varied keys, re-parsed as scenes.
-#include "io/scene_variants.hpp"
+#include "scene/scene_variants.hpp"
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
@@ -7,8 +7,9 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "scene/scene_reader.hpp"
 
-namespace hpcontact::io {
+namespace hpcontact::scene {
 namespace {
 
 /// Copies `from` into `into`, descending into tables both have.
@@ -46,11 +47,11 @@ std::string value_text(const toml::node& node) {
 
 }  // namespace
 
-std::vector<SceneVariant> scene_variants(const std::string& base_path, const TomlTable& set, const TomlTable& vary,
+std::vector<SceneVariant> scene_variants(const std::string& base_path, const io::TomlTable& set, const io::TomlTable& vary,
                                          const std::string& where) {
   toml::table base;
   try {
-    base = toml::parse(read_text_file(base_path), base_path);
+    base = toml::parse(io::read_text_file(base_path), base_path);
   } catch (const toml::parse_error&) {
     read_scene(base_path);  // reports the error with line and column
   }
@@ -94,4 +95,4 @@ std::vector<SceneVariant> scene_variants(const std::string& base_path, const Tom
   return variants;
 }
 
-}  // namespace hpcontact::io
+}  // namespace hpcontact::scene

@@ -11,14 +11,14 @@
 
 #include "contact/contact_problem.hpp"
 #include "infsup/infsup_operators.hpp"
-#include "io/scene.hpp"
 #include "mesh/boundary_mesh.hpp"
 #include "mesh/contact_boundary.hpp"
 #include "mesh/quad_mesh.hpp"
-#include "norms/primal_operators.hpp"
+#include "operators/primal_operators.hpp"
+#include "scene/scene.hpp"
 #include "space/multiplier_space.hpp"
 
-namespace hpcontact::studies {
+namespace hpcontact::driver {
 
 struct SceneDiscretization {
   mesh::QuadMesh mesh;
@@ -30,37 +30,27 @@ struct SceneDiscretization {
 
 /// Builds the meshes and degrees. Held by pointer: its parts refer to each other.
 /// @throws InputError as the scene's builders do.
-std::unique_ptr<SceneDiscretization> discretize_scene(const io::Scene& scene);
-
-/// "signorini" → (9), "friction" → (13), "friction_s" → (15). @throws InputError otherwise.
-contact::ContactProblem contact_problem_of(const std::string& effect);
-
-/// Where the constraint-point count came from, for messages: the scene key or a command-line
-/// option.
-struct ValueOrigin {
-  std::string source, key;
-};
+std::unique_ptr<SceneDiscretization> discretize_scene(const scene::Scene& scene);
 
 /// The contact problem `problem` of the scene on `discretization` (data from the scene's
 /// expressions, s ≥ 0 checked where evaluated). `primal` must belong to the discretization.
-/// @throws InputError if the constraint points are fewer than p_C + 1 somewhere (naming `origin`).
-contact::ContactSetup contact_setup_of(const io::Scene& scene, const SceneDiscretization& discretization,
-                                       contact::ContactProblem problem, const norms::PrimalOperators& primal,
-                                       const ValueOrigin& origin);
+/// @throws InputError if the constraint points are fewer than p_C + 1 somewhere (naming where
+/// solve.constraint_points came from).
+contact::ContactSetup contact_setup_of(const scene::Scene& scene, const SceneDiscretization& discretization,
+                                       contact::ContactProblem problem, const operators::PrimalOperators& primal);
 
 /// The weight of the norm in which multiplier errors of `problem` are measured, as a function of
 /// the arc length on Γ_C: s for (13), where the data determine only sλ (λ itself not where s
 /// vanishes, so ‖λ_H − λ‖ would measure an undetermined part); none (L²) for (9) and (15).
-std::function<double(double)> multiplier_error_weight(const io::Scene& scene, const SceneDiscretization& discretization,
+std::function<double(double)> multiplier_error_weight(const scene::Scene& scene, const SceneDiscretization& discretization,
                                                       contact::ContactProblem problem);
 
-/// The inf-sup pairing `problem` ("signorini": (11), "friction": (22) with the scene's s) in the
-/// H^{-1/2} realization `norm` on T_h (`mesh`, `cell_degrees`) and T_{C,H} (`boundary_mesh`,
-/// `segment_degrees`); `primal` must belong to T_h. @throws InputError for a bad problem or norm.
-infsup::InfSupSetup infsup_setup_of(const io::Scene& scene, const mesh::QuadMesh& mesh, std::vector<int> cell_degrees,
+/// The inf-sup pairing of the scene ([infsup] problem: (11), or (22) with the scene's s) in its
+/// H^{-1/2} realization ([infsup] norm) on T_h (`mesh`, `cell_degrees`) and T_{C,H}
+/// (`boundary_mesh`, `segment_degrees`); `primal` must belong to T_h.
+infsup::InfSupSetup infsup_setup_of(const scene::Scene& scene, const mesh::QuadMesh& mesh, std::vector<int> cell_degrees,
                                     const mesh::BoundaryMesh& boundary_mesh, std::vector<int> segment_degrees,
-                                    const std::string& problem, const std::string& norm,
-                                    const norms::PrimalOperators& primal);
+                                    const operators::PrimalOperators& primal);
 
 /// One contact problem of a scene, solved from scratch with its own operators.
 struct SceneContactRun {
@@ -70,7 +60,7 @@ struct SceneContactRun {
 };
 
 /// Discretizes the scene and solves `problem`; operators built are recorded in `log` if given.
-SceneContactRun solve_scene_contact(const io::Scene& scene, contact::ContactProblem problem,
-                                    const ValueOrigin& origin, OperatorLog* log = nullptr);
+SceneContactRun solve_scene_contact(const scene::Scene& scene, contact::ContactProblem problem,
+                                    OperatorLog* log = nullptr);
 
-}  // namespace hpcontact::studies
+}  // namespace hpcontact::driver

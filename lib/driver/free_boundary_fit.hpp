@@ -7,13 +7,14 @@
 
 #include <vector>
 
-#include "io/scene.hpp"
-#include "studies/scene_discretization.hpp"
+#include "scene/scene_mesh.hpp"
+#include "scene/scene_reader.hpp"
+#include "driver/scene_discretization.hpp"
 
-namespace hpcontact::studies {
+namespace hpcontact::driver {
 
 struct FreeBoundaryFit {
-  io::Scene scene;                  ///< the input scene with the fitted points added to domain.grading_points
+  scene::Scene scene;                  ///< the input scene with the fitted points added to domain.grading_points
   std::vector<mesh::Point> points;  ///< the fitted free-boundary points, in order along Γ_C
   double moved = 0.0;               ///< arc length the points moved in the last iteration
   int solves = 0;  ///< rounds: each solves every problem once
@@ -27,7 +28,7 @@ struct FreeBoundaryFit {
 /// what the discrete multiplier can resolve and, the singularity being d^{3/2}, moves the energy
 /// by far less than 1e-12. @throws NumericalError if that takes more than `max_solves` solves;
 /// InputError if a point cannot be a grading point of the scene's mesh (too close to another).
-FreeBoundaryFit fit_free_boundary(const io::Scene& scene, const std::vector<contact::ContactProblem>& problems,
-                                  const ValueOrigin& origin, double tolerance = 1e-6, int max_solves = 12);
+FreeBoundaryFit fit_free_boundary(const scene::Scene& scene, const std::vector<contact::ContactProblem>& problems,
+                                  double tolerance = 1e-6, int max_solves = 12);
 
-}  // namespace hpcontact::studies
+}  // namespace hpcontact::driver

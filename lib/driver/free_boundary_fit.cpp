@@ -1,5 +1,5 @@
 // The free-boundary fitting loop.
-#include "studies/free_boundary_fit.hpp"
+#include "driver/free_boundary_fit.hpp"
 
 #include <fmt/format.h>
 
@@ -10,7 +10,7 @@
 #include "contact/free_boundary.hpp"
 #include "core/error.hpp"
 
-namespace hpcontact::studies {
+namespace hpcontact::driver {
 namespace {
 
 /// One point per cluster of transitions lying within one segment of T_{C,H} (or `resolution`) of
@@ -35,8 +35,8 @@ std::vector<double> cluster_transitions(const std::vector<contact::FreeBoundaryP
 
 }  // namespace
 
-FreeBoundaryFit fit_free_boundary(const io::Scene& scene, const std::vector<contact::ContactProblem>& problems,
-                                  const ValueOrigin& origin, double tolerance, int max_solves) {
+FreeBoundaryFit fit_free_boundary(const scene::Scene& scene, const std::vector<contact::ContactProblem>& problems,
+                                  double tolerance, int max_solves) {
   FreeBoundaryFit fit{scene, {}, INFINITY, 0};
   std::vector<double> fitted_s;  // arc lengths of fit.points, which the current mesh is graded towards
   while (fit.solves < max_solves) {
@@ -46,7 +46,7 @@ FreeBoundaryFit fit_free_boundary(const io::Scene& scene, const std::vector<cont
     fit.scene.grading_layers = std::min(scene.grading_layers, fit.solves + 1);
     // One discretization per round, its operators (factor(K), F) shared by the problems.
     const auto d = discretize_scene(fit.scene);
-    const norms::PrimalOperators primal(d->mesh, d->cell_degrees);
+    const operators::PrimalOperators primal(d->mesh, d->cell_degrees);
     const auto& contact = *d->contact;
     // Transitions within a coarse cell of a given grading point are left to its layers: they could
     // not be grading points of their own, and they arise where the data make λ undetermined (for
@@ -54,7 +54,7 @@ FreeBoundaryFit fit_free_boundary(const io::Scene& scene, const std::vector<cont
     const double coarse_cell = d->mesh.longest_edge();
     std::vector<double> located;
     for (const auto problem : problems) {
-      const auto solution = contact::solve_contact(contact_setup_of(fit.scene, *d, problem, primal, origin));
+      const auto solution = contact::solve_contact(contact_setup_of(fit.scene, *d, problem, primal));
       for (double s : cluster_transitions(contact::locate_free_boundary(solution), *d->boundary_mesh, tolerance * contact.length()))
         if (std::none_of(scene.grading_points.begin(), scene.grading_points.end(),
                          [&](const mesh::Point& given) { return (given - contact.point_at(s)).norm() < coarse_cell; }))
@@ -90,4 +90,4 @@ FreeBoundaryFit fit_free_boundary(const io::Scene& scene, const std::vector<cont
                                    scene.file, max_solves, fit.moved, tolerance));
 }
 
-}  // namespace hpcontact::studies
+}  // namespace hpcontact::driver

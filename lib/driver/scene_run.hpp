@@ -8,15 +8,15 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "io/scene.hpp"
+#include "scene/scene_mesh.hpp"
+#include "scene/scene_reader.hpp"
 #include "linalg/distribution.hpp"
-#include "studies/scene_discretization.hpp"
+#include "driver/scene_discretization.hpp"
 
-namespace hpcontact::studies {
+namespace hpcontact::driver {
 
 struct SceneRunOptions {
   std::filesystem::path out;      ///< output folder (created when everything is computed)
-  ValueOrigin constraint_points;  ///< where the constraint-point count came from, for messages
   std::function<void(const std::string&)> progress;  ///< one line per step, if given
   /// Under mpirun: every rank runs the scene with K and A_G factorized over the ranks by this
   /// solver, and rank 0 alone writes the files.
@@ -32,9 +32,9 @@ struct SceneRunOptions {
 ///   convergence.csv           (effect convergence) problem,level,p,pC,n,m,ndofs,nmult,energy,
 ///                              error_energy,error_lambda,seconds; errors against the finest level
 /// Nothing is written unless every effect succeeded. Returns the summary.
-nlohmann::json run_scene(const io::Scene& scene, const SceneRunOptions& options);
+nlohmann::json run_scene(const scene::Scene& scene, const SceneRunOptions& options);
 
 /// The columns of convergence.csv and of the work–precision study's rows.
 std::vector<std::string> refinement_columns();
 
-}  // namespace hpcontact::studies
+}  // namespace hpcontact::driver

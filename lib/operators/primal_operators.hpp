@@ -19,7 +19,7 @@
 #include "space/h1_space.hpp"
 #include "space/multiplier_space.hpp"
 
-namespace hpcontact::norms {
+namespace hpcontact::operators {
 
 class PrimalOperators {
  public:
@@ -73,4 +73,4 @@ class PrimalOperators {
 const PrimalOperators& shared_or_own(const PrimalOperators* shared, const mesh::QuadMesh& mesh,
                                      const std::vector<int>& cell_degrees, std::unique_ptr<PrimalOperators>& own);
 
-}  // namespace hpcontact::norms
+}  // namespace hpcontact::operators

@@ -1,5 +1,5 @@
 // Building a scene's discretization and contact problem.
-#include "studies/scene_discretization.hpp"
+#include "driver/scene_discretization.hpp"
 
 #include <fmt/format.h>
 
@@ -8,24 +8,18 @@
 #include "core/error.hpp"
 #include "core/expression.hpp"
 #include "core/timer.hpp"
+#include "scene/scene_mesh.hpp"
 
-namespace hpcontact::studies {
+namespace hpcontact::driver {
 
-std::unique_ptr<SceneDiscretization> discretize_scene(const io::Scene& scene) {
-  auto d = std::make_unique<SceneDiscretization>(SceneDiscretization{io::build_scene_mesh(scene), {}, {}, {}, {}, {}});
+std::unique_ptr<SceneDiscretization> discretize_scene(const scene::Scene& scene) {
+  auto d = std::make_unique<SceneDiscretization>(SceneDiscretization{scene::build_scene_mesh(scene), {}, {}, {}, {}, {}});
   d->contact = std::make_unique<mesh::ContactBoundary>(d->mesh);
-  d->boundary_mesh = std::make_unique<mesh::BoundaryMesh>(io::build_scene_boundary_mesh(scene, *d->contact));
-  d->cell_degrees = io::scene_cell_degrees(scene, d->mesh);
-  d->segment_degrees = io::scene_segment_degrees(scene, *d->contact, *d->boundary_mesh);
+  d->boundary_mesh = std::make_unique<mesh::BoundaryMesh>(scene::build_scene_boundary_mesh(scene, *d->contact));
+  d->cell_degrees = scene::scene_cell_degrees(scene, d->mesh);
+  d->segment_degrees = scene::scene_segment_degrees(scene, *d->contact, *d->boundary_mesh);
   d->multipliers = std::make_unique<space::MultiplierSpace>(*d->boundary_mesh, d->segment_degrees);
   return d;
-}
-
-contact::ContactProblem contact_problem_of(const std::string& effect) {
-  if (effect == "signorini") return contact::ContactProblem::signorini;
-  if (effect == "friction") return contact::ContactProblem::friction;
-  if (effect == "friction_s") return contact::ContactProblem::friction_s;
-  throw InputError("not a contact problem: '" + effect + "' (signorini, friction, friction_s)");
 }
 
 namespace {
@@ -38,9 +32,8 @@ contact::PointFunction function_of(const std::string& text, const std::string& o
 
 }  // namespace
 
-contact::ContactSetup contact_setup_of(const io::Scene& scene, const SceneDiscretization& d,
-                                       contact::ContactProblem problem, const norms::PrimalOperators& primal,
-                                       const ValueOrigin& origin) {
+contact::ContactSetup contact_setup_of(const scene::Scene& scene, const SceneDiscretization& d,
+                                       contact::ContactProblem problem, const operators::PrimalOperators& primal) {
   contact::ContactSetup setup;
   setup.mesh = &d.mesh;
   setup.cell_degrees = d.cell_degrees;
@@ -52,19 +45,20 @@ contact::ContactSetup contact_setup_of(const io::Scene& scene, const SceneDiscre
     try {
       contact::segment_constraint_points(problem, pc, setup.constraint_points);
     } catch (const InputError&) {
-      throw_bad_input(origin.source, origin.key, std::to_string(*setup.constraint_points),
+      throw_bad_input(scene.where("solve.constraint_points"), "solve.constraint_points",
+                      std::to_string(*setup.constraint_points),
                       fmt::format("at least p_C + 1 = {} (the largest p_C of the scene's segments is {})", pc + 1,
                                   *std::max_element(setup.segment_degrees.begin(), setup.segment_degrees.end())));
     }
   }
-  setup.f = function_of(scene.load, scene.file + ": key 'data.f'");
+  setup.f = function_of(scene.load, scene.where("data.f") + ": key 'data.f'");
   setup.load_key = "f = " + scene.load;
   if (problem == contact::ContactProblem::signorini)
-    setup.obstacle = function_of(scene.obstacle, scene.file + ": key 'data.g'");
+    setup.obstacle = function_of(scene.obstacle, scene.where("data.g") + ": key 'data.g'");
   else
-    setup.bound = function_of(scene.friction_bound, scene.file + ": key 'data.s'");
+    setup.bound = function_of(scene.friction_bound, scene.where("data.s") + ": key 'data.s'");
   if (setup.bound)  // s ≥ 0 is part of the data's contract: report it against the scene's key
-    setup.bound = [bound = setup.bound, file = scene.file, text = scene.friction_bound](const mesh::Point& x) {
+    setup.bound = [bound = setup.bound, file = scene.where("data.s"), text = scene.friction_bound](const mesh::Point& x) {
       const double value = bound(x);
       if (value < 0)
         throw_bad_input(file, "data.s", fmt::format("\"{}\" = {} at (x, y) = ({}, {})", text, value, x.x(), x.y()),
@@ -75,7 +69,7 @@ contact::ContactSetup contact_setup_of(const io::Scene& scene, const SceneDiscre
   return setup;
 }
 
-std::function<double(double)> multiplier_error_weight(const io::Scene& scene, const SceneDiscretization& d,
+std::function<double(double)> multiplier_error_weight(const scene::Scene& scene, const SceneDiscretization& d,
                                                       contact::ContactProblem problem) {
   if (problem != contact::ContactProblem::friction) return {};
   const Expression bound(scene.friction_bound, scene.file + ": key 'data.s'");
@@ -86,36 +80,36 @@ std::function<double(double)> multiplier_error_weight(const io::Scene& scene, co
   };
 }
 
-infsup::InfSupSetup infsup_setup_of(const io::Scene& scene, const mesh::QuadMesh& mesh, std::vector<int> cell_degrees,
+infsup::InfSupSetup infsup_setup_of(const scene::Scene& scene, const mesh::QuadMesh& mesh, std::vector<int> cell_degrees,
                                     const mesh::BoundaryMesh& boundary_mesh, std::vector<int> segment_degrees,
-                                    const std::string& problem, const std::string& norm,
-                                    const norms::PrimalOperators& primal) {
+                                    const operators::PrimalOperators& primal) {
   infsup::InfSupSetup setup;
   setup.mesh = &mesh;
   setup.cell_degrees = std::move(cell_degrees);
   setup.boundary_mesh = &boundary_mesh;
   setup.segment_degrees = std::move(segment_degrees);
-  setup.problem = infsup::parse_pairing_problem(problem, scene.file);
-  setup.norm = infsup::parse_gram_norm(norm, scene.file);
+  setup.problem = scene.problem;
+  setup.norm = scene.norm;
   setup.alpha_tolerance = scene.alpha_tolerance;
   if (setup.problem == infsup::PairingProblem::friction) {
     if (scene.friction_bound.empty())
-      throw_bad_input(scene.file, "data.s", "(missing)", "the friction pairing (22) needs the friction bound s");
-    setup.friction_bound = function_of(scene.friction_bound, scene.file + ": key 'data.s'");
+      throw_bad_input(scene.where("infsup.problem"), "data.s", "(missing)",
+                      "the friction pairing (22) needs the friction bound s");
+    setup.friction_bound = function_of(scene.friction_bound, scene.where("data.s") + ": key 'data.s'");
   }
   setup.primal = &primal;
   return setup;
 }
 
-SceneContactRun solve_scene_contact(const io::Scene& scene, contact::ContactProblem problem,
-                                    const ValueOrigin& origin, OperatorLog* log) {
+SceneContactRun solve_scene_contact(const scene::Scene& scene, contact::ContactProblem problem,
+                                    OperatorLog* log) {
   Stopwatch clock;
   SceneContactRun run;
   run.discretization = discretize_scene(scene);
-  const norms::PrimalOperators primal(run.discretization->mesh, run.discretization->cell_degrees, log);
-  run.solution = contact::solve_contact(contact_setup_of(scene, *run.discretization, problem, primal, origin));
+  const operators::PrimalOperators primal(run.discretization->mesh, run.discretization->cell_degrees, log);
+  run.solution = contact::solve_contact(contact_setup_of(scene, *run.discretization, problem, primal));
   run.seconds = clock.seconds();
   return run;
 }
 
-}  // namespace hpcontact::studies
+}  // namespace hpcontact::driver

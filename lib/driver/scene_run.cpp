@@ -1,5 +1,5 @@
 // The effects of a scene and their outputs.
-#include "studies/scene_run.hpp"
+#include "driver/scene_run.hpp"
 
 #include <fmt/format.h>
 
@@ -17,13 +17,14 @@
 #include "io/csv_writer.hpp"
 #include "io/output_folder.hpp"
 #include "io/vtu_writer.hpp"
-#include "studies/free_boundary_fit.hpp"
+#include "driver/free_boundary_fit.hpp"
 
-namespace hpcontact::studies {
+namespace hpcontact::driver {
 namespace {
 
 struct ContactEffect {
-  std::string problem;
+  std::string problem;  ///< the effect's name, e.g. "friction_s"
+  contact::ContactProblem kind;
   contact::ContactSetup setup;
   contact::ContactSolution solution;
   contact::BoundarySamples samples;
@@ -61,18 +62,19 @@ nlohmann::json contact_summary(const ContactEffect& effect) {
 }
 
 // Every contact problem of the scene on one discretization, sharing `primal`.
-std::vector<ContactEffect> solve_contact_effects(const io::Scene& scene, const SceneDiscretization& d,
-                                                 const norms::PrimalOperators& primal, const SceneRunOptions& options,
+std::vector<ContactEffect> solve_contact_effects(const scene::Scene& scene, const SceneDiscretization& d,
+                                                 const operators::PrimalOperators& primal, const SceneRunOptions& options,
                                                  const std::string& where) {
   std::vector<ContactEffect> effects;
-  for (const auto& problem : scene.contact_effects()) {
-    if (options.progress) options.progress("solving " + problem + where);
+  for (const auto problem : scene.contact_effects()) {
+    const std::string name = scene::to_string(scene::effect_of(problem));
+    if (options.progress) options.progress("solving " + name + where);
     Stopwatch clock;
-    auto setup = contact_setup_of(scene, d, contact_problem_of(problem), primal, options.constraint_points);
+    auto setup = contact_setup_of(scene, d, problem, primal);
     auto solution = contact::solve_contact(setup);
     const double seconds = clock.seconds();
     auto samples = contact::sample_boundary(setup, solution);
-    effects.push_back({problem, std::move(setup), std::move(solution), std::move(samples), seconds});
+    effects.push_back({name, problem, std::move(setup), std::move(solution), std::move(samples), seconds});
   }
   return effects;
 }
@@ -80,7 +82,7 @@ std::vector<ContactEffect> solve_contact_effects(const io::Scene& scene, const S
 // The convergence effect: the scene's contact problems on `convergence_refinements` uniform
 // refinements beyond its own mesh, each level with its own operators shared by its problems; the
 // finest level is the reference for the errors of the others.
-void add_convergence_rows(const io::Scene& scene, const std::vector<ContactEffect>& base, const SceneDiscretization& base_mesh,
+void add_convergence_rows(const scene::Scene& scene, const std::vector<ContactEffect>& base, const SceneDiscretization& base_mesh,
                           const SceneRunOptions& options, OperatorLog& log, io::CsvTable& table) {
   struct Level {
     const SceneDiscretization* discretization;
@@ -90,11 +92,11 @@ void add_convergence_rows(const io::Scene& scene, const std::vector<ContactEffec
   std::vector<std::unique_ptr<SceneDiscretization>> refined_meshes;
   std::vector<std::unique_ptr<std::vector<ContactEffect>>> refined_effects;
   for (int k = 1; k <= scene.convergence_refinements; ++k) {
-    io::Scene refined = scene;
+    scene::Scene refined = scene;
     refined.refinements += k;
     auto d = discretize_scene(refined);
     OperatorLog level_log;
-    const norms::PrimalOperators primal(d->mesh, d->cell_degrees, &level_log, options.distribution);
+    const operators::PrimalOperators primal(d->mesh, d->cell_degrees, &level_log, options.distribution);
     refined_effects.push_back(std::make_unique<std::vector<ContactEffect>>(
         solve_contact_effects(refined, *d, primal, options, fmt::format(" (convergence level {})", k))));
     for (const auto& record : level_log.records())
@@ -108,8 +110,8 @@ void add_convergence_rows(const io::Scene& scene, const std::vector<ContactEffec
       const auto& d = *levels[k].discretization;
       const auto& effect = (*levels[k].effects)[e];
       const auto& reference = (*finest.effects)[e].solution;
-      table.add_row({effect.problem, static_cast<long long>(k), scene.p_label(),
-                     scene.pc_label(), static_cast<long long>(d.contact->edges().size()),
+      table.add_row({effect.problem, static_cast<long long>(k), scene.p.label(),
+                     scene.pc.label(), static_cast<long long>(d.contact->edges().size()),
                      static_cast<long long>(d.boundary_mesh->n_segments()),
                      static_cast<long long>(effect.solution.u.size()),
                      static_cast<long long>(effect.solution.lambda.size()), effect.solution.energy,
@@ -117,7 +119,7 @@ void add_convergence_rows(const io::Scene& scene, const std::vector<ContactEffec
                      contact::multiplier_l2_distance(
                          *d.multipliers, effect.solution.lambda_legendre, *finest.discretization->multipliers,
                          reference.lambda_legendre,
-                         multiplier_error_weight(scene, *finest.discretization, contact_problem_of(effect.problem))),
+                         multiplier_error_weight(scene, *finest.discretization, effect.kind)),
                      effect.seconds});
     }
 }
@@ -128,21 +130,19 @@ std::vector<std::string> refinement_columns() {
   return {"problem", "level", "p", "pC", "n", "m", "ndofs", "nmult", "energy", "error_energy", "error_lambda", "seconds"};
 }
 
-nlohmann::json run_scene(const io::Scene& given_scene, const SceneRunOptions& options) {
+nlohmann::json run_scene(const scene::Scene& given_scene, const SceneRunOptions& options) {
   Stopwatch clock;
   auto say = [&](const std::string& line) {
     if (options.progress) options.progress(line);
   };
   // 0. Optionally, the mesh graded towards the free boundary of every contact problem of the
   //    scene; the effects then run on that mesh.
-  io::Scene scene = given_scene;
+  scene::Scene scene = given_scene;
   nlohmann::json free_boundary;
   if (scene.fit_free_boundary) {
     say("fitting the mesh to the free boundary");
-    std::vector<contact::ContactProblem> problems;
-    for (const auto& effect : scene.contact_effects()) problems.push_back(contact_problem_of(effect));
     Stopwatch fit_clock;
-    const auto fit = fit_free_boundary(scene, problems, options.constraint_points);
+    const auto fit = fit_free_boundary(scene, scene.contact_effects());
     scene = fit.scene;
     free_boundary = {{"points", nlohmann::json::array()}, {"rounds", fit.solves}, {"moved", fit.moved},
                      {"seconds", fit_clock.seconds()}};
@@ -151,7 +151,7 @@ nlohmann::json run_scene(const io::Scene& given_scene, const SceneRunOptions& op
   // 1. Meshes and degrees; the operators of S^p(T_h) are built on first use and shared.
   const auto d = discretize_scene(scene);
   OperatorLog log;
-  const norms::PrimalOperators primal(d->mesh, d->cell_degrees, &log, options.distribution);
+  const operators::PrimalOperators primal(d->mesh, d->cell_degrees, &log, options.distribution);
 
   // 2. The contact problems.
   const std::vector<ContactEffect> contacts = solve_contact_effects(scene, *d, primal, options, "");
@@ -159,24 +159,23 @@ nlohmann::json run_scene(const io::Scene& given_scene, const SceneRunOptions& op
   // 3. The inf-sup constant of the pairing: whether λ is unique.
   nlohmann::json summary;
   std::optional<io::CsvTable> mode;
-  if (scene.has_effect("infsup")) {
+  if (scene.has_effect(scene::Effect::infsup)) {
     say("inf-sup constant");
-    const auto setup = infsup_setup_of(scene, d->mesh, d->cell_degrees, *d->boundary_mesh, d->segment_degrees,
-                                       scene.problem, scene.norm, primal);
+    const auto setup = infsup_setup_of(scene, d->mesh, d->cell_degrees, *d->boundary_mesh, d->segment_degrees, primal);
     const auto alpha = infsup::analyse_infsup(setup, infsup::EigenBackend::slepc);
     summary["infsup"] = {{"alpha", alpha.alpha},         {"alpha_error", alpha.alpha_error},
                          {"alpha_converged", alpha.alpha_converged}, {"reference_level", alpha.reference_level},
                          {"lambda_unique", !alpha.singular},
-                         {"problem", scene.problem},     {"norm", scene.norm},
+                         {"problem", infsup::to_string(scene.problem)}, {"norm", infsup::to_string(scene.norm)},
                          {"lambda_min", alpha.lambda_min}, {"lambda_max", alpha.lambda_max},
                          {"Pi", alpha.pi},               {"eigensolver", alpha.method},
                          {"residual", alpha.residual},   {"seconds", alpha.seconds}};
-    if (scene.wants_output("mode")) mode = infsup::sample_mode(d->mesh, *d->multipliers, alpha.mode);
+    if (scene.wants_output(scene::Output::mode)) mode = infsup::sample_mode(d->mesh, *d->multipliers, alpha.mode);
   }
 
   // 4. Convergence under uniform refinement of every contact problem of the scene.
   std::optional<io::CsvTable> convergence;
-  if (scene.has_effect("convergence")) {
+  if (scene.has_effect(scene::Effect::convergence)) {
     convergence.emplace(refinement_columns());
     add_convergence_rows(scene, contacts, *d, options, log, *convergence);
   }
@@ -184,9 +183,9 @@ nlohmann::json run_scene(const io::Scene& given_scene, const SceneRunOptions& op
   // 5. The summary, then every file at once.
   summary["scene"] = scene.file;
   if (!free_boundary.is_null()) summary["free_boundary"] = free_boundary;
-  summary["effects"] = scene.effects;
-  summary["p"] = scene.p_label();
-  summary["pC"] = scene.pc_label();
+  for (const auto effect : scene.effects) summary["effects"].push_back(scene::to_string(effect));
+  summary["p"] = scene.p.label();
+  summary["pC"] = scene.pc.label();
   summary["edges_on_contact"] = d->contact->edges().size();
   summary["m"] = d->boundary_mesh->n_segments();
   summary["ndofs"] = primal.space().n_dofs();
@@ -196,7 +195,7 @@ nlohmann::json run_scene(const io::Scene& given_scene, const SceneRunOptions& op
   for (const auto& record : log.records())
     summary["operators"].push_back({{"name", record.name}, {"rows", record.rows}, {"cols", record.cols}, {"seconds", record.seconds}});
   summary["seconds_total"] = clock.seconds();
-  const auto [rank, ranks] = mpi_rank_and_size();
+  const int rank = mpi_rank_and_size().first, ranks = mpi_rank_and_size().second;
   summary["ranks"] = ranks;
   summary["distributed_solver"] = linalg::to_string(options.distribution);
   // 5. The outputs as one set (rank 0 writes; a failure to write ends every rank the same way).
@@ -205,15 +204,15 @@ nlohmann::json run_scene(const io::Scene& given_scene, const SceneRunOptions& op
     io::OutputFolder folder(options.out);
     const auto& out = folder.path();
     for (const auto& effect : contacts) {
-      if (scene.wants_output("boundary")) effect.samples.table.write(out / ("boundary_" + effect.problem + ".csv"));
-      if (scene.wants_output("vtu")) io::write_vtu(out / ("solution_" + effect.problem + ".vtu"), primal.space(), effect.solution.u);
+      if (scene.wants_output(scene::Output::boundary)) effect.samples.table.write(out / ("boundary_" + effect.problem + ".csv"));
+      if (scene.wants_output(scene::Output::vtu)) io::write_vtu(out / ("solution_" + effect.problem + ".vtu"), primal.space(), effect.solution.u);
     }
     if (mode) mode->write(out / "mode.csv");
     if (convergence) convergence->write(out / "convergence.csv");
-    if (scene.wants_output("summary")) io::write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
+    if (scene.wants_output(scene::Output::summary)) io::write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
     folder.commit();
   });
   return summary;
 }
 
-}  // namespace hpcontact::studies
+}  // namespace hpcontact::driver

@@ -1,7 +1,7 @@
 // PrimalOperators: lazy members, each logged once. The trace dofs are the columns a full-degree
 // multiplier space on the edges of T_h|Γ_C touches (Legendre polynomials up to p span every trace
 // function's restriction to an edge).
-#include "norms/primal_operators.hpp"
+#include "operators/primal_operators.hpp"
 
 #include <fmt/format.h>
 
@@ -11,7 +11,7 @@
 #include "core/timer.hpp"
 #include "mesh/boundary_mesh.hpp"
 
-namespace hpcontact::norms {
+namespace hpcontact::operators {
 
 PrimalOperators::PrimalOperators(const mesh::QuadMesh& mesh, std::vector<int> cell_degrees, OperatorLog* log,
                                  linalg::Distribution distribution)
@@ -127,4 +127,4 @@ const PrimalOperators& shared_or_own(const PrimalOperators* shared, const mesh::
   return *shared;
 }
 
-}  // namespace hpcontact::norms
+}  // namespace hpcontact::operators

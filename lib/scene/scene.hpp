@@ -1,0 +1,102 @@
+// A scene: the geometry, boundary parts, contact mesh, discretization and data of one run, and
+// which effects (contact problems, inf-sup constant, convergence under refinement) and outputs
+// the run produces. Every value is typed and checked when the scene is read (scene_reader.hpp);
+// the keys, their ranges and defaults are declared once in scene_keys.cpp, which also generates
+// their reference (docs/scene_keys.md).
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "contact/contact_problem.hpp"
+#include "infsup/infsup_operators.hpp"
+#include "mesh/quad_mesh.hpp"
+#include "mesh/rectangle_mesh.hpp"
+#include "scene/ratio.hpp"
+
+namespace hpcontact::scene {
+
+enum class Effect { signorini, friction, friction_s, infsup, convergence };
+enum class Output { summary, boundary, vtu, mode };
+
+/// The names used in scene files and outputs ("friction_s", "vtu").
+std::string to_string(Effect effect);
+std::string to_string(Output output);
+const std::vector<Effect>& all_effects();
+const std::vector<Output>& all_outputs();
+
+/// A degree p (p_C) given as one integer or as a rule: an expression in x, y evaluated at cell
+/// centres (segment midpoints) that must give whole numbers in range.
+struct Degree {
+  int value = 1;     ///< when `rule` is empty
+  std::string rule;  ///< the expression's text
+  /// As written: the integer, or the rule's text.
+  std::string label() const { return rule.empty() ? std::to_string(value) : rule; }
+};
+
+struct Scene {
+  std::string file;  ///< the scene file (or the name of a built-in scene)
+  // [domain]: a rectangle with n_x × n_y cells, or a Gmsh file.
+  std::string mesh_file;     ///< empty for a rectangle; else absolute or relative to the working folder
+  mesh::Rectangle rectangle;  ///< when mesh_file is empty
+  int n_x = 0, n_y = 0;
+  double perturb = 0.0;
+  std::uint32_t seed = 1;
+  std::vector<double> grading_x, grading_y;   ///< see mesh::graded_nodes
+  std::vector<mesh::Point> grading_points;    ///< see mesh::grade_towards_vertices
+  double domain_grading = 0.5;
+  int grading_layers = 0;
+  int refinements = 0;  ///< uniform refinements after building; T_{C,H} follows
+  // [boundary]: predicates in x, y on edge midpoints (non-zero = inside), or Gmsh group names.
+  std::string contact_predicate, dirichlet_predicate;
+  std::vector<std::string> contact_groups, dirichlet_groups;
+  // [contact_mesh]: exactly one of m, ratio (= h/H), breakpoints.
+  int m = 0;
+  std::optional<Ratio> ratio;
+  std::vector<double> breakpoints;
+  double grading = 1.0;
+  // [discretization]
+  Degree p{1, {}}, pc{0, {}};
+  // [data]: expressions in x, y.
+  std::string friction_bound;  ///< s (may be empty)
+  std::string load = "-1";     ///< f
+  std::string obstacle;        ///< g (may be empty)
+  // [infsup]
+  infsup::GramNorm norm = infsup::GramNorm::interpolation;
+  infsup::PairingProblem problem = infsup::PairingProblem::signorini;
+  double alpha_tolerance = 1e-4;
+  // [solve]
+  std::optional<int> constraint_points;  ///< |𝒞| per segment (Remark 3); empty: p_C + 1
+  bool fit_free_boundary = false;
+  // [run]: empty effects when the scene has no [run] table (`solve` then needs --effects).
+  std::vector<Effect> effects;
+  std::vector<Output> outputs = all_outputs();
+  // [convergence]
+  int convergence_refinements = 3;
+
+  /// Dotted keys the scene (or an override) gives, and where each overridden value came from.
+  std::set<std::string> given;
+  std::map<std::string, std::string> origins;
+
+  /// Where the value of a dotted key came from, for messages: an option such as
+  /// "hpcontact solve --p" if one replaced it, else the file.
+  std::string where(const std::string& key) const;
+  bool is_rectangle() const { return mesh_file.empty(); }
+  bool has_effect(Effect effect) const;
+  /// The contact problems among the effects, in the order signorini, friction, friction_s.
+  std::vector<contact::ContactProblem> contact_effects() const;
+  bool wants_output(Output output) const;
+};
+
+/// The effect of a contact problem.
+Effect effect_of(contact::ContactProblem problem);
+/// The contact problem of an effect: (9), (13), (15); empty for infsup and convergence.
+std::optional<contact::ContactProblem> contact_problem_of(Effect effect);
+/// The effect with this name ("friction_s"); empty if none has it.
+std::optional<Effect> effect_named(const std::string& name);
+
+}  // namespace hpcontact::scene

@@ -1,0 +1,288 @@
+// The scene keys: one row per key, built from typed helpers so that the range a reader checks and
+// the range the reference shows are the same numbers.
+#include "scene/scene_keys.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <optional>
+
+#include "core/error.hpp"
+#include "core/expression.hpp"
+
+namespace hpcontact::scene {
+namespace {
+
+using io::TomlTable;
+
+SceneKey number_key(const char* section, const char* name, double low, double high, double fallback,
+                    double Scene::*member, const char* doc) {
+  return {section, name, "number", fmt::format("{:g}", fallback), fmt::format("[{:g}, {:g}]", low, high), doc, "",
+          [=](const TomlTable& table, Scene& scene) { scene.*member = table.number_in(name, low, high, fallback); }};
+}
+
+SceneKey any_number_key(const char* section, const char* name, double fallback, double mesh::Rectangle::*member,
+                        const char* doc) {
+  return {section, name, "number", fmt::format("{:g}", fallback), "finite", doc, "",
+          [=](const TomlTable& table, Scene& scene) {
+            const double value = table.number(name, fallback);
+            if (!std::isfinite(value)) throw_bad_input(table.origin(name), table.qualified(name), "inf", "a finite number");
+            scene.rectangle.*member = value;
+          }};
+}
+
+/// An integer; `fallback` empty: no default (the member keeps its value; rules elsewhere say when
+/// the key is required).
+SceneKey integer_key(const char* section, const char* name, long long low, long long high,
+                     std::optional<long long> fallback, int Scene::*member, const char* doc) {
+  return {section, name, "integer", fallback ? std::to_string(*fallback) : "", fmt::format("[{}, {}]", low, high), doc,
+          "", [=](const TomlTable& table, Scene& scene) {
+            if (fallback || table.has(name)) scene.*member = static_cast<int>(table.integer(name, low, high, fallback));
+          }};
+}
+
+/// An expression in x, y (parsed now, so that a typo is reported before any work).
+SceneKey expression_key(const char* section, const char* name, const char* fallback, std::string Scene::*member,
+                        const char* doc) {
+  return {section, name, "expression in x, y", fallback[0] ? fmt::format("\"{}\"", fallback) : "", "muparser syntax",
+          doc, "", [=](const TomlTable& table, Scene& scene) {
+            scene.*member = table.string(name, fallback);
+            if (!(scene.*member).empty())
+              Expression(scene.*member, table.origin(name) + ": key '" + table.qualified(name) + "'");
+          }};
+}
+
+SceneKey names_key(const char* section, const char* name, std::vector<std::string> Scene::*member, const char* doc) {
+  return {section, name, "list of strings", "", "Gmsh physical names", doc, "",
+          [=](const TomlTable& table, Scene& scene) {
+            scene.*member = table.string_list(name, std::vector<std::string>{});
+          }};
+}
+
+/// Finite numbers (numbers or their text), each checked by `valid`.
+SceneKey numbers_key(const char* section, const char* name, const char* allowed, std::vector<double> Scene::*member,
+                     const char* doc, std::function<bool(double)> valid = {}, const char* group = "") {
+  return {section, name, "list of numbers", "", allowed, doc, group, [=](const TomlTable& table, Scene& scene) {
+            std::vector<double> values;
+            for (const auto& text : table.string_list(name, std::vector<std::string>{})) {
+              char* end = nullptr;
+              const double value = std::strtod(text.c_str(), &end);
+              if (text.empty() || *end != '\0' || !std::isfinite(value) || (valid && !valid(value)))
+                throw_bad_input(table.origin(name), table.qualified(name), text, allowed);
+              values.push_back(value);
+            }
+            scene.*member = values;
+          }};
+}
+
+template <typename Enum>
+std::string choices_text(const std::vector<std::pair<std::string, Enum>>& choices) {
+  std::vector<std::string> names;
+  for (const auto& [text, value] : choices) names.push_back(text);
+  return fmt::format("{}", fmt::join(names, ", "));
+}
+
+template <typename Enum>
+SceneKey choice_key(const char* section, const char* name, std::vector<std::pair<std::string, Enum>> choices,
+                    Enum fallback, Enum Scene::*member, const char* doc) {
+  std::string fallback_text;
+  for (const auto& [text, value] : choices)
+    if (value == fallback && fallback_text.empty()) fallback_text = text;
+  return {section, name, "string", fmt::format("\"{}\"", fallback_text), choices_text(choices), doc, "",
+          [=](const TomlTable& table, Scene& scene) {
+            std::vector<std::string> names;
+            for (const auto& [text, value] : choices) names.push_back(text);
+            const std::string chosen = table.choice(name, names, fallback_text);
+            for (const auto& [text, value] : choices)
+              if (text == chosen) scene.*member = value;
+          }};
+}
+
+/// A list of names from a fixed set (effects, outputs), each at most once.
+template <typename Enum>
+SceneKey enum_list_key(const char* section, const char* name, const std::vector<Enum>& all, std::vector<Enum> Scene::*member,
+                       const char* default_text, const char* doc) {
+  std::vector<std::string> names;
+  for (Enum value : all) names.push_back(to_string(value));
+  const std::string allowed = fmt::format("any of {}", fmt::join(names, ", "));
+  return {section, name, "list of strings", default_text, allowed, doc, "", [=](const TomlTable& table, Scene& scene) {
+            if (!table.has(name)) return;
+            std::vector<Enum> values;
+            for (const auto& text : table.string_list(name)) {
+              const auto found = std::find(names.begin(), names.end(), text);
+              if (found == names.end()) throw_bad_input(table.origin(name), table.qualified(name), text, allowed);
+              const Enum value = all[static_cast<std::size_t>(found - names.begin())];
+              if (std::find(values.begin(), values.end(), value) != values.end())
+                throw_bad_input(table.origin(name), table.qualified(name), text, "each at most once");
+              values.push_back(value);
+            }
+            scene.*member = values;
+          }};
+}
+
+/// An integer in [low, high], or a rule (an expression in x, y; a string).
+SceneKey degree_key(const char* name, int low, int high, Degree Scene::*member, const char* doc) {
+  return {"discretization", name, "integer or expression in x, y", "", fmt::format("[{}, {}]", low, high), doc, "",
+          [=](const TomlTable& table, Scene& scene) {
+            const std::string text = table.string_list(name).front();
+            char* end = nullptr;
+            std::strtoll(text.c_str(), &end, 10);
+            if (end != text.c_str() && *end == '\0') {
+              scene.*member = Degree{static_cast<int>(table.integer(name, low, high)), {}};
+              return;
+            }
+            Expression(text, table.origin(name) + ": key '" + table.qualified(name) + "'");
+            scene.*member = Degree{-1, text};  // evaluated per cell (segment) when the mesh exists
+          }};
+}
+
+std::vector<SceneKey> declare_keys() {
+  std::vector<SceneKey> keys;
+  auto add = [&](SceneKey key) { keys.push_back(std::move(key)); };
+  // [domain]
+  add({"domain", "mesh", "string", "", "a Gmsh MSH 4 ASCII file of quadrilaterals",
+       "Gmsh mesh, relative to the scene file; absent: the rectangle below", "",
+       [](const TomlTable& table, Scene& scene) {
+         if (!table.has("mesh")) return;
+         const std::string path = table.string("mesh");
+         const bool relative = !path.empty() && path.front() != '/';
+         scene.mesh_file = relative ? (std::filesystem::path(scene.file).parent_path() / path).string() : path;
+         if (scene.mesh_file.empty()) throw_bad_input(table.origin("mesh"), table.qualified("mesh"), "\"\"", "a file name");
+       }});
+  add(any_number_key("domain", "x_min", -1.0, &mesh::Rectangle::x_min, "rectangle: left end"));
+  add(any_number_key("domain", "x_max", 1.0, &mesh::Rectangle::x_max, "rectangle: right end"));
+  add(any_number_key("domain", "y_min", -1.0, &mesh::Rectangle::y_min, "rectangle: bottom end"));
+  add(any_number_key("domain", "y_max", 1.0, &mesh::Rectangle::y_max, "rectangle: top end"));
+  add(integer_key("domain", "n_x", 1, 100000, std::nullopt, &Scene::n_x, "rectangle: cells along x (required)"));
+  add(integer_key("domain", "n_y", 1, 100000, std::nullopt, &Scene::n_y, "rectangle: cells along y (required)"));
+  add(number_key("domain", "perturb", 0.0, 0.24, 0.0, &Scene::perturb,
+                 "moves interior vertices randomly by up to this fraction of the local cell size"));
+  add({"domain", "seed", "integer", "1", fmt::format("[0, {}]", 1u << 30), "random seed of `perturb`", "",
+       [](const TomlTable& table, Scene& scene) {
+         scene.seed = static_cast<std::uint32_t>(table.integer("seed", 0, 1u << 30, 1));
+       }});
+  add(numbers_key("domain", "grading_x", "x coordinates (numbers) inside the rectangle", &Scene::grading_x,
+                  "rectangle: lines x = c the mesh is graded towards (geometric layers)"));
+  add(numbers_key("domain", "grading_y", "y coordinates (numbers) inside the rectangle", &Scene::grading_y,
+                  "rectangle: lines y = c the mesh is graded towards"));
+  add({"domain", "grading_points", "list of pairs [[x, y], ...]", "", "vertices of the mesh (after snapping)",
+       "points whose surrounding cells get `grading_layers` local geometric layers", "",
+       [](const TomlTable& table, Scene& scene) {
+         scene.grading_points.clear();
+         for (const auto& [x, y] : table.pair_list("grading_points")) scene.grading_points.emplace_back(x, y);
+       }});
+  add(number_key("domain", "grading", 0.01, 0.99, 0.5, &Scene::domain_grading,
+                 "size ratio of consecutive geometric layers"));
+  add(integer_key("domain", "grading_layers", 0, 40, 0, &Scene::grading_layers, "geometric layers per grading line or point"));
+  add(integer_key("domain", "refinements", 0, 10, 0, &Scene::refinements,
+                  "uniform refinements (each cell into four) after building; T_{C,H} follows"));
+  // [boundary]
+  add(expression_key("boundary", "contact", "", &Scene::contact_predicate,
+                     "Γ_C: edges whose midpoint makes this non-zero (one open curve)"));
+  add(expression_key("boundary", "dirichlet", "", &Scene::dirichlet_predicate,
+                     "Γ_D (u = 0): edges whose midpoint makes this non-zero; the rest is Γ_N"));
+  add(names_key("boundary", "contact_groups", &Scene::contact_groups, "Γ_C as Gmsh physical groups (instead of `contact`)"));
+  add(names_key("boundary", "dirichlet_groups", &Scene::dirichlet_groups, "Γ_D as Gmsh physical groups"));
+  // [contact_mesh]
+  const char* size_group = "contact_mesh size";
+  SceneKey m = integer_key("contact_mesh", "m", 1, 1000000, std::nullopt, &Scene::m, "segments of T_{C,H}, graded by `grading`");
+  m.group = size_group;
+  add(m);
+  add({"contact_mesh", "ratio", "number or fraction", "", "positive, e.g. 1, 0.5, \"2/3\"",
+       "h/H: on a uniform T_h|Γ_C m = n · ratio; on a graded one 1/k merges k edges, k splits each edge", size_group,
+       [](const TomlTable& table, Scene& scene) {
+         if (table.has("ratio"))
+           scene.ratio = parse_ratio(table.string_list("ratio").front(), table.origin("ratio"), table.qualified("ratio"));
+       }});
+  add(numbers_key("contact_mesh", "breakpoints",
+                  "positive arc lengths (numbers), strictly increasing, the last the length of Γ_C", &Scene::breakpoints,
+                  "the interior and last breakpoints of T_{C,H} by arc length", [](double v) { return v > 0.0; },
+                  size_group));
+  add(number_key("contact_mesh", "grading", 1e-3, 1.0, 1.0, &Scene::grading,
+                 "with `m`: each segment this times the previous one (1: uniform)"));
+  // [discretization]
+  add(degree_key("p", 1, 20, &Scene::p, "degree p of S^p(T_h), or a rule evaluated at cell centres (required)"));
+  add(degree_key("pC", 0, 19, &Scene::pc, "multiplier degree p_C, or a rule evaluated at segment midpoints (required)"));
+  // [data]
+  add(expression_key("data", "f", "-1", &Scene::load, "load f"));
+  add(expression_key("data", "g", "", &Scene::obstacle, "obstacle g of the Signorini problem (9)"));
+  add(expression_key("data", "s", "", &Scene::friction_bound, "friction bound s ≥ 0 of (13), (15) and of the pairing (22)"));
+  // [infsup]
+  add(choice_key<infsup::GramNorm>("infsup", "norm",
+                                   {{"interp", infsup::GramNorm::interpolation},
+                                    {"interpolation", infsup::GramNorm::interpolation},
+                                    {"extension", infsup::GramNorm::extension}},
+                                   infsup::GramNorm::interpolation, &Scene::norm, "realization of H^{-1/2}(Γ_C)"));
+  add(choice_key<infsup::PairingProblem>(
+      "infsup", "problem", {{"signorini", infsup::PairingProblem::signorini}, {"friction", infsup::PairingProblem::friction}},
+      infsup::PairingProblem::signorini, &Scene::problem, "pairing: (11) or (22) with the scene's s"));
+  add(number_key("infsup", "alpha_tol", 1e-12, 0.1, 1e-4, &Scene::alpha_tolerance,
+                 "relative error of α: the H^{-1/2} reference is refined until the estimate is below it"));
+  // [solve]
+  add({"solve", "constraint_points", "integer", "p_C + 1", "[1, 64], at least p_C + 1",
+       "constraint points per segment (Chebyshev–Lobatto, Remark 3)", "", [](const TomlTable& table, Scene& scene) {
+         if (table.has("constraint_points"))
+           scene.constraint_points = static_cast<int>(table.integer("constraint_points", 1, 64));
+       }});
+  add({"solve", "fit_free_boundary", "boolean", "false", "true, false",
+       "grade the mesh towards the free boundary of the contact problems first (rectangle domains)", "",
+       [](const TomlTable& table, Scene& scene) { scene.fit_free_boundary = table.boolean("fit_free_boundary", false); }});
+  // [run]
+  add(enum_list_key<Effect>("run", "effects", all_effects(), &Scene::effects, "",
+                            "what the run computes; absent: `solve` needs --effects"));
+  add(enum_list_key<Output>("run", "outputs", all_outputs(), &Scene::outputs, "those that apply",
+                            "what the run writes; listed outputs must apply to the effects"));
+  // [convergence]
+  add(integer_key("convergence", "refinements", 1, 6, 3, &Scene::convergence_refinements,
+                  "levels of uniform refinement beyond the scene's mesh (effect convergence)"));
+  return keys;
+}
+
+}  // namespace
+
+const std::vector<SceneSection>& scene_sections() {
+  static const std::vector<SceneSection> sections{
+      {"domain", true, "Ω and T_h: a rectangle or a Gmsh mesh"},
+      {"boundary", true, "the boundary parts Γ_C and Γ_D"},
+      {"contact_mesh", true, "T_{C,H}: exactly one of m, ratio, breakpoints"},
+      {"discretization", true, "the degrees p and p_C"},
+      {"data", false, "f, g, s"},
+      {"infsup", false, "the inf-sup constant α (effect infsup, `hpcontact infsup`)"},
+      {"solve", false, "the contact solve"},
+      {"run", false, "effects and outputs of `hpcontact solve`"},
+      {"convergence", false, "the convergence effect"}};
+  return sections;
+}
+
+const std::vector<SceneKey>& scene_keys() {
+  static const std::vector<SceneKey> keys = declare_keys();
+  return keys;
+}
+
+const SceneKey* find_scene_key(const std::string& dotted) {
+  for (const auto& key : scene_keys())
+    if (key.dotted() == dotted) return &key;
+  return nullptr;
+}
+
+std::string scene_key_reference() {
+  std::string text =
+      "# Scene keys\n\n"
+      "Generated by `hpcontact scene-keys` from the declarations in lib/scene/scene_keys.cpp; a test fails if\n"
+      "this file differs. Sections marked *required* must be present. Expressions are muparser expressions\n"
+      "in x and y (`abs`, `sin`, `^`, `&&`, `||`, `<`, ...).\n";
+  for (const auto& section : scene_sections()) {
+    text += fmt::format("\n## [{}]{}\n\n{}\n\n", section.name, section.required ? " (required)" : "", section.doc);
+    text += "| key | type | default | allowed | meaning |\n|---|---|---|---|---|\n";
+    for (const auto& key : scene_keys())
+      if (key.section == section.name)
+        text += fmt::format("| `{}` | {} | {} | {} | {} |\n", key.name, key.type,
+                            key.default_text.empty() ? "—" : "`" + key.default_text + "`", key.allowed, key.doc);
+  }
+  return text;
+}
+
+}  // namespace hpcontact::scene

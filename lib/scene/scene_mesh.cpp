@@ -1,0 +1,236 @@
+// Building a scene's meshes and degree distributions: T_h with its boundary parts, p_T per cell,
+// p_C per segment and T_{C,H}.
+#include "scene/scene_mesh.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <set>
+
+#include "core/error.hpp"
+#include "core/expression.hpp"
+#include "mesh/cell_map.hpp"
+#include "mesh/contact_boundary.hpp"
+#include "mesh/gmsh_reader.hpp"
+#include "mesh/point_grading.hpp"
+#include "mesh/refine.hpp"
+
+namespace hpcontact::scene {
+
+namespace {
+
+/// The tensor mesh, graded towards the lines of grading_x, grading_y, with a node at every
+/// coordinate of the grading points (whose local layers come after).
+mesh::QuadMesh build_rectangle(const Scene& scene) {
+  const auto& r = scene.rectangle;
+  std::vector<double> point_x, point_y;
+  for (const auto& point : scene.grading_points) {
+    point_x.push_back(point.x());
+    point_y.push_back(point.y());
+  }
+  return mesh::make_tensor_mesh(
+      mesh::graded_nodes(r.x_min, r.x_max, scene.n_x, scene.grading_x, scene.domain_grading, scene.grading_layers,
+                         scene.file + ": key 'domain.grading_x'", point_x,
+                         scene.file + ": key 'domain.grading_points' (an x coordinate)"),
+      mesh::graded_nodes(r.y_min, r.y_max, scene.n_y, scene.grading_y, scene.domain_grading, scene.grading_layers,
+                         scene.file + ": key 'domain.grading_y'", point_y,
+                         scene.file + ": key 'domain.grading_points' (a y coordinate)"),
+      scene.file + ": rectangle");
+}
+
+/// Local geometric layers towards the scene's grading points.
+mesh::QuadMesh grade_towards_points(const mesh::QuadMesh& mesh, const Scene& scene) {
+  if (scene.grading_points.empty()) return mesh;
+  const std::string origin = scene.file + ": key 'domain.grading_points'";
+  std::vector<int> centres;
+  for (const auto& point : scene.grading_points) centres.push_back(mesh::vertex_at(mesh, point, origin));
+  return mesh::grade_towards_vertices(mesh, centres, scene.domain_grading, scene.grading_layers, origin);
+}
+
+}  // namespace
+
+mesh::QuadMesh build_scene_mesh(const Scene& scene) {
+  mesh::QuadMesh mesh = grade_towards_points(
+      scene.mesh_file.empty() ? build_rectangle(scene) : mesh::read_gmsh_mesh(scene.mesh_file), scene);
+  if (scene.perturb > 0) mesh::perturb_interior_vertices(mesh, scene.perturb, scene.seed);
+  for (int k = 0; k < scene.refinements; ++k) mesh = mesh::refine_uniformly(mesh);
+  auto predicate = [&](const std::string& text, const char* key) {
+    const Expression expression(text, scene.file + ": key 'boundary." + key + "'");
+    return [expression](const mesh::Point& x) { return expression(x.x(), x.y()) != 0.0; };
+  };
+  std::map<std::string, mesh::BoundaryPart> by_label;
+  for (const auto& group : scene.contact_groups) by_label[group] = mesh::BoundaryPart::contact;
+  if (!scene.contact_predicate.empty())
+    mesh::assign_boundary_part(mesh, mesh::BoundaryPart::contact, predicate(scene.contact_predicate, "contact"));
+  // Γ_D must not overlap Γ_C: check every edge Γ_D claims before assigning it.
+  std::function<bool(const mesh::Point&)> in_dirichlet = [](const mesh::Point&) { return false; };
+  if (!scene.dirichlet_predicate.empty()) in_dirichlet = predicate(scene.dirichlet_predicate, "dirichlet");
+  for (int e : mesh.boundary_edges()) {
+    const bool contact = mesh.edge_part(e) == mesh::BoundaryPart::contact ||
+                         by_label.contains(mesh.edge_label(e));
+    bool dirichlet = in_dirichlet(mesh.edge_midpoint(e));
+    for (const auto& group : scene.dirichlet_groups) dirichlet = dirichlet || mesh.edge_label(e) == group;
+    if (contact && dirichlet) {
+      const auto m = mesh.edge_midpoint(e);
+      throw InputError(fmt::format("{}: Γ_C and Γ_D overlap at the edge with midpoint ({}, {}); "
+                                   "key 'boundary.dirichlet' must exclude Γ_C", scene.file, m.x(), m.y()));
+    }
+    if (contact) mesh.set_edge_part(e, mesh::BoundaryPart::contact);
+    if (dirichlet) mesh.set_edge_part(e, mesh::BoundaryPart::dirichlet);
+  }
+  bool any_contact = false;
+  for (int e : mesh.boundary_edges()) any_contact = any_contact || mesh.edge_part(e) == mesh::BoundaryPart::contact;
+  if (!any_contact) {
+    const bool by_groups = scene.contact_predicate.empty();
+    std::string value = scene.contact_predicate;
+    for (const auto& group : scene.contact_groups) value += (value.empty() ? "" : ", ") + group;
+    std::set<std::string> labels;
+    for (int e : mesh.boundary_edges()) labels.insert(mesh.edge_label(e));
+    throw_bad_input(scene.file, by_groups ? "boundary.contact_groups" : "boundary.contact", value,
+                    by_groups ? fmt::format("it must name a physical group on the boundary (Γ_C is empty); the mesh "
+                                            "has: {}", fmt::join(labels, ", "))
+                              : "it must select at least one boundary edge (Γ_C is empty)");
+  }
+  try {
+    const mesh::ContactBoundary chain(mesh);
+  } catch (const InputError& error) {
+    throw InputError(fmt::format("{}: key 'boundary.{}': {}", scene.file,
+                                 scene.contact_predicate.empty() ? "contact_groups" : "contact", error.what()));
+  }
+  return mesh;
+}
+
+namespace {
+
+int whole_degree(const Expression& rule, const mesh::Point& x, int low, int high,
+                 const std::string& file, const std::string& key) {
+  const double value = rule(x.x(), x.y());
+  if (std::abs(value - std::round(value)) > 1e-9 || value < low || value > high)
+    throw_bad_input(file, key, fmt::format("{} at ({}, {})", value, x.x(), x.y()),
+                    fmt::format("the rule must give whole numbers in [{}, {}]", low, high));
+  return static_cast<int>(std::lround(value));
+}
+
+}  // namespace
+
+std::vector<int> scene_cell_degrees(const Scene& scene, const mesh::QuadMesh& mesh) {
+  if (scene.p.rule.empty()) return std::vector<int>(mesh.n_cells(), scene.p.value);
+  const Expression rule(scene.p.rule, scene.where("discretization.p") + ": key 'discretization.p'");
+  std::vector<int> degrees(mesh.n_cells());
+  for (int c = 0; c < mesh.n_cells(); ++c)
+    degrees[c] = whole_degree(rule, mesh::CellMap(mesh, c).map(0.0, 0.0), 1, 20, scene.where("discretization.p"),
+                              "discretization.p");
+  return degrees;
+}
+
+std::vector<int> scene_segment_degrees(const Scene& scene, const mesh::ContactBoundary& contact,
+                                       const mesh::BoundaryMesh& boundary_mesh) {
+  if (scene.pc.rule.empty()) return std::vector<int>(boundary_mesh.n_segments(), scene.pc.value);
+  const Expression rule(scene.pc.rule, scene.where("discretization.pC") + ": key 'discretization.pC'");
+  std::vector<int> degrees(boundary_mesh.n_segments());
+  for (int k = 0; k < boundary_mesh.n_segments(); ++k)
+    degrees[k] = whole_degree(rule, contact.point_at(0.5 * (boundary_mesh.segment_begin(k) + boundary_mesh.segment_end(k))),
+                              0, 19, scene.where("discretization.pC"), "discretization.pC");
+  return degrees;
+}
+
+namespace {
+
+/// Indices k of the trace vertices s_k (1 ≤ k ≤ n, n always last) that are grading points, or at
+/// which Γ_C meets one of the scene's grading lines x = c or y = c at an isolated vertex: the
+/// singular points the mesh is graded towards. A line Γ_C runs along (grading towards Γ_C
+/// itself) marks none of its vertices.
+std::vector<int> grading_nodes_on_contact(const Scene& scene, const mesh::ContactBoundary& contact) {
+  const auto s = contact.breakpoints();
+  const int n = static_cast<int>(s.size()) - 1;
+  const double tolerance = 1e-12 * contact.length();
+  auto on_a_line = [&](int k, bool along_x) {
+    const auto point = contact.point_at(s[k]);
+    const double coordinate = along_x ? point.x() : point.y();
+    for (double c : along_x ? scene.grading_x : scene.grading_y)
+      if (std::abs(coordinate - c) < tolerance) return true;
+    return false;
+  };
+  auto a_grading_point = [&](int k) {
+    const auto point = contact.point_at(s[k]);
+    return std::any_of(scene.grading_points.begin(), scene.grading_points.end(),
+                       [&](const mesh::Point& q) { return (q - point).norm() < tolerance; });
+  };
+  auto meets_a_line = [&](int k) {
+    for (bool along_x : {true, false})
+      if (on_a_line(k, along_x) && !(on_a_line(k - 1, along_x) && on_a_line(k + 1, along_x))) return true;
+    return false;
+  };
+  std::vector<int> nodes;
+  for (int k = 1; k < n; ++k)
+    if (a_grading_point(k) || meets_a_line(k)) nodes.push_back(k);
+  nodes.push_back(n);
+  return nodes;
+}
+
+}  // namespace
+
+mesh::BoundaryMesh build_scene_boundary_mesh(const Scene& scene, const mesh::ContactBoundary& contact) {
+  const int split = 1 << scene.refinements;  // segments per segment of the scene's own T_{C,H}
+  if (!scene.breakpoints.empty()) {
+    auto given = scene.breakpoints;
+    if (std::abs(given.back() - contact.length()) > 1e-10 * contact.length())
+      throw_bad_input(scene.file, "contact_mesh.breakpoints", fmt::format("last = {}", given.back()),
+                      fmt::format("must run from 0 to the length of Γ_C, {}", contact.length()));
+    given.back() = contact.length();
+    given.insert(given.begin(), 0.0);
+    std::vector<double> nodes{0.0};
+    for (std::size_t k = 0; k + 1 < given.size(); ++k)
+      for (int i = 1; i <= split; ++i) nodes.push_back(given[k] + (given[k + 1] - given[k]) * i / split);
+    nodes.back() = contact.length();
+    return mesh::BoundaryMesh(nodes, scene.file + ": key 'contact_mesh.breakpoints'");
+  }
+  if (!scene.ratio) return mesh::BoundaryMesh::graded(contact.length(), scene.m * split, scene.grading);
+  // ratio = h/H. On a uniform T_h|Γ_C: m = n · ratio equal segments. On a graded one, T_{C,H}
+  // follows T_h|Γ_C: ratio 1/k merges k neighbouring edges (the last segment also takes the
+  // n mod k left over), ratio k splits every edge in k.
+  const auto edges = contact.breakpoints();
+  const int n = static_cast<int>(edges.size()) - 1;
+  const double ratio = scene.ratio->value;
+  const std::string ratio_where = scene.where("contact_mesh.ratio");
+  bool uniform = true;
+  for (int e = 0; e < n; ++e) uniform = uniform && std::abs(edges[e + 1] - edges[e] - contact.length() / n) < 1e-9 * contact.length() / n;
+  if (uniform) {
+    const double exact = n * ratio;
+    const int m = static_cast<int>(std::lround(exact));
+    if (m < 1 || std::abs(exact - m) > 1e-9 * exact)
+      throw_bad_input(ratio_where, "contact_mesh.ratio", scene.ratio->text,
+                      fmt::format("Γ_C has {} edges of T_h; {} · ratio = {} must be a whole number of segments", n, n, exact));
+    return mesh::BoundaryMesh::graded(contact.length(), m, scene.grading);
+  }
+  const long merge = std::lround(1.0 / ratio), divide = std::lround(ratio);
+  std::vector<double> nodes{0.0};
+  if (merge >= 1 && std::abs(merge * ratio - 1.0) < 1e-9 && n >= merge) {
+    // Groups of k edges within each run between grading nodes, so that the singular points the
+    // mesh is graded towards stay breakpoints of T_{C,H} (a segment straddling the end of a
+    // contact set cannot represent λ's square-root onset); a run's last segment also takes the
+    // edges left over, a run shorter than k is one segment.
+    const auto runs = grading_nodes_on_contact(scene, contact);
+    int run_begin = 0;
+    for (int run_end : runs) {
+      const int length = run_end - run_begin, groups = std::max(1, length / static_cast<int>(merge));
+      for (int g = 1; g < groups; ++g) nodes.push_back(edges[run_begin + g * static_cast<int>(merge)]);
+      nodes.push_back(edges[run_end]);
+      run_begin = run_end;
+    }
+  } else if (divide >= 1 && std::abs(ratio - static_cast<double>(divide)) < 1e-9) {
+    for (int e = 0; e < n; ++e)
+      for (long i = 1; i <= divide; ++i) nodes.push_back(edges[e] + (edges[e + 1] - edges[e]) * i / divide);
+  } else {
+    throw_bad_input(ratio_where, "contact_mesh.ratio", scene.ratio->text,
+                    fmt::format("T_h is not uniform on Γ_C ({} edges): the ratio must be 1/k with k <= {}, or a whole number", n, n));
+  }
+  nodes.back() = contact.length();
+  return mesh::BoundaryMesh(nodes, ratio_where + ": key 'contact_mesh.ratio'");
+}
+
+}  // namespace hpcontact::scene

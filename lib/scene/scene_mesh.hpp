@@ -1,0 +1,27 @@
+// A scene's meshes and degree distributions: T_h with its boundary parts, p_T per cell, p_C per
+// segment, and T_{C,H} on Γ_C.
+#pragma once
+
+#include <vector>
+
+#include "mesh/boundary_mesh.hpp"
+#include "mesh/contact_boundary.hpp"
+#include "mesh/quad_mesh.hpp"
+#include "scene/scene.hpp"
+
+namespace hpcontact::scene {
+
+/// T_h with boundary parts. @throws InputError if Γ_C is empty or Γ_C and Γ_D overlap.
+mesh::QuadMesh build_scene_mesh(const Scene& scene);
+
+/// p_T per cell (the rule at Ψ_T(0,0), or p). @throws InputError for values that are not whole
+/// numbers in [1, 20].
+std::vector<int> scene_cell_degrees(const Scene& scene, const mesh::QuadMesh& mesh);
+/// p_C per segment (the rule at the segment midpoint, or pC), whole numbers in [0, 19].
+std::vector<int> scene_segment_degrees(const Scene& scene, const mesh::ContactBoundary& contact,
+                                       const mesh::BoundaryMesh& boundary_mesh);
+
+/// T_{C,H} on Γ_C of the scene's mesh.
+mesh::BoundaryMesh build_scene_boundary_mesh(const Scene& scene, const mesh::ContactBoundary& contact);
+
+}  // namespace hpcontact::scene

@@ -1,0 +1,210 @@
+// Scene text + overrides → a checked Scene: keys read through the declared table, then the rules
+// between keys.
+#include "scene/scene_reader.hpp"
+
+#include <unistd.h>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <toml++/toml.h>
+
+#include <cmath>
+#include <memory>
+#include <tuple>
+
+#include "core/error.hpp"
+#include "io/toml_reader.hpp"
+#include "scene/scene_keys.hpp"
+
+namespace hpcontact::scene {
+namespace {
+
+/// The override's value as a TOML node.
+void assign(toml::table& section, const std::string& name, const SceneOverride::Value& value) {
+  std::visit(
+      [&](const auto& v) {
+        using T = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<T, long long>) {
+          section.insert_or_assign(name, static_cast<std::int64_t>(v));
+        } else if constexpr (std::is_same_v<T, std::vector<std::string>>) {
+          toml::array list;
+          for (const auto& text : v) list.push_back(text);
+          section.insert_or_assign(name, std::move(list));
+        } else {
+          section.insert_or_assign(name, v);
+        }
+      },
+      value);
+}
+
+/// Applies the overrides to the parsed file; returns the origins of the values they set.
+std::map<std::string, std::string> apply_overrides(toml::table& root, const std::vector<SceneOverride>& overrides) {
+  std::map<std::string, std::string> origins;
+  for (const auto& override : overrides) {
+    const SceneKey* key = find_scene_key(override.key);
+    if (!key) throw_bad_input(override.origin, override.key, "", "a scene key (see docs/scene_keys.md)");
+    if (!root.contains(key->section)) root.insert(key->section, toml::table{});
+    auto* section = root.get_as<toml::table>(key->section);
+    if (!section) throw_bad_input(override.origin, key->section, "(not a table)", "a table of the scene");
+    if (!key->group.empty())
+      for (const auto& other : scene_keys())
+        if (other.group == key->group && other.section == key->section) section->erase(other.name);
+    assign(*section, key->name, override.value);
+    origins[override.key] = override.origin;
+  }
+  return origins;
+}
+
+void check_domain(const Scene& scene) {
+  if (!scene.is_rectangle()) {
+    for (const char* key : {"x_min", "x_max", "y_min", "y_max", "n_x", "n_y", "grading_x", "grading_y"})
+      if (scene.given.contains(fmt::format("domain.{}", key)))
+        throw_bad_input(scene.where(fmt::format("domain.{}", key)), fmt::format("domain.{}", key), "(given)",
+                        "applies to a rectangle, not to the Gmsh mesh of domain.mesh");
+    if (scene.fit_free_boundary)
+      throw_bad_input(scene.where("solve.fit_free_boundary"), "solve.fit_free_boundary", "true",
+                      "a rectangle domain: the located points become vertices by moving the nearest nodes, which a "
+                      "Gmsh mesh does not allow");
+    return;
+  }
+  for (const char* key : {"domain.n_x", "domain.n_y"})
+    if (!scene.given.contains(key)) throw_bad_input(scene.file, key, "(missing)", "an integer in [1, 100000] is required");
+  const auto& r = scene.rectangle;
+  for (const auto& [axis, low, high] : {std::tuple{"x", r.x_min, r.x_max}, std::tuple{"y", r.y_min, r.y_max}}) {
+    const std::string key = fmt::format("domain.{}_min, domain.{}_max", axis, axis);
+    const std::string value = fmt::format("{}, {}", low, high);
+    if (!(high > low)) throw_bad_input(scene.file, key, value, fmt::format("must satisfy {}_min < {}_max", axis, axis));
+    // Narrower than this, the vertices of even a coarse mesh coincide in floating point.
+    if (high - low <= 1e-9 * std::max({std::abs(low), std::abs(high), 1e-290}) || high - low < 1e-280)
+      throw_bad_input(scene.file, key, value,
+                      fmt::format("the width {:.3g} is below the resolution of the coordinates: at least 1e-9 of their "
+                                  "magnitude (and 1e-280)",
+                                  high - low));
+  }
+}
+
+void check_boundary_and_contact_mesh(const Scene& scene) {
+  if (scene.contact_predicate.empty() == scene.contact_groups.empty())
+    throw_bad_input(scene.where("boundary.contact"), "boundary.contact",
+                    "(" + std::string(scene.contact_predicate.empty() ? "missing" : "both given") + ")",
+                    "give exactly one of 'contact' (a predicate in x, y) and 'contact_groups' (Gmsh physical names)");
+  if (!scene.contact_groups.empty() && scene.is_rectangle())
+    throw_bad_input(scene.where("boundary.contact_groups"), "boundary.contact_groups", "",
+                    "needs a Gmsh mesh in domain.mesh");
+  int given = 0;
+  for (const char* key : {"contact_mesh.m", "contact_mesh.ratio", "contact_mesh.breakpoints"})
+    given += scene.given.contains(key) ? 1 : 0;
+  if (given != 1)
+    throw_bad_input(scene.file, "contact_mesh", fmt::format("({} of m, ratio, breakpoints given)", given),
+                    "give exactly one of m, ratio, breakpoints");
+  if (scene.problem == infsup::PairingProblem::friction && scene.friction_bound.empty())
+    throw_bad_input(scene.where("data.s"), "data.s", "(missing)", "the friction problem needs the friction bound s");
+}
+
+// A scene whose discretization cannot fit: refused before anything is allocated. The estimate is
+// the rectangle's cells (with grading layers and refinements) times (p + 1)² dofs and 1.2 KB per
+// dof, the peak measured for the condensed factorizations at p = 4 (1.2 GB at 1.05e6 dofs).
+void check_scene_size(const Scene& scene) {
+  if (!scene.is_rectangle()) return;  // a Gmsh mesh is as large as its file
+  const double layers = 2.0 * scene.grading_layers;
+  const double cells = (scene.n_x + layers * static_cast<double>(scene.grading_x.size())) *
+                       (scene.n_y + layers * static_cast<double>(scene.grading_y.size())) *
+                       std::pow(4.0, scene.refinements);
+  const double p = scene.p.rule.empty() ? scene.p.value : 1.0;  // a rule: at least degree 1 everywhere
+  const double dofs = cells * p * p, bytes = 1.2e3 * dofs;
+  const double memory = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
+  const std::string size = fmt::format("{:.3g} cells ({} x {}{}) at p = {}: about {:.3g} unknowns", cells, scene.n_x,
+                                       scene.n_y, scene.refinements ? fmt::format(", {} refinements", scene.refinements) : "",
+                                       scene.p.rule.empty() ? std::to_string(scene.p.value) : "its rule", dofs);
+  if (dofs > 2147483647.0)
+    throw_bad_input(scene.file, "domain.n_x, domain.n_y", size, "at most 2^31 - 1 unknowns (32-bit indices)");
+  if (bytes > memory)
+    throw_bad_input(scene.file, "domain.n_x, domain.n_y", size,
+                    fmt::format("needs about {:.3g} GB (1.2 KB per unknown), more than this machine's {:.3g} GB",
+                                bytes / 1e9, memory / 1e9));
+}
+
+}  // namespace
+
+void check_effects(const Scene& scene) {
+  const std::string where = scene.where("run.effects");
+  if (scene.effects.empty()) {
+    std::vector<std::string> names;
+    for (Effect effect : all_effects()) names.push_back(to_string(effect));
+    throw_bad_input(where, "run.effects", "[]", fmt::format("at least one of {}", fmt::join(names, ", ")));
+  }
+  if (scene.has_effect(Effect::signorini) && scene.obstacle.empty())
+    throw_bad_input(scene.where("data.g"), "data.g", "(missing)", "the effect 'signorini' (problem (9)) needs the obstacle g");
+  for (Effect problem : {Effect::friction, Effect::friction_s})
+    if (scene.has_effect(problem) && scene.friction_bound.empty())
+      throw_bad_input(scene.where("data.s"), "data.s", "(missing)",
+                      fmt::format("the effect '{}' needs the friction bound s", to_string(problem)));
+  const bool contact = !scene.contact_effects().empty();
+  if (scene.fit_free_boundary && !contact)
+    throw_bad_input(where, "solve.fit_free_boundary", "true",
+                    "needs a contact problem among the effects (signorini, friction, friction_s)");
+  if (scene.has_effect(Effect::convergence) && !contact)
+    throw_bad_input(where, "run.effects", "convergence",
+                    "'convergence' refines the contact problems of the scene: add signorini, friction or friction_s");
+  if (!scene.given.contains("run.outputs")) return;
+  const std::string outputs_where = scene.where("run.outputs");
+  if (scene.wants_output(Output::mode) && !scene.has_effect(Effect::infsup))
+    throw_bad_input(outputs_where, "run.outputs", "mode", "the spurious mode needs the effect 'infsup'");
+  for (Output output : {Output::boundary, Output::vtu})
+    if (scene.wants_output(output) && !contact)
+      throw_bad_input(outputs_where, "run.outputs", to_string(output),
+                      "needs a contact problem among the effects (signorini, friction, friction_s)");
+}
+
+Scene parse_scene(const std::string& text, const std::string& path, const std::vector<SceneOverride>& overrides) {
+  // Parse errors are reported with line and column by the reader; the tree is then copied so that
+  // the overrides can replace values.
+  auto tree = std::make_shared<toml::table>(io::parse_toml_string(text, path).raw());
+  auto origins = apply_overrides(*tree, overrides);
+  io::TomlTable root(tree, tree.get(), path, "");
+  root.set_origins(origins);
+
+  Scene scene;
+  scene.file = path;
+  scene.origins = std::move(origins);
+  // Misspelt section names are reported before "missing section" errors.
+  for (const auto& section : scene_sections()) root.has(section.name);
+  root.reject_unknown_keys();
+  for (const auto& section : scene_sections()) {
+    const io::TomlTable table = root.table(section.name, section.required);
+    for (const auto& key : scene_keys()) {
+      if (key.section != section.name) continue;
+      if (table.has(key.name)) scene.given.insert(key.dotted());
+      key.read(table, scene);
+    }
+    table.reject_unknown_keys();
+  }
+  check_domain(scene);
+  check_boundary_and_contact_mesh(scene);
+  if (scene.given.contains("run.effects") || scene.given.contains("run.outputs")) check_effects(scene);
+  check_scene_size(scene);
+  return scene;
+}
+
+Scene read_scene(const std::string& path, const std::vector<SceneOverride>& overrides) {
+  return parse_scene(io::read_text_file(path), path, overrides);
+}
+
+std::string paper_scene_text() {
+  return R"toml([domain]
+n_x = 8
+n_y = 8
+[boundary]
+contact = "abs(y + 1) < 1e-9"
+dirichlet = "abs(y - 1) < 1e-9 || (abs(x - 1) < 1e-9 && y > 0)"
+[contact_mesh]
+ratio = 1
+[discretization]
+p = 1
+pC = 0
+[data]
+s = "(1 - x)^2"
+)toml";
+}
+
+}  // namespace hpcontact::scene
