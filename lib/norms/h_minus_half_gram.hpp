@@ -1,4 +1,4 @@
-// The H^{-1/2}(Γ_C) Gram matrix G of the multiplier space, in two realizations (DESIGN.md).
+// The H^{-1/2}(Γ_C) Gram matrix G of the multiplier space, in two realizations (docs/mathematics.md).
 //
 // Interpolation norm. H^{1/2}(Γ_C) = [L², H¹]_{1/2} (no boundary conditions at the ends of Γ_C).
 // The toolkit computes it from its kernel (interpolation_norm_kernel.hpp); here, as the
