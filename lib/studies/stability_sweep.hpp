@@ -11,6 +11,7 @@
 #include "io/csv_writer.hpp"
 #include "scene/ratio.hpp"
 #include "scene/scene_variants.hpp"
+#include "studies/sweep_verdicts.hpp"
 
 namespace hpcontact::studies {
 
@@ -63,15 +64,5 @@ std::vector<std::string> alpha_columns();
 void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::path& alpha_csv,
                          const std::function<void(int, int, const std::string&)>& progress = {});
 
-/// Fits α ≈ C h_min^r over the `fit_levels` finest levels of each configuration in alpha.csv
-/// (h_min, the shortest edge on Γ_C, is h on uniform meshes and the size of the finest layer on
-/// graded ones, where checkerboard modes live) and returns verdicts.csv:
-/// problem,norm,p,pC,ratio,rate,C,alpha_finest,verdict with verdict
-///   singular        α_finest ≤ 1e-6 (α² ≤ 1e-12 λ_max, λ_max ≤ 1 here: zero to working precision)
-///   decaying        r ≥ 0.3 (α → 0 like h_min^r)
-///   stable          otherwise (α bounded below)
-///   too_few_levels  one level only
-///   h_unchanged     the levels do not refine Γ_C (no rate can be fitted)
-io::CsvTable fit_verdicts(const std::filesystem::path& alpha_csv, int fit_levels);
 
 }  // namespace hpcontact::studies

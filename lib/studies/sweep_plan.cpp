@@ -1,0 +1,135 @@
+// The sweep's points, groups, cost estimates and schedule.
+#include "studies/sweep_plan.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "studies/stability_sweep.hpp"
+#include "studies/sweep_rows.hpp"
+
+namespace hpcontact::studies {
+
+std::string SweepPoint::key() const {
+  return point_key(problem, norm, reported_p, reported_pc, static_cast<int>(level) + 1, m);
+}
+
+std::vector<std::optional<scene::Ratio>> ratio_choices(const StabilitySweep& sweep) {
+  if (sweep.ratios.empty()) return {std::nullopt};
+  return {sweep.ratios.begin(), sweep.ratios.end()};
+}
+
+std::vector<SweepPoint> list_sweep_points(const StabilitySweep& sweep) {
+  const std::size_t ratios = ratio_choices(sweep).size();
+  const std::vector<int> degrees = sweep.degrees.empty() ? std::vector<int>{0} : sweep.degrees;
+  const std::vector<int> multiplier_degrees =
+      sweep.multiplier_degrees.empty() ? std::vector<int>{-1} : sweep.multiplier_degrees;
+  std::vector<SweepPoint> points;
+  for (std::size_t level = 0; level < sweep.levels.size(); ++level) {
+    const auto& facts = sweep.level_facts[level];
+    for (int p : degrees)
+      for (const auto problem : sweep.problems)
+        for (const auto norm : sweep.norms)
+          for (int pc : multiplier_degrees)
+            for (std::size_t r = 0; r < ratios; ++r) {
+              const int reported_p = p > 0 ? p : facts.scene_p, reported_pc = pc >= 0 ? pc : facts.scene_pc[r];
+              if (sweep.pc_below_p && reported_pc >= reported_p) continue;
+              points.push_back({infsup::to_string(problem), infsup::to_string(norm), problem, norm, level, r, p, pc,
+                                reported_p, reported_pc, facts.segments[r]});
+            }
+  }
+  return points;
+}
+
+std::map<std::pair<std::size_t, std::size_t>, std::set<int>> multiplier_degrees_used(
+    const std::vector<SweepPoint>& points) {
+  std::map<std::pair<std::size_t, std::size_t>, std::set<int>> used;
+  for (const auto& point : points) used[{point.level, point.ratio}].insert(point.pc);
+  return used;
+}
+
+SweepPlan plan_sweep(const StabilitySweep& sweep, const std::vector<SweepPoint>& points,
+                     const std::set<std::string>& done) {
+  SweepPlan plan;
+  plan.level_shared_cost.assign(sweep.levels.size(), 0.0);
+  const double largest_p = sweep.degrees.empty() ? 0.0 : *std::max_element(sweep.degrees.begin(), sweep.degrees.end());
+  for (std::size_t first = 0; first < points.size();) {
+    SweepGroup group{first, first, points[first].level};
+    int todo_points = 0;
+    for (; group.last < points.size() && points[group.last].level == group.level &&
+           points[group.last].p == points[first].p;
+         ++group.last) {
+      if (done.contains(points[group.last].key())) continue;
+      group.todo = true;
+      ++todo_points;
+      group.extension = group.extension || points[group.last].gram == infsup::GramNorm::extension;
+    }
+    const double cells = sweep.level_facts[group.level].cells, p = points[first].reported_p;
+    const double dofs = cells * p * p;
+    group.cost = std::pow(dofs, 1.2) + 0.05 * todo_points * dofs;
+    if (group.extension) {
+      const double largest = largest_p > 0 ? largest_p : p;
+      plan.level_shared_cost[group.level] = std::pow(4.0 * cells * (largest + 2) * (largest + 2), 1.2);
+    }
+    plan.groups.push_back(group);
+    first = group.last;
+  }
+  return plan;
+}
+
+namespace {
+
+std::vector<std::size_t> longest_first(std::vector<std::size_t> order, const std::vector<double>& cost) {
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
+  return order;
+}
+
+}  // namespace
+
+double schedule_sweep_groups(SweepPlan& plan, int ranks) {
+  auto& groups = plan.groups;
+  const std::size_t levels = plan.level_shared_cost.size();
+  std::vector<std::size_t> todo;
+  std::vector<double> level_cost(levels, 0.0), group_cost;
+  for (const auto& group : groups) group_cost.push_back(group.cost);
+  for (std::size_t i = 0; i < groups.size(); ++i) {
+    if (!groups[i].todo) continue;
+    todo.push_back(i);
+    level_cost[groups[i].level] += groups[i].cost;
+  }
+  std::vector<std::size_t> busy_levels;
+  for (std::size_t level = 0; level < levels; ++level)
+    if (level_cost[level] > 0) {
+      level_cost[level] += plan.level_shared_cost[level];
+      busy_levels.push_back(level);
+    }
+  // (a) Whole levels.
+  std::vector<double> load(static_cast<std::size_t>(ranks), 0.0);
+  std::vector<int> level_owner(levels, 0);
+  for (std::size_t level : longest_first(busy_levels, level_cost)) {
+    level_owner[level] = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
+    load[static_cast<std::size_t>(level_owner[level])] += level_cost[level];
+  }
+  const double by_levels = *std::max_element(load.begin(), load.end());
+  // (b) Single groups.
+  std::fill(load.begin(), load.end(), 0.0);
+  std::vector<int> group_owner(groups.size(), 0);
+  std::set<std::pair<int, std::size_t>> has_level;  // (rank, level)
+  for (std::size_t i : longest_first(todo, group_cost)) {
+    const std::size_t level = groups[i].level;
+    auto finish = [&](int r) {
+      return load[static_cast<std::size_t>(r)] + groups[i].cost +
+             (has_level.contains({r, level}) ? 0.0 : plan.level_shared_cost[level]);
+    };
+    int owner = 0;
+    for (int r = 1; r < ranks; ++r)
+      if (finish(r) < finish(owner)) owner = r;
+    load[static_cast<std::size_t>(owner)] = finish(owner);
+    has_level.insert({owner, level});
+    group_owner[i] = owner;
+  }
+  const double by_groups = *std::max_element(load.begin(), load.end());
+  for (std::size_t i : todo) groups[i].owner = by_levels <= by_groups ? level_owner[groups[i].level] : group_owner[i];
+  return std::min(by_levels, by_groups);
+}
+
+}  // namespace hpcontact::studies

@@ -1,0 +1,74 @@
+// Planning a stability sweep, without building anything: the points it computes (level × p ×
+// problem × norm × p_C × ratio), grouped by (level, p) because the points of a group share T_h
+// and one factorization of A_G, a cost estimate per group, and the groups scheduled on the MPI
+// ranks.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "infsup/infsup_operators.hpp"
+#include "scene/ratio.hpp"
+
+namespace hpcontact::studies {
+
+struct StabilitySweep;
+
+struct SweepPoint {
+  std::string problem, norm;  ///< labels in alpha.csv
+  infsup::PairingProblem pairing = infsup::PairingProblem::signorini;
+  infsup::GramNorm gram = infsup::GramNorm::interpolation;
+  std::size_t level = 0, ratio = 0;  ///< ratio: index into ratio_choices
+  int p = 0, pc = -1;                ///< as given to the scene (0, -1: the scene's own)
+  int reported_p = 0, reported_pc = 0;
+  long m = 0;                        ///< segments of T_{C,H}
+  /// The point's key in alpha.csv (see sweep_rows.hpp).
+  std::string key() const;
+};
+
+/// The sweep's ratios, or one empty choice: the scene's own contact mesh.
+std::vector<std::optional<scene::Ratio>> ratio_choices(const StabilitySweep& sweep);
+
+/// Every point, in the order of alpha.csv: by level, p, problem, norm, p_C, ratio (p_C ≥ p skipped
+/// with pc_rule = "below_p").
+std::vector<SweepPoint> list_sweep_points(const StabilitySweep& sweep);
+
+/// Per (level, ratio index): the p_C as given that the level's points use, from which the envelope
+/// multiplier space of the level's Gram matrices is built.
+std::map<std::pair<std::size_t, std::size_t>, std::set<int>> multiplier_degrees_used(const std::vector<SweepPoint>& points);
+
+/// Consecutive points sharing (level, p).
+struct SweepGroup {
+  std::size_t first = 0, last = 0;  ///< points [first, last)
+  std::size_t level = 0;
+  bool todo = false;       ///< some point is not stored yet
+  bool extension = false;  ///< some point to do uses the extension norm
+  double cost = 0.0;       ///< estimated work of the points to do
+  int owner = 0;           ///< the rank that computes it
+};
+
+struct SweepPlan {
+  std::vector<SweepGroup> groups;
+  /// Per level: the estimated work every rank that runs a group of the level repeats (the
+  /// extension norm's reference); 0 when no group of the level needs it.
+  std::vector<double> level_shared_cost;
+};
+
+/// Groups the points, skipping those whose key is in `done`, with cost estimates: the
+/// factorizations grow like (dofs)^1.2 (dofs ~ cells p²), each point adds a little, the extension
+/// norm's reference (~ 4 cells (p + 2)² dofs at the sweep's largest p) is shared by a level.
+SweepPlan plan_sweep(const StabilitySweep& sweep, const std::vector<SweepPoint>& points,
+                     const std::set<std::string>& done);
+
+/// Sets the owner of every group to do on `ranks` ranks, by whichever of two schedules finishes
+/// first by the estimates: whole levels longest first, each to the least loaded rank (no shared
+/// work repeated), or single groups longest first, each to the rank that would finish it first
+/// counting the level's shared work on a rank without a group of that level yet (better when
+/// there are fewer levels than ranks). Returns the estimated finishing time (the largest load).
+double schedule_sweep_groups(SweepPlan& plan, int ranks);
+
+}  // namespace hpcontact::studies

@@ -1,0 +1,113 @@
+// Stage 10, sweeps: the plan of a stability sweep (its points, groups and the schedule over MPI
+// ranks) is pure and checked here without building a mesh.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <numeric>
+#include <set>
+
+#include "studies/stability_sweep.hpp"
+#include "studies/sweep_plan.hpp"
+
+using namespace hpcontact;
+using studies::SweepGroup;
+using studies::SweepPlan;
+
+namespace {
+
+// Two levels of a sweep over p = 1..3, every p_C, two ratios, both norms.
+studies::StabilitySweep two_level_sweep() {
+  studies::StabilitySweep sweep;
+  sweep.levels.resize(2);
+  for (int level = 0; level < 2; ++level) {
+    studies::StabilitySweep::LevelFacts facts;
+    facts.cells = 64 << (2 * level);
+    facts.contact_edges = 8 << level;
+    facts.scene_p = 1;
+    facts.segments = {8 << level, 4 << level};
+    facts.scene_pc = {0, 0};
+    sweep.level_facts.push_back(facts);
+  }
+  sweep.degrees = {1, 2, 3};
+  sweep.multiplier_degrees = {0, 1, 2};
+  sweep.ratios = {scene::Ratio{1.0, "1"}, scene::Ratio{0.5, "1/2"}};
+  sweep.norms = {infsup::GramNorm::interpolation, infsup::GramNorm::extension};
+  sweep.problems = {infsup::PairingProblem::signorini};
+  return sweep;
+}
+
+double load_of(const SweepPlan& plan, int rank) {
+  double load = 0.0;
+  std::set<std::size_t> levels;
+  for (const auto& group : plan.groups)
+    if (group.todo && group.owner == rank) {
+      load += group.cost;
+      levels.insert(group.level);
+    }
+  for (std::size_t level : levels) load += plan.level_shared_cost[level];
+  return load;
+}
+
+}  // namespace
+
+// Points in alpha.csv order, p_C < p only, distinct keys; groups are the runs of (level, p).
+TEST(SweepPlan, PointsAndGroups) {
+  const auto sweep = two_level_sweep();
+  const auto points = studies::list_sweep_points(sweep);
+  // Per level: p = 1 (p_C 0), p = 2 (0, 1), p = 3 (0, 1, 2): 6 pairs × 2 norms × 2 ratios.
+  ASSERT_EQ(points.size(), 2u * 6 * 2 * 2);
+  std::set<std::string> keys;
+  for (const auto& point : points) {
+    EXPECT_LT(point.reported_pc, point.reported_p);
+    keys.insert(point.key());
+  }
+  EXPECT_EQ(keys.size(), points.size());
+  const auto plan = studies::plan_sweep(sweep, points, {});
+  ASSERT_EQ(plan.groups.size(), 6u);
+  for (const auto& group : plan.groups) {
+    EXPECT_TRUE(group.todo);
+    EXPECT_TRUE(group.extension);
+    for (std::size_t k = group.first; k < group.last; ++k) {
+      EXPECT_EQ(points[k].level, group.level);
+      EXPECT_EQ(points[k].p, points[group.first].p);
+    }
+  }
+  EXPECT_GT(plan.level_shared_cost[1], plan.level_shared_cost[0]);
+  // Stored points are not planned again; a group with nothing left is not to do.
+  std::set<std::string> done;
+  for (std::size_t k = plan.groups[0].first; k < plan.groups[0].last; ++k) done.insert(points[k].key());
+  const auto resumed = studies::plan_sweep(sweep, points, done);
+  EXPECT_FALSE(resumed.groups[0].todo);
+  EXPECT_TRUE(resumed.groups[1].todo);
+}
+
+// The schedule: one rank gets everything; two ranks split two equal levels one each, and split one
+// level's equal groups when nothing is shared; the estimate returned is the largest load.
+TEST(SweepPlan, ScheduleBalancesTheRanks) {
+  SweepPlan equal_levels{{{0, 1, 0, true, false, 5.0}, {1, 2, 0, true, false, 5.0},
+                          {2, 3, 1, true, false, 5.0}, {3, 4, 1, true, false, 5.0}},
+                         {0.0, 0.0}};
+  SweepPlan serial = equal_levels;
+  EXPECT_DOUBLE_EQ(studies::schedule_sweep_groups(serial, 1), 20.0);
+  for (const auto& group : serial.groups) EXPECT_EQ(group.owner, 0);
+  EXPECT_DOUBLE_EQ(studies::schedule_sweep_groups(equal_levels, 2), 10.0);
+  EXPECT_DOUBLE_EQ(load_of(equal_levels, 0), 10.0);
+  EXPECT_DOUBLE_EQ(load_of(equal_levels, 1), 10.0);
+
+  SweepPlan one_level{{{0, 1, 0, true, false, 4.0}, {1, 2, 0, true, false, 4.0},
+                       {2, 3, 0, true, false, 4.0}, {3, 4, 0, true, false, 4.0}, {4, 5, 0, false, false, 100.0}},
+                      {0.0}};
+  EXPECT_DOUBLE_EQ(studies::schedule_sweep_groups(one_level, 2), 8.0);
+  EXPECT_DOUBLE_EQ(load_of(one_level, 0), 8.0);
+  EXPECT_DOUBLE_EQ(load_of(one_level, 1), 8.0);
+
+  // Two levels whose shared work dominates: splitting a level would repeat it, so each level
+  // stays whole on its own rank (52 each, where splitting groups would take 102).
+  SweepPlan shared{{{0, 1, 0, true, true, 1.0}, {1, 2, 0, true, true, 1.0},
+                    {2, 3, 1, true, true, 1.0}, {3, 4, 1, true, true, 1.0}},
+                   {50.0, 50.0}};
+  EXPECT_DOUBLE_EQ(studies::schedule_sweep_groups(shared, 2), 52.0);
+  EXPECT_EQ(shared.groups[0].owner, shared.groups[1].owner);
+  EXPECT_EQ(shared.groups[2].owner, shared.groups[3].owner);
+  EXPECT_NE(shared.groups[0].owner, shared.groups[2].owner);
+}
