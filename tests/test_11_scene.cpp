@@ -235,10 +235,9 @@ TEST(SceneKeys, DeclaredRangesAreCheckedAndNameTheOrigin) {
     double low = 0, high = 0;
     if ((key.type != "integer" && key.type != "number") || std::sscanf(key.allowed.c_str(), "[%lf, %lf]", &low, &high) != 2)
       continue;
-    const scene::SceneOverride::Value beyond =
-        key.type == "integer" ? scene::SceneOverride::Value(static_cast<long long>(2 * high + 1))
-                              : scene::SceneOverride::Value(2 * high + 1);
-    const std::string message = override_error({key.dotted(), beyond, "test override"});
+    scene::SceneOverride beyond{key.dotted(), 2 * high + 1, "test override"};
+    if (key.type == "integer") beyond.value = static_cast<long long>(2 * high + 1);
+    const std::string message = override_error(beyond);
     EXPECT_NE(message.find("test override: key '" + key.dotted() + "'"), std::string::npos) << key.dotted() << ": " << message;
     ++checked;
   }

@@ -59,13 +59,13 @@ TEST(BoxQp, FullRankAndSingularProblemsReachKktPoints) {
     const auto p = random_problem(n, rank, box, static_cast<unsigned>(n + rank));
     // A sign condition alone with singular S can be unbounded below; those are box problems.
     const auto result = contact::solve_box_qp(p.s, p.d, p.lo, p.hi);
-    EXPECT_TRUE(result.converged);
-    EXPECT_LT(result.kkt_residual, 1e-12) << "n " << n << " rank " << rank;
+    EXPECT_TRUE(result.report.converged);
+    EXPECT_LT(result.report.kkt_residual, 1e-12) << "n " << n << " rank " << rank;
     EXPECT_TRUE((result.x.array() <= p.hi.array()).all() && (result.x.array() >= p.lo.array()).all());
     const Eigen::VectorXd reference = projected_gradient(p.s, p.d, p.lo, p.hi);
     EXPECT_NEAR(objective(p.s, p.d, result.x), objective(p.s, p.d, reference),
                 1e-8 * (1.0 + std::abs(objective(p.s, p.d, reference))));
-    EXPECT_LT(result.newton_steps, 60);
+    EXPECT_LT(result.report.iterations, 60);
   }
 }
 
@@ -74,7 +74,7 @@ TEST(BoxQp, DegenerateComplementarity) {
   const Eigen::MatrixXd s = Eigen::MatrixXd::Identity(4, 4);
   const Eigen::VectorXd d = (Eigen::VectorXd(4) << 0.0, 1.0, -1.0, 0.0).finished();
   const auto result = contact::solve_box_qp(s, d, Eigen::VectorXd::Constant(4, -5.0), Eigen::VectorXd::Zero(4));
-  EXPECT_LT(result.kkt_residual, 1e-14);
+  EXPECT_LT(result.report.kkt_residual, 1e-14);
   EXPECT_NEAR(result.x(0), 0.0, 1e-15);
   EXPECT_NEAR(result.x(1), 0.0, 1e-15);
   EXPECT_NEAR(result.x(2), -1.0, 1e-14);
@@ -86,7 +86,7 @@ TEST(BoxQp, ScalingTheDataScalesTheSolutionWithTheSameSteps) {
   for (double factor : {1e-6, 1e6}) {
     const auto scaled = contact::solve_box_qp(p.s, factor * p.d, factor * p.lo, factor * p.hi);
     EXPECT_LT((scaled.x / factor - reference.x).norm(), 1e-9 * (1.0 + reference.x.norm()));
-    EXPECT_EQ(scaled.newton_steps, reference.newton_steps);
+    EXPECT_EQ(scaled.report.iterations, reference.report.iterations);
   }
 }
 

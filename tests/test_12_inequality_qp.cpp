@@ -99,8 +99,8 @@ TEST(InequalityQp, MatchesExhaustiveActiveSetEnumeration) {
     for (unsigned seed = 1; seed <= 4; ++seed) {
       const auto p = random_problem(k.n, k.rank, k.rows, k.two_sided, seed * 31 + k.n);
       const auto result = contact::solve_inequality_qp(p.s, p.d, p.c, p.lo, p.hi);
-      EXPECT_TRUE(result.converged);
-      EXPECT_LT(result.kkt_residual, 1e-12);
+      EXPECT_TRUE(result.report.converged);
+      EXPECT_LT(result.report.kkt_residual, 1e-12);
       const double exact = brute_force_minimum(p.s, p.d, p.c, p.lo, p.hi);
       EXPECT_NEAR(objective(p.s, p.d, result.x), exact, 1e-9 * (1.0 + std::abs(exact)))
           << "n " << k.n << " rank " << k.rank << " rows " << k.rows << " seed " << seed;
@@ -115,7 +115,7 @@ TEST(InequalityQp, AgreesWithBoxQpWhenTheConstraintsAreBounds) {
     const auto interior = contact::solve_inequality_qp(p.s, p.d, p.c, p.lo, p.hi);
     const auto active_set = contact::solve_box_qp(p.s, p.d, p.lo, p.hi);
     EXPECT_LT((interior.x - active_set.x).lpNorm<Eigen::Infinity>(), 1e-9 * (1.0 + active_set.x.norm()));
-    EXPECT_LT(interior.iterations, 40);
+    EXPECT_LT(interior.report.iterations, 40);
   }
 }
 
@@ -125,7 +125,7 @@ TEST(InequalityQp, EqualityRowsAndSingularHessian) {
   p.lo(0) = p.hi(0) = 0.0;
   p.lo(17) = p.hi(17) = 0.25;
   const auto result = contact::solve_inequality_qp(p.s, p.d, p.c, p.lo, p.hi);
-  EXPECT_LT(result.kkt_residual, 1e-12);
+  EXPECT_LT(result.report.kkt_residual, 1e-12);
   EXPECT_NEAR(result.x(0), 0.0, 1e-12);
   EXPECT_NEAR((p.c.row(17) * result.x)(0), 0.25, 1e-11);
 }
@@ -135,7 +135,7 @@ TEST(InequalityQp, ScalingTheDataScalesTheSolutionWithTheSameIterations) {
   const auto reference = contact::solve_inequality_qp(p.s, p.d, p.c, p.lo, p.hi);
   for (const double t : {1e-6, 1e6}) {
     const auto scaled = contact::solve_inequality_qp(p.s, t * p.d, p.c, t * p.lo, t * p.hi);
-    EXPECT_EQ(scaled.iterations, reference.iterations) << "t = " << t;
+    EXPECT_EQ(scaled.report.iterations, reference.report.iterations) << "t = " << t;
     EXPECT_LT((scaled.x / t - reference.x).lpNorm<Eigen::Infinity>(), 1e-9 * (1.0 + reference.x.norm()));
   }
 }

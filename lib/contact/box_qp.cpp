@@ -143,7 +143,7 @@ BoxQpResult solve_scaled_box_qp(const Eigen::MatrixXd& s, const Eigen::VectorXd&
   BoxQpResult result;
   result.x = Eigen::VectorXd::Zero(n).cwiseMax(lo).cwiseMin(hi);
   if (n == 0) {
-    result.converged = true;
+    result.report.converged = true;
     return result;
   }
   const double rho = options.proximal * std::max(s.diagonal().maxCoeff(), 1e-300);
@@ -152,22 +152,22 @@ BoxQpResult solve_scaled_box_qp(const Eigen::MatrixXd& s, const Eigen::VectorXd&
   for (int outer = 0; outer < options.max_proximal; ++outer) {
     const Eigen::VectorXd b = d + rho * result.x;
     const int taken = block_principal_pivoting(a, b, lo, hi, result.x, options.max_newton, s, d,
-                                               result.log, steps);
-    result.proximal_steps = outer + 1;
-    result.kkt_residual = box_qp_kkt_residual(s, d, lo, hi, result.x);
+                                               result.report.log, steps);
+    result.report.proximal_steps = outer + 1;
+    result.report.kkt_residual = box_qp_kkt_residual(s, d, lo, hi, result.x);
     if (taken < 0) break;
-    if (result.kkt_residual <= options.tolerance) {
-      result.converged = true;
+    if (result.report.kkt_residual <= options.tolerance) {
+      result.report.converged = true;
       break;
     }
   }
-  result.newton_steps = steps;
-  result.method = result.proximal_steps > 1 ? "active-set+proximal" : "active-set";
-  if (!result.converged)
+  result.report.iterations = steps;
+  result.report.method = result.report.proximal_steps > 1 ? "active-set+proximal" : "active-set";
+  if (!result.report.converged)
     throw NumericalError(fmt::format(
         "contact QP did not converge: KKT residual {:.3e} > tolerance {:.1e} after {} active-set "
         "steps in {} proximal steps",
-        result.kkt_residual, options.tolerance, steps, result.proximal_steps));
+        result.report.kkt_residual, options.tolerance, steps, result.report.proximal_steps));
   return result;
 }
 

@@ -20,15 +20,12 @@ struct BoxQpOptions {
 
 struct BoxQpResult {
   Eigen::VectorXd x;
-  /// ‖x − P_[lo,hi](x − c (S x − d))‖_∞ / (‖x‖_∞ + c ‖d‖_∞), c = 1/‖S‖_∞, of the Jacobi-scaled
-  /// problem (x = D y, D = diag(S)^{-1/2}, see solve_box_qp): zero exactly at a KKT point, and
-  /// unchanged when (S, d) or the bounds are scaled.
-  double kkt_residual = 0.0;
-  int newton_steps = 0;
-  int proximal_steps = 0;
-  bool converged = false;
-  std::string method;  ///< "active-set" or "active-set+proximal"
-  std::vector<QpIteration> log;  ///< active_set_changes: indices flipped after the step
+  /// method "active-set" or "active-set+proximal"; iterations: Newton (active-set) steps;
+  /// kkt_residual: ‖x − P_[lo,hi](x − c (S x − d))‖_∞ / (‖x‖_∞ + c ‖d‖_∞), c = 1/‖S‖_∞, of the
+  /// Jacobi-scaled problem (x = D y, D = diag(S)^{-1/2}, see solve_box_qp): zero exactly at a KKT
+  /// point, and unchanged when (S, d) or the bounds are scaled; log: active_set_changes are the
+  /// indices flipped after the step.
+  QpReport report;
 };
 
 /// Active-set method (primal-dual active set = semismooth Newton steps, safeguarded by Murty's

@@ -99,6 +99,7 @@ InequalityQpResult solve_inequality_qp(const Eigen::MatrixXd& s, const Eigen::Ve
   for (Eigen::Index i = 0; i < k; ++i) e.row(i) = c.row(e_row[i]), e_value(i) = lo(e_row[i]);
 
   InequalityQpResult result;
+  result.report.method = "interior-point";
   auto multipliers = [&](const Eigen::VectorXd& z, const Eigen::VectorXd& w) {
     Eigen::VectorXd y = Eigen::VectorXd::Zero(rows);
     for (Eigen::Index i = 0; i < m; ++i) y(g_row[i]) += g_sign[i] * z(i);
@@ -136,11 +137,11 @@ InequalityQpResult solve_inequality_qp(const Eigen::MatrixXd& s, const Eigen::Ve
     result.x = x;
     result.y = multipliers(z, w);
     result.kkt = inequality_qp_kkt(s, d, c, lo, hi, x, result.y);
-    result.kkt_residual = result.kkt.max();
-    result.converged = result.kkt_residual <= options.tolerance;
+    result.report.kkt_residual = result.kkt.max();
+    result.report.converged = result.report.kkt_residual <= options.tolerance;
   };
   evaluate();
-  for (int iteration = 1; iteration <= options.max_iterations && !result.converged; ++iteration) {
+  for (int iteration = 1; iteration <= options.max_iterations && !result.report.converged; ++iteration) {
     const Eigen::VectorXd r_dual = s * x - d + g.transpose() * z + e.transpose() * w;
     const Eigen::VectorXd r_primal = g * x + slack - h;
     const Eigen::VectorXd r_equality = e * x - e_value;
@@ -197,15 +198,15 @@ InequalityQpResult solve_inequality_qp(const Eigen::MatrixXd& s, const Eigen::Ve
     w += alpha * dw;
     slack += alpha * dslack;
     z += alpha * dz;
-    result.iterations = iteration;
+    result.report.iterations = iteration;
     const auto now_active = predicted_active();
     int changes = 0;
     for (Eigen::Index i = 0; i < m; ++i) changes += now_active[i] != active[i];
     active = now_active;
     evaluate();
-    result.log.push_back({iteration, changes, result.kkt_residual});
+    result.report.log.push_back({iteration, changes, result.report.kkt_residual});
   }
-  if (!result.converged)
+  if (!result.report.converged)
     throw NumericalError(fmt::format(
         "contact QP (interior point) did not converge in {} iterations: relative KKT residuals "
         "stationarity {:.2e}, feasibility {:.2e}, complementarity {:.2e}, sign {:.2e} (tolerance {:.1e})",

@@ -33,10 +33,8 @@ struct InequalityQpResult {
   Eigen::VectorXd x;
   Eigen::VectorXd y;  ///< multipliers of the constraint rows (see InequalityKkt)
   InequalityKkt kkt;
-  double kkt_residual = 0.0;
-  int iterations = 0;
-  bool converged = false;
-  std::vector<QpIteration> log;  ///< kkt_residual: InequalityKkt::max() after the step
+  /// method "interior-point"; kkt_residual: InequalityKkt::max(), also in the log after each step.
+  QpReport report;
 };
 
 /// Mehrotra predictor-corrector primal-dual interior-point method. Every iteration solves one
