@@ -70,138 +70,199 @@ double step_to_boundary(const Eigen::VectorXd& v, const Eigen::VectorXd& dv) {
 
 }  // namespace
 
+namespace {
+
+// The rows of C split into one-sided inequalities G x ≤ h (±C_j for each finite bound) and
+// equalities E x = e (rows with lo_j = hi_j).
+struct OneSidedForm {
+  Eigen::MatrixXd g, e;
+  Eigen::VectorXd h, e_value;
+  std::vector<Eigen::Index> g_row, e_row;
+  std::vector<double> g_sign;
+  Eigen::Index rows = 0;
+
+  OneSidedForm(const Eigen::MatrixXd& c, const Eigen::VectorXd& lo, const Eigen::VectorXd& hi) : rows(c.rows()) {
+    for (Eigen::Index j = 0; j < rows; ++j) {
+      if (!(lo(j) <= hi(j)))
+        throw NumericalError(fmt::format("inequality QP: row {} has lower bound {} above upper bound {}", j, lo(j), hi(j)));
+      if (lo(j) == hi(j)) {
+        e_row.push_back(j);
+        continue;
+      }
+      if (std::isfinite(hi(j))) g_row.push_back(j), g_sign.push_back(1.0);
+      if (std::isfinite(lo(j))) g_row.push_back(j), g_sign.push_back(-1.0);
+    }
+    const auto m = static_cast<Eigen::Index>(g_row.size()), k = static_cast<Eigen::Index>(e_row.size());
+    g.resize(m, c.cols());
+    e.resize(k, c.cols());
+    h.resize(m);
+    e_value.resize(k);
+    for (Eigen::Index i = 0; i < m; ++i) {
+      g.row(i) = g_sign[i] * c.row(g_row[i]);
+      h(i) = g_sign[i] > 0 ? hi(g_row[i]) : -lo(g_row[i]);
+    }
+    for (Eigen::Index i = 0; i < k; ++i) e.row(i) = c.row(e_row[i]), e_value(i) = lo(e_row[i]);
+  }
+  /// The multipliers y of the rows of C from those of G (z) and E (w).
+  Eigen::VectorXd multipliers(const Eigen::VectorXd& z, const Eigen::VectorXd& w) const {
+    Eigen::VectorXd y = Eigen::VectorXd::Zero(rows);
+    for (std::size_t i = 0; i < g_row.size(); ++i) y(g_row[i]) += g_sign[i] * z(static_cast<Eigen::Index>(i));
+    for (std::size_t i = 0; i < e_row.size(); ++i) y(e_row[i]) += w(static_cast<Eigen::Index>(i));
+    return y;
+  }
+};
+
+// The primal-dual iterate: x, slacks σ of G x ≤ h, their multipliers z, those of E x = e (w), and
+// the problem's scales of values (C x, h) and forces (multipliers).
+struct Iterate {
+  Eigen::VectorXd x, slack, z, w;
+  double value_scale = 1.0, force_scale = 1.0;
+  /// Rows whose slack is small against their multiplier, both in the problem's scale: the
+  /// interior-point analogue of an active set, whose changes the log reports.
+  std::vector<bool> predicted_active() const {
+    std::vector<bool> active(static_cast<std::size_t>(z.size()));
+    for (Eigen::Index i = 0; i < z.size(); ++i) active[static_cast<std::size_t>(i)] = slack(i) * force_scale < z(i) * value_scale;
+    return active;
+  }
+};
+
+// A regularized least-squares x (S + γ GᵀG + γ EᵀE is definite because C has full column rank),
+// slacks and multipliers of the problem's own scale, so that multiplying the data by t multiplies
+// every iterate by t and the iteration count does not change.
+Iterate starting_point(const Eigen::MatrixXd& s, const Eigen::VectorXd& d, const Eigen::MatrixXd& c,
+                       const OneSidedForm& form) {
+  const auto& g = form.g;
+  const auto& e = form.e;
+  Iterate it;
+  const double gamma = std::max(s.trace(), 1e-300) / std::max(c.squaredNorm(), 1e-300);
+  it.x = (s + gamma * (g.transpose() * g + e.transpose() * e))
+             .partialPivLu()
+             .solve(d + gamma * (g.transpose() * form.h + e.transpose() * form.e_value));
+  const double g_norm = std::max(c.lpNorm<Eigen::Infinity>(), 1e-300);
+  double value_scale = g_norm * it.x.lpNorm<Eigen::Infinity>();
+  for (Eigen::Index i = 0; i < form.h.size(); ++i) value_scale = std::max(value_scale, std::abs(form.h(i)));
+  it.value_scale = value_scale > 0 ? value_scale : 1.0;
+  const double force_scale = std::max(d.lpNorm<Eigen::Infinity>(), (s * it.x - d).lpNorm<Eigen::Infinity>()) / g_norm;
+  it.force_scale = force_scale > 0 ? force_scale : 1.0;
+  it.slack = (form.h - g * it.x).cwiseMax(0.0).array() + it.value_scale;
+  it.z = Eigen::VectorXd::Constant(g.rows(), it.force_scale);
+  it.w = Eigen::VectorXd::Zero(e.rows());
+  return it;
+}
+
+struct Step {
+  Eigen::VectorXd dx, dw, dslack, dz;
+};
+
+// The Newton system at one iterate for residuals (r_d, r_p, r_e, r_sz) of the four KKT blocks
+//   S Δx + Gᵀ Δz + Eᵀ Δw = −r_d,  G Δx + Δσ = −r_p,  E Δx = −r_e,  Z Δσ + Σ Δz = −r_sz,
+// solved through the reduced system [S + Gᵀ Z Σ⁻¹ G, Eᵀ; E, 0], factored once. Two rounds of
+// iterative refinement on the full system: near the solution Z Σ⁻¹ spans many orders of magnitude
+// and Δz = Σ⁻¹(…) + Z Σ⁻¹ G Δx amplifies the error of Δx; refinement restores the stationarity
+// residual to round-off.
+class NewtonSystem {
+ public:
+  NewtonSystem(const Eigen::MatrixXd& s, const Eigen::VectorXd& d, const OneSidedForm& form, const Iterate& it)
+      : s_(s), form_(form), it_(it), weight_(it.z.cwiseQuotient(it.slack)) {
+    const auto& g = form.g;
+    const auto& e = form.e;
+    const Eigen::Index n = s.rows(), k = e.rows();
+    Eigen::MatrixXd matrix = Eigen::MatrixXd::Zero(n + k, n + k);
+    matrix.topLeftCorner(n, n) = s + g.transpose() * weight_.asDiagonal() * g;
+    matrix.topRightCorner(n, k) = e.transpose();
+    matrix.bottomLeftCorner(k, n) = e;
+    lu_.compute(matrix);
+    r_dual_ = s * it.x - d + g.transpose() * it.z + e.transpose() * it.w;
+    r_primal_ = g * it.x + it.slack - form.h;
+    r_equality_ = e * it.x - form.e_value;
+  }
+
+  Step direction(const Eigen::VectorXd& rsz) const {
+    const auto& g = form_.g;
+    const auto& e = form_.e;
+    Step step = reduced_solve(r_dual_, r_primal_, r_equality_, rsz);
+    for (int round = 0; round < 2; ++round) {
+      // Residuals of the full system at the current direction, as r's of a correction.
+      const Step c = reduced_solve(r_dual_ + s_ * step.dx + g.transpose() * step.dz + e.transpose() * step.dw,
+                                   r_primal_ + g * step.dx + step.dslack, r_equality_ + e * step.dx,
+                                   rsz + it_.z.cwiseProduct(step.dslack) + it_.slack.cwiseProduct(step.dz));
+      step.dx += c.dx, step.dw += c.dw, step.dslack += c.dslack, step.dz += c.dz;
+    }
+    return step;
+  }
+
+ private:
+  Step reduced_solve(const Eigen::VectorXd& rd, const Eigen::VectorXd& rp, const Eigen::VectorXd& re,
+                     const Eigen::VectorXd& rsz) const {
+    const auto& g = form_.g;
+    const Eigen::Index n = s_.rows(), k = form_.e.rows();
+    const Eigen::VectorXd t = (it_.z.cwiseProduct(rp) - rsz).cwiseQuotient(it_.slack);
+    Eigen::VectorXd rhs(n + k);
+    rhs.head(n) = -rd - g.transpose() * t;
+    rhs.tail(k) = -re;
+    const Eigen::VectorXd solution = lu_.solve(rhs);
+    Step step{solution.head(n), solution.tail(k), Eigen::VectorXd(), Eigen::VectorXd()};
+    step.dslack = -rp - g * step.dx;
+    step.dz = t + weight_.cwiseProduct(g * step.dx);
+    return step;
+  }
+
+  const Eigen::MatrixXd& s_;
+  const OneSidedForm& form_;
+  const Iterate& it_;
+  Eigen::VectorXd weight_;  // Z Σ⁻¹
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+  Eigen::VectorXd r_dual_, r_primal_, r_equality_;
+};
+
+// One predictor-corrector step: the affine-scaling predictor, then Mehrotra's centring and
+// second-order correction, taken to 0.995 of the distance to the boundary.
+void predictor_corrector_step(const NewtonSystem& newton, Iterate& it) {
+  const Eigen::Index m = it.z.size();
+  const double mu = m > 0 ? it.slack.dot(it.z) / static_cast<double>(m) : 0.0;
+  const Eigen::VectorXd sz = it.slack.cwiseProduct(it.z);
+  const Step affine = newton.direction(sz);
+  const double alpha_affine = std::min(step_to_boundary(it.slack, affine.dslack), step_to_boundary(it.z, affine.dz));
+  const double mu_affine =
+      m > 0 ? (it.slack + alpha_affine * affine.dslack).dot(it.z + alpha_affine * affine.dz) / static_cast<double>(m)
+            : 0.0;
+  const double sigma = mu > 0 ? std::pow(mu_affine / mu, 3) : 0.0;
+  const auto [dx, dw, dslack, dz] =
+      newton.direction(sz + affine.dslack.cwiseProduct(affine.dz) - Eigen::VectorXd::Constant(m, sigma * mu));
+  const double alpha = std::min(1.0, 0.995 * std::min(step_to_boundary(it.slack, dslack), step_to_boundary(it.z, dz)));
+  it.x += alpha * dx;
+  it.w += alpha * dw;
+  it.slack += alpha * dslack;
+  it.z += alpha * dz;
+}
+
+}  // namespace
+
 InequalityQpResult solve_inequality_qp(const Eigen::MatrixXd& s, const Eigen::VectorXd& d,
                                        const Eigen::MatrixXd& c, const Eigen::VectorXd& lo,
                                        const Eigen::VectorXd& hi, const InequalityQpOptions& options) {
   const Eigen::Index n = d.size(), rows = c.rows();
   HPC_VERIFY(s.rows() == n && s.cols() == n && c.cols() == n && lo.size() == rows && hi.size() == rows,
              "inequality QP sizes");
-  // 1. Split the rows of C into one-sided inequalities G x ≤ h and equalities E x = e.
-  std::vector<Eigen::Index> g_row, e_row;
-  std::vector<double> g_sign;
-  for (Eigen::Index j = 0; j < rows; ++j) {
-    if (!(lo(j) <= hi(j)))
-      throw NumericalError(fmt::format("inequality QP: row {} has lower bound {} above upper bound {}", j, lo(j), hi(j)));
-    if (lo(j) == hi(j)) {
-      e_row.push_back(j);
-      continue;
-    }
-    if (std::isfinite(hi(j))) g_row.push_back(j), g_sign.push_back(1.0);
-    if (std::isfinite(lo(j))) g_row.push_back(j), g_sign.push_back(-1.0);
-  }
-  const auto m = static_cast<Eigen::Index>(g_row.size()), k = static_cast<Eigen::Index>(e_row.size());
-  Eigen::MatrixXd g(m, n), e(k, n);
-  Eigen::VectorXd h(m), e_value(k);
-  for (Eigen::Index i = 0; i < m; ++i) {
-    g.row(i) = g_sign[i] * c.row(g_row[i]);
-    h(i) = g_sign[i] > 0 ? hi(g_row[i]) : -lo(g_row[i]);
-  }
-  for (Eigen::Index i = 0; i < k; ++i) e.row(i) = c.row(e_row[i]), e_value(i) = lo(e_row[i]);
-
+  const OneSidedForm form(c, lo, hi);
+  Iterate it = starting_point(s, d, c, form);
+  std::vector<bool> active = it.predicted_active();
   InequalityQpResult result;
   result.report.method = "interior-point";
-  auto multipliers = [&](const Eigen::VectorXd& z, const Eigen::VectorXd& w) {
-    Eigen::VectorXd y = Eigen::VectorXd::Zero(rows);
-    for (Eigen::Index i = 0; i < m; ++i) y(g_row[i]) += g_sign[i] * z(i);
-    for (Eigen::Index i = 0; i < k; ++i) y(e_row[i]) += w(i);
-    return y;
-  };
-
-  // 2. Starting point: a regularized least-squares x (S + γ GᵀG + γ EᵀE is definite because C has
-  //    full column rank), slacks and multipliers of the problem's own scale, so that multiplying
-  //    the data by t multiplies every iterate by t and the iteration count does not change.
-  const double gamma = std::max(s.trace(), 1e-300) / std::max(c.squaredNorm(), 1e-300);
-  Eigen::VectorXd x = (s + gamma * (g.transpose() * g + e.transpose() * e))
-                          .partialPivLu()
-                          .solve(d + gamma * (g.transpose() * h + e.transpose() * e_value));
-  const double g_norm = std::max(c.lpNorm<Eigen::Infinity>(), 1e-300);
-  double value_scale = g_norm * x.lpNorm<Eigen::Infinity>();
-  for (Eigen::Index i = 0; i < m; ++i) value_scale = std::max(value_scale, std::abs(h(i)));
-  if (!(value_scale > 0)) value_scale = 1.0;
-  double force_scale = std::max(d.lpNorm<Eigen::Infinity>(), (s * x - d).lpNorm<Eigen::Infinity>()) / g_norm;
-  if (!(force_scale > 0)) force_scale = 1.0;
-  Eigen::VectorXd slack = (h - g * x).cwiseMax(0.0).array() + value_scale;
-  Eigen::VectorXd z = Eigen::VectorXd::Constant(m, force_scale);
-  Eigen::VectorXd w = Eigen::VectorXd::Zero(k);
-  // Predicted active set: rows whose slack is small against their multiplier, both in the
-  // problem's scale; its changes are the interior-point analogue of active-set flips.
-  auto predicted_active = [&] {
-    std::vector<bool> active(m);
-    for (Eigen::Index i = 0; i < m; ++i) active[i] = slack(i) * force_scale < z(i) * value_scale;
-    return active;
-  };
-  std::vector<bool> active = predicted_active();
-
-  // 3. Predictor-corrector iterations.
   auto evaluate = [&] {
-    result.x = x;
-    result.y = multipliers(z, w);
-    result.kkt = inequality_qp_kkt(s, d, c, lo, hi, x, result.y);
+    result.x = it.x;
+    result.y = form.multipliers(it.z, it.w);
+    result.kkt = inequality_qp_kkt(s, d, c, lo, hi, it.x, result.y);
     result.report.kkt_residual = result.kkt.max();
     result.report.converged = result.report.kkt_residual <= options.tolerance;
   };
   evaluate();
   for (int iteration = 1; iteration <= options.max_iterations && !result.report.converged; ++iteration) {
-    const Eigen::VectorXd r_dual = s * x - d + g.transpose() * z + e.transpose() * w;
-    const Eigen::VectorXd r_primal = g * x + slack - h;
-    const Eigen::VectorXd r_equality = e * x - e_value;
-    const double mu = m > 0 ? slack.dot(z) / static_cast<double>(m) : 0.0;
-    const Eigen::VectorXd weight = z.cwiseQuotient(slack);  // Z Σ⁻¹
-    Eigen::MatrixXd kkt_matrix = Eigen::MatrixXd::Zero(n + k, n + k);
-    kkt_matrix.topLeftCorner(n, n) = s + g.transpose() * weight.asDiagonal() * g;
-    kkt_matrix.topRightCorner(n, k) = e.transpose();
-    kkt_matrix.bottomLeftCorner(k, n) = e;
-    const Eigen::PartialPivLU<Eigen::MatrixXd> lu(kkt_matrix);
-    // Newton direction for residuals (r_d, r_p, r_e, r_sz) of the four KKT blocks
-    //   S Δx + Gᵀ Δz + Eᵀ Δw = −r_d,  G Δx + Δσ = −r_p,  E Δx = −r_e,  Z Δσ + Σ Δz = −r_sz,
-    // through the reduced system. Two rounds of iterative refinement on the full system: near the
-    // solution Z Σ⁻¹ spans many orders of magnitude and Δz = Σ⁻¹(…) + Z Σ⁻¹ G Δx amplifies the
-    // error of Δx; refinement restores the stationarity residual to round-off.
-    struct Step { Eigen::VectorXd dx, dw, dslack, dz; };
-    auto reduced_solve = [&](const Eigen::VectorXd& rd, const Eigen::VectorXd& rp, const Eigen::VectorXd& re,
-                             const Eigen::VectorXd& rsz) {
-      const Eigen::VectorXd t = (z.cwiseProduct(rp) - rsz).cwiseQuotient(slack);
-      Eigen::VectorXd rhs(n + k);
-      rhs.head(n) = -rd - g.transpose() * t;
-      rhs.tail(k) = -re;
-      const Eigen::VectorXd solution = lu.solve(rhs);
-      Step step{solution.head(n), solution.tail(k), Eigen::VectorXd(), Eigen::VectorXd()};
-      step.dslack = -rp - g * step.dx;
-      step.dz = t + weight.cwiseProduct(g * step.dx);
-      return step;
-    };
-    auto direction = [&](const Eigen::VectorXd& rsz) {
-      Step step = reduced_solve(r_dual, r_primal, r_equality, rsz);
-      for (int round = 0; round < 2; ++round) {
-        // Residuals of the full system at the current direction, as r's of a correction.
-        const Step c = reduced_solve(r_dual + s * step.dx + g.transpose() * step.dz + e.transpose() * step.dw,
-                                     r_primal + g * step.dx + step.dslack, r_equality + e * step.dx,
-                                     rsz + z.cwiseProduct(step.dslack) + slack.cwiseProduct(step.dz));
-        step.dx += c.dx, step.dw += c.dw, step.dslack += c.dslack, step.dz += c.dz;
-      }
-      return step;
-    };
-    // Predictor (affine scaling), then Mehrotra's centring and second-order correction.
-    const Eigen::VectorXd sz = slack.cwiseProduct(z);
-    const Step affine = direction(sz);
-    const double alpha_affine =
-        std::min(step_to_boundary(slack, affine.dslack), step_to_boundary(z, affine.dz));
-    const double mu_affine = m > 0 ? (slack + alpha_affine * affine.dslack).dot(z + alpha_affine * affine.dz) /
-                                         static_cast<double>(m)
-                                   : 0.0;
-    const double sigma = mu > 0 ? std::pow(mu_affine / mu, 3) : 0.0;
-    const auto [dx, dw, dslack, dz] =
-        direction(sz + affine.dslack.cwiseProduct(affine.dz) - Eigen::VectorXd::Constant(m, sigma * mu));
-    const double alpha =
-        std::min(1.0, 0.995 * std::min(step_to_boundary(slack, dslack), step_to_boundary(z, dz)));
-    x += alpha * dx;
-    w += alpha * dw;
-    slack += alpha * dslack;
-    z += alpha * dz;
+    predictor_corrector_step(NewtonSystem(s, d, form, it), it);
     result.report.iterations = iteration;
-    const auto now_active = predicted_active();
+    const auto now_active = it.predicted_active();
     int changes = 0;
-    for (Eigen::Index i = 0; i < m; ++i) changes += now_active[i] != active[i];
+    for (std::size_t i = 0; i < now_active.size(); ++i) changes += now_active[i] != active[i];
     active = now_active;
     evaluate();
     result.report.log.push_back({iteration, changes, result.report.kkt_residual});

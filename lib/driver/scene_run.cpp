@@ -124,6 +124,27 @@ void add_convergence_rows(const scene::Scene& scene, const std::vector<ContactEf
     }
 }
 
+// The inf-sup effect: α of the scene's pairing and, if asked, the sampled spurious mode.
+nlohmann::json infsup_effect(const scene::Scene& scene, const SceneDiscretization& d,
+                             const operators::PrimalOperators& primal, std::optional<io::CsvTable>& mode) {
+  const auto setup = infsup_setup_of(scene, d.mesh, d.cell_degrees, *d.boundary_mesh, d.segment_degrees, primal);
+  const auto alpha = infsup::analyse_infsup(setup, infsup::EigenBackend::slepc);
+  if (scene.wants_output(scene::Output::mode)) mode = infsup::sample_mode(d.mesh, *d.multipliers, alpha.mode);
+  return {{"alpha", alpha.alpha},
+          {"alpha_error", alpha.alpha_error},
+          {"alpha_converged", alpha.alpha_converged},
+          {"reference_level", alpha.reference_level},
+          {"lambda_unique", !alpha.singular},
+          {"problem", infsup::to_string(scene.problem)},
+          {"norm", infsup::to_string(scene.norm)},
+          {"lambda_min", alpha.lambda_min},
+          {"lambda_max", alpha.lambda_max},
+          {"Pi", alpha.pi},
+          {"eigensolver", alpha.method},
+          {"residual", alpha.residual},
+          {"seconds", alpha.seconds}};
+}
+
 }  // namespace
 
 std::vector<std::string> refinement_columns() {
@@ -161,16 +182,7 @@ nlohmann::json run_scene(const scene::Scene& given_scene, const SceneRunOptions&
   std::optional<io::CsvTable> mode;
   if (scene.has_effect(scene::Effect::infsup)) {
     say("inf-sup constant");
-    const auto setup = infsup_setup_of(scene, d->mesh, d->cell_degrees, *d->boundary_mesh, d->segment_degrees, primal);
-    const auto alpha = infsup::analyse_infsup(setup, infsup::EigenBackend::slepc);
-    summary["infsup"] = {{"alpha", alpha.alpha},         {"alpha_error", alpha.alpha_error},
-                         {"alpha_converged", alpha.alpha_converged}, {"reference_level", alpha.reference_level},
-                         {"lambda_unique", !alpha.singular},
-                         {"problem", infsup::to_string(scene.problem)}, {"norm", infsup::to_string(scene.norm)},
-                         {"lambda_min", alpha.lambda_min}, {"lambda_max", alpha.lambda_max},
-                         {"Pi", alpha.pi},               {"eigensolver", alpha.method},
-                         {"residual", alpha.residual},   {"seconds", alpha.seconds}};
-    if (scene.wants_output(scene::Output::mode)) mode = infsup::sample_mode(d->mesh, *d->multipliers, alpha.mode);
+    summary["infsup"] = infsup_effect(scene, *d, primal, mode);
   }
 
   // 4. Convergence under uniform refinement of every contact problem of the scene.

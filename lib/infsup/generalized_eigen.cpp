@@ -308,6 +308,31 @@ double largest_eigenvalue_slepc(Mat s, Mat g, const std::string& options_prefix,
   return last.eigenvalues[0];
 }
 
+// The EPS for λ_min: generalized Hermitian, Krylov–Schur with shift-and-invert at the target σ,
+// a direct inner solve, a fixed start vector, then the user's options (prefix) on top.
+void configure_smallest(EpsHandle& eps, Mat s, Mat g, double sigma, PetscInt n, const std::string& options_prefix,
+                        LastIteration& last) {
+  HPC_PETSC_CALL(EPSCreate(PETSC_COMM_SELF, eps.out()));
+  HPC_PETSC_CALL(EPSSetOperators(eps.get(), s, g));
+  HPC_PETSC_CALL(EPSSetProblemType(eps.get(), EPS_GHEP));
+  HPC_PETSC_CALL(EPSSetType(eps.get(), EPSKRYLOVSCHUR));
+  // A wider Krylov space than SLEPc's default (16): for stable pairings the spectrum of
+  // (S_G, G) clusters in [α², 1], and at 1e6 dofs the default did not separate λ_min to 1e-12 in
+  // 100 restarts. The operators are small and dense, so 64 vectors cost little.
+  HPC_PETSC_CALL(EPSSetDimensions(eps.get(), 1, std::min<PetscInt>(n, 64), PETSC_DEFAULT));
+  HPC_PETSC_CALL(EPSSetWhichEigenpairs(eps.get(), EPS_TARGET_MAGNITUDE));
+  HPC_PETSC_CALL(EPSSetTarget(eps.get(), sigma));
+  ST st = nullptr;
+  HPC_PETSC_CALL(EPSGetST(eps.get(), &st));
+  HPC_PETSC_CALL(STSetType(st, STSINVERT));
+  use_direct_solver(eps.get());
+  use_fixed_start(eps.get(), s);
+  HPC_PETSC_CALL(EPSSetTolerances(eps.get(), kSmallestTolerance, PETSC_DEFAULT));
+  HPC_PETSC_CALL(EPSMonitorSet(eps.get(), record_last_iteration, &last, nullptr));
+  HPC_PETSC_CALL(EPSSetOptionsPrefix(eps.get(), options_prefix.c_str()));
+  HPC_PETSC_CALL(EPSSetFromOptions(eps.get()));
+}
+
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
@@ -358,25 +383,7 @@ SmallestEigenpair smallest_eigenpair_slepc(const Eigen::MatrixXd& S, const Eigen
   // 2. λ_min: Create → SetOperators → defaults → SetFromOptions → Solve.
   EpsHandle eps;
   LastIteration last;
-  HPC_PETSC_CALL(EPSCreate(PETSC_COMM_SELF, eps.out()));
-  HPC_PETSC_CALL(EPSSetOperators(eps.get(), s.get(), g.get()));
-  HPC_PETSC_CALL(EPSSetProblemType(eps.get(), EPS_GHEP));
-  HPC_PETSC_CALL(EPSSetType(eps.get(), EPSKRYLOVSCHUR));
-  // A wider Krylov space than SLEPc's default (16): for stable pairings the spectrum of
-  // (S_G, G) clusters in [α², 1], and at 1e6 dofs the default did not separate λ_min to 1e-12 in
-  // 100 restarts. The operators are small and dense, so 64 vectors cost little.
-  HPC_PETSC_CALL(EPSSetDimensions(eps.get(), 1, std::min<PetscInt>(static_cast<PetscInt>(n), 64), PETSC_DEFAULT));
-  HPC_PETSC_CALL(EPSSetWhichEigenpairs(eps.get(), EPS_TARGET_MAGNITUDE));
-  HPC_PETSC_CALL(EPSSetTarget(eps.get(), sigma));
-  ST st = nullptr;
-  HPC_PETSC_CALL(EPSGetST(eps.get(), &st));
-  HPC_PETSC_CALL(STSetType(st, STSINVERT));
-  use_direct_solver(eps.get());
-  use_fixed_start(eps.get(), s.get());
-  HPC_PETSC_CALL(EPSSetTolerances(eps.get(), kSmallestTolerance, PETSC_DEFAULT));
-  HPC_PETSC_CALL(EPSMonitorSet(eps.get(), record_last_iteration, &last, nullptr));
-  HPC_PETSC_CALL(EPSSetOptionsPrefix(eps.get(), options_prefix.c_str()));
-  HPC_PETSC_CALL(EPSSetFromOptions(eps.get()));
+  configure_smallest(eps, s.get(), g.get(), sigma, static_cast<PetscInt>(n), options_prefix, last);
   HPC_PETSC_CALL(EPSSolve(eps.get()));
 
   PetscInt n_converged = 0, iterations = 0;
@@ -413,62 +420,6 @@ SmallestEigenpair smallest_eigenpair_slepc(const Eigen::MatrixXd& S, const Eigen
   }
   return finish(pencil, lambda_min, to_eigen(x.get()), lambda_max, static_cast<int>(iterations),
                 std::move(method), where);
-}
-
-}  // namespace hpcontact::infsup
-
-namespace hpcontact::infsup {
-
-void check_petsc_options(const std::vector<std::string>& arguments, const std::string& options_prefix) {
-  const std::string prefixed = "-" + options_prefix;
-  std::vector<std::string> names;
-  for (std::size_t k = 1; k < arguments.size(); ++k) {
-    const std::string& name = arguments[k];
-    if (name.empty() || name[0] != '-' || std::isdigit(static_cast<unsigned char>(name.size() > 1 ? name[1] : '0')))
-      continue;  // a value
-    bool global = false;
-    for (const char* allowed : {"-help", "-info", "-log_", "-options_left", "-malloc", "-on_error_", "-mat_mumps_",
-                                "-no_signal_handler"})
-      global = global || name.rfind(allowed, 0) == 0;
-    if (global) continue;
-    if (name.rfind(prefixed, 0) != 0)
-      throw_bad_input("command line", "PETSc option", name,
-                      fmt::format("not read by hpcontact: the inf-sup eigensolver reads its options with the prefix "
-                                  "{} (did you mean {}{}?)", options_prefix, prefixed, name.substr(1)));
-    names.push_back(name);
-  }
-  if (names.empty()) return;
-  // Both eigensolvers' objects read their options; PETSc reports a bad value as an error, which
-  // must not print PETSc's traceback here.
-  HPC_PETSC_CALL(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr));
-  std::string bad;
-  for (const std::string& extra : {std::string(), std::string("max_")}) {
-    EPS eps = nullptr;
-    PetscErrorCode code = EPSCreate(PETSC_COMM_SELF, &eps);
-    if (!code) code = EPSSetOptionsPrefix(eps, (options_prefix + extra).c_str());
-    if (!code) code = EPSSetFromOptions(eps);
-    if (code && bad.empty()) {
-      const char* text = nullptr;
-      PetscErrorMessage(code, &text, nullptr);
-      bad = text ? text : "rejected by SLEPc";
-    }
-    if (eps) EPSDestroy(&eps);
-  }
-  PetscPopErrorHandler();
-  if (!bad.empty())
-    throw_bad_input("command line", "PETSc options",
-                    fmt::format("{}", fmt::join(arguments.begin() + 1, arguments.end(), " ")),
-                    "SLEPc rejects a value (" + bad + "); see -" + options_prefix + "eps_view and -help for the choices");
-  // A name that no setter queried is misspelled (views and monitors are read later, when solving).
-  for (const std::string& name : names) {
-    if (name.find("view") != std::string::npos || name.find("monitor") != std::string::npos) continue;
-    PetscBool used = PETSC_FALSE;
-    HPC_PETSC_CALL(PetscOptionsUsed(nullptr, name.c_str() + 1, &used));  // stored without the dash
-    if (!used)
-      throw_bad_input("command line", "PETSc option", name,
-                      "not an option of the inf-sup eigensolver (SLEPc EPS with ST, KSP, PC): see -" + options_prefix +
-                          "eps_view and -help for the names");
-  }
 }
 
 }  // namespace hpcontact::infsup

@@ -20,11 +20,10 @@ int vertex_at(const QuadMesh& mesh, const Point& point, const std::string& origi
   throw_bad_input(origin, "grading point", fmt::format("({}, {})", point.x(), point.y()), "must be a vertex of the mesh");
 }
 
-QuadMesh grade_towards_vertices(const QuadMesh& mesh, const std::vector<int>& centres, double ratio, int layers,
-                                const std::string& origin, std::vector<int>* parents) {
-  if (!(ratio > 0.0 && ratio < 1.0)) throw_bad_input(origin, "grading", fmt::format("{}", ratio), "must be in (0, 1)");
-  if (layers < 0) throw_bad_input(origin, "grading_layers", std::to_string(layers), "must be >= 0");
-  // 1. Which star each cell belongs to.
+namespace {
+
+// The index of the centre whose star (the cells sharing it) holds each cell, or -1.
+std::vector<int> stars_of_cells(const QuadMesh& mesh, const std::vector<int>& centres, const std::string& origin) {
   std::vector<int> star_of(mesh.n_cells(), -1);
   for (std::size_t s = 0; s < centres.size(); ++s) {
     if (centres[s] < 0 || centres[s] >= mesh.n_vertices())
@@ -40,7 +39,13 @@ QuadMesh grade_towards_vertices(const QuadMesh& mesh, const std::vector<int>& ce
       star_of[c] = static_cast<int>(s);
     }
   }
-  // The innermost cells have the star's shortest edge times ratio^layers.
+  return star_of;
+}
+
+// The innermost cells have the star's shortest edge times ratio^layers; below kFinestRelativeCell
+// of the domain's extent round-off in the vertex coordinates distorts them.
+void check_layer_depth(const QuadMesh& mesh, const std::vector<int>& star_of, double ratio, int layers,
+                       const std::string& origin) {
   const auto& all = mesh.vertices();
   double extent = 0.0, shortest = INFINITY;
   for (const auto& v : all) extent = std::max(extent, (v - all.front()).norm());
@@ -53,6 +58,17 @@ QuadMesh grade_towards_vertices(const QuadMesh& mesh, const std::vector<int>& ce
                                 "below {:.0e} of it, where round-off in the vertex coordinates distorts them",
                                 static_cast<int>(std::floor(std::log(kFinestRelativeCell * extent / shortest) / std::log(ratio))),
                                 ratio, shortest * std::pow(ratio, layers) / extent, kFinestRelativeCell));
+}
+
+}  // namespace
+
+QuadMesh grade_towards_vertices(const QuadMesh& mesh, const std::vector<int>& centres, double ratio, int layers,
+                                const std::string& origin, std::vector<int>* parents) {
+  if (!(ratio > 0.0 && ratio < 1.0)) throw_bad_input(origin, "grading", fmt::format("{}", ratio), "must be in (0, 1)");
+  if (layers < 0) throw_bad_input(origin, "grading_layers", std::to_string(layers), "must be >= 0");
+  // 1. Which star each cell belongs to, and whether the layers stay resolvable.
+  const std::vector<int> star_of = stars_of_cells(mesh, centres, origin);
+  check_layer_depth(mesh, star_of, ratio, layers, origin);
   // 2. Vertices: the input's, then S_k(V) for every (centre, outer vertex V, level k ≥ 1).
   std::vector<Point> vertices = mesh.vertices();
   std::map<std::tuple<int, int, int>, int> scaled;  // (star, V, k) -> vertex

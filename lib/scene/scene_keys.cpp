@@ -139,10 +139,8 @@ SceneKey degree_key(const char* name, int low, int high, Degree Scene::*member, 
           }};
 }
 
-std::vector<SceneKey> declare_keys() {
-  std::vector<SceneKey> keys;
+void add_domain_keys(std::vector<SceneKey>& keys) {
   auto add = [&](SceneKey key) { keys.push_back(std::move(key)); };
-  // [domain]
   add({"domain", "mesh", "string", "", "a Gmsh MSH 4 ASCII file of quadrilaterals",
        "Gmsh mesh, relative to the scene file; absent: the rectangle below", "",
        [](const TomlTable& table, Scene& scene) {
@@ -179,7 +177,10 @@ std::vector<SceneKey> declare_keys() {
   add(integer_key("domain", "grading_layers", 0, 40, 0, &Scene::grading_layers, "geometric layers per grading line or point"));
   add(integer_key("domain", "refinements", 0, 10, 0, &Scene::refinements,
                   "uniform refinements (each cell into four) after building; T_{C,H} follows"));
-  // [boundary]
+}
+
+void add_boundary_and_contact_mesh_keys(std::vector<SceneKey>& keys) {
+  auto add = [&](SceneKey key) { keys.push_back(std::move(key)); };
   add(expression_key("boundary", "contact", "", &Scene::contact_predicate,
                      "Γ_C: edges whose midpoint makes this non-zero (one open curve)"));
   add(expression_key("boundary", "dirichlet", "", &Scene::dirichlet_predicate,
@@ -203,14 +204,20 @@ std::vector<SceneKey> declare_keys() {
                   size_group));
   add(number_key("contact_mesh", "grading", 1e-3, 1.0, 1.0, &Scene::grading,
                  "with `m`: each segment this times the previous one (1: uniform)"));
-  // [discretization]
+}
+
+void add_discretization_and_data_keys(std::vector<SceneKey>& keys) {
+  auto add = [&](SceneKey key) { keys.push_back(std::move(key)); };
   add(degree_key("p", 1, 20, &Scene::p, "degree p of S^p(T_h), or a rule evaluated at cell centres (required)"));
   add(degree_key("pC", 0, 19, &Scene::pc, "multiplier degree p_C, or a rule evaluated at segment midpoints (required)"));
   // [data]
   add(expression_key("data", "f", "-1", &Scene::load, "load f"));
   add(expression_key("data", "g", "", &Scene::obstacle, "obstacle g of the Signorini problem (9)"));
   add(expression_key("data", "s", "", &Scene::friction_bound, "friction bound s ≥ 0 of (13), (15) and of the pairing (22)"));
-  // [infsup]
+}
+
+void add_run_keys(std::vector<SceneKey>& keys) {
+  auto add = [&](SceneKey key) { keys.push_back(std::move(key)); };
   add(choice_key<infsup::GramNorm>("infsup", "norm",
                                    {{"interp", infsup::GramNorm::interpolation},
                                     {"interpolation", infsup::GramNorm::interpolation},
@@ -238,6 +245,14 @@ std::vector<SceneKey> declare_keys() {
   // [convergence]
   add(integer_key("convergence", "refinements", 1, 6, 3, &Scene::convergence_refinements,
                   "levels of uniform refinement beyond the scene's mesh (effect convergence)"));
+}
+
+std::vector<SceneKey> declare_keys() {
+  std::vector<SceneKey> keys;
+  add_domain_keys(keys);
+  add_boundary_and_contact_mesh_keys(keys);
+  add_discretization_and_data_keys(keys);
+  add_run_keys(keys);
   return keys;
 }
 

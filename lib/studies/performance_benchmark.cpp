@@ -74,6 +74,65 @@ double time_linear_solve(const Eigen::VectorXd& rhs, const Arguments&... argumen
   return clock.seconds();
 }
 
+// One contact problem (9), (13) or (15) on the §7 data: the solve after assembly, against one
+// linear solve with K.
+BenchmarkRow contact_row(const std::string& kind, const PerformanceBenchmark& benchmark, const mesh::QuadMesh& mesh,
+                         const mesh::BoundaryMesh& boundary, const BenchmarkRow& base, const BenchmarkRow& linear_k) {
+  contact::ContactSetup setup;
+  setup.mesh = &mesh;
+  setup.cell_degrees.assign(mesh.n_cells(), benchmark.p);
+  setup.boundary_mesh = &boundary;
+  setup.segment_degrees.assign(boundary.n_segments(), benchmark.pc);
+  setup.problem = kind == "signorini" ? contact::ContactProblem::signorini
+                  : kind == "friction" ? contact::ContactProblem::friction
+                                       : contact::ContactProblem::friction_s;
+  setup.f = [](const mesh::Point&) { return -1.0; };
+  setup.obstacle = [](const mesh::Point& x) { return -x.x() * x.x(); };
+  setup.bound = [](const mesh::Point& x) { return (1.0 - x.x()) * (1.0 - x.x()); };
+  const auto solution = contact::solve_contact(setup);
+  BenchmarkRow row = base;
+  row.kind = kind;
+  row.n_trace = solution.n_trace;
+  row.seconds_assembly = solution.seconds.assembly;
+  row.seconds_baseline = linear_k.seconds_baseline;
+  row.seconds = solution.seconds.factorization + solution.seconds.condensation + solution.seconds.qp +
+                solution.seconds.recovery;
+  return row;
+}
+
+// α of the Signorini pairing, against one linear solve with A_G.
+BenchmarkRow alpha_row(const PerformanceBenchmark& benchmark, const mesh::QuadMesh& mesh,
+                       const mesh::BoundaryMesh& boundary, const BenchmarkRow& base, const BenchmarkRow& linear_ag) {
+  infsup::InfSupSetup setup;
+  setup.mesh = &mesh;
+  setup.cell_degrees.assign(mesh.n_cells(), benchmark.p);
+  setup.boundary_mesh = &boundary;
+  setup.segment_degrees.assign(boundary.n_segments(), benchmark.pc);
+  const auto result = infsup::analyse_infsup(setup, infsup::EigenBackend::slepc);
+  BenchmarkRow row = base;
+  row.kind = "alpha";
+  row.seconds_assembly = result.seconds_assembly;
+  row.seconds_baseline = linear_ag.seconds_baseline;
+  row.seconds = result.seconds - result.seconds_assembly;
+  return row;
+}
+
+// The same solve on the assembled K (mass: A_G), as a ratio to the condensed one: what static
+// condensation saves in time, and (peak_rss_mb) in memory.
+BenchmarkRow assembled_row(bool mass, const space::H1Space& space, const Eigen::VectorXd& load, const BenchmarkRow& base,
+                           const BenchmarkRow& condensed) {
+  BenchmarkRow row = base;
+  row.kind = mass ? "linear_AG_assembled" : "linear_K_assembled";
+  Stopwatch assembly_clock;
+  const auto matrices = assembly::assemble_volume_matrices(space, {.stiffness = true, .mass = mass});
+  const Eigen::SparseMatrix<double> matrix =
+      mass ? Eigen::SparseMatrix<double>(matrices.stiffness + matrices.mass) : matrices.stiffness;
+  row.seconds_assembly = assembly_clock.seconds();
+  row.seconds_baseline = condensed.seconds;
+  row.seconds = time_linear_solve<linalg::SparseCholesky>(load, matrix);
+  return row;
+}
+
 }  // namespace
 
 std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& benchmark,
@@ -110,66 +169,19 @@ std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& 
     linear_k.seconds_baseline = linear_k.seconds = time_linear_solve<assembly::CondensedFactor>(load, space, 1.0, 0.0);
     add(linear_k);
 
-    for (const auto& kind : benchmark.kinds) {
-      if (kind == "alpha" || kind == "assembled") continue;
-      contact::ContactSetup setup;
-      setup.mesh = &mesh;
-      setup.cell_degrees.assign(mesh.n_cells(), benchmark.p);
-      setup.boundary_mesh = &boundary;
-      setup.segment_degrees.assign(m, benchmark.pc);
-      setup.problem = kind == "signorini" ? contact::ContactProblem::signorini
-                      : kind == "friction" ? contact::ContactProblem::friction
-                                           : contact::ContactProblem::friction_s;
-      setup.f = [](const mesh::Point&) { return -1.0; };
-      setup.obstacle = [](const mesh::Point& x) { return -x.x() * x.x(); };
-      setup.bound = [](const mesh::Point& x) { return (1.0 - x.x()) * (1.0 - x.x()); };
-      const auto solution = contact::solve_contact(setup);
-      BenchmarkRow row = base;
-      row.kind = kind;
-      row.n_trace = solution.n_trace;
-      row.seconds_assembly = solution.seconds.assembly;
-      row.seconds_baseline = linear_k.seconds_baseline;
-      row.seconds = solution.seconds.factorization + solution.seconds.condensation + solution.seconds.qp +
-                    solution.seconds.recovery;
-      add(row);
-    }
-
+    for (const auto& kind : benchmark.kinds)
+      if (kind != "alpha" && kind != "assembled") add(contact_row(kind, benchmark, mesh, boundary, base, linear_k));
     BenchmarkRow linear_ag = base;
     linear_ag.kind = "linear_AG";
     if (has("alpha") || has("assembled")) {
       linear_ag.seconds_baseline = linear_ag.seconds = time_linear_solve<assembly::CondensedFactor>(load, space, 1.0, 1.0);
       add(linear_ag);
     }
-    if (has("alpha")) {
-      infsup::InfSupSetup setup;
-      setup.mesh = &mesh;
-      setup.cell_degrees.assign(mesh.n_cells(), benchmark.p);
-      setup.boundary_mesh = &boundary;
-      setup.segment_degrees.assign(m, benchmark.pc);
-      const auto result = infsup::analyse_infsup(setup, infsup::EigenBackend::slepc);
-      BenchmarkRow row = base;
-      row.kind = "alpha";
-      row.seconds_assembly = result.seconds_assembly;
-      row.seconds_baseline = linear_ag.seconds_baseline;
-      row.seconds = result.seconds - result.seconds_assembly;
-      add(row);
-    }
+    if (has("alpha")) add(alpha_row(benchmark, mesh, boundary, base, linear_ag));
     // The same solves on the assembled K and A_G, as ratios to the condensed ones: what static
     // condensation saves in time, and (peak_rss_mb) in memory.
-    if (has("assembled")) {
-      for (const bool mass : {false, true}) {
-        BenchmarkRow row = base;
-        row.kind = mass ? "linear_AG_assembled" : "linear_K_assembled";
-        Stopwatch assembly_clock;
-        const auto matrices = assembly::assemble_volume_matrices(space, {.stiffness = true, .mass = mass});
-        const Eigen::SparseMatrix<double> matrix = mass ? Eigen::SparseMatrix<double>(matrices.stiffness + matrices.mass)
-                                                        : matrices.stiffness;
-        row.seconds_assembly = assembly_clock.seconds();
-        row.seconds_baseline = (mass ? linear_ag : linear_k).seconds;
-        row.seconds = time_linear_solve<linalg::SparseCholesky>(load, matrix);
-        add(row);
-      }
-    }
+    if (has("assembled"))
+      for (const bool mass : {false, true}) add(assembled_row(mass, space, load, base, mass ? linear_ag : linear_k));
   }
   return rows;
 }

@@ -131,6 +131,64 @@ WorkPrecisionStudy read_work_precision_study(const std::string& path) {
   return study;
 }
 
+namespace {
+
+// A problem's reference (fitted to its free boundary when asked) and its accuracy: the difference
+// to the comparison one refinement coarser (or the variant before it).
+struct Reference {
+  driver::SceneContactRun fine;
+  double accuracy_energy = 0.0;
+  std::function<double(double)> weight;  ///< of the multiplier error norm
+};
+
+Reference solve_reference(const WorkPrecisionStudy::Reference& reference, const std::string& problem,
+                          const std::function<void(const std::string&)>& say, io::CsvTable& references) {
+  say(problem + ": reference");
+  scene::Scene fine_scene = reference.scene, coarse_scene = reference.coarser;
+  std::string free_boundary;
+  double free_boundary_moved = 0.0;
+  if (reference.fit_free_boundary) {
+    const auto fit = driver::fit_free_boundary(fine_scene, {problem_named(problem)});
+    fine_scene = fit.scene;
+    coarse_scene.grading_points.insert(coarse_scene.grading_points.end(), fit.points.begin(), fit.points.end());
+    for (const auto& point : fit.points)
+      free_boundary += fmt::format("{}{:.12g} {:.12g}", free_boundary.empty() ? "" : ";", point.x(), point.y());
+    free_boundary_moved = fit.moved;
+  }
+  Reference out{timed_solve(fine_scene, problem, 1), 0.0, {}};
+  const auto& fine = out.fine;
+  say(problem + ": reference, coarser");
+  const auto coarse = timed_solve(coarse_scene, problem, 1);
+  out.accuracy_energy = std::abs(fine.solution.energy - coarse.solution.energy);
+  out.weight = driver::multiplier_error_weight(reference.scene, *fine.discretization, problem_named(problem));
+  const double accuracy_lambda = contact::multiplier_l2_distance(
+      *coarse.discretization->multipliers, coarse.solution.lambda_legendre, *fine.discretization->multipliers,
+      fine.solution.lambda_legendre, out.weight);
+  references.add_row({problem, fine.solution.energy, coarse.solution.energy, out.accuracy_energy, accuracy_lambda,
+                      static_cast<long long>(fine.solution.u.size()), fine.seconds, free_boundary,
+                      free_boundary_moved});
+  return out;
+}
+
+// The cheapest run per tolerance, where the reference can decide it.
+void add_cheapest_rows(const std::string& problem, const std::vector<double>& tolerances, double accuracy_energy,
+                       const std::vector<std::vector<io::CsvCell>>& best, io::CsvTable& cheapest) {
+  for (std::size_t t = 0; t < tolerances.size(); ++t) {
+    std::vector<io::CsvCell> row{problem, fmt::format("{:g}", tolerances[t])};
+    if (tolerances[t] < accuracy_energy) {
+      row.insert(row.end(), {std::string("below reference accuracy"), "", "", "", "", "", "", ""});
+    } else if (best[t].empty()) {
+      row.insert(row.end(), {std::string("not reached"), "", "", "", "", "", "", ""});
+    } else {
+      row.push_back(std::string("reached"));
+      row.insert(row.end(), best[t].begin(), best[t].end());
+    }
+    cheapest.add_row(row);
+  }
+}
+
+}  // namespace
+
 void run_work_precision_study(const WorkPrecisionStudy& study, const std::filesystem::path& out,
                               const std::function<void(int, int, const std::string&)>& progress) {
   int total = 2 * static_cast<int>(study.problems.size()), done = 0;
@@ -148,37 +206,14 @@ void run_work_precision_study(const WorkPrecisionStudy& study, const std::filesy
   io::CsvTable cheapest({"problem", "tolerance", "verdict", "family", "p", "pC", "n", "ndofs", "error_energy", "seconds"});
   for (const auto& problem : study.problems) {
     // 1. The reference and its accuracy.
-    const auto& reference = *std::find_if(study.references.begin(), study.references.end(),
-                                          [&](const auto& r) { return r.problem == problem; });
-    say(problem + ": reference");
-    scene::Scene fine_scene = reference.scene, coarse_scene = reference.coarser;
-    std::string free_boundary;
-    double free_boundary_moved = 0.0;
-    if (reference.fit_free_boundary) {
-      const auto fit = driver::fit_free_boundary(fine_scene, {problem_named(problem)});
-      fine_scene = fit.scene;
-      coarse_scene.grading_points.insert(coarse_scene.grading_points.end(), fit.points.begin(), fit.points.end());
-      for (const auto& point : fit.points)
-        free_boundary += fmt::format("{}{:.12g} {:.12g}", free_boundary.empty() ? "" : ";", point.x(), point.y());
-      free_boundary_moved = fit.moved;
-    }
-    const auto fine = timed_solve(fine_scene, problem, 1);
-    say(problem + ": reference, coarser");
-    const auto coarse = timed_solve(coarse_scene, problem, 1);
-    const double accuracy_energy = std::abs(fine.solution.energy - coarse.solution.energy);
-    const auto weight = driver::multiplier_error_weight(reference.scene, *fine.discretization, problem_named(problem));
-    const double accuracy_lambda = contact::multiplier_l2_distance(
-        *coarse.discretization->multipliers, coarse.solution.lambda_legendre, *fine.discretization->multipliers,
-        fine.solution.lambda_legendre, weight);
-    references.add_row({problem, fine.solution.energy, coarse.solution.energy, accuracy_energy, accuracy_lambda,
-                        static_cast<long long>(fine.solution.u.size()), fine.seconds, free_boundary, free_boundary_moved});
+    const auto& given = *std::find_if(study.references.begin(), study.references.end(),
+                                      [&](const auto& r) { return r.problem == problem; });
+    const Reference reference = solve_reference(given, problem, say, references);
+    const auto& fine = reference.fine;
 
-    // 2. Every family's runs against it.
-    struct Best {
-      double seconds = std::numeric_limits<double>::infinity();
-      std::vector<io::CsvCell> row;
-    };
-    std::vector<Best> best(study.tolerances.size());
+    // 2. Every family's runs against it, keeping the fastest per tolerance.
+    std::vector<double> best_seconds(study.tolerances.size(), std::numeric_limits<double>::infinity());
+    std::vector<std::vector<io::CsvCell>> best(study.tolerances.size());
     for (const auto& family : study.families) {
       if (std::find(family.problems.begin(), family.problems.end(), problem) == family.problems.end()) continue;
       for (const auto& variant : family.variants) {
@@ -189,7 +224,7 @@ void run_work_precision_study(const WorkPrecisionStudy& study, const std::filesy
         const double error_energy = std::abs(run.solution.energy - fine.solution.energy);
         const double error_lambda = contact::multiplier_l2_distance(*d.multipliers, run.solution.lambda_legendre,
                                                                     *fine.discretization->multipliers,
-                                                                    fine.solution.lambda_legendre, weight);
+                                                                    fine.solution.lambda_legendre, reference.weight);
         const auto p = scene.p.label(), pc = scene.pc.label();
         const auto n = static_cast<long long>(d.contact->edges().size());
         const auto ndofs = static_cast<long long>(run.solution.u.size());
@@ -197,24 +232,14 @@ void run_work_precision_study(const WorkPrecisionStudy& study, const std::filesy
                       static_cast<long long>(run.solution.lambda.size()), error_energy, error_lambda, run.seconds,
                       family.name, run.solution.energy});
         for (std::size_t t = 0; t < study.tolerances.size(); ++t)
-          if (error_energy + accuracy_energy <= study.tolerances[t] && run.seconds < best[t].seconds)
-            best[t] = {run.seconds, {family.name, p, pc, n, ndofs, error_energy, run.seconds}};
+          if (error_energy + reference.accuracy_energy <= study.tolerances[t] && run.seconds < best_seconds[t]) {
+            best_seconds[t] = run.seconds;
+            best[t] = {family.name, p, pc, n, ndofs, error_energy, run.seconds};
+          }
       }
     }
-    // 3. The cheapest run per tolerance, where the reference can decide it.
-    for (std::size_t t = 0; t < study.tolerances.size(); ++t) {
-      const double tolerance = study.tolerances[t];
-      std::vector<io::CsvCell> row{problem, fmt::format("{:g}", tolerance)};
-      if (tolerance < accuracy_energy) {
-        row.insert(row.end(), {std::string("below reference accuracy"), "", "", "", "", "", "", ""});
-      } else if (best[t].row.empty()) {
-        row.insert(row.end(), {std::string("not reached"), "", "", "", "", "", "", ""});
-      } else {
-        row.push_back(std::string("reached"));
-        row.insert(row.end(), best[t].row.begin(), best[t].row.end());
-      }
-      cheapest.add_row(row);
-    }
+    // 3. The cheapest run per tolerance.
+    add_cheapest_rows(problem, study.tolerances, reference.accuracy_energy, best, cheapest);
   }
   io::ensure_writable_directory(out);
   rows.write(out / "work_precision.csv");
