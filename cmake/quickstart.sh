@@ -3,7 +3,8 @@
 # sudo when not root), configures and builds with CMake (Release, build/), then runs
 #   study  the main job: the studies (convergence, stability, the paper's §7 figures, work-precision),
 #          writing CSV and PNG into results/ (and the README figures)
-#   test   the GoogleTest suite through CTest; then the same suite built with clang under
+#   test   a formatting check (.clang-format), the GoogleTest suite through CTest; then the same
+#          suite built with clang under
 #          AddressSanitizer + UndefinedBehaviorSanitizer (build-sanitize/), and the scene fuzzer
 #          (libFuzzer) for 60 s from its seed corpus
 # Idempotent: a second call installs nothing and rebuilds only what changed.
@@ -22,7 +23,7 @@ jobs=$(nproc 2>/dev/null || echo 2)
 packages=(build-essential cmake pkg-config libeigen3-dev petsc-dev slepc-dev libgsl-dev
           libmuparser-dev libcli11-dev libtomlplusplus-dev libfmt-dev nlohmann-json3-dev
           libsuitesparse-dev libgtest-dev libgmock-dev libbenchmark-dev python3-matplotlib
-          clang libclang-rt-14-dev libopenblas0-pthread openmpi-bin)
+          clang libclang-rt-14-dev clang-format libopenblas0-pthread openmpi-bin)
 missing=()
 for package in "${packages[@]}"; do
   status=$(dpkg-query -W -f='${Status}' "$package" 2>/dev/null || true)
@@ -39,16 +40,24 @@ if [ ${#missing[@]} -gt 0 ]; then
   "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-# 2. Configure (once) and build.
+# 2. The test command first checks the formatting against the committed .clang-format (clang-format
+#    from Debian); `clang-format -i` on the files it names fixes them.
+if [ "$mode" = test ]; then
+  mapfile -t sources < <(find lib tools tests -name '*.cpp' -o -name '*.hpp' | sort)
+  clang-format --dry-run --Werror "${sources[@]}" || {
+    echo "quickstart: these files differ from .clang-format; run: clang-format -i <file>" >&2; exit 1; }
+fi
+
+# 3. Configure (once) and build.
 if [ ! -f build/CMakeCache.txt ]; then
   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 fi
 cmake --build build -j "$jobs"
 
-# 3. Run.
+# 4. Run.
 if [ "$mode" = test ]; then
   (cd build && ctest --output-on-failure -j "$jobs")
-  # 4. The sanitizer build and the fuzzer. LeakSanitizer is off: OpenMPI (under PETSc/SLEPc)
+  # 5. The sanitizer build and the fuzzer. LeakSanitizer is off: OpenMPI (under PETSc/SLEPc)
   #    unloads its components at exit and leaves allocations that LSan cannot attribute.
   export ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
   if [ ! -f build-sanitize/CMakeCache.txt ]; then

@@ -2,12 +2,13 @@
 // code; fresh scratch folders.
 #pragma once
 
+#include <sys/wait.h>
+
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <string>
-#include <sys/wait.h>
 
 namespace hpcontact::testing {
 

@@ -14,8 +14,8 @@
 namespace hpcontact::testing {
 
 // Uniform degrees p and p_C on the given meshes (which must outlive the setup).
-inline contact::ContactSetup uniform_setup(const mesh::QuadMesh& mesh, const mesh::BoundaryMesh& boundary,
-                                           int p, int pc) {
+inline contact::ContactSetup uniform_setup(const mesh::QuadMesh& mesh, const mesh::BoundaryMesh& boundary, int p,
+                                           int pc) {
   contact::ContactSetup setup;
   setup.mesh = &mesh;
   setup.cell_degrees.assign(mesh.n_cells(), p);
@@ -33,9 +33,10 @@ struct ContactData {
 
 /// Problem `problem` on the §7 square with n × n cells of degree p and m uniform segments of
 /// degree p_C; `tune` may change the setup (solver options) before the solve.
-inline contact::ContactSolution solve_paper_contact(
-    contact::ContactProblem problem, int n, int p, int pc, int m, std::optional<int> constraint_points = {},
-    const ContactData& data = {}, const std::function<void(contact::ContactSetup&)>& tune = {}) {
+inline contact::ContactSolution solve_paper_contact(contact::ContactProblem problem, int n, int p, int pc, int m,
+                                                    std::optional<int> constraint_points = {},
+                                                    const ContactData& data = {},
+                                                    const std::function<void(contact::ContactSetup&)>& tune = {}) {
   const auto mesh = mesh::make_paper_square_mesh(n);
   const auto boundary = mesh::BoundaryMesh::uniform(2.0, m);
   auto setup = uniform_setup(mesh, boundary, p, pc);

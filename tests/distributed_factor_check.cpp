@@ -54,23 +54,19 @@ int run(const std::string& solver, const std::string& split, bool indefinite) {
         for (int b = a + 1; b < 4; ++b) {
           const double w = weight(random);
           const int hi = std::max(nodes[a], nodes[b]), lo = std::min(nodes[a], nodes[b]);
-          entries.emplace_back(hi, hi, w), entries.emplace_back(lo, lo, w),
-              entries.emplace_back(hi, lo, -w);
+          entries.emplace_back(hi, hi, w), entries.emplace_back(lo, lo, w), entries.emplace_back(hi, lo, -w);
         }
       add_element(entries, split == "strips" ? i * ranks / (kNx - 1) : element % ranks);
     }
   // "Dirichlet" diagonal on the top row, all on rank 0 (it touches every strip's top nodes).
   for (int i = 0; i < kNx; ++i)
-    add_element(
-        {{node(i, kNy - 1), node(i, kNy - 1), indefinite && i == kNx / 2 ? -50.0 : weight(random)}},
-        0);
+    add_element({{node(i, kNy - 1), node(i, kNy - 1), indefinite && i == kNx / 2 ? -50.0 : weight(random)}}, 0);
   // The trailing set: the bottom row. B: 10 rows on it; B_out also reaches one interior node.
   std::vector<int> trailing;
   for (int i = 0; i < kNx; ++i) trailing.push_back(node(i, 0));
   std::vector<Eigen::Triplet<double>> b_entries;
   for (int r = 0; r < 10; ++r)
-    for (int k = 0; k < 5; ++k)
-      b_entries.emplace_back(r, trailing[(3 * r + 5 * k) % kNx], value(random));
+    for (int k = 0; k < 5; ++k) b_entries.emplace_back(r, trailing[(3 * r + 5 * k) % kNx], value(random));
   Eigen::SparseMatrix<double> b(10, n), b_out(10, n);
   b.setFromTriplets(b_entries.begin(), b_entries.end());
   b_entries.emplace_back(4, node(kNx / 2, kNy / 2), 1.0);
@@ -82,13 +78,11 @@ int run(const std::string& solver, const std::string& split, bool indefinite) {
   int interface = 0;
   if (solver == "substructuring") {
     const linalg::SubstructuredCholesky factor(n, mine, trailing);
-    solution = factor.solve(rhs), schur = factor.schur_complement(b),
-    schur_out = factor.schur_complement(b_out);
+    solution = factor.solve(rhs), schur = factor.schur_complement(b), schur_out = factor.schur_complement(b_out);
     interface = factor.interface_size();
   } else if (solver == "mumps") {
     const linalg::DistributedCholesky factor(n, mine);
-    solution = factor.solve(rhs), schur = factor.schur_complement(b),
-    schur_out = factor.schur_complement(b_out);
+    solution = factor.solve(rhs), schur = factor.schur_complement(b), schur_out = factor.schur_complement(b_out);
   } else {
     throw_bad_input("distributed_factor_check", "SOLVER", solver, "substructuring | mumps");
   }
@@ -98,8 +92,7 @@ int run(const std::string& solver, const std::string& split, bool indefinite) {
   const linalg::SparseCholesky reference(a);
   fmt::print("solve {:.3e}\n", relative_difference(solution, reference.solve(rhs)));
   fmt::print("schur_trailing {:.3e}\n", relative_difference(schur, reference.schur_complement(b)));
-  fmt::print("schur_fallback {:.3e}\n",
-             relative_difference(schur_out, reference.schur_complement(b_out)));
+  fmt::print("schur_fallback {:.3e}\n", relative_difference(schur_out, reference.schur_complement(b_out)));
   fmt::print("interface {}\n", interface);
   return 0;
 }
@@ -110,8 +103,7 @@ int main(int argc, char** argv) {
   const PetscSession session({argv[0]});
   try {
     if (argc < 3)
-      throw_bad_input("distributed_factor_check", "arguments", std::to_string(argc - 1),
-                      "SOLVER SPLIT [indefinite]");
+      throw_bad_input("distributed_factor_check", "arguments", std::to_string(argc - 1), "SOLVER SPLIT [indefinite]");
     return run(argv[1], argv[2], argc > 3 && std::string(argv[3]) == "indefinite");
   } catch (const std::exception& error) {
     if (mpi_rank_and_size().first == 0) fmt::print("error: {}\n", error.what());

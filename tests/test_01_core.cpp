@@ -36,9 +36,7 @@ TEST(Expression, SyntaxErrorNamesOriginAndText) {
   EXPECT_NE(message.find("x +* 2"), std::string::npos) << message;
 }
 
-TEST(Expression, UnknownVariableIsAnError) {
-  EXPECT_THROW(Expression("z + 1", "test"), InputError);
-}
+TEST(Expression, UnknownVariableIsAnError) { EXPECT_THROW(Expression("z + 1", "test"), InputError); }
 
 TEST(Expression, NonFiniteValueIsAnError) {
   const Expression g("1/x", "scene.toml: key 'g'");
@@ -47,13 +45,12 @@ TEST(Expression, NonFiniteValueIsAnError) {
 }
 
 TEST(PetscOptions, SplitKeepsOwnArgumentsAndPassesSolverOptions) {
-  const char* argv[] = {"hpcontact", "infsup", "--p", "3",   "-eps_type", "arpack",
-                        "-st_shift", "-1",     "--n", "8",   "-eps_view", "--pc", "2"};
+  const char* argv[] = {"hpcontact", "infsup", "--p", "3",         "-eps_type", "arpack", "-st_shift",
+                        "-1",        "--n",    "8",   "-eps_view", "--pc",      "2"};
   const auto split = split_petsc_options(13, argv);
-  EXPECT_EQ(split.own, (std::vector<std::string>{"hpcontact", "infsup", "--p", "3", "--n", "8",
-                                                 "--pc", "2"}));
-  EXPECT_EQ(split.petsc, (std::vector<std::string>{"hpcontact", "-eps_type", "arpack",
-                                                   "-st_shift", "-1", "-eps_view"}));
+  EXPECT_EQ(split.own, (std::vector<std::string>{"hpcontact", "infsup", "--p", "3", "--n", "8", "--pc", "2"}));
+  EXPECT_EQ(split.petsc,
+            (std::vector<std::string>{"hpcontact", "-eps_type", "arpack", "-st_shift", "-1", "-eps_view"}));
 }
 
 TEST(Csv, FullPrecisionRoundTrip) {

@@ -73,8 +73,8 @@ TEST(Mesh, PerturbationKeepsBoundaryAndValidity) {
   mesh::perturb_interior_vertices(m, 0.2, 42);
   int moved = 0;
   for (int v = 0; v < m.n_vertices(); ++v) {
-    const bool boundary = std::abs(std::abs(before[v].x()) - 1) < 1e-14 ||
-                          std::abs(std::abs(before[v].y()) - 1) < 1e-14;
+    const bool boundary =
+        std::abs(std::abs(before[v].x()) - 1) < 1e-14 || std::abs(std::abs(before[v].y()) - 1) < 1e-14;
     if (boundary) {
       EXPECT_EQ(m.vertex(v), before[v]);
     }
@@ -164,9 +164,10 @@ TEST(PointGrading, StarsBecomeConformingGeometricLayers) {
     for (int e : graded.boundary_edges()) {
       boundary += graded.edge_length(e);
       const auto mid = graded.edge_midpoint(e);
-      const std::string expected = std::abs(mid.y() + 1) < 1e-12 ? "bottom"
+      const std::string expected = std::abs(mid.y() + 1) < 1e-12   ? "bottom"
                                    : std::abs(mid.x() - 1) < 1e-12 ? "right"
-                                   : std::abs(mid.y() - 1) < 1e-12 ? "top" : "left";
+                                   : std::abs(mid.y() - 1) < 1e-12 ? "top"
+                                                                   : "left";
       EXPECT_EQ(graded.edge_label(e), expected) << mid.transpose();
     }
     EXPECT_NEAR(boundary, 8.0, 1e-13) << "a hanging node or a gap";

@@ -113,8 +113,7 @@ TEST(GmshReader, MapsNodeTagsAndReorientsClockwiseQuads) {
 }
 
 TEST(GmshReader, SkipsUnknownSectionsAndParametricCoordinates) {
-  const std::string text =
-      square_with("$EndElements\n", "$EndElements\n$NodeData\n1\n\"u\"\n0\n0\n$EndNodeData\n");
+  const std::string text = square_with("$EndElements\n", "$EndElements\n$NodeData\n1\n\"u\"\n0\n0\n$EndNodeData\n");
   EXPECT_EQ(read_gmsh_mesh(write_temp("node_data.msh", text)).n_cells(), 4);
   const std::string parametric = square_with("1 1 0 1\n5\n0 -1 0\n", "1 1 1 1\n5\n0 -1 0 0.5\n");
   EXPECT_EQ(read_gmsh_mesh(write_temp("parametric.msh", parametric)).vertex(4), Point(0.0, -1.0));
@@ -123,8 +122,7 @@ TEST(GmshReader, SkipsUnknownSectionsAndParametricCoordinates) {
 TEST(GmshReader, TrianglesAreRejected) {
   const auto message = message_of(data("triangles.msh"));
   EXPECT_THAT(message, HasSubstr("triangles.msh:18:"));
-  EXPECT_THAT(message,
-              HasSubstr("only 4-node quadrilaterals (type 3) are supported; found type 2"));
+  EXPECT_THAT(message, HasSubstr("only 4-node quadrilaterals (type 3) are supported; found type 2"));
 }
 
 TEST(GmshReader, NineNodeQuadsAreRejected) {
@@ -155,8 +153,7 @@ TEST(GmshReader, BinaryIsRejected) {
 }
 
 TEST(GmshReader, MissingFileAndSectionsAreRejected) {
-  EXPECT_THAT(message_of(data("no_such_file.msh")),
-              HasSubstr("no_such_file.msh: cannot open the Gmsh mesh file"));
+  EXPECT_THAT(message_of(data("no_such_file.msh")), HasSubstr("no_such_file.msh: cannot open the Gmsh mesh file"));
   EXPECT_THAT(message_of(write_temp("no_format.msh", "$Nodes\n0 0 0 0\n$EndNodes\n")),
               HasSubstr("must begin with $MeshFormat"));
   const std::string text = read_text(data("square_2x2.msh"));
@@ -168,8 +165,7 @@ TEST(GmshReader, BadNumbersAndUnknownNodesAreRejected) {
   const auto bad_number = write_temp("bad_number.msh", square_with("0 -1 0", "0 -1x 0"));
   EXPECT_THAT(message_of(bad_number), HasSubstr("bad_number.msh:39: field 2 '-1x' is not"));
   const auto unknown_node = write_temp("unknown_node.msh", square_with("9 1 5 9 8", "9 1 5 99 8"));
-  EXPECT_THAT(message_of(unknown_node),
-              HasSubstr("element 9 refers to node tag 99, which $Nodes does not define"));
+  EXPECT_THAT(message_of(unknown_node), HasSubstr("element 9 refers to node tag 99, which $Nodes does not define"));
 }
 
 TEST(GmshReader, LabelledLineInsideTheDomainIsRejected) {

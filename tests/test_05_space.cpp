@@ -61,8 +61,8 @@ TEST(H1Space, MixedDegreesAreConforming) {
       const auto v0 = fe::evaluate(s, u, {cells[0], r0->x(), r0->y()});
       const auto v1 = fe::evaluate(s, u, {cells[1], r1->x(), r1->y()});
       const mesh::Point tangent = (m.vertex(m.edge(e)[1]) - m.vertex(m.edge(e)[0])).normalized();
-      largest_jump = std::max({largest_jump, std::abs(v0.value - v1.value),
-                               std::abs((v0.gradient - v1.gradient).dot(tangent))});
+      largest_jump =
+          std::max({largest_jump, std::abs(v0.value - v1.value), std::abs((v0.gradient - v1.gradient).dot(tangent))});
     }
   }
   EXPECT_EQ(edges_checked, 60);

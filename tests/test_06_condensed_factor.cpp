@@ -22,9 +22,7 @@ using namespace hpcontact;
 
 namespace {
 
-double relative_difference(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
-  return (a - b).norm() / b.norm();
-}
+double relative_difference(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) { return (a - b).norm() / b.norm(); }
 
 // The §7 mesh with its vertices numbered in random order, so that the local edge directions
 // disagree with the global ones on about half the edges (shape signs −1), as in Gmsh meshes.
@@ -104,8 +102,9 @@ TEST(CondensedFactor, EqualsTheFactorOfTheAssembledMatrix) {
       Eigen::SparseMatrix<double> b_interior = b;
       b_interior.coeffRef(0, space.n_dofs() - 1) = 1.0;
       const Eigen::MatrixXd bit = Eigen::MatrixXd(b_interior.transpose());
-      EXPECT_LT(relative_difference(factor.schur_complement(b_interior), Eigen::MatrixXd(b_interior) * dense.solve(bit)),
-                1e-11);
+      EXPECT_LT(
+          relative_difference(factor.schur_complement(b_interior), Eigen::MatrixXd(b_interior) * dense.solve(bit)),
+          1e-11);
     }
   }
 }

@@ -83,8 +83,8 @@ TEST(Assembly, KroneckerParallelogramsEqualQuadrature) {
     for (int c = 0; c < mesh->n_cells(); ++c) degrees.push_back(1 + (3 * c) % 7);
     const space::H1Space space(*mesh, degrees);
     const auto fast = assembly::assemble_volume_matrices(space, {.stiffness = true, .mass = true});
-    const auto quadrature = assembly::assemble_volume_matrices(
-        space, {.stiffness = true, .mass = true, .kronecker_parallelograms = false});
+    const auto quadrature =
+        assembly::assemble_volume_matrices(space, {.stiffness = true, .mass = true, .kronecker_parallelograms = false});
     const Eigen::MatrixXd k_difference = Eigen::MatrixXd(fast.stiffness) - Eigen::MatrixXd(quadrature.stiffness);
     const Eigen::MatrixXd m_difference = Eigen::MatrixXd(fast.mass) - Eigen::MatrixXd(quadrature.mass);
     EXPECT_LT(k_difference.cwiseAbs().maxCoeff(), 1e-12 * Eigen::MatrixXd(quadrature.stiffness).cwiseAbs().maxCoeff());

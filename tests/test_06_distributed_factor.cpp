@@ -33,12 +33,10 @@ TEST(DistributedFactor, SubstructuringAndMumpsEqualCholmodOnEverySplit) {
     for (const char* split : {"strips", "scattered"})
       for (int ranks : {1, 2, 3}) {
         const auto run = run_command(check_command(ranks, std::string(solver) + " " + split));
-        const std::string where =
-            std::string(solver) + ", " + split + ", " + std::to_string(ranks) + " ranks";
+        const std::string where = std::string(solver) + ", " + split + ", " + std::to_string(ranks) + " ranks";
         ASSERT_EQ(run.exit_code, 0) << where << "\n" << run.output;
         for (const char* key : {"solve", "schur_trailing", "schur_fallback"})
-          EXPECT_LT(number_after(run.output, key), 1e-11) << where << ": " << key << "\n"
-                                                          << run.output;
+          EXPECT_LT(number_after(run.output, key), 1e-11) << where << ": " << key << "\n" << run.output;
         if (std::string(solver) == "substructuring") {
           // The interface: the trailing row (24) alone on one rank; with strips, plus the nodes
           // between strips and the top nodes rank 0 shares; scattered, nearly every node.
@@ -60,8 +58,7 @@ TEST(DistributedFactor, SubstructuringAndMumpsEqualCholmodOnEverySplit) {
 TEST(DistributedFactor, IndefiniteMatrixFailsOnEveryRankWithAClearMessage) {
   for (const char* solver : {"substructuring", "mumps"})
     for (int ranks : {1, 2}) {
-      const auto run =
-          run_command(check_command(ranks, std::string(solver) + " strips indefinite"));
+      const auto run = run_command(check_command(ranks, std::string(solver) + " strips indefinite"));
       EXPECT_EQ(run.exit_code, 3) << solver << ", " << ranks << " ranks\n" << run.output;
       EXPECT_NE(run.output.find("not positive definite"), std::string::npos) << run.output;
     }

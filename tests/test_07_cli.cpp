@@ -1,7 +1,6 @@
 // Stage 7, command line: --help lists the subcommands, bad input exits with code 2 and leaves
 // no output, and the convergence subcommand writes its CSV.
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -9,6 +8,7 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <vector>
 
@@ -85,8 +85,8 @@ std::string alpha_line(const std::string& output) {
 TEST(Cli, InfsupPrintsAlphaAndSceneMatchesBuiltInGeometry) {
   const auto built_in = run("infsup --p 3 --pc 2 --n 8 --ratio 1/2 --eigensolver dense");
   ASSERT_EQ(built_in.exit_code, 0) << built_in.output;
-  const auto scene = run(std::string("infsup --scene ") + HPCONTACT_TEST_DATA +
-                         "/scene_paper.toml --eigensolver dense");
+  const auto scene =
+      run(std::string("infsup --scene ") + HPCONTACT_TEST_DATA + "/scene_paper.toml --eigensolver dense");
   ASSERT_EQ(scene.exit_code, 0) << scene.output;
   EXPECT_FALSE(alpha_line(built_in.output).empty());
   EXPECT_EQ(alpha_line(scene.output), alpha_line(built_in.output));
@@ -142,13 +142,15 @@ TEST(Cli, SolveWithoutObstacleIsBadInputAndWritesNothing) {
 TEST(Cli, SolveWithMoreConstraintPointsUsesInteriorPointAndRefusesTooFew) {
   const auto dir = scratch("solve_points");
   const std::string scene = std::string(HPCONTACT_SOURCE_DIR) + "/studies/paper/figure6_friction_s.toml";
-  const auto good = run("solve " + scene + " --effects friction_s --constraint-points 6 --out " + (dir / "out").string());
+  const auto good =
+      run("solve " + scene + " --effects friction_s --constraint-points 6 --out " + (dir / "out").string());
   ASSERT_EQ(good.exit_code, 0) << good.output;
   std::ifstream summary(dir / "out" / "summary.json");
   const std::string json((std::istreambuf_iterator<char>(summary)), std::istreambuf_iterator<char>());
   EXPECT_NE(json.find("\"interior-point\""), std::string::npos) << json.substr(0, 600);
   EXPECT_NE(json.find("\"active_set_changes\""), std::string::npos);
-  const auto bad = run("solve " + scene + " --effects friction_s --pc 3 --constraint-points 3 --out " + (dir / "bad").string());
+  const auto bad =
+      run("solve " + scene + " --effects friction_s --pc 3 --constraint-points 3 --out " + (dir / "bad").string());
   EXPECT_EQ(bad.exit_code, 2) << bad.output;
   EXPECT_NE(bad.output.find("--constraint-points"), std::string::npos) << bad.output;
   EXPECT_NE(bad.output.find("p_C + 1 = 4"), std::string::npos) << bad.output;
@@ -227,8 +229,8 @@ TEST(Cli, BenchmarkWritesRatiosAgainstTheBaselineOfTheSameRun) {
     kinds.push_back(line.substr(0, line.find(',')));
     EXPECT_NEAR(cells[10], cells[9] / cells[8], 1e-12 * cells[10]) << line;
   }
-  const std::vector<std::string> level{"linear_K", "signorini", "linear_AG", "alpha", "linear_K_assembled",
-                                       "linear_AG_assembled"};
+  const std::vector<std::string> level{"linear_K", "signorini",          "linear_AG",
+                                       "alpha",    "linear_K_assembled", "linear_AG_assembled"};
   std::vector<std::string> expected = level;
   expected.insert(expected.end(), level.begin(), level.end());
   EXPECT_EQ(kinds, expected);
@@ -245,20 +247,23 @@ TEST(Cli, BenchmarkWritesRatiosAgainstTheBaselineOfTheSameRun) {
 // and a reference that has no coarser discretization is refused, naming the key.
 TEST(Cli, WorkPrecisionFitsTheReferenceAndEstimatesItsAccuracy) {
   const auto dir = scratch("work_precision");
-  const std::string head = "[study]\nscene = \"" + std::string(HPCONTACT_SOURCE_DIR) +
-                           "/studies/work_precision/base.toml\"\nproblems = [\"signorini\"]\ntolerances = [1e-3]\nrepeats = 1\n"
-                           "[[family]]\nname = \"p\"\nvary = { \"discretization.p\" = [2, 3], \"discretization.pC\" = [1, 2] }\n";
-  std::ofstream(dir / "study.toml")
-      << head << "[[reference]]\nproblem = \"signorini\"\nfit_free_boundary = true\n"
-      << "set = { domain = { grading_points = [[1, 0]], grading = 0.2, grading_layers = 8 }, contact_mesh = { ratio = 1 } }\n"
-      << "vary = { \"discretization.p\" = [6, 8], \"discretization.pC\" = [4, 6] }\n";
+  const std::string head =
+      "[study]\nscene = \"" + std::string(HPCONTACT_SOURCE_DIR) +
+      "/studies/work_precision/base.toml\"\nproblems = [\"signorini\"]\ntolerances = [1e-3]\nrepeats = 1\n"
+      "[[family]]\nname = \"p\"\nvary = { \"discretization.p\" = [2, 3], \"discretization.pC\" = [1, 2] }\n";
+  std::ofstream(dir / "study.toml") << head << "[[reference]]\nproblem = \"signorini\"\nfit_free_boundary = true\n"
+                                    << "set = { domain = { grading_points = [[1, 0]], grading = 0.2, grading_layers = "
+                                       "8 }, contact_mesh = { ratio = 1 } }\n"
+                                    << "vary = { \"discretization.p\" = [6, 8], \"discretization.pC\" = [4, 6] }\n";
   const auto result = run("work-precision " + (dir / "study.toml").string() + " --out " + (dir / "out").string());
   ASSERT_EQ(result.exit_code, 0) << result.output;
   std::ifstream csv(dir / "out" / "reference.csv");
   std::string header, row;
   std::getline(csv, header);
   std::getline(csv, row);
-  EXPECT_EQ(header, "problem,energy,energy_coarser,accuracy_energy,accuracy_lambda,ndofs,seconds,free_boundary,free_boundary_moved");
+  EXPECT_EQ(
+      header,
+      "problem,energy,energy_coarser,accuracy_energy,accuracy_lambda,ndofs,seconds,free_boundary,free_boundary_moved");
   std::vector<std::string> cells;
   std::stringstream stream(row);
   for (std::string cell; std::getline(stream, cell, ',');) cells.push_back(cell);
@@ -269,7 +274,8 @@ TEST(Cli, WorkPrecisionFitsTheReferenceAndEstimatesItsAccuracy) {
   EXPECT_EQ(std::count(cells[7].begin(), cells[7].end(), ';'), 1) << "two ends of the contact set: " << cells[7];
   EXPECT_LE(std::stod(cells[8]), 2e-6);
 
-  std::ofstream(dir / "bad.toml") << head << "[[reference]]\nproblem = \"signorini\"\nset = { discretization = { p = 4 } }\n";
+  std::ofstream(dir / "bad.toml") << head
+                                  << "[[reference]]\nproblem = \"signorini\"\nset = { discretization = { p = 4 } }\n";
   const auto bad = run("work-precision " + (dir / "bad.toml").string() + " --out " + (dir / "bad").string());
   EXPECT_EQ(bad.exit_code, 2) << bad.output;
   EXPECT_NE(bad.output.find("reference.set.domain.refinements"), std::string::npos) << bad.output;
@@ -325,7 +331,8 @@ TEST(Cli, InfsupUnderMpirunGivesTheSerialAlpha) {
       ASSERT_EQ(parallel.exit_code, 0) << parallel.output;
       const std::string key = "alpha = ";
       ASSERT_NE(parallel.output.find(key), std::string::npos) << parallel.output;
-      EXPECT_EQ(parallel.output.find(key), parallel.output.rfind(key)) << "printed by one rank only: " << parallel.output;
+      EXPECT_EQ(parallel.output.find(key), parallel.output.rfind(key))
+          << "printed by one rank only: " << parallel.output;
       const double alpha = std::stod(serial.output.substr(serial.output.find(key) + key.size()));
       const double alpha_mpi = std::stod(parallel.output.substr(parallel.output.find(key) + key.size()));
       EXPECT_NEAR(alpha_mpi, alpha, 1e-10 * alpha) << norm << ", " << solver;
@@ -355,7 +362,8 @@ TEST(Cli, SolveUnderMpirunGivesTheSerialSolutionAndAlpha) {
                                                                {"figure6_friction_s", "friction_s"}};
   for (const auto& [scene, effects] : cases) {
     const auto dir = scratch("solve_mpi_" + scene);
-    const std::string arguments = " solve " HPCONTACT_SOURCE_DIR "/studies/paper/" + scene + ".toml --effects " + effects;
+    const std::string arguments =
+        " solve " HPCONTACT_SOURCE_DIR "/studies/paper/" + scene + ".toml --effects " + effects;
     const auto serial = run_command(env + HPCONTACT_CLI + arguments + " --out " + (dir / "serial").string());
     ASSERT_EQ(serial.exit_code, 0) << serial.output;
     const auto parallel = run_command(env + "mpirun -n 2 --oversubscribe " HPCONTACT_CLI + arguments + " --out " +
@@ -417,23 +425,75 @@ TEST(Cli, SolveBuildsOnlyTheOperatorsItsEffectsNeedAndNothingTwice) {
     std::map<std::string, int> count;  ///< operator name -> times built (0: never)
   };
   const std::vector<Case> cases{
-      {"work_precision/base", "infsup",
-       {{"S^p(T_h)", 1}, {"K", 0}, {"M", 0}, {"B", 1}, {"factor(K+M)", 1}, {"S_G", 1}, {"G (interpolation norm)", 1},
-        {"F", 0}, {"g", 0}, {"B^s", 0}, {"factor(K)", 0}, {"S", 0}, {"contact QP (active-set+proximal)", 0}}},
-      {"work_precision/base", "signorini",
-       {{"K", 0}, {"F", 1}, {"B", 1}, {"g", 1}, {"factor(K)", 1}, {"S", 1}, {"contact QP (active-set+proximal)", 1},
-        {"M", 0}, {"B^s", 0}, {"factor(K+M)", 0}, {"S_G", 0}, {"G (interpolation norm)", 0}}},
-      {"work_precision/base", "friction",
+      {"work_precision/base",
+       "infsup",
+       {{"S^p(T_h)", 1},
+        {"K", 0},
+        {"M", 0},
+        {"B", 1},
+        {"factor(K+M)", 1},
+        {"S_G", 1},
+        {"G (interpolation norm)", 1},
+        {"F", 0},
+        {"g", 0},
+        {"B^s", 0},
+        {"factor(K)", 0},
+        {"S", 0},
+        {"contact QP (active-set+proximal)", 0}}},
+      {"work_precision/base",
+       "signorini",
+       {{"K", 0},
+        {"F", 1},
+        {"B", 1},
+        {"g", 1},
+        {"factor(K)", 1},
+        {"S", 1},
+        {"contact QP (active-set+proximal)", 1},
+        {"M", 0},
+        {"B^s", 0},
+        {"factor(K+M)", 0},
+        {"S_G", 0},
+        {"G (interpolation norm)", 0}}},
+      {"work_precision/base",
+       "friction",
        {{"K", 0}, {"F", 1}, {"B^s", 1}, {"factor(K)", 1}, {"S", 1}, {"B", 0}, {"g", 0}, {"M", 0}, {"S_G", 0}}},
-      {"work_precision/base", "signorini,friction_s",
-       {{"K", 0}, {"F", 1}, {"B", 1}, {"g", 1}, {"factor(K)", 1}, {"S", 1}, {"contact QP (active-set+proximal)", 2},
-        {"B^s", 0}, {"M", 0}}},
-      {"work_precision/base", "signorini,friction,friction_s,infsup",
-       {{"K", 0}, {"F", 1}, {"B", 1}, {"B^s", 1}, {"g", 1}, {"factor(K)", 1}, {"S", 2}, {"M", 0},
-        {"factor(K+M)", 1}, {"S_G", 1}, {"G (interpolation norm)", 1}}},
-      {"paper/figure4_friction", "",  // [infsup] problem = "friction": α of (22) reuses B^s
-       {{"K", 0}, {"F", 1}, {"B^s", 1}, {"factor(K)", 1}, {"S", 1}, {"M", 0}, {"factor(K+M)", 1}, {"S_G", 1},
-        {"G (interpolation norm)", 1}, {"B", 0}, {"g", 0}}},
+      {"work_precision/base",
+       "signorini,friction_s",
+       {{"K", 0},
+        {"F", 1},
+        {"B", 1},
+        {"g", 1},
+        {"factor(K)", 1},
+        {"S", 1},
+        {"contact QP (active-set+proximal)", 2},
+        {"B^s", 0},
+        {"M", 0}}},
+      {"work_precision/base",
+       "signorini,friction,friction_s,infsup",
+       {{"K", 0},
+        {"F", 1},
+        {"B", 1},
+        {"B^s", 1},
+        {"g", 1},
+        {"factor(K)", 1},
+        {"S", 2},
+        {"M", 0},
+        {"factor(K+M)", 1},
+        {"S_G", 1},
+        {"G (interpolation norm)", 1}}},
+      {"paper/figure4_friction",
+       "",  // [infsup] problem = "friction": α of (22) reuses B^s
+       {{"K", 0},
+        {"F", 1},
+        {"B^s", 1},
+        {"factor(K)", 1},
+        {"S", 1},
+        {"M", 0},
+        {"factor(K+M)", 1},
+        {"S_G", 1},
+        {"G (interpolation norm)", 1},
+        {"B", 0},
+        {"g", 0}}},
   };
   for (const auto& c : cases) {
     const auto dir = scratch("operators");
@@ -449,7 +509,8 @@ TEST(Cli, SolveBuildsOnlyTheOperatorsItsEffectsNeedAndNothingTwice) {
       for (auto at = json.find(needle); at != std::string::npos; at = json.find(needle, at + 1)) ++n;
       return n;
     };
-    for (const auto& [name, times] : c.count) EXPECT_EQ(count(name), times) << c.scene << " " << c.effects << ": " << name;
+    for (const auto& [name, times] : c.count)
+      EXPECT_EQ(count(name), times) << c.scene << " " << c.effects << ": " << name;
   }
 }
 
@@ -476,7 +537,7 @@ TEST(Cli, ConvergenceEffectWritesOneRowPerLevelAndProblem) {
   }
   ASSERT_EQ(errors.size(), 2u);
   for (const auto& [problem, e] : errors) {
-    ASSERT_EQ(e.size(), 4u) << problem;  // the scene's mesh and three refinements (the default)
+    ASSERT_EQ(e.size(), 4u) << problem;   // the scene's mesh and three refinements (the default)
     EXPECT_EQ(e.back(), 0.0) << problem;  // the finest level is the reference
     EXPECT_GT(e[0], e[1]) << problem;
     EXPECT_GT(e[0], 0.0) << problem;

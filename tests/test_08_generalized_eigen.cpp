@@ -2,8 +2,6 @@
 // options -infsup_*) against the dense Eigen solver, on pencils with known spectra, singular and
 // nearly singular S, other EPS types selected at run time, and broken input.
 #include <gtest/gtest.h>
-
-#include "slepc_test_environment.hpp"
 #include <slepcsys.h>
 
 #include <Eigen/Cholesky>
@@ -15,6 +13,7 @@
 
 #include "core/error.hpp"
 #include "infsup/generalized_eigen.hpp"
+#include "slepc_test_environment.hpp"
 
 using namespace hpcontact;
 using infsup::SmallestEigenpair;
@@ -95,8 +94,7 @@ void expect_well_formed(const SmallestEigenpair& pair, const Eigen::MatrixXd& g)
   EXPECT_LE(pair.eigenvalue, pair.largest_eigenvalue);
 }
 
-void expect_agree(const SmallestEigenpair& slepc, const SmallestEigenpair& dense,
-                  const Eigen::MatrixXd& g) {
+void expect_agree(const SmallestEigenpair& slepc, const SmallestEigenpair& dense, const Eigen::MatrixXd& g) {
   SCOPED_TRACE(slepc.method);
   EXPECT_NEAR(slepc.eigenvalue, dense.eigenvalue, 1e-8 * dense.eigenvalue);
   EXPECT_NEAR(slepc.largest_eigenvalue, dense.largest_eigenvalue, 1e-6 * dense.largest_eigenvalue);
@@ -133,8 +131,7 @@ TEST(GeneralizedEigen, RandomSpdPencilSlepcAgreesWithDense) {
 TEST(GeneralizedEigen, KnownSpectrumIsFoundByBothPaths) {
   const Eigen::VectorXd values = spectrum(50, 0.3);
   const auto p = pencil_with_spectrum(values, 3);
-  for (const auto& pair :
-       {infsup::smallest_eigenpair_dense(p.s, p.g), infsup::smallest_eigenpair_slepc(p.s, p.g)}) {
+  for (const auto& pair : {infsup::smallest_eigenpair_dense(p.s, p.g), infsup::smallest_eigenpair_slepc(p.s, p.g)}) {
     SCOPED_TRACE(pair.method);
     expect_well_formed(pair, p.g);
     EXPECT_NEAR(pair.eigenvalue, 0.3, 1e-12);
@@ -209,8 +206,7 @@ TEST(GeneralizedEigen, RunTimeOptionsSelectLapackAndArpack) {
     const auto slepc_singular = infsup::smallest_eigenpair_slepc(singular.s, singular.g);
     expect_well_formed(slepc_singular, singular.g);
     EXPECT_LE(slepc_singular.eigenvalue, infsup::kRoundOffZero * slepc_singular.largest_eigenvalue);
-    EXPECT_NEAR(g_cosine(slepc_singular.eigenvector, dense_singular.eigenvector, singular.g), 1.0,
-                1e-8);
+    EXPECT_NEAR(g_cosine(slepc_singular.eigenvector, dense_singular.eigenvector, singular.g), 1.0, 1e-8);
   }
   // Cleared again: back to the default.
   const auto slepc = infsup::smallest_eigenpair_slepc(s, g);
@@ -248,10 +244,8 @@ TEST(GeneralizedEigen, OptionsPrefixIsHonoured) {
   const Eigen::MatrixXd s = random_spd(30, 11);
   const Eigen::MatrixXd g = random_spd(30, 12);
   const ScopedPetscOption option("-other_eps_type", "lapack");
-  EXPECT_NE(infsup::smallest_eigenpair_slepc(s, g, "other_").method.find("eps lapack"),
-            std::string::npos);
-  EXPECT_NE(infsup::smallest_eigenpair_slepc(s, g).method.find("eps krylovschur"),
-            std::string::npos);
+  EXPECT_NE(infsup::smallest_eigenpair_slepc(s, g, "other_").method.find("eps lapack"), std::string::npos);
+  EXPECT_NE(infsup::smallest_eigenpair_slepc(s, g).method.find("eps krylovschur"), std::string::npos);
 }
 
 TEST(GeneralizedEigen, TinyPencils) {
@@ -269,8 +263,7 @@ TEST(GeneralizedEigen, TinyPencils) {
 TEST(GeneralizedEigen, ZeroSHasZeroEigenvalue) {
   const Eigen::MatrixXd s = Eigen::MatrixXd::Zero(10, 10);
   const Eigen::MatrixXd g = random_spd(10, 15);
-  for (const auto& pair :
-       {infsup::smallest_eigenpair_dense(s, g), infsup::smallest_eigenpair_slepc(s, g)}) {
+  for (const auto& pair : {infsup::smallest_eigenpair_dense(s, g), infsup::smallest_eigenpair_slepc(s, g)}) {
     SCOPED_TRACE(pair.method);
     EXPECT_EQ(pair.eigenvalue, 0.0);
     EXPECT_NEAR(pair.eigenvector.dot(g * pair.eigenvector), 1.0, 1e-12);
@@ -301,9 +294,8 @@ TEST(GeneralizedEigen, NonDefiniteGIsANumericalError) {
   Eigen::MatrixXd singular = Eigen::MatrixXd::Identity(n, n);
   singular(n - 1, n - 1) = 0.0;
   for (const Eigen::MatrixXd& g : {indefinite, singular}) {
-    for (const auto& message :
-         {numerical_error_of([&] { infsup::smallest_eigenpair_dense(s, g); }),
-          numerical_error_of([&] { infsup::smallest_eigenpair_slepc(s, g); })})
+    for (const auto& message : {numerical_error_of([&] { infsup::smallest_eigenpair_dense(s, g); }),
+                                numerical_error_of([&] { infsup::smallest_eigenpair_slepc(s, g); })})
       EXPECT_NE(message.find("G (20x20) is not positive definite"), std::string::npos) << message;
   }
 }
@@ -312,15 +304,12 @@ TEST(GeneralizedEigen, NonSymmetricOrNonFiniteInputIsANumericalError) {
   Eigen::MatrixXd s = random_spd(10, 20);
   const Eigen::MatrixXd g = random_spd(10, 21);
   s(0, 1) += 1e-3;
-  const std::string asymmetric =
-      numerical_error_of([&] { infsup::smallest_eigenpair_slepc(s, g); });
+  const std::string asymmetric = numerical_error_of([&] { infsup::smallest_eigenpair_slepc(s, g); });
   EXPECT_NE(asymmetric.find("S is not symmetric"), std::string::npos) << asymmetric;
   s(0, 1) = s(1, 0) = std::nan("");
-  const std::string not_finite =
-      numerical_error_of([&] { infsup::smallest_eigenpair_dense(s, g); });
+  const std::string not_finite = numerical_error_of([&] { infsup::smallest_eigenpair_dense(s, g); });
   EXPECT_NE(not_finite.find("S has non-finite entries"), std::string::npos) << not_finite;
-  EXPECT_THROW(infsup::smallest_eigenpair_dense(Eigen::MatrixXd::Identity(3, 3), g),
-               std::logic_error);
+  EXPECT_THROW(infsup::smallest_eigenpair_dense(Eigen::MatrixXd::Identity(3, 3), g), std::logic_error);
 }
 
 TEST(GeneralizedEigen, NoConvergenceIsANumericalErrorWithEstimates) {
@@ -329,9 +318,7 @@ TEST(GeneralizedEigen, NoConvergenceIsANumericalErrorWithEstimates) {
   const ScopedPetscOption max_it("-infsup_eps_max_it", "1");
   const ScopedPetscOption ncv("-infsup_eps_ncv", "3");
   const std::string message = numerical_error_of([&] { infsup::smallest_eigenpair_slepc(s, g); });
-  EXPECT_NE(message.find("converged 0 of 1 eigenpairs after 1 of at most 1 iterations"),
-            std::string::npos)
-      << message;
+  EXPECT_NE(message.find("converged 0 of 1 eigenpairs after 1 of at most 1 iterations"), std::string::npos) << message;
   EXPECT_NE(message.find("error estimate"), std::string::npos) << message;
 }
 

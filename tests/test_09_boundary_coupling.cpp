@@ -76,8 +76,7 @@ struct Integrand {
 double integrand(double x, void* data) {
   const auto& d = *static_cast<Integrand*>(data);
   const double s = x + 1.0;
-  double value = fe::evaluate_at(*d.space, *d.u, *d.locator, {x, -1.0}).value *
-                 d.multipliers->evaluate(*d.mu, s);
+  double value = fe::evaluate_at(*d.space, *d.u, *d.locator, {x, -1.0}).value * d.multipliers->evaluate(*d.mu, s);
   if (d.weighted) value *= (1.0 - x) * (1.0 - x);
   return value;
 }
@@ -88,8 +87,7 @@ double reference_pairing(Integrand data, int n, const mesh::BoundaryMesh& bounda
   for (int i = 0; i <= n; ++i) points.push_back(-1.0 + 2.0 * i / n);
   for (double s : boundary.nodes()) points.push_back(s - 1.0);
   std::sort(points.begin(), points.end());
-  points.erase(std::unique(points.begin(), points.end(),
-                           [](double a, double b) { return std::abs(a - b) < 1e-13; }),
+  points.erase(std::unique(points.begin(), points.end(), [](double a, double b) { return std::abs(a - b) < 1e-13; }),
                points.end());
   gsl_integration_workspace* workspace = gsl_integration_workspace_alloc(1000);
   gsl_function f{integrand, &data};
@@ -137,8 +135,8 @@ TEST(Coupling, MultiplierLoadIntegratesTheObstacle) {
   const mesh::ContactBoundary contact(mesh);
   const auto boundary = mesh::BoundaryMesh::uniform(2.0, 3);
   const space::MultiplierSpace multipliers(boundary, 2);
-  const auto g = assembly::assemble_multiplier_load(contact, multipliers,
-                                                    [](const mesh::Point& x) { return -x.x() * x.x(); });
+  const auto g =
+      assembly::assemble_multiplier_load(contact, multipliers, [](const mesh::Point& x) { return -x.x() * x.x(); });
   // Σ over segments of the P_0 coefficient integrals = ∫_{-1}^{1} -x² dx = -2/3.
   double total = 0.0;
   for (int k = 0; k < 3; ++k) total += g(multipliers.first_dof(k));

@@ -92,8 +92,8 @@ TEST(AlphaAccuracy, TheTwoRealizationsAgree) {
           const Point c{p, pc, n, n / divisor};
           const auto interpolation = alpha(c, infsup::GramNorm::interpolation);
           const auto extension = alpha(c, infsup::GramNorm::extension);
-          const std::string label = "p " + std::to_string(p) + " pC " + std::to_string(pc) + " n " +
-                                    std::to_string(n) + " h/H 1/" + std::to_string(divisor);
+          const std::string label = "p " + std::to_string(p) + " pC " + std::to_string(pc) + " n " + std::to_string(n) +
+                                    " h/H 1/" + std::to_string(divisor);
           EXPECT_TRUE(interpolation.alpha_converged && extension.alpha_converged) << label;
           EXPECT_LT(interpolation.alpha_error, 1e-7 * interpolation.alpha) << label;
           EXPECT_LT(extension.alpha_error, 1e-4 * extension.alpha) << label;
@@ -131,7 +131,8 @@ TEST(AlphaAccuracy, AlphaErrorBoundsTheChangeToTheNextReference) {
       }
       for (std::size_t k = 0; k + 1 < on_level.size(); ++k) {
         const double change = on_level[k].alpha - on_level[k + 1].alpha;
-        const std::string label = infsup::to_string(norm) + " pC " + std::to_string(pc) + " level " + std::to_string(k + 1);
+        const std::string label =
+            infsup::to_string(norm) + " pC " + std::to_string(pc) + " level " + std::to_string(k + 1);
         if (norm == infsup::GramNorm::extension) {
           EXPECT_GE(change, -1e-13) << label;
         }

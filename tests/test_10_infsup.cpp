@@ -3,8 +3,6 @@
 // reference realizations, the friction variant (22) with supp s ≠ Γ_C, mode sampling, and
 // stability sweeps over the levels of a base scene.
 #include <gtest/gtest.h>
-
-#include "slepc_test_environment.hpp"
 #include <slepcsys.h>
 
 #include <cmath>
@@ -15,11 +13,12 @@
 #include <sstream>
 
 #include "core/error.hpp"
-#include "mesh/contact_boundary.hpp"
-#include "norms/h_minus_half_gram.hpp"
-#include "space/multiplier_space.hpp"
 #include "infsup/infsup_analysis.hpp"
+#include "mesh/contact_boundary.hpp"
 #include "mesh/rectangle_mesh.hpp"
+#include "norms/h_minus_half_gram.hpp"
+#include "slepc_test_environment.hpp"
+#include "space/multiplier_space.hpp"
 #include "studies/stability_sweep.hpp"
 
 using namespace hpcontact;
@@ -33,8 +32,7 @@ struct Configuration {
   assembly::BoundaryFunction s = [](const mesh::Point& x) { return (1 - x.x()) * (1 - x.x()); };
 };
 
-infsup::InfSupResult alpha(const Configuration& c,
-                           infsup::EigenBackend backend = infsup::EigenBackend::dense) {
+infsup::InfSupResult alpha(const Configuration& c, infsup::EigenBackend backend = infsup::EigenBackend::dense) {
   const auto mesh = mesh::make_paper_square_mesh(c.n);
   const auto boundary = mesh::BoundaryMesh::uniform(2.0, c.m);
   infsup::InfSupSetup setup;
@@ -54,9 +52,13 @@ infsup::InfSupResult alpha(const Configuration& c,
 // Halving h halves α when the pairing is unstable (rate 1), and leaves α nearly unchanged when
 // it is stable. The same for p = 3 with p_C = 2 (h/H = 1 unstable, 1/2 stable) and p_C = 1.
 TEST(InfSup, PaperPairingsDecayOrStayBounded) {
-  struct Case { int p, pc; double ratio; bool stable; };
-  for (const auto& c : {Case{1, 0, 1.0, false}, Case{1, 0, 0.5, true}, Case{3, 2, 1.0, false},
-                        Case{3, 2, 0.5, true}, Case{3, 1, 1.0, true}, Case{2, 1, 1.0, false}}) {
+  struct Case {
+    int p, pc;
+    double ratio;
+    bool stable;
+  };
+  for (const auto& c : {Case{1, 0, 1.0, false}, Case{1, 0, 0.5, true}, Case{3, 2, 1.0, false}, Case{3, 2, 0.5, true},
+                        Case{3, 1, 1.0, true}, Case{2, 1, 1.0, false}}) {
     const double coarse = alpha({c.p, c.pc, 8, static_cast<int>(8 * c.ratio)}).alpha;
     const double fine = alpha({c.p, c.pc, 16, static_cast<int>(16 * c.ratio)}).alpha;
     if (c.stable) {
@@ -69,8 +71,8 @@ TEST(InfSup, PaperPairingsDecayOrStayBounded) {
 }
 
 TEST(InfSup, SlepcAgreesWithDensePath) {
-  for (const Configuration& c : {Configuration{1, 0, 8, 8}, Configuration{1, 0, 8, 4},
-                                 Configuration{3, 2, 8, 8}, Configuration{4, 3, 6, 12}}) {
+  for (const Configuration& c :
+       {Configuration{1, 0, 8, 8}, Configuration{1, 0, 8, 4}, Configuration{3, 2, 8, 8}, Configuration{4, 3, 6, 12}}) {
     const auto dense = alpha(c, infsup::EigenBackend::dense);
     const auto slepc = alpha(c, infsup::EigenBackend::slepc);
     EXPECT_NEAR(slepc.lambda_min, dense.lambda_min, 1e-8 * dense.lambda_min + 1e-12 * dense.lambda_max)
@@ -180,7 +182,8 @@ std::vector<std::map<std::string, std::string>> read_rows(const std::filesystem:
   while (std::getline(in, line)) {
     std::stringstream cells(line);
     std::map<std::string, std::string> row;
-    for (std::size_t k = 0; k < header.size() && std::getline(cells, row[header[k]], ','); ++k) {}
+    for (std::size_t k = 0; k < header.size() && std::getline(cells, row[header[k]], ','); ++k) {
+    }
     rows.push_back(row);
   }
   return rows;
@@ -258,7 +261,7 @@ levels = { "domain.refinements" = "0..2" }
   ASSERT_EQ(rows.size(), 3u);
   for (int level = 0; level < 3; ++level) {
     const auto& row = rows[level];
-    EXPECT_EQ(row.at("p"), "2");   // the smallest p_T of the rule
+    EXPECT_EQ(row.at("p"), "2");  // the smallest p_T of the rule
     EXPECT_EQ(row.at("pC"), "1");
     EXPECT_EQ(std::stoi(row.at("n")), 4 << level);
     EXPECT_EQ(std::stoi(row.at("m")), 2 << level);
@@ -276,7 +279,9 @@ TEST(Sweep, BadInputNamesTheKeyAndTheLevel) {
   auto contains = [](const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; };
   std::string error = sweep_error(dir, "[sweep]\nscene = \"missing.toml\"\n");
   EXPECT_TRUE(contains(error, "sweep.scene")) << error;
-  error = sweep_error(dir, "[sweep]\nscene = \"square.toml\"\nlevels = { \"domain.n_x\" = [4, 6], \"domain.n_y\" = [4, 6] }\nratio = \"1/4\"\n");
+  error = sweep_error(dir,
+                      "[sweep]\nscene = \"square.toml\"\nlevels = { \"domain.n_x\" = [4, 6], \"domain.n_y\" = [4, 6] "
+                      "}\nratio = \"1/4\"\n");
   EXPECT_TRUE(contains(error, "level 2")) << error;
   EXPECT_TRUE(contains(error, "contact_mesh.ratio")) << error;
   error = sweep_error(dir, "[sweep]\nscene = \"no_s.toml\"\nproblem = \"friction\"\n");

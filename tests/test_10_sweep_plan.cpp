@@ -84,8 +84,10 @@ TEST(SweepPlan, PointsAndGroups) {
 // The schedule: one rank gets everything; two ranks split two equal levels one each, and split one
 // level's equal groups when nothing is shared; the estimate returned is the largest load.
 TEST(SweepPlan, ScheduleBalancesTheRanks) {
-  SweepPlan equal_levels{{{0, 1, 0, true, false, 5.0}, {1, 2, 0, true, false, 5.0},
-                          {2, 3, 1, true, false, 5.0}, {3, 4, 1, true, false, 5.0}},
+  SweepPlan equal_levels{{{0, 1, 0, true, false, 5.0},
+                          {1, 2, 0, true, false, 5.0},
+                          {2, 3, 1, true, false, 5.0},
+                          {3, 4, 1, true, false, 5.0}},
                          {0.0, 0.0}};
   SweepPlan serial = equal_levels;
   EXPECT_DOUBLE_EQ(studies::schedule_sweep_groups(serial, 1), 20.0);
@@ -94,8 +96,11 @@ TEST(SweepPlan, ScheduleBalancesTheRanks) {
   EXPECT_DOUBLE_EQ(load_of(equal_levels, 0), 10.0);
   EXPECT_DOUBLE_EQ(load_of(equal_levels, 1), 10.0);
 
-  SweepPlan one_level{{{0, 1, 0, true, false, 4.0}, {1, 2, 0, true, false, 4.0},
-                       {2, 3, 0, true, false, 4.0}, {3, 4, 0, true, false, 4.0}, {4, 5, 0, false, false, 100.0}},
+  SweepPlan one_level{{{0, 1, 0, true, false, 4.0},
+                       {1, 2, 0, true, false, 4.0},
+                       {2, 3, 0, true, false, 4.0},
+                       {3, 4, 0, true, false, 4.0},
+                       {4, 5, 0, false, false, 100.0}},
                       {0.0}};
   EXPECT_DOUBLE_EQ(studies::schedule_sweep_groups(one_level, 2), 8.0);
   EXPECT_DOUBLE_EQ(load_of(one_level, 0), 8.0);
@@ -103,9 +108,9 @@ TEST(SweepPlan, ScheduleBalancesTheRanks) {
 
   // Two levels whose shared work dominates: splitting a level would repeat it, so each level
   // stays whole on its own rank (52 each, where splitting groups would take 102).
-  SweepPlan shared{{{0, 1, 0, true, true, 1.0}, {1, 2, 0, true, true, 1.0},
-                    {2, 3, 1, true, true, 1.0}, {3, 4, 1, true, true, 1.0}},
-                   {50.0, 50.0}};
+  SweepPlan shared{
+      {{0, 1, 0, true, true, 1.0}, {1, 2, 0, true, true, 1.0}, {2, 3, 1, true, true, 1.0}, {3, 4, 1, true, true, 1.0}},
+      {50.0, 50.0}};
   EXPECT_DOUBLE_EQ(studies::schedule_sweep_groups(shared, 2), 52.0);
   EXPECT_EQ(shared.groups[0].owner, shared.groups[1].owner);
   EXPECT_EQ(shared.groups[2].owner, shared.groups[3].owner);

@@ -4,18 +4,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <cstdio>
 
 #include "core/error.hpp"
-#include "scene/scene_mesh.hpp"
-#include "scene/scene_reader.hpp"
-#include "scene/scene_keys.hpp"
-#include "scene/scene_variants.hpp"
 #include "io/toml_reader.hpp"
 #include "mesh/contact_boundary.hpp"
+#include "scene/scene_keys.hpp"
+#include "scene/scene_mesh.hpp"
+#include "scene/scene_reader.hpp"
+#include "scene/scene_variants.hpp"
 
 using namespace hpcontact;
 
@@ -110,7 +110,8 @@ TEST(Scene, EachClassOfBadInputNamesTheKey) {
 }
 
 TEST(Scene, DegreeRulesGiveDistributions) {
-  const auto scene = scene::read_scene(write_scene("rules", with("p = 2\npC = 1", "p = \"x < 0 ? 2 : 4\"\npC = \"x < 0 ? 0 : 1\"")));
+  const auto scene =
+      scene::read_scene(write_scene("rules", with("p = 2\npC = 1", "p = \"x < 0 ? 2 : 4\"\npC = \"x < 0 ? 0 : 1\"")));
   const auto mesh = scene::build_scene_mesh(scene);
   const auto degrees = scene::scene_cell_degrees(scene, mesh);
   int twos = 0, fours = 0;
@@ -146,7 +147,8 @@ TEST(Scene, GradedRectangleAndRefinementsKeepTheRatio) {
   const auto refined = scene::read_scene(write_scene("refined_m", with("n_y = 4", "n_y = 4\nrefinements = 2")));
   const auto refined_mesh = scene::build_scene_mesh(refined);
   EXPECT_EQ(scene::build_scene_boundary_mesh(refined, mesh::ContactBoundary(refined_mesh)).n_segments(), 8);
-  EXPECT_NE(error_of(with("n_y = 4", "n_y = 4\ngrading_x = [3.0]\ngrading_layers = 1")).find("grading"), std::string::npos);
+  EXPECT_NE(error_of(with("n_y = 4", "n_y = 4\ngrading_x = [3.0]\ngrading_layers = 1")).find("grading"),
+            std::string::npos);
 }
 
 // Grading points: local geometric layers around a point of Γ_C, which stays a breakpoint of
@@ -162,13 +164,18 @@ TEST(Scene, GradingPointsStayBreakpointsOfTheContactMesh) {
   ASSERT_EQ((at_point - arcs.begin()) % 2, 1) << "the test needs an odd number of edges before the point";
   const auto boundary = scene::build_scene_boundary_mesh(scene, contact);
   bool breakpoint = false;
-  for (int k = 0; k < boundary.n_segments(); ++k) breakpoint = breakpoint || std::abs(boundary.segment_end(k) - 1.3) < 1e-14;
+  for (int k = 0; k < boundary.n_segments(); ++k)
+    breakpoint = breakpoint || std::abs(boundary.segment_end(k) - 1.3) < 1e-14;
   EXPECT_TRUE(breakpoint);
-  EXPECT_NE(error_of(with("n_y = 4", "n_y = 4\ngrading_points = [[1]]")).find("domain.grading_points"), std::string::npos);
+  EXPECT_NE(error_of(with("n_y = 4", "n_y = 4\ngrading_points = [[1]]")).find("domain.grading_points"),
+            std::string::npos);
   for (const char* outside : {"[[3, -1]]", "[[-0.99, -1]]"})  // outside; snapping leaves a thin cell
-    EXPECT_NE(error_of(with("n_y = 4", std::string("n_y = 4\ngrading_points = ") + outside)).find("domain.grading_points"),
-              std::string::npos) << outside;
-  EXPECT_NE(error_of(with("n_y = 4", "n_y = 4\ngrading_points = [[0.0, -1], [0.5, -1]]\ngrading_layers = 1")).find("share a cell"),
+    EXPECT_NE(
+        error_of(with("n_y = 4", std::string("n_y = 4\ngrading_points = ") + outside)).find("domain.grading_points"),
+        std::string::npos)
+        << outside;
+  EXPECT_NE(error_of(with("n_y = 4", "n_y = 4\ngrading_points = [[0.0, -1], [0.5, -1]]\ngrading_layers = 1"))
+                .find("share a cell"),
             std::string::npos);
 }
 
@@ -233,12 +240,14 @@ TEST(SceneKeys, DeclaredRangesAreCheckedAndNameTheOrigin) {
   int checked = 0;
   for (const auto& key : scene::scene_keys()) {
     double low = 0, high = 0;
-    if ((key.type != "integer" && key.type != "number") || std::sscanf(key.allowed.c_str(), "[%lf, %lf]", &low, &high) != 2)
+    if ((key.type != "integer" && key.type != "number") ||
+        std::sscanf(key.allowed.c_str(), "[%lf, %lf]", &low, &high) != 2)
       continue;
     scene::SceneOverride beyond{key.dotted(), 2 * high + 1, "test override"};
     if (key.type == "integer") beyond.value = static_cast<long long>(2 * high + 1);
     const std::string message = override_error(beyond);
-    EXPECT_NE(message.find("test override: key '" + key.dotted() + "'"), std::string::npos) << key.dotted() << ": " << message;
+    EXPECT_NE(message.find("test override: key '" + key.dotted() + "'"), std::string::npos)
+        << key.dotted() << ": " << message;
     ++checked;
   }
   EXPECT_GE(checked, 10);
@@ -259,9 +268,8 @@ m = 3
 p = "1 + (x > 0)"
 pC = 0
 )toml";
-  const auto scene = scene::parse_scene(base, "base.toml",
-                                        {{"contact_mesh.ratio", std::string("1/2"), "--ratio"},
-                                         {"discretization.p", 4LL, "--p"}});
+  const auto scene = scene::parse_scene(
+      base, "base.toml", {{"contact_mesh.ratio", std::string("1/2"), "--ratio"}, {"discretization.p", 4LL, "--p"}});
   ASSERT_TRUE(scene.ratio.has_value());
   EXPECT_EQ(scene.ratio->text, "1/2");
   EXPECT_EQ(scene.p.value, 4);
@@ -269,12 +277,14 @@ pC = 0
   EXPECT_EQ(scene.where("contact_mesh.ratio"), "--ratio");
   EXPECT_EQ(scene.where("discretization.pC"), "base.toml");
   EXPECT_NE(override_error({"discretization.q", 1LL, "--q"}).find("--q: key 'discretization.q'"), std::string::npos);
-  EXPECT_NE(override_error({"contact_mesh.ratio", std::string("0"), "--ratio"}).find("--ratio: key 'contact_mesh.ratio'"),
-            std::string::npos);
+  EXPECT_NE(
+      override_error({"contact_mesh.ratio", std::string("0"), "--ratio"}).find("--ratio: key 'contact_mesh.ratio'"),
+      std::string::npos);
   EXPECT_NE(override_error({"infsup.norm", std::string("h1"), "--norm"}).find("--norm: key 'infsup.norm'"),
             std::string::npos);
   const std::string gmsh = std::string(R"([domain]
-mesh = ")") + HPCONTACT_TEST_DATA + R"(/square_2x2.msh"
+mesh = ")") + HPCONTACT_TEST_DATA +
+                           R"(/square_2x2.msh"
 [boundary]
 contact_groups = ["contact"]
 [contact_mesh]

@@ -18,8 +18,8 @@ double objective(const Eigen::MatrixXd& s, const Eigen::VectorXd& d, const Eigen
 }
 
 // Accelerated projected gradient (FISTA), slow but independent of the active-set logic.
-Eigen::VectorXd projected_gradient(const Eigen::MatrixXd& s, const Eigen::VectorXd& d,
-                                   const Eigen::VectorXd& lo, const Eigen::VectorXd& hi) {
+Eigen::VectorXd projected_gradient(const Eigen::MatrixXd& s, const Eigen::VectorXd& d, const Eigen::VectorXd& lo,
+                                   const Eigen::VectorXd& hi) {
   const double lipschitz = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(s).eigenvalues().maxCoeff();
   Eigen::VectorXd x = Eigen::VectorXd::Zero(d.size()).cwiseMax(lo).cwiseMin(hi), y = x;
   double t = 1.0;
@@ -46,8 +46,8 @@ Problem random_problem(int n, int rank, bool box, unsigned seed) {
   Problem p{b.transpose() * b / n, Eigen::VectorXd(n), Eigen::VectorXd(n), Eigen::VectorXd(n)};
   for (auto& v : p.d) v = normal(generator);
   p.hi.setZero();
-  p.lo = box ? Eigen::VectorXd::Constant(n, -1.0)
-             : Eigen::VectorXd::Constant(n, -std::numeric_limits<double>::infinity());
+  p.lo =
+      box ? Eigen::VectorXd::Constant(n, -1.0) : Eigen::VectorXd::Constant(n, -std::numeric_limits<double>::infinity());
   return p;
 }
 
@@ -92,7 +92,6 @@ TEST(BoxQp, ScalingTheDataScalesTheSolutionWithTheSameSteps) {
 
 TEST(BoxQp, EmptyFeasibleSetIsReported) {
   const Eigen::MatrixXd s = Eigen::MatrixXd::Identity(2, 2);
-  EXPECT_THROW(contact::solve_box_qp(s, Eigen::VectorXd::Ones(2), Eigen::VectorXd::Ones(2),
-                                     Eigen::VectorXd::Zero(2)),
+  EXPECT_THROW(contact::solve_box_qp(s, Eigen::VectorXd::Ones(2), Eigen::VectorXd::Ones(2), Eigen::VectorXd::Zero(2)),
                NumericalError);
 }

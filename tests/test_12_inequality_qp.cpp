@@ -93,9 +93,12 @@ Problem random_problem(int n, int rank, int rows, bool two_sided, unsigned seed)
 }  // namespace
 
 TEST(InequalityQp, MatchesExhaustiveActiveSetEnumeration) {
-  struct Case { int n, rank, rows; bool two_sided; };
-  for (const Case& k : {Case{3, 3, 6, false}, Case{3, 3, 5, true}, Case{4, 2, 6, true},
-                        Case{4, 4, 8, false}, Case{2, 1, 6, true}}) {
+  struct Case {
+    int n, rank, rows;
+    bool two_sided;
+  };
+  for (const Case& k :
+       {Case{3, 3, 6, false}, Case{3, 3, 5, true}, Case{4, 2, 6, true}, Case{4, 4, 8, false}, Case{2, 1, 6, true}}) {
     for (unsigned seed = 1; seed <= 4; ++seed) {
       const auto p = random_problem(k.n, k.rank, k.rows, k.two_sided, seed * 31 + k.n);
       const auto result = contact::solve_inequality_qp(p.s, p.d, p.c, p.lo, p.hi);

@@ -1,23 +1,22 @@
 // Stage 13, contact problems (9), (13), (15) on the paper's §7 data (f = -1, g = -x², s = (1-x)²):
 // KKT conditions at the constraint points (feasibility, sign/box of λ, complementarity) for
 // stable and unstable pairings and for higher p_C (Remark 3's Chebyshev–Lobatto points).
-#include <gtest/gtest.h>
-
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <optional>
 
+#include "basis/quadrature.hpp"
 #include "contact/contact_problem.hpp"
 #include "contact_fixture.hpp"
 #include "core/error.hpp"
-#include "basis/quadrature.hpp"
 #include "fe/error_norms.hpp"
 #include "fe/fe_function.hpp"
 #include "infsup/infsup_analysis.hpp"
 #include "manufactured_solution.hpp"
-#include "space/multiplier_space.hpp"
 #include "mesh/rectangle_mesh.hpp"
+#include "space/multiplier_space.hpp"
 
 using namespace hpcontact;
 
@@ -41,8 +40,8 @@ double pointwise_violation(const contact::ContactSolution& solution, int m, int 
   for (int k = 0; k < m; ++k)
     for (int i = 0; i <= 200; ++i) {
       const double tau = -1.0 + 2.0 * i / 200.0;
-      const double lambda = multipliers.basis_values(k, tau).dot(
-          solution.lambda_legendre.segment(multipliers.first_dof(k), pc + 1));
+      const double lambda =
+          multipliers.basis_values(k, tau).dot(solution.lambda_legendre.segment(multipliers.first_dof(k), pc + 1));
       const double x = -1.0 + 2.0 * (k + 0.5 * (tau + 1.0)) / m;
       worst = std::max(worst, signorini ? lambda : std::abs(lambda) - (1.0 - x) * (1.0 - x));
     }
@@ -57,7 +56,11 @@ double pointwise_violation(const contact::ContactSolution& solution, int m, int 
 // p_C = 2 falls 1.5e-1, 1.4e-2, 3.8e-3, 5.9e-4 for |𝒞| = 3, 6, 12, 24 (energy −0.80189 …
 // −0.80284); max |λ_H| − s for (15), p_C = 1: 1.6e-2, 3.9e-3, 7.7e-4, 1.7e-4; 10–15 iterations.
 TEST(Contact, MoreConstraintPointsKeepKktAndTightenThePointwiseCondition) {
-  struct Case { contact::ContactProblem problem; int p, pc; std::vector<int> q; };
+  struct Case {
+    contact::ContactProblem problem;
+    int p, pc;
+    std::vector<int> q;
+  };
   for (const auto& c : {Case{contact::ContactProblem::signorini, 3, 2, {3, 6, 12, 24}},
                         Case{contact::ContactProblem::signorini, 4, 3, {4, 8, 16}},
                         Case{contact::ContactProblem::friction_s, 2, 1, {2, 4, 8, 16}},
@@ -109,7 +112,8 @@ TEST(Contact, EnergiesAreMonotoneUnderNestedRefinement) {
     // −0.80265, −0.80318, −0.80346 (n = 128); for p = 1: −0.96046, −0.77398, …, −0.80280.
     std::vector<double> energies;
     for (int n : {8, 16, 32, 64}) energies.push_back(solve(contact::ContactProblem::signorini, n, p, pc, n / 2).energy);
-    for (std::size_t i = 1; i < energies.size(); ++i) EXPECT_LT(energies[i], energies[i - 1]) << label << " level " << i;
+    for (std::size_t i = 1; i < energies.size(); ++i)
+      EXPECT_LT(energies[i], energies[i - 1]) << label << " level " << i;
     EXPECT_LT(std::abs(energies.back() - energies[energies.size() - 2]), 0.01) << label;
   }
 }
@@ -124,9 +128,10 @@ TEST(Contact, TooFewConstraintPointsAreRefused) {
 }
 
 TEST(Contact, SignoriniKktForStableUnstableAndHighOrderPairings) {
-  struct Case { int p, pc, m; };
-  for (const auto& c : {Case{1, 0, 4}, Case{1, 0, 8}, Case{2, 1, 4}, Case{3, 1, 8}, Case{3, 2, 8},
-                        Case{4, 3, 4}}) {
+  struct Case {
+    int p, pc, m;
+  };
+  for (const auto& c : {Case{1, 0, 4}, Case{1, 0, 8}, Case{2, 1, 4}, Case{3, 1, 8}, Case{3, 2, 8}, Case{4, 3, 4}}) {
     const auto s = solve(contact::ContactProblem::signorini, 8, c.p, c.pc, c.m);
     const std::string label = "p " + std::to_string(c.p) + " pC " + std::to_string(c.pc) + " m " + std::to_string(c.m);
     expect_kkt(s, label);
@@ -271,7 +276,10 @@ ManufacturedErrors manufactured(int n, int p, int pc, int m) {
 }  // namespace
 
 TEST(Contact, ManufacturedSignoriniConverges) {
-  struct Case { int p, pc; double min_u_rate, min_lambda_rate; };
+  struct Case {
+    int p, pc;
+    double min_u_rate, min_lambda_rate;
+  };
   for (const auto& c : {Case{1, 0, 0.9, 0.9}, Case{2, 1, 1.8, 1.4}}) {
     std::vector<ManufacturedErrors> errors;
     for (int n : {8, 16, 32}) errors.push_back(manufactured(n, c.p, c.pc, n / 2));

@@ -1,18 +1,17 @@
 // Stage 13, free boundary: locating the ends of the contact set / stick zone on the constraint
 // points (exact for a square-root onset), and fitting meshes to them, which is what makes hp
 // refinement of the §7 problems converge exponentially (the work–precision references).
-#include <gtest/gtest.h>
-
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <functional>
 
 #include "contact/free_boundary.hpp"
-#include "scene/scene_mesh.hpp"
-#include "scene/scene_reader.hpp"
 #include "driver/free_boundary_fit.hpp"
 #include "driver/scene_discretization.hpp"
+#include "scene/scene_mesh.hpp"
+#include "scene/scene_reader.hpp"
 
 using namespace hpcontact;
 
@@ -43,14 +42,16 @@ TEST(FreeBoundary, SquareRootOnsetIsLocatedExactly) {
   const auto signorini = synthetic(
       40, [&](double s) { return s > left && s < right ? -std::sqrt((s - left) * (right - s)) : 0.0; }, -INFINITY, 0.0);
   // Pure square roots are located exactly.
-  const auto contact_left = synthetic(40, [&](double s) { return s < right ? -2.0 * std::sqrt(right - s) : 0.0; }, -INFINITY, 0.0);
+  const auto contact_left = synthetic(
+      40, [&](double s) { return s < right ? -2.0 * std::sqrt(right - s) : 0.0; }, -INFINITY, 0.0);
   auto points = contact::locate_free_boundary(contact_left);
   ASSERT_EQ(points.size(), 1u);
   EXPECT_NEAR(points[0].s, right, 1e-12);
   EXPECT_LE(points[0].bracket_begin, right);
   EXPECT_GE(points[0].bracket_end, right);
 
-  const auto stick_right = synthetic(40, [&](double s) { return s > left ? -1.0 + 0.5 * std::sqrt(s - left) : -1.0; }, -1.0, 1.0);
+  const auto stick_right = synthetic(
+      40, [&](double s) { return s > left ? -1.0 + 0.5 * std::sqrt(s - left) : -1.0; }, -1.0, 1.0);
   points = contact::locate_free_boundary(stick_right);
   ASSERT_EQ(points.size(), 1u);
   EXPECT_NEAR(points[0].s, left, 1e-12);
@@ -89,7 +90,9 @@ g = "-x^2"
 s = "(1 - x)^2"
 [run]
 effects = ["{}"]
-)TOML", layers, p, p - 2, effect), "paper_scene.toml");
+)TOML",
+                                        layers, p, p - 2, effect),
+                            "paper_scene.toml");
 }
 
 double energy(const scene::Scene& scene, const std::string& effect) {
@@ -111,8 +114,10 @@ TEST(FreeBoundary, FittedMeshesConvergeExponentially) {
     auto fitted_p10 = paper_scene(effect, 10, 8);
     fitted_p10.grading_points = fit.scene.grading_points;
     const double fitted_change = std::abs(energy(fit.scene, effect) - energy(fitted_p10, effect));
-    const double unfitted_change = std::abs(energy(paper_scene(effect, 8, 8), effect) - energy(paper_scene(effect, 10, 8), effect));
-    EXPECT_LT(30 * fitted_change, unfitted_change) << effect << ": fitted " << fitted_change << ", unfitted " << unfitted_change;
+    const double unfitted_change =
+        std::abs(energy(paper_scene(effect, 8, 8), effect) - energy(paper_scene(effect, 10, 8), effect));
+    EXPECT_LT(30 * fitted_change, unfitted_change)
+        << effect << ": fitted " << fitted_change << ", unfitted " << unfitted_change;
     EXPECT_LT(fitted_change, 3e-9) << effect;
   }
 }

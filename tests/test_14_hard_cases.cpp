@@ -2,8 +2,8 @@
 // contact sets that are the whole of Γ_C, empty, or touch tangentially, friction bounds vanishing
 // on part of Γ_C or tiny, data scaled by 1e±6, and solver failures reported with residuals.
 // Every case checks against an independent path or an exact property, never a stored number.
-#include <gtest/gtest.h>
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
@@ -23,10 +23,10 @@
 #include "slepc_test_environment.hpp"
 
 using namespace hpcontact;
+using contact::ContactProblem;
 using hpcontact::testing::ContactData;
 using hpcontact::testing::expect_kkt;
 using hpcontact::testing::solve_paper_contact;
-using contact::ContactProblem;
 
 namespace {
 
@@ -80,7 +80,8 @@ TEST(HardCases, DegreeSixteenAssemblyAndSolveStayAccurate) {
   EXPECT_LT((dense - sparse).norm(), 1e-11 * sparse.norm());
   const auto point = mesh::Point(0.3, -0.2);
   const fe::PointLocator locator(square);
-  EXPECT_NEAR(fe::evaluate(space, sparse, *locator.locate(point)).value, hpcontact::testing::manufactured_u(point), 1e-12);
+  EXPECT_NEAR(fe::evaluate(space, sparse, *locator.locate(point)).value, hpcontact::testing::manufactured_u(point),
+              1e-12);
 }
 
 // α at p = 16, p_C = 15: SLEPc and the dense path agree for the stable (h/H = 1/2) and the
@@ -138,8 +139,10 @@ TEST(HardCases, ExtremeMeshRatios) {
     EXPECT_TRUE(std::isfinite(slepc.alpha) && slepc.alpha >= 0.0) << label;
     EXPECT_EQ(slepc.singular, dense.singular) << label;
     EXPECT_EQ(dense.singular, ratio >= 2.0) << label;
-    if (!dense.singular) EXPECT_NEAR(slepc.alpha, dense.alpha, 1e-8) << label;
-    else EXPECT_EQ(slepc.alpha, 0.0) << label;
+    if (!dense.singular)
+      EXPECT_NEAR(slepc.alpha, dense.alpha, 1e-8) << label;
+    else
+      EXPECT_EQ(slepc.alpha, 0.0) << label;
   }
 }
 
@@ -208,7 +211,11 @@ TEST(HardCases, FrictionBoundVanishingOnPartOrTiny) {
 // (13) is the sharp case: S and d scale like t² while the box |λ| ≤ 1 does not, which exposed
 // tolerances and a KKT residual that mixed the units of λ and of the gradient.
 TEST(HardCases, ScalingTheDataScalesTheSolution) {
-  struct Case { ContactProblem problem; int pc; std::optional<int> q; };
+  struct Case {
+    ContactProblem problem;
+    int pc;
+    std::optional<int> q;
+  };
   for (const auto& c : {Case{ContactProblem::signorini, 1, {}}, Case{ContactProblem::signorini, 2, 6},
                         Case{ContactProblem::friction, 1, {}}, Case{ContactProblem::friction_s, 1, {}},
                         Case{ContactProblem::friction_s, 1, 4}}) {
@@ -222,9 +229,11 @@ TEST(HardCases, ScalingTheDataScalesTheSolution) {
       const std::string label = fmt::format("problem {} pC {} t {}", int(c.problem), c.pc, t);
       expect_kkt(solution, label);
       const double lambda_factor = c.problem == ContactProblem::friction ? 1.0 : t;
-      EXPECT_LT((solution.u / t - reference.u).lpNorm<Eigen::Infinity>(), 1e-8 * reference.u.lpNorm<Eigen::Infinity>()) << label;
+      EXPECT_LT((solution.u / t - reference.u).lpNorm<Eigen::Infinity>(), 1e-8 * reference.u.lpNorm<Eigen::Infinity>())
+          << label;
       EXPECT_LT((solution.lambda / lambda_factor - reference.lambda).lpNorm<Eigen::Infinity>(),
-                1e-8 * reference.lambda.lpNorm<Eigen::Infinity>()) << label;
+                1e-8 * reference.lambda.lpNorm<Eigen::Infinity>())
+          << label;
       EXPECT_EQ(solution.qp.iterations, reference.qp.iterations) << label;
     }
   }

@@ -51,7 +51,8 @@ void expect_bad_input(const std::string& name, const std::string& text, const st
   const auto result = run("solve " + scene.string() + " --out " + out.string() + " " + extra);
   EXPECT_EQ(result.exit_code, 2) << name << ": " << result.output;
   for (const auto& word : mentions)
-    EXPECT_NE(result.output.find(word), std::string::npos) << name << ": missing '" << word << "' in\n" << result.output;
+    EXPECT_NE(result.output.find(word), std::string::npos) << name << ": missing '" << word << "' in\n"
+                                                           << result.output;
   EXPECT_FALSE(std::filesystem::exists(out)) << name << ": output left behind";
 }
 
@@ -86,7 +87,8 @@ TEST(BadInput, CellCountOutOfRange) {
 }
 
 TEST(BadInput, RatioNotPositive) {
-  expect_bad_input("ratio_zero", replaced("ratio = \"1/2\"", "ratio = \"0\""), {"scene.toml", "contact_mesh.ratio", "0"});
+  expect_bad_input("ratio_zero", replaced("ratio = \"1/2\"", "ratio = \"0\""),
+                   {"scene.toml", "contact_mesh.ratio", "0"});
   expect_bad_input("ratio_negative", replaced("ratio = \"1/2\"", "ratio = \"-1/2\""),
                    {"scene.toml", "contact_mesh.ratio", "-1/2"});
 }
@@ -103,7 +105,8 @@ TEST(BadInput, ExpressionThatDoesNotParse) {
 }
 
 TEST(BadInput, ExpressionThatIsNotFinite) {
-  expect_bad_input("nan", replaced("f = \"-1\"", "f = \"sqrt(x - 5)\""), {"scene.toml", "data.f", "sqrt(x - 5)", "finite"});
+  expect_bad_input("nan", replaced("f = \"-1\"", "f = \"sqrt(x - 5)\""),
+                   {"scene.toml", "data.f", "sqrt(x - 5)", "finite"});
   expect_bad_input("inf", replaced("g = \"-x^2\"", "g = \"1/(x - x)\""), {"scene.toml", "data.g", "finite"});
 }
 
@@ -128,17 +131,20 @@ TEST(BadInput, EffectsAndOutputsThatDoNotApply) {
                    {"scene.toml", "run.outputs", "vtu"});
   expect_bad_input("signorini_without_g", replaced("g = \"-x^2\"\n", ""), {"scene.toml", "data.g", "obstacle"});
   expect_bad_input("effects_option", kScene, {"--effects", "elasticity"}, "--effects elasticity");
-  expect_bad_input("effects_missing", replaced("[run]\neffects = [\"signorini\"]\n", ""), {"scene.toml", "run.effects", "--effects"});
+  expect_bad_input("effects_missing", replaced("[run]\neffects = [\"signorini\"]\n", ""),
+                   {"scene.toml", "run.effects", "--effects"});
 }
 
 TEST(BadInput, ContactBoundaryEmptyOrOverlappingDirichlet) {
   expect_bad_input("gc_empty", replaced("abs(y + 1) < 1e-9", "y < -5"), {"scene.toml", "Γ_C is empty"});
-  expect_bad_input("gc_overlap", replaced("abs(y - 1) < 1e-9", "y < 0"), {"scene.toml", "overlap", "boundary.dirichlet"});
+  expect_bad_input("gc_overlap", replaced("abs(y - 1) < 1e-9", "y < 0"),
+                   {"scene.toml", "overlap", "boundary.dirichlet"});
 }
 
 TEST(BadInput, BrokenOrNonQuadrilateralMeshFile) {
   for (const std::string file : {"truncated.msh", "triangles.msh"}) {
-    const std::string text = replaced("n_x = 4\nn_y = 4", "mesh = \"" + std::string(HPCONTACT_SOURCE_DIR) + "/tests/data/" + file + "\"");
+    const std::string text =
+        replaced("n_x = 4\nn_y = 4", "mesh = \"" + std::string(HPCONTACT_SOURCE_DIR) + "/tests/data/" + file + "\"");
     expect_bad_input("mesh_" + file, text, {file});
   }
 }

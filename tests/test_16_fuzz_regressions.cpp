@@ -8,9 +8,9 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "io/toml_reader.hpp"
 #include "scene/scene_mesh.hpp"
 #include "scene/scene_reader.hpp"
-#include "io/toml_reader.hpp"
 
 using namespace hpcontact;
 
@@ -50,7 +50,8 @@ TEST(FuzzRegressions, CrashersStayFixed) {
 // Found by reading the fuzzer's neighbourhood: an integer range is checked against its bounds
 // before it is expanded, so a huge range is an error at once instead of a hang.
 TEST(FuzzRegressions, HugeIntegerRangeIsAnErrorNotAHang) {
-  const auto table = io::parse_toml_string("p = \"1..99999999999\"\nq = \"1..99999999999999999999999\"\n", "study.toml");
+  const auto table =
+      io::parse_toml_string("p = \"1..99999999999\"\nq = \"1..99999999999999999999999\"\n", "study.toml");
   EXPECT_THROW(table.integer_list("p", 1, 20), InputError);
   EXPECT_THROW(table.integer_list("q", 1, 20), InputError);
 }

@@ -124,7 +124,7 @@ TEST(Faults, ResumeRecomputesTornAndIncompleteRows) {
       std::string line = lines[k];
       if (k == 3) line = line.substr(0, line.find(",", line.find(",") + 1));  // most columns missing
       if (k == 5) line.replace(line.find("signorini"), 9, "Signorini");       // not a point of the study
-      if (k == 7) line.insert(line.find(',', line.find("0.") ), "x");         // a number that does not parse
+      if (k == 7) line.insert(line.find(',', line.find("0.")), "x");          // a number that does not parse
       out << line << "\n";
     }
     out << lines.back().substr(0, lines.back().size() / 2);  // torn: no newline
@@ -153,11 +153,10 @@ TEST(Faults, InterruptedMpirunSweepKeepsFinishedGroups) {
   const auto dir = scratch("faults_mpi_resume");
   const auto sweep = write_sweep(dir, true);
   const auto out = dir / "out";
-  const auto result = run_command(kMpi + "sh -c 'mpirun -n 2 --oversubscribe " HPCONTACT_CLI " sweep " + sweep.string() +
-                                  " --out " + out.string() +
-                                  " & for i in $(seq 600); do [ -s " + (out / "alpha.csv.rank0").string() +
-                                  " ] || [ -s " + (out / "alpha.csv.rank1").string() +
-                                  " ] && break; sleep 0.05; done; kill -TERM $!; wait $!'");
+  const auto result = run_command(
+      kMpi + "sh -c 'mpirun -n 2 --oversubscribe " HPCONTACT_CLI " sweep " + sweep.string() + " --out " + out.string() +
+      " & for i in $(seq 600); do [ -s " + (out / "alpha.csv.rank0").string() + " ] || [ -s " +
+      (out / "alpha.csv.rank1").string() + " ] && break; sleep 0.05; done; kill -TERM $!; wait $!'");
   std::size_t kept = 0;
   for (const auto& shard : hpcontact::studies::existing_shards(out / "alpha.csv")) {
     std::ifstream in(shard);
@@ -168,7 +167,8 @@ TEST(Faults, InterruptedMpirunSweepKeepsFinishedGroups) {
   // One BLAS thread in every run, so that the floating-point operations are the same.
   const auto resumed = run_command(kMpi + HPCONTACT_CLI " sweep " + sweep.string() + " --out " + out.string());
   ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
-  ASSERT_EQ(run_command(kMpi + HPCONTACT_CLI " sweep " + sweep.string() + " --out " + (dir / "fresh").string()).exit_code, 0);
+  ASSERT_EQ(
+      run_command(kMpi + HPCONTACT_CLI " sweep " + sweep.string() + " --out " + (dir / "fresh").string()).exit_code, 0);
   EXPECT_EQ(without_seconds(out / "alpha.csv"), without_seconds(dir / "fresh" / "alpha.csv"));
   EXPECT_TRUE(hpcontact::studies::existing_shards(out / "alpha.csv").empty());
 }
@@ -176,9 +176,12 @@ TEST(Faults, InterruptedMpirunSweepKeepsFinishedGroups) {
 // PETSc options are checked before any work: a value SLEPc rejects, a name without the prefix (the
 // prefixed one suggested), a misspelled name. Exit 2 within a second, nothing computed.
 TEST(Faults, PetscOptionsAreCheckedBeforeAnyWork) {
-  struct Case { std::string options, expected; };
+  struct Case {
+    std::string options, expected;
+  };
   for (const auto& [options, expected] :
-       {Case{"-infsup_eps_type nonsense", "SLEPc rejects a value"}, Case{"-eps_type arpack", "did you mean -infsup_eps_type?"},
+       {Case{"-infsup_eps_type nonsense", "SLEPc rejects a value"},
+        Case{"-eps_type arpack", "did you mean -infsup_eps_type?"},
         Case{"-infsup_eps_typo arpack", "not an option of the inf-sup eigensolver"}}) {
     const auto result = run("infsup --p 2 --pc 1 --n 8 " + options);
     EXPECT_EQ(result.exit_code, 2) << options << "\n" << result.output;
@@ -192,16 +195,19 @@ TEST(Faults, PetscOptionsAreCheckedBeforeAnyWork) {
 // Messages that misled: each names the key, the value and why.
 TEST(Faults, MessagesNameTheInputAndWhy) {
   const auto dir = scratch("faults_messages");
-  const std::string base = "[domain]\nn_x = 4\nn_y = 4\n[boundary]\ncontact = \"abs(y + 1) < 1e-9\"\n"
-                           "dirichlet = \"abs(y - 1) < 1e-9\"\n[contact_mesh]\nratio = 1\n[discretization]\np = 2\n"
-                           "pC = 1\n[data]\ng = \"-x^2\"\n[run]\neffects = [\"signorini\"]\n";
+  const std::string base =
+      "[domain]\nn_x = 4\nn_y = 4\n[boundary]\ncontact = \"abs(y + 1) < 1e-9\"\n"
+      "dirichlet = \"abs(y - 1) < 1e-9\"\n[contact_mesh]\nratio = 1\n[discretization]\np = 2\n"
+      "pC = 1\n[data]\ng = \"-x^2\"\n[run]\neffects = [\"signorini\"]\n";
   auto scene_with = [&](const std::string& name, const std::string& from, const std::string& to) {
     std::string text = base;
     text.replace(text.find(from), from.size(), to);
     std::ofstream(dir / name) << text;
     return run("solve " + (dir / name).string() + " --out " + (dir / ("out_" + name)).string());
   };
-  struct Case { std::string name, from, to, expected; };
+  struct Case {
+    std::string name, from, to, expected;
+  };
   const std::string huge(200000, '1');
   for (const auto& c : {
            Case{"tiny.toml", "[domain]\n", "[domain]\nx_min = 0\nx_max = 1e-300\n", "the width 1e-300 is below"},
@@ -218,10 +224,12 @@ TEST(Faults, MessagesNameTheInputAndWhy) {
     EXPECT_LT(result.output.size(), 2000u) << c.name;
   }
   // A misspelled physical group lists the groups the mesh has.
-  std::ofstream(dir / "groups.toml") << "[domain]\nmesh = \"" HPCONTACT_TEST_DATA "/square_2x2.msh\"\n[boundary]\n"
-                                        "contact_groups = [\"contcat\"]\ndirichlet_groups = [\"dirichlet\"]\n"
-                                        "[contact_mesh]\nratio = 1\n[discretization]\np = 2\npC = 1\n[data]\ng = \"-x^2\"\n"
-                                        "[run]\neffects = [\"signorini\"]\n";
+  std::ofstream(dir / "groups.toml")
+      << "[domain]\nmesh = \"" HPCONTACT_TEST_DATA
+         "/square_2x2.msh\"\n[boundary]\n"
+         "contact_groups = [\"contcat\"]\ndirichlet_groups = [\"dirichlet\"]\n"
+         "[contact_mesh]\nratio = 1\n[discretization]\np = 2\npC = 1\n[data]\ng = \"-x^2\"\n"
+         "[run]\neffects = [\"signorini\"]\n";
   const auto groups = run("solve " + (dir / "groups.toml").string() + " --out " + (dir / "out_groups").string());
   EXPECT_EQ(groups.exit_code, 2) << groups.output;
   EXPECT_NE(groups.output.find("the mesh has: contact, dirichlet, neumann"), std::string::npos) << groups.output;
@@ -256,10 +264,11 @@ TEST(Faults, SolveOutputsAreOneSet) {
 
   SmallDisk disk("solve");
   if (!disk.mounted) GTEST_SKIP() << "cannot mount a tmpfs here (needs root)";
-  std::ofstream(dir / "fine.toml") << std::string(scene).replace(scene.find("n_x = 4\nn_y = 4"), 15, "n_x = 32\nn_y = 32");
-  const auto full = run_command(kMpi + "timeout 120 mpirun -n 2 --oversubscribe " HPCONTACT_CLI " solve " +
-                                (dir / "fine.toml").string() + " --effects signorini --out " +
-                                (disk.path / "out").string());
+  std::ofstream(dir / "fine.toml") << std::string(scene).replace(scene.find("n_x = 4\nn_y = 4"), 15,
+                                                                 "n_x = 32\nn_y = 32");
+  const auto full =
+      run_command(kMpi + "timeout 120 mpirun -n 2 --oversubscribe " HPCONTACT_CLI " solve " +
+                  (dir / "fine.toml").string() + " --effects signorini --out " + (disk.path / "out").string());
   EXPECT_EQ(full.exit_code, 4) << full.output;
   EXPECT_TRUE(std::filesystem::is_empty(disk.path)) << "a partial set was left";
 }

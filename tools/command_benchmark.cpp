@@ -12,8 +12,8 @@
 namespace hpcontact::tools {
 
 void add_benchmark_command(CLI::App& app, CommandAction& action) {
-  auto* command = app.add_subcommand(
-      "benchmark", "Timings as ratios to one linear solve: benchmark.csv and scaling.csv");
+  auto* command =
+      app.add_subcommand("benchmark", "Timings as ratios to one linear solve: benchmark.csv and scaling.csv");
   auto file = std::make_shared<std::string>();
   auto out_dir = std::make_shared<std::string>("results/performance");
   command->add_option("benchmark", *file, "Benchmark file (TOML), e.g. studies/performance/benchmark.toml")

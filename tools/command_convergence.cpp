@@ -13,8 +13,8 @@
 namespace hpcontact::tools {
 
 void add_convergence_command(CLI::App& app, CommandAction& action) {
-  auto* command = app.add_subcommand(
-      "convergence", "Convergence of S^p(T_h) against a manufactured solution (CSV: errors, rates)");
+  auto* command =
+      app.add_subcommand("convergence", "Convergence of S^p(T_h) against a manufactured solution (CSV: errors, rates)");
   auto study_file = std::make_shared<std::string>();
   auto out_dir = std::make_shared<std::string>("results/convergence");
   command->add_option("study", *study_file, "Study file (TOML), e.g. studies/convergence/study.toml")
@@ -27,17 +27,16 @@ void add_convergence_command(CLI::App& app, CommandAction& action) {
       const auto study = studies::read_convergence_study(*study_file);
       io::ensure_writable_directory(*out_dir);
       // 2. Run, printing one line per point with the observed rate against the previous n.
-      fmt::print("{:>3} {:>5} {:>9} {:>12} {:>12} {:>6} {:>12} {:>9}\n", "p", "n", "ndofs",
-                 "h", "error_h1", "rate", "error_l2", "seconds");
+      fmt::print("{:>3} {:>5} {:>9} {:>12} {:>12} {:>6} {:>12} {:>9}\n", "p", "n", "ndofs", "h", "error_h1", "rate",
+                 "error_l2", "seconds");
       std::map<int, studies::ConvergenceRow> previous;
       const auto rows = studies::run_convergence_study(study, [&](const auto& row) {
         std::string rate = "-";
         if (auto it = previous.find(row.p); it != previous.end() && it->second.h != row.h)
-          rate = fmt::format("{:.2f}", std::log(it->second.error_h1 / row.error_h1) /
-                                           std::log(it->second.h / row.h));
+          rate = fmt::format("{:.2f}", std::log(it->second.error_h1 / row.error_h1) / std::log(it->second.h / row.h));
         previous[row.p] = row;
-        fmt::print("{:>3} {:>5} {:>9} {:>12.4e} {:>12.4e} {:>6} {:>12.4e} {:>9.3f}\n", row.p,
-                   row.n, row.ndofs, row.h, row.error_h1, rate, row.error_l2, row.seconds);
+        fmt::print("{:>3} {:>5} {:>9} {:>12.4e} {:>12.4e} {:>6} {:>12.4e} {:>9.3f}\n", row.p, row.n, row.ndofs, row.h,
+                   row.error_h1, rate, row.error_l2, row.seconds);
         std::fflush(stdout);
       });
       // 3. Save.

@@ -4,19 +4,19 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 #include <filesystem>
+#include <optional>
 
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/petsc_session.hpp"
+#include "driver/scene_discretization.hpp"
 #include "infsup/infsup_analysis.hpp"
+#include "io/atomic_file.hpp"
 #include "linalg/distribution.hpp"
 #include "operators/primal_operators.hpp"
-#include "io/atomic_file.hpp"
 #include "scene/scene_mesh.hpp"
 #include "scene/scene_reader.hpp"
-#include "driver/scene_discretization.hpp"
 
 namespace hpcontact::tools {
 namespace {
@@ -63,7 +63,8 @@ int run_infsup(const InfSupOptions& o) {
   const int rank = mpi_rank_and_size().first, ranks = mpi_rank_and_size().second;
   const operators::PrimalOperators primal(d->mesh, d->cell_degrees, nullptr,
                                           linalg::distribution_over(ranks, distributed_solver));
-  const auto setup = driver::infsup_setup_of(scene, d->mesh, d->cell_degrees, *d->boundary_mesh, d->segment_degrees, primal);
+  const auto setup =
+      driver::infsup_setup_of(scene, d->mesh, d->cell_degrees, *d->boundary_mesh, d->segment_degrees, primal);
   const auto result = infsup::analyse_infsup(setup, backend);
   if (rank != 0) return 0;
 
@@ -85,13 +86,12 @@ int run_infsup(const InfSupOptions& o) {
   fmt::print("# problem {} norm {} p {} pC {} n {} m {} h/H {} Pi {:.6g} ndofs {} nmult {}\n", problem, norm, p, pc, n,
              m, scene.ratio ? scene.ratio->text : fmt::format("{}", ratio), result.pi, result.n_primal_dofs,
              result.n_multiplier_dofs);
-  fmt::print("# lambda_min {:.6e} lambda_max {:.6e}{} solver {} residual {:.2e} seconds {:.3f}\n",
-             result.lambda_min, result.lambda_max,
-             result.singular ? " (singular to working precision: alpha = 0)" : "", result.method,
+  fmt::print("# lambda_min {:.6e} lambda_max {:.6e}{} solver {} residual {:.2e} seconds {:.3f}\n", result.lambda_min,
+             result.lambda_max, result.singular ? " (singular to working precision: alpha = 0)" : "", result.method,
              result.residual, result.seconds);
   if (!o.csv.empty()) {
-    io::CsvTable row({"problem", "norm", "p", "pC", "n", "m", "h", "H", "ratio", "Pi", "alpha",
-                      "alpha_error", "ndofs", "nmult", "seconds"});
+    io::CsvTable row({"problem", "norm", "p", "pC", "n", "m", "h", "H", "ratio", "Pi", "alpha", "alpha_error", "ndofs",
+                      "nmult", "seconds"});
     row.add_row({problem, norm, static_cast<long long>(p), static_cast<long long>(pc), static_cast<long long>(n),
                  static_cast<long long>(m), result.h, result.H, scene.ratio ? scene.ratio->value : ratio, result.pi,
                  result.alpha, result.alpha_error, static_cast<long long>(result.n_primal_dofs),
@@ -105,24 +105,26 @@ int run_infsup(const InfSupOptions& o) {
 }  // namespace
 
 void add_infsup_command(CLI::App& app, CommandAction& action) {
-  auto* command = app.add_subcommand(
-      "infsup", "Inf-sup constant alpha(h, H, p, pC) with SLEPc, Pi of (20), spurious mode");
+  auto* command =
+      app.add_subcommand("infsup", "Inf-sup constant alpha(h, H, p, pC) with SLEPc, Pi of (20), spurious mode");
   auto o = std::make_shared<InfSupOptions>();
   command->add_option("--scene", o->scene, "Scene file (TOML; keys: docs/scene_keys.md); default: the paper's §7 scene")
       ->check(CLI::ExistingFile);
   command->add_option("--p", o->p, "Polynomial degree p of S^p(T_h) (scene key discretization.p; §7 scene: 1)");
   command->add_option("--pc", o->pc, "Multiplier degree p_C (discretization.pC; §7 scene: 0)");
   command->add_option("--n", o->n, "n x n cells (domain.n_x, domain.n_y; §7 scene: 8, h = 2/n)");
-  command->add_option("--ratio", o->ratio, "h/H, e.g. 1/2: T_{C,H} has m = n * ratio segments (contact_mesh.ratio; §7 scene: 1)");
+  command->add_option("--ratio", o->ratio,
+                      "h/H, e.g. 1/2: T_{C,H} has m = n * ratio segments (contact_mesh.ratio; §7 scene: 1)");
   command->add_option("--norm", o->norm, "H^{-1/2} realization: interp | extension (infsup.norm; default interp)");
   command->add_option("--problem", o->problem,
                       "signorini: condition (11); friction: (22) with the scene's s, (1-x)^2 on the §7 scene "
                       "(infsup.problem; default signorini)");
-  command->add_option("--eigensolver", o->eigensolver,
-                      "slepc (EPS, options -infsup_eps_*) | dense (LAPACK-type, Eigen)")
+  command
+      ->add_option("--eigensolver", o->eigensolver, "slepc (EPS, options -infsup_eps_*) | dense (LAPACK-type, Eigen)")
       ->capture_default_str();
-  command->add_option("--distributed-solver", o->distributed_solver,
-                      "Under mpirun: substructuring (CHOLMOD per rank, dense interface) | mumps (MPIAIJ + MUMPS)")
+  command
+      ->add_option("--distributed-solver", o->distributed_solver,
+                   "Under mpirun: substructuring (CHOLMOD per rank, dense interface) | mumps (MPIAIJ + MUMPS)")
       ->capture_default_str();
   command->add_option("--csv", o->csv, "Append one row to this CSV file");
   command->add_option("--mode", o->mode, "Write the spurious mode as CSV x,mu (20 samples/segment)");

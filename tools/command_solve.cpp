@@ -5,18 +5,17 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
-
 #include <filesystem>
 #include <optional>
 
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/petsc_session.hpp"
+#include "driver/scene_run.hpp"
 #include "io/atomic_file.hpp"
+#include "linalg/distribution.hpp"
 #include "scene/scene_mesh.hpp"
 #include "scene/scene_reader.hpp"
-#include "linalg/distribution.hpp"
-#include "driver/scene_run.hpp"
 
 namespace hpcontact::tools {
 namespace {
@@ -37,16 +36,16 @@ int run_solve(const SolveOptions& o) {
   if (o.pc) overrides.push_back({"discretization.pC", static_cast<long long>(*o.pc), where + " --pc"});
   if (!o.ratio.empty()) overrides.push_back({"contact_mesh.ratio", o.ratio, where + " --ratio"});
   if (o.constraint_points)
-    overrides.push_back({"solve.constraint_points", static_cast<long long>(*o.constraint_points),
-                         where + " --constraint-points"});
+    overrides.push_back(
+        {"solve.constraint_points", static_cast<long long>(*o.constraint_points), where + " --constraint-points"});
   if (!o.effects.empty()) overrides.push_back({"run.effects", o.effects, where + " --effects"});
   const auto scene = scene::read_scene(o.scene, overrides);
   if (scene.effects.empty()) {
     std::vector<std::string> names;
     for (auto effect : scene::all_effects()) names.push_back(scene::to_string(effect));
-    throw_bad_input(o.scene, "run.effects", "(missing)",
-                    fmt::format("a [run] table with effects = [...] (any of {}), or the option --effects",
-                                fmt::join(names, ", ")));
+    throw_bad_input(
+        o.scene, "run.effects", "(missing)",
+        fmt::format("a [run] table with effects = [...] (any of {}), or the option --effects", fmt::join(names, ", ")));
   }
   const auto distributed_solver = linalg::parse_distributed_solver(o.distributed_solver, where, "--distributed-solver");
   io::check_output_directory(o.out);
@@ -55,8 +54,8 @@ int run_solve(const SolveOptions& o) {
   // the scene, K and A_G are factorized over the ranks, and rank 0 reports and writes.
   const int rank = mpi_rank_and_size().first, ranks = mpi_rank_and_size().second;  // (a lambda captures rank)
   driver::SceneRunOptions options{o.out, [rank](const std::string& line) {
-                                     if (rank == 0) fmt::print(stderr, "# {}\n", line);
-                                   }};
+                                    if (rank == 0) fmt::print(stderr, "# {}\n", line);
+                                  }};
   options.distribution = linalg::distribution_over(ranks, distributed_solver);
   const auto summary = driver::run_scene(scene, options);
   if (rank != 0) return 0;
@@ -89,16 +88,18 @@ void add_solve_command(CLI::App& app, CommandAction& action) {
       ->required()
       ->check(CLI::ExistingFile);
   command->add_option("--out", o->out, "Output folder")->capture_default_str();
-  command->add_option("--effects", o->effects,
-                      "Override the scene's [run] effects: signorini, friction, friction_s, infsup, convergence")
+  command
+      ->add_option("--effects", o->effects,
+                   "Override the scene's [run] effects: signorini, friction, friction_s, infsup, convergence")
       ->delimiter(',');
   command->add_option("--p", o->p, "Override the scene's p");
   command->add_option("--pc", o->pc, "Override the scene's p_C");
   command->add_option("--ratio", o->ratio, "Override the scene's contact mesh: h/H, e.g. 1/2");
   command->add_option("--constraint-points", o->constraint_points,
                       "Override the scene's constraint points per segment (Remark 3; >= p_C + 1)");
-  command->add_option("--distributed-solver", o->distributed_solver,
-                      "Under mpirun: substructuring (CHOLMOD per rank, dense interface) | mumps (MPIAIJ + MUMPS)")
+  command
+      ->add_option("--distributed-solver", o->distributed_solver,
+                   "Under mpirun: substructuring (CHOLMOD per rank, dense interface) | mumps (MPIAIJ + MUMPS)")
       ->capture_default_str();
   command->callback([&action, o] { action = [o] { return run_solve(*o); }; });
 }

@@ -1,26 +1,25 @@
 // `hpcontact sweep STUDY.toml --out DIR`: α over a grid of (problem, norm, p, p_C, n, h/H) into
 // DIR/alpha.csv (resumable), then rate fits and verdicts into DIR/verdicts.csv.
 #include <fmt/format.h>
-
 #include <mpi.h>
 
 #include <filesystem>
 #include <memory>
 
 #include "commands.hpp"
-#include "progress_bar.hpp"
 #include "core/petsc_session.hpp"
 #include "core/rank_agreement.hpp"
 #include "core/timer.hpp"
 #include "io/atomic_file.hpp"
+#include "progress_bar.hpp"
 #include "studies/stability_sweep.hpp"
 #include "studies/sweep_rows.hpp"
 
 namespace hpcontact::tools {
 
 void add_sweep_command(CLI::App& app, CommandAction& action) {
-  auto* command = app.add_subcommand(
-      "sweep", "Stability sweep over p, pC, n, h/H, norms, problems: alpha.csv and verdicts.csv");
+  auto* command =
+      app.add_subcommand("sweep", "Stability sweep over p, pC, n, h/H, norms, problems: alpha.csv and verdicts.csv");
   auto study_file = std::make_shared<std::string>();
   auto out_dir = std::make_shared<std::string>("results/stability");
   command->add_option("study", *study_file, "Sweep file (TOML), e.g. studies/stability/study.toml")
@@ -59,8 +58,8 @@ void add_sweep_command(CLI::App& app, CommandAction& action) {
       const auto verdicts = studies::fit_verdicts(alpha_csv, sweep.fit_levels);
       verdicts.write(std::filesystem::path(*out_dir) / "verdicts.csv");
       fmt::print("wrote {} and {} ({} configurations, {:.1f} s on {} rank{})\n", alpha_csv.string(),
-                 (std::filesystem::path(*out_dir) / "verdicts.csv").string(), verdicts.n_rows(),
-                 clock.seconds(), size, size > 1 ? "s" : "");
+                 (std::filesystem::path(*out_dir) / "verdicts.csv").string(), verdicts.n_rows(), clock.seconds(), size,
+                 size > 1 ? "s" : "");
       return 0;
     };
   });

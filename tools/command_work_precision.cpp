@@ -13,8 +13,8 @@
 namespace hpcontact::tools {
 
 void add_work_precision_command(CLI::App& app, CommandAction& action) {
-  auto* command = app.add_subcommand(
-      "work-precision", "Work-precision study: error against wall time for families of discretizations");
+  auto* command = app.add_subcommand("work-precision",
+                                     "Work-precision study: error against wall time for families of discretizations");
   auto study_file = std::make_shared<std::string>();
   auto out_dir = std::make_shared<std::string>("results/work_precision");
   command->add_option("study", *study_file, "Study file (TOML), e.g. studies/work_precision/study.toml")

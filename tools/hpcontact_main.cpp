@@ -22,7 +22,10 @@ int report(const std::exception& error) {
   using namespace hpcontact;
   const int code = exit_code_of(error);
   if (failure_agreed() && mpi_rank_and_size().first != 0) return code;
-  const char* kind = code == 2 ? "error" : code == 3 ? "numerical failure" : code == 4 ? "I/O failure" : "internal error";
+  const char* kind = code == 2   ? "error"
+                     : code == 3 ? "numerical failure"
+                     : code == 4 ? "I/O failure"
+                                 : "internal error";
   fmt::print(stderr, "hpcontact: {}: {}\n", kind, error.what());
   return code;
 }
@@ -36,10 +39,12 @@ int main(int argc, char** argv) {
   const SplitCommandLine command_line = split_petsc_options(argc, argv);
 
   // 2. Declare the subcommands.
-  CLI::App app{"hpcontact: higher-order mixed finite elements for model contact problems and "
-               "their inf-sup stability.\nPETSc/SLEPc options may be added to any subcommand; the "
-               "inf-sup eigensolver reads them with the prefix infsup_ (-infsup_eps_type arpack, "
-               "-infsup_eps_view, ...).", "hpcontact"};
+  CLI::App app{
+      "hpcontact: higher-order mixed finite elements for model contact problems and "
+      "their inf-sup stability.\nPETSc/SLEPc options may be added to any subcommand; the "
+      "inf-sup eigensolver reads them with the prefix infsup_ (-infsup_eps_type arpack, "
+      "-infsup_eps_view, ...).",
+      "hpcontact"};
   app.set_version_flag("--version", std::string(HPCONTACT_VERSION));
   app.require_subcommand(1);
   tools::CommandAction action;

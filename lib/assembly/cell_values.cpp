@@ -19,9 +19,8 @@ CellValues tabulate_cell(const space::H1Space& space, int cell, const std::vecto
   const int n_shapes = static_cast<int>(shapes.size());
   const mesh::CellMap map(space.mesh(), cell);
 
-  CellValues out{Eigen::MatrixXd(n_points, 2), Eigen::VectorXd(n_points),
-                 Eigen::MatrixXd(n_points, n_shapes), Eigen::MatrixXd(n_points, n_shapes),
-                 Eigen::MatrixXd(n_points, n_shapes)};
+  CellValues out{Eigen::MatrixXd(n_points, 2), Eigen::VectorXd(n_points), Eigen::MatrixXd(n_points, n_shapes),
+                 Eigen::MatrixXd(n_points, n_shapes), Eigen::MatrixXd(n_points, n_shapes)};
   for (int b = 0; b < static_cast<int>(eta.size()); ++b) {
     for (int a = 0; a < n_xi; ++a) {
       const int q = a + n_xi * b;
@@ -44,14 +43,18 @@ CellValues tabulate_cell(const space::H1Space& space, int cell, const std::vecto
   return out;
 }
 
-std::pair<std::vector<double>, std::vector<double>> edge_reference_points(
-    int local_edge, const std::vector<double>& t) {
+std::pair<std::vector<double>, std::vector<double>> edge_reference_points(int local_edge,
+                                                                          const std::vector<double>& t) {
   const std::vector<double> minus{-1.0}, plus{1.0};
   switch (local_edge) {
-    case 0: return {t, minus};
-    case 1: return {plus, t};
-    case 2: return {t, plus};
-    default: return {minus, t};
+    case 0:
+      return {t, minus};
+    case 1:
+      return {plus, t};
+    case 2:
+      return {t, plus};
+    default:
+      return {minus, t};
   }
 }
 

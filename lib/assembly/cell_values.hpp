@@ -14,11 +14,11 @@ namespace hpcontact::assembly {
 /// Every matrix has shape (n_points, n_shapes), column s = space.cell_shapes(cell)[s];
 /// the sign of each shape (edge orientation) is already applied.
 struct CellValues {
-  Eigen::MatrixXd points;      ///< (n_points, 2) physical coordinates Ψ_T(ξ_a, η_b)
-  Eigen::VectorXd jacobians;   ///< (n_points) det DΨ_T
-  Eigen::MatrixXd values;      ///< φ_s
-  Eigen::MatrixXd grad_x;      ///< ∂φ_s/∂x
-  Eigen::MatrixXd grad_y;      ///< ∂φ_s/∂y
+  Eigen::MatrixXd points;     ///< (n_points, 2) physical coordinates Ψ_T(ξ_a, η_b)
+  Eigen::VectorXd jacobians;  ///< (n_points) det DΨ_T
+  Eigen::MatrixXd values;     ///< φ_s
+  Eigen::MatrixXd grad_x;     ///< ∂φ_s/∂x
+  Eigen::MatrixXd grad_y;     ///< ∂φ_s/∂y
 };
 
 CellValues tabulate_cell(const space::H1Space& space, int cell, const std::vector<double>& xi,
@@ -26,8 +26,7 @@ CellValues tabulate_cell(const space::H1Space& space, int cell, const std::vecto
 
 /// Reference grid (ξ list, η list) of the points with local edge parameters t on `local_edge`
 /// (see QuadMesh for the local edge numbering and directions).
-std::pair<std::vector<double>, std::vector<double>> edge_reference_points(
-    int local_edge, const std::vector<double>& t);
+std::pair<std::vector<double>, std::vector<double>> edge_reference_points(int local_edge, const std::vector<double>& t);
 
 /// Gauss points per direction used for the volume integrals of a cell of degree p: p + 2.
 /// Mass (degree 2p+1 per variable with the bilinear Jacobian) needs p + 1; the extra point

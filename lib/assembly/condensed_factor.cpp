@@ -2,10 +2,11 @@
 // parallelograms), assembly of the skeleton Schur complement S (lower triangle), CHOLMOD on S.
 #include "assembly/condensed_factor.hpp"
 
+#include <fmt/format.h>
+
 #include <Eigen/Cholesky>
 #include <array>
 #include <cmath>
-#include <fmt/format.h>
 #include <map>
 #include <optional>
 #include <tuple>
@@ -20,10 +21,10 @@ namespace hpcontact::assembly {
 /// The elimination of one cell's interior modes, with the shapes' signs taken out (a cell's
 /// signs are D = diag(sign_s); its element matrix is D A_T D, interior signs are all +1).
 struct CondensedFactor::CellBlock {
-  std::vector<int> skeleton, interior;     ///< local shape indices
+  std::vector<int> skeleton, interior;          ///< local shape indices
   Eigen::LLT<Eigen::MatrixXd> interior_factor;  ///< A_ii = L Lᵀ
-  Eigen::MatrixXd interior_solve;          ///< A_ii⁻¹ A_is, shape (n_interior, n_skeleton_local)
-  Eigen::MatrixXd schur;                   ///< S_T = A_ss − A_si A_ii⁻¹ A_is
+  Eigen::MatrixXd interior_solve;               ///< A_ii⁻¹ A_is, shape (n_interior, n_skeleton_local)
+  Eigen::MatrixXd schur;                        ///< S_T = A_ss − A_si A_ii⁻¹ A_is
 };
 
 namespace {
@@ -149,7 +150,8 @@ std::vector<Eigen::Triplet<double>> CondensedFactor::eliminate_interiors(double 
       for (std::size_t s = 0; s < block.skeleton.size(); ++s) {
         const auto& row = shapes[block.skeleton[s]];
         const double value = block.schur(s, t);
-        if (row.dof >= column.dof && value != 0.0) lower.emplace_back(row.dof, column.dof, row.sign * column.sign * value);
+        if (row.dof >= column.dof && value != 0.0)
+          lower.emplace_back(row.dof, column.dof, row.sign * column.sign * value);
       }
     }
   }
@@ -189,9 +191,8 @@ Eigen::MatrixXd CondensedFactor::solve(const Eigen::MatrixXd& rhs) const {
     const CellBlock& block = *blocks_[block_of_cell_[c]];
     if (block.interior.empty()) continue;
     const auto& shapes = space_->cell_shapes(c);
-    const Eigen::MatrixXd interior =
-        block.interior_factor.solve(interior_rows(shapes, block.interior, rhs)) -
-        block.interior_solve * signed_skeleton_rows(shapes, block.skeleton, out);
+    const Eigen::MatrixXd interior = block.interior_factor.solve(interior_rows(shapes, block.interior, rhs)) -
+                                     block.interior_solve * signed_skeleton_rows(shapes, block.skeleton, out);
     for (std::size_t k = 0; k < block.interior.size(); ++k) out.row(shapes[block.interior[k]].dof) = interior.row(k);
   }
   return out;

@@ -10,8 +10,8 @@
 
 #include "linalg/distributed_cholesky.hpp"
 #include "linalg/distribution.hpp"
-#include "linalg/substructured_cholesky.hpp"
 #include "linalg/sparse_cholesky.hpp"
+#include "linalg/substructured_cholesky.hpp"
 #include "space/h1_space.hpp"
 
 namespace hpcontact::assembly {

@@ -12,21 +12,18 @@ namespace hpcontact::assembly {
 std::vector<CommonInterval> common_intervals(const mesh::ContactBoundary& contact,
                                              const mesh::BoundaryMesh& boundary_mesh) {
   if (std::abs(boundary_mesh.length() - contact.length()) > 1e-10 * contact.length())
-    throw InputError("the boundary mesh T_{C,H} spans [0, " +
-                     std::to_string(boundary_mesh.length()) + "] but Γ_C has length " +
-                     std::to_string(contact.length()));
+    throw InputError("the boundary mesh T_{C,H} spans [0, " + std::to_string(boundary_mesh.length()) +
+                     "] but Γ_C has length " + std::to_string(contact.length()));
   const auto nodes = mesh::common_refinement(contact.breakpoints(), boundary_mesh.nodes());
   std::vector<CommonInterval> intervals;
   for (std::size_t k = 0; k + 1 < nodes.size(); ++k) {
     const double middle = 0.5 * (nodes[k] + nodes[k + 1]);
-    intervals.push_back({nodes[k], nodes[k + 1], contact.edge_index_at(middle),
-                         boundary_mesh.segment_at(middle)});
+    intervals.push_back({nodes[k], nodes[k + 1], contact.edge_index_at(middle), boundary_mesh.segment_at(middle)});
   }
   return intervals;
 }
 
-Eigen::SparseMatrix<double> assemble_coupling(const space::H1Space& space,
-                                              const mesh::ContactBoundary& contact,
+Eigen::SparseMatrix<double> assemble_coupling(const space::H1Space& space, const mesh::ContactBoundary& contact,
                                               const space::MultiplierSpace& multipliers,
                                               const BoundaryFunction& weight) {
   std::vector<Eigen::Triplet<double>> triplets;
@@ -48,9 +45,9 @@ Eigen::SparseMatrix<double> assemble_coupling(const space::H1Space& space,
     for (int q = 0; q < n_points; ++q) {
       double w = rule.weights[q] * half;
       if (weight) w *= weight(mesh::Point(cell.points(q, 0), cell.points(q, 1)));
-      mu.row(q) = w * multipliers.basis_values(interval.segment,
-                                               multipliers.local_coordinate(interval.segment, s[q]))
-                          .transpose();
+      mu.row(q) =
+          w *
+          multipliers.basis_values(interval.segment, multipliers.local_coordinate(interval.segment, s[q])).transpose();
     }
     const Eigen::MatrixXd local = mu.transpose() * cell.values;  // (p_C + 1, n_shapes)
     const auto& shapes = space.cell_shapes(trace.cell);
@@ -67,8 +64,7 @@ Eigen::SparseMatrix<double> assemble_coupling(const space::H1Space& space,
 }
 
 Eigen::VectorXd assemble_multiplier_load(const mesh::ContactBoundary& contact,
-                                         const space::MultiplierSpace& multipliers,
-                                         const BoundaryFunction& g) {
+                                         const space::MultiplierSpace& multipliers, const BoundaryFunction& g) {
   Eigen::VectorXd load = Eigen::VectorXd::Zero(multipliers.n_dofs());
   for (const auto& interval : common_intervals(contact, multipliers.boundary_mesh())) {
     const int pc = multipliers.segment_degree(interval.segment);
@@ -78,8 +74,7 @@ Eigen::VectorXd assemble_multiplier_load(const mesh::ContactBoundary& contact,
       const double s = interval.s_begin + half * (rule.points[q] + 1.0);
       const double tau = multipliers.local_coordinate(interval.segment, s);
       load.segment(multipliers.first_dof(interval.segment), pc + 1) +=
-          rule.weights[q] * half * g(contact.point_at(s)) *
-          multipliers.basis_values(interval.segment, tau);
+          rule.weights[q] * half * g(contact.point_at(s)) * multipliers.basis_values(interval.segment, tau);
     }
   }
   return load;

@@ -18,15 +18,13 @@ using BoundaryFunction = std::function<double(const mesh::Point&)>;
 /// B (no weight) or B^s (weight s): shape (n_multiplier_dofs, n_primal_dofs). With a weight the
 /// rule gets 4 extra Gauss points (s is data, not a polynomial).
 /// @throws InputError if the boundary mesh does not span Γ_C.
-Eigen::SparseMatrix<double> assemble_coupling(const space::H1Space& space,
-                                              const mesh::ContactBoundary& contact,
+Eigen::SparseMatrix<double> assemble_coupling(const space::H1Space& space, const mesh::ContactBoundary& contact,
                                               const space::MultiplierSpace& multipliers,
                                               const BoundaryFunction& weight = {});
 
 /// g_i = ∫ g μ_i ds, shape (n_multiplier_dofs).
 Eigen::VectorXd assemble_multiplier_load(const mesh::ContactBoundary& contact,
-                                         const space::MultiplierSpace& multipliers,
-                                         const BoundaryFunction& g);
+                                         const space::MultiplierSpace& multipliers, const BoundaryFunction& g);
 
 /// The sub-intervals of the common refinement of T_h|Γ_C and T_{C,H}, each inside one trace
 /// edge and one segment.

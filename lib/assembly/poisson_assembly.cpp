@@ -14,21 +14,18 @@ namespace {
 
 using Triplets = std::vector<Eigen::Triplet<double>>;
 
-void scatter_matrix(const std::vector<space::LocalShape>& shapes, const Eigen::MatrixXd& local,
-                    Triplets& triplets) {
+void scatter_matrix(const std::vector<space::LocalShape>& shapes, const Eigen::MatrixXd& local, Triplets& triplets) {
   const int n = static_cast<int>(shapes.size());
   for (int s = 0; s < n; ++s) {
     if (shapes[s].dof < 0) continue;
     for (int t = 0; t < n; ++t)
-      if (shapes[t].dof >= 0 && local(s, t) != 0.0)
-        triplets.emplace_back(shapes[s].dof, shapes[t].dof, local(s, t));
+      if (shapes[t].dof >= 0 && local(s, t) != 0.0) triplets.emplace_back(shapes[s].dof, shapes[t].dof, local(s, t));
   }
 }
 
 }  // namespace
 
-VolumeMatrices assemble_volume_matrices(const space::H1Space& space,
-                                        const VolumeMatrixRequest& request) {
+VolumeMatrices assemble_volume_matrices(const space::H1Space& space, const VolumeMatrixRequest& request) {
   Triplets stiffness, mass;
   const int n = space.n_dofs();
   ElementMatrices element(space, request.kronecker_parallelograms);
@@ -50,8 +47,7 @@ VolumeMatrices assemble_volume_matrices(const space::H1Space& space,
   return out;
 }
 
-Eigen::VectorXd assemble_volume_load(const space::H1Space& space,
-                                     const std::function<double(const mesh::Point&)>& f) {
+Eigen::VectorXd assemble_volume_load(const space::H1Space& space, const std::function<double(const mesh::Point&)>& f) {
   Eigen::VectorXd load = Eigen::VectorXd::Zero(space.n_dofs());
   for (int c = 0; c < space.mesh().n_cells(); ++c) {
     // Two extra points beyond the matrices: f is general data, not a polynomial.
@@ -89,8 +85,7 @@ Eigen::VectorXd assemble_boundary_load(
     const double half_length = 0.5 * mesh.edge_length(e);
     Eigen::VectorXd weighted_g(rule.points.size());
     for (std::size_t q = 0; q < rule.points.size(); ++q)
-      weighted_g(q) = rule.weights[q] * half_length *
-                      g(mesh::Point(values.points(q, 0), values.points(q, 1)), normal);
+      weighted_g(q) = rule.weights[q] * half_length * g(mesh::Point(values.points(q, 0), values.points(q, 1)), normal);
     const Eigen::VectorXd local = values.values.transpose() * weighted_g;
     const auto& shapes = space.cell_shapes(c);
     for (std::size_t s = 0; s < shapes.size(); ++s)

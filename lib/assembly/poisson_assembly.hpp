@@ -27,17 +27,14 @@ struct VolumeMatrices {
   SparseMatrix mass;
 };
 
-VolumeMatrices assemble_volume_matrices(const space::H1Space& space,
-                                        const VolumeMatrixRequest& request);
+VolumeMatrices assemble_volume_matrices(const space::H1Space& space, const VolumeMatrixRequest& request);
 
 /// F_k = (f, φ_k), shape (n_dofs).
-Eigen::VectorXd assemble_volume_load(const space::H1Space& space,
-                                     const std::function<double(const mesh::Point&)>& f);
+Eigen::VectorXd assemble_volume_load(const space::H1Space& space, const std::function<double(const mesh::Point&)>& f);
 
 /// G_k = ∫_{edges in `parts`} g(x, n) φ_k ds with n the outward unit normal, shape (n_dofs).
 /// Used for Neumann data ∂_n u = g on Γ_N.
-Eigen::VectorXd assemble_boundary_load(
-    const space::H1Space& space, const std::set<mesh::BoundaryPart>& parts,
-    const std::function<double(const mesh::Point& x, const mesh::Point& normal)>& g);
+Eigen::VectorXd assemble_boundary_load(const space::H1Space& space, const std::set<mesh::BoundaryPart>& parts,
+                                       const std::function<double(const mesh::Point& x, const mesh::Point& normal)>& g);
 
 }  // namespace hpcontact::assembly

@@ -9,13 +9,11 @@ Eigen::VectorXd legendre_values(int n, double t) {
   Eigen::VectorXd values(n + 1);
   values(0) = 1.0;
   if (n >= 1) values(1) = t;
-  for (int k = 2; k <= n; ++k)
-    values(k) = ((2.0 * k - 1.0) * t * values(k - 1) - (k - 1.0) * values(k - 2)) / k;
+  for (int k = 2; k <= n; ++k) values(k) = ((2.0 * k - 1.0) * t * values(k - 1) - (k - 1.0) * values(k - 2)) / k;
   return values;
 }
 
-void lobatto_values(int p, double t, Eigen::Ref<Eigen::VectorXd> values,
-                    Eigen::Ref<Eigen::VectorXd> derivatives) {
+void lobatto_values(int p, double t, Eigen::Ref<Eigen::VectorXd> values, Eigen::Ref<Eigen::VectorXd> derivatives) {
   const Eigen::VectorXd legendre = legendre_values(std::max(p, 1), t);
   values(0) = 0.5 * (1.0 - t);
   derivatives(0) = -0.5;

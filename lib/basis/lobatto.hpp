@@ -16,8 +16,7 @@ Eigen::VectorXd legendre_values(int n, double t);
 /// The bubbles N_k (k ≥ 2) vanish at ±1, have H¹₀-orthonormal derivatives
 /// (∫ N_j' N_k' = δ_jk), and parity N_k(-t) = (-1)^k N_k(t), which is how edge orientation
 /// is handled. Their conditioning grows only mildly with p (tested up to p = 16).
-void lobatto_values(int p, double t, Eigen::Ref<Eigen::VectorXd> values,
-                    Eigen::Ref<Eigen::VectorXd> derivatives);
+void lobatto_values(int p, double t, Eigen::Ref<Eigen::VectorXd> values, Eigen::Ref<Eigen::VectorXd> derivatives);
 
 /// Tabulation at a set of points. Both outputs shape (n_points, p+1), row = point.
 struct Tabulation1D {

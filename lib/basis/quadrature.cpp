@@ -22,8 +22,7 @@ const QuadratureRule1D& gauss_legendre(int n) {
   QuadratureRule1D& rule = it->second;
   rule.points.resize(n);
   rule.weights.resize(n);
-  for (int i = 0; i < n; ++i)
-    gsl_integration_glfixed_point(-1.0, 1.0, i, &rule.points[i], &rule.weights[i], table);
+  for (int i = 0; i < n; ++i) gsl_integration_glfixed_point(-1.0, 1.0, i, &rule.points[i], &rule.weights[i], table);
   gsl_integration_glfixed_table_free(table);
   return rule;
 }

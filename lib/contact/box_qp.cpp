@@ -11,9 +11,8 @@
 
 namespace hpcontact::contact {
 
-double box_qp_kkt_residual(const Eigen::MatrixXd& s, const Eigen::VectorXd& d,
-                           const Eigen::VectorXd& lo, const Eigen::VectorXd& hi,
-                           const Eigen::VectorXd& x) {
+double box_qp_kkt_residual(const Eigen::MatrixXd& s, const Eigen::VectorXd& d, const Eigen::VectorXd& lo,
+                           const Eigen::VectorXd& hi, const Eigen::VectorXd& x) {
   // The projected-gradient step with step length c = 1/‖S‖_∞ carries the units of x, so the
   // residual is invariant under scaling (S, d) and the bounds independently.
   const double s_norm = s.lpNorm<Eigen::Infinity>();
@@ -34,11 +33,10 @@ enum class State : signed char { lower = -1, free = 0, upper = 1 };
 // ∇ < 0 at the lower one).
 std::vector<Eigen::Index> violations(const std::vector<State>& state, const Eigen::VectorXd& x,
                                      const Eigen::VectorXd& gradient, const Eigen::VectorXd& lo,
-                                     const Eigen::VectorXd& hi, double x_tolerance,
-                                     double gradient_tolerance) {
+                                     const Eigen::VectorXd& hi, double x_tolerance, double gradient_tolerance) {
   std::vector<Eigen::Index> out;
   for (Eigen::Index i = 0; i < x.size(); ++i) {
-    const bool bad = state[i] == State::free ? (x(i) > hi(i) + x_tolerance || x(i) < lo(i) - x_tolerance)
+    const bool bad = state[i] == State::free    ? (x(i) > hi(i) + x_tolerance || x(i) < lo(i) - x_tolerance)
                      : state[i] == State::upper ? gradient(i) > gradient_tolerance
                                                 : gradient(i) < -gradient_tolerance;
     if (bad) out.push_back(i);
@@ -47,8 +45,10 @@ std::vector<Eigen::Index> violations(const std::vector<State>& state, const Eige
 }
 
 void flip(std::vector<State>& state, Eigen::Index i, const Eigen::VectorXd& x, const Eigen::VectorXd& hi) {
-  if (state[i] != State::free) state[i] = State::free;
-  else state[i] = x(i) > hi(i) ? State::upper : State::lower;
+  if (state[i] != State::free)
+    state[i] = State::free;
+  else
+    state[i] = x(i) > hi(i) ? State::upper : State::lower;
 }
 
 // Block principal pivoting (Júdice–Pires) for  min ½ xᵀ A x − bᵀ x, lo ≤ x ≤ hi,  A positive
@@ -56,11 +56,9 @@ void flip(std::vector<State>& state, Eigen::Index i, const Eigen::VectorXd& x, c
 // that stops reducing the number of violations, Murty's least-index single flip takes over, which
 // terminates for positive definite A (plain PDAS can cycle, as seen on friction problems).
 // Returns the steps taken, or -1.
-int block_principal_pivoting(const Eigen::MatrixXd& a, const Eigen::VectorXd& b,
-                             const Eigen::VectorXd& lo, const Eigen::VectorXd& hi,
-                             Eigen::VectorXd& x, int max_steps, const Eigen::MatrixXd& s,
-                             const Eigen::VectorXd& d, std::vector<QpIteration>& log,
-                             int& step_counter) {
+int block_principal_pivoting(const Eigen::MatrixXd& a, const Eigen::VectorXd& b, const Eigen::VectorXd& lo,
+                             const Eigen::VectorXd& hi, Eigen::VectorXd& x, int max_steps, const Eigen::MatrixXd& s,
+                             const Eigen::VectorXd& d, std::vector<QpIteration>& log, int& step_counter) {
   const Eigen::Index n = x.size();
   // Start from the active sets the current point suggests (warm start across proximal steps).
   std::vector<State> state(n, State::free);
@@ -89,9 +87,12 @@ int block_principal_pivoting(const Eigen::MatrixXd& a, const Eigen::VectorXd& b,
   for (int step = 0; step < max_steps; ++step) {
     std::vector<Eigen::Index> free;
     for (Eigen::Index i = 0; i < n; ++i) {
-      if (state[i] == State::upper) x(i) = hi(i);
-      else if (state[i] == State::lower) x(i) = lo(i);
-      else free.push_back(i);
+      if (state[i] == State::upper)
+        x(i) = hi(i);
+      else if (state[i] == State::lower)
+        x(i) = lo(i);
+      else
+        free.push_back(i);
     }
     if (!free.empty()) {
       const auto m = static_cast<Eigen::Index>(free.size());
@@ -133,9 +134,8 @@ int block_principal_pivoting(const Eigen::MatrixXd& a, const Eigen::VectorXd& b,
 
 namespace {
 
-BoxQpResult solve_scaled_box_qp(const Eigen::MatrixXd& s, const Eigen::VectorXd& d,
-                         const Eigen::VectorXd& lo, const Eigen::VectorXd& hi,
-                         const BoxQpOptions& options) {
+BoxQpResult solve_scaled_box_qp(const Eigen::MatrixXd& s, const Eigen::VectorXd& d, const Eigen::VectorXd& lo,
+                                const Eigen::VectorXd& hi, const BoxQpOptions& options) {
   const Eigen::Index n = d.size();
   HPC_VERIFY(s.rows() == n && s.cols() == n && lo.size() == n && hi.size() == n, "box QP sizes");
   if ((lo.array() > hi.array()).any())
@@ -151,8 +151,8 @@ BoxQpResult solve_scaled_box_qp(const Eigen::MatrixXd& s, const Eigen::VectorXd&
   int steps = 0;
   for (int outer = 0; outer < options.max_proximal; ++outer) {
     const Eigen::VectorXd b = d + rho * result.x;
-    const int taken = block_principal_pivoting(a, b, lo, hi, result.x, options.max_newton, s, d,
-                                               result.report.log, steps);
+    const int taken =
+        block_principal_pivoting(a, b, lo, hi, result.x, options.max_newton, s, d, result.report.log, steps);
     result.report.proximal_steps = outer + 1;
     result.report.kkt_residual = box_qp_kkt_residual(s, d, lo, hi, result.x);
     if (taken < 0) break;
@@ -164,10 +164,10 @@ BoxQpResult solve_scaled_box_qp(const Eigen::MatrixXd& s, const Eigen::VectorXd&
   result.report.iterations = steps;
   result.report.method = result.report.proximal_steps > 1 ? "active-set+proximal" : "active-set";
   if (!result.report.converged)
-    throw NumericalError(fmt::format(
-        "contact QP did not converge: KKT residual {:.3e} > tolerance {:.1e} after {} active-set "
-        "steps in {} proximal steps",
-        result.report.kkt_residual, options.tolerance, steps, result.report.proximal_steps));
+    throw NumericalError(
+        fmt::format("contact QP did not converge: KKT residual {:.3e} > tolerance {:.1e} after {} active-set "
+                    "steps in {} proximal steps",
+                    result.report.kkt_residual, options.tolerance, steps, result.report.proximal_steps));
   return result;
 }
 
@@ -185,7 +185,8 @@ BoxQpResult solve_box_qp(const Eigen::MatrixXd& s, const Eigen::VectorXd& d, con
   Eigen::VectorXd scale(n);
   for (Eigen::Index i = 0; i < n; ++i) scale[i] = 1.0 / std::sqrt(s(i, i) > 1e-14 * largest ? s(i, i) : largest);
   const Eigen::MatrixXd scaled = scale.asDiagonal() * s * scale.asDiagonal();
-  auto result = solve_scaled_box_qp(scaled, scale.cwiseProduct(d), lo.cwiseQuotient(scale), hi.cwiseQuotient(scale), options);
+  auto result =
+      solve_scaled_box_qp(scaled, scale.cwiseProduct(d), lo.cwiseQuotient(scale), hi.cwiseQuotient(scale), options);
   result.x = scale.cwiseProduct(result.x);
   return result;
 }

@@ -12,10 +12,10 @@
 namespace hpcontact::contact {
 
 struct BoxQpOptions {
-  double tolerance = 1e-12;   ///< on the relative KKT residual (see BoxQpResult::kkt_residual)
-  int max_newton = 500;       ///< active-set steps per proximal subproblem
-  int max_proximal = 50;      ///< outer proximal steps
-  double proximal = 1e-10;    ///< ρ relative to max diag(S)
+  double tolerance = 1e-12;  ///< on the relative KKT residual (see BoxQpResult::kkt_residual)
+  int max_newton = 500;      ///< active-set steps per proximal subproblem
+  int max_proximal = 50;     ///< outer proximal steps
+  double proximal = 1e-10;   ///< ρ relative to max diag(S)
 };
 
 struct BoxQpResult {
@@ -38,13 +38,11 @@ struct BoxQpResult {
 /// problem (x = D y, D = diag(S)^{-1/2}), so that unknowns of very different curvature (multipliers
 /// on the segments of a geometric mesh) are resolved alike.
 /// @throws NumericalError with the residuals if it does not converge.
-BoxQpResult solve_box_qp(const Eigen::MatrixXd& s, const Eigen::VectorXd& d,
-                         const Eigen::VectorXd& lo, const Eigen::VectorXd& hi,
-                         const BoxQpOptions& options = {});
+BoxQpResult solve_box_qp(const Eigen::MatrixXd& s, const Eigen::VectorXd& d, const Eigen::VectorXd& lo,
+                         const Eigen::VectorXd& hi, const BoxQpOptions& options = {});
 
 /// The relative KKT residual of x (see BoxQpResult).
-double box_qp_kkt_residual(const Eigen::MatrixXd& s, const Eigen::VectorXd& d,
-                           const Eigen::VectorXd& lo, const Eigen::VectorXd& hi,
-                           const Eigen::VectorXd& x);
+double box_qp_kkt_residual(const Eigen::MatrixXd& s, const Eigen::VectorXd& d, const Eigen::VectorXd& lo,
+                           const Eigen::VectorXd& hi, const Eigen::VectorXd& x);
 
 }  // namespace hpcontact::contact

@@ -9,8 +9,7 @@
 
 namespace hpcontact::contact {
 
-BoundarySamples sample_boundary(const ContactSetup& setup, const ContactSolution& solution,
-                                int per_interval) {
+BoundarySamples sample_boundary(const ContactSetup& setup, const ContactSolution& solution, int per_interval) {
   const bool signorini = setup.problem == ContactProblem::signorini;
   const space::H1Space space(*setup.mesh, setup.cell_degrees);
   const mesh::ContactBoundary contact(*setup.mesh);
@@ -20,7 +19,8 @@ BoundarySamples sample_boundary(const ContactSetup& setup, const ContactSolution
   for (const auto& interval : assembly::common_intervals(contact, *setup.boundary_mesh)) {
     const auto& trace = contact.edges()[interval.trace_edge];
     const int k = interval.segment;
-    const auto coefficients = solution.lambda_legendre.segment(multipliers.first_dof(k), multipliers.segment_degree(k) + 1);
+    const auto coefficients =
+        solution.lambda_legendre.segment(multipliers.first_dof(k), multipliers.segment_degree(k) + 1);
     int in_contact = 0;
     for (int j = 0; j < per_interval; ++j) {
       const double s = interval.s_begin + (interval.s_end - interval.s_begin) * j / (per_interval - 1);

@@ -7,14 +7,13 @@
 namespace hpcontact::contact {
 
 struct BoundarySamples {
-  io::CsvTable table;           ///< x,u,obstacle,lambda (Signorini) or x,u,s,lambda (friction), plus y,s_arc
-  double contact_set_length;    ///< length of Γ_C where λ ≠ 0 (|λ| > 1e-10 max|λ|), from the samples
+  io::CsvTable table;         ///< x,u,obstacle,lambda (Signorini) or x,u,s,lambda (friction), plus y,s_arc
+  double contact_set_length;  ///< length of Γ_C where λ ≠ 0 (|λ| > 1e-10 max|λ|), from the samples
 };
 
 /// Samples every interval of the common refinement of T_h|Γ_C and T_{C,H} at `per_interval`
 /// equidistant points including both ends, so that at least that many fall in every boundary
 /// element and jumps of λ show.
-BoundarySamples sample_boundary(const ContactSetup& setup, const ContactSolution& solution,
-                                int per_interval = 20);
+BoundarySamples sample_boundary(const ContactSetup& setup, const ContactSolution& solution, int per_interval = 20);
 
 }  // namespace hpcontact::contact

@@ -11,13 +11,13 @@
 #include <numbers>
 
 #include "assembly/coupling.hpp"
-#include "contact/multiplier_constraints.hpp"
 #include "assembly/poisson_assembly.hpp"
 #include "basis/lobatto.hpp"
 #include "basis/quadrature.hpp"
+#include "contact/multiplier_constraints.hpp"
 #include "core/error.hpp"
-#include "core/timer.hpp"
 #include "core/operator_log.hpp"
+#include "core/timer.hpp"
 #include "mesh/contact_boundary.hpp"
 #include "space/multiplier_space.hpp"
 
@@ -36,8 +36,10 @@ int segment_constraint_points(ContactProblem problem, int pc, std::optional<int>
   if (problem != ContactProblem::friction_s && pc <= 1) return pc + 1;
   const int q = requested.value_or(pc + 1);
   if (q < pc + 1)
-    throw InputError(fmt::format("{} constraint points per segment are fewer than p_C + 1 = {} "
-                                 "(Remark 3 needs at least p_C + 1)", q, pc + 1));
+    throw InputError(
+        fmt::format("{} constraint points per segment are fewer than p_C + 1 = {} "
+                    "(Remark 3 needs at least p_C + 1)",
+                    q, pc + 1));
   return q;
 }
 
@@ -59,8 +61,8 @@ const Eigen::VectorXd& load_vector(const ContactSetup& setup, const operators::P
   auto assemble = [&] {
     Eigen::VectorXd load = assembly::assemble_volume_load(primal.space(), setup.f);
     if (setup.traction)
-      load += assembly::assemble_boundary_load(primal.space(), {mesh::BoundaryPart::neumann, mesh::BoundaryPart::contact},
-                                               setup.traction);
+      load += assembly::assemble_boundary_load(
+          primal.space(), {mesh::BoundaryPart::neumann, mesh::BoundaryPart::contact}, setup.traction);
     return load;
   };
   if (!setup.load_key.empty()) return primal.derived_vector("F", setup.load_key, assemble);
@@ -88,14 +90,15 @@ void solve_multiplier_qp(const ContactSetup& setup, const Eigen::MatrixXd& s, co
     }
   }
   try {
-    auto result = solve_inequality_qp(s, d, constraints.matrix, constraints.lower, constraints.upper,
-                                      setup.interior_point);
+    auto result =
+        solve_inequality_qp(s, d, constraints.matrix, constraints.lower, constraints.upper, setup.interior_point);
     out.lambda = result.x;
     out.constraint_multiplier = result.y;
     out.qp = std::move(result.report);
     out.qp.fallback_reason = fallback_reason;
   } catch (const NumericalError& error) {
-    throw NumericalError(fallback_reason.empty() ? std::string(error.what()) : fallback_reason + "; then " + error.what());
+    throw NumericalError(fallback_reason.empty() ? std::string(error.what())
+                                                 : fallback_reason + "; then " + error.what());
   }
 }
 
@@ -126,7 +129,8 @@ ContactSolution solve_contact(const ContactSetup& setup) {
   Eigen::VectorXd gap_offset = Eigen::VectorXd::Zero(multipliers.n_dofs());
   if (signorini) {
     Stopwatch obstacle_clock;
-    gap_offset = constraints.to_nodal * assembly::assemble_multiplier_load(primal.contact(), multipliers, setup.obstacle);
+    gap_offset =
+        constraints.to_nodal * assembly::assemble_multiplier_load(primal.contact(), multipliers, setup.obstacle);
     if (log) log->record("g", multipliers.n_dofs(), 1, obstacle_clock.seconds());
   }
   out.seconds.assembly = assembly_clock.seconds();

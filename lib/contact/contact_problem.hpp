@@ -45,12 +45,12 @@ struct ContactSetup {
   const mesh::BoundaryMesh* boundary_mesh = nullptr;
   std::vector<int> segment_degrees;
   ContactProblem problem = ContactProblem::signorini;
-  PointFunction f;          ///< volume load
+  PointFunction f;  ///< volume load
   /// Names f and the traction: problems solved on the same `primal` with the same non-empty key
   /// share the assembled F. Empty: F is assembled for this solve alone.
   std::string load_key;
-  PointFunction obstacle;   ///< g, Signorini only
-  PointFunction bound;      ///< s, friction problems only (s ≥ 0)
+  PointFunction obstacle;  ///< g, Signorini only
+  PointFunction bound;     ///< s, friction problems only (s ≥ 0)
   /// Optional boundary traction t(x, n) on Γ_N and Γ_C, added to the load as ∫ t v ds (Neumann
   /// data; on Γ_C a prescribed traction besides the contact force, used by manufactured tests).
   std::function<double(const mesh::Point& x, const mesh::Point& normal)> traction;
@@ -66,7 +66,7 @@ struct ContactSetup {
 };
 
 struct ContactSolution {
-  Eigen::VectorXd u;                 ///< coefficients on S^p(T_h)
+  Eigen::VectorXd u;  ///< coefficients on S^p(T_h)
   /// λ in the Lagrange basis: its values at the constraint points, segment by segment.
   Eigen::VectorXd lambda;
   /// The same λ in the Legendre basis of MultiplierSpace (for evaluation anywhere on Γ_C).
@@ -75,8 +75,8 @@ struct ContactSolution {
   /// diagonal by segment (the identity where the nodal points are the constraint points).
   Eigen::MatrixXd constraint_matrix;
   Eigen::VectorXd lower, upper;
-  std::vector<double> constraint_s;       ///< arc length of each constraint point
-  std::vector<int> constraint_points;     ///< constraint points used on each segment
+  std::vector<double> constraint_s;    ///< arc length of each constraint point
+  std::vector<int> constraint_points;  ///< constraint points used on each segment
   /// Multiplier y_j of each constraint row, Cᵀ y = gap: y_j > 0 where λ(τ_j) is held at its
   /// upper bound, < 0 at its lower one, 0 where it is free.
   Eigen::VectorXd constraint_multiplier;
@@ -87,7 +87,7 @@ struct ContactSolution {
   /// gap d − S λ, the scale against which a gap or a multiplier y is small (the gap itself may
   /// vanish, e.g. on a contact set covering Γ_C or an obstacle touching tangentially).
   double gap_scale = 0.0;
-  double energy = 0.0;               ///< E(u) = ½ uᵀKu − Fᵀu
+  double energy = 0.0;  ///< E(u) = ½ uᵀKu − Fᵀu
   QpReport qp;
   int n_trace = 0;  ///< trace dofs the condensation works on (ordered last in the factor)
   struct Seconds {

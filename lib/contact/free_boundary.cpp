@@ -25,7 +25,8 @@ std::vector<FreeBoundaryPoint> locate_free_boundary(const ContactSolution& solut
   };
   std::vector<int> order(n);
   for (int j = 0; j < n; ++j) order[j] = j;
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return solution.constraint_s[a] < solution.constraint_s[b]; });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return solution.constraint_s[a] < solution.constraint_s[b]; });
 
   std::vector<FreeBoundaryPoint> points;
   for (int k = 0; k + 1 < n; ++k) {
@@ -39,7 +40,8 @@ std::vector<FreeBoundaryPoint> locate_free_boundary(const ContactSolution& solut
       const int step = status_a == 0 ? -1 : 1;
       const int first = status_a == 0 ? k : k + 1;
       int second = first + step;
-      while (second >= 0 && second < n && std::abs(solution.constraint_s[order[second]] - solution.constraint_s[order[first]]) <= 1e-14)
+      while (second >= 0 && second < n &&
+             std::abs(solution.constraint_s[order[second]] - solution.constraint_s[order[first]]) <= 1e-14)
         second += step;
       const double s_held = status_a == 0 ? s_b : s_a, s_free = solution.constraint_s[order[first]];
       double estimate = 0.5 * (s_a + s_b);

@@ -18,9 +18,8 @@ namespace hpcontact::contact {
 
 double InequalityKkt::max() const { return std::max({stationarity, feasibility, complementarity, sign}); }
 
-InequalityKkt inequality_qp_kkt(const Eigen::MatrixXd& s, const Eigen::VectorXd& d,
-                                const Eigen::MatrixXd& c, const Eigen::VectorXd& lo,
-                                const Eigen::VectorXd& hi, const Eigen::VectorXd& x,
+InequalityKkt inequality_qp_kkt(const Eigen::MatrixXd& s, const Eigen::VectorXd& d, const Eigen::MatrixXd& c,
+                                const Eigen::VectorXd& lo, const Eigen::VectorXd& hi, const Eigen::VectorXd& x,
                                 const Eigen::VectorXd& y) {
   InequalityKkt kkt;
   const Eigen::VectorXd cx = c * x;
@@ -37,19 +36,23 @@ InequalityKkt inequality_qp_kkt(const Eigen::MatrixXd& s, const Eigen::VectorXd&
   const double s_norm = s.lpNorm<Eigen::Infinity>();
   const double value_scale =
       c_norm * x_norm + bound_norm + (s_norm > 0 ? c_norm * d.lpNorm<Eigen::Infinity>() / s_norm : 0.0);
-  const double stationarity_scale =
-      d.lpNorm<Eigen::Infinity>() + s.lpNorm<Eigen::Infinity>() * x_norm + c.transpose().lpNorm<Eigen::Infinity>() * y_norm;
+  const double stationarity_scale = d.lpNorm<Eigen::Infinity>() + s.lpNorm<Eigen::Infinity>() * x_norm +
+                                    c.transpose().lpNorm<Eigen::Infinity>() * y_norm;
   kkt.stationarity = relative((s * x - d + c.transpose() * y).lpNorm<Eigen::Infinity>(), stationarity_scale);
   if (!std::isfinite(kkt.stationarity)) kkt.stationarity = std::numeric_limits<double>::infinity();
   double infeasible = 0.0, complementary = 0.0, wrong_sign = 0.0;
   for (Eigen::Index j = 0; j < c.rows(); ++j) {
     infeasible = std::max({infeasible, cx(j) - hi(j), lo(j) - cx(j)});
     if (y(j) > 0) {  // pushes C x down: only an active upper bound may do that
-      if (std::isfinite(hi(j))) complementary = std::max(complementary, y(j) * std::abs(hi(j) - cx(j)));
-      else wrong_sign = std::max(wrong_sign, y(j));
+      if (std::isfinite(hi(j)))
+        complementary = std::max(complementary, y(j) * std::abs(hi(j) - cx(j)));
+      else
+        wrong_sign = std::max(wrong_sign, y(j));
     } else if (y(j) < 0) {
-      if (std::isfinite(lo(j))) complementary = std::max(complementary, -y(j) * std::abs(cx(j) - lo(j)));
-      else wrong_sign = std::max(wrong_sign, -y(j));
+      if (std::isfinite(lo(j)))
+        complementary = std::max(complementary, -y(j) * std::abs(cx(j) - lo(j)));
+      else
+        wrong_sign = std::max(wrong_sign, -y(j));
     }
   }
   kkt.feasibility = relative(std::max(infeasible, 0.0), value_scale);
@@ -84,7 +87,8 @@ struct OneSidedForm {
   OneSidedForm(const Eigen::MatrixXd& c, const Eigen::VectorXd& lo, const Eigen::VectorXd& hi) : rows(c.rows()) {
     for (Eigen::Index j = 0; j < rows; ++j) {
       if (!(lo(j) <= hi(j)))
-        throw NumericalError(fmt::format("inequality QP: row {} has lower bound {} above upper bound {}", j, lo(j), hi(j)));
+        throw NumericalError(
+            fmt::format("inequality QP: row {} has lower bound {} above upper bound {}", j, lo(j), hi(j)));
       if (lo(j) == hi(j)) {
         e_row.push_back(j);
         continue;
@@ -121,7 +125,8 @@ struct Iterate {
   /// interior-point analogue of an active set, whose changes the log reports.
   std::vector<bool> predicted_active() const {
     std::vector<bool> active(static_cast<std::size_t>(z.size()));
-    for (Eigen::Index i = 0; i < z.size(); ++i) active[static_cast<std::size_t>(i)] = slack(i) * force_scale < z(i) * value_scale;
+    for (Eigen::Index i = 0; i < z.size(); ++i)
+      active[static_cast<std::size_t>(i)] = slack(i) * force_scale < z(i) * value_scale;
     return active;
   }
 };
@@ -238,9 +243,9 @@ void predictor_corrector_step(const NewtonSystem& newton, Iterate& it) {
 
 }  // namespace
 
-InequalityQpResult solve_inequality_qp(const Eigen::MatrixXd& s, const Eigen::VectorXd& d,
-                                       const Eigen::MatrixXd& c, const Eigen::VectorXd& lo,
-                                       const Eigen::VectorXd& hi, const InequalityQpOptions& options) {
+InequalityQpResult solve_inequality_qp(const Eigen::MatrixXd& s, const Eigen::VectorXd& d, const Eigen::MatrixXd& c,
+                                       const Eigen::VectorXd& lo, const Eigen::VectorXd& hi,
+                                       const InequalityQpOptions& options) {
   const Eigen::Index n = d.size(), rows = c.rows();
   HPC_VERIFY(s.rows() == n && s.cols() == n && c.cols() == n && lo.size() == rows && hi.size() == rows,
              "inequality QP sizes");
@@ -268,11 +273,11 @@ InequalityQpResult solve_inequality_qp(const Eigen::MatrixXd& s, const Eigen::Ve
     result.report.log.push_back({iteration, changes, result.report.kkt_residual});
   }
   if (!result.report.converged)
-    throw NumericalError(fmt::format(
-        "contact QP (interior point) did not converge in {} iterations: relative KKT residuals "
-        "stationarity {:.2e}, feasibility {:.2e}, complementarity {:.2e}, sign {:.2e} (tolerance {:.1e})",
-        options.max_iterations, result.kkt.stationarity, result.kkt.feasibility,
-        result.kkt.complementarity, result.kkt.sign, options.tolerance));
+    throw NumericalError(
+        fmt::format("contact QP (interior point) did not converge in {} iterations: relative KKT residuals "
+                    "stationarity {:.2e}, feasibility {:.2e}, complementarity {:.2e}, sign {:.2e} (tolerance {:.1e})",
+                    options.max_iterations, result.kkt.stationarity, result.kkt.feasibility, result.kkt.complementarity,
+                    result.kkt.sign, options.tolerance));
   return result;
 }
 

@@ -41,13 +41,12 @@ struct InequalityQpResult {
 /// dense SPD system of the size of x. Where S is singular the iterates follow the central path,
 /// so x converges to the analytic centre of the solution set: a valid, not a spurious, multiplier.
 /// @throws NumericalError with the residuals if it does not converge.
-InequalityQpResult solve_inequality_qp(const Eigen::MatrixXd& s, const Eigen::VectorXd& d,
-                                       const Eigen::MatrixXd& c, const Eigen::VectorXd& lo,
-                                       const Eigen::VectorXd& hi, const InequalityQpOptions& options = {});
+InequalityQpResult solve_inequality_qp(const Eigen::MatrixXd& s, const Eigen::VectorXd& d, const Eigen::MatrixXd& c,
+                                       const Eigen::VectorXd& lo, const Eigen::VectorXd& hi,
+                                       const InequalityQpOptions& options = {});
 
-InequalityKkt inequality_qp_kkt(const Eigen::MatrixXd& s, const Eigen::VectorXd& d,
-                                const Eigen::MatrixXd& c, const Eigen::VectorXd& lo,
-                                const Eigen::VectorXd& hi, const Eigen::VectorXd& x,
+InequalityKkt inequality_qp_kkt(const Eigen::MatrixXd& s, const Eigen::VectorXd& d, const Eigen::MatrixXd& c,
+                                const Eigen::VectorXd& lo, const Eigen::VectorXd& hi, const Eigen::VectorXd& x,
                                 const Eigen::VectorXd& y);
 
 }  // namespace hpcontact::contact

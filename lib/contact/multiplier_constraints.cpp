@@ -47,8 +47,8 @@ SegmentConstraints segment_constraints(const ContactSetup& setup, const mesh::Co
     }
     const double bound = setup.bound(contact.point_at(s));
     if (!(bound >= 0.0))
-      throw InputError(fmt::format("friction bound s = {} at x = {}: s must be >= 0 (and finite)", bound,
-                                   contact.point_at(s).x()));
+      throw InputError(
+          fmt::format("friction bound s = {} at x = {}: s must be >= 0 (and finite)", bound, contact.point_at(s).x()));
     // (13): |λ| ≤ 1 on supp s, λ = 0 off it; (15): |λ| ≤ s.
     const double limit = setup.problem == ContactProblem::friction ? (in_support ? 1.0 : 0.0) : bound;
     segment.lower.push_back(-limit);

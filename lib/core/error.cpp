@@ -6,8 +6,8 @@
 
 namespace hpcontact {
 
-std::string describe_bad_input(const std::string& where, const std::string& key,
-                               const std::string& value, const std::string& allowed) {
+std::string describe_bad_input(const std::string& where, const std::string& key, const std::string& value,
+                               const std::string& allowed) {
   std::string message = where.empty() ? std::string() : where + ": ";
   message += "key '" + key + "' = " + value + ": " + allowed;
   return message;

@@ -34,19 +34,19 @@ std::string describe_io_failure(const std::string& what, const std::string& path
 int exit_code_of(const std::exception& error);
 
 /// Builds the standard message "<where>: key '<key>' = <value>: <allowed>".
-std::string describe_bad_input(const std::string& where, const std::string& key,
-                               const std::string& value, const std::string& allowed);
+std::string describe_bad_input(const std::string& where, const std::string& key, const std::string& value,
+                               const std::string& allowed);
 
 /// Throws InputError with describe_bad_input(...).
-[[noreturn]] void throw_bad_input(const std::string& where, const std::string& key,
-                                  const std::string& value, const std::string& allowed);
+[[noreturn]] void throw_bad_input(const std::string& where, const std::string& key, const std::string& value,
+                                  const std::string& allowed);
 
 }  // namespace hpcontact
 
 /// Always-on check of an internal invariant (a bug if it fails, not bad input).
-#define HPC_VERIFY(condition, message)                                                  \
-  do {                                                                                  \
-    if (!(condition))                                                                   \
-      throw std::logic_error(std::string(__FILE__) + ":" + std::to_string(__LINE__) +   \
-                             ": internal error: " + (message));                         \
+#define HPC_VERIFY(condition, message)                                                \
+  do {                                                                                \
+    if (!(condition))                                                                 \
+      throw std::logic_error(std::string(__FILE__) + ":" + std::to_string(__LINE__) + \
+                             ": internal error: " + (message));                       \
   } while (false)

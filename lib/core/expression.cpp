@@ -28,8 +28,7 @@ struct Expression::Impl {
   mu::Parser parser;
 };
 
-Expression::Expression(const std::string& text, const std::string& origin)
-    : impl_(std::make_shared<Impl>()) {
+Expression::Expression(const std::string& text, const std::string& origin) : impl_(std::make_shared<Impl>()) {
   impl_->text = text;
   impl_->origin = origin;
   try {
@@ -41,8 +40,8 @@ Expression::Expression(const std::string& text, const std::string& origin)
     // muparser parses lazily: evaluate once so that syntax errors surface here.
     impl_->parser.Eval();
   } catch (const mu::Parser::exception_type& error) {
-    throw InputError(origin + ": expression \"" + shortened(text) + "\" does not parse: " +
-                     error.GetMsg() + " (variables: x, y; constants: pi, e)");
+    throw InputError(origin + ": expression \"" + shortened(text) + "\" does not parse: " + error.GetMsg() +
+                     " (variables: x, y; constants: pi, e)");
   }
 }
 
@@ -57,9 +56,9 @@ double Expression::operator()(double x, double y) const {
                      "\" failed to evaluate: " + error.GetMsg());
   }
   if (!std::isfinite(value)) {
-    throw InputError(impl_->origin + ": expression \"" + shortened(impl_->text) + "\" is " +
-                     std::to_string(value) + " at (x, y) = (" + std::to_string(x) + ", " +
-                     std::to_string(y) + "): it must be finite on the whole domain");
+    throw InputError(impl_->origin + ": expression \"" + shortened(impl_->text) + "\" is " + std::to_string(value) +
+                     " at (x, y) = (" + std::to_string(x) + ", " + std::to_string(y) +
+                     "): it must be finite on the whole domain");
   }
   return value;
 }

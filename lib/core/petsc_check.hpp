@@ -12,13 +12,12 @@ namespace hpcontact::detail {
 
 /// Throws NumericalError naming the failed expression, PETSc's text for `code` and the specific
 /// message of the error as first raised (e.g. "Zero pivot in row 3").
-[[noreturn]] inline void throw_petsc_error(PetscErrorCode code, const char* expression,
-                                           const char* file, int line) {
+[[noreturn]] inline void throw_petsc_error(PetscErrorCode code, const char* expression, const char* file, int line) {
   const char* generic = nullptr;
   char* specific = nullptr;
   PetscErrorMessage(code, &generic, &specific);
-  std::string message = std::string("PETSc error ") + std::to_string(static_cast<int>(code)) +
-                        " in '" + expression + "' (" + file + ":" + std::to_string(line) + ")";
+  std::string message = std::string("PETSc error ") + std::to_string(static_cast<int>(code)) + " in '" + expression +
+                        "' (" + file + ":" + std::to_string(line) + ")";
   if (generic != nullptr) message += ": " + std::string(generic);
   if (specific != nullptr && specific[0] != '\0') message += ": " + std::string(specific);
   throw NumericalError(message);
@@ -27,11 +26,10 @@ namespace hpcontact::detail {
 }  // namespace hpcontact::detail
 
 /// Evaluates a PETSc/SLEPc call once; a non-zero error code throws hpcontact::NumericalError.
-#define HPC_PETSC_CALL(expr)                                                              \
-  do {                                                                                    \
-    const PetscErrorCode hpc_petsc_code_ = (expr);                                        \
-    if (hpc_petsc_code_ != 0)                                                             \
-      ::hpcontact::detail::throw_petsc_error(hpc_petsc_code_, #expr, __FILE__, __LINE__); \
+#define HPC_PETSC_CALL(expr)                                                                                      \
+  do {                                                                                                            \
+    const PetscErrorCode hpc_petsc_code_ = (expr);                                                                \
+    if (hpc_petsc_code_ != 0) ::hpcontact::detail::throw_petsc_error(hpc_petsc_code_, #expr, __FILE__, __LINE__); \
   } while (false)
 
 namespace hpcontact {
@@ -41,9 +39,7 @@ namespace hpcontact {
 /// already holds PETSc's text. The previous handler is restored on destruction.
 class ScopedPetscErrorsAsCodes {
  public:
-  ScopedPetscErrorsAsCodes() {
-    HPC_PETSC_CALL(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr));
-  }
+  ScopedPetscErrorsAsCodes() { HPC_PETSC_CALL(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr)); }
   ~ScopedPetscErrorsAsCodes() { PetscPopErrorHandler(); }
   ScopedPetscErrorsAsCodes(const ScopedPetscErrorsAsCodes&) = delete;
   ScopedPetscErrorsAsCodes& operator=(const ScopedPetscErrorsAsCodes&) = delete;

@@ -2,7 +2,6 @@
 #include "core/petsc_session.hpp"
 
 #include <mpi.h>
-
 #include <slepcsys.h>
 
 #include <algorithm>
@@ -43,14 +42,12 @@ SplitCommandLine split_petsc_options(int argc, const char* const* argv) {
   return split;
 }
 
-PetscSession::PetscSession(const std::vector<std::string>& petsc_arguments)
-    : storage_(petsc_arguments) {
+PetscSession::PetscSession(const std::vector<std::string>& petsc_arguments) : storage_(petsc_arguments) {
   for (auto& argument : storage_) argv_.push_back(argument.data());
   argv_.push_back(nullptr);
   int argc = static_cast<int>(storage_.size());
   char** argv = argv_.data();
-  if (SlepcInitialize(&argc, &argv, nullptr, nullptr) != 0)
-    throw std::runtime_error("SlepcInitialize failed");
+  if (SlepcInitialize(&argc, &argv, nullptr, nullptr) != 0) throw std::runtime_error("SlepcInitialize failed");
 }
 
 PetscSession::~PetscSession() { SlepcFinalize(); }

@@ -46,10 +46,14 @@ void run_on_all_ranks_agreeing(const std::function<void()>& work) {
   if (first != 0) message = "on rank " + std::to_string(first) + ": " + message;
   agreed = true;
   switch (shared_code) {
-    case 2: throw InputError(message);
-    case 3: throw NumericalError(message);
-    case 4: throw IoError(message);
-    default: throw std::runtime_error(message);
+    case 2:
+      throw InputError(message);
+    case 3:
+      throw NumericalError(message);
+    case 4:
+      throw IoError(message);
+    default:
+      throw std::runtime_error(message);
   }
 }
 

@@ -26,7 +26,8 @@ std::vector<double> cluster_transitions(const std::vector<contact::FreeBoundaryP
   std::vector<double> located;
   for (std::size_t begin = 0, end = 0; begin < points.size(); begin = end) {
     end = begin + 1;
-    while (end < points.size() && points[end].s - points[end - 1].s <= std::max(reach(points[end - 1].s), reach(points[end].s)))
+    while (end < points.size() &&
+           points[end].s - points[end - 1].s <= std::max(reach(points[end - 1].s), reach(points[end].s)))
       ++end;
     if ((end - begin) % 2 == 1) located.push_back(points[(begin + end) / 2].s);
   }
@@ -55,7 +56,8 @@ FreeBoundaryFit fit_free_boundary(const scene::Scene& scene, const std::vector<c
     std::vector<double> located;
     for (const auto problem : problems) {
       const auto solution = contact::solve_contact(contact_setup_of(fit.scene, *d, problem, primal));
-      for (double s : cluster_transitions(contact::locate_free_boundary(solution), *d->boundary_mesh, tolerance * contact.length()))
+      for (double s : cluster_transitions(contact::locate_free_boundary(solution), *d->boundary_mesh,
+                                          tolerance * contact.length()))
         if (std::none_of(scene.grading_points.begin(), scene.grading_points.end(),
                          [&](const mesh::Point& given) { return (given - contact.point_at(s)).norm() < coarse_cell; }))
           located.push_back(s);
@@ -73,7 +75,8 @@ FreeBoundaryFit fit_free_boundary(const scene::Scene& scene, const std::vector<c
     located = merged;
     if (located.size() == fitted_s.size()) {
       fit.moved = 0.0;
-      for (std::size_t k = 0; k < located.size(); ++k) fit.moved = std::max(fit.moved, std::abs(located[k] - fitted_s[k]));
+      for (std::size_t k = 0; k < located.size(); ++k)
+        fit.moved = std::max(fit.moved, std::abs(located[k] - fitted_s[k]));
       if (fit.moved <= tolerance * contact.length()) {
         fit.scene.grading_layers = scene.grading_layers;
         return fit;
@@ -85,9 +88,10 @@ FreeBoundaryFit fit_free_boundary(const scene::Scene& scene, const std::vector<c
     fit.scene.grading_points = scene.grading_points;
     fit.scene.grading_points.insert(fit.scene.grading_points.end(), fit.points.begin(), fit.points.end());
   }
-  throw NumericalError(fmt::format("{}: the free boundary did not settle in {} solves (last move {:.3g} in arc length, "
-                                   "tolerance {:.3g} · |Γ_C|); more grading layers or a higher degree resolve it better",
-                                   scene.file, max_solves, fit.moved, tolerance));
+  throw NumericalError(
+      fmt::format("{}: the free boundary did not settle in {} solves (last move {:.3g} in arc length, "
+                  "tolerance {:.3g} · |Γ_C|); more grading layers or a higher degree resolve it better",
+                  scene.file, max_solves, fit.moved, tolerance));
 }
 
 }  // namespace hpcontact::driver

@@ -7,17 +7,17 @@
 
 #include <vector>
 
+#include "driver/scene_discretization.hpp"
 #include "scene/scene_mesh.hpp"
 #include "scene/scene_reader.hpp"
-#include "driver/scene_discretization.hpp"
 
 namespace hpcontact::driver {
 
 struct FreeBoundaryFit {
-  scene::Scene scene;                  ///< the input scene with the fitted points added to domain.grading_points
+  scene::Scene scene;               ///< the input scene with the fitted points added to domain.grading_points
   std::vector<mesh::Point> points;  ///< the fitted free-boundary points, in order along Γ_C
   double moved = 0.0;               ///< arc length the points moved in the last iteration
-  int solves = 0;  ///< rounds: each solves every problem once
+  int solves = 0;                   ///< rounds: each solves every problem once
 };
 
 /// Solves each of `problems` on the scene, adds the located free-boundary points of all of them

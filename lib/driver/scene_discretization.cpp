@@ -13,7 +13,8 @@
 namespace hpcontact::driver {
 
 std::unique_ptr<SceneDiscretization> discretize_scene(const scene::Scene& scene) {
-  auto d = std::make_unique<SceneDiscretization>(SceneDiscretization{scene::build_scene_mesh(scene), {}, {}, {}, {}, {}});
+  auto d =
+      std::make_unique<SceneDiscretization>(SceneDiscretization{scene::build_scene_mesh(scene), {}, {}, {}, {}, {}});
   d->contact = std::make_unique<mesh::ContactBoundary>(d->mesh);
   d->boundary_mesh = std::make_unique<mesh::BoundaryMesh>(scene::build_scene_boundary_mesh(scene, *d->contact));
   d->cell_degrees = scene::scene_cell_degrees(scene, d->mesh);
@@ -58,7 +59,8 @@ contact::ContactSetup contact_setup_of(const scene::Scene& scene, const SceneDis
   else
     setup.bound = function_of(scene.friction_bound, scene.where("data.s") + ": key 'data.s'");
   if (setup.bound)  // s ≥ 0 is part of the data's contract: report it against the scene's key
-    setup.bound = [bound = setup.bound, file = scene.where("data.s"), text = scene.friction_bound](const mesh::Point& x) {
+    setup.bound = [bound = setup.bound, file = scene.where("data.s"),
+                   text = scene.friction_bound](const mesh::Point& x) {
       const double value = bound(x);
       if (value < 0)
         throw_bad_input(file, "data.s", fmt::format("\"{}\" = {} at (x, y) = ({}, {})", text, value, x.x(), x.y()),
@@ -80,9 +82,9 @@ std::function<double(double)> multiplier_error_weight(const scene::Scene& scene,
   };
 }
 
-infsup::InfSupSetup infsup_setup_of(const scene::Scene& scene, const mesh::QuadMesh& mesh, std::vector<int> cell_degrees,
-                                    const mesh::BoundaryMesh& boundary_mesh, std::vector<int> segment_degrees,
-                                    const operators::PrimalOperators& primal) {
+infsup::InfSupSetup infsup_setup_of(const scene::Scene& scene, const mesh::QuadMesh& mesh,
+                                    std::vector<int> cell_degrees, const mesh::BoundaryMesh& boundary_mesh,
+                                    std::vector<int> segment_degrees, const operators::PrimalOperators& primal) {
   infsup::InfSupSetup setup;
   setup.mesh = &mesh;
   setup.cell_degrees = std::move(cell_degrees);
@@ -101,8 +103,7 @@ infsup::InfSupSetup infsup_setup_of(const scene::Scene& scene, const mesh::QuadM
   return setup;
 }
 
-SceneContactRun solve_scene_contact(const scene::Scene& scene, contact::ContactProblem problem,
-                                    OperatorLog* log) {
+SceneContactRun solve_scene_contact(const scene::Scene& scene, contact::ContactProblem problem, OperatorLog* log) {
   Stopwatch clock;
   SceneContactRun run;
   run.discretization = discretize_scene(scene);

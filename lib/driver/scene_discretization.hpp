@@ -22,10 +22,10 @@ namespace hpcontact::driver {
 
 struct SceneDiscretization {
   mesh::QuadMesh mesh;
-  std::unique_ptr<mesh::ContactBoundary> contact;        ///< refers to `mesh`
+  std::unique_ptr<mesh::ContactBoundary> contact;  ///< refers to `mesh`
   std::unique_ptr<mesh::BoundaryMesh> boundary_mesh;
   std::vector<int> cell_degrees, segment_degrees;
-  std::unique_ptr<space::MultiplierSpace> multipliers;   ///< M^{p_C}(T_{C,H}), refers to boundary_mesh
+  std::unique_ptr<space::MultiplierSpace> multipliers;  ///< M^{p_C}(T_{C,H}), refers to boundary_mesh
 };
 
 /// Builds the meshes and degrees. Held by pointer: its parts refer to each other.
@@ -42,15 +42,16 @@ contact::ContactSetup contact_setup_of(const scene::Scene& scene, const SceneDis
 /// The weight of the norm in which multiplier errors of `problem` are measured, as a function of
 /// the arc length on Γ_C: s for (13), where the data determine only sλ (λ itself not where s
 /// vanishes, so ‖λ_H − λ‖ would measure an undetermined part); none (L²) for (9) and (15).
-std::function<double(double)> multiplier_error_weight(const scene::Scene& scene, const SceneDiscretization& discretization,
+std::function<double(double)> multiplier_error_weight(const scene::Scene& scene,
+                                                      const SceneDiscretization& discretization,
                                                       contact::ContactProblem problem);
 
 /// The inf-sup pairing of the scene ([infsup] problem: (11), or (22) with the scene's s) in its
 /// H^{-1/2} realization ([infsup] norm) on T_h (`mesh`, `cell_degrees`) and T_{C,H}
 /// (`boundary_mesh`, `segment_degrees`); `primal` must belong to T_h.
-infsup::InfSupSetup infsup_setup_of(const scene::Scene& scene, const mesh::QuadMesh& mesh, std::vector<int> cell_degrees,
-                                    const mesh::BoundaryMesh& boundary_mesh, std::vector<int> segment_degrees,
-                                    const operators::PrimalOperators& primal);
+infsup::InfSupSetup infsup_setup_of(const scene::Scene& scene, const mesh::QuadMesh& mesh,
+                                    std::vector<int> cell_degrees, const mesh::BoundaryMesh& boundary_mesh,
+                                    std::vector<int> segment_degrees, const operators::PrimalOperators& primal);
 
 /// One contact problem of a scene, solved from scratch with its own operators.
 struct SceneContactRun {

@@ -10,14 +10,14 @@
 #include "contact/multiplier_distance.hpp"
 #include "core/operator_log.hpp"
 #include "core/petsc_session.hpp"
+#include "core/rank_agreement.hpp"
 #include "core/timer.hpp"
+#include "driver/free_boundary_fit.hpp"
 #include "infsup/infsup_analysis.hpp"
 #include "io/atomic_file.hpp"
-#include "core/rank_agreement.hpp"
 #include "io/csv_writer.hpp"
 #include "io/output_folder.hpp"
 #include "io/vtu_writer.hpp"
-#include "driver/free_boundary_fit.hpp"
 
 namespace hpcontact::driver {
 namespace {
@@ -52,19 +52,16 @@ nlohmann::json contact_summary(const ContactEffect& effect) {
                                   {"active_set_changes", step.active_set_changes},
                                   {"kkt_residual", step.kkt_residual}});
   j["n_trace"] = solution.n_trace;
-  j["seconds"] = {{"assembly", solution.seconds.assembly},
-                  {"factorization", solution.seconds.factorization},
-                  {"condensation", solution.seconds.condensation},
-                  {"contact_qp", solution.seconds.qp},
-                  {"recovery", solution.seconds.recovery},
-                  {"total", effect.seconds}};
+  j["seconds"] = {{"assembly", solution.seconds.assembly},         {"factorization", solution.seconds.factorization},
+                  {"condensation", solution.seconds.condensation}, {"contact_qp", solution.seconds.qp},
+                  {"recovery", solution.seconds.recovery},         {"total", effect.seconds}};
   return j;
 }
 
 // Every contact problem of the scene on one discretization, sharing `primal`.
 std::vector<ContactEffect> solve_contact_effects(const scene::Scene& scene, const SceneDiscretization& d,
-                                                 const operators::PrimalOperators& primal, const SceneRunOptions& options,
-                                                 const std::string& where) {
+                                                 const operators::PrimalOperators& primal,
+                                                 const SceneRunOptions& options, const std::string& where) {
   std::vector<ContactEffect> effects;
   for (const auto problem : scene.contact_effects()) {
     const std::string name = scene::to_string(scene::effect_of(problem));
@@ -82,8 +79,9 @@ std::vector<ContactEffect> solve_contact_effects(const scene::Scene& scene, cons
 // The convergence effect: the scene's contact problems on `convergence_refinements` uniform
 // refinements beyond its own mesh, each level with its own operators shared by its problems; the
 // finest level is the reference for the errors of the others.
-void add_convergence_rows(const scene::Scene& scene, const std::vector<ContactEffect>& base, const SceneDiscretization& base_mesh,
-                          const SceneRunOptions& options, OperatorLog& log, io::CsvTable& table) {
+void add_convergence_rows(const scene::Scene& scene, const std::vector<ContactEffect>& base,
+                          const SceneDiscretization& base_mesh, const SceneRunOptions& options, OperatorLog& log,
+                          io::CsvTable& table) {
   struct Level {
     const SceneDiscretization* discretization;
     const std::vector<ContactEffect>* effects;
@@ -110,17 +108,15 @@ void add_convergence_rows(const scene::Scene& scene, const std::vector<ContactEf
       const auto& d = *levels[k].discretization;
       const auto& effect = (*levels[k].effects)[e];
       const auto& reference = (*finest.effects)[e].solution;
-      table.add_row({effect.problem, static_cast<long long>(k), scene.p.label(),
-                     scene.pc.label(), static_cast<long long>(d.contact->edges().size()),
-                     static_cast<long long>(d.boundary_mesh->n_segments()),
-                     static_cast<long long>(effect.solution.u.size()),
-                     static_cast<long long>(effect.solution.lambda.size()), effect.solution.energy,
-                     std::abs(effect.solution.energy - reference.energy),
-                     contact::multiplier_l2_distance(
-                         *d.multipliers, effect.solution.lambda_legendre, *finest.discretization->multipliers,
-                         reference.lambda_legendre,
-                         multiplier_error_weight(scene, *finest.discretization, effect.kind)),
-                     effect.seconds});
+      table.add_row(
+          {effect.problem, static_cast<long long>(k), scene.p.label(), scene.pc.label(),
+           static_cast<long long>(d.contact->edges().size()), static_cast<long long>(d.boundary_mesh->n_segments()),
+           static_cast<long long>(effect.solution.u.size()), static_cast<long long>(effect.solution.lambda.size()),
+           effect.solution.energy, std::abs(effect.solution.energy - reference.energy),
+           contact::multiplier_l2_distance(*d.multipliers, effect.solution.lambda_legendre,
+                                           *finest.discretization->multipliers, reference.lambda_legendre,
+                                           multiplier_error_weight(scene, *finest.discretization, effect.kind)),
+           effect.seconds});
     }
 }
 
@@ -148,7 +144,8 @@ nlohmann::json infsup_effect(const scene::Scene& scene, const SceneDiscretizatio
 }  // namespace
 
 std::vector<std::string> refinement_columns() {
-  return {"problem", "level", "p", "pC", "n", "m", "ndofs", "nmult", "energy", "error_energy", "error_lambda", "seconds"};
+  return {"problem",      "level",        "p",      "pC", "n", "m", "ndofs", "nmult", "energy",
+          "error_energy", "error_lambda", "seconds"};
 }
 
 nlohmann::json run_scene(const scene::Scene& given_scene, const SceneRunOptions& options) {
@@ -165,7 +162,9 @@ nlohmann::json run_scene(const scene::Scene& given_scene, const SceneRunOptions&
     Stopwatch fit_clock;
     const auto fit = fit_free_boundary(scene, scene.contact_effects());
     scene = fit.scene;
-    free_boundary = {{"points", nlohmann::json::array()}, {"rounds", fit.solves}, {"moved", fit.moved},
+    free_boundary = {{"points", nlohmann::json::array()},
+                     {"rounds", fit.solves},
+                     {"moved", fit.moved},
                      {"seconds", fit_clock.seconds()}};
     for (const auto& point : fit.points) free_boundary["points"].push_back({point.x(), point.y()});
   }
@@ -203,9 +202,11 @@ nlohmann::json run_scene(const scene::Scene& given_scene, const SceneRunOptions&
   summary["ndofs"] = primal.space().n_dofs();
   summary["nmult"] = d->multipliers->n_dofs();
   for (const auto& effect : contacts) summary[effect.problem] = contact_summary(effect);
-  if (convergence) summary["convergence"] = {{"refinements", scene.convergence_refinements}, {"file", "convergence.csv"}};
+  if (convergence)
+    summary["convergence"] = {{"refinements", scene.convergence_refinements}, {"file", "convergence.csv"}};
   for (const auto& record : log.records())
-    summary["operators"].push_back({{"name", record.name}, {"rows", record.rows}, {"cols", record.cols}, {"seconds", record.seconds}});
+    summary["operators"].push_back(
+        {{"name", record.name}, {"rows", record.rows}, {"cols", record.cols}, {"seconds", record.seconds}});
   summary["seconds_total"] = clock.seconds();
   const int rank = mpi_rank_and_size().first, ranks = mpi_rank_and_size().second;
   summary["ranks"] = ranks;
@@ -216,12 +217,15 @@ nlohmann::json run_scene(const scene::Scene& given_scene, const SceneRunOptions&
     io::OutputFolder folder(options.out);
     const auto& out = folder.path();
     for (const auto& effect : contacts) {
-      if (scene.wants_output(scene::Output::boundary)) effect.samples.table.write(out / ("boundary_" + effect.problem + ".csv"));
-      if (scene.wants_output(scene::Output::vtu)) io::write_vtu(out / ("solution_" + effect.problem + ".vtu"), primal.space(), effect.solution.u);
+      if (scene.wants_output(scene::Output::boundary))
+        effect.samples.table.write(out / ("boundary_" + effect.problem + ".csv"));
+      if (scene.wants_output(scene::Output::vtu))
+        io::write_vtu(out / ("solution_" + effect.problem + ".vtu"), primal.space(), effect.solution.u);
     }
     if (mode) mode->write(out / "mode.csv");
     if (convergence) convergence->write(out / "convergence.csv");
-    if (scene.wants_output(scene::Output::summary)) io::write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
+    if (scene.wants_output(scene::Output::summary))
+      io::write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
     folder.commit();
   });
   return summary;

@@ -8,15 +8,15 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "driver/scene_discretization.hpp"
+#include "linalg/distribution.hpp"
 #include "scene/scene_mesh.hpp"
 #include "scene/scene_reader.hpp"
-#include "linalg/distribution.hpp"
-#include "driver/scene_discretization.hpp"
 
 namespace hpcontact::driver {
 
 struct SceneRunOptions {
-  std::filesystem::path out;      ///< output folder (created when everything is computed)
+  std::filesystem::path out;                         ///< output folder (created when everything is computed)
   std::function<void(const std::string&)> progress;  ///< one line per step, if given
   /// Under mpirun: every rank runs the scene with K and A_G factorized over the ranks by this
   /// solver, and rank 0 alone writes the files.

@@ -16,10 +16,8 @@ ErrorNorms compute_errors(const space::H1Space& space, const Eigen::VectorXd& co
     const auto cell = assembly::tabulate_cell(space, c, rule.points, rule.points);
     const auto& shapes = space.cell_shapes(c);
     Eigen::VectorXd local(shapes.size());
-    for (std::size_t s = 0; s < shapes.size(); ++s)
-      local(s) = shapes[s].dof >= 0 ? coefficients(shapes[s].dof) : 0.0;
-    const Eigen::VectorXd u = cell.values * local, ux = cell.grad_x * local,
-                          uy = cell.grad_y * local;
+    for (std::size_t s = 0; s < shapes.size(); ++s) local(s) = shapes[s].dof >= 0 ? coefficients(shapes[s].dof) : 0.0;
+    const Eigen::VectorXd u = cell.values * local, ux = cell.grad_x * local, uy = cell.grad_y * local;
     const auto n = rule.points.size();
     for (std::size_t b = 0; b < n; ++b)
       for (std::size_t a = 0; a < n; ++a) {
@@ -31,8 +29,7 @@ ErrorNorms compute_errors(const space::H1Space& space, const Eigen::VectorXd& co
         energy_squared += w * gradient_error.squaredNorm();
       }
   }
-  return {std::sqrt(l2_squared), std::sqrt(energy_squared),
-          std::sqrt(l2_squared + energy_squared)};
+  return {std::sqrt(l2_squared), std::sqrt(energy_squared), std::sqrt(l2_squared + energy_squared)};
 }
 
 }  // namespace hpcontact::fe

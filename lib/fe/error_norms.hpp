@@ -21,7 +21,6 @@ struct ErrorNorms {
 
 /// Integrates with p_T + 4 Gauss points per direction in each cell, so the quadrature error
 /// stays far below the discretization error.
-ErrorNorms compute_errors(const space::H1Space& space, const Eigen::VectorXd& coefficients,
-                          const ExactSolution& exact);
+ErrorNorms compute_errors(const space::H1Space& space, const Eigen::VectorXd& coefficients, const ExactSolution& exact);
 
 }  // namespace hpcontact::fe

@@ -6,8 +6,7 @@
 
 namespace hpcontact::fe {
 
-PointValue evaluate(const space::H1Space& space, const Eigen::VectorXd& coefficients,
-                    const CellPoint& where) {
+PointValue evaluate(const space::H1Space& space, const Eigen::VectorXd& coefficients, const CellPoint& where) {
   const auto cell = assembly::tabulate_cell(space, where.cell, {where.xi}, {where.eta});
   PointValue out;
   const auto& shapes = space.cell_shapes(where.cell);
@@ -20,8 +19,8 @@ PointValue evaluate(const space::H1Space& space, const Eigen::VectorXd& coeffici
   return out;
 }
 
-PointValue evaluate_at(const space::H1Space& space, const Eigen::VectorXd& coefficients,
-                       const PointLocator& locator, const mesh::Point& x) {
+PointValue evaluate_at(const space::H1Space& space, const Eigen::VectorXd& coefficients, const PointLocator& locator,
+                       const mesh::Point& x) {
   const auto where = locator.locate(x);
   if (!where)
     throw InputError("evaluation point (" + std::to_string(x.x()) + ", " + std::to_string(x.y()) +

@@ -15,11 +15,10 @@ struct PointValue {
 };
 
 /// u_h and ∇u_h at a point given in reference coordinates of a cell.
-PointValue evaluate(const space::H1Space& space, const Eigen::VectorXd& coefficients,
-                    const CellPoint& where);
+PointValue evaluate(const space::H1Space& space, const Eigen::VectorXd& coefficients, const CellPoint& where);
 
 /// u_h and ∇u_h at a physical point. @throws InputError if x lies outside the mesh.
-PointValue evaluate_at(const space::H1Space& space, const Eigen::VectorXd& coefficients,
-                       const PointLocator& locator, const mesh::Point& x);
+PointValue evaluate_at(const space::H1Space& space, const Eigen::VectorXd& coefficients, const PointLocator& locator,
+                       const mesh::Point& x);
 
 }  // namespace hpcontact::fe

@@ -38,8 +38,7 @@ int PointLocator::bucket_of(double x, double y) const {
 
 std::optional<CellPoint> PointLocator::locate(const mesh::Point& x) const {
   const double slack = 1e-12 * (upper_ - lower_).norm();
-  if ((x.array() < lower_.array() - slack).any() || (x.array() > upper_.array() + slack).any())
-    return std::nullopt;
+  if ((x.array() < lower_.array() - slack).any() || (x.array() > upper_.array() + slack).any()) return std::nullopt;
   for (int c : buckets_[bucket_of(x.x(), x.y())]) {
     if (const auto ref = mesh::CellMap(*mesh_, c).inverse(x)) return CellPoint{c, ref->x(), ref->y()};
   }

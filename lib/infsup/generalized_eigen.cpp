@@ -24,8 +24,7 @@
 namespace hpcontact::infsup {
 namespace {
 
-static_assert(std::is_same_v<PetscScalar, double>,
-              "hpcontact needs PETSc built with real double-precision scalars");
+static_assert(std::is_same_v<PetscScalar, double>, "hpcontact needs PETSc built with real double-precision scalars");
 
 /// Largest asymmetry max|A_ij − A_ji| accepted, relative to max|A_ij|. Assembled Schur complements
 /// and Gram matrices are symmetric to round-off; more than this is a bug upstream.
@@ -51,42 +50,39 @@ struct Pencil {
   Eigen::MatrixXd g;
 };
 
-Eigen::MatrixXd checked_symmetric(const Eigen::MatrixXd& a, const char* name,
-                                  const std::string& where) {
-  if (!a.allFinite())
-    throw NumericalError(fmt::format("{}: {} has non-finite entries", where, name));
+Eigen::MatrixXd checked_symmetric(const Eigen::MatrixXd& a, const char* name, const std::string& where) {
+  if (!a.allFinite()) throw NumericalError(fmt::format("{}: {} has non-finite entries", where, name));
   const double scale = a.cwiseAbs().maxCoeff();
   const double asymmetry = (a - a.transpose()).cwiseAbs().maxCoeff();
   if (asymmetry > kSymmetryTolerance * scale)
-    throw NumericalError(fmt::format(
-        "{}: {} is not symmetric: max|{}_ij - {}_ji| = {:.3e} > {:.0e} * max|{}_ij| = {:.3e}",
-        where, name, name, name, asymmetry, kSymmetryTolerance, name, scale));
+    throw NumericalError(
+        fmt::format("{}: {} is not symmetric: max|{}_ij - {}_ji| = {:.3e} > {:.0e} * max|{}_ij| = {:.3e}", where, name,
+                    name, name, asymmetry, kSymmetryTolerance, name, scale));
   // Round-off asymmetry below the tolerance: the dense solver reads one triangle, SLEPc the whole
   // matrix; the symmetric part makes both solve the same problem.
   return 0.5 * (a + a.transpose());
 }
 
-Pencil checked_pencil(const Eigen::MatrixXd& S, const Eigen::MatrixXd& G,
-                      const std::string& where) {
+Pencil checked_pencil(const Eigen::MatrixXd& S, const Eigen::MatrixXd& G, const std::string& where) {
   HPC_VERIFY(S.rows() > 0 && S.rows() == S.cols() && G.rows() == G.cols() && G.rows() == S.rows(),
-             fmt::format("{}: S ({}x{}) and G ({}x{}) must be square, non-empty, of one size",
-                         where, S.rows(), S.cols(), G.rows(), G.cols()));
+             fmt::format("{}: S ({}x{}) and G ({}x{}) must be square, non-empty, of one size", where, S.rows(),
+                         S.cols(), G.rows(), G.cols()));
   Pencil pencil{checked_symmetric(S, "S", where), checked_symmetric(G, "G", where)};
   // Without a positive definite G, xᵀGx is no norm and the pencil's spectrum can be anything (a
   // shifted S − σG may even stay definite, so SLEPc would not notice). One Cholesky
   // factorization, n³/3 flops, decides it; small beside either eigensolver.
   const Eigen::LLT<Eigen::MatrixXd> cholesky(pencil.g);
   if (cholesky.info() != Eigen::Success)
-    throw NumericalError(fmt::format(
-        "{}: G ({}x{}) is not positive definite: its Cholesky factorization breaks down "
-        "(min diagonal entry {:.3e})",
-        where, G.rows(), G.cols(), pencil.g.diagonal().minCoeff()));
+    throw NumericalError(
+        fmt::format("{}: G ({}x{}) is not positive definite: its Cholesky factorization breaks down "
+                    "(min diagonal entry {:.3e})",
+                    where, G.rows(), G.cols(), pencil.g.diagonal().minCoeff()));
   return pencil;
 }
 
 /// Applies the zero rule to λ_min, G-normalizes x, fixes its sign and computes the residual.
-SmallestEigenpair finish(const Pencil& pencil, double lambda, Eigen::VectorXd x, double lambda_max,
-                         int iterations, std::string method, const std::string& where) {
+SmallestEigenpair finish(const Pencil& pencil, double lambda, Eigen::VectorXd x, double lambda_max, int iterations,
+                         std::string method, const std::string& where) {
   const double scale = std::max(std::abs(lambda_max), std::abs(lambda));
   if (lambda < 0.0) {
     // S is positive semi-definite, so λ_min ≥ 0 exactly; S and G carry round-off of order ε‖S‖,
@@ -94,17 +90,17 @@ SmallestEigenpair finish(const Pencil& pencil, double lambda, Eigen::VectorXd x,
     // within kRoundOffZero·λ_max is therefore reported as the exact value 0 (deliberately, see
     // kRoundOffZero); anything more negative means S is indefinite, and that is an error.
     if (-lambda > kRoundOffZero * scale)
-      throw NumericalError(fmt::format(
-          "{}: S is not positive semi-definite: lambda_min = {:.6e} < -{:.0e} * lambda_max "
-          "(lambda_max = {:.6e}; method {})",
-          where, lambda, kRoundOffZero, lambda_max, method));
+      throw NumericalError(
+          fmt::format("{}: S is not positive semi-definite: lambda_min = {:.6e} < -{:.0e} * lambda_max "
+                      "(lambda_max = {:.6e}; method {})",
+                      where, lambda, kRoundOffZero, lambda_max, method));
     lambda = 0.0;
   }
 
   const double g_norm_squared = x.dot(pencil.g * x);
   if (!std::isfinite(g_norm_squared) || !(g_norm_squared > 0.0))
-    throw NumericalError(fmt::format("{}: eigenvector has x^T G x = {:.3e} (method {})", where,
-                                     g_norm_squared, method));
+    throw NumericalError(
+        fmt::format("{}: eigenvector has x^T G x = {:.3e} (method {})", where, g_norm_squared, method));
   x /= std::sqrt(g_norm_squared);
   Eigen::Index largest = 0;
   x.cwiseAbs().maxCoeff(&largest);  // first index among equal magnitudes
@@ -208,8 +204,8 @@ std::string describe(EPS eps) {
   HPC_PETSC_CALL(KSPGetPC(ksp, &pc));
   HPC_PETSC_CALL(PCGetType(pc, &pc_type));
   const auto name = [](const char* text) { return text != nullptr ? text : "(none)"; };
-  return fmt::format("eps {}, st {} (shift {:.3e}), ksp {}, pc {}", name(eps_type), name(st_type),
-                     shift, name(ksp_type), name(pc_type));
+  return fmt::format("eps {}, st {} (shift {:.3e}), ksp {}, pc {}", name(eps_type), name(st_type), shift,
+                     name(ksp_type), name(pc_type));
 }
 
 /// The last iteration seen by the EPS monitor, for the message when nothing converged.
@@ -223,9 +219,8 @@ struct LastIteration {
 /// EPS monitor. The values it receives are those of the transformed problem (θ = 1/(λ − σ) for
 /// shift-and-invert); they are mapped back to λ. Error estimates exist for the converged pairs
 /// and the first unconverged one only; later entries are stale.
-PetscErrorCode record_last_iteration(EPS eps, PetscInt iteration, PetscInt n_converged,
-                                     PetscScalar* eigenvalues_real, PetscScalar* eigenvalues_imag,
-                                     PetscReal* error_estimates, PetscInt n_estimates,
+PetscErrorCode record_last_iteration(EPS eps, PetscInt iteration, PetscInt n_converged, PetscScalar* eigenvalues_real,
+                                     PetscScalar* eigenvalues_imag, PetscReal* error_estimates, PetscInt n_estimates,
                                      void* context) {
   try {  // no exception may cross SLEPc's C frames
     auto& last = *static_cast<LastIteration*>(context);
@@ -259,19 +254,19 @@ PetscErrorCode record_last_iteration(EPS eps, PetscInt iteration, PetscInt n_con
   HPC_PETSC_CALL(EPSGetTolerances(eps, &tolerance, &max_iterations));
   std::string estimates;
   for (std::size_t i = 0; i < last.error_estimates.size(); ++i)
-    estimates += fmt::format("{}lambda ~ {:.6e} (error estimate {:.3e})", i > 0 ? ", " : "",
-                             last.eigenvalues[i], last.error_estimates[i]);
-  throw NumericalError(fmt::format(
-      "{}: SLEPc EPS for {} converged {} of 1 eigenpairs after {} of at most {} iterations "
-      "(reason {}, tolerance {:.1e}; {}); last iterate: {}",
-      where, what, last.n_converged, iterations, max_iterations, EPSConvergedReasons[reason],
-      tolerance, describe(eps), estimates.empty() ? std::string("no estimates") : estimates));
+    estimates += fmt::format("{}lambda ~ {:.6e} (error estimate {:.3e})", i > 0 ? ", " : "", last.eigenvalues[i],
+                             last.error_estimates[i]);
+  throw NumericalError(
+      fmt::format("{}: SLEPc EPS for {} converged {} of 1 eigenpairs after {} of at most {} iterations "
+                  "(reason {}, tolerance {:.1e}; {}); last iterate: {}",
+                  where, what, last.n_converged, iterations, max_iterations, EPSConvergedReasons[reason], tolerance,
+                  describe(eps), estimates.empty() ? std::string("no estimates") : estimates));
 }
 
 /// λ_max by a second EPS: largest real part, STSHIFT without shift, i.e. Krylov–Schur on G⁻¹S
 /// with one Cholesky factorization of G. Only a scale for zero tests, so a loose tolerance.
-double largest_eigenvalue_slepc(Mat s, Mat g, const std::string& options_prefix,
-                                const std::string& where, std::string& method) {
+double largest_eigenvalue_slepc(Mat s, Mat g, const std::string& options_prefix, const std::string& where,
+                                std::string& method) {
   EpsHandle eps;
   LastIteration last;
   HPC_PETSC_CALL(EPSCreate(PETSC_COMM_SELF, eps.out()));
@@ -340,16 +335,14 @@ void configure_smallest(EpsHandle& eps, Mat s, Mat g, double sigma, PetscInt n, 
 SmallestEigenpair smallest_eigenpair_dense(const Eigen::MatrixXd& S, const Eigen::MatrixXd& G) {
   const std::string where = "smallest_eigenpair_dense";
   const Pencil pencil = checked_pencil(S, G, where);
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(
-      pencil.s, pencil.g, Eigen::ComputeEigenvectors | Eigen::Ax_lBx);
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(pencil.s, pencil.g,
+                                                                         Eigen::ComputeEigenvectors | Eigen::Ax_lBx);
   if (solver.info() != Eigen::Success)
-    throw NumericalError(
-        fmt::format("{}: the tridiagonal QR iteration did not converge (n = {})", where, S.rows()));
+    throw NumericalError(fmt::format("{}: the tridiagonal QR iteration did not converge (n = {})", where, S.rows()));
   const Eigen::Index n = pencil.s.rows();
   // Eigenvalues come sorted ascending.
-  return finish(
-      pencil, solver.eigenvalues()(0), solver.eigenvectors().col(0), solver.eigenvalues()(n - 1), 0,
-      "dense: Eigen::GeneralizedSelfAdjointEigenSolver (Cholesky of G, tridiagonal QR)", where);
+  return finish(pencil, solver.eigenvalues()(0), solver.eigenvectors().col(0), solver.eigenvalues()(n - 1), 0,
+                "dense: Eigen::GeneralizedSelfAdjointEigenSolver (Cholesky of G, tridiagonal QR)", where);
 }
 
 SmallestEigenpair smallest_eigenpair_slepc(const Eigen::MatrixXd& S, const Eigen::MatrixXd& G,
@@ -371,8 +364,8 @@ SmallestEigenpair smallest_eigenpair_slepc(const Eigen::MatrixXd& S, const Eigen
   const double trace_g = pencil.g.trace();  // > 0, G is positive definite
   const bool s_is_zero = pencil.s.isZero(0.0);
   if (trace_s < 0.0 || (trace_s == 0.0 && !s_is_zero))
-    throw NumericalError(fmt::format(
-        "{}: S is not positive semi-definite: tr(S) = {:.6e} (and S is not zero)", where, trace_s));
+    throw NumericalError(
+        fmt::format("{}: S is not positive semi-definite: tr(S) = {:.6e} (and S is not zero)", where, trace_s));
   const double sigma = trace_s > 0.0 ? -1e-2 * trace_s / (static_cast<double>(n) * trace_g) : -1.0;
 
   // PETSc errors become NumericalError through HPC_PETSC_CALL; no traceback on stderr meanwhile.
@@ -418,8 +411,8 @@ SmallestEigenpair smallest_eigenpair_slepc(const Eigen::MatrixXd& S, const Eigen
     lambda_min = lambda_max = 0.0;
     method += "; S = 0, so every eigenvalue is exactly 0";
   }
-  return finish(pencil, lambda_min, to_eigen(x.get()), lambda_max, static_cast<int>(iterations),
-                std::move(method), where);
+  return finish(pencil, lambda_min, to_eigen(x.get()), lambda_max, static_cast<int>(iterations), std::move(method),
+                where);
 }
 
 }  // namespace hpcontact::infsup

@@ -20,9 +20,9 @@ struct SmallestEigenpair {
   /// first one among equals) is positive.
   Eigen::VectorXd eigenvector;
   double largest_eigenvalue = 0.0;  ///< λ_max of the same pencil, scale for relative zero tests
-  int iterations = 0;  ///< outer iterations of the eigensolver for λ_min; 0 for the dense path
-  double residual = 0.0;  ///< ‖S x − λ G x‖₂ / (‖S‖_F ‖x‖₂), with the reported λ and x
-  std::string method;  ///< solver description, e.g. "slepc: eps krylovschur, st sinvert, ..."
+  int iterations = 0;               ///< outer iterations of the eigensolver for λ_min; 0 for the dense path
+  double residual = 0.0;            ///< ‖S x − λ G x‖₂ / (‖S‖_F ‖x‖₂), with the reported λ and x
+  std::string method;               ///< solver description, e.g. "slepc: eps krylovschur, st sinvert, ..."
 };
 
 /// Dense path: Cholesky G = L Lᵀ, then all eigenpairs of L⁻¹ S L⁻ᵀ by Householder

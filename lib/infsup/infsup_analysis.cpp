@@ -1,11 +1,11 @@
 // analyse_infsup and sample_mode.
 #include "infsup/infsup_analysis.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <memory>
-
-#include <fmt/format.h>
 
 #include "core/error.hpp"
 #include "core/timer.hpp"
@@ -25,7 +25,8 @@ namespace {
 std::unique_ptr<norms::GramLadder> own_ladder(const InfSupSetup& setup, const space::MultiplierSpace& multipliers) {
   if (setup.norm == GramNorm::interpolation)
     return std::make_unique<norms::GramLadder>(norms::interpolation_gram_ladder(multipliers));
-  return std::make_unique<norms::GramLadder>(norms::extension_gram_ladder(*setup.mesh, setup.cell_degrees, multipliers));
+  return std::make_unique<norms::GramLadder>(
+      norms::extension_gram_ladder(*setup.mesh, setup.cell_degrees, multipliers));
 }
 
 }  // namespace

@@ -25,24 +25,24 @@ enum class EigenBackend { slepc, dense };
 EigenBackend parse_eigen_backend(const std::string& text, const std::string& origin);
 
 struct InfSupResult {
-  double alpha = 0.0;          ///< sqrt(λ_min), ≥ 0
-  double lambda_min = 0.0;     ///< α²
-  double lambda_max = 0.0;     ///< largest eigenvalue of the same pencil
+  double alpha = 0.0;       ///< sqrt(λ_min), ≥ 0
+  double lambda_min = 0.0;  ///< α²
+  double lambda_max = 0.0;  ///< largest eigenvalue of the same pencil
   /// α² ≤ kRoundOffZero · λ_max: S_G is singular to working precision, α = 0 numerically.
   bool singular = false;
-  Eigen::VectorXd mode;        ///< eigenvector over all multiplier dofs (0 off supp s), xᵀGx = 1
-  double pi = 0.0;             ///< Π(h, H, p, p_C), θ = 1
+  Eigen::VectorXd mode;  ///< eigenvector over all multiplier dofs (0 off supp s), xᵀGx = 1
+  double pi = 0.0;       ///< Π(h, H, p, p_C), θ = 1
   double h = 0.0, H = 0.0;
   int n_primal_dofs = 0, n_multiplier_dofs = 0;
-  double alpha_error = 0.0;    ///< estimate of |α − α_∞| from the reference (header)
-  int reference_level = 0;     ///< level of the ladder α was computed on
+  double alpha_error = 0.0;  ///< estimate of |α − α_∞| from the reference (header)
+  int reference_level = 0;   ///< level of the ladder α was computed on
   /// alpha_error ≤ the setup's tolerance · α, on a ladder that converges geometrically (an
   /// extension-norm reference that cannot be graded makes alpha_error too low: false)
   bool alpha_converged = true;
-  double seconds = 0.0;        ///< operators + eigenproblem
+  double seconds = 0.0;  ///< operators + eigenproblem
   double seconds_assembly = 0.0, seconds_primal = 0.0, seconds_gram = 0.0, seconds_eigen = 0.0;  ///< its parts
-  std::string method;          ///< eigen solver used
-  double residual = 0.0;       ///< relative eigen residual
+  std::string method;                                                                            ///< eigen solver used
+  double residual = 0.0;  ///< relative eigen residual
 };
 
 InfSupResult analyse_infsup(const InfSupSetup& setup, EigenBackend backend);

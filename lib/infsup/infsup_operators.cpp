@@ -9,8 +9,8 @@
 #include "basis/quadrature.hpp"
 #include "core/error.hpp"
 #include "core/timer.hpp"
-#include "operators/primal_operators.hpp"
 #include "mesh/contact_boundary.hpp"
+#include "operators/primal_operators.hpp"
 #include "space/multiplier_space.hpp"
 
 namespace hpcontact::infsup {
@@ -27,9 +27,7 @@ PairingProblem parse_pairing_problem(const std::string& text, const std::string&
   throw_bad_input(origin, "problem", text, "must be one of: signorini, friction");
 }
 
-std::string to_string(GramNorm norm) {
-  return norm == GramNorm::interpolation ? "interp" : "extension";
-}
+std::string to_string(GramNorm norm) { return norm == GramNorm::interpolation ? "interp" : "extension"; }
 std::string to_string(PairingProblem problem) {
   return problem == PairingProblem::signorini ? "signorini" : "friction";
 }
@@ -42,17 +40,15 @@ double stability_indicator(double h, double H, int min_p, int max_pc) {
 namespace {
 
 // Segments on which s vanishes at every sample point carry no multiplier in (22).
-std::vector<int> dofs_meeting_support(const mesh::ContactBoundary& contact,
-                                      const space::MultiplierSpace& multipliers,
+std::vector<int> dofs_meeting_support(const mesh::ContactBoundary& contact, const space::MultiplierSpace& multipliers,
                                       const assembly::BoundaryFunction& s) {
   std::vector<int> dofs;
   const auto& rule = basis::gauss_legendre(12);
   for (int k = 0; k < multipliers.n_segments(); ++k) {
     const double a = multipliers.boundary_mesh().segment_begin(k);
     const double b = multipliers.boundary_mesh().segment_end(k);
-    const bool meets = std::any_of(rule.points.begin(), rule.points.end(), [&](double t) {
-      return s(contact.point_at(a + 0.5 * (b - a) * (t + 1.0))) != 0.0;
-    });
+    const bool meets = std::any_of(rule.points.begin(), rule.points.end(),
+                                   [&](double t) { return s(contact.point_at(a + 0.5 * (b - a) * (t + 1.0))) != 0.0; });
     if (meets)
       for (int i = 0; i <= multipliers.segment_degree(k); ++i) dofs.push_back(multipliers.first_dof(k) + i);
   }
@@ -93,8 +89,7 @@ InfSupOperators assemble_infsup_operators(const InfSupSetup& setup) {
 
   if (friction) {
     out.active_dofs = dofs_meeting_support(contact, multipliers, setup.friction_bound);
-    if (out.active_dofs.empty())
-      throw InputError("the friction bound s vanishes on all of Γ_C: no multiplier is left");
+    if (out.active_dofs.empty()) throw InputError("the friction bound s vanishes on all of Γ_C: no multiplier is left");
     out.s_g = restrict(s_g, out.active_dofs);
   } else {
     out.active_dofs.resize(multipliers.n_dofs());

@@ -26,9 +26,9 @@ std::string to_string(PairingProblem problem);
 
 struct InfSupSetup {
   const mesh::QuadMesh* mesh = nullptr;
-  std::vector<int> cell_degrees;        ///< p_T
+  std::vector<int> cell_degrees;  ///< p_T
   const mesh::BoundaryMesh* boundary_mesh = nullptr;
-  std::vector<int> segment_degrees;     ///< p_C per segment
+  std::vector<int> segment_degrees;  ///< p_C per segment
   GramNorm norm = GramNorm::interpolation;
   PairingProblem problem = PairingProblem::signorini;
   assembly::BoundaryFunction friction_bound;  ///< s, required for the friction problem
@@ -42,14 +42,14 @@ struct InfSupSetup {
 };
 
 struct InfSupOperators {
-  Eigen::MatrixXd s_g;   ///< B A_G⁻¹ Bᵀ restricted to the active multipliers, (n_active, n_active)
+  Eigen::MatrixXd s_g;  ///< B A_G⁻¹ Bᵀ restricted to the active multipliers, (n_active, n_active)
   /// Multiplier dofs kept (all of them for Signorini; those of segments meeting supp s for
   /// friction), in increasing order.
   std::vector<int> active_dofs;
   int n_primal_dofs = 0;
   int n_multiplier_dofs = 0;
-  double h = 0.0;  ///< longest edge of T_h
-  double H = 0.0;  ///< longest segment of T_{C,H}
+  double h = 0.0;                 ///< longest edge of T_h
+  double H = 0.0;                 ///< longest segment of T_{C,H}
   double seconds_assembly = 0.0;  ///< what this call assembled of S^p(T_h), K, M, B
   double seconds_primal = 0.0;    ///< what this call factorized of A_G (trace last), and S_G
   OperatorLog* log = nullptr;     ///< the primal operators' log, if any

@@ -22,14 +22,15 @@ void check_petsc_options(const std::vector<std::string>& arguments, const std::s
     if (name.empty() || name[0] != '-' || std::isdigit(static_cast<unsigned char>(name.size() > 1 ? name[1] : '0')))
       continue;  // a value
     bool global = false;
-    for (const char* allowed : {"-help", "-info", "-log_", "-options_left", "-malloc", "-on_error_", "-mat_mumps_",
-                                "-no_signal_handler"})
+    for (const char* allowed :
+         {"-help", "-info", "-log_", "-options_left", "-malloc", "-on_error_", "-mat_mumps_", "-no_signal_handler"})
       global = global || name.rfind(allowed, 0) == 0;
     if (global) continue;
     if (name.rfind(prefixed, 0) != 0)
       throw_bad_input("command line", "PETSc option", name,
                       fmt::format("not read by hpcontact: the inf-sup eigensolver reads its options with the prefix "
-                                  "{} (did you mean {}{}?)", options_prefix, prefixed, name.substr(1)));
+                                  "{} (did you mean {}{}?)",
+                                  options_prefix, prefixed, name.substr(1)));
     names.push_back(name);
   }
   if (names.empty()) return;
@@ -51,9 +52,9 @@ void check_petsc_options(const std::vector<std::string>& arguments, const std::s
   }
   PetscPopErrorHandler();
   if (!bad.empty())
-    throw_bad_input("command line", "PETSc options",
-                    fmt::format("{}", fmt::join(arguments.begin() + 1, arguments.end(), " ")),
-                    "SLEPc rejects a value (" + bad + "); see -" + options_prefix + "eps_view and -help for the choices");
+    throw_bad_input(
+        "command line", "PETSc options", fmt::format("{}", fmt::join(arguments.begin() + 1, arguments.end(), " ")),
+        "SLEPc rejects a value (" + bad + "); see -" + options_prefix + "eps_view and -help for the choices");
   // A name that no setter queried is misspelled (views and monitors are read later, when solving).
   for (const std::string& name : names) {
     if (name.find("view") != std::string::npos || name.find("monitor") != std::string::npos) continue;

@@ -39,9 +39,12 @@ std::string CsvTable::to_string() const {
   for (const auto& row : rows_) {
     for (std::size_t k = 0; k < row.size(); ++k) {
       if (k) out += ',';
-      if (const auto* text = std::get_if<std::string>(&row[k])) out += quoted_if_needed(*text);
-      else if (const auto* number = std::get_if<double>(&row[k])) out += format_full_precision(*number);
-      else out += std::to_string(std::get<long long>(row[k]));
+      if (const auto* text = std::get_if<std::string>(&row[k]))
+        out += quoted_if_needed(*text);
+      else if (const auto* number = std::get_if<double>(&row[k]))
+        out += format_full_precision(*number);
+      else
+        out += std::to_string(std::get<long long>(row[k]));
     }
     out += '\n';
   }
@@ -65,8 +68,6 @@ void append_csv_rows(const std::filesystem::path& path, const CsvTable& table) {
   write_file_atomically(path, content);
 }
 
-void CsvTable::write(const std::filesystem::path& path) const {
-  write_file_atomically(path, to_string());
-}
+void CsvTable::write(const std::filesystem::path& path) const { write_file_atomically(path, to_string()); }
 
 }  // namespace hpcontact::io

@@ -31,13 +31,11 @@ std::size_t edit_distance(const std::string& a, const std::string& b) {
   return row[b.size()];
 }
 
-TomlTable::TomlTable(std::shared_ptr<const toml::table> root, const toml::table* table,
-                     std::string file, std::string prefix)
+TomlTable::TomlTable(std::shared_ptr<const toml::table> root, const toml::table* table, std::string file,
+                     std::string prefix)
     : root_(std::move(root)), table_(table), file_(std::move(file)), prefix_(std::move(prefix)) {}
 
-std::string TomlTable::qualified(const std::string& key) const {
-  return prefix_.empty() ? key : prefix_ + "." + key;
-}
+std::string TomlTable::qualified(const std::string& key) const { return prefix_.empty() ? key : prefix_ + "." + key; }
 
 std::string TomlTable::origin(const std::string& key) const {
   if (origins_) {
@@ -56,17 +54,19 @@ bool TomlTable::has(const std::string& key) const {
   return table_ && table_->contains(key);
 }
 
-void TomlTable::fail(const std::string& key, const std::string& value,
-                     const std::string& allowed) const {
+void TomlTable::fail(const std::string& key, const std::string& value, const std::string& allowed) const {
   throw_bad_input(origin(key), qualified(key), value, allowed);
 }
 
 std::string TomlTable::value_text(const std::string& key) const {
   std::ostringstream out;
   if (const auto* node = table_->get(key)) {
-    if (node->is_table()) out << "{...}";
-    else if (node->is_array()) out << *node->as_array();
-    else node->visit([&out](const auto& value) { out << value; });
+    if (node->is_table())
+      out << "{...}";
+    else if (node->is_array())
+      out << *node->as_array();
+    else
+      node->visit([&out](const auto& value) { out << value; });
   }
   return out.str();
 }
@@ -88,13 +88,11 @@ double TomlTable::number(const std::string& key, std::optional<double> fallback)
     fail(key, "(missing)", "a number is required");
   }
   const auto* node = table_->get(key);
-  if (!(node->is_floating_point() || node->is_integer()))
-    fail(key, value_text(key), "must be a number");
+  if (!(node->is_floating_point() || node->is_integer())) fail(key, value_text(key), "must be a number");
   return numeric_value(*node);
 }
 
-double TomlTable::number_in(const std::string& key, double min, double max,
-                            std::optional<double> fallback) const {
+double TomlTable::number_in(const std::string& key, double min, double max, std::optional<double> fallback) const {
   const double value = number(key, fallback);
   if (!(value >= min && value <= max))
     fail(key, format_full_precision(value),
@@ -106,15 +104,13 @@ long long TomlTable::integer(const std::string& key, long long min, long long ma
                              std::optional<long long> fallback) const {
   if (!has(key)) {
     if (fallback) return *fallback;
-    fail(key, "(missing)", "an integer in [" + std::to_string(min) + ", " + std::to_string(max) +
-                               "] is required");
+    fail(key, "(missing)", "an integer in [" + std::to_string(min) + ", " + std::to_string(max) + "] is required");
   }
   const auto* node = table_->get(key);
   if (!node->is_integer()) fail(key, value_text(key), "must be an integer");
   const long long value = node->value<long long>().value();
   if (value < min || value > max)
-    fail(key, std::to_string(value),
-         "must be in [" + std::to_string(min) + ", " + std::to_string(max) + "]");
+    fail(key, std::to_string(value), "must be in [" + std::to_string(min) + ", " + std::to_string(max) + "]");
   return value;
 }
 
@@ -137,10 +133,8 @@ std::string TomlTable::choice(const std::string& key, const std::vector<std::str
   fail(key, "\"" + value + "\"", "must be one of: " + list);
 }
 
-std::vector<long long> TomlTable::integer_list(const std::string& key, long long min,
-                                               long long max,
-                                               std::optional<std::vector<long long>> fallback)
-    const {
+std::vector<long long> TomlTable::integer_list(const std::string& key, long long min, long long max,
+                                               std::optional<std::vector<long long>> fallback) const {
   const std::string range = "each in [" + std::to_string(min) + ", " + std::to_string(max) + "]";
   const std::string forms = "an integer, a list [1, 2, 4] or a range \"1..12\"";
   if (!has(key)) {
@@ -165,7 +159,8 @@ std::vector<long long> TomlTable::integer_list(const std::string& key, long long
     // Bounds checked before the range is expanded, so "1..99999999999" is an error, not a hang.
     long long first = 0, last = 0;
     const std::string first_text = match[1], last_text = match[2];
-    const auto [first_end, first_error] = std::from_chars(first_text.data(), first_text.data() + first_text.size(), first);
+    const auto [first_end, first_error] =
+        std::from_chars(first_text.data(), first_text.data() + first_text.size(), first);
     const auto [last_end, last_error] = std::from_chars(last_text.data(), last_text.data() + last_text.size(), last);
     if (first_error != std::errc() || last_error != std::errc() || first > last)
       fail(key, "\"" + text + "\"", "must be " + forms + " with first <= last");
@@ -180,8 +175,8 @@ std::vector<long long> TomlTable::integer_list(const std::string& key, long long
   return values;
 }
 
-std::vector<std::string> TomlTable::string_list(
-    const std::string& key, std::optional<std::vector<std::string>> fallback) const {
+std::vector<std::string> TomlTable::string_list(const std::string& key,
+                                                std::optional<std::vector<std::string>> fallback) const {
   const std::string forms = "a string, a number, or a list of them";
   if (!has(key)) {
     if (fallback) return *fallback;
@@ -190,8 +185,7 @@ std::vector<std::string> TomlTable::string_list(
   const auto* node = table_->get(key);
   auto text_of = [&](const toml::node& element) -> std::string {
     if (element.is_string()) return element.value<std::string>().value();
-    if (element.is_integer() || element.is_floating_point())
-      return format_full_precision(numeric_value(element));
+    if (element.is_integer() || element.is_floating_point()) return format_full_precision(numeric_value(element));
     fail(key, value_text(key), "must be " + forms);
   };
   std::vector<std::string> values;
@@ -253,11 +247,9 @@ std::vector<TomlTable> TomlTable::table_array(const std::string& key, bool requi
     return tables;
   }
   const auto* array = table_->get(key)->as_array();
-  if (!array || !array->is_array_of_tables())
-    fail(key, value_text(key), "must be [[" + qualified(key) + "]] blocks");
+  if (!array || !array->is_array_of_tables()) fail(key, value_text(key), "must be [[" + qualified(key) + "]] blocks");
   for (std::size_t k = 0; k < array->size(); ++k)
-    tables.emplace_back(root_, array->get(k)->as_table(), file_,
-                        qualified(key) + "[" + std::to_string(k) + "]");
+    tables.emplace_back(root_, array->get(k)->as_table(), file_, qualified(key) + "[" + std::to_string(k) + "]");
   return tables;
 }
 
@@ -268,9 +260,8 @@ void TomlTable::reject_unknown_keys() const {
     if (asked_.contains(key)) continue;
     std::string message = file_ + ": unknown key '" + qualified(key) + "'";
     const auto nearest = std::min_element(
-        asked_.begin(), asked_.end(), [&key](const std::string& a, const std::string& b) {
-          return edit_distance(key, a) < edit_distance(key, b);
-        });
+        asked_.begin(), asked_.end(),
+        [&key](const std::string& a, const std::string& b) { return edit_distance(key, a) < edit_distance(key, b); });
     if (nearest != asked_.end() && edit_distance(key, *nearest) <= std::max<std::size_t>(2, key.size() / 3))
       message += " (did you mean '" + *nearest + "'?)";
     std::string known;

@@ -21,8 +21,7 @@ namespace hpcontact::io {
 
 class TomlTable {
  public:
-  TomlTable(std::shared_ptr<const toml::table> root, const toml::table* table, std::string file,
-            std::string prefix);
+  TomlTable(std::shared_ptr<const toml::table> root, const toml::table* table, std::string file, std::string prefix);
 
   const std::string& file() const { return file_; }
   /// Where a key's value came from, for messages: the file, or what replaced the file's value
@@ -38,25 +37,21 @@ class TomlTable {
   /// A number (integers are accepted). Required when no fallback is given.
   double number(const std::string& key, std::optional<double> fallback = std::nullopt) const;
   /// A number in [min, max] (inclusive).
-  double number_in(const std::string& key, double min, double max,
-                   std::optional<double> fallback = std::nullopt) const;
+  double number_in(const std::string& key, double min, double max, std::optional<double> fallback = std::nullopt) const;
   long long integer(const std::string& key, long long min, long long max,
                     std::optional<long long> fallback = std::nullopt) const;
-  std::string string(const std::string& key,
-                     std::optional<std::string> fallback = std::nullopt) const;
+  std::string string(const std::string& key, std::optional<std::string> fallback = std::nullopt) const;
   /// A string from a fixed set of choices.
   std::string choice(const std::string& key, const std::vector<std::string>& allowed,
                      std::optional<std::string> fallback = std::nullopt) const;
   /// Integers given as one integer, a list [1, 2, 4], or an inclusive range "1..12"; each in
   /// [min, max].
   std::vector<long long> integer_list(const std::string& key, long long min, long long max,
-                                      std::optional<std::vector<long long>> fallback =
-                                          std::nullopt) const;
+                                      std::optional<std::vector<long long>> fallback = std::nullopt) const;
   /// Strings or numbers, given as one value or a list; numbers are returned as their text
   /// (full precision), so "2/3" and 0.5 can stand side by side.
   std::vector<std::string> string_list(const std::string& key,
-                                       std::optional<std::vector<std::string>> fallback =
-                                           std::nullopt) const;
+                                       std::optional<std::vector<std::string>> fallback = std::nullopt) const;
   bool boolean(const std::string& key, bool fallback) const;
   /// Pairs of numbers [[x, y], ...] (points); an empty list if absent.
   std::vector<std::array<double, 2>> pair_list(const std::string& key) const;
@@ -74,8 +69,7 @@ class TomlTable {
   void reject_unknown_keys() const;
 
  private:
-  [[noreturn]] void fail(const std::string& key, const std::string& value,
-                         const std::string& allowed) const;
+  [[noreturn]] void fail(const std::string& key, const std::string& value, const std::string& allowed) const;
   std::string value_text(const std::string& key) const;
 
   std::shared_ptr<const toml::table> root_;

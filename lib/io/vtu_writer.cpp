@@ -8,8 +8,8 @@
 
 namespace hpcontact::io {
 
-void write_vtu(const std::filesystem::path& path, const space::H1Space& space,
-               const Eigen::VectorXd& u, int subdivisions) {
+void write_vtu(const std::filesystem::path& path, const space::H1Space& space, const Eigen::VectorXd& u,
+               int subdivisions) {
   std::string points, values, connectivity, offsets, types;
   int n_points = 0, n_cells = 0;
   for (int c = 0; c < space.mesh().n_cells(); ++c) {
@@ -44,10 +44,10 @@ void write_vtu(const std::filesystem::path& path, const space::H1Space& space,
                 << values << "</DataArray>\n</PointData>\n"
                 << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n"
                 << points << "</DataArray>\n</Points>\n<Cells>\n"
-                << "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n" << connectivity
-                << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n" << offsets
-                << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n" << types
-                << "</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+                << "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n"
+                << connectivity << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n"
+                << offsets << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n"
+                << types << "</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
   file.commit();
 }
 

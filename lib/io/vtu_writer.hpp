@@ -10,7 +10,7 @@
 namespace hpcontact::io {
 
 /// @param subdivisions per cell and direction; 0 means p_T (so u is sampled at p_T + 1 points).
-void write_vtu(const std::filesystem::path& path, const space::H1Space& space,
-               const Eigen::VectorXd& u, int subdivisions = 0);
+void write_vtu(const std::filesystem::path& path, const space::H1Space& space, const Eigen::VectorXd& u,
+               int subdivisions = 0);
 
 }  // namespace hpcontact::io

@@ -29,7 +29,8 @@ DistributedCholesky::DistributedCholesky(int n, const std::vector<Eigen::Triplet
   for (const auto& entry : lower_entries) {
     HPC_VERIFY(entry.row() >= entry.col() && entry.row() < n, "distributed Cholesky: entry outside the lower triangle");
     rows.push_back(entry.row()), cols.push_back(entry.col()), values.push_back(entry.value());
-    if (entry.row() != entry.col()) rows.push_back(entry.col()), cols.push_back(entry.row()), values.push_back(entry.value());
+    if (entry.row() != entry.col())
+      rows.push_back(entry.col()), cols.push_back(entry.row()), values.push_back(entry.value());
   }
   Mat& a = *impl_->matrix.out();
   HPC_PETSC_CALL(MatCreate(PETSC_COMM_WORLD, &a));

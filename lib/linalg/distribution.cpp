@@ -5,8 +5,7 @@
 
 namespace hpcontact::linalg {
 
-Distribution parse_distributed_solver(const std::string& text, const std::string& origin,
-                                      const std::string& key) {
+Distribution parse_distributed_solver(const std::string& text, const std::string& origin, const std::string& key) {
   if (text == "substructuring") return Distribution::substructuring;
   if (text == "mumps") return Distribution::mumps;
   throw_bad_input(origin, key, text, "must be one of: substructuring, mumps");
@@ -24,8 +23,6 @@ std::string to_string(Distribution distribution) {
   return "?";
 }
 
-Distribution distribution_over(int ranks, Distribution choice) {
-  return ranks > 1 ? choice : Distribution::serial;
-}
+Distribution distribution_over(int ranks, Distribution choice) { return ranks > 1 ? choice : Distribution::serial; }
 
 }  // namespace hpcontact::linalg

@@ -14,8 +14,7 @@ enum class Distribution {
 };
 
 /// "substructuring" | "mumps". @throws InputError naming `origin` and `key` otherwise.
-Distribution parse_distributed_solver(const std::string& text, const std::string& origin,
-                                      const std::string& key);
+Distribution parse_distributed_solver(const std::string& text, const std::string& origin, const std::string& key);
 std::string to_string(Distribution distribution);
 /// `choice` when more than one rank runs, serial otherwise.
 Distribution distribution_over(int ranks, Distribution choice);

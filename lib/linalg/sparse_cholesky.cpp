@@ -154,10 +154,10 @@ SparseCholesky::SparseCholesky(const Eigen::SparseMatrix<double>& matrix, const 
   if (!impl_->factor) throw NumericalError(fmt::format("CHOLMOD analysis failed, status {}", c.status));
   cholmod_factorize(&a, impl_->factor, &c);
   if (c.status == CHOLMOD_NOT_POSDEF || impl_->factor->minor < impl_->factor->n)
-    throw NumericalError(fmt::format(
-        "sparse Cholesky (CHOLMOD) failed on a {0}x{0} matrix: not positive definite at column {1} "
-        "(is Γ_D empty or a cell degenerate?)",
-        size_, impl_->factor->minor));
+    throw NumericalError(
+        fmt::format("sparse Cholesky (CHOLMOD) failed on a {0}x{0} matrix: not positive definite at column {1} "
+                    "(is Γ_D empty or a cell degenerate?)",
+                    size_, impl_->factor->minor));
   if (c.status < CHOLMOD_OK) throw NumericalError(fmt::format("CHOLMOD factorization failed, status {}", c.status));
 
   if (permutation.empty()) return;
@@ -223,9 +223,7 @@ Eigen::MatrixXd SparseCholesky::solve(const Eigen::MatrixXd& rhs) const {
   return out;
 }
 
-Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& rhs) const {
-  return solve(Eigen::MatrixXd(rhs)).col(0);
-}
+Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& rhs) const { return solve(Eigen::MatrixXd(rhs)).col(0); }
 
 Eigen::MatrixXd SparseCholesky::schur_complement(const Eigen::SparseMatrix<double>& b) const {
   HPC_VERIFY(b.cols() == size_, "B A⁻¹ Bᵀ: B has the wrong number of columns");

@@ -3,9 +3,9 @@
 // the ranks and factorized on each.
 #include "linalg/substructured_cholesky.hpp"
 
-#include <Eigen/Cholesky>
 #include <fmt/format.h>
 
+#include <Eigen/Cholesky>
 #include <algorithm>
 #include <exception>
 
@@ -20,11 +20,10 @@ struct SubstructuredCholesky::Impl {
   int rank = 0;
   std::vector<int> interface;  ///< global index of every interface position (G \ C, then C)
   int n_trailing = 0;
-  std::vector<int> trailing_position;  ///< per global index: its row in the trailing block of L_G, or −1
-  std::vector<int> interior;       ///< this rank's interior unknowns (global, ascending)
-  std::vector<int> own_interface;  ///< interface positions this rank touches (ascending)
-  std::unique_ptr<SparseCholesky>
-      local;  ///< [interior; own interface] of A_r + D_r (null without interior)
+  std::vector<int> trailing_position;            ///< per global index: its row in the trailing block of L_G, or −1
+  std::vector<int> interior;                     ///< this rank's interior unknowns (global, ascending)
+  std::vector<int> own_interface;                ///< interface positions this rank touches (ascending)
+  std::unique_ptr<SparseCholesky> local;         ///< [interior; own interface] of A_r + D_r (null without interior)
   Eigen::MatrixXd shifted_schur;                 ///< S_r + D_r on own_interface
   Eigen::LLT<Eigen::MatrixXd> interface_factor;  ///< S_G = L_G L_Gᵀ
 
@@ -35,12 +34,10 @@ struct SubstructuredCholesky::Impl {
                                   const std::vector<int>& local_index);
 };
 
-
-Eigen::VectorXd SubstructuredCholesky::Impl::factor_own_part(
-    const std::vector<Eigen::Triplet<double>>& lower_entries, const std::vector<int>& local_index) {
+Eigen::VectorXd SubstructuredCholesky::Impl::factor_own_part(const std::vector<Eigen::Triplet<double>>& lower_entries,
+                                                             const std::vector<int>& local_index) {
   Impl& d = *this;
-  const int n_interior = static_cast<int>(d.interior.size()),
-            n_own = static_cast<int>(d.own_interface.size());
+  const int n_interior = static_cast<int>(d.interior.size()), n_own = static_cast<int>(d.own_interface.size());
   const int n_local = n_interior + n_own;
   std::vector<Eigen::Triplet<double>> local_entries;
   local_entries.reserve(lower_entries.size() + n_own);
@@ -52,9 +49,9 @@ Eigen::VectorXd SubstructuredCholesky::Impl::factor_own_part(
   }
   for (int k = 0; k < n_own; ++k) {
     if (!(shift(k) > 0.0))
-      throw NumericalError(fmt::format(
-          "substructured Cholesky: the diagonal entry of unknown {} is {} (not positive definite)",
-          d.interface[d.own_interface[k]], shift(k)));
+      throw NumericalError(
+          fmt::format("substructured Cholesky: the diagonal entry of unknown {} is {} (not positive definite)",
+                      d.interface[d.own_interface[k]], shift(k)));
     local_entries.emplace_back(n_interior + k, n_interior + k, shift(k));
   }
   Eigen::SparseMatrix<double> local_matrix(n_local, n_local);
@@ -78,9 +75,8 @@ Eigen::VectorXd SubstructuredCholesky::Impl::factor_own_part(
   return shift;
 }
 
-SubstructuredCholesky::SubstructuredCholesky(
-    int n, const std::vector<Eigen::Triplet<double>>& lower_entries,
-    const std::vector<int>& trailing)
+SubstructuredCholesky::SubstructuredCholesky(int n, const std::vector<Eigen::Triplet<double>>& lower_entries,
+                                             const std::vector<int>& trailing)
     : impl_(std::make_unique<Impl>()), size_(n) {
   Impl& d = *impl_;
   d.rank = mpi_rank_and_size().first;
@@ -104,8 +100,7 @@ SubstructuredCholesky::SubstructuredCholesky(
   for (int pass = 0; pass < 2; ++pass)
     for (int i = 0; i < n; ++i) {
       if (touching[i] == 0.0)
-        throw NumericalError(
-            fmt::format("substructured Cholesky: unknown {} of {} has no entries", i, n));
+        throw NumericalError(fmt::format("substructured Cholesky: unknown {} of {} has no entries", i, n));
       if ((pass == 0 && touching[i] >= 2.0 && !is_trailing[i]) || (pass == 1 && is_trailing[i])) {
         in_interface[i] = 1;
         if (pass == 1) d.trailing_position[i] = d.n_trailing++;
@@ -135,16 +130,14 @@ SubstructuredCholesky::SubstructuredCholesky(
   double failed = failure ? 1.0 : 0.0;
   sum_over_ranks(&failed, 1);
   if (failure) std::rethrow_exception(failure);
-  if (failed != 0.0)
-    throw NumericalError("substructured Cholesky: the factorization failed on another rank");
+  if (failed != 0.0) throw NumericalError("substructured Cholesky: the factorization failed on another rank");
   const int n_own = static_cast<int>(d.own_interface.size());
   // 5. S_G = Σ_r (S_r + D_r − D_r), every rank factorizes it.
   const int n_interface = static_cast<int>(d.interface.size());
   Eigen::MatrixXd interface_matrix = Eigen::MatrixXd::Zero(n_interface, n_interface);
   for (int k = 0; k < n_own; ++k)
     for (int l = 0; l < n_own; ++l)
-      interface_matrix(d.own_interface[k], d.own_interface[l]) +=
-          d.shifted_schur(k, l) - (k == l ? shift(k) : 0.0);
+      interface_matrix(d.own_interface[k], d.own_interface[l]) += d.shifted_schur(k, l) - (k == l ? shift(k) : 0.0);
   sum_over_ranks(interface_matrix.data(), interface_matrix.size());
   d.interface_factor.compute(interface_matrix);
   if (d.interface_factor.info() != Eigen::Success)
@@ -158,16 +151,13 @@ SubstructuredCholesky::~SubstructuredCholesky() = default;
 SubstructuredCholesky::SubstructuredCholesky(SubstructuredCholesky&&) noexcept = default;
 SubstructuredCholesky& SubstructuredCholesky::operator=(SubstructuredCholesky&&) noexcept = default;
 
-int SubstructuredCholesky::interface_size() const {
-  return static_cast<int>(impl_->interface.size());
-}
+int SubstructuredCholesky::interface_size() const { return static_cast<int>(impl_->interface.size()); }
 
 Eigen::MatrixXd SubstructuredCholesky::solve(const Eigen::MatrixXd& rhs) const {
   HPC_VERIFY(rhs.rows() == size_, "right-hand side of the wrong size");
   const Impl& d = *impl_;
   const auto k = rhs.cols();
-  const int n_interior = static_cast<int>(d.interior.size()),
-            n_own = static_cast<int>(d.own_interface.size());
+  const int n_interior = static_cast<int>(d.interior.size()), n_own = static_cast<int>(d.own_interface.size());
   // Condense: g_r = −A_GI A_II⁻¹ f_I = (S_r + D_r) y, where [x; y] solves (A_r + D_r)[x; y] = [f_I;
   // 0].
   Eigen::MatrixXd local_rhs = Eigen::MatrixXd::Zero(d.n_local(), k), condensed_here;
@@ -185,8 +175,7 @@ Eigen::MatrixXd SubstructuredCholesky::solve(const Eigen::MatrixXd& rhs) const {
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(size_, k);
   if (d.local) {
     if (n_own > 0)
-      local_rhs.bottomRows(n_own) =
-          d.shifted_schur * interface_solution(d.own_interface, Eigen::all) - condensed_here;
+      local_rhs.bottomRows(n_own) = d.shifted_schur * interface_solution(d.own_interface, Eigen::all) - condensed_here;
     out(d.interior, Eigen::all) = d.local->solve(local_rhs).topRows(n_interior);
   }
   if (d.rank == 0) out(d.interface, Eigen::all) = interface_solution;

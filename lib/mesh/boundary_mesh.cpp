@@ -8,15 +8,12 @@
 
 namespace hpcontact::mesh {
 
-BoundaryMesh::BoundaryMesh(std::vector<double> nodes, const std::string& origin)
-    : nodes_(std::move(nodes)) {
+BoundaryMesh::BoundaryMesh(std::vector<double> nodes, const std::string& origin) : nodes_(std::move(nodes)) {
   if (nodes_.size() < 2) throw InputError(origin + ": needs at least one segment");
-  if (nodes_.front() != 0.0)
-    throw InputError(origin + ": the first breakpoint must be 0 (the start of Γ_C)");
+  if (nodes_.front() != 0.0) throw InputError(origin + ": the first breakpoint must be 0 (the start of Γ_C)");
   for (std::size_t k = 1; k < nodes_.size(); ++k)
     if (!(nodes_[k] > nodes_[k - 1]))
-      throw InputError(origin + ": breakpoints must increase strictly (breakpoint " +
-                       std::to_string(k) + ")");
+      throw InputError(origin + ": breakpoints must increase strictly (breakpoint " + std::to_string(k) + ")");
 }
 
 BoundaryMesh BoundaryMesh::uniform(double length, int m) {

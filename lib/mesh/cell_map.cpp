@@ -8,8 +8,7 @@ namespace hpcontact::mesh {
 
 CellMap::CellMap(const QuadMesh& mesh, int cell) {
   const auto& v = mesh.cell(cell);
-  const Point &p0 = mesh.vertex(v[0]), &p1 = mesh.vertex(v[1]), &p2 = mesh.vertex(v[2]),
-              &p3 = mesh.vertex(v[3]);
+  const Point &p0 = mesh.vertex(v[0]), &p1 = mesh.vertex(v[1]), &p2 = mesh.vertex(v[2]), &p3 = mesh.vertex(v[3]);
   a_ = 0.25 * (p0 + p1 + p2 + p3);
   b_ = 0.25 * (-p0 + p1 + p2 - p3);
   c_ = 0.25 * (-p0 - p1 + p2 + p3);

@@ -10,24 +10,21 @@ namespace hpcontact::mesh {
 namespace {
 
 // Assigns parts [first_part, first_part + parts) to cells[begin, end).
-void bisect(const std::vector<Point>& centroids, std::vector<int>& cells, int begin, int end,
-            int first_part, int parts, std::vector<int>& part_of_cell) {
+void bisect(const std::vector<Point>& centroids, std::vector<int>& cells, int begin, int end, int first_part, int parts,
+            std::vector<int>& part_of_cell) {
   if (parts == 1 || end - begin <= 1) {
     for (int k = begin; k < end; ++k) part_of_cell[cells[k]] = first_part;
     return;
   }
   Point low = centroids[cells[begin]], high = low;
-  for (int k = begin; k < end; ++k)
-    low = low.cwiseMin(centroids[cells[k]]), high = high.cwiseMax(centroids[cells[k]]);
+  for (int k = begin; k < end; ++k) low = low.cwiseMin(centroids[cells[k]]), high = high.cwiseMax(centroids[cells[k]]);
   const int axis = (high - low)(0) >= (high - low)(1) ? 0 : 1;
   const int left_parts = parts / 2;
-  const int middle =
-      begin + static_cast<int>(static_cast<long long>(end - begin) * left_parts / parts);
-  std::nth_element(cells.begin() + begin, cells.begin() + middle, cells.begin() + end,
-                   [&](int a, int b) {
-                     const double xa = centroids[a](axis), xb = centroids[b](axis);
-                     return xa < xb || (xa == xb && a < b);
-                   });
+  const int middle = begin + static_cast<int>(static_cast<long long>(end - begin) * left_parts / parts);
+  std::nth_element(cells.begin() + begin, cells.begin() + middle, cells.begin() + end, [&](int a, int b) {
+    const double xa = centroids[a](axis), xb = centroids[b](axis);
+    return xa < xb || (xa == xb && a < b);
+  });
   bisect(centroids, cells, begin, middle, first_part, left_parts, part_of_cell);
   bisect(centroids, cells, middle, end, first_part + left_parts, parts - left_parts, part_of_cell);
 }

@@ -25,8 +25,7 @@ ContactBoundary::ContactBoundary(const QuadMesh& mesh) : mesh_(&mesh) {
     if (incident.size() == 1) ends.push_back(v);
   }
   if (ends.size() != 2)
-    throw InputError("Γ_C must be one open curve; it has " + std::to_string(ends.size() / 2) +
-                     " pieces or is closed");
+    throw InputError("Γ_C must be one open curve; it has " + std::to_string(ends.size() / 2) + " pieces or is closed");
   const auto lexicographic = [&](int a, int b) {
     const Point &pa = mesh.vertex(a), &pb = mesh.vertex(b);
     return pa.x() < pb.x() || (pa.x() == pb.x() && pa.y() < pb.y());
@@ -36,8 +35,7 @@ ContactBoundary::ContactBoundary(const QuadMesh& mesh) : mesh_(&mesh) {
   chain_vertices_.push_back(mesh.vertex(vertex));
   while (true) {
     const auto& incident = edges_at_vertex[vertex];
-    const auto next = std::find_if(incident.begin(), incident.end(),
-                                   [&](int e) { return e != previous_edge; });
+    const auto next = std::find_if(incident.begin(), incident.end(), [&](int e) { return e != previous_edge; });
     if (next == incident.end()) break;
     const int e = *next;
     const int other = mesh.edge(e)[0] == vertex ? mesh.edge(e)[1] : mesh.edge(e)[0];
@@ -69,8 +67,7 @@ std::vector<double> ContactBoundary::breakpoints() const {
 int ContactBoundary::edge_index_at(double s) const {
   const auto it = std::lower_bound(edges_.begin(), edges_.end(), s,
                                    [](const TraceEdge& e, double value) { return e.s_end < value; });
-  return it == edges_.end() ? static_cast<int>(edges_.size()) - 1
-                            : static_cast<int>(it - edges_.begin());
+  return it == edges_.end() ? static_cast<int>(edges_.size()) - 1 : static_cast<int>(it - edges_.begin());
 }
 
 Point ContactBoundary::point_at(double s) const {

@@ -134,8 +134,8 @@ void MshParser::skip_section(const std::string& section) {
 
 const std::string& MshParser::field(const Line& line, std::size_t i) const {
   if (i >= line.fields.size())
-    fail(line.number, "expected at least " + std::to_string(i + 1) + " fields, found " +
-                          std::to_string(line.fields.size()));
+    fail(line.number,
+         "expected at least " + std::to_string(i + 1) + " fields, found " + std::to_string(line.fields.size()));
   return line.fields[i];
 }
 
@@ -160,8 +160,8 @@ double MshParser::real(const Line& line, std::size_t i) const {
 Tag MshParser::node_tag(const Line& line, std::size_t i) const {
   const Tag tag = integer(line, i);
   if (!node_index_.contains(tag))
-    fail(line.number, "element " + field(line, 0) + " refers to node tag " + std::to_string(tag) +
-                          ", which $Nodes does not define");
+    fail(line.number,
+         "element " + field(line, 0) + " refers to node tag " + std::to_string(tag) + ", which $Nodes does not define");
   return tag;
 }
 
@@ -179,11 +179,9 @@ void MshParser::read_format() {
   const double version = real(line, 0);
   if (!(version >= 4.0 && version < 5.0))
     fail(line.number,
-         "MSH version " + field(line, 0) +
-             " is not supported; only 4.0 and 4.1 are (export with gmsh -format msh41)");
+         "MSH version " + field(line, 0) + " is not supported; only 4.0 and 4.1 are (export with gmsh -format msh41)");
   msh40_ = version < 4.05;  // Gmsh 4.0 writes "4" or "4.0"
-  if (integer(line, 1) != 0)
-    fail(line.number, "binary MSH files are not supported; save as ASCII (gmsh -bin 0)");
+  if (integer(line, 1) != 0) fail(line.number, "binary MSH files are not supported; save as ASCII (gmsh -bin 0)");
   expect_end("$MeshFormat");
 }
 
@@ -241,19 +239,15 @@ void MshParser::read_elements() {
     const Tag dim = integer(block, msh40_ ? 1 : 0), entity = integer(block, msh40_ ? 0 : 1);
     const Tag type = integer(block, 2), n_elements = integer(block, 3);
     if (dim == 2 && type != 3)
-      fail(block.number,
-           "only 4-node quadrilaterals (type 3) are supported; found type " + std::to_string(type));
+      fail(block.number, "only 4-node quadrilaterals (type 3) are supported; found type " + std::to_string(type));
     if (dim == 1 && type != 1)
-      fail(block.number, "only 2-node lines (type 1) are supported on curves; found type " +
-                             std::to_string(type));
+      fail(block.number, "only 2-node lines (type 1) are supported on curves; found type " + std::to_string(type));
     for (Tag k = 0; k < n_elements; ++k) {
       const Line line = line_in("$Elements");  // "tag node node ..."
       if (dim == 2)
-        quads_.push_back(
-            {node_tag(line, 1), node_tag(line, 2), node_tag(line, 3), node_tag(line, 4)});
+        quads_.push_back({node_tag(line, 1), node_tag(line, 2), node_tag(line, 3), node_tag(line, 4)});
       else if (dim == 1)
-        lines_.push_back(
-            {line.fields[0], entity, {node_tag(line, 1), node_tag(line, 2)}, line.number});
+        lines_.push_back({line.fields[0], entity, {node_tag(line, 1), node_tag(line, 2)}, line.number});
       // Point elements (type 15) and 3-D elements say nothing about a 2-D quadrilateral mesh.
     }
   }
@@ -296,21 +290,18 @@ QuadMesh MshParser::build_mesh() const {
     if (groups == curve_groups_.end() || groups->second.empty()) continue;  // no label
     // A label decides the boundary condition, so an edge in two groups would be ambiguous.
     if (groups->second.size() > 1)
-      fail(line.line, "curve " + std::to_string(line.curve) + " belongs to " +
-                          std::to_string(groups->second.size()) +
+      fail(line.line, "curve " + std::to_string(line.curve) + " belongs to " + std::to_string(groups->second.size()) +
                           " physical groups; a boundary edge can carry only one label");
     const Tag group = groups->second.front();
     const auto name = curve_group_names_.find(group);
-    const std::string label =
-        name != curve_group_names_.end() ? name->second : std::to_string(group);
+    const std::string label = name != curve_group_names_.end() ? name->second : std::to_string(group);
 
     const auto a = vertex_of.find(line.nodes[0]), b = vertex_of.find(line.nodes[1]);
     auto edge = boundary_edge.end();
-    if (a != vertex_of.end() && b != vertex_of.end())
-      edge = boundary_edge.find(std::minmax(a->second, b->second));
+    if (a != vertex_of.end() && b != vertex_of.end()) edge = boundary_edge.find(std::minmax(a->second, b->second));
     if (edge == boundary_edge.end())
-      fail(line.line, "line element " + line.tag + " (nodes " + std::to_string(line.nodes[0]) +
-                          ", " + std::to_string(line.nodes[1]) + ") of physical group '" + label +
+      fail(line.line, "line element " + line.tag + " (nodes " + std::to_string(line.nodes[0]) + ", " +
+                          std::to_string(line.nodes[1]) + ") of physical group '" + label +
                           "' is not a boundary edge of the quadrilateral mesh");
     mesh.set_edge_label(edge->second, label);
   }

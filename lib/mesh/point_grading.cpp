@@ -17,7 +17,8 @@ int vertex_at(const QuadMesh& mesh, const Point& point, const std::string& origi
   const double tolerance = 1e-9 * mesh.longest_edge();
   for (int v = 0; v < mesh.n_vertices(); ++v)
     if ((mesh.vertex(v) - point).norm() < tolerance) return v;
-  throw_bad_input(origin, "grading point", fmt::format("({}, {})", point.x(), point.y()), "must be a vertex of the mesh");
+  throw_bad_input(origin, "grading point", fmt::format("({}, {})", point.x(), point.y()),
+                  "must be a vertex of the mesh");
 }
 
 namespace {
@@ -53,11 +54,12 @@ void check_layer_depth(const QuadMesh& mesh, const std::vector<int>& star_of, do
     for (int c : mesh.edge_cells(e))
       if (c >= 0 && star_of[c] >= 0) shortest = std::min(shortest, mesh.edge_length(e));
   if (std::isfinite(shortest) && shortest * std::pow(ratio, layers) < kFinestRelativeCell * extent)
-    throw_bad_input(origin, "grading_layers", std::to_string(layers),
-                    fmt::format("at most {} with grading {}: deeper, the innermost cells ({:.2g} of the domain's extent) would be "
-                                "below {:.0e} of it, where round-off in the vertex coordinates distorts them",
-                                static_cast<int>(std::floor(std::log(kFinestRelativeCell * extent / shortest) / std::log(ratio))),
-                                ratio, shortest * std::pow(ratio, layers) / extent, kFinestRelativeCell));
+    throw_bad_input(
+        origin, "grading_layers", std::to_string(layers),
+        fmt::format("at most {} with grading {}: deeper, the innermost cells ({:.2g} of the domain's extent) would be "
+                    "below {:.0e} of it, where round-off in the vertex coordinates distorts them",
+                    static_cast<int>(std::floor(std::log(kFinestRelativeCell * extent / shortest) / std::log(ratio))),
+                    ratio, shortest * std::pow(ratio, layers) / extent, kFinestRelativeCell));
 }
 
 }  // namespace
@@ -71,7 +73,7 @@ QuadMesh grade_towards_vertices(const QuadMesh& mesh, const std::vector<int>& ce
   check_layer_depth(mesh, star_of, ratio, layers, origin);
   // 2. Vertices: the input's, then S_k(V) for every (centre, outer vertex V, level k ≥ 1).
   std::vector<Point> vertices = mesh.vertices();
-  std::map<std::tuple<int, int, int>, int> scaled;  // (star, V, k) -> vertex
+  std::map<std::tuple<int, int, int>, int> scaled;                     // (star, V, k) -> vertex
   std::vector<std::pair<int, int>> ray_of(vertices.size(), {-1, -1});  // new vertex -> (P, V) it lies between
   auto at_level = [&](int star, int v, int k) {
     if (k == 0) return v;
@@ -98,8 +100,10 @@ QuadMesh grade_towards_vertices(const QuadMesh& mesh, const std::vector<int>& ce
     const int v1 = cell[(i + 1) % 4], v2 = cell[(i + 2) % 4], v3 = cell[(i + 3) % 4];
     for (auto [q, r] : {std::pair{v1, v2}, std::pair{v2, v3}})
       for (int k = 0; k < layers; ++k)
-        cells.push_back({at_level(star, q, k + 1), at_level(star, q, k), at_level(star, r, k), at_level(star, r, k + 1)});
-    cells.push_back({centres[star], at_level(star, v1, layers), at_level(star, v2, layers), at_level(star, v3, layers)});
+        cells.push_back(
+            {at_level(star, q, k + 1), at_level(star, q, k), at_level(star, r, k), at_level(star, r, k + 1)});
+    cells.push_back(
+        {centres[star], at_level(star, v1, layers), at_level(star, v2, layers), at_level(star, v3, layers)});
     parent.resize(cells.size(), c);
   }
   if (parents) *parents = std::move(parent);

@@ -10,24 +10,26 @@ namespace hpcontact::mesh {
 
 std::string to_string(BoundaryPart part) {
   switch (part) {
-    case BoundaryPart::interior: return "interior";
-    case BoundaryPart::neumann: return "neumann";
-    case BoundaryPart::dirichlet: return "dirichlet";
-    case BoundaryPart::contact: return "contact";
+    case BoundaryPart::interior:
+      return "interior";
+    case BoundaryPart::neumann:
+      return "neumann";
+    case BoundaryPart::dirichlet:
+      return "dirichlet";
+    case BoundaryPart::contact:
+      return "contact";
   }
   return "unknown";
 }
 
-QuadMesh::QuadMesh(std::vector<Point> vertices, std::vector<std::array<int, 4>> cells,
-                   const std::string& origin)
+QuadMesh::QuadMesh(std::vector<Point> vertices, std::vector<std::array<int, 4>> cells, const std::string& origin)
     : vertices_(std::move(vertices)), cells_(std::move(cells)) {
   if (cells_.empty()) throw InputError(origin + ": the mesh has no cells");
   for (std::size_t c = 0; c < cells_.size(); ++c)
     for (int v : cells_[c])
       if (v < 0 || v >= n_vertices())
-        throw InputError(origin + ": cell " + std::to_string(c) + " refers to vertex " +
-                         std::to_string(v) + ", but the mesh has " +
-                         std::to_string(n_vertices()) + " vertices");
+        throw InputError(origin + ": cell " + std::to_string(c) + " refers to vertex " + std::to_string(v) +
+                         ", but the mesh has " + std::to_string(n_vertices()) + " vertices");
   check_cells(origin);
   build_topology(origin);
 }
@@ -45,8 +47,7 @@ void QuadMesh::check_cells(const std::string& origin) const {
       const double scale = u.norm() * w.norm();
       if (!(cross > 1e-12 * scale))
         throw InputError(origin + ": cell " + std::to_string(c) +
-                         " is not a strictly convex counterclockwise quadrilateral (corner " +
-                         std::to_string(k) + ")");
+                         " is not a strictly convex counterclockwise quadrilateral (corner " + std::to_string(k) + ")");
     }
   }
 }
@@ -67,8 +68,8 @@ void QuadMesh::build_topology(const std::string& origin) {
       } else {
         auto& adjacent = edge_cells_[it->second];
         if (adjacent[1] >= 0)
-          throw InputError(origin + ": edge (" + std::to_string(key.first) + ", " +
-                           std::to_string(key.second) + ") is shared by more than two cells");
+          throw InputError(origin + ": edge (" + std::to_string(key.first) + ", " + std::to_string(key.second) +
+                           ") is shared by more than two cells");
         adjacent[1] = c;
       }
       cell_edges_[c][k] = it->second;
@@ -91,28 +92,23 @@ int QuadMesh::local_edge_of(int e, int k) const {
   HPC_VERIFY(false, "edge not found in its adjacent cell");
 }
 
-Point QuadMesh::edge_midpoint(int e) const {
-  return 0.5 * (vertices_[edges_[e][0]] + vertices_[edges_[e][1]]);
-}
+Point QuadMesh::edge_midpoint(int e) const { return 0.5 * (vertices_[edges_[e][0]] + vertices_[edges_[e][1]]); }
 
-double QuadMesh::edge_length(int e) const {
-  return (vertices_[edges_[e][1]] - vertices_[edges_[e][0]]).norm();
-}
+double QuadMesh::edge_length(int e) const { return (vertices_[edges_[e][1]] - vertices_[edges_[e][0]]).norm(); }
 
 Point QuadMesh::boundary_normal(int e) const {
   HPC_VERIFY(is_boundary_edge(e), "normal requested for an interior edge");
   const int c = edge_cells_[e][0];
   const int local = local_edge_of(e, 0);
   // Local edges 0 and 1 run counterclockwise around the cell, 2 and 3 clockwise.
-  const Point t = vertices_[cells_[c][kLocalEdgeVertices[local][1]]] -
-                  vertices_[cells_[c][kLocalEdgeVertices[local][0]]];
+  const Point t =
+      vertices_[cells_[c][kLocalEdgeVertices[local][1]]] - vertices_[cells_[c][kLocalEdgeVertices[local][0]]];
   const double ccw = (local <= 1) ? 1.0 : -1.0;
   return ccw * Point(t.y(), -t.x()).normalized();
 }
 
 void QuadMesh::set_edge_part(int e, BoundaryPart part) {
-  HPC_VERIFY(is_boundary_edge(e) || part == BoundaryPart::interior,
-             "boundary part assigned to an interior edge");
+  HPC_VERIFY(is_boundary_edge(e) || part == BoundaryPart::interior, "boundary part assigned to an interior edge");
   edge_parts_[e] = part;
 }
 

@@ -27,8 +27,7 @@ class QuadMesh {
   /// Builds topology and checks validity: every cell must be a strictly convex,
   /// counterclockwise quadrilateral, and every edge shared by at most two cells.
   /// @throws InputError naming `origin` otherwise.
-  QuadMesh(std::vector<Point> vertices, std::vector<std::array<int, 4>> cells,
-           const std::string& origin = "mesh");
+  QuadMesh(std::vector<Point> vertices, std::vector<std::array<int, 4>> cells, const std::string& origin = "mesh");
 
   int n_vertices() const { return static_cast<int>(vertices_.size()); }
   int n_cells() const { return static_cast<int>(cells_.size()); }
@@ -89,7 +88,6 @@ class QuadMesh {
 inline constexpr double kFinestRelativeCell = 1e-10;
 
 /// Local vertex pair (start, end) of each local edge, in the local direction.
-inline constexpr std::array<std::array<int, 2>, 4> kLocalEdgeVertices{
-    {{0, 1}, {1, 2}, {3, 2}, {0, 3}}};
+inline constexpr std::array<std::array<int, 2>, 4> kLocalEdgeVertices{{{0, 1}, {1, 2}, {3, 2}, {0, 3}}};
 
 }  // namespace hpcontact::mesh

@@ -1,12 +1,12 @@
 // Rectangle mesh generator, random perturbation and boundary-part assignment.
 #include "mesh/rectangle_mesh.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
 #include <random>
-
-#include <fmt/format.h>
 
 #include "core/error.hpp"
 
@@ -36,40 +36,43 @@ QuadMesh make_tensor_mesh(const std::vector<double>& x, const std::vector<double
   std::vector<std::array<int, 4>> cells;
   cells.reserve(static_cast<std::size_t>(n_x) * n_y);
   for (int j = 0; j < n_y; ++j)
-    for (int i = 0; i < n_x; ++i)
-      cells.push_back({index(i, j), index(i + 1, j), index(i + 1, j + 1), index(i, j + 1)});
+    for (int i = 0; i < n_x; ++i) cells.push_back({index(i, j), index(i + 1, j), index(i + 1, j + 1), index(i, j + 1)});
   QuadMesh mesh(std::move(vertices), std::move(cells), origin);
   const double tol_x = 1e-9 * (x.back() - x.front()), tol_y = 1e-9 * (y.back() - y.front());
   for (int e : mesh.boundary_edges()) {
     const Point m = mesh.edge_midpoint(e);
-    if (std::abs(m.y() - y.front()) < tol_y) mesh.set_edge_label(e, "bottom");
-    else if (std::abs(m.x() - x.back()) < tol_x) mesh.set_edge_label(e, "right");
-    else if (std::abs(m.y() - y.back()) < tol_y) mesh.set_edge_label(e, "top");
-    else mesh.set_edge_label(e, "left");
+    if (std::abs(m.y() - y.front()) < tol_y)
+      mesh.set_edge_label(e, "bottom");
+    else if (std::abs(m.x() - x.back()) < tol_x)
+      mesh.set_edge_label(e, "right");
+    else if (std::abs(m.y() - y.back()) < tol_y)
+      mesh.set_edge_label(e, "top");
+    else
+      mesh.set_edge_label(e, "left");
   }
   return mesh;
 }
 
-std::vector<double> graded_nodes(double a, double b, int n, const std::vector<double>& points, double ratio,
-                                 int layers, const std::string& origin, const std::vector<double>& snapped_only,
+std::vector<double> graded_nodes(double a, double b, int n, const std::vector<double>& points, double ratio, int layers,
+                                 const std::string& origin, const std::vector<double>& snapped_only,
                                  const std::string& snapped_origin) {
-  if (!(ratio > 0.0 && ratio < 1.0))
-    throw_bad_input(origin, "grading", fmt::format("{}", ratio), "must be in (0, 1)");
+  if (!(ratio > 0.0 && ratio < 1.0)) throw_bad_input(origin, "grading", fmt::format("{}", ratio), "must be in (0, 1)");
   if (n < 1) throw_bad_input(origin, "cells", std::to_string(n), "must be >= 1");
   std::vector<double> nodes(n + 1);
   for (int i = 0; i <= n; ++i) nodes[i] = a + (b - a) * i / n;
   const double h = (b - a) / n;
   // 1. Snap the nearest node to each point (end nodes only to points at the ends).
-  std::vector<int> snapped;      // nodes of all points
-  std::vector<int> layered;      // nodes of `points`, which get layers
-  std::vector<double> placed;    // coordinates already snapped
+  std::vector<int> snapped;    // nodes of all points
+  std::vector<int> layered;    // nodes of `points`, which get layers
+  std::vector<double> placed;  // coordinates already snapped
   auto targets = points;
   targets.insert(targets.end(), snapped_only.begin(), snapped_only.end());
   std::vector<const std::string*> moved_by(n + 1, nullptr);  // which key moved each node, for the h/4 check
   for (std::size_t t = 0; t < targets.size(); ++t) {
     const double point = targets[t];
     const std::string& where = t < points.size() || snapped_origin.empty() ? origin : snapped_origin;
-    const auto same = std::find_if(placed.begin(), placed.end(), [&](double q) { return std::abs(q - point) <= 1e-12 * (b - a); });
+    const auto same =
+        std::find_if(placed.begin(), placed.end(), [&](double q) { return std::abs(q - point) <= 1e-12 * (b - a); });
     if (same != placed.end()) {
       if (t < points.size()) layered.push_back(snapped[same - placed.begin()]);
       continue;
@@ -79,9 +82,11 @@ std::vector<double> graded_nodes(double a, double b, int n, const std::vector<do
     int i = static_cast<int>(std::lround((point - a) / h));
     if ((i == 0 || i == n) && std::abs(nodes[i] - point) > 1e-12 * (b - a)) i = i == 0 ? 1 : n - 1;
     if (i <= 0 || i >= n ? std::abs(nodes[i] - point) > 1e-12 * (b - a) : false)
-      throw_bad_input(where, "grading point", fmt::format("{}", point), "too close to an end of the interval for this many cells");
+      throw_bad_input(where, "grading point", fmt::format("{}", point),
+                      "too close to an end of the interval for this many cells");
     if (std::find(snapped.begin(), snapped.end(), i) != snapped.end())
-      throw_bad_input(where, "grading point", fmt::format("{}", point), "two grading points share the nearest node: use more cells");
+      throw_bad_input(where, "grading point", fmt::format("{}", point),
+                      "two grading points share the nearest node: use more cells");
     nodes[i] = point;
     moved_by[i] = &where;
     snapped.push_back(i);
@@ -100,9 +105,11 @@ std::vector<double> graded_nodes(double a, double b, int n, const std::vector<do
   std::sort(layered.begin(), layered.end());
   layered.erase(std::unique(layered.begin(), layered.end()), layered.end());
   if (!layered.empty() && 0.25 * h * std::pow(ratio, layers) < kFinestRelativeCell * (b - a))
-    throw_bad_input(origin, "grading_layers", std::to_string(layers),
-                    fmt::format("too deep for grading {}: the innermost cells would be below {:.0e} of the interval, where "
-                                "round-off in the coordinates distorts them", ratio, kFinestRelativeCell));
+    throw_bad_input(
+        origin, "grading_layers", std::to_string(layers),
+        fmt::format("too deep for grading {}: the innermost cells would be below {:.0e} of the interval, where "
+                    "round-off in the coordinates distorts them",
+                    ratio, kFinestRelativeCell));
   for (int i : layered)
     for (int side : {-1, 1}) {
       const int neighbour = i + side;
@@ -137,8 +144,7 @@ void perturb_interior_vertices(QuadMesh& mesh, double amplitude, std::uint32_t s
   mesh.move_vertices(std::move(moved), "perturbed mesh");
 }
 
-int assign_boundary_part(QuadMesh& mesh, BoundaryPart part,
-                         const std::function<bool(const Point&)>& contains) {
+int assign_boundary_part(QuadMesh& mesh, BoundaryPart part, const std::function<bool(const Point&)>& contains) {
   int count = 0;
   for (int e : mesh.boundary_edges())
     if (contains(mesh.edge_midpoint(e))) {
@@ -148,8 +154,7 @@ int assign_boundary_part(QuadMesh& mesh, BoundaryPart part,
   return count;
 }
 
-int assign_boundary_parts_by_label(QuadMesh& mesh,
-                                   const std::map<std::string, BoundaryPart>& part_of_label) {
+int assign_boundary_parts_by_label(QuadMesh& mesh, const std::map<std::string, BoundaryPart>& part_of_label) {
   int count = 0;
   for (int e : mesh.boundary_edges()) {
     const auto it = part_of_label.find(mesh.edge_label(e));
@@ -162,8 +167,7 @@ int assign_boundary_parts_by_label(QuadMesh& mesh,
 
 void assign_paper_boundary_parts(QuadMesh& mesh) {
   constexpr double tol = 1e-9;
-  assign_boundary_part(mesh, BoundaryPart::contact,
-                       [](const Point& m) { return std::abs(m.y() + 1.0) < tol; });
+  assign_boundary_part(mesh, BoundaryPart::contact, [](const Point& m) { return std::abs(m.y() + 1.0) < tol; });
   assign_boundary_part(mesh, BoundaryPart::dirichlet, [](const Point& m) {
     return std::abs(m.y() - 1.0) < tol || (std::abs(m.x() - 1.0) < tol && m.y() > 0.0);
   });

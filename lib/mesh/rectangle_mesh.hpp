@@ -35,8 +35,8 @@ QuadMesh make_tensor_mesh(const std::vector<double>& x_nodes, const std::vector<
 /// `snapped_origin` (default `origin`). Equal coordinates share their node.
 /// @throws InputError if a point lies outside [a, b], two points share a node, or snapping
 /// would leave a cell thinner than h/4.
-std::vector<double> graded_nodes(double a, double b, int n, const std::vector<double>& points, double ratio,
-                                 int layers, const std::string& origin, const std::vector<double>& snapped_only = {},
+std::vector<double> graded_nodes(double a, double b, int n, const std::vector<double>& points, double ratio, int layers,
+                                 const std::string& origin, const std::vector<double>& snapped_only = {},
                                  const std::string& snapped_origin = "");
 
 /// Moves every interior vertex by a uniformly random offset of at most `amplitude` times the
@@ -46,13 +46,11 @@ void perturb_interior_vertices(QuadMesh& mesh, double amplitude, std::uint32_t s
 
 /// Sets the part of every boundary edge whose midpoint satisfies `contains`; later calls
 /// override earlier ones. Returns the number of edges set.
-int assign_boundary_part(QuadMesh& mesh, BoundaryPart part,
-                         const std::function<bool(const Point&)>& contains);
+int assign_boundary_part(QuadMesh& mesh, BoundaryPart part, const std::function<bool(const Point&)>& contains);
 
 /// Sets parts by edge label (e.g. Gmsh physical group names). Labels not in the map keep
 /// their part. Returns the number of edges set.
-int assign_boundary_parts_by_label(QuadMesh& mesh,
-                                   const std::map<std::string, BoundaryPart>& part_of_label);
+int assign_boundary_parts_by_label(QuadMesh& mesh, const std::map<std::string, BoundaryPart>& part_of_label);
 
 /// The geometry of the paper's §7: Ω = (-1,1)², Γ_C the bottom edge, Γ_D the top edge and the
 /// upper half {1} × [0,1] of the right edge, Γ_N the rest. n × n cells, h = 2/n.

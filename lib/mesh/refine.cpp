@@ -29,8 +29,7 @@ QuadMesh refine_uniformly(const QuadMesh& mesh) {
   // A fine boundary edge has one original vertex and the midpoint of its parent edge.
   for (int e : fine.boundary_edges()) {
     const auto& ends = fine.edge(e);
-    const int parent = (ends[1] >= edge_base && ends[1] < centre_base) ? ends[1] - edge_base
-                                                                        : ends[0] - edge_base;
+    const int parent = (ends[1] >= edge_base && ends[1] < centre_base) ? ends[1] - edge_base : ends[0] - edge_base;
     fine.set_edge_label(e, mesh.edge_label(parent));
     fine.set_edge_part(e, mesh.edge_part(parent));
   }

@@ -24,8 +24,8 @@ const Eigen::MatrixXd& GramLadder::at(int level) const {
 GramLadder interpolation_gram_ladder(const space::MultiplierSpace& multipliers) {
   // Level 0 is accurate to ~1e-9, level 1 to round-off: α is taken on level 1, and level 2 is
   // there for the tests that check the estimate against the next level.
-  return GramLadder(
-      [&multipliers](int level, bool*) { return interpolation_norm_gram_kernel(multipliers, {level}); }, 2);
+  return GramLadder([&multipliers](int level, bool*) { return interpolation_norm_gram_kernel(multipliers, {level}); },
+                    2);
 }
 
 GramLadder extension_gram_ladder(const mesh::QuadMesh& mesh, std::vector<int> cell_degrees,

@@ -22,15 +22,13 @@ Eigen::MatrixXd interpolation_norm_gram_on_reference(const mesh::ContactBoundary
                                                      const space::MultiplierSpace& multipliers,
                                                      const InterpolationReference& reference) {
   if (reference.subdivisions < 1)
-    throw_bad_input("interpolation norm", "subdivisions", std::to_string(reference.subdivisions),
-                    "must be >= 1");
+    throw_bad_input("interpolation norm", "subdivisions", std::to_string(reference.subdivisions), "must be >= 1");
   const int q = reference.degree > 0 ? reference.degree : multipliers.max_degree() + 6;
   // W's mesh contains the breakpoints of T_{C,H}, so every W interval lies in one segment.
   std::vector<double> nodes;
   for (const auto& interval : assembly::common_intervals(contact, multipliers.boundary_mesh()))
     for (int k = 0; k < reference.subdivisions; ++k)
-      nodes.push_back(interval.s_begin +
-                      (interval.s_end - interval.s_begin) * k / reference.subdivisions);
+      nodes.push_back(interval.s_begin + (interval.s_end - interval.s_begin) * k / reference.subdivisions);
   nodes.push_back(contact.length());
   const int n_intervals = static_cast<int>(nodes.size()) - 1;
   // Dofs: vertices 0..n_intervals, then q - 1 bubbles per interval.
@@ -50,8 +48,7 @@ Eigen::MatrixXd interpolation_norm_gram_on_reference(const mesh::ContactBoundary
     for (std::size_t g = 0; g < rule.points.size(); ++g) {
       const double w = rule.weights[g] * half;
       const double s = nodes[k] + half * (rule.points[g] + 1.0);
-      const Eigen::VectorXd mu =
-          multipliers.basis_values(segment, multipliers.local_coordinate(segment, s));
+      const Eigen::VectorXd mu = multipliers.basis_values(segment, multipliers.local_coordinate(segment, s));
       for (int a = 0; a <= q; ++a) {
         const double value_a = table.values(g, a), slope_a = table.derivatives(g, a) / half;
         for (int b = 0; b <= q; ++b) {
@@ -75,7 +72,7 @@ Eigen::MatrixXd interpolation_norm_gram_on_reference(const mesh::ContactBoundary
   mass.setFromTriplets(m_entries.begin(), m_entries.end());
   coupling.setFromTriplets(c_entries.begin(), c_entries.end());
   const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eigen{Eigen::MatrixXd(stiffness_plus_mass),
-                                                                           Eigen::MatrixXd(mass)};
+                                                                        Eigen::MatrixXd(mass)};
   if (eigen.info() != Eigen::Success)
     throw NumericalError("interpolation norm: the reference eigenproblem K_W Φ = M_W Φ Λ failed");
   const Eigen::MatrixXd scaled = eigen.eigenvectors().transpose() * coupling;  // Φᵀ C, shape (n_w, n_mult)
@@ -177,8 +174,8 @@ ExtensionReferenceFactor::ExtensionReferenceFactor(const mesh::QuadMesh& mesh, c
 Eigen::MatrixXd extension_norm_gram(const ExtensionReferenceFactor& reference,
                                     const space::MultiplierSpace& multipliers) {
   const auto& reference_operators = reference.operators();
-  return reference_operators.gram_factor().schur_complement(assembly::assemble_coupling(
-      reference_operators.space(), reference_operators.contact(), multipliers));
+  return reference_operators.gram_factor().schur_complement(
+      assembly::assemble_coupling(reference_operators.space(), reference_operators.contact(), multipliers));
 }
 
 Eigen::MatrixXd extension_norm_gram(const mesh::QuadMesh& mesh, const std::vector<int>& cell_degrees,

@@ -17,7 +17,6 @@
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
-
 #include <memory>
 
 #include "mesh/contact_boundary.hpp"

@@ -106,14 +106,12 @@ Kernel sum_kernel(double length) {
 }
 
 struct Resolution {
-  int extra_points;    ///< Gauss points beyond those that integrate the polynomial part exactly
-  double depth;        ///< grading stops at this fraction of a piece's length from a singularity
+  int extra_points;                      ///< Gauss points beyond those that integrate the polynomial part exactly
+  double depth;                          ///< grading stops at this fraction of a piece's length from a singularity
   static constexpr double ratio = 0.25;  ///< geometric grading: distance/length ≥ 1/3 per subinterval
 };
 
-Resolution resolution_of(int level) {
-  return {6 + 6 * level, std::pow(10.0, -8.0 - 6.0 * level)};
-}
+Resolution resolution_of(int level) { return {6 + 6 * level, std::pow(10.0, -8.0 - 6.0 * level)}; }
 
 // Legendre values P_0..P_p at τ into `out`.
 void legendre(int p, double tau, double* out) {
@@ -134,11 +132,15 @@ struct Segment {
 class PairIntegral {
  public:
   PairIntegral(const Segment& i, const Segment& j, const Kernel& kernel, const Resolution& resolution)
-      : i_(i), j_(j), kernel_(kernel), resolution_(resolution),
+      : i_(i),
+        j_(j),
+        kernel_(kernel),
+        resolution_(resolution),
         inner_(basis::gauss_legendre(basis::gauss_points_for_degree(i.degree + j.degree))),
-        outer_(basis::gauss_legendre(basis::gauss_points_for_degree(i.degree + j.degree + 1) +
-                                     resolution.extra_points)),
-        value_i_(i.degree + 1), value_j_(j.degree + 1),
+        outer_(
+            basis::gauss_legendre(basis::gauss_points_for_degree(i.degree + j.degree + 1) + resolution.extra_points)),
+        value_i_(i.degree + 1),
+        value_j_(j.degree + 1),
         result_(Eigen::MatrixXd::Zero(i.degree + 1, j.degree + 1)) {}
 
   Eigen::MatrixXd compute() {
@@ -148,7 +150,8 @@ class PairIntegral {
     const double hi = sum ? i_.end + j_.end : i_.end - j_.begin;
     if (kernel_.negligible_on(lo, hi)) return result_;
     std::vector<double> cuts{lo, hi};
-    for (double x : sum ? std::vector{i_.begin + j_.end, i_.end + j_.begin} : std::vector{i_.begin - j_.begin, i_.end - j_.end})
+    for (double x :
+         sum ? std::vector{i_.begin + j_.end, i_.end + j_.begin} : std::vector{i_.begin - j_.begin, i_.end - j_.end})
       cuts.push_back(x);
     for (double z : kernel_.singular_points)
       if (z > lo && z < hi) cuts.push_back(z);

@@ -41,8 +41,8 @@ namespace {
 const assembly::CondensedFactor& condensed_factor(const space::H1Space& space, double stiffness_weight,
                                                   double mass_weight, const std::vector<int>& trace,
                                                   linalg::Distribution distribution,
-                                                  std::unique_ptr<assembly::CondensedFactor>& slot,
-                                                  const char* name, OperatorLog* log) {
+                                                  std::unique_ptr<assembly::CondensedFactor>& slot, const char* name,
+                                                  OperatorLog* log) {
   if (!slot) {
     Stopwatch clock;
     slot = std::make_unique<assembly::CondensedFactor>(space, stiffness_weight, mass_weight, trace, distribution);
@@ -59,9 +59,10 @@ const assembly::CondensedFactor& PrimalOperators::stiffness_factor() const {
   bool dirichlet = false;
   for (int e : mesh_->boundary_edges()) dirichlet = dirichlet || mesh_->edge_part(e) == mesh::BoundaryPart::dirichlet;
   if (!dirichlet)
-    throw InputError("the body has no Dirichlet part (no boundary edge is in Γ_D: key 'boundary.dirichlet' or "
-                     "'boundary.dirichlet_groups'): K is singular, since u + c has the energy of u, and the contact "
-                     "problems (9), (13), (15) need u fixed somewhere (the inf-sup analysis, with K + M, does not)");
+    throw InputError(
+        "the body has no Dirichlet part (no boundary edge is in Γ_D: key 'boundary.dirichlet' or "
+        "'boundary.dirichlet_groups'): K is singular, since u + c has the energy of u, and the contact "
+        "problems (9), (13), (15) need u fixed somewhere (the inf-sup analysis, with K + M, does not)");
   return condensed_factor(*space_, 1.0, 0.0, trace_dofs(), distribution_, stiffness_factor_, "factor(K)", log_);
 }
 

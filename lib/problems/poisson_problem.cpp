@@ -13,8 +13,8 @@ PoissonSolution solve_poisson(const space::H1Space& space, const PoissonData& da
   const auto matrices = assembly::assemble_volume_matrices(space, {.stiffness = true, .mass = false});
   Eigen::VectorXd load = assembly::assemble_volume_load(space, data.f);
   if (data.neumann)
-    load += assembly::assemble_boundary_load(
-        space, {mesh::BoundaryPart::neumann, mesh::BoundaryPart::contact}, data.neumann);
+    load += assembly::assemble_boundary_load(space, {mesh::BoundaryPart::neumann, mesh::BoundaryPart::contact},
+                                             data.neumann);
   out.assembly_seconds = assembly_clock.seconds();
   Stopwatch solve_clock;
   const linalg::SparseCholesky cholesky(matrices.stiffness);

@@ -18,7 +18,7 @@ struct PoissonData {
 struct PoissonSolution {
   Eigen::VectorXd coefficients;  ///< shape (space.n_dofs())
   double assembly_seconds = 0.0;
-  double solve_seconds = 0.0;    ///< sparse Cholesky factorization + solve
+  double solve_seconds = 0.0;  ///< sparse Cholesky factorization + solve
 };
 
 /// Assembles K and the load, factorizes K (CHOLMOD) and solves.

@@ -7,21 +7,30 @@ namespace hpcontact::scene {
 
 std::string to_string(Effect effect) {
   switch (effect) {
-    case Effect::signorini: return "signorini";
-    case Effect::friction: return "friction";
-    case Effect::friction_s: return "friction_s";
-    case Effect::infsup: return "infsup";
-    case Effect::convergence: return "convergence";
+    case Effect::signorini:
+      return "signorini";
+    case Effect::friction:
+      return "friction";
+    case Effect::friction_s:
+      return "friction_s";
+    case Effect::infsup:
+      return "infsup";
+    case Effect::convergence:
+      return "convergence";
   }
   return "?";
 }
 
 std::string to_string(Output output) {
   switch (output) {
-    case Output::summary: return "summary";
-    case Output::boundary: return "boundary";
-    case Output::vtu: return "vtu";
-    case Output::mode: return "mode";
+    case Output::summary:
+      return "summary";
+    case Output::boundary:
+      return "boundary";
+    case Output::vtu:
+      return "vtu";
+    case Output::mode:
+      return "mode";
   }
   return "?";
 }
@@ -39,16 +48,19 @@ const std::vector<Output>& all_outputs() {
 
 Effect effect_of(contact::ContactProblem problem) {
   switch (problem) {
-    case contact::ContactProblem::signorini: return Effect::signorini;
-    case contact::ContactProblem::friction: return Effect::friction;
-    case contact::ContactProblem::friction_s: return Effect::friction_s;
+    case contact::ContactProblem::signorini:
+      return Effect::signorini;
+    case contact::ContactProblem::friction:
+      return Effect::friction;
+    case contact::ContactProblem::friction_s:
+      return Effect::friction_s;
   }
   return Effect::signorini;
 }
 
 std::optional<contact::ContactProblem> contact_problem_of(Effect effect) {
-  for (auto problem : {contact::ContactProblem::signorini, contact::ContactProblem::friction,
-                       contact::ContactProblem::friction_s})
+  for (auto problem :
+       {contact::ContactProblem::signorini, contact::ContactProblem::friction, contact::ContactProblem::friction_s})
     if (effect_of(problem) == effect) return problem;
   return std::nullopt;
 }
@@ -74,8 +86,8 @@ bool Scene::wants_output(Output output) const {
 
 std::vector<contact::ContactProblem> Scene::contact_effects() const {
   std::vector<contact::ContactProblem> problems;
-  for (auto problem : {contact::ContactProblem::signorini, contact::ContactProblem::friction,
-                       contact::ContactProblem::friction_s})
+  for (auto problem :
+       {contact::ContactProblem::signorini, contact::ContactProblem::friction, contact::ContactProblem::friction_s})
     if (has_effect(effect_of(problem))) problems.push_back(problem);
   return problems;
 }

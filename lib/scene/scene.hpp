@@ -41,13 +41,13 @@ struct Degree {
 struct Scene {
   std::string file;  ///< the scene file (or the name of a built-in scene)
   // [domain]: a rectangle with n_x × n_y cells, or a Gmsh file.
-  std::string mesh_file;     ///< empty for a rectangle; else absolute or relative to the working folder
+  std::string mesh_file;      ///< empty for a rectangle; else absolute or relative to the working folder
   mesh::Rectangle rectangle;  ///< when mesh_file is empty
   int n_x = 0, n_y = 0;
   double perturb = 0.0;
   std::uint32_t seed = 1;
-  std::vector<double> grading_x, grading_y;   ///< see mesh::graded_nodes
-  std::vector<mesh::Point> grading_points;    ///< see mesh::grade_towards_vertices
+  std::vector<double> grading_x, grading_y;  ///< see mesh::graded_nodes
+  std::vector<mesh::Point> grading_points;   ///< see mesh::grade_towards_vertices
   double domain_grading = 0.5;
   int grading_layers = 0;
   int refinements = 0;  ///< uniform refinements after building; T_{C,H} follows

@@ -20,16 +20,29 @@ using io::TomlTable;
 
 SceneKey number_key(const char* section, const char* name, double low, double high, double fallback,
                     double Scene::*member, const char* doc) {
-  return {section, name, "number", fmt::format("{:g}", fallback), fmt::format("[{:g}, {:g}]", low, high), doc, "",
+  return {section,
+          name,
+          "number",
+          fmt::format("{:g}", fallback),
+          fmt::format("[{:g}, {:g}]", low, high),
+          doc,
+          "",
           [=](const TomlTable& table, Scene& scene) { scene.*member = table.number_in(name, low, high, fallback); }};
 }
 
 SceneKey any_number_key(const char* section, const char* name, double fallback, double mesh::Rectangle::*member,
                         const char* doc) {
-  return {section, name, "number", fmt::format("{:g}", fallback), "finite", doc, "",
+  return {section,
+          name,
+          "number",
+          fmt::format("{:g}", fallback),
+          "finite",
+          doc,
+          "",
           [=](const TomlTable& table, Scene& scene) {
             const double value = table.number(name, fallback);
-            if (!std::isfinite(value)) throw_bad_input(table.origin(name), table.qualified(name), "inf", "a finite number");
+            if (!std::isfinite(value))
+              throw_bad_input(table.origin(name), table.qualified(name), "inf", "a finite number");
             scene.rectangle.*member = value;
           }};
 }
@@ -38,8 +51,14 @@ SceneKey any_number_key(const char* section, const char* name, double fallback, 
 /// the key is required).
 SceneKey integer_key(const char* section, const char* name, long long low, long long high,
                      std::optional<long long> fallback, int Scene::*member, const char* doc) {
-  return {section, name, "integer", fallback ? std::to_string(*fallback) : "", fmt::format("[{}, {}]", low, high), doc,
-          "", [=](const TomlTable& table, Scene& scene) {
+  return {section,
+          name,
+          "integer",
+          fallback ? std::to_string(*fallback) : "",
+          fmt::format("[{}, {}]", low, high),
+          doc,
+          "",
+          [=](const TomlTable& table, Scene& scene) {
             if (fallback || table.has(name)) scene.*member = static_cast<int>(table.integer(name, low, high, fallback));
           }};
 }
@@ -47,8 +66,14 @@ SceneKey integer_key(const char* section, const char* name, long long low, long 
 /// An expression in x, y (parsed now, so that a typo is reported before any work).
 SceneKey expression_key(const char* section, const char* name, const char* fallback, std::string Scene::*member,
                         const char* doc) {
-  return {section, name, "expression in x, y", fallback[0] ? fmt::format("\"{}\"", fallback) : "", "muparser syntax",
-          doc, "", [=](const TomlTable& table, Scene& scene) {
+  return {section,
+          name,
+          "expression in x, y",
+          fallback[0] ? fmt::format("\"{}\"", fallback) : "",
+          "muparser syntax",
+          doc,
+          "",
+          [=](const TomlTable& table, Scene& scene) {
             scene.*member = table.string(name, fallback);
             if (!(scene.*member).empty())
               Expression(scene.*member, table.origin(name) + ": key '" + table.qualified(name) + "'");
@@ -56,10 +81,10 @@ SceneKey expression_key(const char* section, const char* name, const char* fallb
 }
 
 SceneKey names_key(const char* section, const char* name, std::vector<std::string> Scene::*member, const char* doc) {
-  return {section, name, "list of strings", "", "Gmsh physical names", doc, "",
-          [=](const TomlTable& table, Scene& scene) {
-            scene.*member = table.string_list(name, std::vector<std::string>{});
-          }};
+  return {
+      section, name, "list of strings", "", "Gmsh physical names", doc, "", [=](const TomlTable& table, Scene& scene) {
+        scene.*member = table.string_list(name, std::vector<std::string>{});
+      }};
 }
 
 /// Finite numbers (numbers or their text), each checked by `valid`.
@@ -91,7 +116,13 @@ SceneKey choice_key(const char* section, const char* name, std::vector<std::pair
   std::string fallback_text;
   for (const auto& [text, value] : choices)
     if (value == fallback && fallback_text.empty()) fallback_text = text;
-  return {section, name, "string", fmt::format("\"{}\"", fallback_text), choices_text(choices), doc, "",
+  return {section,
+          name,
+          "string",
+          fmt::format("\"{}\"", fallback_text),
+          choices_text(choices),
+          doc,
+          "",
           [=](const TomlTable& table, Scene& scene) {
             std::vector<std::string> names;
             for (const auto& [text, value] : choices) names.push_back(text);
@@ -103,8 +134,8 @@ SceneKey choice_key(const char* section, const char* name, std::vector<std::pair
 
 /// A list of names from a fixed set (effects, outputs), each at most once.
 template <typename Enum>
-SceneKey enum_list_key(const char* section, const char* name, const std::vector<Enum>& all, std::vector<Enum> Scene::*member,
-                       const char* default_text, const char* doc) {
+SceneKey enum_list_key(const char* section, const char* name, const std::vector<Enum>& all,
+                       std::vector<Enum> Scene::*member, const char* default_text, const char* doc) {
   std::vector<std::string> names;
   for (Enum value : all) names.push_back(to_string(value));
   const std::string allowed = fmt::format("any of {}", fmt::join(names, ", "));
@@ -125,7 +156,13 @@ SceneKey enum_list_key(const char* section, const char* name, const std::vector<
 
 /// An integer in [low, high], or a rule (an expression in x, y; a string).
 SceneKey degree_key(const char* name, int low, int high, Degree Scene::*member, const char* doc) {
-  return {"discretization", name, "integer or expression in x, y", "", fmt::format("[{}, {}]", low, high), doc, "",
+  return {"discretization",
+          name,
+          "integer or expression in x, y",
+          "",
+          fmt::format("[{}, {}]", low, high),
+          doc,
+          "",
           [=](const TomlTable& table, Scene& scene) {
             const std::string text = table.string_list(name).front();
             char* end = nullptr;
@@ -148,7 +185,8 @@ void add_domain_keys(std::vector<SceneKey>& keys) {
          const std::string path = table.string("mesh");
          const bool relative = !path.empty() && path.front() != '/';
          scene.mesh_file = relative ? (std::filesystem::path(scene.file).parent_path() / path).string() : path;
-         if (scene.mesh_file.empty()) throw_bad_input(table.origin("mesh"), table.qualified("mesh"), "\"\"", "a file name");
+         if (scene.mesh_file.empty())
+           throw_bad_input(table.origin("mesh"), table.qualified("mesh"), "\"\"", "a file name");
        }});
   add(any_number_key("domain", "x_min", -1.0, &mesh::Rectangle::x_min, "rectangle: left end"));
   add(any_number_key("domain", "x_max", 1.0, &mesh::Rectangle::x_max, "rectangle: right end"));
@@ -174,7 +212,8 @@ void add_domain_keys(std::vector<SceneKey>& keys) {
        }});
   add(number_key("domain", "grading", 0.01, 0.99, 0.5, &Scene::domain_grading,
                  "size ratio of consecutive geometric layers"));
-  add(integer_key("domain", "grading_layers", 0, 40, 0, &Scene::grading_layers, "geometric layers per grading line or point"));
+  add(integer_key("domain", "grading_layers", 0, 40, 0, &Scene::grading_layers,
+                  "geometric layers per grading line or point"));
   add(integer_key("domain", "refinements", 0, 10, 0, &Scene::refinements,
                   "uniform refinements (each cell into four) after building; T_{C,H} follows"));
 }
@@ -185,23 +224,26 @@ void add_boundary_and_contact_mesh_keys(std::vector<SceneKey>& keys) {
                      "Γ_C: edges whose midpoint makes this non-zero (one open curve)"));
   add(expression_key("boundary", "dirichlet", "", &Scene::dirichlet_predicate,
                      "Γ_D (u = 0): edges whose midpoint makes this non-zero; the rest is Γ_N"));
-  add(names_key("boundary", "contact_groups", &Scene::contact_groups, "Γ_C as Gmsh physical groups (instead of `contact`)"));
+  add(names_key("boundary", "contact_groups", &Scene::contact_groups,
+                "Γ_C as Gmsh physical groups (instead of `contact`)"));
   add(names_key("boundary", "dirichlet_groups", &Scene::dirichlet_groups, "Γ_D as Gmsh physical groups"));
   // [contact_mesh]
   const char* size_group = "contact_mesh size";
-  SceneKey m = integer_key("contact_mesh", "m", 1, 1000000, std::nullopt, &Scene::m, "segments of T_{C,H}, graded by `grading`");
+  SceneKey m =
+      integer_key("contact_mesh", "m", 1, 1000000, std::nullopt, &Scene::m, "segments of T_{C,H}, graded by `grading`");
   m.group = size_group;
   add(m);
   add({"contact_mesh", "ratio", "number or fraction", "", "positive, e.g. 1, 0.5, \"2/3\"",
        "h/H: on a uniform T_h|Γ_C m = n · ratio; on a graded one 1/k merges k edges, k splits each edge", size_group,
        [](const TomlTable& table, Scene& scene) {
          if (table.has("ratio"))
-           scene.ratio = parse_ratio(table.string_list("ratio").front(), table.origin("ratio"), table.qualified("ratio"));
+           scene.ratio =
+               parse_ratio(table.string_list("ratio").front(), table.origin("ratio"), table.qualified("ratio"));
        }});
-  add(numbers_key("contact_mesh", "breakpoints",
-                  "positive arc lengths (numbers), strictly increasing, the last the length of Γ_C", &Scene::breakpoints,
-                  "the interior and last breakpoints of T_{C,H} by arc length", [](double v) { return v > 0.0; },
-                  size_group));
+  add(numbers_key(
+      "contact_mesh", "breakpoints", "positive arc lengths (numbers), strictly increasing, the last the length of Γ_C",
+      &Scene::breakpoints, "the interior and last breakpoints of T_{C,H} by arc length",
+      [](double v) { return v > 0.0; }, size_group));
   add(number_key("contact_mesh", "grading", 1e-3, 1.0, 1.0, &Scene::grading,
                  "with `m`: each segment this times the previous one (1: uniform)"));
 }
@@ -209,11 +251,13 @@ void add_boundary_and_contact_mesh_keys(std::vector<SceneKey>& keys) {
 void add_discretization_and_data_keys(std::vector<SceneKey>& keys) {
   auto add = [&](SceneKey key) { keys.push_back(std::move(key)); };
   add(degree_key("p", 1, 20, &Scene::p, "degree p of S^p(T_h), or a rule evaluated at cell centres (required)"));
-  add(degree_key("pC", 0, 19, &Scene::pc, "multiplier degree p_C, or a rule evaluated at segment midpoints (required)"));
+  add(degree_key("pC", 0, 19, &Scene::pc,
+                 "multiplier degree p_C, or a rule evaluated at segment midpoints (required)"));
   // [data]
   add(expression_key("data", "f", "-1", &Scene::load, "load f"));
   add(expression_key("data", "g", "", &Scene::obstacle, "obstacle g of the Signorini problem (9)"));
-  add(expression_key("data", "s", "", &Scene::friction_bound, "friction bound s ≥ 0 of (13), (15) and of the pairing (22)"));
+  add(expression_key("data", "s", "", &Scene::friction_bound,
+                     "friction bound s ≥ 0 of (13), (15) and of the pairing (22)"));
 }
 
 void add_run_keys(std::vector<SceneKey>& keys) {
@@ -224,7 +268,8 @@ void add_run_keys(std::vector<SceneKey>& keys) {
                                     {"extension", infsup::GramNorm::extension}},
                                    infsup::GramNorm::interpolation, &Scene::norm, "realization of H^{-1/2}(Γ_C)"));
   add(choice_key<infsup::PairingProblem>(
-      "infsup", "problem", {{"signorini", infsup::PairingProblem::signorini}, {"friction", infsup::PairingProblem::friction}},
+      "infsup", "problem",
+      {{"signorini", infsup::PairingProblem::signorini}, {"friction", infsup::PairingProblem::friction}},
       infsup::PairingProblem::signorini, &Scene::problem, "pairing: (11) or (22) with the scene's s"));
   add(number_key("infsup", "alpha_tol", 1e-12, 0.1, 1e-4, &Scene::alpha_tolerance,
                  "relative error of α: the H^{-1/2} reference is refined until the estimate is below it"));
@@ -236,7 +281,9 @@ void add_run_keys(std::vector<SceneKey>& keys) {
        }});
   add({"solve", "fit_free_boundary", "boolean", "false", "true, false",
        "grade the mesh towards the free boundary of the contact problems first (rectangle domains)", "",
-       [](const TomlTable& table, Scene& scene) { scene.fit_free_boundary = table.boolean("fit_free_boundary", false); }});
+       [](const TomlTable& table, Scene& scene) {
+         scene.fit_free_boundary = table.boolean("fit_free_boundary", false);
+       }});
   // [run]
   add(enum_list_key<Effect>("run", "effects", all_effects(), &Scene::effects, "",
                             "what the run computes; absent: `solve` needs --effects"));

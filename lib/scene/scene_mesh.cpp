@@ -70,14 +70,15 @@ mesh::QuadMesh build_scene_mesh(const Scene& scene) {
   std::function<bool(const mesh::Point&)> in_dirichlet = [](const mesh::Point&) { return false; };
   if (!scene.dirichlet_predicate.empty()) in_dirichlet = predicate(scene.dirichlet_predicate, "dirichlet");
   for (int e : mesh.boundary_edges()) {
-    const bool contact = mesh.edge_part(e) == mesh::BoundaryPart::contact ||
-                         by_label.contains(mesh.edge_label(e));
+    const bool contact = mesh.edge_part(e) == mesh::BoundaryPart::contact || by_label.contains(mesh.edge_label(e));
     bool dirichlet = in_dirichlet(mesh.edge_midpoint(e));
     for (const auto& group : scene.dirichlet_groups) dirichlet = dirichlet || mesh.edge_label(e) == group;
     if (contact && dirichlet) {
       const auto m = mesh.edge_midpoint(e);
-      throw InputError(fmt::format("{}: Γ_C and Γ_D overlap at the edge with midpoint ({}, {}); "
-                                   "key 'boundary.dirichlet' must exclude Γ_C", scene.file, m.x(), m.y()));
+      throw InputError(
+          fmt::format("{}: Γ_C and Γ_D overlap at the edge with midpoint ({}, {}); "
+                      "key 'boundary.dirichlet' must exclude Γ_C",
+                      scene.file, m.x(), m.y()));
     }
     if (contact) mesh.set_edge_part(e, mesh::BoundaryPart::contact);
     if (dirichlet) mesh.set_edge_part(e, mesh::BoundaryPart::dirichlet);
@@ -92,7 +93,8 @@ mesh::QuadMesh build_scene_mesh(const Scene& scene) {
     for (int e : mesh.boundary_edges()) labels.insert(mesh.edge_label(e));
     throw_bad_input(scene.file, by_groups ? "boundary.contact_groups" : "boundary.contact", value,
                     by_groups ? fmt::format("it must name a physical group on the boundary (Γ_C is empty); the mesh "
-                                            "has: {}", fmt::join(labels, ", "))
+                                            "has: {}",
+                                            fmt::join(labels, ", "))
                               : "it must select at least one boundary edge (Γ_C is empty)");
   }
   try {
@@ -106,8 +108,8 @@ mesh::QuadMesh build_scene_mesh(const Scene& scene) {
 
 namespace {
 
-int whole_degree(const Expression& rule, const mesh::Point& x, int low, int high,
-                 const std::string& file, const std::string& key) {
+int whole_degree(const Expression& rule, const mesh::Point& x, int low, int high, const std::string& file,
+                 const std::string& key) {
   const double value = rule(x.x(), x.y());
   if (std::abs(value - std::round(value)) > 1e-9 || value < low || value > high)
     throw_bad_input(file, key, fmt::format("{} at ({}, {})", value, x.x(), x.y()),
@@ -133,8 +135,9 @@ std::vector<int> scene_segment_degrees(const Scene& scene, const mesh::ContactBo
   const Expression rule(scene.pc.rule, scene.where("discretization.pC") + ": key 'discretization.pC'");
   std::vector<int> degrees(boundary_mesh.n_segments());
   for (int k = 0; k < boundary_mesh.n_segments(); ++k)
-    degrees[k] = whole_degree(rule, contact.point_at(0.5 * (boundary_mesh.segment_begin(k) + boundary_mesh.segment_end(k))),
-                              0, 19, scene.where("discretization.pC"), "discretization.pC");
+    degrees[k] =
+        whole_degree(rule, contact.point_at(0.5 * (boundary_mesh.segment_begin(k) + boundary_mesh.segment_end(k))), 0,
+                     19, scene.where("discretization.pC"), "discretization.pC");
   return degrees;
 }
 
@@ -198,13 +201,15 @@ mesh::BoundaryMesh build_scene_boundary_mesh(const Scene& scene, const mesh::Con
   const double ratio = scene.ratio->value;
   const std::string ratio_where = scene.where("contact_mesh.ratio");
   bool uniform = true;
-  for (int e = 0; e < n; ++e) uniform = uniform && std::abs(edges[e + 1] - edges[e] - contact.length() / n) < 1e-9 * contact.length() / n;
+  for (int e = 0; e < n; ++e)
+    uniform = uniform && std::abs(edges[e + 1] - edges[e] - contact.length() / n) < 1e-9 * contact.length() / n;
   if (uniform) {
     const double exact = n * ratio;
     const int m = static_cast<int>(std::lround(exact));
     if (m < 1 || std::abs(exact - m) > 1e-9 * exact)
-      throw_bad_input(ratio_where, "contact_mesh.ratio", scene.ratio->text,
-                      fmt::format("Γ_C has {} edges of T_h; {} · ratio = {} must be a whole number of segments", n, n, exact));
+      throw_bad_input(
+          ratio_where, "contact_mesh.ratio", scene.ratio->text,
+          fmt::format("Γ_C has {} edges of T_h; {} · ratio = {} must be a whole number of segments", n, n, exact));
     return mesh::BoundaryMesh::graded(contact.length(), m, scene.grading);
   }
   const long merge = std::lround(1.0 / ratio), divide = std::lround(ratio);
@@ -226,8 +231,10 @@ mesh::BoundaryMesh build_scene_boundary_mesh(const Scene& scene, const mesh::Con
     for (int e = 0; e < n; ++e)
       for (long i = 1; i <= divide; ++i) nodes.push_back(edges[e] + (edges[e + 1] - edges[e]) * i / divide);
   } else {
-    throw_bad_input(ratio_where, "contact_mesh.ratio", scene.ratio->text,
-                    fmt::format("T_h is not uniform on Γ_C ({} edges): the ratio must be 1/k with k <= {}, or a whole number", n, n));
+    throw_bad_input(
+        ratio_where, "contact_mesh.ratio", scene.ratio->text,
+        fmt::format("T_h is not uniform on Γ_C ({} edges): the ratio must be 1/k with k <= {}, or a whole number", n,
+                    n));
   }
   nodes.back() = contact.length();
   return mesh::BoundaryMesh(nodes, ratio_where + ": key 'contact_mesh.ratio'");

@@ -2,11 +2,10 @@
 // between keys.
 #include "scene/scene_reader.hpp"
 
-#include <unistd.h>
-
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <toml++/toml.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <memory>
@@ -68,7 +67,8 @@ void check_domain(const Scene& scene) {
     return;
   }
   for (const char* key : {"domain.n_x", "domain.n_y"})
-    if (!scene.given.contains(key)) throw_bad_input(scene.file, key, "(missing)", "an integer in [1, 100000] is required");
+    if (!scene.given.contains(key))
+      throw_bad_input(scene.file, key, "(missing)", "an integer in [1, 100000] is required");
   const auto& r = scene.rectangle;
   for (const auto& [axis, low, high] : {std::tuple{"x", r.x_min, r.x_max}, std::tuple{"y", r.y_min, r.y_max}}) {
     const std::string key = fmt::format("domain.{}_min, domain.{}_max", axis, axis);
@@ -113,9 +113,10 @@ void check_scene_size(const Scene& scene) {
   const double p = scene.p.rule.empty() ? scene.p.value : 1.0;  // a rule: at least degree 1 everywhere
   const double dofs = cells * p * p, bytes = 1.2e3 * dofs;
   const double memory = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
-  const std::string size = fmt::format("{:.3g} cells ({} x {}{}) at p = {}: about {:.3g} unknowns", cells, scene.n_x,
-                                       scene.n_y, scene.refinements ? fmt::format(", {} refinements", scene.refinements) : "",
-                                       scene.p.rule.empty() ? std::to_string(scene.p.value) : "its rule", dofs);
+  const std::string size =
+      fmt::format("{:.3g} cells ({} x {}{}) at p = {}: about {:.3g} unknowns", cells, scene.n_x, scene.n_y,
+                  scene.refinements ? fmt::format(", {} refinements", scene.refinements) : "",
+                  scene.p.rule.empty() ? std::to_string(scene.p.value) : "its rule", dofs);
   if (dofs > 2147483647.0)
     throw_bad_input(scene.file, "domain.n_x, domain.n_y", size, "at most 2^31 - 1 unknowns (32-bit indices)");
   if (bytes > memory)
@@ -134,7 +135,8 @@ void check_effects(const Scene& scene) {
     throw_bad_input(where, "run.effects", "[]", fmt::format("at least one of {}", fmt::join(names, ", ")));
   }
   if (scene.has_effect(Effect::signorini) && scene.obstacle.empty())
-    throw_bad_input(scene.where("data.g"), "data.g", "(missing)", "the effect 'signorini' (problem (9)) needs the obstacle g");
+    throw_bad_input(scene.where("data.g"), "data.g", "(missing)",
+                    "the effect 'signorini' (problem (9)) needs the obstacle g");
   for (Effect problem : {Effect::friction, Effect::friction_s})
     if (scene.has_effect(problem) && scene.friction_bound.empty())
       throw_bad_input(scene.where("data.s"), "data.s", "(missing)",

@@ -16,8 +16,10 @@ namespace {
 void merge_into(toml::table& into, const toml::table& from) {
   for (const auto& [key, node] : from) {
     auto* existing = into.get_as<toml::table>(key);
-    if (existing && node.is_table()) merge_into(*existing, *node.as_table());
-    else into.insert_or_assign(key, node);
+    if (existing && node.is_table())
+      merge_into(*existing, *node.as_table());
+    else
+      into.insert_or_assign(key, node);
   }
 }
 
@@ -29,8 +31,10 @@ toml::array variant_values(const toml::node& node, const std::string& where, con
   } else if (const auto* text = node.as_string()) {
     long long first = 0, last = 0;
     char tail = 0;
-    if (std::sscanf(text->get().c_str(), "%lld..%lld%c", &first, &last, &tail) != 2 || last < first || last - first > 1000)
-      throw_bad_input(where, key, text->get(), "a list of values, or an integer range \"a..b\" with a <= b (at most 1001 values)");
+    if (std::sscanf(text->get().c_str(), "%lld..%lld%c", &first, &last, &tail) != 2 || last < first ||
+        last - first > 1000)
+      throw_bad_input(where, key, text->get(),
+                      "a list of values, or an integer range \"a..b\" with a <= b (at most 1001 values)");
     for (long long v = first; v <= last; ++v) values.push_back(static_cast<int64_t>(v));
   } else {
     throw_bad_input(where, key, "(not a list)", "a list of values, or an integer range \"a..b\"");
@@ -47,8 +51,8 @@ std::string value_text(const toml::node& node) {
 
 }  // namespace
 
-std::vector<SceneVariant> scene_variants(const std::string& base_path, const io::TomlTable& set, const io::TomlTable& vary,
-                                         const std::string& where) {
+std::vector<SceneVariant> scene_variants(const std::string& base_path, const io::TomlTable& set,
+                                         const io::TomlTable& vary, const std::string& where) {
   toml::table base;
   try {
     base = toml::parse(io::read_text_file(base_path), base_path);
@@ -75,7 +79,8 @@ std::vector<SceneVariant> scene_variants(const std::string& base_path, const io:
       // Walk "section.key", creating the section if the base scene has none.
       const auto dot = name.find('.');
       if (dot == std::string::npos || name.find('.', dot + 1) != std::string::npos)
-        throw_bad_input(where, vary.qualified(name), "", "a dotted scene key \"section.key\", e.g. \"discretization.p\"");
+        throw_bad_input(where, vary.qualified(name), "",
+                        "a dotted scene key \"section.key\", e.g. \"discretization.p\"");
       const std::string section = name.substr(0, dot), key = name.substr(dot + 1);
       if (!scene.contains(section)) scene.insert(section, toml::table{});
       auto* table = scene.get_as<toml::table>(section);
@@ -88,8 +93,8 @@ std::vector<SceneVariant> scene_variants(const std::string& base_path, const io:
     try {
       variants.push_back({parse_scene(text.str(), base_path), label});
     } catch (const InputError& error) {
-      throw InputError(fmt::format("{}: variant {} ({}) of the scene {}: {}", where, i + 1, label.empty() ? "no varied keys" : label,
-                                   base_path, error.what()));
+      throw InputError(fmt::format("{}: variant {} ({}) of the scene {}: {}", where, i + 1,
+                                   label.empty() ? "no varied keys" : label, base_path, error.what()));
     }
   }
   return variants;

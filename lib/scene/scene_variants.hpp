@@ -21,7 +21,7 @@ struct SceneVariant {
 /// `set` and `vary` are tables of the study file (empty tables: the base scene once); `where`
 /// names them in messages. @throws InputError naming the study file, the key and, for errors
 /// the scene checks find, the variant.
-std::vector<SceneVariant> scene_variants(const std::string& base_path, const io::TomlTable& set, const io::TomlTable& vary,
-                                         const std::string& where);
+std::vector<SceneVariant> scene_variants(const std::string& base_path, const io::TomlTable& set,
+                                         const io::TomlTable& vary, const std::string& where);
 
 }  // namespace hpcontact::scene

@@ -16,23 +16,26 @@ constexpr std::array<std::array<int, 2>, 4> kVertexIndex{{{0, 0}, {1, 0}, {1, 1}
 // that is 1 on that edge.
 std::array<int, 2> edge_mode_index(int local, int k) {
   switch (local) {
-    case 0: return {k, 0};
-    case 1: return {1, k};
-    case 2: return {k, 1};
-    default: return {0, k};
+    case 0:
+      return {k, 0};
+    case 1:
+      return {1, k};
+    case 2:
+      return {k, 1};
+    default:
+      return {0, k};
   }
 }
 
 }  // namespace
 
-H1Space::H1Space(const mesh::QuadMesh& mesh, int degree)
-    : H1Space(mesh, std::vector<int>(mesh.n_cells(), degree)) {}
+H1Space::H1Space(const mesh::QuadMesh& mesh, int degree) : H1Space(mesh, std::vector<int>(mesh.n_cells(), degree)) {}
 
 H1Space::H1Space(const mesh::QuadMesh& mesh, std::vector<int> cell_degrees)
     : mesh_(&mesh), cell_degrees_(std::move(cell_degrees)) {
   if (static_cast<int>(cell_degrees_.size()) != mesh.n_cells())
-    throw InputError("degree distribution has " + std::to_string(cell_degrees_.size()) +
-                     " entries but the mesh has " + std::to_string(mesh.n_cells()) + " cells");
+    throw InputError("degree distribution has " + std::to_string(cell_degrees_.size()) + " entries but the mesh has " +
+                     std::to_string(mesh.n_cells()) + " cells");
   for (int c = 0; c < mesh.n_cells(); ++c)
     if (cell_degrees_[c] < 1)
       throw_bad_input("degree distribution", "p", std::to_string(cell_degrees_[c]),

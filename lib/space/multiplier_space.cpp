@@ -11,13 +11,11 @@ namespace hpcontact::space {
 MultiplierSpace::MultiplierSpace(const mesh::BoundaryMesh& boundary_mesh, int degree)
     : MultiplierSpace(boundary_mesh, std::vector<int>(boundary_mesh.n_segments(), degree)) {}
 
-MultiplierSpace::MultiplierSpace(const mesh::BoundaryMesh& boundary_mesh,
-                                 std::vector<int> segment_degrees)
+MultiplierSpace::MultiplierSpace(const mesh::BoundaryMesh& boundary_mesh, std::vector<int> segment_degrees)
     : mesh_(&boundary_mesh), degrees_(std::move(segment_degrees)) {
   if (static_cast<int>(degrees_.size()) != boundary_mesh.n_segments())
     throw InputError("multiplier degree distribution has " + std::to_string(degrees_.size()) +
-                     " entries but the boundary mesh has " +
-                     std::to_string(boundary_mesh.n_segments()) + " segments");
+                     " entries but the boundary mesh has " + std::to_string(boundary_mesh.n_segments()) + " segments");
   for (int k = 0; k < boundary_mesh.n_segments(); ++k) {
     if (degrees_[k] < 0)
       throw_bad_input("multiplier space", "pC", std::to_string(degrees_[k]),

@@ -21,8 +21,8 @@ struct SolutionExpressions {
 
 SolutionExpressions parse_solution(const ConvergenceStudy& study) {
   auto origin = [&](const char* key) { return study.file + ": key 'solution." + key + "'"; };
-  return {Expression(study.u, origin("u")), Expression(study.ux, origin("ux")),
-          Expression(study.uy, origin("uy")), Expression(study.f, origin("f"))};
+  return {Expression(study.u, origin("u")), Expression(study.ux, origin("ux")), Expression(study.uy, origin("uy")),
+          Expression(study.f, origin("f"))};
 }
 
 // A wrong derivative in a study file would show up as a convergence failure far from its cause;
@@ -33,14 +33,12 @@ void check_solution_consistency(const ConvergenceStudy& study, const SolutionExp
     const double x = point.first, y = point.second;  // not a structured binding: the lambda captures them
     const double ux = (s.u(x + d, y) - s.u(x - d, y)) / (2 * d);
     const double uy = (s.u(x, y + d) - s.u(x, y - d)) / (2 * d);
-    const double laplacian =
-        (s.u(x + d, y) + s.u(x - d, y) + s.u(x, y + d) + s.u(x, y - d) - 4 * s.u(x, y)) / (d * d);
+    const double laplacian = (s.u(x + d, y) + s.u(x - d, y) + s.u(x, y + d) + s.u(x, y - d) - 4 * s.u(x, y)) / (d * d);
     auto check = [&](const char* key, double given, double numeric) {
       if (std::abs(given - numeric) > 1e-4 * (1.0 + std::abs(numeric)))
         throw_bad_input(study.file, std::string("solution.") + key, std::to_string(given),
                         "disagrees with the finite-difference value " + std::to_string(numeric) +
-                            " computed from solution.u at (" + std::to_string(x) + ", " +
-                            std::to_string(y) + ")");
+                            " computed from solution.u at (" + std::to_string(x) + ", " + std::to_string(y) + ")");
     };
     check("ux", s.ux(x, y), ux);
     check("uy", s.uy(x, y), uy);
@@ -49,9 +47,8 @@ void check_solution_consistency(const ConvergenceStudy& study, const SolutionExp
   for (double t : {-0.9, -0.3, 0.4, 0.95}) {
     for (const auto& [x, y] : {std::pair{t, 1.0}, {1.0, 0.5 * (t + 1.0)}}) {
       if (std::abs(s.u(x, y)) > 1e-12)
-        throw_bad_input(study.file, "solution.u", std::to_string(s.u(x, y)) + " at (" +
-                                                      std::to_string(x) + ", " +
-                                                      std::to_string(y) + ")",
+        throw_bad_input(study.file, "solution.u",
+                        std::to_string(s.u(x, y)) + " at (" + std::to_string(x) + ", " + std::to_string(y) + ")",
                         "must vanish on Γ_D (the top edge and {1} × [0, 1])");
     }
   }
@@ -93,8 +90,8 @@ ConvergenceStudy read_convergence_study(const std::string& path) {
   return study;
 }
 
-std::vector<ConvergenceRow> run_convergence_study(
-    const ConvergenceStudy& study, const std::function<void(const ConvergenceRow&)>& on_row) {
+std::vector<ConvergenceRow> run_convergence_study(const ConvergenceStudy& study,
+                                                  const std::function<void(const ConvergenceRow&)>& on_row) {
   const SolutionExpressions s = parse_solution(study);
   problems::PoissonData data;
   data.f = [&](const mesh::Point& x) { return s.f(x.x(), x.y()); };
@@ -103,9 +100,7 @@ std::vector<ConvergenceRow> run_convergence_study(
   };
   const fe::ExactSolution exact{
       [&](const mesh::Point& x) { return s.u(x.x(), x.y()); },
-      [&](const mesh::Point& x) {
-        return Eigen::Vector2d(s.ux(x.x(), x.y()), s.uy(x.x(), x.y()));
-      }};
+      [&](const mesh::Point& x) { return Eigen::Vector2d(s.ux(x.x(), x.y()), s.uy(x.x(), x.y())); }};
 
   std::vector<ConvergenceRow> rows;
   for (const auto& [p, n] : study.points) {
@@ -133,8 +128,8 @@ std::vector<ConvergenceRow> run_convergence_study(
 io::CsvTable convergence_table(const std::vector<ConvergenceRow>& rows) {
   io::CsvTable table({"p", "n", "ndofs", "h", "error_h1", "error_l2", "seconds"});
   for (const auto& r : rows)
-    table.add_row({static_cast<long long>(r.p), static_cast<long long>(r.n),
-                   static_cast<long long>(r.ndofs), r.h, r.error_h1, r.error_l2, r.seconds});
+    table.add_row({static_cast<long long>(r.p), static_cast<long long>(r.n), static_cast<long long>(r.ndofs), r.h,
+                   r.error_h1, r.error_l2, r.seconds});
   return table;
 }
 

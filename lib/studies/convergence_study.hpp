@@ -34,8 +34,8 @@ struct ConvergenceRow {
 };
 
 /// Runs every point; `on_row` is called after each (for progress output).
-std::vector<ConvergenceRow> run_convergence_study(
-    const ConvergenceStudy& study, const std::function<void(const ConvergenceRow&)>& on_row = {});
+std::vector<ConvergenceRow> run_convergence_study(const ConvergenceStudy& study,
+                                                  const std::function<void(const ConvergenceRow&)>& on_row = {});
 
 /// Columns p, n, ndofs, h, error_h1, error_l2, seconds (seconds = assembly + solve).
 io::CsvTable convergence_table(const std::vector<ConvergenceRow>& rows);

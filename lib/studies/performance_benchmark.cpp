@@ -57,7 +57,7 @@ double peak_rss_mb() {
   std::ifstream status("/proc/self/status");
   for (std::string line; std::getline(status, line);)
     if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;  // kB
-  rusage usage{};  // no /proc: the process's peak
+  rusage usage{};                                                                 // no /proc: the process's peak
   getrusage(RUSAGE_SELF, &usage);
   return usage.ru_maxrss / 1024.0;
 }
@@ -83,7 +83,7 @@ BenchmarkRow contact_row(const std::string& kind, const PerformanceBenchmark& be
   setup.cell_degrees.assign(mesh.n_cells(), benchmark.p);
   setup.boundary_mesh = &boundary;
   setup.segment_degrees.assign(boundary.n_segments(), benchmark.pc);
-  setup.problem = kind == "signorini" ? contact::ContactProblem::signorini
+  setup.problem = kind == "signorini"  ? contact::ContactProblem::signorini
                   : kind == "friction" ? contact::ContactProblem::friction
                                        : contact::ContactProblem::friction_s;
   setup.f = [](const mesh::Point&) { return -1.0; };
@@ -95,8 +95,8 @@ BenchmarkRow contact_row(const std::string& kind, const PerformanceBenchmark& be
   row.n_trace = solution.n_trace;
   row.seconds_assembly = solution.seconds.assembly;
   row.seconds_baseline = linear_k.seconds_baseline;
-  row.seconds = solution.seconds.factorization + solution.seconds.condensation + solution.seconds.qp +
-                solution.seconds.recovery;
+  row.seconds =
+      solution.seconds.factorization + solution.seconds.condensation + solution.seconds.qp + solution.seconds.recovery;
   return row;
 }
 
@@ -119,8 +119,8 @@ BenchmarkRow alpha_row(const PerformanceBenchmark& benchmark, const mesh::QuadMe
 
 // The same solve on the assembled K (mass: A_G), as a ratio to the condensed one: what static
 // condensation saves in time, and (peak_rss_mb) in memory.
-BenchmarkRow assembled_row(bool mass, const space::H1Space& space, const Eigen::VectorXd& load, const BenchmarkRow& base,
-                           const BenchmarkRow& condensed) {
+BenchmarkRow assembled_row(bool mass, const space::H1Space& space, const Eigen::VectorXd& load,
+                           const BenchmarkRow& base, const BenchmarkRow& condensed) {
   BenchmarkRow row = base;
   row.kind = mass ? "linear_AG_assembled" : "linear_K_assembled";
   Stopwatch assembly_clock;
@@ -174,7 +174,8 @@ std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& 
     BenchmarkRow linear_ag = base;
     linear_ag.kind = "linear_AG";
     if (has("alpha") || has("assembled")) {
-      linear_ag.seconds_baseline = linear_ag.seconds = time_linear_solve<assembly::CondensedFactor>(load, space, 1.0, 1.0);
+      linear_ag.seconds_baseline = linear_ag.seconds =
+          time_linear_solve<assembly::CondensedFactor>(load, space, 1.0, 1.0);
       add(linear_ag);
     }
     if (has("alpha")) add(alpha_row(benchmark, mesh, boundary, base, linear_ag));
@@ -187,12 +188,12 @@ std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& 
 }
 
 io::CsvTable benchmark_table(const std::vector<BenchmarkRow>& rows) {
-  io::CsvTable table({"kind", "p", "pC", "n", "m", "ndofs", "nmult", "n_trace", "seconds_assembly",
-                      "seconds_baseline", "seconds", "ratio", "peak_rss_mb"});
+  io::CsvTable table({"kind", "p", "pC", "n", "m", "ndofs", "nmult", "n_trace", "seconds_assembly", "seconds_baseline",
+                      "seconds", "ratio", "peak_rss_mb"});
   for (const auto& r : rows)
     table.add_row({r.kind, (long long)r.p, (long long)r.pc, (long long)r.n, (long long)r.m, (long long)r.ndofs,
-                   (long long)r.nmult, (long long)r.n_trace, r.seconds_assembly, r.seconds_baseline, r.seconds,
-                   r.ratio, r.peak_rss_mb});
+                   (long long)r.nmult, (long long)r.n_trace, r.seconds_assembly, r.seconds_baseline, r.seconds, r.ratio,
+                   r.peak_rss_mb});
   return table;
 }
 

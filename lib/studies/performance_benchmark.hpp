@@ -28,7 +28,8 @@ struct PerformanceBenchmark {
 PerformanceBenchmark read_performance_benchmark(const std::string& path);
 
 struct BenchmarkRow {
-  std::string kind;  ///< "linear_K", "linear_AG", a contact problem, "alpha", "linear_K_assembled", "linear_AG_assembled"
+  std::string
+      kind;  ///< "linear_K", "linear_AG", a contact problem, "alpha", "linear_K_assembled", "linear_AG_assembled"
   int p = 0, pc = 0, n = 0, m = 0, ndofs = 0, nmult = 0, n_trace = 0;
   double seconds_assembly = 0.0;  ///< not part of either side of the ratio
   double seconds_baseline = 0.0;  ///< one linear solve of the same matrix

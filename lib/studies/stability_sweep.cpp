@@ -17,25 +17,23 @@
 #include "core/error.hpp"
 #include "core/petsc_session.hpp"
 #include "core/rank_agreement.hpp"
+#include "driver/scene_discretization.hpp"
 #include "io/atomic_file.hpp"
 #include "io/toml_reader.hpp"
 #include "mesh/boundary_mesh.hpp"
 #include "mesh/contact_boundary.hpp"
-#include "driver/scene_discretization.hpp"
-#include "scene/scene_mesh.hpp"
-#include "studies/sweep_plan.hpp"
-#include "studies/sweep_rows.hpp"
 #include "norms/h_minus_half_gram.hpp"
 #include "operators/primal_operators.hpp"
+#include "scene/scene_mesh.hpp"
 #include "space/multiplier_space.hpp"
+#include "studies/sweep_plan.hpp"
+#include "studies/sweep_rows.hpp"
 
 namespace hpcontact::studies {
 
 namespace {
 
-std::vector<int> to_int(const std::vector<long long>& values) {
-  return {values.begin(), values.end()};
-}
+std::vector<int> to_int(const std::vector<long long>& values) { return {values.begin(), values.end()}; }
 
 /// The scene of one point: the level's scene with the sweep's p, p_C (replacing degree rules),
 /// ratio (replacing the scene's m, ratio or breakpoints) where the sweep gives them, and the
@@ -70,7 +68,8 @@ StabilitySweep read_stability_sweep(const std::string& path) {
   const auto table = root.table("sweep", true);
   const std::string base = (std::filesystem::path(path).parent_path() / table.string("scene")).string();
   if (!std::filesystem::is_regular_file(base))
-    throw_bad_input(path, "sweep.scene", table.string("scene"), "a scene file, relative to the sweep file (" + base + " does not exist)");
+    throw_bad_input(path, "sweep.scene", table.string("scene"),
+                    "a scene file, relative to the sweep file (" + base + " does not exist)");
   table.has("set");
   table.has("levels");
   sweep.levels = scene::scene_variants(base, table.table("set"), table.table("levels"), path + ": key 'sweep.levels'");
@@ -94,8 +93,8 @@ StabilitySweep read_stability_sweep(const std::string& path) {
   root.reject_unknown_keys();
 
   // Every level's meshes, degrees and data, checked now: a sweep does not stop half-way on input.
-  const bool friction = std::find(sweep.problems.begin(), sweep.problems.end(), infsup::PairingProblem::friction) !=
-                        sweep.problems.end();
+  const bool friction =
+      std::find(sweep.problems.begin(), sweep.problems.end(), infsup::PairingProblem::friction) != sweep.problems.end();
   const auto ratios = ratio_choices(sweep);
   for (std::size_t level = 0; level < sweep.levels.size(); ++level) {
     const scene::Scene& scene = sweep.levels[level].scene;
@@ -110,7 +109,8 @@ StabilitySweep read_stability_sweep(const std::string& path) {
       facts.contact_edges = static_cast<int>(contact.edges().size());
       const auto nodes = contact.breakpoints();
       facts.contact_h_min = nodes.back() - nodes.front();
-      for (std::size_t k = 0; k + 1 < nodes.size(); ++k) facts.contact_h_min = std::min(facts.contact_h_min, nodes[k + 1] - nodes[k]);
+      for (std::size_t k = 0; k + 1 < nodes.size(); ++k)
+        facts.contact_h_min = std::min(facts.contact_h_min, nodes[k + 1] - nodes[k]);
       const auto cell_degrees = scene::scene_cell_degrees(scene, mesh);
       facts.scene_p = *std::min_element(cell_degrees.begin(), cell_degrees.end());
       for (const auto& ratio : ratios) {
@@ -136,14 +136,15 @@ StabilitySweep read_stability_sweep(const std::string& path) {
 }
 
 std::vector<std::string> alpha_columns() {
-  return {"problem", "norm", "p", "pC", "level", "n", "m", "h", "h_min", "H", "ratio", "Pi", "alpha", "alpha_error",
-          "ndofs", "nmult", "seconds"};
+  return {"problem", "norm",  "p",  "pC",    "level",       "n",     "m",     "h",      "h_min",
+          "H",       "ratio", "Pi", "alpha", "alpha_error", "ndofs", "nmult", "seconds"};
 }
 
 namespace {
 
 // Every rank's (index, line) pairs, on rank 0 sorted by index (empty elsewhere).
-std::vector<std::pair<int, std::string>> gather_rows_on_rank_zero(const std::vector<std::pair<int, std::string>>& rows) {
+std::vector<std::pair<int, std::string>> gather_rows_on_rank_zero(
+    const std::vector<std::pair<int, std::string>>& rows) {
   const int rank = mpi_rank_and_size().first, size = mpi_rank_and_size().second;
   std::string packed;
   for (const auto& [index, line] : rows) packed += std::to_string(index) + '\t' + line;  // line ends in '\n'
@@ -155,8 +156,7 @@ std::vector<std::pair<int, std::string>> gather_rows_on_rank_zero(const std::vec
     for (int r = 1; r < size; ++r) offsets[r] = offsets[r - 1] + lengths[r - 1];
     all.resize(static_cast<std::size_t>(offsets[size - 1] + lengths[size - 1]));
   }
-  MPI_Gatherv(packed.data(), length, MPI_CHAR, all.data(), lengths.data(), offsets.data(), MPI_CHAR, 0,
-              MPI_COMM_WORLD);
+  MPI_Gatherv(packed.data(), length, MPI_CHAR, all.data(), lengths.data(), offsets.data(), MPI_CHAR, 0, MPI_COMM_WORLD);
   std::vector<std::pair<int, std::string>> out;
   std::stringstream stream(all);
   for (std::string index, line; std::getline(stream, index, '\t') && std::getline(stream, line);)
@@ -218,8 +218,8 @@ const EnvelopeGram& envelope_of(const SweepRun& run, const SweepPoint& point, co
   envelope.boundary = std::make_unique<mesh::BoundaryMesh>(boundary);
   std::vector<int> degrees(boundary.n_segments(), 0);
   for (int pc : run.degrees_used.at({point.level, point.ratio})) {
-    const auto at_pc = scene::scene_segment_degrees(point_scene(level_scene, 0, pc, run.ratios[point.ratio]),
-                                                    group.contact, boundary);
+    const auto at_pc =
+        scene::scene_segment_degrees(point_scene(level_scene, 0, pc, run.ratios[point.ratio]), group.contact, boundary);
     for (std::size_t k = 0; k < degrees.size(); ++k) degrees[k] = std::max(degrees[k], at_pc[k]);
   }
   envelope.multipliers = std::make_unique<space::MultiplierSpace>(*envelope.boundary, std::move(degrees));
@@ -252,9 +252,8 @@ std::string compute_point(const SweepRun& run, const SweepPoint& point, const Gr
   row.add_row({point.problem, point.norm, static_cast<long long>(point.reported_p),
                static_cast<long long>(point.reported_pc), static_cast<long long>(point.level + 1),
                static_cast<long long>(facts.contact_edges), static_cast<long long>(point.m), result.h,
-               facts.contact_h_min, result.H,
-               ratio ? ratio->value : static_cast<double>(point.m) / facts.contact_edges, result.pi, result.alpha,
-               result.alpha_error, static_cast<long long>(result.n_primal_dofs),
+               facts.contact_h_min, result.H, ratio ? ratio->value : static_cast<double>(point.m) / facts.contact_edges,
+               result.pi, result.alpha, result.alpha_error, static_cast<long long>(result.n_primal_dofs),
                static_cast<long long>(result.n_multiplier_dofs), result.seconds});
   const std::string text = row.to_string();
   return text.substr(text.find('\n') + 1);
@@ -301,7 +300,10 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
   // 1. The points, the rows an earlier run stored, and the plan of what is left.
   const int rank = mpi_rank_and_size().first;
   const int size = mpi_rank_and_size().second;
-  SweepRun run{sweep, list_sweep_points(sweep), ratio_choices(sweep), {},
+  SweepRun run{sweep,
+               list_sweep_points(sweep),
+               ratio_choices(sweep),
+               {},
                infsup::parse_eigen_backend(sweep.eigensolver, sweep.file),
                sweep.degrees.empty() ? 0 : *std::max_element(sweep.degrees.begin(), sweep.degrees.end())};
   run.degrees_used = multiplier_degrees_used(run.points);
@@ -331,15 +333,17 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
         const auto& ratio = run.ratios[point.ratio];
         if (progress)
           progress(index, static_cast<int>(run.points.size()),
-                   fmt::format("{} {} p={} pC={} {}{}", point.problem, point.norm, point.reported_p,
-                               point.reported_pc, level_name(sweep, g.level), ratio ? " h/H=" + ratio->text : ""));
+                   fmt::format("{} {} p={} pC={} {}{}", point.problem, point.norm, point.reported_p, point.reported_pc,
+                               level_name(sweep, g.level), ratio ? " h/H=" + ratio->text : ""));
         const std::string line = compute_point(run, point, group, grams);
         rows.set(point.key(), line);
         group_lines += line;
         if (size > 1) new_rows.emplace_back(static_cast<int>(k), line);
       }
-      if (size == 1) io::write_file_atomically(alpha_csv, rows.content());
-      else if (!group_lines.empty()) append_durably(shard_path(alpha_csv, rank), group_lines);
+      if (size == 1)
+        io::write_file_atomically(alpha_csv, rows.content());
+      else if (!group_lines.empty())
+        append_durably(shard_path(alpha_csv, rank), group_lines);
     }
   });
   // 3. Every rank's rows into alpha.csv (rank 0), in the serial order, and the shards removed

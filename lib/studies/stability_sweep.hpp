@@ -64,5 +64,4 @@ std::vector<std::string> alpha_columns();
 void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::path& alpha_csv,
                          const std::function<void(int, int, const std::string&)>& progress = {});
 
-
 }  // namespace hpcontact::studies

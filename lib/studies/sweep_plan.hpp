@@ -25,7 +25,7 @@ struct SweepPoint {
   std::size_t level = 0, ratio = 0;  ///< ratio: index into ratio_choices
   int p = 0, pc = -1;                ///< as given to the scene (0, -1: the scene's own)
   int reported_p = 0, reported_pc = 0;
-  long m = 0;                        ///< segments of T_{C,H}
+  long m = 0;  ///< segments of T_{C,H}
   /// The point's key in alpha.csv (see sweep_rows.hpp).
   std::string key() const;
 };
@@ -39,7 +39,8 @@ std::vector<SweepPoint> list_sweep_points(const StabilitySweep& sweep);
 
 /// Per (level, ratio index): the p_C as given that the level's points use, from which the envelope
 /// multiplier space of the level's Gram matrices is built.
-std::map<std::pair<std::size_t, std::size_t>, std::set<int>> multiplier_degrees_used(const std::vector<SweepPoint>& points);
+std::map<std::pair<std::size_t, std::size_t>, std::set<int>> multiplier_degrees_used(
+    const std::vector<SweepPoint>& points);
 
 /// Consecutive points sharing (level, p).
 struct SweepGroup {

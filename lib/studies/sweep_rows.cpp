@@ -2,10 +2,9 @@
 #include "studies/sweep_rows.hpp"
 
 #include <fcntl.h>
+#include <fmt/format.h>
 #include <sys/file.h>
 #include <unistd.h>
-
-#include <fmt/format.h>
 
 #include <cerrno>
 #include <charconv>
@@ -79,8 +78,8 @@ void read_rows(const std::filesystem::path& file, bool with_header, const std::s
     const bool whole = !in.eof();
     const std::string key = whole ? key_of_row(header, split(line)) : "";
     if (key.empty() || !keys.contains(key)) {
-      dropped.push_back(fmt::format("{}:{}{}", file.filename().string(), number,
-                                    key.empty() ? "" : " (not a point of this study)"));
+      dropped.push_back(
+          fmt::format("{}:{}{}", file.filename().string(), number, key.empty() ? "" : " (not a point of this study)"));
       continue;
     }
     rows[key] = line + '\n';
@@ -120,8 +119,10 @@ std::map<std::string, std::string> read_stored_rows(const std::filesystem::path&
     std::string list;
     for (std::size_t k = 0; k < dropped.size() && k < 10; ++k) list += (k ? ", " : "") + dropped[k];
     if (dropped.size() > 10) list += fmt::format(" and {} more", dropped.size() - 10);
-    fmt::print(stderr, "hpcontact: warning: {} stored row{} of {} will be computed again (torn, incomplete or "
-               "unparsable): {}\n", dropped.size(), dropped.size() > 1 ? "s" : "", alpha_csv.string(), list);
+    fmt::print(stderr,
+               "hpcontact: warning: {} stored row{} of {} will be computed again (torn, incomplete or "
+               "unparsable): {}\n",
+               dropped.size(), dropped.size() > 1 ? "s" : "", alpha_csv.string(), list);
   }
   return rows;
 }
@@ -157,9 +158,10 @@ FolderLock::FolderLock(const std::filesystem::path& folder) {
     const ssize_t n = pread(fd_, holder, sizeof holder - 1, 0);
     close(fd_);
     fd_ = -1;
-    throw InputError(fmt::format("output folder '{}' is in use by another sweep (process {}, lock {}): wait for it, "
-                                 "or choose another --out folder",
-                                 folder.string(), n > 0 ? std::string(holder) : "unknown", path.string()));
+    throw InputError(
+        fmt::format("output folder '{}' is in use by another sweep (process {}, lock {}): wait for it, "
+                    "or choose another --out folder",
+                    folder.string(), n > 0 ? std::string(holder) : "unknown", path.string()));
   }
   const std::string pid = std::to_string(getpid());
   if (ftruncate(fd_, 0) != 0 || pwrite(fd_, pid.data(), pid.size(), 0) < 0) {

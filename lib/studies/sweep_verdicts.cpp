@@ -86,8 +86,8 @@ io::CsvTable fit_verdicts(const std::filesystem::path& alpha_csv, int fit_levels
       }
     }
     const auto& [problem, norm, p, pc, ratio_text] = key;
-    verdicts.add_row({problem, norm, static_cast<long long>(p), static_cast<long long>(pc),
-                      ratio_value[key], rate, constant, alpha_finest, verdict});
+    verdicts.add_row({problem, norm, static_cast<long long>(p), static_cast<long long>(pc), ratio_value[key], rate,
+                      constant, alpha_finest, verdict});
   }
   return verdicts;
 }

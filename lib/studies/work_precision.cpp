@@ -10,11 +10,11 @@
 
 #include "contact/multiplier_distance.hpp"
 #include "core/error.hpp"
+#include "driver/free_boundary_fit.hpp"
+#include "driver/scene_discretization.hpp"
 #include "io/atomic_file.hpp"
 #include "io/csv_writer.hpp"
 #include "io/toml_reader.hpp"
-#include "driver/free_boundary_fit.hpp"
-#include "driver/scene_discretization.hpp"
 
 namespace hpcontact::studies {
 namespace {
@@ -110,8 +110,10 @@ WorkPrecisionStudy read_work_precision_study(const std::string& path) {
     study.references.push_back({problem, scene, coarser, fit});
   }
   for (const auto& problem : study.problems)
-    if (std::none_of(study.references.begin(), study.references.end(), [&](const auto& r) { return r.problem == problem; }))
-      throw_bad_input(path, "reference", "(none for " + problem + ")", "one [[reference]] per problem of study.problems");
+    if (std::none_of(study.references.begin(), study.references.end(),
+                     [&](const auto& r) { return r.problem == problem; }))
+      throw_bad_input(path, "reference", "(none for " + problem + ")",
+                      "one [[reference]] per problem of study.problems");
 
   int index = 0;
   for (const auto& family : root.table_array("family", true)) {
@@ -161,9 +163,9 @@ Reference solve_reference(const WorkPrecisionStudy::Reference& reference, const 
   const auto coarse = timed_solve(coarse_scene, problem, 1);
   out.accuracy_energy = std::abs(fine.solution.energy - coarse.solution.energy);
   out.weight = driver::multiplier_error_weight(reference.scene, *fine.discretization, problem_named(problem));
-  const double accuracy_lambda = contact::multiplier_l2_distance(
-      *coarse.discretization->multipliers, coarse.solution.lambda_legendre, *fine.discretization->multipliers,
-      fine.solution.lambda_legendre, out.weight);
+  const double accuracy_lambda =
+      contact::multiplier_l2_distance(*coarse.discretization->multipliers, coarse.solution.lambda_legendre,
+                                      *fine.discretization->multipliers, fine.solution.lambda_legendre, out.weight);
   references.add_row({problem, fine.solution.energy, coarse.solution.energy, out.accuracy_energy, accuracy_lambda,
                       static_cast<long long>(fine.solution.u.size()), fine.seconds, free_boundary,
                       free_boundary_moved});
@@ -194,16 +196,19 @@ void run_work_precision_study(const WorkPrecisionStudy& study, const std::filesy
   int total = 2 * static_cast<int>(study.problems.size()), done = 0;
   for (const auto& family : study.families)
     for (const auto& problem : family.problems)
-      total += std::count(study.problems.begin(), study.problems.end(), problem) * static_cast<int>(family.variants.size());
+      total +=
+          std::count(study.problems.begin(), study.problems.end(), problem) * static_cast<int>(family.variants.size());
   auto say = [&](const std::string& label) {
     if (progress) progress(done, total, label);
     ++done;
   };
 
-  io::CsvTable rows({"problem", "p", "pC", "n", "m", "ndofs", "nmult", "error_energy", "error_lambda", "seconds", "family", "energy"});
-  io::CsvTable references({"problem", "energy", "energy_coarser", "accuracy_energy", "accuracy_lambda", "ndofs", "seconds",
-                           "free_boundary", "free_boundary_moved"});
-  io::CsvTable cheapest({"problem", "tolerance", "verdict", "family", "p", "pC", "n", "ndofs", "error_energy", "seconds"});
+  io::CsvTable rows({"problem", "p", "pC", "n", "m", "ndofs", "nmult", "error_energy", "error_lambda", "seconds",
+                     "family", "energy"});
+  io::CsvTable references({"problem", "energy", "energy_coarser", "accuracy_energy", "accuracy_lambda", "ndofs",
+                           "seconds", "free_boundary", "free_boundary_moved"});
+  io::CsvTable cheapest(
+      {"problem", "tolerance", "verdict", "family", "p", "pC", "n", "ndofs", "error_energy", "seconds"});
   for (const auto& problem : study.problems) {
     // 1. The reference and its accuracy.
     const auto& given = *std::find_if(study.references.begin(), study.references.end(),
@@ -234,7 +239,7 @@ void run_work_precision_study(const WorkPrecisionStudy& study, const std::filesy
         for (std::size_t t = 0; t < study.tolerances.size(); ++t)
           if (error_energy + reference.accuracy_energy <= study.tolerances[t] && run.seconds < best_seconds[t]) {
             best_seconds[t] = run.seconds;
-            best[t] = {family.name, p, pc, n, ndofs, error_energy, run.seconds};
+            best[t] = std::vector<io::CsvCell>{family.name, p, pc, n, ndofs, error_energy, run.seconds};
           }
       }
     }
