@@ -1,9 +1,13 @@
 // Stage 1, core and io: expressions, PETSc option split, CSV, TOML checking, atomic files.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <regex>
+#include <string>
+#include <vector>
 
 #include "core/error.hpp"
 #include "core/expression.hpp"
@@ -105,4 +109,32 @@ TEST(AtomicFile, NothingIsLeftWhenNotCommitted) {
 
 TEST(AtomicFile, UnwritableFolderIsAnInputError) {
   EXPECT_THROW(io::ensure_writable_directory("/proc/hpcontact_cannot_exist"), InputError);
+}
+
+// The modules of lib/ form a pipeline: no file includes a module above its own, so the data of a
+// run flows from the command line down to the eigen solve without returning to a higher layer.
+TEST(Architecture, NoModuleIncludesOneAboveIt) {
+  const std::vector<std::string> order{"core",     "mesh",        "basis", "space",   "linalg",
+                                       "assembly", "operators",   "norms", "contact", "infsup",
+                                       "io",       "postprocess", "scene", "driver",  "studies"};
+  const std::filesystem::path lib = std::filesystem::path(HPCONTACT_TEST_DATA) / ".." / ".." / "lib";
+  const std::regex include_line(R"(#include "(\w+)/)");
+  int files = 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(lib)) {
+    const auto extension = entry.path().extension();
+    if (!entry.is_regular_file() || (extension != ".cpp" && extension != ".hpp")) continue;
+    const std::string module = entry.path().parent_path().filename().string();
+    const auto own = std::find(order.begin(), order.end(), module);
+    ASSERT_NE(own, order.end()) << "module " << module << " is not in the pipeline order";
+    ++files;
+    std::ifstream in(entry.path());
+    for (std::string line; std::getline(in, line);) {
+      std::smatch match;
+      if (!std::regex_search(line, match, include_line)) continue;
+      const auto included = std::find(order.begin(), order.end(), match[1].str());
+      if (included != order.end())
+        EXPECT_LE(included - order.begin(), own - order.begin()) << entry.path() << " includes " << match[1];
+    }
+  }
+  EXPECT_GT(files, 100);
 }

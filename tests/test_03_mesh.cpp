@@ -6,10 +6,10 @@
 #include <cmath>
 
 #include "core/error.hpp"
-#include "fe/point_locator.hpp"
 #include "mesh/cell_map.hpp"
 #include "mesh/point_grading.hpp"
 #include "mesh/rectangle_mesh.hpp"
+#include "postprocess/point_locator.hpp"
 
 using namespace hpcontact;
 using mesh::BoundaryPart;
@@ -87,7 +87,7 @@ TEST(Mesh, PerturbationKeepsBoundaryAndValidity) {
 TEST(CellMap, InverseRoundTripAndLocator) {
   auto m = mesh::make_paper_square_mesh(6);
   mesh::perturb_interior_vertices(m, 0.2, 7);
-  const fe::PointLocator locator(m);
+  const postprocess::PointLocator locator(m);
   for (int c = 0; c < m.n_cells(); ++c) {
     const mesh::CellMap map(m, c);
     const mesh::Point x = map.map(0.31, -0.77);

@@ -6,10 +6,10 @@
 #include <random>
 
 #include "core/error.hpp"
-#include "fe/fe_function.hpp"
 #include "mesh/cell_map.hpp"
 #include "mesh/rectangle_mesh.hpp"
-#include "problems/poisson_problem.hpp"
+#include "operators/poisson_problem.hpp"
+#include "postprocess/fe_function.hpp"
 #include "space/h1_space.hpp"
 
 using namespace hpcontact;
@@ -41,10 +41,10 @@ TEST(H1Space, MixedDegreesAreConforming) {
   std::vector<int> degrees(m.n_cells());
   for (int& p : degrees) p = std::uniform_int_distribution<int>(1, 7)(generator);
   const space::H1Space s(m, degrees);
-  problems::PoissonData data;
+  operators::PoissonData data;
   data.f = [](const mesh::Point& x) { return std::exp(x.x()) * std::cos(3 * x.y()); };
   data.neumann = [](const mesh::Point& x, const mesh::Point&) { return std::sin(2 * x.x()); };
-  const auto u = problems::solve_poisson(s, data).coefficients;
+  const auto u = operators::solve_poisson(s, data).coefficients;
   ASSERT_GT(u.norm(), 1e-3);
 
   double largest_jump = 0.0;
@@ -58,8 +58,8 @@ TEST(H1Space, MixedDegreesAreConforming) {
       const mesh::Point x = (1 - t) / 2 * m.vertex(m.edge(e)[0]) + (1 + t) / 2 * m.vertex(m.edge(e)[1]);
       const auto r0 = map0.inverse(x), r1 = map1.inverse(x);
       ASSERT_TRUE(r0 && r1);
-      const auto v0 = fe::evaluate(s, u, {cells[0], r0->x(), r0->y()});
-      const auto v1 = fe::evaluate(s, u, {cells[1], r1->x(), r1->y()});
+      const auto v0 = postprocess::evaluate(s, u, {cells[0], r0->x(), r0->y()});
+      const auto v1 = postprocess::evaluate(s, u, {cells[1], r1->x(), r1->y()});
       const mesh::Point tangent = (m.vertex(m.edge(e)[1]) - m.vertex(m.edge(e)[0])).normalized();
       largest_jump =
           std::max({largest_jump, std::abs(v0.value - v1.value), std::abs((v0.gradient - v1.gradient).dot(tangent))});
@@ -73,10 +73,10 @@ TEST(H1Space, DiscreteFunctionsVanishOnDirichletBoundary) {
   const auto m = mesh::make_paper_square_mesh(4);
   const space::H1Space s(m, 4);
   const Eigen::VectorXd u = Eigen::VectorXd::Ones(s.n_dofs());
-  const fe::PointLocator locator(m);
+  const postprocess::PointLocator locator(m);
   for (double t : {-0.95, -0.3, 0.4, 0.99}) {
-    EXPECT_NEAR(fe::evaluate_at(s, u, locator, {t, 1.0}).value, 0.0, 1e-14);
-    EXPECT_NEAR(fe::evaluate_at(s, u, locator, {1.0, 0.5 * (t + 1)}).value, 0.0, 1e-14);
+    EXPECT_NEAR(postprocess::evaluate_at(s, u, locator, {t, 1.0}).value, 0.0, 1e-14);
+    EXPECT_NEAR(postprocess::evaluate_at(s, u, locator, {1.0, 0.5 * (t + 1)}).value, 0.0, 1e-14);
   }
-  EXPECT_GT(std::abs(fe::evaluate_at(s, u, locator, {0.3, -1.0}).value), 0.1);
+  EXPECT_GT(std::abs(postprocess::evaluate_at(s, u, locator, {0.3, -1.0}).value), 0.1);
 }

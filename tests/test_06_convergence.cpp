@@ -6,10 +6,10 @@
 #include <cmath>
 
 #include "assembly/poisson_assembly.hpp"
-#include "fe/error_norms.hpp"
 #include "manufactured_solution.hpp"
 #include "mesh/rectangle_mesh.hpp"
-#include "problems/poisson_problem.hpp"
+#include "operators/poisson_problem.hpp"
+#include "postprocess/error_norms.hpp"
 #include "space/h1_space.hpp"
 
 using namespace hpcontact;
@@ -20,14 +20,15 @@ using hpcontact::testing::manufactured_f;
 using hpcontact::testing::manufactured_gradient;
 using hpcontact::testing::manufactured_u;
 
-fe::ErrorNorms solve_and_measure(int n, int p, double perturbation = 0.0) {
+postprocess::ErrorNorms solve_and_measure(int n, int p, double perturbation = 0.0) {
   auto m = mesh::make_paper_square_mesh(n);
   if (perturbation > 0) mesh::perturb_interior_vertices(m, perturbation, 5);
   const space::H1Space s(m, p);
-  problems::PoissonData data{manufactured_f, [](const mesh::Point& x, const mesh::Point& normal) {
-                               return manufactured_gradient(x).dot(normal);
-                             }};
-  return fe::compute_errors(s, problems::solve_poisson(s, data).coefficients, {manufactured_u, manufactured_gradient});
+  operators::PoissonData data{manufactured_f, [](const mesh::Point& x, const mesh::Point& normal) {
+                                return manufactured_gradient(x).dot(normal);
+                              }};
+  return postprocess::compute_errors(s, operators::solve_poisson(s, data).coefficients,
+                                     {manufactured_u, manufactured_gradient});
 }
 
 }  // namespace

@@ -11,10 +11,10 @@
 #include "assembly/coupling.hpp"
 #include "contact/multiplier_distance.hpp"
 #include "core/error.hpp"
-#include "fe/fe_function.hpp"
 #include "mesh/contact_boundary.hpp"
 #include "mesh/rectangle_mesh.hpp"
 #include "mesh/refine.hpp"
+#include "postprocess/fe_function.hpp"
 
 using namespace hpcontact;
 
@@ -69,14 +69,15 @@ struct Integrand {
   const Eigen::VectorXd* u;
   const space::MultiplierSpace* multipliers;
   const Eigen::VectorXd* mu;
-  const fe::PointLocator* locator;
+  const postprocess::PointLocator* locator;
   bool weighted;
 };
 
 double integrand(double x, void* data) {
   const auto& d = *static_cast<Integrand*>(data);
   const double s = x + 1.0;
-  double value = fe::evaluate_at(*d.space, *d.u, *d.locator, {x, -1.0}).value * d.multipliers->evaluate(*d.mu, s);
+  double value =
+      postprocess::evaluate_at(*d.space, *d.u, *d.locator, {x, -1.0}).value * d.multipliers->evaluate(*d.mu, s);
   if (d.weighted) value *= (1.0 - x) * (1.0 - x);
   return value;
 }
@@ -116,7 +117,7 @@ TEST(Coupling, ExactOnTheCommonRefinement) {
     Eigen::VectorXd u(space.n_dofs()), mu(multipliers.n_dofs());
     for (auto& v : u) v = uniform(generator);
     for (auto& v : mu) v = uniform(generator);
-    const fe::PointLocator locator(mesh);
+    const postprocess::PointLocator locator(mesh);
     for (bool weighted : {false, true}) {
       const auto b = assembly::assemble_coupling(
           space, contact, multipliers,

@@ -11,11 +11,11 @@
 #include "contact/contact_problem.hpp"
 #include "contact_fixture.hpp"
 #include "core/error.hpp"
-#include "fe/error_norms.hpp"
-#include "fe/fe_function.hpp"
 #include "infsup/infsup_analysis.hpp"
 #include "manufactured_solution.hpp"
 #include "mesh/rectangle_mesh.hpp"
+#include "postprocess/error_norms.hpp"
+#include "postprocess/fe_function.hpp"
 #include "space/multiplier_space.hpp"
 
 using namespace hpcontact;
@@ -175,7 +175,7 @@ TEST(Contact, MultiplierApproximatesNormalDerivativeOfFineReference) {
   fine.obstacle = [](const mesh::Point& x) { return -x.x() * x.x(); };
   const auto reference = contact::solve_contact(fine);
   const space::H1Space fine_space(fine_mesh, fine.cell_degrees);
-  const fe::PointLocator locator(fine_mesh);
+  const postprocess::PointLocator locator(fine_mesh);
   std::vector<double> errors;
   for (int n : {8, 16, 32}) {
     const auto coarse = solve(contact::ContactProblem::signorini, n, 2, 1, n / 2);
@@ -187,7 +187,7 @@ TEST(Contact, MultiplierApproximatesNormalDerivativeOfFineReference) {
     for (int k = 0; k < samples; ++k) {
       const double s = (k + 0.5) * 2.0 / samples;
       const double minus_normal_derivative =
-          fe::evaluate_at(fine_space, reference.u, locator, {s - 1.0, -1.0}).gradient.y();
+          postprocess::evaluate_at(fine_space, reference.u, locator, {s - 1.0, -1.0}).gradient.y();
       squared += std::pow(multipliers.evaluate(coarse.lambda_legendre, s) - minus_normal_derivative, 2) * 2.0 / samples;
     }
     errors.push_back(std::sqrt(squared));
@@ -258,7 +258,7 @@ ManufacturedErrors manufactured(int n, int p, int pc, int m) {
   };
   const auto solution = contact::solve_contact(setup);
   const space::H1Space space(mesh, setup.cell_degrees);
-  const auto errors = fe::compute_errors(space, solution.u, {manufactured_u, manufactured_gradient});
+  const auto errors = postprocess::compute_errors(space, solution.u, {manufactured_u, manufactured_gradient});
   const space::MultiplierSpace multipliers(boundary, pc);
   double squared = 0.0;
   const auto& rule = basis::gauss_legendre(10);

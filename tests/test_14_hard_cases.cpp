@@ -13,13 +13,13 @@
 #include "assembly/poisson_assembly.hpp"
 #include "contact_fixture.hpp"
 #include "core/error.hpp"
-#include "fe/fe_function.hpp"
-#include "fe/point_locator.hpp"
 #include "infsup/infsup_analysis.hpp"
 #include "linalg/sparse_cholesky.hpp"
 #include "manufactured_solution.hpp"
 #include "mesh/rectangle_mesh.hpp"
-#include "problems/poisson_problem.hpp"
+#include "operators/poisson_problem.hpp"
+#include "postprocess/fe_function.hpp"
+#include "postprocess/point_locator.hpp"
 #include "slepc_test_environment.hpp"
 
 using namespace hpcontact;
@@ -71,17 +71,17 @@ TEST(HardCases, DegreeSixteenAssemblyAndSolveStayAccurate) {
     previous_global = global_condition;
   }
   const space::H1Space space(square, 16);
-  problems::PoissonData data{hpcontact::testing::manufactured_f, [](const mesh::Point& x, const mesh::Point& normal) {
-                               return hpcontact::testing::manufactured_gradient(x).dot(normal);
-                             }};
-  const auto sparse = problems::solve_poisson(space, data).coefficients;
+  operators::PoissonData data{hpcontact::testing::manufactured_f, [](const mesh::Point& x, const mesh::Point& normal) {
+                                return hpcontact::testing::manufactured_gradient(x).dot(normal);
+                              }};
+  const auto sparse = operators::solve_poisson(space, data).coefficients;
   const auto k = assembly::assemble_volume_matrices(space, {.stiffness = true, .mass = false}).stiffness;
   const Eigen::VectorXd dense = Eigen::MatrixXd(k).llt().solve(Eigen::MatrixXd(k) * sparse);
   EXPECT_LT((dense - sparse).norm(), 1e-11 * sparse.norm());
   const auto point = mesh::Point(0.3, -0.2);
-  const fe::PointLocator locator(square);
-  EXPECT_NEAR(fe::evaluate(space, sparse, *locator.locate(point)).value, hpcontact::testing::manufactured_u(point),
-              1e-12);
+  const postprocess::PointLocator locator(square);
+  EXPECT_NEAR(postprocess::evaluate(space, sparse, *locator.locate(point)).value,
+              hpcontact::testing::manufactured_u(point), 1e-12);
 }
 
 // α at p = 16, p_C = 15: SLEPc and the dense path agree for the stable (h/H = 1/2) and the
@@ -166,14 +166,14 @@ TEST(HardCases, ContactSetsWholeEmptyAndTangential) {
   // λ = 0: u is the free solution of −Δu = f with ∂_n u = 0 on Γ_C.
   const auto square = mesh::make_paper_square_mesh(n);
   const space::H1Space space(square, p);
-  const auto free = problems::solve_poisson(space, {[](const mesh::Point&) { return -1.0; }, {}}).coefficients;
+  const auto free = operators::solve_poisson(space, {[](const mesh::Point&) { return -1.0; }, {}}).coefficients;
   EXPECT_LT((none.u - free).lpNorm<Eigen::Infinity>(), 1e-12 * free.lpNorm<Eigen::Infinity>());
 
   // Tangential: the obstacle is the trace of the free solution.
-  const fe::PointLocator locator(square);
+  const postprocess::PointLocator locator(square);
   ContactData touching;
   touching.obstacle = [&](const mesh::Point& x) {
-    return fe::evaluate(space, free, *locator.locate(mesh::Point(x.x(), -1.0))).value;
+    return postprocess::evaluate(space, free, *locator.locate(mesh::Point(x.x(), -1.0))).value;
   };
   const auto tangential = solve_paper_contact(ContactProblem::signorini, n, p, pc, m, {}, touching);
   expect_kkt(tangential, "tangential");

@@ -15,6 +15,7 @@
 #include "io/atomic_file.hpp"
 #include "linalg/distribution.hpp"
 #include "operators/primal_operators.hpp"
+#include "postprocess/mode_samples.hpp"
 #include "scene/scene_mesh.hpp"
 #include "scene/scene_reader.hpp"
 
@@ -98,7 +99,7 @@ int run_infsup(const InfSupOptions& o) {
                  static_cast<long long>(result.n_multiplier_dofs), result.seconds});
     io::append_csv_rows(o.csv, row);
   }
-  if (!o.mode.empty()) infsup::sample_mode(d->mesh, *d->multipliers, result.mode).write(o.mode);
+  if (!o.mode.empty()) postprocess::sample_mode(d->mesh, *d->multipliers, result.mode).write(o.mode);
   return 0;
 }
 

@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "contact/contact_output.hpp"
 #include "contact/multiplier_distance.hpp"
 #include "core/operator_log.hpp"
 #include "core/petsc_session.hpp"
@@ -18,6 +17,8 @@
 #include "io/csv_writer.hpp"
 #include "io/output_folder.hpp"
 #include "io/vtu_writer.hpp"
+#include "postprocess/boundary_samples.hpp"
+#include "postprocess/mode_samples.hpp"
 
 namespace hpcontact::driver {
 namespace {
@@ -27,7 +28,7 @@ struct ContactEffect {
   contact::ContactProblem kind;
   contact::ContactSetup setup;
   contact::ContactSolution solution;
-  contact::BoundarySamples samples;
+  postprocess::BoundarySamples samples;
   double seconds = 0.0;
 };
 
@@ -70,7 +71,7 @@ std::vector<ContactEffect> solve_contact_effects(const scene::Scene& scene, cons
     auto setup = contact_setup_of(scene, d, problem, primal);
     auto solution = contact::solve_contact(setup);
     const double seconds = clock.seconds();
-    auto samples = contact::sample_boundary(setup, solution);
+    auto samples = postprocess::sample_boundary(setup, solution);
     effects.push_back({name, problem, std::move(setup), std::move(solution), std::move(samples), seconds});
   }
   return effects;
@@ -125,7 +126,7 @@ nlohmann::json infsup_effect(const scene::Scene& scene, const SceneDiscretizatio
                              const operators::PrimalOperators& primal, std::optional<io::CsvTable>& mode) {
   const auto setup = infsup_setup_of(scene, d.mesh, d.cell_degrees, *d.boundary_mesh, d.segment_degrees, primal);
   const auto alpha = infsup::analyse_infsup(setup, infsup::EigenBackend::slepc);
-  if (scene.wants_output(scene::Output::mode)) mode = infsup::sample_mode(d.mesh, *d.multipliers, alpha.mode);
+  if (scene.wants_output(scene::Output::mode)) mode = postprocess::sample_mode(d.mesh, *d.multipliers, alpha.mode);
   return {{"alpha", alpha.alpha},
           {"alpha_error", alpha.alpha_error},
           {"alpha_converged", alpha.alpha_converged},

@@ -1,4 +1,4 @@
-// analyse_infsup and sample_mode.
+// analyse_infsup.
 #include "infsup/infsup_analysis.hpp"
 
 #include <fmt/format.h>
@@ -80,25 +80,6 @@ InfSupResult analyse_infsup(const InfSupSetup& setup, EigenBackend backend) {
                           multipliers.n_dofs(), multipliers.n_dofs(), result.seconds_gram);
   result.seconds = clock.seconds();
   return result;
-}
-
-io::CsvTable sample_mode(const mesh::QuadMesh& mesh, const space::MultiplierSpace& multipliers,
-                         const Eigen::VectorXd& mode, int samples_per_segment) {
-  const mesh::ContactBoundary contact(mesh);
-  io::CsvTable table({"x", "mu", "y", "s"});
-  const int n = std::max(samples_per_segment, 2);
-  for (int k = 0; k < multipliers.n_segments(); ++k) {
-    const auto coefficients = mode.segment(multipliers.first_dof(k), multipliers.segment_degree(k) + 1);
-    const double a = multipliers.boundary_mesh().segment_begin(k);
-    const double b = multipliers.boundary_mesh().segment_end(k);
-    for (int j = 0; j < n; ++j) {
-      const double tau = -1.0 + 2.0 * j / (n - 1);
-      const double s = a + 0.5 * (b - a) * (tau + 1.0);
-      const mesh::Point x = contact.point_at(s);
-      table.add_row({x.x(), multipliers.basis_values(k, tau).dot(coefficients), x.y(), s});
-    }
-  }
-  return table;
 }
 
 }  // namespace hpcontact::infsup

@@ -16,7 +16,6 @@
 
 #include "infsup/generalized_eigen.hpp"
 #include "infsup/infsup_operators.hpp"
-#include "io/csv_writer.hpp"
 #include "space/multiplier_space.hpp"
 
 namespace hpcontact::infsup {
@@ -46,10 +45,5 @@ struct InfSupResult {
 };
 
 InfSupResult analyse_infsup(const InfSupSetup& setup, EigenBackend backend);
-
-/// The mode sampled at `samples_per_segment` equidistant points of every segment (both ends
-/// included, so jumps show): columns x, mu, y, s (x, y physical, s arc length along Γ_C).
-io::CsvTable sample_mode(const mesh::QuadMesh& mesh, const space::MultiplierSpace& multipliers,
-                         const Eigen::VectorXd& mode, int samples_per_segment = 20);
 
 }  // namespace hpcontact::infsup

@@ -7,10 +7,10 @@
 #include "core/error.hpp"
 #include "core/expression.hpp"
 #include "core/timer.hpp"
-#include "fe/error_norms.hpp"
 #include "io/toml_reader.hpp"
 #include "mesh/rectangle_mesh.hpp"
-#include "problems/poisson_problem.hpp"
+#include "operators/poisson_problem.hpp"
+#include "postprocess/error_norms.hpp"
 
 namespace hpcontact::studies {
 namespace {
@@ -93,12 +93,12 @@ ConvergenceStudy read_convergence_study(const std::string& path) {
 std::vector<ConvergenceRow> run_convergence_study(const ConvergenceStudy& study,
                                                   const std::function<void(const ConvergenceRow&)>& on_row) {
   const SolutionExpressions s = parse_solution(study);
-  problems::PoissonData data;
+  operators::PoissonData data;
   data.f = [&](const mesh::Point& x) { return s.f(x.x(), x.y()); };
   data.neumann = [&](const mesh::Point& x, const mesh::Point& normal) {
     return s.ux(x.x(), x.y()) * normal.x() + s.uy(x.x(), x.y()) * normal.y();
   };
-  const fe::ExactSolution exact{
+  const postprocess::ExactSolution exact{
       [&](const mesh::Point& x) { return s.u(x.x(), x.y()); },
       [&](const mesh::Point& x) { return Eigen::Vector2d(s.ux(x.x(), x.y()), s.uy(x.x(), x.y())); }};
 
@@ -108,10 +108,10 @@ std::vector<ConvergenceRow> run_convergence_study(const ConvergenceStudy& study,
     mesh::QuadMesh mesh = mesh::make_paper_square_mesh(n);
     if (study.perturb > 0.0) mesh::perturb_interior_vertices(mesh, study.perturb, study.seed);
     const space::H1Space space(mesh, p);
-    const auto solution = problems::solve_poisson(space, data);
+    const auto solution = operators::solve_poisson(space, data);
     ConvergenceRow row;
     row.seconds = clock.seconds();
-    const auto errors = fe::compute_errors(space, solution.coefficients, exact);
+    const auto errors = postprocess::compute_errors(space, solution.coefficients, exact);
     row.p = p;
     row.n = n;
     row.ndofs = space.n_dofs();

@@ -1,10 +1,10 @@
 // Point evaluation through the cell tabulation at a 1×1 grid.
-#include "fe/fe_function.hpp"
+#include "postprocess/fe_function.hpp"
 
 #include "assembly/cell_values.hpp"
 #include "core/error.hpp"
 
-namespace hpcontact::fe {
+namespace hpcontact::postprocess {
 
 PointValue evaluate(const space::H1Space& space, const Eigen::VectorXd& coefficients, const CellPoint& where) {
   const auto cell = assembly::tabulate_cell(space, where.cell, {where.xi}, {where.eta});
@@ -28,4 +28,4 @@ PointValue evaluate_at(const space::H1Space& space, const Eigen::VectorXd& coeff
   return evaluate(space, coefficients, *where);
 }
 
-}  // namespace hpcontact::fe
+}  // namespace hpcontact::postprocess

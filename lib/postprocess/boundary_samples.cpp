@@ -1,16 +1,17 @@
 // sample_boundary.
-#include "contact/contact_output.hpp"
+#include "postprocess/boundary_samples.hpp"
 
 #include "assembly/cell_values.hpp"
 #include "assembly/coupling.hpp"
-#include "fe/fe_function.hpp"
 #include "mesh/contact_boundary.hpp"
+#include "postprocess/fe_function.hpp"
 #include "space/multiplier_space.hpp"
 
-namespace hpcontact::contact {
+namespace hpcontact::postprocess {
 
-BoundarySamples sample_boundary(const ContactSetup& setup, const ContactSolution& solution, int per_interval) {
-  const bool signorini = setup.problem == ContactProblem::signorini;
+BoundarySamples sample_boundary(const contact::ContactSetup& setup, const contact::ContactSolution& solution,
+                                int per_interval) {
+  const bool signorini = setup.problem == contact::ContactProblem::signorini;
   const space::H1Space space(*setup.mesh, setup.cell_degrees);
   const mesh::ContactBoundary contact(*setup.mesh);
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
@@ -26,7 +27,7 @@ BoundarySamples sample_boundary(const ContactSetup& setup, const ContactSolution
       const double s = interval.s_begin + (interval.s_end - interval.s_begin) * j / (per_interval - 1);
       const double t = trace.local_parameter(s);
       const auto [xi, eta] = assembly::edge_reference_points(trace.local_edge, std::vector<double>{t});
-      const auto u = fe::evaluate(space, solution.u, {trace.cell, xi[0], eta[0]});
+      const auto u = postprocess::evaluate(space, solution.u, {trace.cell, xi[0], eta[0]});
       const mesh::Point x = contact.point_at(s);
       const double lambda = multipliers.basis_values(k, multipliers.local_coordinate(k, s)).dot(coefficients);
       const double data = signorini ? setup.obstacle(x) : setup.bound(x);
@@ -38,4 +39,4 @@ BoundarySamples sample_boundary(const ContactSetup& setup, const ContactSolution
   return out;
 }
 
-}  // namespace hpcontact::contact
+}  // namespace hpcontact::postprocess

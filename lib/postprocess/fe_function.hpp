@@ -4,10 +4,10 @@
 
 #include <Eigen/Core>
 
-#include "fe/point_locator.hpp"
+#include "postprocess/point_locator.hpp"
 #include "space/h1_space.hpp"
 
-namespace hpcontact::fe {
+namespace hpcontact::postprocess {
 
 struct PointValue {
   double value = 0.0;
@@ -21,4 +21,4 @@ PointValue evaluate(const space::H1Space& space, const Eigen::VectorXd& coeffici
 PointValue evaluate_at(const space::H1Space& space, const Eigen::VectorXd& coefficients, const PointLocator& locator,
                        const mesh::Point& x);
 
-}  // namespace hpcontact::fe
+}  // namespace hpcontact::postprocess

@@ -6,7 +6,7 @@
 
 #include "space/h1_space.hpp"
 
-namespace hpcontact::fe {
+namespace hpcontact::postprocess {
 
 struct ExactSolution {
   std::function<double(const mesh::Point&)> value;
@@ -23,4 +23,4 @@ struct ErrorNorms {
 /// stays far below the discretization error.
 ErrorNorms compute_errors(const space::H1Space& space, const Eigen::VectorXd& coefficients, const ExactSolution& exact);
 
-}  // namespace hpcontact::fe
+}  // namespace hpcontact::postprocess

@@ -7,7 +7,7 @@
 
 #include "space/h1_space.hpp"
 
-namespace hpcontact::problems {
+namespace hpcontact::operators {
 
 struct PoissonData {
   std::function<double(const mesh::Point&)> f;
@@ -25,4 +25,4 @@ struct PoissonSolution {
 /// @throws NumericalError if K is not positive definite (e.g. Γ_D empty).
 PoissonSolution solve_poisson(const space::H1Space& space, const PoissonData& data);
 
-}  // namespace hpcontact::problems
+}  // namespace hpcontact::operators

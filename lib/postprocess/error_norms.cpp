@@ -1,12 +1,12 @@
 // compute_errors: cellwise quadrature of (u - u_h)² and |∇(u - u_h)|².
-#include "fe/error_norms.hpp"
+#include "postprocess/error_norms.hpp"
 
 #include <cmath>
 
 #include "assembly/cell_values.hpp"
 #include "basis/quadrature.hpp"
 
-namespace hpcontact::fe {
+namespace hpcontact::postprocess {
 
 ErrorNorms compute_errors(const space::H1Space& space, const Eigen::VectorXd& coefficients,
                           const ExactSolution& exact) {
@@ -32,4 +32,4 @@ ErrorNorms compute_errors(const space::H1Space& space, const Eigen::VectorXd& co
   return {std::sqrt(l2_squared), std::sqrt(energy_squared), std::sqrt(l2_squared + energy_squared)};
 }
 
-}  // namespace hpcontact::fe
+}  // namespace hpcontact::postprocess

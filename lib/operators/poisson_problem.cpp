@@ -1,11 +1,11 @@
 // solve_poisson.
-#include "problems/poisson_problem.hpp"
+#include "operators/poisson_problem.hpp"
 
 #include "assembly/poisson_assembly.hpp"
 #include "core/timer.hpp"
 #include "linalg/sparse_cholesky.hpp"
 
-namespace hpcontact::problems {
+namespace hpcontact::operators {
 
 PoissonSolution solve_poisson(const space::H1Space& space, const PoissonData& data) {
   PoissonSolution out;
@@ -23,4 +23,4 @@ PoissonSolution solve_poisson(const space::H1Space& space, const PoissonData& da
   return out;
 }
 
-}  // namespace hpcontact::problems
+}  // namespace hpcontact::operators

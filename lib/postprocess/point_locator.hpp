@@ -6,7 +6,7 @@
 
 #include "mesh/quad_mesh.hpp"
 
-namespace hpcontact::fe {
+namespace hpcontact::postprocess {
 
 struct CellPoint {
   int cell = -1;
@@ -29,4 +29,4 @@ class PointLocator {
   int bucket_of(double x, double y) const;
 };
 
-}  // namespace hpcontact::fe
+}  // namespace hpcontact::postprocess

@@ -1,10 +1,11 @@
-// Boundary samples of a contact solution on Γ_C: u, the obstacle or bound, and λ.
+// Boundary samples of a contact solution on Γ_C (boundary_<problem>.csv): u, the obstacle or
+// bound, and λ.
 #pragma once
 
 #include "contact/contact_problem.hpp"
 #include "io/csv_writer.hpp"
 
-namespace hpcontact::contact {
+namespace hpcontact::postprocess {
 
 struct BoundarySamples {
   io::CsvTable table;         ///< x,u,obstacle,lambda (Signorini) or x,u,s,lambda (friction), plus y,s_arc
@@ -14,6 +15,7 @@ struct BoundarySamples {
 /// Samples every interval of the common refinement of T_h|Γ_C and T_{C,H} at `per_interval`
 /// equidistant points including both ends, so that at least that many fall in every boundary
 /// element and jumps of λ show.
-BoundarySamples sample_boundary(const ContactSetup& setup, const ContactSolution& solution, int per_interval = 20);
+BoundarySamples sample_boundary(const contact::ContactSetup& setup, const contact::ContactSolution& solution,
+                                int per_interval = 20);
 
-}  // namespace hpcontact::contact
+}  // namespace hpcontact::postprocess

@@ -1,12 +1,12 @@
 // PointLocator: each cell is listed in every bucket its bounding box touches.
-#include "fe/point_locator.hpp"
+#include "postprocess/point_locator.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include "mesh/cell_map.hpp"
 
-namespace hpcontact::fe {
+namespace hpcontact::postprocess {
 
 PointLocator::PointLocator(const mesh::QuadMesh& mesh) : mesh_(&mesh) {
   lower_ = upper_ = mesh.vertex(0);
@@ -45,4 +45,4 @@ std::optional<CellPoint> PointLocator::locate(const mesh::Point& x) const {
   return std::nullopt;
 }
 
-}  // namespace hpcontact::fe
+}  // namespace hpcontact::postprocess
