@@ -1,4 +1,4 @@
-// Helper of test_06_distributed_factor, run under mpirun: every rank contributes its share of the
+// Helper of test_07_distributed_factor, run under mpirun: every rank contributes its share of the
 // element matrices of a random weighted graph Laplacian on a grid (semidefinite per element, so a
 // rank's part floats unless it holds some of the "Dirichlet" diagonal), factorizes their sum over
 // the ranks, and rank 0 prints the relative differences from CHOLMOD on the assembled matrix.

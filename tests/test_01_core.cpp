@@ -132,8 +132,9 @@ TEST(Architecture, NoModuleIncludesOneAboveIt) {
       std::smatch match;
       if (!std::regex_search(line, match, include_line)) continue;
       const auto included = std::find(order.begin(), order.end(), match[1].str());
-      if (included != order.end())
+      if (included != order.end()) {
         EXPECT_LE(included - order.begin(), own - order.begin()) << entry.path() << " includes " << match[1];
+      }
     }
   }
   EXPECT_GT(files, 100);

@@ -1,4 +1,4 @@
-// Stage 13, contact problems (9), (13), (15) on the paper's §7 data (f = -1, g = -x², s = (1-x)²):
+// Stage 16, contact problems (9), (13), (15) on the paper's §7 data (f = -1, g = -x², s = (1-x)²):
 // KKT conditions at the constraint points (feasibility, sign/box of λ, complementarity) for
 // stable and unstable pairings and for higher p_C (Remark 3's Chebyshev–Lobatto points).
 #include <fmt/format.h>

@@ -1,4 +1,4 @@
-// Stage 14, hard cases: degrees up to 16 (u) and 15 (λ), a fine mesh, extreme ratios h/H,
+// Stage 21, hard cases: degrees up to 16 (u) and 15 (λ), a fine mesh, extreme ratios h/H,
 // contact sets that are the whole of Γ_C, empty, or touch tangentially, friction bounds vanishing
 // on part of Γ_C or tiny, data scaled by 1e±6, and solver failures reported with residuals.
 // Every case checks against an independent path or an exact property, never a stored number.

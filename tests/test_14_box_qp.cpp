@@ -1,4 +1,4 @@
-// Stage 12, contact core: the box-constrained QP of the condensed contact problem. Every
+// Stage 14, contact core: the box-constrained QP of the condensed contact problem. Every
 // solution is checked by its KKT residual and against the objective value of an independent
 // projected-gradient solve; singular S (unstable pairings) and degenerate complementarity included.
 #include <gtest/gtest.h>

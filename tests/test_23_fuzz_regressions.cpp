@@ -1,4 +1,4 @@
-// Stage 16, fuzz regressions: every scene in tests/fuzz/corpus (the fuzzer's seeds) and
+// Stage 23, fuzz regressions: every scene in tests/fuzz/corpus (the fuzzer's seeds) and
 // tests/fuzz/regressions (inputs that once crashed the parser or escaped as a non-InputError)
 // must parse to a Scene or give an InputError that names the file, nothing else.
 #include <gtest/gtest.h>

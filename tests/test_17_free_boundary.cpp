@@ -1,4 +1,4 @@
-// Stage 13, free boundary: locating the ends of the contact set / stick zone on the constraint
+// Stage 17, free boundary: locating the ends of the contact set / stick zone on the constraint
 // points (exact for a square-root onset), and fitting meshes to them, which is what makes hp
 // refinement of the §7 problems converge exponentially (the work–precision references).
 #include <fmt/format.h>

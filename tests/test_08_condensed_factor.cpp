@@ -1,4 +1,4 @@
-// Stage 6, static condensation: the factorization of a K + b M from element eliminations and the
+// Stage 8, static condensation: the factorization of a K + b M from element eliminations and the
 // skeleton Schur complement must equal a direct factorization of the assembled matrix: Schur
 // complements B A⁻¹ Bᵀ (through the trace and by solves), solves and quadratic forms, on meshes
 // of parallelograms (shared eliminations, reversed edges) and of general quadrilaterals, with

@@ -1,4 +1,4 @@
-// Stage 10, accuracy of α: the interpolation-norm Gram matrix from its kernel is the limit of the
+// Stage 13, accuracy of α: the interpolation-norm Gram matrix from its kernel is the limit of the
 // reference-space realization; the two H^{-1/2} realizations give the same α; the reported
 // alpha_error bounds the change of α to the next finer reference.
 #include <gtest/gtest.h>

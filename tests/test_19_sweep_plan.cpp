@@ -1,4 +1,4 @@
-// Stage 10, sweeps: the plan of a stability sweep (its points, groups and the schedule over MPI
+// Stage 19, sweeps: the plan of a stability sweep (its points, groups and the schedule over MPI
 // ranks) is pure and checked here without building a mesh.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Stage 17, faults: a full disk, an interrupt, a torn or foreign alpha.csv, two sweeps on one
+// Stage 24, faults: a full disk, an interrupt, a torn or foreign alpha.csv, two sweeps on one
 // folder, a rank that fails under mpirun. Each ends with the documented exit code (4 I/O, 130
 // interrupted, 2 bad input) and message, within seconds, and leaves nothing half-written.
 #include <gtest/gtest.h>

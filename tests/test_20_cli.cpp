@@ -1,4 +1,4 @@
-// Stage 7, command line: --help lists the subcommands, bad input exits with code 2 and leaves
+// Stage 20, command line: --help lists the subcommands, bad input exits with code 2 and leaves
 // no output, and the convergence subcommand writes its CSV.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Stage 15, bad input through the command line: one test per class. Each must exit with code 2,
+// Stage 22, bad input through the command line: one test per class. Each must exit with code 2,
 // name the file (or option), the key and the offending value, say what is allowed, and leave no
 // output behind.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Stage 6, the sparse direct solvers over MPI ranks (run under mpirun through a helper program):
+// Stage 7, the sparse direct solvers over MPI ranks (run under mpirun through a helper program):
 // substructuring and MUMPS must give CHOLMOD's solves and Schur complements B A⁻¹ Bᵀ (through the
 // trailing set, and by solves when B reaches outside it) on 1, 2 and 3 ranks, with the elements
 // split in strips or scattered (every unknown shared, ranks without interior, floating parts);

@@ -1,4 +1,4 @@
-// Stage 10, inf-sup constant: the paper's §7 pairings (stable / decaying), SLEPc against the
+// Stage 12, inf-sup constant: the paper's §7 pairings (stable / decaying), SLEPc against the
 // dense path on stable, unstable and singular configurations, convergence of both H^{-1/2}
 // reference realizations, the friction variant (22) with supp s ≠ Γ_C, mode sampling, and
 // stability sweeps over the levels of a base scene.

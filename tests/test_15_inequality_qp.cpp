@@ -1,4 +1,4 @@
-// Stage 12, contact core: the general-inequality QP (more constraint points than coefficients).
+// Stage 15, contact core: the general-inequality QP (more constraint points than coefficients).
 // Checked by its KKT residuals, against an exhaustive enumeration of active sets on small
 // problems (independent of any iteration), and against the box-QP active-set solver when C = I.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Stage 6, convergence against a manufactured solution on the paper's §7 square (Γ_D: top edge
+// Stage 10, convergence against a manufactured solution on the paper's §7 square (Γ_D: top edge
 // and {1}×[0,1]; Neumann data on the rest): algebraic rates in h for p = 1..6, exponential decay
 // in p = 1..12 on straight and perturbed meshes.
 #include <gtest/gtest.h>

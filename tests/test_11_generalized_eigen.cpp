@@ -1,4 +1,4 @@
-// Stage 8, the generalized eigenproblem S x = λ G x behind α² = λ_min: SLEPc (shift-and-invert,
+// Stage 11, the generalized eigenproblem S x = λ G x behind α² = λ_min: SLEPc (shift-and-invert,
 // options -infsup_*) against the dense Eigen solver, on pencils with known spectra, singular and
 // nearly singular S, other EPS types selected at run time, and broken input.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Stage 11, scenes: the §7 geometry read from a scene equals the built-in one, a Gmsh scene with
+// Stage 18, scenes: the §7 geometry read from a scene equals the built-in one, a Gmsh scene with
 // physical groups, and one error per class of bad scene input.
 #include <gtest/gtest.h>
 
