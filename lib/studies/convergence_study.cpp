@@ -11,6 +11,8 @@
 #include "mesh/rectangle_mesh.hpp"
 #include "operators/poisson_problem.hpp"
 #include "postprocess/error_norms.hpp"
+#include "scene/scene_mesh.hpp"
+#include "scene/scene_reader.hpp"
 
 namespace hpcontact::studies {
 namespace {
@@ -105,8 +107,15 @@ std::vector<ConvergenceRow> run_convergence_study(const ConvergenceStudy& study,
   std::vector<ConvergenceRow> rows;
   for (const auto& [p, n] : study.points) {
     Stopwatch clock;
-    mesh::QuadMesh mesh = mesh::make_paper_square_mesh(n);
-    if (study.perturb > 0.0) mesh::perturb_interior_vertices(mesh, study.perturb, study.seed);
+    // The built-in §7 scene with this point's mesh: n × n cells, perturbed as the study asks.
+    const std::string where = study.file + ": [[runs]] n = " + std::to_string(n);
+    const auto scene =
+        scene::parse_scene(scene::paper_scene_text(), scene::paper_scene_name,
+                           {{"domain.n_x", static_cast<long long>(n), where},
+                            {"domain.n_y", static_cast<long long>(n), where},
+                            {"domain.perturb", study.perturb, study.file + ": key 'mesh.perturb'"},
+                            {"domain.seed", static_cast<long long>(study.seed), study.file + ": key 'mesh.seed'"}});
+    const mesh::QuadMesh mesh = scene::build_scene_mesh(scene);
     const space::H1Space space(mesh, p);
     const auto solution = operators::solve_poisson(space, data);
     ConvergenceRow row;

@@ -14,10 +14,12 @@
 #include "contact/contact_problem.hpp"
 #include "core/error.hpp"
 #include "core/timer.hpp"
+#include "driver/scene_discretization.hpp"
 #include "infsup/infsup_analysis.hpp"
 #include "io/toml_reader.hpp"
 #include "linalg/sparse_cholesky.hpp"
 #include "mesh/rectangle_mesh.hpp"
+#include "scene/scene_reader.hpp"
 #include "studies/stability_sweep.hpp"
 
 namespace hpcontact::studies {
@@ -138,7 +140,6 @@ BenchmarkRow assembled_row(bool mass, const space::H1Space& space, const Eigen::
 std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& benchmark,
                                                     const std::function<void(const BenchmarkRow&)>& on_row) {
   std::vector<BenchmarkRow> rows;
-  const double ratio = scene::parse_ratio(benchmark.ratio, benchmark.file, "benchmark.ratio").value;
   auto add = [&](BenchmarkRow row) {
     row.ratio = row.seconds / row.seconds_baseline;
     row.peak_rss_mb = peak_rss_mb();
@@ -151,9 +152,17 @@ std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& 
     return std::find(benchmark.kinds.begin(), benchmark.kinds.end(), kind) != benchmark.kinds.end();
   };
   for (int n : benchmark.levels) {
-    const int m = static_cast<int>(std::lround(n * ratio));
-    const auto mesh = mesh::make_paper_square_mesh(n);
-    const auto boundary = mesh::BoundaryMesh::uniform(2.0, m);
+    // The built-in §7 scene at this level: n × n cells, T_{C,H} with the benchmark's h/H.
+    const std::string where = benchmark.file + ": key 'benchmark.n' = " + std::to_string(n);
+    const auto scene =
+        scene::parse_scene(scene::paper_scene_text(), scene::paper_scene_name,
+                           {{"domain.n_x", static_cast<long long>(n), where},
+                            {"domain.n_y", static_cast<long long>(n), where},
+                            {"contact_mesh.ratio", benchmark.ratio, benchmark.file + ": key 'benchmark.ratio'"}});
+    const auto discretization = driver::discretize_scene(scene);
+    const auto& mesh = discretization->mesh;
+    const auto& boundary = *discretization->boundary_mesh;
+    const int m = boundary.n_segments();
     const space::H1Space space(mesh, benchmark.p);
     BenchmarkRow base;
     base.p = benchmark.p;
