@@ -142,6 +142,35 @@ nlohmann::json infsup_effect(const scene::Scene& scene, const SceneDiscretizatio
           {"seconds", alpha.seconds}};
 }
 
+// The scene with its mesh graded towards the free boundary of its contact problems; what the fit
+// found goes into `free_boundary` for summary.json.
+scene::Scene fitted_scene(const scene::Scene& scene, const std::function<void(const std::string&)>& say,
+                          nlohmann::json& free_boundary) {
+  say("fitting the mesh to the free boundary");
+  Stopwatch clock;
+  const auto fit = fit_free_boundary(scene, scene.contact_effects());
+  free_boundary = {
+      {"points", nlohmann::json::array()}, {"rounds", fit.solves}, {"moved", fit.moved}, {"seconds", clock.seconds()}};
+  for (const auto& point : fit.points) free_boundary["points"].push_back({point.x(), point.y()});
+  return fit.scene;
+}
+
+// What summary.json says of the run as a whole: the scene, its discretization, the operators built.
+void add_run_summary(const scene::Scene& scene, const SceneDiscretization& d, const operators::PrimalOperators& primal,
+                     const OperatorLog& log, nlohmann::json& summary) {
+  summary["scene"] = scene.file;
+  for (const auto effect : scene.effects) summary["effects"].push_back(scene::to_string(effect));
+  summary["p"] = scene.p.label();
+  summary["pC"] = scene.pc.label();
+  summary["edges_on_contact"] = d.contact->edges().size();
+  summary["m"] = d.boundary_mesh->n_segments();
+  summary["ndofs"] = primal.space().n_dofs();
+  summary["nmult"] = d.multipliers->n_dofs();
+  for (const auto& record : log.records())
+    summary["operators"].push_back(
+        {{"name", record.name}, {"rows", record.rows}, {"cols", record.cols}, {"seconds", record.seconds}});
+}
+
 }  // namespace
 
 std::vector<std::string> refinement_columns() {
@@ -156,19 +185,9 @@ nlohmann::json run_scene(const scene::Scene& given_scene, const SceneRunOptions&
   };
   // 0. Optionally, the mesh graded towards the free boundary of every contact problem of the
   //    scene; the effects then run on that mesh.
-  scene::Scene scene = given_scene;
   nlohmann::json free_boundary;
-  if (scene.fit_free_boundary) {
-    say("fitting the mesh to the free boundary");
-    Stopwatch fit_clock;
-    const auto fit = fit_free_boundary(scene, scene.contact_effects());
-    scene = fit.scene;
-    free_boundary = {{"points", nlohmann::json::array()},
-                     {"rounds", fit.solves},
-                     {"moved", fit.moved},
-                     {"seconds", fit_clock.seconds()}};
-    for (const auto& point : fit.points) free_boundary["points"].push_back({point.x(), point.y()});
-  }
+  const scene::Scene scene =
+      given_scene.fit_free_boundary ? fitted_scene(given_scene, say, free_boundary) : given_scene;
   // 1. Meshes and degrees; the operators of S^p(T_h) are built on first use and shared.
   const auto d = discretize_scene(scene);
   OperatorLog log;
@@ -193,21 +212,11 @@ nlohmann::json run_scene(const scene::Scene& given_scene, const SceneRunOptions&
   }
 
   // 5. The summary, then every file at once.
-  summary["scene"] = scene.file;
+  add_run_summary(scene, *d, primal, log, summary);
   if (!free_boundary.is_null()) summary["free_boundary"] = free_boundary;
-  for (const auto effect : scene.effects) summary["effects"].push_back(scene::to_string(effect));
-  summary["p"] = scene.p.label();
-  summary["pC"] = scene.pc.label();
-  summary["edges_on_contact"] = d->contact->edges().size();
-  summary["m"] = d->boundary_mesh->n_segments();
-  summary["ndofs"] = primal.space().n_dofs();
-  summary["nmult"] = d->multipliers->n_dofs();
   for (const auto& effect : contacts) summary[effect.problem] = contact_summary(effect);
   if (convergence)
     summary["convergence"] = {{"refinements", scene.convergence_refinements}, {"file", "convergence.csv"}};
-  for (const auto& record : log.records())
-    summary["operators"].push_back(
-        {{"name", record.name}, {"rows", record.rows}, {"cols", record.cols}, {"seconds", record.seconds}});
   summary["seconds_total"] = clock.seconds();
   const int rank = mpi_rank_and_size().first, ranks = mpi_rank_and_size().second;
   summary["ranks"] = ranks;
