@@ -104,10 +104,10 @@ SceneKey numbers_key(const char* section, const char* name, const char* allowed,
 }
 
 template <typename Enum>
-std::string choices_text(const std::vector<std::pair<std::string, Enum>>& choices) {
+std::vector<std::string> choice_names(const std::vector<std::pair<std::string, Enum>>& choices) {
   std::vector<std::string> names;
   for (const auto& [text, value] : choices) names.push_back(text);
-  return fmt::format("{}", fmt::join(names, ", "));
+  return names;
 }
 
 template <typename Enum>
@@ -120,12 +120,10 @@ SceneKey choice_key(const char* section, const char* name, std::vector<std::pair
           name,
           "string",
           fmt::format("\"{}\"", fallback_text),
-          choices_text(choices),
+          fmt::format("{}", fmt::join(choice_names(choices), ", ")),
           doc,
           "",
-          [=](const TomlTable& table, Scene& scene) {
-            std::vector<std::string> names;
-            for (const auto& [text, value] : choices) names.push_back(text);
+          [=, names = choice_names(choices)](const TomlTable& table, Scene& scene) {
             const std::string chosen = table.choice(name, names, fallback_text);
             for (const auto& [text, value] : choices)
               if (text == chosen) scene.*member = value;

@@ -8,7 +8,6 @@
 #include "core/expression.hpp"
 #include "core/timer.hpp"
 #include "io/toml_reader.hpp"
-#include "mesh/rectangle_mesh.hpp"
 #include "operators/poisson_problem.hpp"
 #include "postprocess/error_norms.hpp"
 #include "scene/scene_mesh.hpp"

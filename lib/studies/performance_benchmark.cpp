@@ -18,9 +18,9 @@
 #include "infsup/infsup_analysis.hpp"
 #include "io/toml_reader.hpp"
 #include "linalg/sparse_cholesky.hpp"
-#include "mesh/rectangle_mesh.hpp"
+#include "operators/primal_operators.hpp"
+#include "scene/ratio.hpp"
 #include "scene/scene_reader.hpp"
-#include "studies/stability_sweep.hpp"
 
 namespace hpcontact::studies {
 
@@ -76,22 +76,13 @@ double time_linear_solve(const Eigen::VectorXd& rhs, const Arguments&... argumen
   return clock.seconds();
 }
 
-// One contact problem (9), (13) or (15) on the §7 data: the solve after assembly, against one
-// linear solve with K.
-BenchmarkRow contact_row(const std::string& kind, const PerformanceBenchmark& benchmark, const mesh::QuadMesh& mesh,
-                         const mesh::BoundaryMesh& boundary, const BenchmarkRow& base, const BenchmarkRow& linear_k) {
-  contact::ContactSetup setup;
-  setup.mesh = &mesh;
-  setup.cell_degrees.assign(mesh.n_cells(), benchmark.p);
-  setup.boundary_mesh = &boundary;
-  setup.segment_degrees.assign(boundary.n_segments(), benchmark.pc);
-  setup.problem = kind == "signorini"  ? contact::ContactProblem::signorini
-                  : kind == "friction" ? contact::ContactProblem::friction
-                                       : contact::ContactProblem::friction_s;
-  setup.f = [](const mesh::Point&) { return -1.0; };
-  setup.obstacle = [](const mesh::Point& x) { return -x.x() * x.x(); };
-  setup.bound = [](const mesh::Point& x) { return (1.0 - x.x()) * (1.0 - x.x()); };
-  const auto solution = contact::solve_contact(setup);
+// One contact problem (9), (13) or (15) of the level's scene: the solve after assembly, against
+// one linear solve with K. Its own operators, so that no row reuses another's factorization.
+BenchmarkRow contact_row(const std::string& kind, const scene::Scene& scene, const driver::SceneDiscretization& d,
+                         const BenchmarkRow& base, const BenchmarkRow& linear_k) {
+  const operators::PrimalOperators primal(d.mesh, d.cell_degrees);
+  const auto problem = *scene::contact_problem_of(*scene::effect_named(kind));  // checked when read
+  const auto solution = contact::solve_contact(driver::contact_setup_of(scene, d, problem, primal));
   BenchmarkRow row = base;
   row.kind = kind;
   row.n_trace = solution.n_trace;
@@ -102,15 +93,13 @@ BenchmarkRow contact_row(const std::string& kind, const PerformanceBenchmark& be
   return row;
 }
 
-// α of the Signorini pairing, against one linear solve with A_G.
-BenchmarkRow alpha_row(const PerformanceBenchmark& benchmark, const mesh::QuadMesh& mesh,
-                       const mesh::BoundaryMesh& boundary, const BenchmarkRow& base, const BenchmarkRow& linear_ag) {
-  infsup::InfSupSetup setup;
-  setup.mesh = &mesh;
-  setup.cell_degrees.assign(mesh.n_cells(), benchmark.p);
-  setup.boundary_mesh = &boundary;
-  setup.segment_degrees.assign(boundary.n_segments(), benchmark.pc);
-  const auto result = infsup::analyse_infsup(setup, infsup::EigenBackend::slepc);
+// α of the scene's pairing (Signorini, interpolation norm), against one linear solve with A_G.
+BenchmarkRow alpha_row(const driver::SceneDiscretization& d, const scene::Scene& scene, const BenchmarkRow& base,
+                       const BenchmarkRow& linear_ag) {
+  const operators::PrimalOperators primal(d.mesh, d.cell_degrees);
+  const auto result = infsup::analyse_infsup(
+      driver::infsup_setup_of(scene, d.mesh, d.cell_degrees, *d.boundary_mesh, d.segment_degrees, primal),
+      infsup::EigenBackend::slepc);
   BenchmarkRow row = base;
   row.kind = "alpha";
   row.seconds_assembly = result.seconds_assembly;
@@ -154,11 +143,14 @@ std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& 
   for (int n : benchmark.levels) {
     // The built-in §7 scene at this level: n × n cells, T_{C,H} with the benchmark's h/H.
     const std::string where = benchmark.file + ": key 'benchmark.n' = " + std::to_string(n);
-    const auto scene =
-        scene::parse_scene(scene::paper_scene_text(), scene::paper_scene_name,
-                           {{"domain.n_x", static_cast<long long>(n), where},
-                            {"domain.n_y", static_cast<long long>(n), where},
-                            {"contact_mesh.ratio", benchmark.ratio, benchmark.file + ": key 'benchmark.ratio'"}});
+    const auto scene = scene::parse_scene(
+        scene::paper_scene_text(), scene::paper_scene_name,
+        {{"domain.n_x", static_cast<long long>(n), where},
+         {"domain.n_y", static_cast<long long>(n), where},
+         {"contact_mesh.ratio", benchmark.ratio, benchmark.file + ": key 'benchmark.ratio'"},
+         {"discretization.p", static_cast<long long>(benchmark.p), benchmark.file + ": key 'benchmark.p'"},
+         {"discretization.pC", static_cast<long long>(benchmark.pc), benchmark.file + ": key 'benchmark.pC'"},
+         {"data.g", std::string("-x^2"), "benchmark"}});
     const auto discretization = driver::discretize_scene(scene);
     const auto& mesh = discretization->mesh;
     const auto& boundary = *discretization->boundary_mesh;
@@ -179,7 +171,7 @@ std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& 
     add(linear_k);
 
     for (const auto& kind : benchmark.kinds)
-      if (kind != "alpha" && kind != "assembled") add(contact_row(kind, benchmark, mesh, boundary, base, linear_k));
+      if (kind != "alpha" && kind != "assembled") add(contact_row(kind, scene, *discretization, base, linear_k));
     BenchmarkRow linear_ag = base;
     linear_ag.kind = "linear_AG";
     if (has("alpha") || has("assembled")) {
@@ -187,7 +179,7 @@ std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& 
           time_linear_solve<assembly::CondensedFactor>(load, space, 1.0, 1.0);
       add(linear_ag);
     }
-    if (has("alpha")) add(alpha_row(benchmark, mesh, boundary, base, linear_ag));
+    if (has("alpha")) add(alpha_row(*discretization, scene, base, linear_ag));
     // The same solves on the assembled K and A_G, as ratios to the condensed ones: what static
     // condensation saves in time, and (peak_rss_mb) in memory.
     if (has("assembled"))
