@@ -1,6 +1,7 @@
-// Factorization of A = a K + b M on S^p(T_h) by static condensation: every cell's interior modes
-// are eliminated cell by cell, and the Schur complement on the skeleton (vertex and edge dofs) is
-// factorized by CHOLMOD, optionally with a trailing set (the Γ_C trace) last.
+// Factorization of a system assembled cell by cell (a K + b M on S^p(T_h), or elasticity on
+// [S^p(T_h)]²) by static condensation: every cell's interior modes are eliminated cell by cell,
+// and the Schur complement on the skeleton (vertex and edge dofs) is factorized by CHOLMOD,
+// optionally with a trailing set (the Γ_C trace) last.
 #pragma once
 
 #include <Eigen/Core>
@@ -8,6 +9,7 @@
 #include <memory>
 #include <vector>
 
+#include "assembly/cell_system.hpp"
 #include "linalg/distributed_cholesky.hpp"
 #include "linalg/distribution.hpp"
 #include "linalg/sparse_cholesky.hpp"
@@ -21,11 +23,11 @@ namespace hpcontact::assembly {
 ///     [A_ss A_si] [u_s]   [f_s]      S u_s = f_s − A_si A_ii⁻¹ f_i,   S = A_ss − A_si A_ii⁻¹ A_is,
 ///     [A_is A_ii] [u_i] = [f_i]  ⇔   u_i = A_ii⁻¹ (f_i − A_is u_s).
 ///
-/// A_ii is block diagonal, one block of (p_T − 1)² modes per cell, so S is assembled from element
-/// Schur complements S_T and never needs A itself: (4p)² entries per cell instead of (p + 1)⁴.
-/// Parallelogram cells with equal Jacobian and degrees share their elimination (uniform meshes
-/// eliminate one cell). Since a trace coupling B has no interior columns, B A⁻¹ Bᵀ = B_s S⁻¹ B_sᵀ:
-/// the Steklov–Poincaré condensation of SparseCholesky applies to S unchanged.
+/// A_ii is block diagonal, one block of (p_T − 1)² modes per cell (2(p_T − 1)² for elasticity), so S is assembled from
+/// element Schur complements S_T and never needs A itself: (4p)² entries per cell instead of (p + 1)⁴. Parallelogram
+/// cells with equal Jacobian and degrees share their elimination (uniform meshes eliminate one cell). Since a trace
+/// coupling B has no interior columns, B A⁻¹ Bᵀ = B_s S⁻¹ B_sᵀ: the Steklov–Poincaré condensation of SparseCholesky
+/// applies to S unchanged.
 ///
 /// Distributed (under mpirun): the cells are split into one part per rank by coordinate bisection
 /// (short interfaces); every rank eliminates every cell (vectors stay replicated) but contributes
@@ -41,13 +43,16 @@ class CondensedFactor {
   CondensedFactor(const space::H1Space& space, double stiffness_weight, double mass_weight,
                   const std::vector<int>& trailing = {},
                   linalg::Distribution distribution = linalg::Distribution::serial);
+  /// Any cell system (the factor keeps it).
+  CondensedFactor(std::unique_ptr<const CellSystem> system, const std::vector<int>& trailing = {},
+                  linalg::Distribution distribution = linalg::Distribution::serial);
   ~CondensedFactor();
   CondensedFactor(CondensedFactor&&) noexcept;
   CondensedFactor& operator=(CondensedFactor&&) noexcept;
 
-  /// Number of unknowns of A: space.n_dofs().
+  /// Number of unknowns of A: system.n_dofs().
   int size() const { return size_; }
-  int n_skeleton() const { return space_->n_skeleton_dofs(); }
+  int n_skeleton() const { return system_->n_skeleton_dofs(); }
   /// The trace dofs the Schur complements are taken on (the trailing set).
   int n_trailing() const { return n_trailing_; }
   /// Distinct interior eliminations: 1 on a uniform mesh of one degree, n_cells on a general mesh.
@@ -68,14 +73,13 @@ class CondensedFactor {
   struct CellBlock;
   /// Fills blocks_ and block_of_cell_ for every cell; returns the entries of the lower triangle
   /// of S that the cells c with contributes[c] add.
-  std::vector<Eigen::Triplet<double>> eliminate_interiors(double stiffness_weight, double mass_weight,
-                                                          const std::vector<char>& contributes);
+  std::vector<Eigen::Triplet<double>> eliminate_interiors(const std::vector<char>& contributes);
   /// S⁻¹ rhs on the skeleton, shape (n_skeleton, k).
   Eigen::MatrixXd skeleton_solve(const Eigen::MatrixXd& rhs) const;
   /// f_s − A_si A_ii⁻¹ f_i, shape (n_skeleton, k).
   Eigen::MatrixXd condense(const Eigen::MatrixXd& rhs) const;
 
-  const space::H1Space* space_;
+  std::unique_ptr<const CellSystem> system_;
   int size_ = 0;
   std::vector<std::unique_ptr<CellBlock>> blocks_;
   std::vector<int> block_of_cell_;

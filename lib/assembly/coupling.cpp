@@ -6,6 +6,7 @@
 #include "assembly/cell_values.hpp"
 #include "basis/quadrature.hpp"
 #include "core/error.hpp"
+#include "space/vector_dofs.hpp"
 
 namespace hpcontact::assembly {
 
@@ -23,42 +24,83 @@ std::vector<CommonInterval> common_intervals(const mesh::ContactBoundary& contac
   return intervals;
 }
 
+namespace {
+
+// ∫ μ_i φ_j (weight) ds over one interval of the common refinement: shape (p_C + 1, n_shapes) in
+// the order of the trace cell's shapes.
+Eigen::MatrixXd interval_coupling(const space::H1Space& space, const mesh::ContactBoundary& contact,
+                                  const space::MultiplierSpace& multipliers, const CommonInterval& interval,
+                                  const BoundaryFunction& weight) {
+  const auto& trace = contact.edges()[interval.trace_edge];
+  const int p = space.cell_degree(trace.cell), pc = multipliers.segment_degree(interval.segment);
+  // On straight edges φ_j|edge has degree p in s and μ_i degree p_C: exact for p + p_C.
+  const int n_points = basis::gauss_points_for_degree(p + pc) + (weight ? 4 : 0);
+  const auto& rule = basis::gauss_legendre(n_points);
+  const double half = 0.5 * (interval.s_end - interval.s_begin);
+  std::vector<double> t(n_points), s(n_points);
+  for (int q = 0; q < n_points; ++q) {
+    s[q] = interval.s_begin + half * (rule.points[q] + 1.0);
+    t[q] = trace.local_parameter(s[q]);
+  }
+  const auto [xi, eta] = edge_reference_points(trace.local_edge, t);
+  const CellValues cell = tabulate_cell(space, trace.cell, xi, eta);
+  Eigen::MatrixXd mu(n_points, pc + 1);
+  for (int q = 0; q < n_points; ++q) {
+    double w = rule.weights[q] * half;
+    if (weight) w *= weight(mesh::Point(cell.points(q, 0), cell.points(q, 1)));
+    mu.row(q) =
+        w *
+        multipliers.basis_values(interval.segment, multipliers.local_coordinate(interval.segment, s[q])).transpose();
+  }
+  return mu.transpose() * cell.values;
+}
+
+}  // namespace
+
 Eigen::SparseMatrix<double> assemble_coupling(const space::H1Space& space, const mesh::ContactBoundary& contact,
                                               const space::MultiplierSpace& multipliers,
                                               const BoundaryFunction& weight) {
   std::vector<Eigen::Triplet<double>> triplets;
   for (const auto& interval : common_intervals(contact, multipliers.boundary_mesh())) {
-    const auto& trace = contact.edges()[interval.trace_edge];
-    const int p = space.cell_degree(trace.cell), pc = multipliers.segment_degree(interval.segment);
-    // On straight edges φ_j|edge has degree p in s and μ_i degree p_C: exact for p + p_C.
-    const int n_points = basis::gauss_points_for_degree(p + pc) + (weight ? 4 : 0);
-    const auto& rule = basis::gauss_legendre(n_points);
-    const double half = 0.5 * (interval.s_end - interval.s_begin);
-    std::vector<double> t(n_points), s(n_points);
-    for (int q = 0; q < n_points; ++q) {
-      s[q] = interval.s_begin + half * (rule.points[q] + 1.0);
-      t[q] = trace.local_parameter(s[q]);
-    }
-    const auto [xi, eta] = edge_reference_points(trace.local_edge, t);
-    const CellValues cell = tabulate_cell(space, trace.cell, xi, eta);
-    Eigen::MatrixXd mu(n_points, pc + 1);
-    for (int q = 0; q < n_points; ++q) {
-      double w = rule.weights[q] * half;
-      if (weight) w *= weight(mesh::Point(cell.points(q, 0), cell.points(q, 1)));
-      mu.row(q) =
-          w *
-          multipliers.basis_values(interval.segment, multipliers.local_coordinate(interval.segment, s[q])).transpose();
-    }
-    const Eigen::MatrixXd local = mu.transpose() * cell.values;  // (p_C + 1, n_shapes)
-    const auto& shapes = space.cell_shapes(trace.cell);
+    const Eigen::MatrixXd local = interval_coupling(space, contact, multipliers, interval, weight);
+    const auto& shapes = space.cell_shapes(contact.edges()[interval.trace_edge].cell);
     const int first = multipliers.first_dof(interval.segment);
     for (std::size_t j = 0; j < shapes.size(); ++j) {
       if (shapes[j].dof < 0) continue;
-      for (int i = 0; i <= pc; ++i)
+      for (int i = 0; i < local.rows(); ++i)
         if (local(i, j) != 0.0) triplets.emplace_back(first + i, shapes[j].dof, local(i, j));
     }
   }
   Eigen::SparseMatrix<double> coupling(multipliers.n_dofs(), space.n_dofs());
+  coupling.setFromTriplets(triplets.begin(), triplets.end());
+  return coupling;
+}
+
+mesh::Point trace_direction(const mesh::ContactBoundary& contact, int trace_edge, TraceDirection direction) {
+  const auto& trace = contact.edges()[trace_edge];
+  if (direction == TraceDirection::normal) return contact.mesh().boundary_normal(trace.edge);
+  return (contact.point_at(trace.s_end) - contact.point_at(trace.s_begin)).normalized();
+}
+
+Eigen::SparseMatrix<double> assemble_directional_coupling(const space::H1Space& space,
+                                                          const mesh::ContactBoundary& contact,
+                                                          const space::MultiplierSpace& multipliers,
+                                                          TraceDirection direction) {
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (const auto& interval : common_intervals(contact, multipliers.boundary_mesh())) {
+    const Eigen::MatrixXd local = interval_coupling(space, contact, multipliers, interval, {});
+    const mesh::Point d = trace_direction(contact, interval.trace_edge, direction);
+    const auto& shapes = space.cell_shapes(contact.edges()[interval.trace_edge].cell);
+    const int first = multipliers.first_dof(interval.segment);
+    for (std::size_t j = 0; j < shapes.size(); ++j) {
+      if (shapes[j].dof < 0) continue;
+      for (int c = 0; c < space::kComponents; ++c)
+        for (int i = 0; i < local.rows(); ++i)
+          if (local(i, j) * d(c) != 0.0)
+            triplets.emplace_back(first + i, space::component_dof(shapes[j].dof, c), local(i, j) * d(c));
+    }
+  }
+  Eigen::SparseMatrix<double> coupling(multipliers.n_dofs(), space::kComponents * space.n_dofs());
   coupling.setFromTriplets(triplets.begin(), triplets.end());
   return coupling;
 }

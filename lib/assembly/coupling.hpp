@@ -22,6 +22,19 @@ Eigen::SparseMatrix<double> assemble_coupling(const space::H1Space& space, const
                                               const space::MultiplierSpace& multipliers,
                                               const BoundaryFunction& weight = {});
 
+/// The normal of Γ_C (outward from Ω) or its unit tangent (along increasing arc length s).
+enum class TraceDirection { normal, tangent };
+/// That direction on one trace edge (straight edges: constant along it).
+mesh::Point trace_direction(const mesh::ContactBoundary& contact, int trace_edge, TraceDirection direction);
+
+/// B^d_{i,(j,c)} = ∫_{Γ_C} μ_i φ_j d_c ds with d the normal or the tangent: the pairing of a
+/// multiplier with the normal (tangential) component of a field of [S^p(T_h)]², shape
+/// (n_multiplier_dofs, 2 n_primal_dofs), columns numbered by space::component_dof.
+Eigen::SparseMatrix<double> assemble_directional_coupling(const space::H1Space& space,
+                                                          const mesh::ContactBoundary& contact,
+                                                          const space::MultiplierSpace& multipliers,
+                                                          TraceDirection direction);
+
 /// g_i = ∫ g μ_i ds, shape (n_multiplier_dofs).
 Eigen::VectorXd assemble_multiplier_load(const mesh::ContactBoundary& contact,
                                          const space::MultiplierSpace& multipliers, const BoundaryFunction& g);

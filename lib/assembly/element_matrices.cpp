@@ -5,6 +5,7 @@
 #include "assembly/element_matrices.hpp"
 
 #include <Eigen/LU>
+#include <array>
 
 #include "assembly/cell_values.hpp"
 #include "basis/lobatto.hpp"
@@ -82,6 +83,45 @@ void ElementMatrices::compute(int cell, Eigen::MatrixXd* stiffness, Eigen::Matri
   if (stiffness)
     *stiffness = values.grad_x.transpose() * w * values.grad_x + values.grad_y.transpose() * w * values.grad_y;
   if (mass) *mass = values.values.transpose() * w * values.values;
+}
+
+ElementMatrices::Directional ElementMatrices::directional(int cell) {
+  const auto& shapes = space_->cell_shapes(cell);
+  const int n = static_cast<int>(shapes.size());
+  Eigen::Matrix2d jacobian;
+  if (constant_jacobian(cell, jacobian)) {
+    // ∂_a φ = Σ_k T_ak ∂_k φ̂ with T = J⁻ᵀ, so D_ab = det J · Σ_kl T_ak T_bl R_kl with the reference
+    // products R_ξξ = A⊗M, R_ηη = M⊗A, R_ξη[s,t] = C[i_s,i_t] C[j_t,j_s], R_ηξ[s,t] = C[i_t,i_s] C[j_s,j_t].
+    const double det = jacobian.determinant();
+    const Eigen::Matrix2d t = jacobian.inverse().transpose();
+    const auto& lines = line(space_->cell_degree(cell));
+    const auto &a = lines.stiffness, &m = lines.mass, &c = lines.mixed;
+    Directional out{Eigen::MatrixXd(n, n), Eigen::MatrixXd(n, n), Eigen::MatrixXd(n, n), Eigen::MatrixXd(n, n)};
+    std::array<Eigen::MatrixXd*, 4> blocks{&out.xx, &out.xy, &out.yx, &out.yy};
+    for (int q = 0; q < n; ++q) {
+      const int iq = shapes[q].i, jq = shapes[q].j;
+      for (int s = 0; s < n; ++s) {
+        const int is = shapes[s].i, js = shapes[s].j;
+        const double scale = det * shapes[s].sign * shapes[q].sign;
+        const Eigen::Matrix2d r{{a(is, iq) * m(js, jq), c(is, iq) * c(jq, js)},
+                                {c(iq, is) * c(js, jq), m(is, iq) * a(js, jq)}};
+        const Eigen::Matrix2d d = t * r * t.transpose();  // d(a, b) = Σ_kl T_ak R_kl T_bl
+        for (int k = 0; k < 4; ++k) (*blocks[k])(s, q) = scale * d(k / 2, k % 2);
+      }
+    }
+    return out;
+  }
+  const auto& rule = basis::gauss_legendre(cell_quadrature_points(space_->cell_degree(cell)));
+  const CellValues values = tabulate_cell(*space_, cell, rule.points, rule.points);
+  Eigen::VectorXd weights(values.jacobians.size());
+  for (std::size_t b = 0; b < rule.points.size(); ++b)
+    for (std::size_t a = 0; a < rule.points.size(); ++a) {
+      const auto q = a + rule.points.size() * b;
+      weights(q) = rule.weights[a] * rule.weights[b] * values.jacobians(q);
+    }
+  const auto w = weights.asDiagonal();
+  return {values.grad_x.transpose() * w * values.grad_x, values.grad_x.transpose() * w * values.grad_y,
+          values.grad_y.transpose() * w * values.grad_x, values.grad_y.transpose() * w * values.grad_y};
 }
 
 }  // namespace hpcontact::assembly

@@ -20,6 +20,13 @@ class ElementMatrices {
   /// (n_shapes, n_shapes) with n_shapes = space.cell_shapes(cell).size().
   void compute(int cell, Eigen::MatrixXd* stiffness, Eigen::MatrixXd* mass);
 
+  /// D_ab = (∂_a φ_s, ∂_b φ_t)_T for a, b ∈ {x, y}, each of shape (n_shapes, n_shapes) with the
+  /// shapes' signs applied: the blocks of the elasticity stiffness (K_T = D_xx + D_yy).
+  struct Directional {
+    Eigen::MatrixXd xx, xy, yx, yy;
+  };
+  Directional directional(int cell);
+
   /// The Jacobian DΨ_T if the cell is a parallelogram (and the Kronecker path is on): equal
   /// Jacobians and degrees give equal element matrices up to the shapes' signs.
   bool constant_jacobian(int cell, Eigen::Matrix2d& jacobian) const;

@@ -15,6 +15,7 @@
 #include "basis/lobatto.hpp"
 #include "basis/quadrature.hpp"
 #include "contact/multiplier_constraints.hpp"
+#include "contact/multiplier_qp.hpp"
 #include "core/error.hpp"
 #include "core/operator_log.hpp"
 #include "core/timer.hpp"
@@ -72,36 +73,6 @@ const Eigen::VectorXd& load_vector(const ContactSetup& setup, const operators::P
   return own;
 }
 
-// The multiplier QP min ½ λᵀSλ − dᵀλ over lo ≤ Cλ ≤ hi. Bounds on the coefficients (C = I): the
-// active-set method, which ends in a few steps with an exact active set; should it stall (strongly
-// singular S, e.g. a multiplier mesh much finer than the trace space), the interior-point method
-// takes over on the same problem. General rows: the interior-point method.
-void solve_multiplier_qp(const ContactSetup& setup, const Eigen::MatrixXd& s, const Eigen::VectorXd& d,
-                         const MultiplierConstraints& constraints, ContactSolution& out) {
-  std::string fallback_reason;
-  if (constraints.bounds_only) {
-    try {
-      auto result = solve_box_qp(s, d, constraints.lower, constraints.upper, setup.qp);
-      out.lambda = result.x;
-      out.qp = std::move(result.report);
-      return;
-    } catch (const NumericalError& error) {
-      fallback_reason = error.what();
-    }
-  }
-  try {
-    auto result =
-        solve_inequality_qp(s, d, constraints.matrix, constraints.lower, constraints.upper, setup.interior_point);
-    out.lambda = result.x;
-    out.constraint_multiplier = result.y;
-    out.qp = std::move(result.report);
-    out.qp.fallback_reason = fallback_reason;
-  } catch (const NumericalError& error) {
-    throw NumericalError(fallback_reason.empty() ? std::string(error.what())
-                                                 : fallback_reason + "; then " + error.what());
-  }
-}
-
 }  // namespace
 
 ContactSolution solve_contact(const ContactSetup& setup) {
@@ -152,7 +123,10 @@ ContactSolution solve_contact(const ContactSetup& setup) {
 
   // 3. The multiplier.
   Stopwatch qp_clock;
-  solve_multiplier_qp(setup, s, d, constraints, out);
+  auto qp = solve_multiplier_qp(s, d, constraints, setup.qp, setup.interior_point);
+  out.lambda = std::move(qp.x);
+  out.constraint_multiplier = std::move(qp.y);
+  out.qp = std::move(qp.report);
   out.seconds.qp = qp_clock.seconds();
   if (log) log->record("contact QP (" + out.qp.method + ")", s.rows(), s.cols(), out.seconds.qp);
 

@@ -1,0 +1,50 @@
+// Parallelogram congruence keys and the scalar cell system a K + b M.
+#include "assembly/cell_system.hpp"
+
+#include <cmath>
+
+#include "mesh/cell_map.hpp"
+
+namespace hpcontact::assembly {
+
+std::optional<CongruenceKey> parallelogram_key(const space::H1Space& space, int cell, bool kronecker_parallelograms) {
+  if (!kronecker_parallelograms) return std::nullopt;
+  const mesh::CellMap map(space.mesh(), cell);
+  if (!map.is_parallelogram()) return std::nullopt;
+  // Cells of a uniform mesh whose vertex coordinates differ in the last bits share their
+  // elimination, at a relative change of the element matrix far below 1e-12; similar cells of
+  // different sizes (the layers of a geometric mesh) must not share a block of K + M.
+  const Eigen::Matrix2d jacobian = map.jacobian(0.0, 0.0);
+  const double largest = jacobian.cwiseAbs().maxCoeff(), unit = 1e-12 * largest;
+  CongruenceKey key{space.cell_degree(cell)};
+  for (int e = 0; e < 4; ++e) key.push_back(space.edge_degree(space.mesh().cell_edge(cell, e)));
+  for (int k = 0; k < 4; ++k) key.push_back(std::llround(jacobian(k % 2, k / 2) / unit));
+  key.push_back(std::llround(1e11 * std::log(largest)));
+  return key;
+}
+
+ScalarCellSystem::ScalarCellSystem(const space::H1Space& space, double stiffness_weight, double mass_weight)
+    : space_(&space), stiffness_weight_(stiffness_weight), mass_weight_(mass_weight), element_(space) {}
+
+void ScalarCellSystem::cell_dofs(int cell, std::vector<CellDof>& out) const {
+  const auto& shapes = space_->cell_shapes(cell);
+  out.resize(shapes.size());
+  for (std::size_t s = 0; s < shapes.size(); ++s)
+    out[s] = {shapes[s].dof, shapes[s].sign, shapes[s].i >= 2 && shapes[s].j >= 2};
+}
+
+Eigen::MatrixXd ScalarCellSystem::element_matrix(int cell) const {
+  Eigen::MatrixXd stiffness, mass;
+  element_.compute(cell, stiffness_weight_ != 0.0 ? &stiffness : nullptr, mass_weight_ != 0.0 ? &mass : nullptr);
+  const int n = static_cast<int>(space_->cell_shapes(cell).size());
+  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(n, n);
+  if (stiffness_weight_ != 0.0) a += stiffness_weight_ * stiffness;
+  if (mass_weight_ != 0.0) a += mass_weight_ * mass;
+  return a;
+}
+
+std::optional<CongruenceKey> ScalarCellSystem::congruence_key(int cell) const {
+  return parallelogram_key(*space_, cell, true);
+}
+
+}  // namespace hpcontact::assembly

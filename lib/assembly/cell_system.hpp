@@ -1,0 +1,68 @@
+// What static condensation needs to know of a symmetric positive definite system assembled cell
+// by cell: each cell's unknowns (global dof, sign, interior or skeleton), its element matrix, and
+// which cells are congruent (equal element matrices up to signs). One interface for the scalar
+// operators a K + b M on S^p(T_h) and the elasticity operator on [S^p(T_h)]², so that both share
+// one condensation and one factorization (CondensedFactor).
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+#include <vector>
+
+#include "assembly/element_matrices.hpp"
+#include "mesh/quad_mesh.hpp"
+#include "space/h1_space.hpp"
+
+namespace hpcontact::assembly {
+
+/// One local unknown of a cell. `dof` is -1 where a Dirichlet condition eliminates it.
+struct CellDof {
+  int dof = -1;
+  double sign = 1.0;
+  bool interior = false;  ///< coupled to no other cell (eliminated by the condensation)
+};
+
+/// Cells with equal keys have equal unsigned element matrices (see CellSystem::congruence_key).
+using CongruenceKey = std::vector<long long>;
+
+class CellSystem {
+ public:
+  virtual ~CellSystem() = default;
+  virtual const mesh::QuadMesh& mesh() const = 0;
+  virtual int n_dofs() const = 0;
+  /// Skeleton dofs are numbered 0 … n_skeleton_dofs() − 1, before every interior dof.
+  virtual int n_skeleton_dofs() const = 0;
+  /// The cell's unknowns in the order of its element matrix.
+  virtual void cell_dofs(int cell, std::vector<CellDof>& out) const = 0;
+  /// The element matrix in the basis of the signed local shapes, shape (n, n) with n the size of
+  /// cell_dofs(cell).
+  virtual Eigen::MatrixXd element_matrix(int cell) const = 0;
+  /// A key shared exactly by the cells whose unsigned element matrices are equal (parallelograms
+  /// of equal Jacobian, degrees and coefficients); empty where the cell has no congruent partner
+  /// to look for.
+  virtual std::optional<CongruenceKey> congruence_key(int cell) const = 0;
+};
+
+/// The key of a parallelogram cell: its cell and edge degrees and its Jacobian rounded to 1e-12 of
+/// the largest entry, with the cell's size (log of the largest entry, to 1e-11) because the mass
+/// matrix scales with the area. Empty for other cells (or with the Kronecker path off).
+std::optional<CongruenceKey> parallelogram_key(const space::H1Space& space, int cell, bool kronecker_parallelograms);
+
+/// A K + b M on S^p(T_h) (a, b ≥ 0, not both 0).
+class ScalarCellSystem final : public CellSystem {
+ public:
+  ScalarCellSystem(const space::H1Space& space, double stiffness_weight, double mass_weight);
+  const mesh::QuadMesh& mesh() const override { return space_->mesh(); }
+  int n_dofs() const override { return space_->n_dofs(); }
+  int n_skeleton_dofs() const override { return space_->n_skeleton_dofs(); }
+  void cell_dofs(int cell, std::vector<CellDof>& out) const override;
+  Eigen::MatrixXd element_matrix(int cell) const override;
+  std::optional<CongruenceKey> congruence_key(int cell) const override;
+
+ private:
+  const space::H1Space* space_;
+  double stiffness_weight_, mass_weight_;
+  mutable ElementMatrices element_;  ///< keeps the 1D matrices per degree
+};
+
+}  // namespace hpcontact::assembly

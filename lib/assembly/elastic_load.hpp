@@ -1,0 +1,22 @@
+// The load of the elasticity problem on [S^p(T_h)]²: body force and boundary traction.
+#pragma once
+
+#include <Eigen/Core>
+#include <functional>
+#include <set>
+
+#include "mesh/quad_mesh.hpp"
+#include "space/h1_space.hpp"
+
+namespace hpcontact::assembly {
+
+using VectorFunction = std::function<Eigen::Vector2d(const mesh::Point&)>;
+/// A traction t(x, n), n the outward unit normal.
+using TractionFunction = std::function<Eigen::Vector2d(const mesh::Point& x, const mesh::Point& normal)>;
+
+/// F_(j,c) = (f_c, φ_j) + ∫_{edges in `parts`} t_c φ_j ds, shape (2 n_dofs), interleaved
+/// (space::component_dof). Either function may be empty (no body force, no traction).
+Eigen::VectorXd assemble_elastic_load(const space::H1Space& space, const VectorFunction& body_force,
+                                      const std::set<mesh::BoundaryPart>& parts, const TractionFunction& traction);
+
+}  // namespace hpcontact::assembly

@@ -1,0 +1,68 @@
+// Lamé parameters and the elasticity cell system.
+#include "assembly/elastic_system.hpp"
+
+#include <fmt/format.h>
+
+#include <bit>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "space/vector_dofs.hpp"
+
+namespace hpcontact::assembly {
+
+std::string to_string(PlaneModel model) { return model == PlaneModel::strain ? "plane_strain" : "plane_stress"; }
+
+Material lame_parameters(double young, double poisson, PlaneModel model) {
+  if (!(young > 0.0) || !std::isfinite(young))
+    throw InputError(fmt::format("Young's modulus E = {} must be a finite number > 0", young));
+  if (!(poisson > -1.0 && poisson < 0.5))
+    throw InputError(fmt::format("Poisson's ratio ν = {} must lie in (-1, 0.5)", poisson));
+  const double mu = young / (2.0 * (1.0 + poisson));
+  const double lambda = model == PlaneModel::strain ? young * poisson / ((1.0 + poisson) * (1.0 - 2.0 * poisson))
+                                                    : young * poisson / (1.0 - poisson * poisson);
+  return {lambda, mu};
+}
+
+ElasticCellSystem::ElasticCellSystem(const space::H1Space& space, std::vector<Material> materials)
+    : space_(&space), materials_(std::move(materials)), element_(space) {
+  if (static_cast<int>(materials_.size()) != space.mesh().n_cells())
+    throw InputError(fmt::format("{} materials given for {} cells", materials_.size(), space.mesh().n_cells()));
+}
+
+int ElasticCellSystem::n_dofs() const { return space::kComponents * space_->n_dofs(); }
+int ElasticCellSystem::n_skeleton_dofs() const { return space::kComponents * space_->n_skeleton_dofs(); }
+
+void ElasticCellSystem::cell_dofs(int cell, std::vector<CellDof>& out) const {
+  const auto& shapes = space_->cell_shapes(cell);
+  out.resize(space::kComponents * shapes.size());
+  for (std::size_t s = 0; s < shapes.size(); ++s) {
+    const bool interior = shapes[s].i >= 2 && shapes[s].j >= 2;
+    for (int c = 0; c < space::kComponents; ++c)
+      out[space::kComponents * s + c] = {space::component_dof(shapes[s].dof, c), shapes[s].sign, interior};
+  }
+}
+
+Eigen::MatrixXd ElasticCellSystem::element_matrix(int cell) const {
+  const auto d = element_.directional(cell);
+  const auto [lambda, mu] = materials_[cell];
+  const Eigen::Index n = d.xx.rows();
+  Eigen::MatrixXd a(2 * n, 2 * n);
+  // Interleaved (s, c) ↔ 2s + c: each 2 × 2 block is one pair of shapes.
+  a(Eigen::seqN(0, n, 2), Eigen::seqN(0, n, 2)) = (lambda + 2.0 * mu) * d.xx + mu * d.yy;
+  a(Eigen::seqN(0, n, 2), Eigen::seqN(1, n, 2)) = lambda * d.xy + mu * d.yx;
+  a(Eigen::seqN(1, n, 2), Eigen::seqN(0, n, 2)) = lambda * d.yx + mu * d.xy;
+  a(Eigen::seqN(1, n, 2), Eigen::seqN(1, n, 2)) = (lambda + 2.0 * mu) * d.yy + mu * d.xx;
+  return a;
+}
+
+std::optional<CongruenceKey> ElasticCellSystem::congruence_key(int cell) const {
+  auto key = parallelogram_key(*space_, cell, true);
+  if (key) {  // equal geometry and degrees give equal matrices only with equal coefficients
+    key->push_back(std::bit_cast<long long>(materials_[cell].lambda));
+    key->push_back(std::bit_cast<long long>(materials_[cell].mu));
+  }
+  return key;
+}
+
+}  // namespace hpcontact::assembly

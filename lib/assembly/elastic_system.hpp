@@ -1,0 +1,51 @@
+// Linear elasticity on [S^p(T_h)]² (plane strain or plane stress, isotropic, Lamé parameters per
+// cell): the bilinear form a(u, v) = (λ div u, div v) + (2μ ε(u), ε(v)) as a cell system, so that
+// static condensation and the trace-last factorization are those of the scalar problem.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "assembly/cell_system.hpp"
+#include "space/h1_space.hpp"
+
+namespace hpcontact::assembly {
+
+enum class PlaneModel { strain, stress };
+
+/// "plane_strain" / "plane_stress".
+std::string to_string(PlaneModel model);
+
+struct Material {
+  double lambda = 0.0;  ///< first Lamé parameter (of the plane model)
+  double mu = 0.0;      ///< shear modulus
+};
+
+/// Lamé parameters of Young's modulus E > 0 and Poisson's ratio ν ∈ (−1, ½):
+///   plane strain  λ = Eν / ((1 + ν)(1 − 2ν)),  μ = E / (2(1 + ν));
+///   plane stress  λ = Eν / (1 − ν²)            (the same μ).
+/// @throws InputError outside these ranges.
+Material lame_parameters(double young, double poisson, PlaneModel model);
+
+/// Local unknowns of a cell: component c of scalar shape s at position 2s + c; global dofs by
+/// space::component_dof. Element matrix (signed shapes), with D_ab = (∂_a φ_s, ∂_b φ_t):
+///   a[(s,x),(t,x)] = (λ + 2μ) D_xx + μ D_yy      a[(s,x),(t,y)] = λ D_xy + μ D_yx
+///   a[(s,y),(t,x)] = λ D_yx + μ D_xy             a[(s,y),(t,y)] = (λ + 2μ) D_yy + μ D_xx
+class ElasticCellSystem final : public CellSystem {
+ public:
+  /// `materials`: one per cell. @throws InputError on a size mismatch.
+  ElasticCellSystem(const space::H1Space& space, std::vector<Material> materials);
+  const mesh::QuadMesh& mesh() const override { return space_->mesh(); }
+  int n_dofs() const override;
+  int n_skeleton_dofs() const override;
+  void cell_dofs(int cell, std::vector<CellDof>& out) const override;
+  Eigen::MatrixXd element_matrix(int cell) const override;
+  std::optional<CongruenceKey> congruence_key(int cell) const override;
+
+ private:
+  const space::H1Space* space_;
+  std::vector<Material> materials_;
+  mutable ElementMatrices element_;
+};
+
+}  // namespace hpcontact::assembly

@@ -1,0 +1,74 @@
+// ElasticOperators: lazy members, each logged once.
+#include "operators/elastic_operators.hpp"
+
+#include <algorithm>
+
+#include "core/error.hpp"
+#include "core/timer.hpp"
+#include "linalg/sparse_cholesky.hpp"
+#include "mesh/boundary_mesh.hpp"
+#include "operators/primal_operators.hpp"
+#include "space/vector_dofs.hpp"
+
+namespace hpcontact::operators {
+
+ElasticOperators::ElasticOperators(const mesh::QuadMesh& mesh, std::vector<int> cell_degrees,
+                                   std::vector<assembly::Material> materials, OperatorLog* log)
+    : mesh_(&mesh), materials_(std::move(materials)), log_(log) {
+  Stopwatch clock;
+  space_ = std::make_unique<space::H1Space>(mesh, std::move(cell_degrees));
+  contact_ = std::make_unique<mesh::ContactBoundary>(mesh);
+  if (static_cast<int>(materials_.size()) != mesh.n_cells())
+    throw InputError("elasticity: one material per cell is needed");
+  if (log_) log_->record("[S^p(T_h)]^2", n_dofs(), 0, clock.seconds());
+}
+
+ElasticOperators::~ElasticOperators() = default;
+
+const std::vector<int>& ElasticOperators::trace_dofs() const {
+  if (!trace_dofs_) {
+    // The scalar trace dofs (columns a full-degree multiplier space on the edges of T_h|Γ_C
+    // touches), each with both components.
+    const int p_max = *std::max_element(space_->cell_degrees().begin(), space_->cell_degrees().end());
+    const mesh::BoundaryMesh edges(contact_->breakpoints(), "trace of T_h");
+    const space::MultiplierSpace full_trace(edges, p_max);
+    const auto scalar = linalg::nonzero_columns(assembly::assemble_coupling(*space_, *contact_, full_trace));
+    trace_dofs_ = std::make_unique<std::vector<int>>();
+    for (int dof : scalar)
+      for (int c = 0; c < space::kComponents; ++c) trace_dofs_->push_back(space::component_dof(dof, c));
+  }
+  return *trace_dofs_;
+}
+
+const assembly::CondensedFactor& ElasticOperators::stiffness_factor() const {
+  if (!stiffness_factor_) {
+    bool dirichlet = false;
+    for (int e : mesh_->boundary_edges()) dirichlet = dirichlet || mesh_->edge_part(e) == mesh::BoundaryPart::dirichlet;
+    if (!dirichlet)
+      throw InputError(
+          "the body has no Dirichlet part (no boundary edge is in Γ_D: key 'boundary.dirichlet' or "
+          "'boundary.dirichlet_groups'): the elasticity operator is singular, since rigid motions have no "
+          "energy, and the contact problems need the body held somewhere");
+    Stopwatch clock;
+    stiffness_factor_ = std::make_unique<assembly::CondensedFactor>(
+        std::make_unique<assembly::ElasticCellSystem>(*space_, materials_), trace_dofs());
+    if (log_) log_->record("factor(A)", n_dofs(), n_dofs(), clock.seconds());
+  }
+  return *stiffness_factor_;
+}
+
+const Eigen::SparseMatrix<double>& ElasticOperators::coupling(const space::MultiplierSpace& multipliers,
+                                                              assembly::TraceDirection direction) const {
+  const std::string name = direction == assembly::TraceDirection::normal ? "B_n" : "B_t";
+  const std::string key = PrimalOperators::coupling_key(multipliers, name);
+  auto found = couplings_.find(key);
+  if (found == couplings_.end()) {
+    Stopwatch clock;
+    found = couplings_.emplace(key, assembly::assemble_directional_coupling(*space_, *contact_, multipliers, direction))
+                .first;
+    if (log_) log_->record(name, found->second.rows(), found->second.cols(), clock.seconds());
+  }
+  return found->second;
+}
+
+}  // namespace hpcontact::operators

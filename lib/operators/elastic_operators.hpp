@@ -1,0 +1,58 @@
+// The operators of the elasticity problem on [S^p(T_h)]² that its contact problems share, built
+// on first use: the stiffness A (a(u, v) = (λ div u, div v) + (2μ ε(u), ε(v))) factorized by
+// static condensation with every Γ_C trace dof last, and the couplings of multiplier spaces on
+// Γ_C with the normal and the tangential trace. A itself is never assembled.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "assembly/condensed_factor.hpp"
+#include "assembly/coupling.hpp"
+#include "assembly/elastic_system.hpp"
+#include "core/operator_log.hpp"
+#include "mesh/contact_boundary.hpp"
+#include "space/h1_space.hpp"
+#include "space/multiplier_space.hpp"
+
+namespace hpcontact::operators {
+
+class ElasticOperators {
+ public:
+  /// `mesh` (and `log`, when given) must outlive the object; `materials` one per cell.
+  /// Γ_D clamps both components (u = 0 there).
+  ElasticOperators(const mesh::QuadMesh& mesh, std::vector<int> cell_degrees, std::vector<assembly::Material> materials,
+                   OperatorLog* log = nullptr);
+  ~ElasticOperators();
+
+  const mesh::QuadMesh& mesh() const { return *mesh_; }
+  /// The scalar space S^p(T_h); the displacement has 2 n_dofs unknowns (space::component_dof).
+  const space::H1Space& space() const { return *space_; }
+  int n_dofs() const { return 2 * space_->n_dofs(); }
+  const mesh::ContactBoundary& contact() const { return *contact_; }
+  const std::vector<assembly::Material>& materials() const { return materials_; }
+
+  /// A factorized with the trace last ("factor(A)").
+  /// @throws InputError if the body has no Dirichlet part (A would be singular: rigid motions).
+  const assembly::CondensedFactor& stiffness_factor() const;
+  /// B^n or B^t of a multiplier space on Γ_C ("B_n", "B_t"), kept per multiplier space layout.
+  const Eigen::SparseMatrix<double>& coupling(const space::MultiplierSpace& multipliers,
+                                              assembly::TraceDirection direction) const;
+  /// Both components of every scalar dof with a trace on Γ_C (the trailing set of the factor).
+  const std::vector<int>& trace_dofs() const;
+  OperatorLog* log() const { return log_; }
+
+ private:
+  const mesh::QuadMesh* mesh_;
+  std::unique_ptr<space::H1Space> space_;
+  std::unique_ptr<mesh::ContactBoundary> contact_;
+  std::vector<assembly::Material> materials_;
+  OperatorLog* log_;
+  mutable std::unique_ptr<assembly::CondensedFactor> stiffness_factor_;
+  mutable std::unique_ptr<std::vector<int>> trace_dofs_;
+  mutable std::map<std::string, Eigen::SparseMatrix<double>> couplings_;
+};
+
+}  // namespace hpcontact::operators

@@ -1,0 +1,42 @@
+// compute_elastic_errors: cellwise quadrature of |e|² and 2μ ε(e):ε(e) + λ (div e)², e = u − u_h.
+#include "postprocess/elastic_errors.hpp"
+
+#include <cmath>
+
+#include "assembly/cell_values.hpp"
+#include "basis/quadrature.hpp"
+#include "space/vector_dofs.hpp"
+
+namespace hpcontact::postprocess {
+
+ElasticErrors compute_elastic_errors(const space::H1Space& space, const std::vector<assembly::Material>& materials,
+                                     const Eigen::VectorXd& u, const ExactDisplacement& exact) {
+  double l2_squared = 0.0, energy_squared = 0.0;
+  for (int c = 0; c < space.mesh().n_cells(); ++c) {
+    const auto& rule = basis::gauss_legendre(space.cell_degree(c) + 4);
+    const auto cell = assembly::tabulate_cell(space, c, rule.points, rule.points);
+    const auto& shapes = space.cell_shapes(c);
+    Eigen::MatrixXd local = Eigen::MatrixXd::Zero(shapes.size(), 2);  // column = component
+    for (std::size_t s = 0; s < shapes.size(); ++s)
+      for (int k = 0; k < 2; ++k)
+        if (shapes[s].dof >= 0) local(s, k) = u(space::component_dof(shapes[s].dof, k));
+    const Eigen::MatrixXd values = cell.values * local, dx = cell.grad_x * local, dy = cell.grad_y * local;
+    const auto [lambda, mu] = materials[c];
+    const auto n = rule.points.size();
+    for (std::size_t b = 0; b < n; ++b)
+      for (std::size_t a = 0; a < n; ++a) {
+        const auto q = a + n * b;
+        const double w = rule.weights[a] * rule.weights[b] * cell.jacobians(q);
+        const mesh::Point x(cell.points(q, 0), cell.points(q, 1));
+        Eigen::Matrix2d grad_h;
+        grad_h << dx(q, 0), dy(q, 0), dx(q, 1), dy(q, 1);
+        const Eigen::Matrix2d e = exact.gradient(x) - grad_h;
+        const Eigen::Matrix2d strain = 0.5 * (e + e.transpose());
+        l2_squared += w * (exact.value(x) - values.row(q).transpose()).squaredNorm();
+        energy_squared += w * (2.0 * mu * strain.squaredNorm() + lambda * std::pow(e.trace(), 2));
+      }
+  }
+  return {std::sqrt(l2_squared), std::sqrt(energy_squared)};
+}
+
+}  // namespace hpcontact::postprocess

@@ -1,0 +1,268 @@
+// Stage 25, linear elasticity on [S^p(T_h)]²: the element matrices (two paths, rigid motions in
+// the kernel), convergence against a manufactured displacement (rates p in the energy norm,
+// exponential in p, robust for ν → ½ at p ≥ 4), and the contact problems (KKT at the constraint
+// points; Tresca and Coulomb tend to frictionless as the friction vanishes).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+
+#include "assembly/condensed_factor.hpp"
+#include "assembly/elastic_load.hpp"
+#include "assembly/elastic_system.hpp"
+#include "contact/elastic_contact.hpp"
+#include "elastic_manufactured.hpp"
+#include "mesh/boundary_mesh.hpp"
+#include "mesh/rectangle_mesh.hpp"
+#include "mesh/refine.hpp"
+#include "operators/elastic_operators.hpp"
+#include "postprocess/elastic_errors.hpp"
+#include "space/vector_dofs.hpp"
+
+using namespace hpcontact;
+
+namespace {
+
+assembly::Material material(double poisson) {
+  return assembly::lame_parameters(1.0, poisson, assembly::PlaneModel::strain);
+}
+
+// The manufactured problem on the paper's square (traction data on Γ_N and Γ_C), its energy error.
+// Perturbed: the 2 × 2 mesh perturbed, then refined uniformly (so the levels are nested).
+double energy_error(int n, int p, double poisson, double perturbation = 0.0) {
+  auto m = mesh::make_paper_square_mesh(perturbation > 0 ? 2 : n);
+  if (perturbation > 0) {
+    mesh::perturb_interior_vertices(m, perturbation, 7);
+    for (int size = 2; size < n; size *= 2) m = mesh::refine_uniformly(m);
+  }
+  const space::H1Space space(m, p);
+  const std::vector<assembly::Material> materials(m.n_cells(), material(poisson));
+  const assembly::CondensedFactor factor(std::make_unique<assembly::ElasticCellSystem>(space, materials));
+  const auto load = assembly::assemble_elastic_load(
+      space, [&](const mesh::Point& x) { return hpcontact::testing::elastic_body_force(x, materials[0]); },
+      {mesh::BoundaryPart::neumann, mesh::BoundaryPart::contact},
+      [&](const mesh::Point& x, const mesh::Point& normal) {
+        return hpcontact::testing::elastic_traction(x, normal, materials[0]);
+      });
+  const Eigen::VectorXd u = factor.solve(load);
+  return postprocess::compute_elastic_errors(space, materials, u,
+                                             {hpcontact::testing::elastic_u, hpcontact::testing::elastic_gradient})
+      .energy;
+}
+
+}  // namespace
+
+TEST(Elasticity, ManufacturedDataAreConsistent) {
+  // Central differences of the gradient and of the stress against the closed forms.
+  const assembly::Material m = material(0.3);
+  const double h = 1e-5;
+  for (const mesh::Point& x : {mesh::Point(0.3, -0.4), mesh::Point(-0.7, 0.2)}) {
+    for (int j = 0; j < 2; ++j) {
+      const mesh::Point e = h * mesh::Point::Unit(j);
+      const Eigen::Vector2d du =
+          (hpcontact::testing::elastic_u(x + e) - hpcontact::testing::elastic_u(x - e)) / (2 * h);
+      EXPECT_NEAR((du - hpcontact::testing::elastic_gradient(x).col(j)).norm(), 0.0, 1e-8);
+    }
+    Eigen::Vector2d div_stress = Eigen::Vector2d::Zero();
+    for (int j = 0; j < 2; ++j) {
+      const mesh::Point e = h * mesh::Point::Unit(j);
+      div_stress += (hpcontact::testing::elastic_traction(x + e, mesh::Point::Unit(j), m) -
+                     hpcontact::testing::elastic_traction(x - e, mesh::Point::Unit(j), m)) /
+                    (2 * h);
+    }
+    EXPECT_NEAR((div_stress + hpcontact::testing::elastic_body_force(x, m)).norm(), 0.0, 1e-7);
+  }
+}
+
+TEST(Elasticity, KroneckerAndQuadratureElementMatricesAgreeAndRigidMotionsHaveNoEnergy) {
+  // A sheared parallelogram mesh: the Kronecker path applies; quadrature is the independent path.
+  auto m = mesh::make_rectangle_mesh({0.0, 2.0, 0.0, 1.0}, 2, 1);
+  std::vector<mesh::Point> moved = m.vertices();
+  for (auto& v : moved) v.x() += 0.4 * v.y();
+  m.move_vertices(moved, "sheared");
+  for (int p : {1, 3, 6}) {
+    const space::H1Space space(m, p);
+    assembly::ElementMatrices kronecker(space, true), quadrature(space, false);
+    const auto a = kronecker.directional(0), b = quadrature.directional(0);
+    const double scale = a.xx.norm();
+    EXPECT_LT((a.xx - b.xx).norm(), 1e-12 * scale) << "p = " << p;
+    EXPECT_LT((a.xy - b.xy).norm(), 1e-12 * scale) << "p = " << p;
+    EXPECT_LT((a.yx - b.yx).norm(), 1e-12 * scale) << "p = " << p;
+    EXPECT_LT((a.yy - b.yy).norm(), 1e-12 * scale) << "p = " << p;
+    // Vertex shapes reproduce linear fields: the rigid motions (1,0), (0,1), (−y, x) interpolate
+    // exactly with vertex coefficients alone, and must have zero energy.
+    const assembly::ElasticCellSystem system(space, {2, material(0.3)});
+    const Eigen::MatrixXd k = system.element_matrix(0);
+    const auto& shapes = space.cell_shapes(0);
+    for (int motion = 0; motion < 3; ++motion) {
+      Eigen::VectorXd coefficients = Eigen::VectorXd::Zero(k.rows());
+      for (std::size_t s = 0; s < shapes.size(); ++s) {
+        if (shapes[s].i >= 2 || shapes[s].j >= 2) continue;  // edge and interior modes vanish at vertices
+        const mesh::Point v =
+            m.vertex(m.cell(0)[shapes[s].i == 0 ? (shapes[s].j == 0 ? 0 : 3) : (shapes[s].j == 0 ? 1 : 2)]);
+        const Eigen::Vector2d value = motion == 0   ? Eigen::Vector2d(1, 0)
+                                      : motion == 1 ? Eigen::Vector2d(0, 1)
+                                                    : Eigen::Vector2d(-v.y(), v.x());
+        coefficients.segment<2>(2 * s) = shapes[s].sign * value;
+      }
+      EXPECT_LT((k * coefficients).norm(), 1e-12 * k.norm()) << "p = " << p << ", motion " << motion;
+    }
+    // And a stretch has energy.
+    Eigen::VectorXd stretch = Eigen::VectorXd::Zero(k.rows());
+    stretch(0) = 1.0;
+    EXPECT_GT(stretch.dot(k * stretch), 0.0);
+  }
+}
+
+TEST(Elasticity, EnergyErrorRateIsPUnderUniformRefinement) {
+  const int coarse[] = {0, 8, 4, 4, 2, 2, 2};
+  for (const double perturbation : {0.0, 0.2}) {
+    for (int p = 1; p <= 6; ++p) {
+      const int n = 2 * coarse[p];
+      const double coarse_error = energy_error(n, p, 0.3, perturbation);
+      const double fine_error = energy_error(2 * n, p, 0.3, perturbation);
+      const double rate = std::log2(coarse_error / fine_error);
+      EXPECT_NEAR(rate, p, 0.25) << "p = " << p << ", perturbation " << perturbation << ", errors " << coarse_error
+                                 << " → " << fine_error;
+    }
+  }
+}
+
+TEST(Elasticity, EnergyErrorDecaysExponentiallyInP) {
+  // log(error) falls at least linearly in p: each degree gains a factor > 3 on a 2 × 2 mesh.
+  for (const double perturbation : {0.0, 0.2}) {
+    double previous = energy_error(2, 2, 0.3, perturbation);
+    for (int p = 3; p <= 10; ++p) {
+      const double error = energy_error(2, p, 0.3, perturbation);
+      EXPECT_LT(error, previous / 3.0) << "p = " << p << ", perturbation " << perturbation;
+      previous = error;
+    }
+    EXPECT_LT(previous, 1e-8) << "perturbation " << perturbation;
+  }
+}
+
+TEST(Elasticity, RatesSurviveNearIncompressibilityAtHighDegree) {
+  // Locking shows as a pre-asymptotic range whose length grows with λ/μ; at p ≥ 4 the rate p holds
+  // for ν = 0.49 and 0.499, and the error is within a small factor of the compressible one.
+  for (const double poisson : {0.49, 0.499}) {
+    for (int p : {4, 5}) {
+      const double coarse_error = energy_error(2, p, poisson), fine_error = energy_error(4, p, poisson);
+      EXPECT_NEAR(std::log2(coarse_error / fine_error), p, 0.5) << "ν = " << poisson << ", p = " << p;
+      EXPECT_LT(fine_error, 5.0 * energy_error(4, p, 0.3)) << "ν = " << poisson << ", p = " << p;
+    }
+  }
+}
+
+namespace {
+
+// The paper's square hanging from Γ_D, pulled down by f = (0, −1) onto an obstacle below Γ_C
+// (the bottom edge, n = (0, −1)) at the gap g = 0.05 + 0.3 x²: contact in the middle, a gap
+// towards the corners.
+struct ElasticContactFixture {
+  mesh::QuadMesh mesh = mesh::make_paper_square_mesh(8);
+  std::unique_ptr<operators::ElasticOperators> operators;
+  std::unique_ptr<mesh::BoundaryMesh> boundary_mesh;
+
+  explicit ElasticContactFixture(int p = 3, int m = 8) {
+    operators = std::make_unique<operators::ElasticOperators>(
+        mesh, std::vector<int>(mesh.n_cells(), p), std::vector<assembly::Material>(mesh.n_cells(), material(0.3)));
+    std::vector<double> nodes;
+    for (int k = 0; k <= m; ++k) nodes.push_back(2.0 * k / m);
+    boundary_mesh = std::make_unique<mesh::BoundaryMesh>(nodes, "T_{C,H}");
+  }
+
+  contact::ElasticContactSolution solve(contact::ElasticContactProblem problem, int pc = 1, double friction = 0.0) {
+    contact::ElasticContactSetup setup;
+    setup.operators = operators.get();
+    setup.boundary_mesh = boundary_mesh.get();
+    setup.segment_degrees.assign(boundary_mesh->n_segments(), pc);
+    setup.problem = problem;
+    setup.body_force = [](const mesh::Point&) { return Eigen::Vector2d(0.0, -1.0); };
+    setup.gap = [](const mesh::Point& x) { return 0.1 + 2.0 * x.x() * x.x(); };
+    setup.threshold = [friction](const mesh::Point&) { return friction; };
+    setup.friction_coefficient = friction;
+    return contact::solve_elastic_contact(setup);
+  }
+};
+
+// max over the constraint rows of the violation of lo ≤ Cλ ≤ hi, of gap ≥ 0 where λ is at its
+// upper bound, and of complementarity, relative to the sizes involved.
+void expect_kkt(const contact::ElasticContactSolution& solution, double tolerance) {
+  ASSERT_EQ(solution.constraint_matrix.rows(), solution.lambda.size()) << "nodal constraints expected";
+  const Eigen::VectorXd c_lambda = solution.constraint_matrix * solution.lambda;
+  const double lambda_scale = solution.lambda.lpNorm<Eigen::Infinity>(), gap_scale = solution.gap_scale;
+  for (Eigen::Index j = 0; j < c_lambda.size(); ++j) {
+    EXPECT_GE(c_lambda(j), solution.lower(j) - tolerance * lambda_scale) << "row " << j;
+    EXPECT_LE(c_lambda(j), solution.upper(j) + tolerance * lambda_scale) << "row " << j;
+    // Stationarity with C = I: the gap (dual gradient) is ≥ 0 at the upper bound, ≤ 0 at the lower
+    // one, and 0 in between.
+    const double to_upper = solution.upper(j) - c_lambda(j), to_lower = c_lambda(j) - solution.lower(j);
+    const double gap = solution.gap(j);
+    if (gap > tolerance * gap_scale) {
+      EXPECT_LE(to_upper, tolerance * lambda_scale) << "row " << j << ", gap " << gap;
+    }
+    if (gap < -tolerance * gap_scale) {
+      EXPECT_LE(to_lower, tolerance * lambda_scale) << "row " << j << ", gap " << gap;
+    }
+  }
+}
+
+}  // namespace
+
+TEST(ElasticContact, FrictionlessSatisfiesKktWithAPartialContactSet) {
+  ElasticContactFixture fixture;
+  for (int pc : {0, 1}) {
+    const auto solution = fixture.solve(contact::ElasticContactProblem::frictionless, pc);
+    expect_kkt(solution, 1e-10);
+    const Eigen::Index n = solution.lambda.size();
+    int in_contact = 0;
+    for (Eigen::Index j = 0; j < n; ++j)
+      in_contact += solution.lambda(j) < -1e-10 * solution.lambda.lpNorm<Eigen::Infinity>();
+    EXPECT_GT(in_contact, 0) << "p_C = " << pc;
+    EXPECT_LT(in_contact, n) << "p_C = " << pc;
+    EXPECT_GE(solution.pressure.maxCoeff(), 0.0);
+    EXPECT_EQ(solution.shear.norm(), 0.0);
+  }
+}
+
+TEST(ElasticContact, TrescaAndCoulombSatisfyKktAndTendToFrictionless) {
+  ElasticContactFixture fixture;
+  const auto frictionless = fixture.solve(contact::ElasticContactProblem::frictionless);
+  const double scale = frictionless.u.norm();
+  double previous_tresca = 0.0, previous_coulomb = 0.0;
+  for (const double friction : {0.3, 3e-2, 3e-3}) {
+    const auto tresca = fixture.solve(contact::ElasticContactProblem::tresca, 1, 0.1 * friction);
+    const auto coulomb = fixture.solve(contact::ElasticContactProblem::coulomb, 1, friction);
+    expect_kkt(tresca, 1e-10);
+    expect_kkt(coulomb, 1e-9);
+    EXPECT_GT(coulomb.fixed_point_changes.size(), 1u) << "F = " << friction;
+    EXPECT_LE(coulomb.fixed_point_changes.back(), 1e-10);
+    const double tresca_distance = (tresca.u - frictionless.u).norm() / scale;
+    const double coulomb_distance = (coulomb.u - frictionless.u).norm() / scale;
+    EXPECT_GT(coulomb.shear.norm(), 0.0) << "friction acts";
+    // Each tenfold smaller friction brings u at least fourfold closer to frictionless (the distance
+    // is O(friction) once the stick zone has vanished).
+    if (previous_tresca > 0) {
+      EXPECT_LT(tresca_distance, previous_tresca / 4.0) << "s = " << 0.1 * friction;
+      EXPECT_LT(coulomb_distance, previous_coulomb / 4.0) << "F = " << friction;
+    }
+    previous_tresca = tresca_distance;
+    previous_coulomb = coulomb_distance;
+  }
+}
+
+TEST(ElasticContact, CoulombTractionStaysInsideTheFrictionCone) {
+  ElasticContactFixture fixture;
+  const double coefficient = 0.5;
+  const auto solution = fixture.solve(contact::ElasticContactProblem::coulomb, 1, coefficient);
+  // Nodal constraints: the normal part of λ is σ_nn, the tangential part −σ_nt at the same points.
+  const Eigen::Index n = solution.n_normal;
+  const double scale = solution.lambda.lpNorm<Eigen::Infinity>();
+  bool some_slip = false;
+  for (Eigen::Index j = 0; j < n; ++j) {
+    const double pressure = -solution.lambda(j), shear = std::abs(solution.lambda(n + j));
+    EXPECT_LE(shear, coefficient * std::max(pressure, 0.0) + 1e-10 * scale) << "point " << j;
+    some_slip = some_slip || (pressure > 1e-8 * scale && shear > coefficient * pressure - 1e-10 * scale);
+  }
+  EXPECT_TRUE(some_slip) << "somewhere the body slides";
+}
