@@ -1,6 +1,7 @@
 // Stage 18, scenes: the §7 geometry read from a scene equals the built-in one, a Gmsh scene with
 // physical groups, and one error per class of bad scene input.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -21,8 +22,11 @@ using namespace hpcontact;
 
 namespace {
 
+// One file per process: ctest runs the tests of this file in parallel processes, which must not
+// write each other's scenes.
 std::string write_scene(const std::string& name, const std::string& text) {
-  const auto path = std::filesystem::temp_directory_path() / ("hpcontact_scene_" + name + ".toml");
+  const auto path =
+      std::filesystem::temp_directory_path() / ("hpcontact_scene_" + name + "_" + std::to_string(::getpid()) + ".toml");
   std::ofstream(path) << text;
   return path.string();
 }

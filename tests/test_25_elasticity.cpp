@@ -5,18 +5,24 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <memory>
+#include <sstream>
 
 #include "assembly/condensed_factor.hpp"
 #include "assembly/elastic_load.hpp"
 #include "assembly/elastic_system.hpp"
+#include "cli_runner.hpp"
 #include "contact/elastic_contact.hpp"
+#include "driver/elastic_run.hpp"
 #include "elastic_manufactured.hpp"
 #include "mesh/boundary_mesh.hpp"
 #include "mesh/rectangle_mesh.hpp"
 #include "mesh/refine.hpp"
 #include "operators/elastic_operators.hpp"
 #include "postprocess/elastic_errors.hpp"
+#include "postprocess/hertz_comparison.hpp"
+#include "scene/scene_reader.hpp"
 #include "space/vector_dofs.hpp"
 
 using namespace hpcontact;
@@ -265,4 +271,135 @@ TEST(ElasticContact, CoulombTractionStaysInsideTheFrictionCone) {
     some_slip = some_slip || (pressure > 1e-8 * scale && shear > coefficient * pressure - 1e-10 * scale);
   }
   EXPECT_TRUE(some_slip) << "somewhere the body slides";
+}
+
+namespace {
+
+const std::string kHertzScene = std::string(HPCONTACT_SOURCE_DIR) + "/studies/elasticity/hertz.toml";
+
+postprocess::HertzComparison hertz_run(const std::vector<scene::SceneOverride>& overrides = {}) {
+  const auto scene = scene::read_scene(kHertzScene, overrides);
+  const auto d = driver::discretize_scene(scene);
+  const operators::ElasticOperators operators(d->mesh, d->cell_degrees, driver::scene_materials(scene, d->mesh));
+  const auto setup = driver::elastic_setup_of(scene, *d, contact::ElasticContactProblem::frictionless, operators);
+  const auto solution = contact::solve_elastic_contact(setup);
+  return postprocess::compare_with_hertz(setup, solution, 1.0, 1.0 / (1.0 - 0.3 * 0.3));
+}
+
+// The block (−L, L) × (−L, 0) with the cells of hertz.toml near the contact and the indentation
+// that keeps a ≈ 0.3, at p = 5, p_C = 4 (so that the discretization error is well below the block's).
+std::vector<scene::SceneOverride> block(int size, const std::string& indentation) {
+  const std::string origin = "test";
+  return {{"discretization.p", 5LL, origin},
+          {"discretization.pC", 4LL, origin},
+          {"domain.x_min", static_cast<long long>(-size), origin},
+          {"domain.x_max", static_cast<long long>(size), origin},
+          {"domain.y_min", static_cast<long long>(-size), origin},
+          {"domain.n_x", static_cast<long long>(8 * size), origin},
+          {"domain.n_y", static_cast<long long>(4 * size), origin},
+          {"boundary.dirichlet", "abs(y + " + std::to_string(size) + ") < 1e-9", origin},
+          {"data.g", "x^2 / 2 - " + indentation, origin}};
+}
+
+}  // namespace
+
+TEST(Hertz, ContactHalfWidthAndPressureProfileMatchHertzToOnePercent) {
+  const auto hertz = hertz_run();
+  EXPECT_NEAR(hertz.hertz_half_width, 0.3, 0.01) << "the scene is posed for a ≈ 0.3";
+  EXPECT_LT(std::abs(hertz.half_width - hertz.hertz_half_width), 0.01 * hertz.hertz_half_width)
+      << "a = " << hertz.half_width << ", Hertz " << hertz.hertz_half_width;
+  EXPECT_LT(hertz.profile_error, 0.01);
+}
+
+TEST(Hertz, TheRemainingDeviationIsTheFiniteBlocks) {
+  // Doubling the block (at the same resolution near the contact) must shrink the profile error:
+  // the discretization is not what limits it.
+  const auto small = hertz_run(block(4, "0.1484")), large = hertz_run(block(8, "0.1796"));
+  EXPECT_LT(large.profile_error, 0.5 * small.profile_error)
+      << "profile errors " << small.profile_error << " → " << large.profile_error;
+  EXPECT_LT(std::abs(large.half_width - large.hertz_half_width),
+            0.5 * std::abs(small.half_width - small.hertz_half_width));
+}
+
+TEST(Hertz, SolveWritesTheBoundaryColumnsWithPressureAndGapComplementary) {
+  const auto dir = hpcontact::testing::scratch("hertz_solve");
+  const auto result = hpcontact::testing::run("solve " + kHertzScene + " --out " + dir.string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  std::ifstream in(dir / "boundary_frictionless.csv");
+  std::string header;
+  std::getline(in, header);
+  EXPECT_EQ(header, "x,y,s_arc,u_n,u_t,gap,pressure,traction_t");
+  double max_pressure = 0.0, min_pressure = 0.0, min_gap = 0.0, max_product = 0.0;
+  int rows = 0;
+  for (std::string line; std::getline(in, line); ++rows) {
+    std::vector<double> v;
+    std::stringstream fields(line);
+    for (std::string field; std::getline(fields, field, ',');) v.push_back(std::stod(field));
+    ASSERT_EQ(v.size(), 8u) << line;
+    max_pressure = std::max(max_pressure, v[6]);
+    min_pressure = std::min(min_pressure, v[6]);
+    min_gap = std::min(min_gap, v[5]);
+    max_product = std::max(max_product, std::abs(v[5] * v[6]));
+    EXPECT_EQ(v[7], 0.0) << "frictionless: no tangential traction";
+  }
+  EXPECT_GT(rows, 100);
+  EXPECT_GT(max_pressure, 0.1);
+  EXPECT_GE(min_pressure, -1e-3 * max_pressure);
+  // The constraints hold at the constraint points; between them the gap may dip by the
+  // discretization error, far below the indentation d = 0.1484.
+  EXPECT_GT(min_gap, -1e-3 * 0.1484);
+  EXPECT_LT(max_product, 1e-4 * 0.1484 * max_pressure);
+  EXPECT_TRUE(std::filesystem::exists(dir / "solution_frictionless.vtu"));
+  std::ifstream summary(dir / "summary.json");
+  const std::string text((std::istreambuf_iterator<char>(summary)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("\"total_force\""), std::string::npos);
+}
+
+TEST(Hertz, StudyCommandWritesOneRowPerLevel) {
+  const auto dir = hpcontact::testing::scratch("hertz_study");
+  {
+    std::ofstream study(dir / "study.toml");
+    study << "[hertz]\nscene = \"" << kHertzScene << "\"\nradius = 1.0\n"
+          << "[[hertz.sequence]]\nname = \"p\"\nvary = { \"discretization.p\" = \"2..3\", "
+             "\"discretization.pC\" = \"1..2\" }\n";
+  }
+  const auto result = hpcontact::testing::run("hertz " + (dir / "study.toml").string() + " --out " + dir.string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  std::ifstream in(dir / "hertz.csv");
+  std::string header, line;
+  std::getline(in, header);
+  EXPECT_EQ(header, "sequence,level,label,p,pC,ndofs,nmult,P,a_hertz,a,a_error,profile_error,seconds");
+  int rows = 0;
+  while (std::getline(in, line)) ++rows;
+  EXPECT_EQ(rows, 2);
+  EXPECT_TRUE(std::filesystem::exists(dir / "hertz_profiles.csv"));
+}
+
+TEST(ElasticScenes, BadInputNamesTheKeyAndTheRule) {
+  std::ifstream in(kHertzScene);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  struct Case {
+    std::string from, to, expected;
+  };
+  const std::vector<Case> cases{
+      {"effects = [\"frictionless\"]", "effects = [\"frictionless\", \"signorini\"]", "one body per scene"},
+      {"nu = \"0.3\"", "nu = \"0.5\"", "material.nu"},
+      {"effects = [\"frictionless\"]", "effects = [\"coulomb\"]", "friction coefficient"},
+      {"effects = [\"frictionless\"]", "effects = [\"frictionless\", \"infsup\"]",
+       "not yet available with the elastic effects"},
+      {"effects = [\"frictionless\"]", "effects = [\"signorini\"]", "only with an elastic effect"},
+  };
+  for (const auto& c : cases) {
+    const auto dir = hpcontact::testing::scratch("elastic_bad");
+    std::string changed = text;
+    const auto at = changed.find(c.from);
+    ASSERT_NE(at, std::string::npos) << c.from;
+    changed.replace(at, c.from.size(), c.to);
+    std::ofstream(dir / "scene.toml") << changed;
+    const auto result =
+        hpcontact::testing::run("solve " + (dir / "scene.toml").string() + " --out " + (dir / "out").string());
+    EXPECT_NE(result.exit_code, 0) << c.to;
+    EXPECT_NE(result.output.find(c.expected), std::string::npos) << c.to << ": " << result.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out" / "summary.json")) << c.to;
+  }
 }

@@ -27,6 +27,9 @@ void add_work_precision_command(CLI::App& app, CommandAction& action);
 /// Adds `infsup`.
 void add_infsup_command(CLI::App& app, CommandAction& action);
 
+/// Adds `hertz`.
+void add_hertz_command(CLI::App& app, CommandAction& action);
+
 /// Adds `scene-keys`.
 void add_scene_keys_command(CLI::App& app, CommandAction& action);
 

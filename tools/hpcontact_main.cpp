@@ -54,6 +54,7 @@ int main(int argc, char** argv) {
   tools::add_solve_command(app, action);
   tools::add_benchmark_command(app, action);
   tools::add_work_precision_command(app, action);
+  tools::add_hertz_command(app, action);
   tools::add_scene_keys_command(app, action);
 
   // 3. Parse (CLI11 wants argv without the program name, in reverse order).

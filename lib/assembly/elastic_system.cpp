@@ -21,7 +21,7 @@ Material lame_parameters(double young, double poisson, PlaneModel model) {
   const double mu = young / (2.0 * (1.0 + poisson));
   const double lambda = model == PlaneModel::strain ? young * poisson / ((1.0 + poisson) * (1.0 - 2.0 * poisson))
                                                     : young * poisson / (1.0 - poisson * poisson);
-  return {lambda, mu};
+  return {lambda, mu, model == PlaneModel::strain ? lambda : 0.0};
 }
 
 ElasticCellSystem::ElasticCellSystem(const space::H1Space& space, std::vector<Material> materials)
@@ -45,7 +45,7 @@ void ElasticCellSystem::cell_dofs(int cell, std::vector<CellDof>& out) const {
 
 Eigen::MatrixXd ElasticCellSystem::element_matrix(int cell) const {
   const auto d = element_.directional(cell);
-  const auto [lambda, mu] = materials_[cell];
+  const double lambda = materials_[cell].lambda, mu = materials_[cell].mu;
   const Eigen::Index n = d.xx.rows();
   Eigen::MatrixXd a(2 * n, 2 * n);
   // Interleaved (s, c) ↔ 2s + c: each 2 × 2 block is one pair of shapes.

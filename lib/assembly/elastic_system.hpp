@@ -19,6 +19,8 @@ std::string to_string(PlaneModel model);
 struct Material {
   double lambda = 0.0;  ///< first Lamé parameter (of the plane model)
   double mu = 0.0;      ///< shear modulus
+  /// σ_zz = out_of_plane · (ε_xx + ε_yy): λ in plane strain, 0 in plane stress.
+  double out_of_plane = 0.0;
 };
 
 /// Lamé parameters of Young's modulus E > 0 and Poisson's ratio ν ∈ (−1, ½):

@@ -7,10 +7,12 @@
 #include <cmath>
 
 #include "contact/multiplier_distance.hpp"
+#include "core/error.hpp"
 #include "core/operator_log.hpp"
 #include "core/petsc_session.hpp"
 #include "core/rank_agreement.hpp"
 #include "core/timer.hpp"
+#include "driver/elastic_run.hpp"
 #include "driver/free_boundary_fit.hpp"
 #include "infsup/infsup_analysis.hpp"
 #include "io/atomic_file.hpp"
@@ -179,6 +181,11 @@ std::vector<std::string> refinement_columns() {
 }
 
 nlohmann::json run_scene(const scene::Scene& given_scene, const SceneRunOptions& options) {
+  if (given_scene.is_elastic()) {
+    if (mpi_rank_and_size().second > 1)
+      throw InputError("the elastic effects run on one process (not under mpirun with more than one rank)");
+    return run_elastic_scene(given_scene, options);
+  }
   Stopwatch clock;
   auto say = [&](const std::string& line) {
     if (options.progress) options.progress(line);

@@ -1,30 +1,34 @@
-// write_vtu.
+// write_vtu_fields and the scalar and elastic fields written through it.
 #include "io/vtu_writer.hpp"
 
 #include <fmt/format.h>
 
-#include "assembly/cell_values.hpp"
+#include <cmath>
+
 #include "io/atomic_file.hpp"
+#include "space/vector_dofs.hpp"
 
 namespace hpcontact::io {
 
-void write_vtu(const std::filesystem::path& path, const space::H1Space& space, const Eigen::VectorXd& u,
-               int subdivisions) {
-  std::string points, values, connectivity, offsets, types;
+void write_vtu_fields(const std::filesystem::path& path, const space::H1Space& space,
+                      const std::vector<VtuField>& fields, int subdivisions) {
+  std::string points, connectivity, offsets, types;
+  std::vector<std::string> values(fields.size());
   int n_points = 0, n_cells = 0;
   for (int c = 0; c < space.mesh().n_cells(); ++c) {
     const int k = subdivisions > 0 ? subdivisions : std::max(space.cell_degree(c), 1);
     std::vector<double> t(k + 1);
     for (int i = 0; i <= k; ++i) t[i] = -1.0 + 2.0 * i / k;
     const auto cell = assembly::tabulate_cell(space, c, t, t);
-    const auto& shapes = space.cell_shapes(c);
-    Eigen::VectorXd local(shapes.size());
-    for (std::size_t s = 0; s < shapes.size(); ++s) local(s) = shapes[s].dof >= 0 ? u(shapes[s].dof) : 0.0;
-    const Eigen::VectorXd u_points = cell.values * local;
     const int first = n_points;
-    for (int q = 0; q < cell.points.rows(); ++q) {
+    for (int q = 0; q < cell.points.rows(); ++q)
       points += fmt::format("{:.17g} {:.17g} 0\n", cell.points(q, 0), cell.points(q, 1));
-      values += fmt::format("{:.17g}\n", u_points(q));
+    for (std::size_t f = 0; f < fields.size(); ++f) {
+      const Eigen::MatrixXd field = fields[f].evaluate(c, cell);
+      for (int q = 0; q < field.rows(); ++q) {
+        for (int j = 0; j < field.cols(); ++j) values[f] += fmt::format("{}{:.17g}", j ? " " : "", field(q, j));
+        values[f] += "\n";
+      }
     }
     n_points += static_cast<int>(cell.points.rows());
     for (int j = 0; j < k; ++j)
@@ -36,19 +40,71 @@ void write_vtu(const std::filesystem::path& path, const space::H1Space& space, c
       }
   }
   AtomicFile file(path);
-  file.stream() << "<?xml version=\"1.0\"?>\n"
-                << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-                << "<UnstructuredGrid>\n"
-                << fmt::format("<Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", n_points, n_cells)
-                << "<PointData Scalars=\"u\">\n<DataArray type=\"Float64\" Name=\"u\" format=\"ascii\">\n"
-                << values << "</DataArray>\n</PointData>\n"
-                << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n"
-                << points << "</DataArray>\n</Points>\n<Cells>\n"
-                << "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n"
-                << connectivity << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n"
-                << offsets << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n"
-                << types << "</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+  auto& out = file.stream();
+  out << "<?xml version=\"1.0\"?>\n"
+      << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+      << "<UnstructuredGrid>\n"
+      << fmt::format("<Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", n_points, n_cells) << "<PointData>\n";
+  for (std::size_t f = 0; f < fields.size(); ++f)
+    out << fmt::format("<DataArray type=\"Float64\" Name=\"{}\" NumberOfComponents=\"{}\" format=\"ascii\">\n",
+                       fields[f].name, fields[f].components)
+        << values[f] << "</DataArray>\n";
+  out << "</PointData>\n"
+      << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n"
+      << points << "</DataArray>\n</Points>\n<Cells>\n"
+      << "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n"
+      << connectivity << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n"
+      << offsets << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n"
+      << types << "</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
   file.commit();
+}
+
+namespace {
+
+// The coefficients of u on one cell's shapes, shape (n_shapes, components); 0 where eliminated.
+Eigen::MatrixXd cell_coefficients(const space::H1Space& space, int cell, const Eigen::VectorXd& u, int components) {
+  const auto& shapes = space.cell_shapes(cell);
+  Eigen::MatrixXd local = Eigen::MatrixXd::Zero(shapes.size(), components);
+  for (std::size_t s = 0; s < shapes.size(); ++s)
+    for (int k = 0; k < components; ++k)
+      if (shapes[s].dof >= 0) local(s, k) = u(components == 1 ? shapes[s].dof : space::component_dof(shapes[s].dof, k));
+  return local;
+}
+
+}  // namespace
+
+void write_vtu(const std::filesystem::path& path, const space::H1Space& space, const Eigen::VectorXd& u,
+               int subdivisions) {
+  write_vtu_fields(path, space,
+                   {{"u", 1,
+                     [&](int cell, const assembly::CellValues& values) {
+                       return Eigen::MatrixXd(values.values * cell_coefficients(space, cell, u, 1));
+                     }}},
+                   subdivisions);
+}
+
+void write_elastic_vtu(const std::filesystem::path& path, const space::H1Space& space,
+                       const std::vector<assembly::Material>& materials, const Eigen::VectorXd& u) {
+  auto displacement = [&](int cell, const assembly::CellValues& values) {
+    Eigen::MatrixXd out = Eigen::MatrixXd::Zero(values.values.rows(), 3);
+    out.leftCols(2) = values.values * cell_coefficients(space, cell, u, 2);
+    return out;
+  };
+  auto von_mises = [&](int cell, const assembly::CellValues& values) {
+    const Eigen::MatrixXd local = cell_coefficients(space, cell, u, 2);
+    const Eigen::MatrixXd dx = values.grad_x * local, dy = values.grad_y * local;  // columns: components
+    const auto& m = materials[cell];
+    Eigen::MatrixXd out(values.values.rows(), 1);
+    for (Eigen::Index q = 0; q < out.rows(); ++q) {
+      const double exx = dx(q, 0), eyy = dy(q, 1), exy = 0.5 * (dy(q, 0) + dx(q, 1));
+      const double sxx = m.lambda * (exx + eyy) + 2 * m.mu * exx, syy = m.lambda * (exx + eyy) + 2 * m.mu * eyy;
+      const double szz = m.out_of_plane * (exx + eyy), sxy = 2 * m.mu * exy;
+      out(q, 0) = std::sqrt(0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) + (szz - sxx) * (szz - sxx)) +
+                            3 * sxy * sxy);
+    }
+    return out;
+  };
+  write_vtu_fields(path, space, {{"displacement", 3, displacement}, {"von_mises", 1, von_mises}});
 }
 
 }  // namespace hpcontact::io

@@ -21,7 +21,7 @@ ElasticErrors compute_elastic_errors(const space::H1Space& space, const std::vec
       for (int k = 0; k < 2; ++k)
         if (shapes[s].dof >= 0) local(s, k) = u(space::component_dof(shapes[s].dof, k));
     const Eigen::MatrixXd values = cell.values * local, dx = cell.grad_x * local, dy = cell.grad_y * local;
-    const auto [lambda, mu] = materials[c];
+    const double lambda = materials[c].lambda, mu = materials[c].mu;
     const auto n = rule.points.size();
     for (std::size_t b = 0; b < n; ++b)
       for (std::size_t a = 0; a < n; ++a) {

@@ -2,6 +2,7 @@
 #include "scene/scene.hpp"
 
 #include <algorithm>
+#include <array>
 
 namespace hpcontact::scene {
 
@@ -17,6 +18,10 @@ std::string to_string(Effect effect) {
       return "infsup";
     case Effect::convergence:
       return "convergence";
+    case Effect::frictionless:
+    case Effect::tresca:
+    case Effect::coulomb:
+      return contact::to_string(*elastic_problem_of(effect));
   }
   return "?";
 }
@@ -36,8 +41,9 @@ std::string to_string(Output output) {
 }
 
 const std::vector<Effect>& all_effects() {
-  static const std::vector<Effect> effects{Effect::signorini, Effect::friction, Effect::friction_s, Effect::infsup,
-                                           Effect::convergence};
+  static const std::vector<Effect> effects{Effect::signorini, Effect::friction,    Effect::friction_s,
+                                           Effect::infsup,    Effect::convergence, Effect::frictionless,
+                                           Effect::tresca,    Effect::coulomb};
   return effects;
 }
 
@@ -65,6 +71,29 @@ std::optional<contact::ContactProblem> contact_problem_of(Effect effect) {
   return std::nullopt;
 }
 
+Effect effect_of(contact::ElasticContactProblem problem) {
+  switch (problem) {
+    case contact::ElasticContactProblem::frictionless:
+      return Effect::frictionless;
+    case contact::ElasticContactProblem::tresca:
+      return Effect::tresca;
+    case contact::ElasticContactProblem::coulomb:
+      return Effect::coulomb;
+  }
+  return Effect::frictionless;
+}
+
+namespace {
+constexpr std::array kElasticProblems{contact::ElasticContactProblem::frictionless,
+                                      contact::ElasticContactProblem::tresca, contact::ElasticContactProblem::coulomb};
+}
+
+std::optional<contact::ElasticContactProblem> elastic_problem_of(Effect effect) {
+  for (auto problem : kElasticProblems)
+    if (effect_of(problem) == effect) return problem;
+  return std::nullopt;
+}
+
 std::optional<Effect> effect_named(const std::string& name) {
   for (Effect effect : all_effects())
     if (to_string(effect) == name) return effect;
@@ -88,6 +117,13 @@ std::vector<contact::ContactProblem> Scene::contact_effects() const {
   std::vector<contact::ContactProblem> problems;
   for (auto problem :
        {contact::ContactProblem::signorini, contact::ContactProblem::friction, contact::ContactProblem::friction_s})
+    if (has_effect(effect_of(problem))) problems.push_back(problem);
+  return problems;
+}
+
+std::vector<contact::ElasticContactProblem> Scene::elastic_effects() const {
+  std::vector<contact::ElasticContactProblem> problems;
+  for (auto problem : kElasticProblems)
     if (has_effect(effect_of(problem))) problems.push_back(problem);
   return problems;
 }

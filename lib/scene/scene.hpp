@@ -12,7 +12,9 @@
 #include <string>
 #include <vector>
 
+#include "assembly/elastic_system.hpp"
 #include "contact/contact_problem.hpp"
+#include "contact/elastic_contact.hpp"
 #include "infsup/infsup_operators.hpp"
 #include "mesh/quad_mesh.hpp"
 #include "mesh/rectangle_mesh.hpp"
@@ -20,7 +22,9 @@
 
 namespace hpcontact::scene {
 
-enum class Effect { signorini, friction, friction_s, infsup, convergence };
+/// The scalar model's contact problems (9), (13), (15), the inf-sup constant, convergence under
+/// refinement, and the contact problems of an elastic body (frictionless, Tresca, Coulomb).
+enum class Effect { signorini, friction, friction_s, infsup, convergence, frictionless, tresca, coulomb };
 enum class Output { summary, boundary, vtu, mode };
 
 /// The names used in scene files and outputs ("friction_s", "vtu").
@@ -65,6 +69,13 @@ struct Scene {
   std::string friction_bound;  ///< s (may be empty)
   std::string load = "-1";     ///< f
   std::string obstacle;        ///< g (may be empty)
+  // [material] (elastic effects): Young's modulus and Poisson's ratio, expressions in x, y
+  // evaluated at cell centres (so cell groups may differ), and the plane model.
+  std::string young = "1", poisson = "0.3";
+  assembly::PlaneModel plane_model = assembly::PlaneModel::strain;
+  // [data] of the elastic effects: body force, traction on Γ_N, Coulomb's coefficient.
+  std::string body_force_x = "0", body_force_y = "0", traction_x = "0", traction_y = "0";
+  double friction_coefficient = 0.0;
   // [infsup]
   infsup::GramNorm norm = infsup::GramNorm::interpolation;
   infsup::PairingProblem problem = infsup::PairingProblem::signorini;
@@ -89,6 +100,10 @@ struct Scene {
   bool has_effect(Effect effect) const;
   /// The contact problems among the effects, in the order signorini, friction, friction_s.
   std::vector<contact::ContactProblem> contact_effects() const;
+  /// The elastic contact problems among the effects, in the order frictionless, tresca, coulomb.
+  std::vector<contact::ElasticContactProblem> elastic_effects() const;
+  /// Whether the scene poses an elastic body (an elastic effect) rather than the scalar model.
+  bool is_elastic() const { return !elastic_effects().empty(); }
   bool wants_output(Output output) const;
 };
 
@@ -96,6 +111,9 @@ struct Scene {
 Effect effect_of(contact::ContactProblem problem);
 /// The contact problem of an effect: (9), (13), (15); empty for infsup and convergence.
 std::optional<contact::ContactProblem> contact_problem_of(Effect effect);
+/// The effect of an elastic contact problem, and back (empty for the other effects).
+Effect effect_of(contact::ElasticContactProblem problem);
+std::optional<contact::ElasticContactProblem> elastic_problem_of(Effect effect);
 /// The effect with this name ("friction_s"); empty if none has it.
 std::optional<Effect> effect_named(const std::string& name);
 

@@ -255,7 +255,22 @@ void add_discretization_and_data_keys(std::vector<SceneKey>& keys) {
   add(expression_key("data", "f", "-1", &Scene::load, "load f"));
   add(expression_key("data", "g", "", &Scene::obstacle, "obstacle g of the Signorini problem (9)"));
   add(expression_key("data", "s", "", &Scene::friction_bound,
-                     "friction bound s ≥ 0 of (13), (15) and of the pairing (22)"));
+                     "friction bound s ≥ 0 of (13), (15) and of the pairing (22); Tresca's threshold"));
+  add(expression_key("data", "f_x", "0", &Scene::body_force_x, "elastic effects: body force, x component"));
+  add(expression_key("data", "f_y", "0", &Scene::body_force_y, "elastic effects: body force, y component"));
+  add(expression_key("data", "t_x", "0", &Scene::traction_x, "elastic effects: traction on Γ_N, x component"));
+  add(expression_key("data", "t_y", "0", &Scene::traction_y, "elastic effects: traction on Γ_N, y component"));
+  add(number_key("data", "friction_coefficient", 0.0, 100.0, 0.0, &Scene::friction_coefficient,
+                 "Coulomb's friction coefficient F (effect coulomb): |σ_nt| ≤ F |σ_nn|"));
+  // [material]
+  add(expression_key("material", "E", "1", &Scene::young,
+                     "Young's modulus E > 0, evaluated at cell centres (cell groups may differ)"));
+  add(expression_key("material", "nu", "0.3", &Scene::poisson,
+                     "Poisson's ratio ν in (-1, 0.5), evaluated at cell centres"));
+  add(choice_key<assembly::PlaneModel>(
+      "material", "model",
+      {{"plane_strain", assembly::PlaneModel::strain}, {"plane_stress", assembly::PlaneModel::stress}},
+      assembly::PlaneModel::strain, &Scene::plane_model, "2-D model of the elastic body"));
 }
 
 void add_run_keys(std::vector<SceneKey>& keys) {
@@ -309,7 +324,10 @@ const std::vector<SceneSection>& scene_sections() {
       {"boundary", true, "the boundary parts Γ_C and Γ_D"},
       {"contact_mesh", true, "T_{C,H}: exactly one of m, ratio, breakpoints"},
       {"discretization", true, "the degrees p and p_C"},
-      {"data", false, "f, g, s"},
+      {"data", false,
+       "the data: f (scalar model); f_x, f_y, t_x, t_y, friction_coefficient (elastic effects); g (the obstacle, for "
+       "elasticity the gap to it along the outward normal: u·n ≤ g); s"},
+      {"material", false, "the elastic body (effects frictionless, tresca, coulomb)"},
       {"infsup", false, "the inf-sup constant α (effect infsup, `hpcontact infsup`)"},
       {"solve", false, "the contact solve"},
       {"run", false, "effects and outputs of `hpcontact solve`"},

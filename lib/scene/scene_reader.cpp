@@ -127,12 +127,58 @@ void check_scene_size(const Scene& scene) {
 
 }  // namespace
 
+namespace {
+
+// Keys that apply only to one kind of body: given for the other, they would silently do nothing.
+const std::vector<std::string>& elastic_only_keys() {
+  static const std::vector<std::string> keys{
+      "material.E", "material.nu", "material.model", "data.f_x",
+      "data.f_y",   "data.t_x",    "data.t_y",       "data.friction_coefficient"};
+  return keys;
+}
+
+void check_elastic_effects(const Scene& scene) {
+  const std::string where = scene.where("run.effects");
+  if (!scene.contact_effects().empty())
+    throw_bad_input(where, "run.effects", to_string(effect_of(scene.contact_effects().front())),
+                    "one body per scene: the scalar model's problems (signorini, friction, friction_s) or the "
+                    "elastic ones (frictionless, tresca, coulomb), not both");
+  for (Effect effect : {Effect::infsup, Effect::convergence})
+    if (scene.has_effect(effect))
+      throw_bad_input(where, "run.effects", to_string(effect),
+                      "not yet available with the elastic effects (frictionless, tresca, coulomb)");
+  if (scene.fit_free_boundary)
+    throw_bad_input(scene.where("solve.fit_free_boundary"), "solve.fit_free_boundary", "true",
+                    "false with the elastic effects (the fit grades towards the scalar model's free boundary)");
+  if (scene.given.contains("data.f"))
+    throw_bad_input(scene.where("data.f"), "data.f", scene.load,
+                    "absent in an elastic scene: its body force is data.f_x, data.f_y");
+  if (scene.obstacle.empty())
+    throw_bad_input(scene.where("data.g"), "data.g", "(missing)",
+                    "the elastic contact problems need the gap g to the obstacle along the normal");
+  if (scene.has_effect(Effect::tresca) && scene.friction_bound.empty())
+    throw_bad_input(scene.where("data.s"), "data.s", "(missing)", "the effect 'tresca' needs the threshold s");
+  if (scene.has_effect(Effect::coulomb) && !scene.given.contains("data.friction_coefficient"))
+    throw_bad_input(scene.where("data.friction_coefficient"), "data.friction_coefficient", "(missing)",
+                    "the effect 'coulomb' needs the friction coefficient F");
+}
+
+}  // namespace
+
 void check_effects(const Scene& scene) {
   const std::string where = scene.where("run.effects");
   if (scene.effects.empty()) {
     std::vector<std::string> names;
     for (Effect effect : all_effects()) names.push_back(to_string(effect));
     throw_bad_input(where, "run.effects", "[]", fmt::format("at least one of {}", fmt::join(names, ", ")));
+  }
+  if (scene.is_elastic()) {
+    check_elastic_effects(scene);
+  } else {
+    for (const auto& key : elastic_only_keys())
+      if (scene.given.contains(key))
+        throw_bad_input(scene.where(key), key, "(given)",
+                        "only with an elastic effect (frictionless, tresca, coulomb) among run.effects");
   }
   if (scene.has_effect(Effect::signorini) && scene.obstacle.empty())
     throw_bad_input(scene.where("data.g"), "data.g", "(missing)",
@@ -141,7 +187,7 @@ void check_effects(const Scene& scene) {
     if (scene.has_effect(problem) && scene.friction_bound.empty())
       throw_bad_input(scene.where("data.s"), "data.s", "(missing)",
                       fmt::format("the effect '{}' needs the friction bound s", to_string(problem)));
-  const bool contact = !scene.contact_effects().empty();
+  const bool contact = !scene.contact_effects().empty() || scene.is_elastic();
   if (scene.fit_free_boundary && !contact)
     throw_bad_input(where, "solve.fit_free_boundary", "true",
                     "needs a contact problem among the effects (signorini, friction, friction_s)");
@@ -155,7 +201,8 @@ void check_effects(const Scene& scene) {
   for (Output output : {Output::boundary, Output::vtu})
     if (scene.wants_output(output) && !contact)
       throw_bad_input(outputs_where, "run.outputs", to_string(output),
-                      "needs a contact problem among the effects (signorini, friction, friction_s)");
+                      "needs a contact problem among the effects (signorini, friction, friction_s, frictionless, "
+                      "tresca, coulomb)");
 }
 
 Scene parse_scene(const std::string& text, const std::string& path, const std::vector<SceneOverride>& overrides) {

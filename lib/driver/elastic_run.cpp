@@ -1,0 +1,169 @@
+// The elastic effects of a scene and their outputs.
+#include "driver/elastic_run.hpp"
+
+#include <fmt/format.h>
+
+#include "core/error.hpp"
+#include "core/expression.hpp"
+#include "core/operator_log.hpp"
+#include "core/timer.hpp"
+#include "io/atomic_file.hpp"
+#include "io/output_folder.hpp"
+#include "io/vtu_writer.hpp"
+#include "mesh/cell_map.hpp"
+#include "postprocess/elastic_boundary_samples.hpp"
+
+namespace hpcontact::driver {
+
+std::vector<assembly::Material> scene_materials(const scene::Scene& scene, const mesh::QuadMesh& mesh) {
+  const Expression young(scene.young, scene.where("material.E") + ": key 'material.E'");
+  const Expression poisson(scene.poisson, scene.where("material.nu") + ": key 'material.nu'");
+  std::vector<assembly::Material> materials(mesh.n_cells());
+  for (int c = 0; c < mesh.n_cells(); ++c) {
+    const mesh::Point x = mesh::CellMap(mesh, c).map(0.0, 0.0);
+    const double e = young(x.x(), x.y()), nu = poisson(x.x(), x.y());
+    const auto at = fmt::format(" at the cell centre (x, y) = ({:g}, {:g})", x.x(), x.y());
+    if (!(e > 0.0) || !std::isfinite(e))
+      throw_bad_input(scene.where("material.E"), "material.E", fmt::format("\"{}\" = {}{}", scene.young, e, at),
+                      "a finite number > 0");
+    if (!(nu > -1.0 && nu < 0.5))
+      throw_bad_input(scene.where("material.nu"), "material.nu", fmt::format("\"{}\" = {}{}", scene.poisson, nu, at),
+                      "a number in (-1, 0.5)");
+    materials[c] = assembly::lame_parameters(e, nu, scene.plane_model);
+  }
+  return materials;
+}
+
+namespace {
+
+std::function<double(const mesh::Point&)> scalar_function(const scene::Scene& scene, const std::string& key,
+                                                          const std::string& text) {
+  if (text.empty()) return {};
+  const Expression expression(text, scene.where(key) + ": key '" + key + "'");
+  return [expression](const mesh::Point& x) { return expression(x.x(), x.y()); };
+}
+
+}  // namespace
+
+contact::ElasticContactSetup elastic_setup_of(const scene::Scene& scene, const SceneDiscretization& d,
+                                              contact::ElasticContactProblem problem,
+                                              const operators::ElasticOperators& operators) {
+  contact::ElasticContactSetup setup;
+  setup.operators = &operators;
+  setup.boundary_mesh = d.boundary_mesh.get();
+  setup.segment_degrees = d.segment_degrees;
+  setup.problem = problem;
+  setup.constraint_points = scene.constraint_points;
+  const auto fx = scalar_function(scene, "data.f_x", scene.body_force_x);
+  const auto fy = scalar_function(scene, "data.f_y", scene.body_force_y);
+  setup.body_force = [fx, fy](const mesh::Point& x) { return Eigen::Vector2d(fx(x), fy(x)); };
+  const auto tx = scalar_function(scene, "data.t_x", scene.traction_x);
+  const auto ty = scalar_function(scene, "data.t_y", scene.traction_y);
+  setup.traction = [tx, ty](const mesh::Point& x, const mesh::Point&) { return Eigen::Vector2d(tx(x), ty(x)); };
+  setup.gap = scalar_function(scene, "data.g", scene.obstacle);
+  if (problem == contact::ElasticContactProblem::tresca) {
+    const auto bound = scalar_function(scene, "data.s", scene.friction_bound);
+    setup.threshold = [bound, file = scene.where("data.s"), text = scene.friction_bound](const mesh::Point& x) {
+      const double value = bound(x);
+      if (value < 0)
+        throw_bad_input(file, "data.s", fmt::format("\"{}\" = {} at (x, y) = ({}, {})", text, value, x.x(), x.y()),
+                        "Tresca's threshold must be >= 0 on Γ_C");
+      return value;
+    };
+  }
+  setup.friction_coefficient = scene.friction_coefficient;
+  return setup;
+}
+
+namespace {
+
+struct ElasticEffect {
+  std::string name;
+  contact::ElasticContactSetup setup;
+  contact::ElasticContactSolution solution;
+  postprocess::ElasticBoundarySamples samples;
+  double seconds = 0.0;
+};
+
+nlohmann::json effect_summary(const ElasticEffect& effect) {
+  const auto& solution = effect.solution;
+  nlohmann::json j{{"energy", solution.energy},
+                   {"nmult", solution.lambda.size()},
+                   {"contact_set_length", effect.samples.contact_set_length},
+                   {"total_force", effect.samples.total_force},
+                   {"n_trace", solution.n_trace},
+                   {"solver",
+                    {{"method", solution.qp.method},
+                     {"converged", solution.qp.converged},
+                     {"kkt_residual", solution.qp.kkt_residual},
+                     {"iterations", solution.qp.iterations}}},
+                   {"seconds",
+                    {{"assembly", solution.seconds.assembly},
+                     {"factorization", solution.seconds.factorization},
+                     {"condensation", solution.seconds.condensation},
+                     {"contact_qp", solution.seconds.qp},
+                     {"recovery", solution.seconds.recovery},
+                     {"total", effect.seconds}}}};
+  if (!solution.fixed_point_changes.empty())
+    j["fixed_point"] = {{"iterations", solution.fixed_point_changes.size()}, {"changes", solution.fixed_point_changes}};
+  return j;
+}
+
+void write_outputs(const scene::Scene& scene, const operators::ElasticOperators& operators,
+                   const std::vector<ElasticEffect>& effects, const nlohmann::json& summary,
+                   const std::filesystem::path& where) {
+  io::OutputFolder folder(where);
+  const auto& out = folder.path();
+  for (const auto& effect : effects) {
+    if (scene.wants_output(scene::Output::boundary))
+      effect.samples.table.write(out / ("boundary_" + effect.name + ".csv"));
+    if (scene.wants_output(scene::Output::vtu))
+      io::write_elastic_vtu(out / ("solution_" + effect.name + ".vtu"), operators.space(), operators.materials(),
+                            effect.solution.u);
+  }
+  if (scene.wants_output(scene::Output::summary))
+    io::write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
+  folder.commit();
+}
+
+}  // namespace
+
+nlohmann::json run_elastic_scene(const scene::Scene& scene, const SceneRunOptions& options) {
+  Stopwatch clock;
+  // 1. Meshes, degrees and materials; the operators are built on first use and shared.
+  const auto d = discretize_scene(scene);
+  OperatorLog log;
+  const operators::ElasticOperators operators(d->mesh, d->cell_degrees, scene_materials(scene, d->mesh), &log);
+  // 2. The contact problems.
+  std::vector<ElasticEffect> effects;
+  for (const auto problem : scene.elastic_effects()) {
+    const std::string name = contact::to_string(problem);
+    if (options.progress) options.progress("solving " + name);
+    Stopwatch effect_clock;
+    auto setup = elastic_setup_of(scene, *d, problem, operators);
+    auto solution = contact::solve_elastic_contact(setup);
+    const double seconds = effect_clock.seconds();
+    auto samples = postprocess::sample_elastic_boundary(setup, solution);
+    effects.push_back({name, std::move(setup), std::move(solution), std::move(samples), seconds});
+  }
+  // 3. The summary, then every file at once.
+  nlohmann::json summary{
+      {"scene", scene.file},
+      {"p", scene.p.label()},
+      {"pC", scene.pc.label()},
+      {"material", {{"model", assembly::to_string(scene.plane_model)}, {"E", scene.young}, {"nu", scene.poisson}}},
+      {"edges_on_contact", d->contact->edges().size()},
+      {"m", d->boundary_mesh->n_segments()},
+      {"ndofs", operators.n_dofs()},
+      {"nmult", d->multipliers->n_dofs()}};
+  for (const auto effect : scene.effects) summary["effects"].push_back(scene::to_string(effect));
+  for (const auto& record : log.records())
+    summary["operators"].push_back(
+        {{"name", record.name}, {"rows", record.rows}, {"cols", record.cols}, {"seconds", record.seconds}});
+  for (const auto& effect : effects) summary[effect.name] = effect_summary(effect);
+  summary["seconds_total"] = clock.seconds();
+  write_outputs(scene, operators, effects, summary, options.out);
+  return summary;
+}
+
+}  // namespace hpcontact::driver

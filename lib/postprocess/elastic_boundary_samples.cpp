@@ -1,0 +1,52 @@
+// sample_elastic_boundary.
+#include "postprocess/elastic_boundary_samples.hpp"
+
+#include "assembly/cell_values.hpp"
+#include "assembly/coupling.hpp"
+#include "postprocess/fe_function.hpp"
+#include "space/multiplier_space.hpp"
+#include "space/vector_dofs.hpp"
+
+namespace hpcontact::postprocess {
+
+ElasticBoundarySamples sample_elastic_boundary(const contact::ElasticContactSetup& setup,
+                                               const contact::ElasticContactSolution& solution, int per_interval) {
+  const auto& ops = *setup.operators;
+  const auto& contact = ops.contact();
+  const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
+  const std::array<Eigen::VectorXd, 2> components{space::component_of(solution.u, 0),
+                                                  space::component_of(solution.u, 1)};
+  ElasticBoundarySamples out{io::CsvTable({"x", "y", "s_arc", "u_n", "u_t", "gap", "pressure", "traction_t"}), 0.0,
+                             0.0};
+  for (int k = 0; k < multipliers.n_segments(); ++k)  // ∫ P_0 = 2 on [-1, 1]: c_0 times the length
+    out.total_force += solution.pressure(multipliers.first_dof(k)) *
+                       (setup.boundary_mesh->segment_end(k) - setup.boundary_mesh->segment_begin(k));
+  const double pressure_scale = solution.pressure.cwiseAbs().maxCoeff();
+  for (const auto& interval : assembly::common_intervals(contact, *setup.boundary_mesh)) {
+    const auto& trace = contact.edges()[interval.trace_edge];
+    const int k = interval.segment, first = multipliers.first_dof(k), n_modes = multipliers.segment_degree(k) + 1;
+    const mesh::Point normal =
+        assembly::trace_direction(contact, interval.trace_edge, assembly::TraceDirection::normal);
+    const mesh::Point tangent =
+        assembly::trace_direction(contact, interval.trace_edge, assembly::TraceDirection::tangent);
+    int in_contact = 0;
+    for (int j = 0; j < per_interval; ++j) {
+      const double s = interval.s_begin + (interval.s_end - interval.s_begin) * j / (per_interval - 1);
+      const auto [xi, eta] = assembly::edge_reference_points(trace.local_edge, {trace.local_parameter(s)});
+      const CellPoint where{trace.cell, xi[0], eta[0]};
+      const Eigen::Vector2d u(evaluate(ops.space(), components[0], where).value,
+                              evaluate(ops.space(), components[1], where).value);
+      const mesh::Point x = contact.point_at(s);
+      const Eigen::VectorXd basis = multipliers.basis_values(k, multipliers.local_coordinate(k, s));
+      const double pressure = basis.dot(solution.pressure.segment(first, n_modes));
+      const double shear = basis.dot(solution.shear.segment(first, n_modes));
+      out.table.add_row(
+          {x.x(), x.y(), s, u.dot(normal), u.dot(tangent), setup.gap(x) - u.dot(normal), pressure, shear});
+      if (pressure > 1e-10 * pressure_scale) ++in_contact;
+    }
+    out.contact_set_length += (interval.s_end - interval.s_begin) * in_contact / per_interval;
+  }
+  return out;
+}
+
+}  // namespace hpcontact::postprocess

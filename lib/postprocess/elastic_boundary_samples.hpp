@@ -1,0 +1,24 @@
+// Boundary samples of an elastic contact solution on Γ_C (boundary_<effect>.csv): the normal and
+// tangential displacement, the gap to the obstacle, the contact pressure and the tangential
+// traction.
+#pragma once
+
+#include "contact/elastic_contact.hpp"
+#include "io/csv_writer.hpp"
+
+namespace hpcontact::postprocess {
+
+struct ElasticBoundarySamples {
+  /// x,y,s_arc,u_n,u_t,gap,pressure,traction_t with gap = g − u·n ≥ 0, pressure = −σ_nn ≥ 0 in
+  /// contact (the normal multiplier), traction_t = σ_nt (along increasing s).
+  io::CsvTable table;
+  double contact_set_length = 0.0;  ///< where pressure > 1e-10 max pressure, from the samples
+  double total_force = 0.0;         ///< P = ∫_{Γ_C} pressure ds (exact, from the multiplier)
+};
+
+/// Samples every interval of the common refinement of T_h|Γ_C and T_{C,H} at `per_interval`
+/// equidistant points including both ends.
+ElasticBoundarySamples sample_elastic_boundary(const contact::ElasticContactSetup& setup,
+                                               const contact::ElasticContactSolution& solution, int per_interval = 20);
+
+}  // namespace hpcontact::postprocess
