@@ -131,4 +131,8 @@ build/bin/hpcontact work-precision studies/work_precision/study.toml --out resul
 cp results/work_precision/work_precision.png studies/work_precision/work_precision.png
 cp results/work_precision/cheapest.csv studies/work_precision/cheapest.csv
 cp results/work_precision/reference.csv studies/work_precision/reference.csv
+echo "== Hertz validation of the elastic contact solver: studies/elasticity/hertz_study.toml -> results/hertz" >&2
+build/bin/hpcontact hertz studies/elasticity/hertz_study.toml --out results/hertz
+"$python" plots/plot_hertz.py results/hertz
+cp results/hertz/hertz.png studies/elasticity/hertz.png
 echo "quickstart: done; CSV and PNG in results/" >&2

@@ -69,6 +69,18 @@ int run_solve(const SolveOptions& o) {
                result["solver"]["method"].get<std::string>(), result["solver"]["kkt_residual"].get<double>(),
                result["contact_set_length"].get<double>());
   }
+  for (const auto problem : scene.elastic_effects()) {
+    const std::string name = contact::to_string(problem);
+    const auto& result = summary[name];
+    fmt::print(
+        "{}: energy = {:.17g}, total force P = {:.10g}, {} {} steps, KKT residual {:.2e}, contact set length {:.4f}",
+        name, result["energy"].get<double>(), result["total_force"].get<double>(),
+        result["solver"]["iterations"].get<int>(), result["solver"]["method"].get<std::string>(),
+        result["solver"]["kkt_residual"].get<double>(), result["contact_set_length"].get<double>());
+    if (result.contains("fixed_point"))
+      fmt::print(", {} fixed-point iterations", result["fixed_point"]["iterations"].get<int>());
+    fmt::print("\n");
+  }
   if (summary.contains("infsup"))
     fmt::print("infsup: alpha = {:.10g} ({})\n", summary["infsup"]["alpha"].get<double>(),
                summary["infsup"]["lambda_unique"].get<bool>() ? "lambda unique" : "singular: lambda not unique");
