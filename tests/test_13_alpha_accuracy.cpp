@@ -77,6 +77,28 @@ TEST(AlphaAccuracy, KernelGramIsTheLimitOfReferenceSpaces) {
   }
 }
 
+// A long Γ_C (length 8 and 20, as under the Hertz block): the image sums are tiny there (K₀(16)
+// ≈ 5e-8), so their Chebyshev fits must be resolved against the kernel's scale, not their own
+// (they were not: "not resolved by 8192 Chebyshev terms"). ‖1‖² = L exactly, and G is still the
+// limit of the reference spaces.
+TEST(AlphaAccuracy, KernelGramOfALongContactBoundary) {
+  for (const double length : {8.0, 20.0}) {
+    auto mesh = mesh::make_rectangle_mesh({-0.5 * length, 0.5 * length, -1.0, 0.0}, 16, 2);
+    mesh::assign_boundary_part(mesh, mesh::BoundaryPart::contact, [](const mesh::Point& x) { return x.y() > -1e-9; });
+    const mesh::ContactBoundary contact(mesh);
+    const auto boundary = mesh::BoundaryMesh::uniform(length, 16);
+    const space::MultiplierSpace multipliers(boundary, 2);
+    const Eigen::MatrixXd kernel = norms::interpolation_norm_gram_kernel(multipliers, {2});
+    Eigen::VectorXd one = Eigen::VectorXd::Zero(multipliers.n_dofs());
+    for (int k = 0; k < 16; ++k) one(multipliers.first_dof(k)) = 1.0;
+    EXPECT_NEAR(one.dot(kernel * one), length, 1e-12 * length);
+    const auto [low, high] =
+        pencil_range(kernel, norms::interpolation_norm_gram_on_reference(contact, multipliers, {4, 0}));
+    EXPECT_GT(low, 1.0 - 1e-8) << "length " << length;
+    EXPECT_LT(high, 1.0 + 1e-2) << "length " << length;
+  }
+}
+
 // The interpolation and extension norms differ as norms (for μ = 1 on the §7 square: ‖1‖² = 2
 // against 1.842), but where α is decided by multipliers that oscillate on the scale h, both behave
 // like sqrt(1 + k²): converged, they give the same α to 1e-4 (measured: to about 1e-7), for

@@ -22,8 +22,20 @@ constexpr double kNegligibleDistance = 42.0;
 
 double bessel_k0(double x) { return x >= kNegligibleDistance ? 0.0 : gsl_sf_bessel_K0(x); }
 
+// The periodic images are summed with K₀ cut off only where it underflows (K₀(690) ≈ 1e-301,
+// GSL's K₀ underflows near 705): a cut-off at kNegligibleDistance would leave a step of 1e-19 in
+// the image sums, which on a long Γ_C (L = 8: sums of size 1e-8) their Chebyshev fits cannot
+// resolve. The sums are then smooth, and negligible where all of them lie below kNegligibleValue.
+constexpr double kImageDistance = 690.0;
+constexpr double kNegligibleValue = 1e-19;  // ≈ K₀(kNegligibleDistance)
+
+double bessel_k0_image(double x) { return x >= kImageDistance ? 0.0 : gsl_sf_bessel_K0(x); }
+
 // A Chebyshev interpolant of an analytic function on [lo, hi], degree doubled until the trailing
-// coefficients are at round-off of the largest.
+// coefficients are at round-off of the largest. The values carry GSL's relative error (a few ε),
+// so the trailing coefficients settle near 2e-15 of the largest and no lower (measured: 2.5e-15
+// on Γ_C of length 20 at every n up to 8192): 1e-14 of the image sums, themselves at most
+// K₀(L) against the O(1) singular part of the kernel, is far below the kernel's round-off.
 class ChebyshevFit {
  public:
   ChebyshevFit(const std::function<double(double)>& f, double lo, double hi) : lo_(lo), hi_(hi) {
@@ -39,14 +51,17 @@ class ChebyshevFit {
       double largest = 0.0, tail = 0.0;
       for (int j = 0; j < n; ++j) largest = std::max(largest, std::abs(coefficients_[j]));
       for (int j = n - 4; j < n; ++j) tail = std::max(tail, std::abs(coefficients_[j]));
-      if (tail <= 2e-15 * largest || largest == 0.0) break;  // the sums carry round-off of ~n ε
+      if (tail <= 1e-14 * largest || largest == 0.0) break;
       HPC_VERIFY(n < 8192, "interpolation norm: the image sum of the kernel is not resolved by 8192 Chebyshev terms");
     }
     while (!coefficients_.empty() && std::abs(coefficients_.back()) <= 1e-18 * std::abs(coefficients_.front()))
       coefficients_.pop_back();
   }
-  bool zero() const {
-    return std::all_of(coefficients_.begin(), coefficients_.end(), [](double c) { return c == 0.0; });
+  /// A bound of |f| on [lo, hi]: Σ |c_j|.
+  double max_abs() const {
+    double sum = 0.0;
+    for (double c : coefficients_) sum += std::abs(c);
+    return sum;
   }
   double operator()(double x) const {  // Clenshaw
     const double t = (2.0 * x - lo_ - hi_) / (hi_ - lo_);
@@ -78,7 +93,7 @@ struct Kernel {
   }
   /// Whether the kernel vanishes to round-off on [lo, hi].
   bool negligible_on(double lo, double hi) const {
-    if (!images.zero()) return false;
+    if (images.max_abs() > kNegligibleValue) return false;
     return std::all_of(singular_points.begin(), singular_points.end(), [&](double z) {
       return std::max({lo - z, z - hi, 0.0}) >= kNegligibleDistance;
     });
@@ -88,8 +103,8 @@ struct Kernel {
 Kernel difference_kernel(double length) {
   auto images = [length](double x) {
     double sum = 0.0;
-    for (int j = 1; (2 * j - 1) * length < kNegligibleDistance; ++j)
-      sum += bessel_k0(x + 2 * j * length) + bessel_k0(2 * j * length - x);
+    for (int j = 1; (2 * j - 1) * length < kImageDistance; ++j)
+      sum += bessel_k0_image(x + 2 * j * length) + bessel_k0_image(2 * j * length - x);
     return sum;
   };
   return {false, length, ChebyshevFit(images, -length, length), {0.0}};
@@ -98,8 +113,8 @@ Kernel difference_kernel(double length) {
 Kernel sum_kernel(double length) {
   auto images = [length](double y) {
     double sum = 0.0;
-    for (int j = 1; 2 * j * length - 2 * length < kNegligibleDistance; ++j)
-      sum += bessel_k0(y + 2 * j * length) + (j >= 2 ? bessel_k0(2 * j * length - y) : 0.0);
+    for (int j = 1; 2 * j * length - 2 * length < kImageDistance; ++j)
+      sum += bessel_k0_image(y + 2 * j * length) + (j >= 2 ? bessel_k0_image(2 * j * length - y) : 0.0);
     return sum;
   };
   return {true, length, ChebyshevFit(images, 0.0, 2.0 * length), {0.0, 2.0 * length}};
