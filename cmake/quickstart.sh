@@ -135,4 +135,9 @@ echo "== Hertz validation of the elastic contact solver: studies/elasticity/hert
 build/bin/hpcontact hertz studies/elasticity/hertz_study.toml --out results/hertz
 "$python" plots/plot_hertz.py results/hertz
 cp results/hertz/hertz.png studies/elasticity/hertz.png
+echo "== elastic stability sweep: studies/elasticity/stability.toml -> results/elastic_stability" >&2
+build/bin/hpcontact sweep studies/elasticity/stability.toml --out results/elastic_stability --restart
+"$python" plots/plot_stability.py results/elastic_stability
+cp results/elastic_stability/stable_map.png studies/elasticity/stable_map.png
+cp results/elastic_stability/stable_map_friction_interp.png studies/elasticity/stable_map_friction.png
 echo "quickstart: done; CSV and PNG in results/" >&2

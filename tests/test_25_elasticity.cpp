@@ -16,13 +16,16 @@
 #include "contact/elastic_contact.hpp"
 #include "driver/elastic_run.hpp"
 #include "elastic_manufactured.hpp"
+#include "infsup/infsup_analysis.hpp"
 #include "mesh/boundary_mesh.hpp"
+#include "mesh/contact_boundary.hpp"
 #include "mesh/rectangle_mesh.hpp"
 #include "mesh/refine.hpp"
 #include "operators/elastic_operators.hpp"
 #include "postprocess/elastic_errors.hpp"
 #include "postprocess/hertz_comparison.hpp"
 #include "scene/scene_reader.hpp"
+#include "slepc_test_environment.hpp"
 #include "space/vector_dofs.hpp"
 
 using namespace hpcontact;
@@ -378,28 +381,148 @@ TEST(Hertz, StudyCommandWritesOneRowPerLevel) {
 TEST(ElasticScenes, BadInputNamesTheKeyAndTheRule) {
   std::ifstream in(kHertzScene);
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string effects = "effects = [\"frictionless\"]", material = "[material]\nE = \"1\"\nnu = \"0.3\"\n";
   struct Case {
-    std::string from, to, expected;
+    std::vector<std::pair<std::string, std::string>> changes;
+    std::string expected;
   };
   const std::vector<Case> cases{
-      {"effects = [\"frictionless\"]", "effects = [\"frictionless\", \"signorini\"]", "one body per scene"},
-      {"nu = \"0.3\"", "nu = \"0.5\"", "material.nu"},
-      {"effects = [\"frictionless\"]", "effects = [\"coulomb\"]", "friction coefficient"},
-      {"effects = [\"frictionless\"]", "effects = [\"frictionless\", \"infsup\"]",
-       "not yet available with the elastic effects"},
-      {"effects = [\"frictionless\"]", "effects = [\"signorini\"]", "only with an elastic effect"},
+      {{{effects, "effects = [\"frictionless\", \"signorini\"]"}}, "one body per scene"},
+      {{{effects, "effects = [\"signorini\"]"}}, "one body per scene"},
+      {{{"nu = \"0.3\"", "nu = \"0.5\""}}, "material.nu"},
+      {{{effects, "effects = [\"coulomb\"]"}}, "friction coefficient"},
+      {{{effects, "effects = [\"frictionless\", \"convergence\"]"}}, "not yet available with the elastic effects"},
+      // A scalar scene with an elastic key: it would do nothing.
+      {{{effects, "effects = [\"signorini\"]"},
+        {material, ""},
+        {"model = \"plane_strain\"\n", ""},
+        {"[data]\n", "[data]\nf_x = \"1\"\n"}},
+       "only with an elastic effect"},
   };
   for (const auto& c : cases) {
     const auto dir = hpcontact::testing::scratch("elastic_bad");
     std::string changed = text;
-    const auto at = changed.find(c.from);
-    ASSERT_NE(at, std::string::npos) << c.from;
-    changed.replace(at, c.from.size(), c.to);
+    for (const auto& [from, to] : c.changes) {
+      const auto at = changed.find(from);
+      ASSERT_NE(at, std::string::npos) << from;
+      changed.replace(at, from.size(), to);
+    }
     std::ofstream(dir / "scene.toml") << changed;
     const auto result =
         hpcontact::testing::run("solve " + (dir / "scene.toml").string() + " --out " + (dir / "out").string());
-    EXPECT_NE(result.exit_code, 0) << c.to;
-    EXPECT_NE(result.output.find(c.expected), std::string::npos) << c.to << ": " << result.output;
-    EXPECT_FALSE(std::filesystem::exists(dir / "out" / "summary.json")) << c.to;
+    EXPECT_NE(result.exit_code, 0) << c.expected;
+    EXPECT_NE(result.output.find(c.expected), std::string::npos) << c.expected << ": " << result.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out" / "summary.json")) << c.expected;
   }
+}
+
+namespace {
+
+// α of the elastic pairing on the §7 square (Γ_C the bottom edge, straight) or, with `corner`, on
+// Γ_C around the lower right corner; p = 3, p_C = 1 (stable), n = 8, h/H = 1.
+infsup::InfSupResult elastic_alpha(infsup::PairingProblem problem, operators::PrimalNorm norm, double poisson,
+                                   bool corner = false, infsup::EigenBackend backend = infsup::EigenBackend::slepc) {
+  auto mesh = mesh::make_rectangle_mesh({-1.0, 1.0, -1.0, 1.0}, 8, 8);
+  mesh::assign_boundary_part(mesh, mesh::BoundaryPart::dirichlet,
+                             [](const mesh::Point& x) { return x.y() > 1 - 1e-9; });
+  mesh::assign_boundary_part(mesh, mesh::BoundaryPart::contact, [corner](const mesh::Point& x) {
+    return x.y() < -1 + 1e-9 || (corner && x.x() > 1 - 1e-9 && x.y() < 0);
+  });
+  const mesh::ContactBoundary contact(mesh);
+  const auto boundary = mesh::BoundaryMesh(contact.breakpoints(), "T_{C,H}");
+  const std::vector<int> degrees(mesh.n_cells(), 3);
+  const operators::ElasticOperators elastic(
+      mesh, degrees,
+      std::vector<assembly::Material>(mesh.n_cells(),
+                                      assembly::lame_parameters(1.0, poisson, assembly::PlaneModel::strain)));
+  infsup::InfSupSetup setup;
+  setup.mesh = &mesh;
+  setup.cell_degrees = degrees;
+  setup.boundary_mesh = &boundary;
+  setup.segment_degrees.assign(boundary.n_segments(), 1);
+  setup.problem = problem;
+  setup.elastic = &elastic;
+  setup.primal_norm = norm;
+  return infsup::analyse_infsup(setup, backend);
+}
+
+}  // namespace
+
+TEST(ElasticInfSup, H1NormOnAStraightContactEdgeGivesTheScalarAlpha) {
+  // On a straight Γ_C the normal trace is one displacement component and the tangential one the
+  // other; in the componentwise H¹ norm both pairings are then the scalar pairing (11): an
+  // independent path (directional couplings, the vector Gram factor) to the same α.
+  auto mesh = mesh::make_rectangle_mesh({-1.0, 1.0, -1.0, 1.0}, 8, 8);
+  mesh::assign_boundary_part(mesh, mesh::BoundaryPart::dirichlet,
+                             [](const mesh::Point& x) { return x.y() > 1 - 1e-9; });
+  mesh::assign_boundary_part(mesh, mesh::BoundaryPart::contact, [](const mesh::Point& x) { return x.y() < -1 + 1e-9; });
+  const auto boundary = mesh::BoundaryMesh::uniform(2.0, 8);
+  infsup::InfSupSetup scalar;
+  scalar.mesh = &mesh;
+  scalar.cell_degrees.assign(mesh.n_cells(), 3);
+  scalar.boundary_mesh = &boundary;
+  scalar.segment_degrees.assign(8, 1);
+  const double scalar_alpha = infsup::analyse_infsup(scalar, infsup::EigenBackend::slepc).alpha;
+  for (const auto problem : {infsup::PairingProblem::signorini, infsup::PairingProblem::friction}) {
+    const auto elastic = elastic_alpha(problem, operators::PrimalNorm::h1, 0.3);
+    EXPECT_NEAR(elastic.alpha, scalar_alpha, 1e-10 * scalar_alpha) << infsup::to_string(problem);
+    EXPECT_EQ(elastic.n_multiplier_dofs, (problem == infsup::PairingProblem::friction ? 2 : 1) * 8 * 2);
+  }
+  EXPECT_GT(scalar_alpha, 0.5);
+}
+
+TEST(ElasticInfSup, EnergyNormAlphaFallsAsNuTendsToOneHalfAndFrictionIsBelowSignorini) {
+  double previous = INFINITY;
+  for (const double poisson : {0.3, 0.49, 0.499}) {
+    const double signorini =
+        elastic_alpha(infsup::PairingProblem::signorini, operators::PrimalNorm::energy, poisson).alpha;
+    const double friction =
+        elastic_alpha(infsup::PairingProblem::friction, operators::PrimalNorm::energy, poisson).alpha;
+    EXPECT_LT(signorini, previous) << "ν = " << poisson;
+    // Multipliers (μ_n, 0) are among the friction pairing's: its infimum is over more.
+    EXPECT_LE(friction, signorini * (1 + 1e-10)) << "ν = " << poisson;
+    previous = signorini;
+  }
+  EXPECT_GT(previous, 0.1) << "still clearly positive at ν = 0.499";
+}
+
+TEST(ElasticInfSup, AroundACornerSlepcAgreesWithTheDensePathAndThePairingsDiffer) {
+  const auto slepc = elastic_alpha(infsup::PairingProblem::friction, operators::PrimalNorm::energy, 0.3, true);
+  const auto dense = elastic_alpha(infsup::PairingProblem::friction, operators::PrimalNorm::energy, 0.3, true,
+                                   infsup::EigenBackend::dense);
+  EXPECT_NEAR(slepc.alpha, dense.alpha, 1e-8 * dense.alpha);
+  const auto normal = elastic_alpha(infsup::PairingProblem::signorini, operators::PrimalNorm::h1, 0.3, true);
+  const auto both = elastic_alpha(infsup::PairingProblem::friction, operators::PrimalNorm::h1, 0.3, true);
+  // Where the normal turns, the tangential multiplier on one edge meets the normal one on the
+  // other in the same displacement component: the pairings are no longer the scalar one twice.
+  EXPECT_LT(both.alpha, normal.alpha * (1 - 1e-3));
+}
+
+TEST(ElasticInfSup, SolveAndSweepRunTheElasticPairing) {
+  const auto dir = hpcontact::testing::scratch("elastic_infsup");
+  const std::string square = std::string(HPCONTACT_SOURCE_DIR) + "/studies/elasticity/square.toml";
+  {
+    std::ifstream in(square);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    text.replace(text.find("primal_norm"), 0, "problem = \"friction\"\n");
+    std::ofstream(dir / "square.toml") << text;
+  }
+  const auto solved =
+      hpcontact::testing::run("solve " + (dir / "square.toml").string() + " --out " + (dir / "out").string());
+  ASSERT_EQ(solved.exit_code, 0) << solved.output;
+  std::ifstream mode(dir / "out" / "mode.csv");
+  std::string header;
+  std::getline(mode, header);
+  EXPECT_EQ(header, "x,mu,y,s,mu_t");
+  std::ofstream(dir / "sweep.toml") << "[sweep]\nscene = \"square.toml\"\n"
+                                    << "levels = { \"domain.n_x\" = [4, 8], \"domain.n_y\" = [4, 8] }\n"
+                                    << "p = \"1..2\"\npC = \"0..1\"\nratio = [1]\nproblem = [\"signorini\", "
+                                       "\"friction\"]\nfit_levels = 2\n";
+  const auto swept =
+      hpcontact::testing::run("sweep " + (dir / "sweep.toml").string() + " --out " + (dir / "sweep").string());
+  ASSERT_EQ(swept.exit_code, 0) << swept.output;
+  std::ifstream alpha(dir / "sweep" / "alpha.csv");
+  int rows = -1;
+  for (std::string line; std::getline(alpha, line);) ++rows;
+  EXPECT_EQ(rows, 2 * 2 * 3);  // problems × levels × (p, p_C < p)
 }

@@ -10,10 +10,12 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/petsc_session.hpp"
+#include "driver/elastic_run.hpp"
 #include "driver/scene_discretization.hpp"
 #include "infsup/infsup_analysis.hpp"
 #include "io/atomic_file.hpp"
 #include "linalg/distribution.hpp"
+#include "operators/elastic_operators.hpp"
 #include "operators/primal_operators.hpp"
 #include "postprocess/mode_samples.hpp"
 #include "scene/scene_mesh.hpp"
@@ -62,10 +64,20 @@ int run_infsup(const InfSupOptions& o) {
   // 2. Solve the eigenproblem. Under mpirun A_G is factorized over the ranks, and rank 0 reports
   // and writes.
   const int rank = mpi_rank_and_size().first, ranks = mpi_rank_and_size().second;
-  const operators::PrimalOperators primal(d->mesh, d->cell_degrees, nullptr,
-                                          linalg::distribution_over(ranks, distributed_solver));
-  const auto setup =
-      driver::infsup_setup_of(scene, d->mesh, d->cell_degrees, *d->boundary_mesh, d->segment_degrees, primal);
+  // An elastic scene pairs the normal (and tangential) multipliers with [S^p(T_h)]² (serial).
+  std::unique_ptr<operators::PrimalOperators> primal;
+  std::unique_ptr<operators::ElasticOperators> elastic;
+  infsup::InfSupSetup setup;
+  if (scene.is_elastic()) {
+    if (ranks > 1) throw InputError("the elastic inf-sup analysis runs on one process (not under mpirun)");
+    elastic = std::make_unique<operators::ElasticOperators>(d->mesh, d->cell_degrees,
+                                                            driver::scene_materials(scene, d->mesh));
+    setup = driver::infsup_setup_of(scene, d->mesh, d->cell_degrees, *d->boundary_mesh, d->segment_degrees, *elastic);
+  } else {
+    primal = std::make_unique<operators::PrimalOperators>(d->mesh, d->cell_degrees, nullptr,
+                                                          linalg::distribution_over(ranks, distributed_solver));
+    setup = driver::infsup_setup_of(scene, d->mesh, d->cell_degrees, *d->boundary_mesh, d->segment_degrees, *primal);
+  }
   const auto result = infsup::analyse_infsup(setup, backend);
   if (rank != 0) return 0;
 

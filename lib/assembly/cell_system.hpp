@@ -52,6 +52,7 @@ std::optional<CongruenceKey> parallelogram_key(const space::H1Space& space, int 
 class ScalarCellSystem final : public CellSystem {
  public:
   ScalarCellSystem(const space::H1Space& space, double stiffness_weight, double mass_weight);
+  const space::H1Space& space() const { return *space_; }
   const mesh::QuadMesh& mesh() const override { return space_->mesh(); }
   int n_dofs() const override { return space_->n_dofs(); }
   int n_skeleton_dofs() const override { return space_->n_skeleton_dofs(); }

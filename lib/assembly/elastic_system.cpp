@@ -24,8 +24,8 @@ Material lame_parameters(double young, double poisson, PlaneModel model) {
   return {lambda, mu, model == PlaneModel::strain ? lambda : 0.0};
 }
 
-ElasticCellSystem::ElasticCellSystem(const space::H1Space& space, std::vector<Material> materials)
-    : space_(&space), materials_(std::move(materials)), element_(space) {
+ElasticCellSystem::ElasticCellSystem(const space::H1Space& space, std::vector<Material> materials, double mass_weight)
+    : space_(&space), materials_(std::move(materials)), mass_weight_(mass_weight), element_(space) {
   if (static_cast<int>(materials_.size()) != space.mesh().n_cells())
     throw InputError(fmt::format("{} materials given for {} cells", materials_.size(), space.mesh().n_cells()));
 }
@@ -33,8 +33,11 @@ ElasticCellSystem::ElasticCellSystem(const space::H1Space& space, std::vector<Ma
 int ElasticCellSystem::n_dofs() const { return space::kComponents * space_->n_dofs(); }
 int ElasticCellSystem::n_skeleton_dofs() const { return space::kComponents * space_->n_skeleton_dofs(); }
 
-void ElasticCellSystem::cell_dofs(int cell, std::vector<CellDof>& out) const {
-  const auto& shapes = space_->cell_shapes(cell);
+namespace {
+
+// Both components of each scalar shape, side by side.
+void interleaved_dofs(const space::H1Space& space, int cell, std::vector<CellDof>& out) {
+  const auto& shapes = space.cell_shapes(cell);
   out.resize(space::kComponents * shapes.size());
   for (std::size_t s = 0; s < shapes.size(); ++s) {
     const bool interior = shapes[s].i >= 2 && shapes[s].j >= 2;
@@ -42,6 +45,19 @@ void ElasticCellSystem::cell_dofs(int cell, std::vector<CellDof>& out) const {
       out[space::kComponents * s + c] = {space::component_dof(shapes[s].dof, c), shapes[s].sign, interior};
   }
 }
+
+// The scalar matrix on each component: a[(s,c),(t,c)] = scalar[s,t].
+Eigen::MatrixXd componentwise(const Eigen::MatrixXd& scalar) {
+  const Eigen::Index n = scalar.rows();
+  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+  a(Eigen::seqN(0, n, 2), Eigen::seqN(0, n, 2)) = scalar;
+  a(Eigen::seqN(1, n, 2), Eigen::seqN(1, n, 2)) = scalar;
+  return a;
+}
+
+}  // namespace
+
+void ElasticCellSystem::cell_dofs(int cell, std::vector<CellDof>& out) const { interleaved_dofs(*space_, cell, out); }
 
 Eigen::MatrixXd ElasticCellSystem::element_matrix(int cell) const {
   const auto d = element_.directional(cell);
@@ -53,16 +69,37 @@ Eigen::MatrixXd ElasticCellSystem::element_matrix(int cell) const {
   a(Eigen::seqN(0, n, 2), Eigen::seqN(1, n, 2)) = lambda * d.xy + mu * d.yx;
   a(Eigen::seqN(1, n, 2), Eigen::seqN(0, n, 2)) = lambda * d.yx + mu * d.xy;
   a(Eigen::seqN(1, n, 2), Eigen::seqN(1, n, 2)) = (lambda + 2.0 * mu) * d.yy + mu * d.xx;
+  if (mass_weight_ != 0.0) {
+    Eigen::MatrixXd mass;
+    element_.compute(cell, nullptr, &mass);
+    a += mass_weight_ * componentwise(mass);
+  }
   return a;
 }
 
 std::optional<CongruenceKey> ElasticCellSystem::congruence_key(int cell) const {
   auto key = parallelogram_key(*space_, cell, true);
   if (key) {  // equal geometry and degrees give equal matrices only with equal coefficients
+    key->push_back(std::bit_cast<long long>(mass_weight_));
     key->push_back(std::bit_cast<long long>(materials_[cell].lambda));
     key->push_back(std::bit_cast<long long>(materials_[cell].mu));
   }
   return key;
+}
+
+ComponentwiseCellSystem::ComponentwiseCellSystem(const space::H1Space& space, double stiffness_weight,
+                                                 double mass_weight)
+    : scalar_(space, stiffness_weight, mass_weight) {}
+
+int ComponentwiseCellSystem::n_dofs() const { return space::kComponents * scalar_.n_dofs(); }
+int ComponentwiseCellSystem::n_skeleton_dofs() const { return space::kComponents * scalar_.n_skeleton_dofs(); }
+
+void ComponentwiseCellSystem::cell_dofs(int cell, std::vector<CellDof>& out) const {
+  interleaved_dofs(scalar_.space(), cell, out);
+}
+
+Eigen::MatrixXd ComponentwiseCellSystem::element_matrix(int cell) const {
+  return componentwise(scalar_.element_matrix(cell));
 }
 
 }  // namespace hpcontact::assembly

@@ -33,10 +33,13 @@ Material lame_parameters(double young, double poisson, PlaneModel model);
 /// space::component_dof. Element matrix (signed shapes), with D_ab = (∂_a φ_s, ∂_b φ_t):
 ///   a[(s,x),(t,x)] = (λ + 2μ) D_xx + μ D_yy      a[(s,x),(t,y)] = λ D_xy + μ D_yx
 ///   a[(s,y),(t,x)] = λ D_yx + μ D_xy             a[(s,y),(t,y)] = (λ + 2μ) D_yy + μ D_xx
+///
+/// With `mass_weight` b > 0 the system is a(u, v) + b (u, v) (the energy norm of the inf-sup
+/// analysis, definite without Γ_D).
 class ElasticCellSystem final : public CellSystem {
  public:
   /// `materials`: one per cell. @throws InputError on a size mismatch.
-  ElasticCellSystem(const space::H1Space& space, std::vector<Material> materials);
+  ElasticCellSystem(const space::H1Space& space, std::vector<Material> materials, double mass_weight = 0.0);
   const mesh::QuadMesh& mesh() const override { return space_->mesh(); }
   int n_dofs() const override;
   int n_skeleton_dofs() const override;
@@ -47,7 +50,24 @@ class ElasticCellSystem final : public CellSystem {
  private:
   const space::H1Space* space_;
   std::vector<Material> materials_;
+  double mass_weight_;
   mutable ElementMatrices element_;
+};
+
+/// a K + b M on each component of [S^p(T_h)]² (the vector H¹ norm for a = b = 1), numbered as
+/// ElasticCellSystem.
+class ComponentwiseCellSystem final : public CellSystem {
+ public:
+  ComponentwiseCellSystem(const space::H1Space& space, double stiffness_weight, double mass_weight);
+  const mesh::QuadMesh& mesh() const override { return scalar_.mesh(); }
+  int n_dofs() const override;
+  int n_skeleton_dofs() const override;
+  void cell_dofs(int cell, std::vector<CellDof>& out) const override;
+  Eigen::MatrixXd element_matrix(int cell) const override;
+  std::optional<CongruenceKey> congruence_key(int cell) const override { return scalar_.congruence_key(cell); }
+
+ private:
+  ScalarCellSystem scalar_;
 };
 
 }  // namespace hpcontact::assembly

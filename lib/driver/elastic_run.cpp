@@ -110,8 +110,8 @@ nlohmann::json effect_summary(const ElasticEffect& effect) {
 }
 
 void write_outputs(const scene::Scene& scene, const operators::ElasticOperators& operators,
-                   const std::vector<ElasticEffect>& effects, const nlohmann::json& summary,
-                   const std::filesystem::path& where) {
+                   const std::vector<ElasticEffect>& effects, const std::optional<io::CsvTable>& mode,
+                   const nlohmann::json& summary, const std::filesystem::path& where) {
   io::OutputFolder folder(where);
   const auto& out = folder.path();
   for (const auto& effect : effects) {
@@ -121,6 +121,7 @@ void write_outputs(const scene::Scene& scene, const operators::ElasticOperators&
       io::write_elastic_vtu(out / ("solution_" + effect.name + ".vtu"), operators.space(), operators.materials(),
                             effect.solution.u);
   }
+  if (mode) mode->write(out / "mode.csv");
   if (scene.wants_output(scene::Output::summary))
     io::write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
   folder.commit();
@@ -146,7 +147,16 @@ nlohmann::json run_elastic_scene(const scene::Scene& scene, const SceneRunOption
     auto samples = postprocess::sample_elastic_boundary(setup, solution);
     effects.push_back({name, std::move(setup), std::move(solution), std::move(samples), seconds});
   }
-  // 3. The summary, then every file at once.
+  // 3. The inf-sup constant of the elastic pairing.
+  std::optional<io::CsvTable> mode;
+  nlohmann::json infsup;
+  if (scene.has_effect(scene::Effect::infsup)) {
+    if (options.progress) options.progress("inf-sup constant");
+    infsup = infsup_effect(
+        scene, *d, infsup_setup_of(scene, d->mesh, d->cell_degrees, *d->boundary_mesh, d->segment_degrees, operators),
+        mode);
+  }
+  // 4. The summary, then every file at once.
   nlohmann::json summary{
       {"scene", scene.file},
       {"p", scene.p.label()},
@@ -161,8 +171,9 @@ nlohmann::json run_elastic_scene(const scene::Scene& scene, const SceneRunOption
     summary["operators"].push_back(
         {{"name", record.name}, {"rows", record.rows}, {"cols", record.cols}, {"seconds", record.seconds}});
   for (const auto& effect : effects) summary[effect.name] = effect_summary(effect);
+  if (!infsup.is_null()) summary["infsup"] = infsup;
   summary["seconds_total"] = clock.seconds();
-  write_outputs(scene, operators, effects, summary, options.out);
+  write_outputs(scene, operators, effects, mode, summary, options.out);
   return summary;
 }
 

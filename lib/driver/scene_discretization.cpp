@@ -82,9 +82,11 @@ std::function<double(double)> multiplier_error_weight(const scene::Scene& scene,
   };
 }
 
-infsup::InfSupSetup infsup_setup_of(const scene::Scene& scene, const mesh::QuadMesh& mesh,
-                                    std::vector<int> cell_degrees, const mesh::BoundaryMesh& boundary_mesh,
-                                    std::vector<int> segment_degrees, const operators::PrimalOperators& primal) {
+namespace {
+
+infsup::InfSupSetup common_infsup_setup(const scene::Scene& scene, const mesh::QuadMesh& mesh,
+                                        std::vector<int> cell_degrees, const mesh::BoundaryMesh& boundary_mesh,
+                                        std::vector<int> segment_degrees) {
   infsup::InfSupSetup setup;
   setup.mesh = &mesh;
   setup.cell_degrees = std::move(cell_degrees);
@@ -93,13 +95,31 @@ infsup::InfSupSetup infsup_setup_of(const scene::Scene& scene, const mesh::QuadM
   setup.problem = scene.problem;
   setup.norm = scene.norm;
   setup.alpha_tolerance = scene.alpha_tolerance;
+  return setup;
+}
+
+}  // namespace
+
+infsup::InfSupSetup infsup_setup_of(const scene::Scene& scene, const mesh::QuadMesh& mesh,
+                                    std::vector<int> cell_degrees, const mesh::BoundaryMesh& boundary_mesh,
+                                    std::vector<int> segment_degrees, const operators::PrimalOperators& primal) {
+  auto setup = common_infsup_setup(scene, mesh, std::move(cell_degrees), boundary_mesh, std::move(segment_degrees));
+  setup.primal = &primal;
   if (setup.problem == infsup::PairingProblem::friction) {
     if (scene.friction_bound.empty())
       throw_bad_input(scene.where("infsup.problem"), "data.s", "(missing)",
                       "the friction pairing (22) needs the friction bound s");
     setup.friction_bound = function_of(scene.friction_bound, scene.where("data.s") + ": key 'data.s'");
   }
-  setup.primal = &primal;
+  return setup;
+}
+
+infsup::InfSupSetup infsup_setup_of(const scene::Scene& scene, const mesh::QuadMesh& mesh,
+                                    std::vector<int> cell_degrees, const mesh::BoundaryMesh& boundary_mesh,
+                                    std::vector<int> segment_degrees, const operators::ElasticOperators& elastic) {
+  auto setup = common_infsup_setup(scene, mesh, std::move(cell_degrees), boundary_mesh, std::move(segment_degrees));
+  setup.elastic = &elastic;
+  setup.primal_norm = scene.primal_norm;
   return setup;
 }
 

@@ -14,6 +14,7 @@
 #include "mesh/boundary_mesh.hpp"
 #include "mesh/contact_boundary.hpp"
 #include "mesh/quad_mesh.hpp"
+#include "operators/elastic_operators.hpp"
 #include "operators/primal_operators.hpp"
 #include "scene/scene.hpp"
 #include "space/multiplier_space.hpp"
@@ -52,6 +53,11 @@ std::function<double(double)> multiplier_error_weight(const scene::Scene& scene,
 infsup::InfSupSetup infsup_setup_of(const scene::Scene& scene, const mesh::QuadMesh& mesh,
                                     std::vector<int> cell_degrees, const mesh::BoundaryMesh& boundary_mesh,
                                     std::vector<int> segment_degrees, const operators::PrimalOperators& primal);
+/// The same for an elastic scene: the normal multiplier (problem friction: the normal and the
+/// tangential one) paired with [S^p(T_h)]² in [infsup] primal_norm; `elastic` built on T_h.
+infsup::InfSupSetup infsup_setup_of(const scene::Scene& scene, const mesh::QuadMesh& mesh,
+                                    std::vector<int> cell_degrees, const mesh::BoundaryMesh& boundary_mesh,
+                                    std::vector<int> segment_degrees, const operators::ElasticOperators& elastic);
 
 /// One contact problem of a scene, solved from scratch with its own operators.
 struct SceneContactRun {

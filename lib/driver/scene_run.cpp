@@ -123,27 +123,6 @@ void add_convergence_rows(const scene::Scene& scene, const std::vector<ContactEf
     }
 }
 
-// The inf-sup effect: α of the scene's pairing and, if asked, the sampled spurious mode.
-nlohmann::json infsup_effect(const scene::Scene& scene, const SceneDiscretization& d,
-                             const operators::PrimalOperators& primal, std::optional<io::CsvTable>& mode) {
-  const auto setup = infsup_setup_of(scene, d.mesh, d.cell_degrees, *d.boundary_mesh, d.segment_degrees, primal);
-  const auto alpha = infsup::analyse_infsup(setup, infsup::EigenBackend::slepc);
-  if (scene.wants_output(scene::Output::mode)) mode = postprocess::sample_mode(d.mesh, *d.multipliers, alpha.mode);
-  return {{"alpha", alpha.alpha},
-          {"alpha_error", alpha.alpha_error},
-          {"alpha_converged", alpha.alpha_converged},
-          {"reference_level", alpha.reference_level},
-          {"lambda_unique", !alpha.singular},
-          {"problem", infsup::to_string(scene.problem)},
-          {"norm", infsup::to_string(scene.norm)},
-          {"lambda_min", alpha.lambda_min},
-          {"lambda_max", alpha.lambda_max},
-          {"Pi", alpha.pi},
-          {"eigensolver", alpha.method},
-          {"residual", alpha.residual},
-          {"seconds", alpha.seconds}};
-}
-
 // The scene with its mesh graded towards the free boundary of its contact problems; what the fit
 // found goes into `free_boundary` for summary.json.
 scene::Scene fitted_scene(const scene::Scene& scene, const std::function<void(const std::string&)>& say,
@@ -174,6 +153,27 @@ void add_run_summary(const scene::Scene& scene, const SceneDiscretization& d, co
 }
 
 }  // namespace
+
+nlohmann::json infsup_effect(const scene::Scene& scene, const SceneDiscretization& d, const infsup::InfSupSetup& setup,
+                             std::optional<io::CsvTable>& mode) {
+  const auto alpha = infsup::analyse_infsup(setup, infsup::EigenBackend::slepc);
+  if (scene.wants_output(scene::Output::mode)) mode = postprocess::sample_mode(d.mesh, *d.multipliers, alpha.mode);
+  nlohmann::json j{{"alpha", alpha.alpha},
+                   {"alpha_error", alpha.alpha_error},
+                   {"alpha_converged", alpha.alpha_converged},
+                   {"reference_level", alpha.reference_level},
+                   {"lambda_unique", !alpha.singular},
+                   {"problem", infsup::to_string(scene.problem)},
+                   {"norm", infsup::to_string(scene.norm)},
+                   {"lambda_min", alpha.lambda_min},
+                   {"lambda_max", alpha.lambda_max},
+                   {"Pi", alpha.pi},
+                   {"eigensolver", alpha.method},
+                   {"residual", alpha.residual},
+                   {"seconds", alpha.seconds}};
+  if (setup.elastic) j["primal_norm"] = operators::to_string(setup.primal_norm);
+  return j;
+}
 
 std::vector<std::string> refinement_columns() {
   return {"problem",      "level",        "p",      "pC", "n", "m", "ndofs", "nmult", "energy",
@@ -208,7 +208,9 @@ nlohmann::json run_scene(const scene::Scene& given_scene, const SceneRunOptions&
   std::optional<io::CsvTable> mode;
   if (scene.has_effect(scene::Effect::infsup)) {
     say("inf-sup constant");
-    summary["infsup"] = infsup_effect(scene, *d, primal, mode);
+    summary["infsup"] = infsup_effect(
+        scene, *d, infsup_setup_of(scene, d->mesh, d->cell_degrees, *d->boundary_mesh, d->segment_degrees, primal),
+        mode);
   }
 
   // 4. Convergence under uniform refinement of every contact problem of the scene.

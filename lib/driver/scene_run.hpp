@@ -6,9 +6,11 @@
 #include <filesystem>
 #include <functional>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "driver/scene_discretization.hpp"
+#include "io/csv_writer.hpp"
 #include "linalg/distribution.hpp"
 #include "scene/scene_mesh.hpp"
 #include "scene/scene_reader.hpp"
@@ -33,6 +35,11 @@ struct SceneRunOptions {
 ///                              error_energy,error_lambda,seconds; errors against the finest level
 /// Nothing is written unless every effect succeeded. Returns the summary.
 nlohmann::json run_scene(const scene::Scene& scene, const SceneRunOptions& options);
+
+/// The inf-sup effect on `setup` (α, its error, whether λ is unique, Π, the eigensolver) as the
+/// "infsup" entry of summary.json; with output "mode" the sampled eigenvector into `mode`.
+nlohmann::json infsup_effect(const scene::Scene& scene, const SceneDiscretization& d, const infsup::InfSupSetup& setup,
+                             std::optional<io::CsvTable>& mode);
 
 /// The columns of convergence.csv and of the work–precision study's rows.
 std::vector<std::string> refinement_columns();

@@ -43,7 +43,7 @@ InfSupResult analyse_infsup(const InfSupSetup& setup, EigenBackend backend) {
   InfSupResult result;
   SmallestEigenpair pair;
   for (int level = 1;; ++level) {
-    const Eigen::MatrixXd fine = restrict(grams.at(level), operators.active_dofs);
+    const Eigen::MatrixXd fine = restrict(block_copies(grams.at(level), operators.gram_copies), operators.active_dofs);
     Stopwatch eigen_clock;
     pair = backend == EigenBackend::slepc ? smallest_eigenpair_slepc(operators.s_g, fine)
                                           : smallest_eigenpair_dense(operators.s_g, fine);
@@ -52,7 +52,8 @@ InfSupResult analyse_infsup(const InfSupSetup& setup, EigenBackend backend) {
     result.alpha = std::sqrt(result.lambda_min);
     const Eigen::VectorXd& x = pair.eigenvector;
     const double fine_norm = x.dot(fine * x);
-    const double coarse_norm = x.dot(restrict(grams.at(level - 1), operators.active_dofs) * x);
+    const double coarse_norm =
+        x.dot(restrict(block_copies(grams.at(level - 1), operators.gram_copies), operators.active_dofs) * x);
     result.alpha_error = result.alpha * std::abs(std::sqrt(fine_norm / coarse_norm) - 1.0);
     result.reference_level = level;
     result.alpha_converged = grams.geometric() && result.alpha_error <= setup.alpha_tolerance * result.alpha;

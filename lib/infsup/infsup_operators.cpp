@@ -62,8 +62,61 @@ Eigen::MatrixXd restrict(const Eigen::MatrixXd& matrix, const std::vector<int>& 
   return matrix(dofs, dofs);
 }
 
+Eigen::MatrixXd block_copies(const Eigen::MatrixXd& g, int copies) {
+  if (copies == 1) return g;
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(copies * g.rows(), copies * g.cols());
+  for (int k = 0; k < copies; ++k) out.block(k * g.rows(), k * g.cols(), g.rows(), g.cols()) = g;
+  return out;
+}
+
+namespace {
+
+// Elasticity: S_G = B A_G⁻¹ Bᵀ with B = B_n or (B_n; B_t) and A_G the Gram matrix of the primal
+// norm on [S^p(T_h)]², every multiplier active.
+InfSupOperators elastic_infsup_operators(const InfSupSetup& setup) {
+  const auto& elastic = *setup.elastic;
+  HPC_VERIFY(&elastic.mesh() == setup.mesh && elastic.space().cell_degrees() == setup.cell_degrees,
+             "elastic operators of another mesh or degree distribution");
+  const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
+  InfSupOperators out;
+  const bool friction = setup.problem == PairingProblem::friction;
+  Stopwatch assembly_clock;
+  Eigen::SparseMatrix<double> coupling = elastic.coupling(multipliers, assembly::TraceDirection::normal);
+  if (friction) {
+    const auto& tangential = elastic.coupling(multipliers, assembly::TraceDirection::tangent);
+    Eigen::SparseMatrix<double> stacked(2 * coupling.rows(), coupling.cols());
+    std::vector<Eigen::Triplet<double>> entries;
+    for (const Eigen::SparseMatrix<double>* part :
+         {static_cast<const Eigen::SparseMatrix<double>*>(&coupling), &tangential})
+      for (int k = 0; k < part->outerSize(); ++k)
+        for (Eigen::SparseMatrix<double>::InnerIterator it(*part, k); it; ++it)
+          entries.emplace_back(it.row() + (part == &coupling ? 0 : coupling.rows()), it.col(), it.value());
+    stacked.setFromTriplets(entries.begin(), entries.end());
+    coupling = std::move(stacked);
+  }
+  out.seconds_assembly = assembly_clock.seconds();
+  Stopwatch primal_clock;
+  const auto& a_g = elastic.gram_factor(setup.primal_norm);
+  Stopwatch schur_clock;
+  out.s_g = a_g.schur_complement(coupling);
+  if (elastic.log()) elastic.log()->record("S_G", out.s_g.rows(), out.s_g.cols(), schur_clock.seconds());
+  out.seconds_primal = primal_clock.seconds();
+  out.gram_copies = friction ? 2 : 1;
+  out.n_multiplier_dofs = out.gram_copies * multipliers.n_dofs();
+  out.active_dofs.resize(out.n_multiplier_dofs);
+  for (int i = 0; i < out.n_multiplier_dofs; ++i) out.active_dofs[i] = i;
+  out.log = elastic.log();
+  out.n_primal_dofs = elastic.n_dofs();
+  out.h = setup.mesh->longest_edge();
+  out.H = setup.boundary_mesh->mesh_size();
+  return out;
+}
+
+}  // namespace
+
 InfSupOperators assemble_infsup_operators(const InfSupSetup& setup) {
   HPC_VERIFY(setup.mesh && setup.boundary_mesh, "inf-sup setup without meshes");
+  if (setup.elastic) return elastic_infsup_operators(setup);
   const bool friction = setup.problem == PairingProblem::friction;
   if (friction && !setup.friction_bound)
     throw InputError("the friction inf-sup problem (22) needs the friction bound s");

@@ -12,6 +12,7 @@
 #include "mesh/boundary_mesh.hpp"
 #include "mesh/quad_mesh.hpp"
 #include "norms/gram_ladder.hpp"
+#include "operators/elastic_operators.hpp"
 #include "operators/primal_operators.hpp"
 
 namespace hpcontact::infsup {
@@ -39,6 +40,12 @@ struct InfSupSetup {
   // cell_degrees), `grams` to (boundary_mesh, segment_degrees, norm).
   const operators::PrimalOperators* primal = nullptr;
   const norms::GramLadder* grams = nullptr;
+  /// Elasticity (when given; `primal` is then unused and s is not needed): the pairing of the
+  /// normal multiplier with u·n (problem signorini), or of the normal and the tangential
+  /// multipliers with (u·n, u·t) (problem friction: λ = (λ_n; λ_t), G = diag(G, G)), on
+  /// [S^p(T_h)]² in `primal_norm`. Must belong to (mesh, cell_degrees).
+  const operators::ElasticOperators* elastic = nullptr;
+  operators::PrimalNorm primal_norm = operators::PrimalNorm::h1;
 };
 
 struct InfSupOperators {
@@ -47,7 +54,8 @@ struct InfSupOperators {
   /// friction), in increasing order.
   std::vector<int> active_dofs;
   int n_primal_dofs = 0;
-  int n_multiplier_dofs = 0;
+  int n_multiplier_dofs = 0;      ///< of the whole multiplier: gram_copies × dofs of M^{p_C}(T_{C,H})
+  int gram_copies = 1;            ///< G of the pairing = diag(G, …) with this many copies
   double h = 0.0;                 ///< longest edge of T_h
   double H = 0.0;                 ///< longest segment of T_{C,H}
   double seconds_assembly = 0.0;  ///< what this call assembled of S^p(T_h), K, M, B
@@ -61,6 +69,9 @@ InfSupOperators assemble_infsup_operators(const InfSupSetup& setup);
 
 /// `matrix` (n_multiplier_dofs square) restricted to the rows and columns `dofs`.
 Eigen::MatrixXd restrict(const Eigen::MatrixXd& matrix, const std::vector<int>& dofs);
+
+/// diag(g, …, g) with `copies` blocks.
+Eigen::MatrixXd block_copies(const Eigen::MatrixXd& g, int copies);
 
 /// Π(h, H, p, p_C) = h H⁻¹ max(1, p_C)² p⁻¹ of (20) with θ = 1; for degree distributions the
 /// worst case (largest p_C, smallest p).

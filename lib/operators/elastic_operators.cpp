@@ -12,6 +12,8 @@
 
 namespace hpcontact::operators {
 
+std::string to_string(PrimalNorm norm) { return norm == PrimalNorm::h1 ? "h1" : "energy"; }
+
 ElasticOperators::ElasticOperators(const mesh::QuadMesh& mesh, std::vector<int> cell_degrees,
                                    std::vector<assembly::Material> materials, OperatorLog* log)
     : mesh_(&mesh), materials_(std::move(materials)), log_(log) {
@@ -55,6 +57,22 @@ const assembly::CondensedFactor& ElasticOperators::stiffness_factor() const {
     if (log_) log_->record("factor(A)", n_dofs(), n_dofs(), clock.seconds());
   }
   return *stiffness_factor_;
+}
+
+const assembly::CondensedFactor& ElasticOperators::gram_factor(PrimalNorm norm) const {
+  auto& slot = gram_factors_[norm];
+  if (!slot) {
+    Stopwatch clock;
+    std::unique_ptr<const assembly::CellSystem> system;
+    if (norm == PrimalNorm::h1)
+      system = std::make_unique<assembly::ComponentwiseCellSystem>(*space_, 1.0, 1.0);
+    else
+      system = std::make_unique<assembly::ElasticCellSystem>(*space_, materials_, 1.0);
+    slot = std::make_unique<assembly::CondensedFactor>(std::move(system), trace_dofs());
+    if (log_)
+      log_->record(norm == PrimalNorm::h1 ? "factor(K+M)^2" : "factor(A+M)", n_dofs(), n_dofs(), clock.seconds());
+  }
+  return *slot;
 }
 
 const Eigen::SparseMatrix<double>& ElasticOperators::coupling(const space::MultiplierSpace& multipliers,

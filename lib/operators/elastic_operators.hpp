@@ -19,6 +19,12 @@
 
 namespace hpcontact::operators {
 
+/// The norm of the displacement space in the inf-sup analysis: the vector H¹ norm
+/// (‖∇v‖² + ‖v‖², componentwise: the scalar analysis's norm, independent of the material) or the
+/// energy norm a(v, v) + ‖v‖², which depends on E and ν.
+enum class PrimalNorm { h1, energy };
+std::string to_string(PrimalNorm norm);
+
 class ElasticOperators {
  public:
   /// `mesh` (and `log`, when given) must outlive the object; `materials` one per cell.
@@ -37,6 +43,9 @@ class ElasticOperators {
   /// A factorized with the trace last ("factor(A)").
   /// @throws InputError if the body has no Dirichlet part (A would be singular: rigid motions).
   const assembly::CondensedFactor& stiffness_factor() const;
+  /// The Gram matrix of `norm` on [S^p(T_h)]² factorized with the trace last ("factor(K+M)^2" or
+  /// "factor(A+M)").
+  const assembly::CondensedFactor& gram_factor(PrimalNorm norm) const;
   /// B^n or B^t of a multiplier space on Γ_C ("B_n", "B_t"), kept per multiplier space layout.
   const Eigen::SparseMatrix<double>& coupling(const space::MultiplierSpace& multipliers,
                                               assembly::TraceDirection direction) const;
@@ -51,6 +60,7 @@ class ElasticOperators {
   std::vector<assembly::Material> materials_;
   OperatorLog* log_;
   mutable std::unique_ptr<assembly::CondensedFactor> stiffness_factor_;
+  mutable std::map<PrimalNorm, std::unique_ptr<assembly::CondensedFactor>> gram_factors_;
   mutable std::unique_ptr<std::vector<int>> trace_dofs_;
   mutable std::map<std::string, Eigen::SparseMatrix<double>> couplings_;
 };

@@ -10,7 +10,8 @@
 namespace hpcontact::postprocess {
 
 /// The mode sampled at `samples_per_segment` equidistant points of every segment (both ends
-/// included, so jumps show): columns x, mu, y, s (x, y physical, s arc length along Γ_C).
+/// included, so jumps show): columns x, mu, y, s (x, y physical, s arc length along Γ_C), and
+/// mu_t when the mode has two parts (the elastic friction pairing: normal, then tangential).
 io::CsvTable sample_mode(const mesh::QuadMesh& mesh, const space::MultiplierSpace& multipliers,
                          const Eigen::VectorXd& mode, int samples_per_segment = 20);
 

@@ -128,4 +128,9 @@ std::vector<contact::ElasticContactProblem> Scene::elastic_effects() const {
   return problems;
 }
 
+bool Scene::is_elastic() const {
+  if (!elastic_effects().empty()) return true;
+  return std::any_of(given.begin(), given.end(), [](const std::string& key) { return key.starts_with("material."); });
+}
+
 }  // namespace hpcontact::scene

@@ -79,6 +79,7 @@ struct Scene {
   // [infsup]
   infsup::GramNorm norm = infsup::GramNorm::interpolation;
   infsup::PairingProblem problem = infsup::PairingProblem::signorini;
+  operators::PrimalNorm primal_norm = operators::PrimalNorm::h1;  ///< elastic scenes: h1 or energy
   double alpha_tolerance = 1e-4;
   // [solve]
   std::optional<int> constraint_points;  ///< |𝒞| per segment (Remark 3); empty: p_C + 1
@@ -102,8 +103,9 @@ struct Scene {
   std::vector<contact::ContactProblem> contact_effects() const;
   /// The elastic contact problems among the effects, in the order frictionless, tresca, coulomb.
   std::vector<contact::ElasticContactProblem> elastic_effects() const;
-  /// Whether the scene poses an elastic body (an elastic effect) rather than the scalar model.
-  bool is_elastic() const { return !elastic_effects().empty(); }
+  /// Whether the scene poses an elastic body (an elastic effect, or a [material] table) rather
+  /// than the scalar model.
+  bool is_elastic() const;
   bool wants_output(Output output) const;
 };
 

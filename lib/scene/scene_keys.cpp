@@ -283,7 +283,13 @@ void add_run_keys(std::vector<SceneKey>& keys) {
   add(choice_key<infsup::PairingProblem>(
       "infsup", "problem",
       {{"signorini", infsup::PairingProblem::signorini}, {"friction", infsup::PairingProblem::friction}},
-      infsup::PairingProblem::signorini, &Scene::problem, "pairing: (11) or (22) with the scene's s"));
+      infsup::PairingProblem::signorini, &Scene::problem,
+      "pairing: (11) or (22) with the scene's s; elastic scenes: the normal multiplier with u·n, or the normal and "
+      "tangential ones with (u·n, u·t)"));
+  add(choice_key<operators::PrimalNorm>(
+      "infsup", "primal_norm", {{"h1", operators::PrimalNorm::h1}, {"energy", operators::PrimalNorm::energy}},
+      operators::PrimalNorm::h1, &Scene::primal_norm,
+      "norm of the displacement in α of an elastic scene: vector H¹, or the energy a(v, v) + ‖v‖² (depends on E, ν)"));
   add(number_key("infsup", "alpha_tol", 1e-12, 0.1, 1e-4, &Scene::alpha_tolerance,
                  "relative error of α: the H^{-1/2} reference is refined until the estimate is below it"));
   // [solve]

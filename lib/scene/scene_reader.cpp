@@ -97,7 +97,8 @@ void check_boundary_and_contact_mesh(const Scene& scene) {
   if (given != 1)
     throw_bad_input(scene.file, "contact_mesh", fmt::format("({} of m, ratio, breakpoints given)", given),
                     "give exactly one of m, ratio, breakpoints");
-  if (scene.problem == infsup::PairingProblem::friction && scene.friction_bound.empty())
+  // (The elastic friction pairing, normal and tangential multipliers, has no weight s.)
+  if (scene.problem == infsup::PairingProblem::friction && scene.friction_bound.empty() && !scene.is_elastic())
     throw_bad_input(scene.where("data.s"), "data.s", "(missing)", "the friction problem needs the friction bound s");
 }
 
@@ -141,19 +142,18 @@ void check_elastic_effects(const Scene& scene) {
   const std::string where = scene.where("run.effects");
   if (!scene.contact_effects().empty())
     throw_bad_input(where, "run.effects", to_string(effect_of(scene.contact_effects().front())),
-                    "one body per scene: the scalar model's problems (signorini, friction, friction_s) or the "
-                    "elastic ones (frictionless, tresca, coulomb), not both");
-  for (Effect effect : {Effect::infsup, Effect::convergence})
-    if (scene.has_effect(effect))
-      throw_bad_input(where, "run.effects", to_string(effect),
-                      "not yet available with the elastic effects (frictionless, tresca, coulomb)");
+                    "one body per scene: the scalar model's problems (signorini, friction, friction_s) or, with "
+                    "[material], the elastic ones (frictionless, tresca, coulomb), not both");
+  if (scene.has_effect(Effect::convergence))
+    throw_bad_input(where, "run.effects", "convergence",
+                    "not yet available with the elastic effects (frictionless, tresca, coulomb)");
   if (scene.fit_free_boundary)
     throw_bad_input(scene.where("solve.fit_free_boundary"), "solve.fit_free_boundary", "true",
                     "false with the elastic effects (the fit grades towards the scalar model's free boundary)");
   if (scene.given.contains("data.f"))
     throw_bad_input(scene.where("data.f"), "data.f", scene.load,
                     "absent in an elastic scene: its body force is data.f_x, data.f_y");
-  if (scene.obstacle.empty())
+  if (!scene.elastic_effects().empty() && scene.obstacle.empty())
     throw_bad_input(scene.where("data.g"), "data.g", "(missing)",
                     "the elastic contact problems need the gap g to the obstacle along the normal");
   if (scene.has_effect(Effect::tresca) && scene.friction_bound.empty())
@@ -175,6 +175,9 @@ void check_effects(const Scene& scene) {
   if (scene.is_elastic()) {
     check_elastic_effects(scene);
   } else {
+    if (scene.primal_norm != operators::PrimalNorm::h1)
+      throw_bad_input(scene.where("infsup.primal_norm"), "infsup.primal_norm", "energy",
+                      "\"h1\" for the scalar model (its energy norm is the H¹ seminorm, already in h1)");
     for (const auto& key : elastic_only_keys())
       if (scene.given.contains(key))
         throw_bad_input(scene.where(key), key, "(given)",

@@ -10,10 +10,13 @@
 #include <map>
 
 #include "assembly/condensed_factor.hpp"
+#include "assembly/elastic_load.hpp"
 #include "assembly/poisson_assembly.hpp"
 #include "contact/contact_problem.hpp"
+#include "contact/elastic_contact.hpp"
 #include "core/error.hpp"
 #include "core/timer.hpp"
+#include "driver/elastic_run.hpp"
 #include "driver/scene_discretization.hpp"
 #include "infsup/infsup_analysis.hpp"
 #include "io/toml_reader.hpp"
@@ -39,11 +42,12 @@ PerformanceBenchmark read_performance_benchmark(const std::string& path) {
       throw_bad_input(path, "benchmark.n", std::to_string(n), "even, with n · ratio a whole number >= 1");
     out.levels.push_back(static_cast<int>(n));
   }
-  const std::vector<std::string> allowed{"signorini", "friction", "friction_s", "alpha", "assembled"};
+  const std::vector<std::string> allowed{"signorini", "friction", "friction_s", "alpha", "assembled", "elastic"};
   out.kinds = table.string_list("kinds", allowed);
   for (const auto& kind : out.kinds)
     if (std::find(allowed.begin(), allowed.end(), kind) == allowed.end())
-      throw_bad_input(path, "benchmark.kinds", kind, "any of signorini, friction, friction_s, alpha, assembled");
+      throw_bad_input(path, "benchmark.kinds", kind,
+                      "any of signorini, friction, friction_s, alpha, assembled, elastic");
   table.reject_unknown_keys();
   root.reject_unknown_keys();
   return out;
@@ -124,6 +128,53 @@ BenchmarkRow assembled_row(bool mass, const space::H1Space& space, const Eigen::
   return row;
 }
 
+// The elastic body of kind "elastic" on the level's mesh: the §7 square clamped on Γ_D (E = 1,
+// ν = 0.3, plane strain), pulled down by f = (0, −1) onto an obstacle below Γ_C at the gap
+// g = 0.05 + 0.2 x²: one linear solve with A ("linear_A"), then the frictionless and the Coulomb
+// (F = 0.3) contact solves against it, each with its own operators.
+void add_elastic_rows(const PerformanceBenchmark& benchmark, const scene::Scene& scalar_scene, BenchmarkRow base,
+                      const std::function<void(BenchmarkRow)>& add) {
+  const std::string origin = benchmark.file + ": kind 'elastic'";
+  const auto scene = scene::parse_scene(scene::paper_scene_text(), scene::paper_scene_name,
+                                        {{"domain.n_x", static_cast<long long>(scalar_scene.n_x), origin},
+                                         {"domain.n_y", static_cast<long long>(scalar_scene.n_y), origin},
+                                         {"contact_mesh.ratio", benchmark.ratio, origin},
+                                         {"discretization.p", static_cast<long long>(benchmark.p), origin},
+                                         {"discretization.pC", static_cast<long long>(benchmark.pc), origin},
+                                         {"run.effects", std::vector<std::string>{"frictionless", "coulomb"}, origin},
+                                         {"data.f_y", std::string("-1"), origin},
+                                         {"data.g", std::string("0.05 + 0.2 * x^2"), origin},
+                                         {"data.friction_coefficient", 0.3, origin}});
+  const auto d = driver::discretize_scene(scene);
+  const auto materials = driver::scene_materials(scene, d->mesh);
+  const space::H1Space space(d->mesh, d->cell_degrees);
+  base.ndofs = 2 * space.n_dofs();
+  const Eigen::VectorXd load =
+      assembly::assemble_elastic_load(space, [](const mesh::Point&) { return Eigen::Vector2d(0.0, -1.0); }, {}, {});
+  BenchmarkRow linear_a = base;
+  linear_a.kind = "linear_A";
+  {
+    Stopwatch clock;
+    const assembly::CondensedFactor factor(std::make_unique<assembly::ElasticCellSystem>(space, materials));
+    HPC_VERIFY(factor.solve(load).allFinite(), "baseline solve gave a non-finite result");
+    linear_a.seconds_baseline = linear_a.seconds = clock.seconds();
+  }
+  add(linear_a);
+  for (const auto problem : scene.elastic_effects()) {
+    const operators::ElasticOperators operators(d->mesh, d->cell_degrees, materials);
+    const auto solution = contact::solve_elastic_contact(driver::elastic_setup_of(scene, *d, problem, operators));
+    BenchmarkRow row = base;
+    row.kind = "elastic_" + contact::to_string(problem);
+    row.nmult = static_cast<int>(solution.lambda.size());
+    row.n_trace = solution.n_trace;
+    row.seconds_assembly = solution.seconds.assembly;
+    row.seconds_baseline = linear_a.seconds_baseline;
+    row.seconds = solution.seconds.factorization + solution.seconds.condensation + solution.seconds.qp +
+                  solution.seconds.recovery;
+    add(row);
+  }
+}
+
 }  // namespace
 
 std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& benchmark,
@@ -171,7 +222,8 @@ std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& 
     add(linear_k);
 
     for (const auto& kind : benchmark.kinds)
-      if (kind != "alpha" && kind != "assembled") add(contact_row(kind, scene, *discretization, base, linear_k));
+      if (kind != "alpha" && kind != "assembled" && kind != "elastic")
+        add(contact_row(kind, scene, *discretization, base, linear_k));
     BenchmarkRow linear_ag = base;
     linear_ag.kind = "linear_AG";
     if (has("alpha") || has("assembled")) {
@@ -184,6 +236,7 @@ std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& 
     // condensation saves in time, and (peak_rss_mb) in memory.
     if (has("assembled"))
       for (const bool mass : {false, true}) add(assembled_row(mass, space, load, base, mass ? linear_ag : linear_k));
+    if (has("elastic")) add_elastic_rows(benchmark, scene, base, add);
   }
   return rows;
 }

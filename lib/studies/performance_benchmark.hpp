@@ -14,8 +14,10 @@ namespace hpcontact::studies {
 
 /// A benchmark file (TOML), e.g. studies/performance/benchmark.toml:
 ///   [benchmark] p, pC (degrees), ratio (h/H), n (list of levels, cells per side),
-///               kinds (any of "signorini", "friction", "friction_s", "alpha", and "assembled":
-///               CHOLMOD on the assembled K and A_G, as ratios to the condensed solves)
+///               kinds (any of "signorini", "friction", "friction_s", "alpha", "assembled":
+///               CHOLMOD on the assembled K and A_G, as ratios to the condensed solves, and
+///               "elastic": an elastic body on the same mesh, its frictionless and Coulomb contact
+///               solves against one linear solve with the elasticity matrix A)
 struct PerformanceBenchmark {
   std::string file;
   int p = 4, pc = 3;
@@ -28,8 +30,8 @@ struct PerformanceBenchmark {
 PerformanceBenchmark read_performance_benchmark(const std::string& path);
 
 struct BenchmarkRow {
-  std::string
-      kind;  ///< "linear_K", "linear_AG", a contact problem, "alpha", "linear_K_assembled", "linear_AG_assembled"
+  std::string kind;  ///< "linear_K", "linear_AG", a contact problem, "alpha", "linear_K_assembled",
+                     ///< "linear_AG_assembled", "linear_A", "elastic_frictionless", "elastic_coulomb"
   int p = 0, pc = 0, n = 0, m = 0, ndofs = 0, nmult = 0, n_trace = 0;
   double seconds_assembly = 0.0;  ///< not part of either side of the ratio
   double seconds_baseline = 0.0;  ///< one linear solve of the same matrix

@@ -17,12 +17,14 @@
 #include "core/error.hpp"
 #include "core/petsc_session.hpp"
 #include "core/rank_agreement.hpp"
+#include "driver/elastic_run.hpp"
 #include "driver/scene_discretization.hpp"
 #include "io/atomic_file.hpp"
 #include "io/toml_reader.hpp"
 #include "mesh/boundary_mesh.hpp"
 #include "mesh/contact_boundary.hpp"
 #include "norms/h_minus_half_gram.hpp"
+#include "operators/elastic_operators.hpp"
 #include "operators/primal_operators.hpp"
 #include "scene/scene_mesh.hpp"
 #include "space/multiplier_space.hpp"
@@ -99,7 +101,7 @@ StabilitySweep read_stability_sweep(const std::string& path) {
   for (std::size_t level = 0; level < sweep.levels.size(); ++level) {
     const scene::Scene& scene = sweep.levels[level].scene;
     try {
-      if (friction && scene.friction_bound.empty())
+      if (friction && scene.friction_bound.empty() && !scene.is_elastic())
         throw_bad_input(scene.file, "data.s", "(missing)",
                         "the friction pairing (22) of sweep.problem needs the friction bound s");
       const auto mesh = scene::build_scene_mesh(scene);
@@ -201,12 +203,18 @@ struct GroupMesh {
   mesh::ContactBoundary contact;
   std::vector<int> cell_degrees;
   operators::PrimalOperators primal;
+  /// An elastic scene's operators (its α pairs [S^p(T_h)]² with the normal and tangential
+  /// multipliers); null for the scalar model.
+  std::unique_ptr<operators::ElasticOperators> elastic;
   GroupMesh(const scene::Scene& level_scene)
       : scene(level_scene),
         mesh(scene::build_scene_mesh(scene)),
         contact(mesh),
         cell_degrees(scene::scene_cell_degrees(scene, mesh)),
-        primal(mesh, cell_degrees) {}
+        primal(mesh, cell_degrees) {
+    if (scene.is_elastic())
+      elastic = std::make_unique<operators::ElasticOperators>(mesh, cell_degrees, driver::scene_materials(scene, mesh));
+  }
 };
 
 /// The envelope Gram ladder of the point's (norm, ratio) on its level, built on first use.
@@ -239,8 +247,11 @@ std::string compute_point(const SweepRun& run, const SweepPoint& point, const Gr
   const auto& ratio = run.ratios[point.ratio];
   const scene::Scene scene = point_scene(group.scene, 0, point.pc, ratio, point.pairing, point.gram);
   const auto boundary = scene::build_scene_boundary_mesh(scene, group.contact);
-  auto setup = driver::infsup_setup_of(scene, group.mesh, group.cell_degrees, boundary,
-                                       scene::scene_segment_degrees(scene, group.contact, boundary), group.primal);
+  auto segment_degrees = scene::scene_segment_degrees(scene, group.contact, boundary);
+  auto setup = group.elastic ? driver::infsup_setup_of(scene, group.mesh, group.cell_degrees, boundary,
+                                                       std::move(segment_degrees), *group.elastic)
+                             : driver::infsup_setup_of(scene, group.mesh, group.cell_degrees, boundary,
+                                                       std::move(segment_degrees), group.primal);
   setup.alpha_tolerance = sweep.alpha_tolerance;
   const auto& envelope = envelope_of(run, point, group, boundary, grams);
   const norms::GramLadder ladder = norms::restricted_ladder(*envelope.ladder, *envelope.multipliers,
