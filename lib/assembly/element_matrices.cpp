@@ -13,6 +13,22 @@
 #include "mesh/cell_map.hpp"
 
 namespace hpcontact::assembly {
+namespace {
+
+// The cell's shapes at its tensor Gauss points and the weights w_q · det DΨ_T there.
+std::pair<CellValues, Eigen::VectorXd> quadrature_values(const space::H1Space& space, int cell) {
+  const auto& rule = basis::gauss_legendre(cell_quadrature_points(space.cell_degree(cell)));
+  CellValues values = tabulate_cell(space, cell, rule.points, rule.points);
+  Eigen::VectorXd weights(values.jacobians.size());
+  for (std::size_t b = 0; b < rule.points.size(); ++b)
+    for (std::size_t a = 0; a < rule.points.size(); ++a) {
+      const auto q = a + rule.points.size() * b;
+      weights(q) = rule.weights[a] * rule.weights[b] * values.jacobians(q);
+    }
+  return {std::move(values), std::move(weights)};
+}
+
+}  // namespace
 
 ElementMatrices::ElementMatrices(const space::H1Space& space, bool kronecker_parallelograms)
     : space_(&space), kronecker_parallelograms_(kronecker_parallelograms) {}
@@ -71,14 +87,7 @@ void ElementMatrices::compute(int cell, Eigen::MatrixXd* stiffness, Eigen::Matri
     }
     return;
   }
-  const auto& rule = basis::gauss_legendre(cell_quadrature_points(space_->cell_degree(cell)));
-  const CellValues values = tabulate_cell(*space_, cell, rule.points, rule.points);
-  Eigen::VectorXd weights(values.jacobians.size());
-  for (std::size_t b = 0; b < rule.points.size(); ++b)
-    for (std::size_t a = 0; a < rule.points.size(); ++a) {
-      const auto q = a + rule.points.size() * b;
-      weights(q) = rule.weights[a] * rule.weights[b] * values.jacobians(q);
-    }
+  const auto [values, weights] = quadrature_values(*space_, cell);
   const auto w = weights.asDiagonal();
   if (stiffness)
     *stiffness = values.grad_x.transpose() * w * values.grad_x + values.grad_y.transpose() * w * values.grad_y;
@@ -111,14 +120,7 @@ ElementMatrices::Directional ElementMatrices::directional(int cell) {
     }
     return out;
   }
-  const auto& rule = basis::gauss_legendre(cell_quadrature_points(space_->cell_degree(cell)));
-  const CellValues values = tabulate_cell(*space_, cell, rule.points, rule.points);
-  Eigen::VectorXd weights(values.jacobians.size());
-  for (std::size_t b = 0; b < rule.points.size(); ++b)
-    for (std::size_t a = 0; a < rule.points.size(); ++a) {
-      const auto q = a + rule.points.size() * b;
-      weights(q) = rule.weights[a] * rule.weights[b] * values.jacobians(q);
-    }
+  const auto [values, weights] = quadrature_values(*space_, cell);
   const auto w = weights.asDiagonal();
   return {values.grad_x.transpose() * w * values.grad_x, values.grad_x.transpose() * w * values.grad_y,
           values.grad_y.transpose() * w * values.grad_x, values.grad_y.transpose() * w * values.grad_y};
