@@ -391,7 +391,7 @@ TEST(ElasticScenes, BadInputNamesTheKeyAndTheRule) {
       {{{effects, "effects = [\"signorini\"]"}}, "one body per scene"},
       {{{"nu = \"0.3\"", "nu = \"0.5\""}}, "material.nu"},
       {{{effects, "effects = [\"coulomb\"]"}}, "friction coefficient"},
-      {{{effects, "effects = [\"frictionless\", \"convergence\"]"}}, "not yet available with the elastic effects"},
+      {{{effects, "effects = [\"infsup\", \"convergence\"]"}}, "'convergence' refines the contact problems"},
       // A scalar scene with an elastic key: it would do nothing.
       {{{effects, "effects = [\"signorini\"]"},
         {material, ""},
@@ -525,4 +525,40 @@ TEST(ElasticInfSup, SolveAndSweepRunTheElasticPairing) {
   int rows = -1;
   for (std::string line; std::getline(alpha, line);) ++rows;
   EXPECT_EQ(rows, 2 * 2 * 3);  // problems × levels × (p, p_C < p)
+}
+
+TEST(ElasticScenes, ConvergenceEffectRefinesTheElasticProblems) {
+  // The Hertz block, ungraded, p = 2: the energies of nested uniform refinements decrease towards
+  // the finest, each level's error at least halving, as for the scalar problems.
+  std::ifstream in(kHertzScene);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
+           {"effects = [\"frictionless\"]",
+            "effects = [\"frictionless\", \"convergence\"]\n[convergence]\nrefinements = 3"},
+           {"grading_layers = 8", "grading_layers = 0"},
+           {"n_x = 32", "n_x = 16"},
+           {"n_y = 16", "n_y = 8"},
+           {"p = 4", "p = 2"},
+           {"pC = 2", "pC = 1"}})
+    text.replace(text.find(from), from.size(), to);
+  const auto dir = hpcontact::testing::scratch("elastic_convergence");
+  std::ofstream(dir / "scene.toml") << text;
+  const auto result =
+      hpcontact::testing::run("solve " + (dir / "scene.toml").string() + " --out " + (dir / "out").string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  std::ifstream csv(dir / "out" / "convergence.csv");
+  std::string line;
+  std::getline(csv, line);
+  std::vector<double> energies, errors;
+  while (std::getline(csv, line)) {
+    std::vector<std::string> fields;
+    std::stringstream row(line);
+    for (std::string field; std::getline(row, field, ',');) fields.push_back(field);
+    ASSERT_EQ(fields.size(), 12u) << line;
+    energies.push_back(std::stod(fields[8]));
+    errors.push_back(std::stod(fields[9]));
+  }
+  ASSERT_EQ(energies.size(), 4u);
+  for (std::size_t k = 1; k < energies.size(); ++k) EXPECT_LT(energies[k], energies[k - 1]) << "level " << k;
+  for (std::size_t k = 1; k + 1 < errors.size(); ++k) EXPECT_LT(errors[k], 0.5 * errors[k - 1]) << "level " << k;
 }

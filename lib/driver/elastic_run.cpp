@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include "contact/multiplier_distance.hpp"
 #include "core/error.hpp"
 #include "core/expression.hpp"
 #include "core/operator_log.hpp"
@@ -85,6 +86,67 @@ struct ElasticEffect {
   double seconds = 0.0;
 };
 
+// Every elastic contact problem of the scene on one discretization, sharing `operators`.
+std::vector<ElasticEffect> solve_elastic_effects(const scene::Scene& scene, const SceneDiscretization& d,
+                                                 const operators::ElasticOperators& operators,
+                                                 const SceneRunOptions& options, const std::string& where) {
+  std::vector<ElasticEffect> effects;
+  for (const auto problem : scene.elastic_effects()) {
+    const std::string name = contact::to_string(problem);
+    if (options.progress) options.progress("solving " + name + where);
+    Stopwatch clock;
+    auto setup = elastic_setup_of(scene, d, problem, operators);
+    auto solution = contact::solve_elastic_contact(setup);
+    const double seconds = clock.seconds();
+    auto samples = postprocess::sample_elastic_boundary(setup, solution);
+    effects.push_back({name, std::move(setup), std::move(solution), std::move(samples), seconds});
+  }
+  return effects;
+}
+
+// The convergence effect: the scene's elastic problems on `convergence_refinements` uniform
+// refinements beyond its own mesh, each level with its own operators; errors of the energy and
+// of the pressure (L²(Γ_C)) against the finest level.
+io::CsvTable elastic_convergence(const scene::Scene& scene, const SceneDiscretization& base_mesh,
+                                 const std::vector<ElasticEffect>& base, const SceneRunOptions& options) {
+  struct Level {
+    std::unique_ptr<SceneDiscretization> own;
+    const SceneDiscretization* d;
+    std::unique_ptr<operators::ElasticOperators> operators;
+    std::vector<ElasticEffect> effects;
+  };
+  std::vector<Level> levels;
+  levels.push_back({nullptr, &base_mesh, nullptr, {}});
+  for (int k = 1; k <= scene.convergence_refinements; ++k) {
+    scene::Scene refined = scene;
+    refined.refinements += k;
+    Level level{discretize_scene(refined), nullptr, nullptr, {}};
+    level.d = level.own.get();
+    level.operators = std::make_unique<operators::ElasticOperators>(level.d->mesh, level.d->cell_degrees,
+                                                                    scene_materials(refined, level.d->mesh));
+    level.effects =
+        solve_elastic_effects(refined, *level.d, *level.operators, options, fmt::format(" (convergence level {})", k));
+    levels.push_back(std::move(level));
+  }
+  io::CsvTable table(refinement_columns());
+  const Level& finest = levels.back();
+  for (std::size_t e = 0; e < base.size(); ++e)
+    for (std::size_t k = 0; k < levels.size(); ++k) {
+      const auto& d = *levels[k].d;
+      const auto& effect = k == 0 ? base[e] : levels[k].effects[e];
+      const auto& reference = finest.effects.empty() ? base[e].solution : finest.effects[e].solution;
+      table.add_row(
+          {effect.name, static_cast<long long>(k), scene.p.label(), scene.pc.label(),
+           static_cast<long long>(d.contact->edges().size()), static_cast<long long>(d.boundary_mesh->n_segments()),
+           static_cast<long long>(effect.solution.u.size()), static_cast<long long>(effect.solution.lambda.size()),
+           effect.solution.energy, std::abs(effect.solution.energy - reference.energy),
+           contact::multiplier_l2_distance(*d.multipliers, effect.solution.pressure, *finest.d->multipliers,
+                                           reference.pressure),
+           effect.seconds});
+    }
+  return table;
+}
+
 nlohmann::json effect_summary(const ElasticEffect& effect) {
   const auto& solution = effect.solution;
   nlohmann::json j{{"energy", solution.energy},
@@ -109,9 +171,14 @@ nlohmann::json effect_summary(const ElasticEffect& effect) {
   return j;
 }
 
+struct ExtraTables {
+  const std::optional<io::CsvTable>& mode;         ///< mode.csv (effect infsup, output mode)
+  const std::optional<io::CsvTable>& convergence;  ///< convergence.csv (effect convergence)
+};
+
 void write_outputs(const scene::Scene& scene, const operators::ElasticOperators& operators,
-                   const std::vector<ElasticEffect>& effects, const std::optional<io::CsvTable>& mode,
-                   const nlohmann::json& summary, const std::filesystem::path& where) {
+                   const std::vector<ElasticEffect>& effects, const ExtraTables& extra, const nlohmann::json& summary,
+                   const std::filesystem::path& where) {
   io::OutputFolder folder(where);
   const auto& out = folder.path();
   for (const auto& effect : effects) {
@@ -121,7 +188,8 @@ void write_outputs(const scene::Scene& scene, const operators::ElasticOperators&
       io::write_elastic_vtu(out / ("solution_" + effect.name + ".vtu"), operators.space(), operators.materials(),
                             effect.solution.u);
   }
-  if (mode) mode->write(out / "mode.csv");
+  if (extra.mode) extra.mode->write(out / "mode.csv");
+  if (extra.convergence) extra.convergence->write(out / "convergence.csv");
   if (scene.wants_output(scene::Output::summary))
     io::write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
   folder.commit();
@@ -136,18 +204,10 @@ nlohmann::json run_elastic_scene(const scene::Scene& scene, const SceneRunOption
   OperatorLog log;
   const operators::ElasticOperators operators(d->mesh, d->cell_degrees, scene_materials(scene, d->mesh), &log);
   // 2. The contact problems.
-  std::vector<ElasticEffect> effects;
-  for (const auto problem : scene.elastic_effects()) {
-    const std::string name = contact::to_string(problem);
-    if (options.progress) options.progress("solving " + name);
-    Stopwatch effect_clock;
-    auto setup = elastic_setup_of(scene, *d, problem, operators);
-    auto solution = contact::solve_elastic_contact(setup);
-    const double seconds = effect_clock.seconds();
-    auto samples = postprocess::sample_elastic_boundary(setup, solution);
-    effects.push_back({name, std::move(setup), std::move(solution), std::move(samples), seconds});
-  }
-  // 3. The inf-sup constant of the elastic pairing.
+  const std::vector<ElasticEffect> effects = solve_elastic_effects(scene, *d, operators, options, "");
+  // 3. Convergence under uniform refinement, then the inf-sup constant of the elastic pairing.
+  std::optional<io::CsvTable> convergence;
+  if (scene.has_effect(scene::Effect::convergence)) convergence = elastic_convergence(scene, *d, effects, options);
   std::optional<io::CsvTable> mode;
   nlohmann::json infsup;
   if (scene.has_effect(scene::Effect::infsup)) {
@@ -172,8 +232,10 @@ nlohmann::json run_elastic_scene(const scene::Scene& scene, const SceneRunOption
         {{"name", record.name}, {"rows", record.rows}, {"cols", record.cols}, {"seconds", record.seconds}});
   for (const auto& effect : effects) summary[effect.name] = effect_summary(effect);
   if (!infsup.is_null()) summary["infsup"] = infsup;
+  if (convergence)
+    summary["convergence"] = {{"refinements", scene.convergence_refinements}, {"file", "convergence.csv"}};
   summary["seconds_total"] = clock.seconds();
-  write_outputs(scene, operators, effects, mode, summary, options.out);
+  write_outputs(scene, operators, effects, {mode, convergence}, summary, options.out);
   return summary;
 }
 

@@ -144,9 +144,6 @@ void check_elastic_effects(const Scene& scene) {
     throw_bad_input(where, "run.effects", to_string(effect_of(scene.contact_effects().front())),
                     "one body per scene: the scalar model's problems (signorini, friction, friction_s) or, with "
                     "[material], the elastic ones (frictionless, tresca, coulomb), not both");
-  if (scene.has_effect(Effect::convergence))
-    throw_bad_input(where, "run.effects", "convergence",
-                    "not yet available with the elastic effects (frictionless, tresca, coulomb)");
   if (scene.fit_free_boundary)
     throw_bad_input(scene.where("solve.fit_free_boundary"), "solve.fit_free_boundary", "true",
                     "false with the elastic effects (the fit grades towards the scalar model's free boundary)");
@@ -190,13 +187,14 @@ void check_effects(const Scene& scene) {
     if (scene.has_effect(problem) && scene.friction_bound.empty())
       throw_bad_input(scene.where("data.s"), "data.s", "(missing)",
                       fmt::format("the effect '{}' needs the friction bound s", to_string(problem)));
-  const bool contact = !scene.contact_effects().empty() || scene.is_elastic();
+  const bool contact = !scene.contact_effects().empty() || !scene.elastic_effects().empty();
   if (scene.fit_free_boundary && !contact)
     throw_bad_input(where, "solve.fit_free_boundary", "true",
                     "needs a contact problem among the effects (signorini, friction, friction_s)");
   if (scene.has_effect(Effect::convergence) && !contact)
     throw_bad_input(where, "run.effects", "convergence",
-                    "'convergence' refines the contact problems of the scene: add signorini, friction or friction_s");
+                    "'convergence' refines the contact problems of the scene: add signorini, friction, friction_s, "
+                    "frictionless, tresca or coulomb");
   if (!scene.given.contains("run.outputs")) return;
   const std::string outputs_where = scene.where("run.outputs");
   if (scene.wants_output(Output::mode) && !scene.has_effect(Effect::infsup))
