@@ -26,7 +26,7 @@
 #include "postprocess/hertz_comparison.hpp"
 #include "scene/scene_reader.hpp"
 #include "slepc_test_environment.hpp"
-#include "space/vector_dofs.hpp"
+#include "space/vector_space.hpp"
 
 using namespace hpcontact;
 
@@ -44,7 +44,8 @@ double energy_error(int n, int p, double poisson, double perturbation = 0.0) {
     mesh::perturb_interior_vertices(m, perturbation, 7);
     for (int size = 2; size < n; size *= 2) m = mesh::refine_uniformly(m);
   }
-  const space::H1Space space(m, p);
+  const space::H1Space scalar_space(m, p);
+  const space::VectorSpace space(scalar_space);
   const std::vector<assembly::Material> materials(m.n_cells(), material(poisson));
   const assembly::CondensedFactor factor(std::make_unique<assembly::ElasticCellSystem>(space, materials));
   const auto load = assembly::assemble_elastic_load(
@@ -100,7 +101,8 @@ TEST(Elasticity, KroneckerAndQuadratureElementMatricesAgreeAndRigidMotionsHaveNo
     EXPECT_LT((a.yy - b.yy).norm(), 1e-12 * scale) << "p = " << p;
     // Vertex shapes reproduce linear fields: the rigid motions (1,0), (0,1), (−y, x) interpolate
     // exactly with vertex coefficients alone, and must have zero energy.
-    const assembly::ElasticCellSystem system(space, {2, material(0.3)});
+    const space::VectorSpace vector_space(space);
+    const assembly::ElasticCellSystem system(vector_space, {2, material(0.3)});
     const Eigen::MatrixXd k = system.element_matrix(0);
     const auto& shapes = space.cell_shapes(0);
     for (int motion = 0; motion < 3; ++motion) {
@@ -283,7 +285,8 @@ const std::string kHertzScene = std::string(HPCONTACT_SOURCE_DIR) + "/studies/el
 postprocess::HertzComparison hertz_run(const std::vector<scene::SceneOverride>& overrides = {}) {
   const auto scene = scene::read_scene(kHertzScene, overrides);
   const auto d = driver::discretize_scene(scene);
-  const operators::ElasticOperators operators(d->mesh, d->cell_degrees, driver::scene_materials(scene, d->mesh));
+  const auto owned = driver::scene_elastic_operators(scene, d->mesh, d->cell_degrees);
+  const operators::ElasticOperators& operators = *owned;
   const auto setup = driver::elastic_setup_of(scene, *d, contact::ElasticContactProblem::frictionless, operators);
   const auto solution = contact::solve_elastic_contact(setup);
   return postprocess::compare_with_hertz(setup, solution, 1.0, 1.0 / (1.0 - 0.3 * 0.3));
@@ -392,6 +395,8 @@ TEST(ElasticScenes, BadInputNamesTheKeyAndTheRule) {
       {{{"nu = \"0.3\"", "nu = \"0.5\""}}, "material.nu"},
       {{{effects, "effects = [\"coulomb\"]"}}, "friction coefficient"},
       {{{effects, "effects = [\"infsup\", \"convergence\"]"}}, "'convergence' refines the contact problems"},
+      {{{"contact = \"abs(y) < 1e-9\"\n", "contact = \"abs(y) < 1e-9\"\nfixed_y = \"abs(y) < 1e-9\"\n"}},
+       "edges outside Γ_C and Γ_D"},
       // A scalar scene with an elastic key: it would do nothing.
       {{{effects, "effects = [\"signorini\"]"},
         {material, ""},
@@ -561,4 +566,22 @@ TEST(ElasticScenes, ConvergenceEffectRefinesTheElasticProblems) {
   ASSERT_EQ(energies.size(), 4u);
   for (std::size_t k = 1; k < energies.size(); ++k) EXPECT_LT(energies[k], energies[k - 1]) << "level " << k;
   for (std::size_t k = 1; k + 1 < errors.size(); ++k) EXPECT_LT(errors[k], 0.5 * errors[k - 1]) << "level " << k;
+}
+
+TEST(ElasticScenes, HalfModelWithASymmetryRollerGivesHalfTheFullModel) {
+  // hertz_half.toml is the right half of hertz.toml (the same cells) with u_x = 0 on x = 0.
+  double energy[2], force[2];
+  int k = 0;
+  for (const char* name : {"hertz.toml", "hertz_half.toml"}) {
+    const auto scene = scene::read_scene(std::string(HPCONTACT_SOURCE_DIR) + "/studies/elasticity/" + name);
+    const auto d = driver::discretize_scene(scene);
+    const auto operators = driver::scene_elastic_operators(scene, d->mesh, d->cell_degrees);
+    const auto setup = driver::elastic_setup_of(scene, *d, contact::ElasticContactProblem::frictionless, *operators);
+    const auto solution = contact::solve_elastic_contact(setup);
+    energy[k] = solution.energy;
+    force[k++] =
+        solution.pressure.sum() > 0 ? postprocess::compare_with_hertz(setup, solution, 1.0, 1.0).total_force : 0.0;
+  }
+  EXPECT_NEAR(energy[1], 0.5 * energy[0], 1e-9 * energy[0]);
+  EXPECT_NEAR(force[1], 0.5 * force[0], 1e-9 * force[0]);
 }

@@ -70,8 +70,7 @@ int run_infsup(const InfSupOptions& o) {
   infsup::InfSupSetup setup;
   if (scene.is_elastic()) {
     if (ranks > 1) throw InputError("the elastic inf-sup analysis runs on one process (not under mpirun)");
-    elastic = std::make_unique<operators::ElasticOperators>(d->mesh, d->cell_degrees,
-                                                            driver::scene_materials(scene, d->mesh));
+    elastic = driver::scene_elastic_operators(scene, d->mesh, d->cell_degrees);
     setup = driver::infsup_setup_of(scene, d->mesh, d->cell_degrees, *d->boundary_mesh, d->segment_degrees, *elastic);
   } else {
     primal = std::make_unique<operators::PrimalOperators>(d->mesh, d->cell_degrees, nullptr,

@@ -6,7 +6,6 @@
 #include "assembly/cell_values.hpp"
 #include "basis/quadrature.hpp"
 #include "core/error.hpp"
-#include "space/vector_dofs.hpp"
 
 namespace hpcontact::assembly {
 
@@ -82,25 +81,26 @@ mesh::Point trace_direction(const mesh::ContactBoundary& contact, int trace_edge
   return (contact.point_at(trace.s_end) - contact.point_at(trace.s_begin)).normalized();
 }
 
-Eigen::SparseMatrix<double> assemble_directional_coupling(const space::H1Space& space,
+Eigen::SparseMatrix<double> assemble_directional_coupling(const space::VectorSpace& space,
                                                           const mesh::ContactBoundary& contact,
                                                           const space::MultiplierSpace& multipliers,
                                                           TraceDirection direction) {
   std::vector<Eigen::Triplet<double>> triplets;
   for (const auto& interval : common_intervals(contact, multipliers.boundary_mesh())) {
-    const Eigen::MatrixXd local = interval_coupling(space, contact, multipliers, interval, {});
+    const Eigen::MatrixXd local = interval_coupling(space.scalar(), contact, multipliers, interval, {});
     const mesh::Point d = trace_direction(contact, interval.trace_edge, direction);
-    const auto& shapes = space.cell_shapes(contact.edges()[interval.trace_edge].cell);
+    const auto& shapes = space.scalar().cell_shapes(contact.edges()[interval.trace_edge].cell);
     const int first = multipliers.first_dof(interval.segment);
     for (std::size_t j = 0; j < shapes.size(); ++j) {
       if (shapes[j].dof < 0) continue;
-      for (int c = 0; c < space::kComponents; ++c)
-        for (int i = 0; i < local.rows(); ++i)
-          if (local(i, j) * d(c) != 0.0)
-            triplets.emplace_back(first + i, space::component_dof(shapes[j].dof, c), local(i, j) * d(c));
+      for (int c = 0; c < space::kComponents; ++c) {
+        const int column = space.dof(shapes[j].dof, c);
+        for (int i = 0; column >= 0 && i < local.rows(); ++i)
+          if (local(i, j) * d(c) != 0.0) triplets.emplace_back(first + i, column, local(i, j) * d(c));
+      }
     }
   }
-  Eigen::SparseMatrix<double> coupling(multipliers.n_dofs(), space::kComponents * space.n_dofs());
+  Eigen::SparseMatrix<double> coupling(multipliers.n_dofs(), space.n_dofs());
   coupling.setFromTriplets(triplets.begin(), triplets.end());
   return coupling;
 }

@@ -10,6 +10,7 @@
 #include "mesh/contact_boundary.hpp"
 #include "space/h1_space.hpp"
 #include "space/multiplier_space.hpp"
+#include "space/vector_space.hpp"
 
 namespace hpcontact::assembly {
 
@@ -29,8 +30,8 @@ mesh::Point trace_direction(const mesh::ContactBoundary& contact, int trace_edge
 
 /// B^d_{i,(j,c)} = ∫_{Γ_C} μ_i φ_j d_c ds with d the normal or the tangent: the pairing of a
 /// multiplier with the normal (tangential) component of a field of [S^p(T_h)]², shape
-/// (n_multiplier_dofs, 2 n_primal_dofs), columns numbered by space::component_dof.
-Eigen::SparseMatrix<double> assemble_directional_coupling(const space::H1Space& space,
+/// (n_multiplier_dofs, space.n_dofs()), columns numbered by space::VectorSpace::dof.
+Eigen::SparseMatrix<double> assemble_directional_coupling(const space::VectorSpace& space,
                                                           const mesh::ContactBoundary& contact,
                                                           const space::MultiplierSpace& multipliers,
                                                           TraceDirection direction);

@@ -2,12 +2,12 @@
 #include "assembly/elastic_load.hpp"
 
 #include "assembly/poisson_assembly.hpp"
-#include "space/vector_dofs.hpp"
 
 namespace hpcontact::assembly {
 
-Eigen::VectorXd assemble_elastic_load(const space::H1Space& space, const VectorFunction& body_force,
+Eigen::VectorXd assemble_elastic_load(const space::VectorSpace& vector_space, const VectorFunction& body_force,
                                       const std::set<mesh::BoundaryPart>& parts, const TractionFunction& traction) {
+  const space::H1Space& space = vector_space.scalar();
   std::array<Eigen::VectorXd, space::kComponents> component;
   for (int c = 0; c < space::kComponents; ++c) {
     component[c] = Eigen::VectorXd::Zero(space.n_dofs());
@@ -16,7 +16,7 @@ Eigen::VectorXd assemble_elastic_load(const space::H1Space& space, const VectorF
       component[c] += assemble_boundary_load(
           space, parts, [&](const mesh::Point& x, const mesh::Point& n) { return traction(x, n)(c); });
   }
-  return space::interleave(component[0], component[1]);
+  return vector_space.from_components(component[0], component[1]);
 }
 
 }  // namespace hpcontact::assembly

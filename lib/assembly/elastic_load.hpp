@@ -6,7 +6,7 @@
 #include <set>
 
 #include "mesh/quad_mesh.hpp"
-#include "space/h1_space.hpp"
+#include "space/vector_space.hpp"
 
 namespace hpcontact::assembly {
 
@@ -14,9 +14,9 @@ using VectorFunction = std::function<Eigen::Vector2d(const mesh::Point&)>;
 /// A traction t(x, n), n the outward unit normal.
 using TractionFunction = std::function<Eigen::Vector2d(const mesh::Point& x, const mesh::Point& normal)>;
 
-/// F_(j,c) = (f_c, φ_j) + ∫_{edges in `parts`} t_c φ_j ds, shape (2 n_dofs), interleaved
-/// (space::component_dof). Either function may be empty (no body force, no traction).
-Eigen::VectorXd assemble_elastic_load(const space::H1Space& space, const VectorFunction& body_force,
+/// F_(j,c) = (f_c, φ_j) + ∫_{edges in `parts`} t_c φ_j ds, shape (space.n_dofs()), numbered by
+/// space::VectorSpace::dof (a fixed component takes no load). Either function may be empty.
+Eigen::VectorXd assemble_elastic_load(const space::VectorSpace& space, const VectorFunction& body_force,
                                       const std::set<mesh::BoundaryPart>& parts, const TractionFunction& traction);
 
 }  // namespace hpcontact::assembly

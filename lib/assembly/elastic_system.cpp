@@ -7,7 +7,6 @@
 #include <cmath>
 
 #include "core/error.hpp"
-#include "space/vector_dofs.hpp"
 
 namespace hpcontact::assembly {
 
@@ -24,25 +23,26 @@ Material lame_parameters(double young, double poisson, PlaneModel model) {
   return {lambda, mu, model == PlaneModel::strain ? lambda : 0.0};
 }
 
-ElasticCellSystem::ElasticCellSystem(const space::H1Space& space, std::vector<Material> materials, double mass_weight)
-    : space_(&space), materials_(std::move(materials)), mass_weight_(mass_weight), element_(space) {
-  if (static_cast<int>(materials_.size()) != space.mesh().n_cells())
-    throw InputError(fmt::format("{} materials given for {} cells", materials_.size(), space.mesh().n_cells()));
+ElasticCellSystem::ElasticCellSystem(const space::VectorSpace& space, std::vector<Material> materials,
+                                     double mass_weight)
+    : space_(&space), materials_(std::move(materials)), mass_weight_(mass_weight), element_(space.scalar()) {
+  if (static_cast<int>(materials_.size()) != mesh().n_cells())
+    throw InputError(fmt::format("{} materials given for {} cells", materials_.size(), mesh().n_cells()));
 }
 
-int ElasticCellSystem::n_dofs() const { return space::kComponents * space_->n_dofs(); }
-int ElasticCellSystem::n_skeleton_dofs() const { return space::kComponents * space_->n_skeleton_dofs(); }
+int ElasticCellSystem::n_dofs() const { return space_->n_dofs(); }
+int ElasticCellSystem::n_skeleton_dofs() const { return space_->n_skeleton_dofs(); }
 
 namespace {
 
 // Both components of each scalar shape, side by side.
-void interleaved_dofs(const space::H1Space& space, int cell, std::vector<CellDof>& out) {
-  const auto& shapes = space.cell_shapes(cell);
+void interleaved_dofs(const space::VectorSpace& space, int cell, std::vector<CellDof>& out) {
+  const auto& shapes = space.scalar().cell_shapes(cell);
   out.resize(space::kComponents * shapes.size());
   for (std::size_t s = 0; s < shapes.size(); ++s) {
     const bool interior = shapes[s].i >= 2 && shapes[s].j >= 2;
     for (int c = 0; c < space::kComponents; ++c)
-      out[space::kComponents * s + c] = {space::component_dof(shapes[s].dof, c), shapes[s].sign, interior};
+      out[space::kComponents * s + c] = {space.dof(shapes[s].dof, c), shapes[s].sign, interior};
   }
 }
 
@@ -78,7 +78,7 @@ Eigen::MatrixXd ElasticCellSystem::element_matrix(int cell) const {
 }
 
 std::optional<CongruenceKey> ElasticCellSystem::congruence_key(int cell) const {
-  auto key = parallelogram_key(*space_, cell, true);
+  auto key = parallelogram_key(space_->scalar(), cell, true);
   if (key) {  // equal geometry and degrees give equal matrices only with equal coefficients
     key->push_back(std::bit_cast<long long>(mass_weight_));
     key->push_back(std::bit_cast<long long>(materials_[cell].lambda));
@@ -87,15 +87,15 @@ std::optional<CongruenceKey> ElasticCellSystem::congruence_key(int cell) const {
   return key;
 }
 
-ComponentwiseCellSystem::ComponentwiseCellSystem(const space::H1Space& space, double stiffness_weight,
+ComponentwiseCellSystem::ComponentwiseCellSystem(const space::VectorSpace& space, double stiffness_weight,
                                                  double mass_weight)
-    : scalar_(space, stiffness_weight, mass_weight) {}
+    : space_(&space), scalar_(space.scalar(), stiffness_weight, mass_weight) {}
 
-int ComponentwiseCellSystem::n_dofs() const { return space::kComponents * scalar_.n_dofs(); }
-int ComponentwiseCellSystem::n_skeleton_dofs() const { return space::kComponents * scalar_.n_skeleton_dofs(); }
+int ComponentwiseCellSystem::n_dofs() const { return space_->n_dofs(); }
+int ComponentwiseCellSystem::n_skeleton_dofs() const { return space_->n_skeleton_dofs(); }
 
 void ComponentwiseCellSystem::cell_dofs(int cell, std::vector<CellDof>& out) const {
-  interleaved_dofs(scalar_.space(), cell, out);
+  interleaved_dofs(*space_, cell, out);
 }
 
 Eigen::MatrixXd ComponentwiseCellSystem::element_matrix(int cell) const {

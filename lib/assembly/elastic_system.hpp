@@ -8,6 +8,7 @@
 
 #include "assembly/cell_system.hpp"
 #include "space/h1_space.hpp"
+#include "space/vector_space.hpp"
 
 namespace hpcontact::assembly {
 
@@ -30,7 +31,8 @@ struct Material {
 Material lame_parameters(double young, double poisson, PlaneModel model);
 
 /// Local unknowns of a cell: component c of scalar shape s at position 2s + c; global dofs by
-/// space::component_dof. Element matrix (signed shapes), with D_ab = (∂_a φ_s, ∂_b φ_t):
+/// space::VectorSpace::dof (-1 where Γ_D or a roller fixes the component). Element matrix (signed shapes), with D_ab =
+/// (∂_a φ_s, ∂_b φ_t):
 ///   a[(s,x),(t,x)] = (λ + 2μ) D_xx + μ D_yy      a[(s,x),(t,y)] = λ D_xy + μ D_yx
 ///   a[(s,y),(t,x)] = λ D_yx + μ D_xy             a[(s,y),(t,y)] = (λ + 2μ) D_yy + μ D_xx
 ///
@@ -39,8 +41,8 @@ Material lame_parameters(double young, double poisson, PlaneModel model);
 class ElasticCellSystem final : public CellSystem {
  public:
   /// `materials`: one per cell. @throws InputError on a size mismatch.
-  ElasticCellSystem(const space::H1Space& space, std::vector<Material> materials, double mass_weight = 0.0);
-  const mesh::QuadMesh& mesh() const override { return space_->mesh(); }
+  ElasticCellSystem(const space::VectorSpace& space, std::vector<Material> materials, double mass_weight = 0.0);
+  const mesh::QuadMesh& mesh() const override { return space_->scalar().mesh(); }
   int n_dofs() const override;
   int n_skeleton_dofs() const override;
   void cell_dofs(int cell, std::vector<CellDof>& out) const override;
@@ -48,7 +50,7 @@ class ElasticCellSystem final : public CellSystem {
   std::optional<CongruenceKey> congruence_key(int cell) const override;
 
  private:
-  const space::H1Space* space_;
+  const space::VectorSpace* space_;
   std::vector<Material> materials_;
   double mass_weight_;
   mutable ElementMatrices element_;
@@ -58,7 +60,7 @@ class ElasticCellSystem final : public CellSystem {
 /// ElasticCellSystem.
 class ComponentwiseCellSystem final : public CellSystem {
  public:
-  ComponentwiseCellSystem(const space::H1Space& space, double stiffness_weight, double mass_weight);
+  ComponentwiseCellSystem(const space::VectorSpace& space, double stiffness_weight, double mass_weight);
   const mesh::QuadMesh& mesh() const override { return scalar_.mesh(); }
   int n_dofs() const override;
   int n_skeleton_dofs() const override;
@@ -67,6 +69,7 @@ class ComponentwiseCellSystem final : public CellSystem {
   std::optional<CongruenceKey> congruence_key(int cell) const override { return scalar_.congruence_key(cell); }
 
  private:
+  const space::VectorSpace* space_;
   ScalarCellSystem scalar_;
 };
 

@@ -146,8 +146,8 @@ ElasticContactSolution solve_elastic_contact(const ElasticContactSetup& setup) {
   // 1. The load, B (normal part, then tangential) and the constraints in the nodal basis.
   Stopwatch assembly_clock;
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
-  const Eigen::VectorXd load =
-      assembly::assemble_elastic_load(ops.space(), setup.body_force, {mesh::BoundaryPart::neumann}, setup.traction);
+  const Eigen::VectorXd load = assembly::assemble_elastic_load(ops.vector_space(), setup.body_force,
+                                                               {mesh::BoundaryPart::neumann}, setup.traction);
   CondensedProblem problem = condensed_problem(setup, multipliers);
   out.seconds.assembly = assembly_clock.seconds();
 

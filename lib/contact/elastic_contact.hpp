@@ -47,7 +47,7 @@ struct ElasticContactSetup {
 };
 
 struct ElasticContactSolution {
-  Eigen::VectorXd u;  ///< displacement, interleaved (space::component_dof)
+  Eigen::VectorXd u;  ///< displacement, numbered by space::VectorSpace::dof
   /// Contact pressure p = −σ_nn ≥ 0 and tangential traction σ_nt on the body (along the tangent
   /// of increasing arc length), Legendre coefficients in M^{p_C}(T_{C,H}); σ_nt = 0 without friction.
   Eigen::VectorXd pressure, shear;

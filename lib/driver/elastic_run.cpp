@@ -13,6 +13,7 @@
 #include "io/vtu_writer.hpp"
 #include "mesh/cell_map.hpp"
 #include "postprocess/elastic_boundary_samples.hpp"
+#include "scene/scene_mesh.hpp"
 
 namespace hpcontact::driver {
 
@@ -33,6 +34,14 @@ std::vector<assembly::Material> scene_materials(const scene::Scene& scene, const
     materials[c] = assembly::lame_parameters(e, nu, scene.plane_model);
   }
   return materials;
+}
+
+std::unique_ptr<operators::ElasticOperators> scene_elastic_operators(const scene::Scene& scene,
+                                                                     const mesh::QuadMesh& mesh,
+                                                                     const std::vector<int>& cell_degrees,
+                                                                     OperatorLog* log) {
+  return std::make_unique<operators::ElasticOperators>(mesh, cell_degrees, scene_materials(scene, mesh), log,
+                                                       scene::scene_fixed_components(scene, mesh));
 }
 
 namespace {
@@ -122,8 +131,7 @@ io::CsvTable elastic_convergence(const scene::Scene& scene, const SceneDiscretiz
     refined.refinements += k;
     Level level{discretize_scene(refined), nullptr, nullptr, {}};
     level.d = level.own.get();
-    level.operators = std::make_unique<operators::ElasticOperators>(level.d->mesh, level.d->cell_degrees,
-                                                                    scene_materials(refined, level.d->mesh));
+    level.operators = scene_elastic_operators(refined, level.d->mesh, level.d->cell_degrees);
     level.effects =
         solve_elastic_effects(refined, *level.d, *level.operators, options, fmt::format(" (convergence level {})", k));
     levels.push_back(std::move(level));
@@ -185,7 +193,7 @@ void write_outputs(const scene::Scene& scene, const operators::ElasticOperators&
     if (scene.wants_output(scene::Output::boundary))
       effect.samples.table.write(out / ("boundary_" + effect.name + ".csv"));
     if (scene.wants_output(scene::Output::vtu))
-      io::write_elastic_vtu(out / ("solution_" + effect.name + ".vtu"), operators.space(), operators.materials(),
+      io::write_elastic_vtu(out / ("solution_" + effect.name + ".vtu"), operators.vector_space(), operators.materials(),
                             effect.solution.u);
   }
   if (extra.mode) extra.mode->write(out / "mode.csv");
@@ -202,7 +210,8 @@ nlohmann::json run_elastic_scene(const scene::Scene& scene, const SceneRunOption
   // 1. Meshes, degrees and materials; the operators are built on first use and shared.
   const auto d = discretize_scene(scene);
   OperatorLog log;
-  const operators::ElasticOperators operators(d->mesh, d->cell_degrees, scene_materials(scene, d->mesh), &log);
+  const auto owned = scene_elastic_operators(scene, d->mesh, d->cell_degrees, &log);
+  const operators::ElasticOperators& operators = *owned;
   // 2. The contact problems.
   const std::vector<ElasticEffect> effects = solve_elastic_effects(scene, *d, operators, options, "");
   // 3. Convergence under uniform refinement, then the inf-sup constant of the elastic pairing.

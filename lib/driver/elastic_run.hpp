@@ -2,6 +2,7 @@
 // set of operators, and their outputs. run_scene hands elastic scenes to run_elastic_scene.
 #pragma once
 
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <vector>
 
@@ -16,6 +17,12 @@ namespace hpcontact::driver {
 /// (E, ν) of the scene evaluated at each cell's centre, as Lamé parameters of its plane model.
 /// @throws InputError naming the key, the value and the cell centre where E ≤ 0 or ν ∉ (−1, ½).
 std::vector<assembly::Material> scene_materials(const scene::Scene& scene, const mesh::QuadMesh& mesh);
+
+/// The elastic operators of the scene on T_h (`mesh`, `cell_degrees`): its materials and rollers.
+std::unique_ptr<operators::ElasticOperators> scene_elastic_operators(const scene::Scene& scene,
+                                                                     const mesh::QuadMesh& mesh,
+                                                                     const std::vector<int>& cell_degrees,
+                                                                     OperatorLog* log = nullptr);
 
 /// The elastic contact problem `problem` of the scene on `d` (data from the scene's expressions,
 /// s ≥ 0 checked where evaluated); `operators` must belong to the discretization.

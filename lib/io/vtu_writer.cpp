@@ -6,7 +6,6 @@
 #include <cmath>
 
 #include "io/atomic_file.hpp"
-#include "space/vector_dofs.hpp"
 
 namespace hpcontact::io {
 
@@ -62,12 +61,14 @@ void write_vtu_fields(const std::filesystem::path& path, const space::H1Space& s
 namespace {
 
 // The coefficients of u on one cell's shapes, shape (n_shapes, components); 0 where eliminated.
-Eigen::MatrixXd cell_coefficients(const space::H1Space& space, int cell, const Eigen::VectorXd& u, int components) {
+// `dof(scalar dof, component)` numbers u.
+Eigen::MatrixXd cell_coefficients(const space::H1Space& space, int cell, const Eigen::VectorXd& u, int components,
+                                  const std::function<int(int, int)>& dof) {
   const auto& shapes = space.cell_shapes(cell);
   Eigen::MatrixXd local = Eigen::MatrixXd::Zero(shapes.size(), components);
   for (std::size_t s = 0; s < shapes.size(); ++s)
     for (int k = 0; k < components; ++k)
-      if (shapes[s].dof >= 0) local(s, k) = u(components == 1 ? shapes[s].dof : space::component_dof(shapes[s].dof, k));
+      if (const int index = dof(shapes[s].dof, k); index >= 0) local(s, k) = u(index);
   return local;
 }
 
@@ -75,23 +76,26 @@ Eigen::MatrixXd cell_coefficients(const space::H1Space& space, int cell, const E
 
 void write_vtu(const std::filesystem::path& path, const space::H1Space& space, const Eigen::VectorXd& u,
                int subdivisions) {
-  write_vtu_fields(path, space,
-                   {{"u", 1,
-                     [&](int cell, const assembly::CellValues& values) {
-                       return Eigen::MatrixXd(values.values * cell_coefficients(space, cell, u, 1));
-                     }}},
-                   subdivisions);
+  write_vtu_fields(
+      path, space,
+      {{"u", 1,
+        [&](int cell, const assembly::CellValues& values) {
+          return Eigen::MatrixXd(values.values * cell_coefficients(space, cell, u, 1, [](int d, int) { return d; }));
+        }}},
+      subdivisions);
 }
 
-void write_elastic_vtu(const std::filesystem::path& path, const space::H1Space& space,
+void write_elastic_vtu(const std::filesystem::path& path, const space::VectorSpace& vector_space,
                        const std::vector<assembly::Material>& materials, const Eigen::VectorXd& u) {
+  const space::H1Space& space = vector_space.scalar();
+  const auto dof = [&](int d, int c) { return vector_space.dof(d, c); };
   auto displacement = [&](int cell, const assembly::CellValues& values) {
     Eigen::MatrixXd out = Eigen::MatrixXd::Zero(values.values.rows(), 3);
-    out.leftCols(2) = values.values * cell_coefficients(space, cell, u, 2);
+    out.leftCols(2) = values.values * cell_coefficients(space, cell, u, 2, dof);
     return out;
   };
   auto von_mises = [&](int cell, const assembly::CellValues& values) {
-    const Eigen::MatrixXd local = cell_coefficients(space, cell, u, 2);
+    const Eigen::MatrixXd local = cell_coefficients(space, cell, u, 2, dof);
     const Eigen::MatrixXd dx = values.grad_x * local, dy = values.grad_y * local;  // columns: components
     const auto& m = materials[cell];
     Eigen::MatrixXd out(values.values.rows(), 1);

@@ -11,6 +11,7 @@
 #include "assembly/cell_values.hpp"
 #include "assembly/elastic_system.hpp"
 #include "space/h1_space.hpp"
+#include "space/vector_space.hpp"
 
 namespace hpcontact::io {
 
@@ -30,9 +31,9 @@ void write_vtu_fields(const std::filesystem::path& path, const space::H1Space& s
 void write_vtu(const std::filesystem::path& path, const space::H1Space& space, const Eigen::VectorXd& u,
                int subdivisions = 0);
 
-/// A displacement of [S^p(T_h)]² (interleaved) as the vector field "displacement" and the von
+/// A displacement of [S^p(T_h)]² as the vector field "displacement" and the von
 /// Mises stress "von_mises" (with σ_zz of the plane model).
-void write_elastic_vtu(const std::filesystem::path& path, const space::H1Space& space,
+void write_elastic_vtu(const std::filesystem::path& path, const space::VectorSpace& space,
                        const std::vector<assembly::Material>& materials, const Eigen::VectorXd& u);
 
 }  // namespace hpcontact::io

@@ -8,17 +8,18 @@
 #include "linalg/sparse_cholesky.hpp"
 #include "mesh/boundary_mesh.hpp"
 #include "operators/primal_operators.hpp"
-#include "space/vector_dofs.hpp"
 
 namespace hpcontact::operators {
 
 std::string to_string(PrimalNorm norm) { return norm == PrimalNorm::h1 ? "h1" : "energy"; }
 
 ElasticOperators::ElasticOperators(const mesh::QuadMesh& mesh, std::vector<int> cell_degrees,
-                                   std::vector<assembly::Material> materials, OperatorLog* log)
+                                   std::vector<assembly::Material> materials, OperatorLog* log,
+                                   const std::array<std::vector<char>, space::kComponents>& fixed)
     : mesh_(&mesh), materials_(std::move(materials)), log_(log) {
   Stopwatch clock;
   space_ = std::make_unique<space::H1Space>(mesh, std::move(cell_degrees));
+  vector_space_ = std::make_unique<space::VectorSpace>(*space_, fixed);
   contact_ = std::make_unique<mesh::ContactBoundary>(mesh);
   if (static_cast<int>(materials_.size()) != mesh.n_cells())
     throw InputError("elasticity: one material per cell is needed");
@@ -37,23 +38,25 @@ const std::vector<int>& ElasticOperators::trace_dofs() const {
     const auto scalar = linalg::nonzero_columns(assembly::assemble_coupling(*space_, *contact_, full_trace));
     trace_dofs_ = std::make_unique<std::vector<int>>();
     for (int dof : scalar)
-      for (int c = 0; c < space::kComponents; ++c) trace_dofs_->push_back(space::component_dof(dof, c));
+      for (int c = 0; c < space::kComponents; ++c)
+        if (const int k = vector_space_->dof(dof, c); k >= 0) trace_dofs_->push_back(k);
   }
   return *trace_dofs_;
 }
 
 const assembly::CondensedFactor& ElasticOperators::stiffness_factor() const {
   if (!stiffness_factor_) {
-    bool dirichlet = false;
+    bool dirichlet = vector_space_->has_rollers();
     for (int e : mesh_->boundary_edges()) dirichlet = dirichlet || mesh_->edge_part(e) == mesh::BoundaryPart::dirichlet;
     if (!dirichlet)
       throw InputError(
           "the body has no Dirichlet part (no boundary edge is in Γ_D: key 'boundary.dirichlet' or "
-          "'boundary.dirichlet_groups'): the elasticity operator is singular, since rigid motions have no "
-          "energy, and the contact problems need the body held somewhere");
+          "'boundary.dirichlet_groups', and no roller: 'boundary.fixed_x', 'boundary.fixed_y'): the elasticity "
+          "operator is singular, since rigid motions have no energy, and the contact problems need the body held "
+          "somewhere");
     Stopwatch clock;
     stiffness_factor_ = std::make_unique<assembly::CondensedFactor>(
-        std::make_unique<assembly::ElasticCellSystem>(*space_, materials_), trace_dofs());
+        std::make_unique<assembly::ElasticCellSystem>(*vector_space_, materials_), trace_dofs());
     if (log_) log_->record("factor(A)", n_dofs(), n_dofs(), clock.seconds());
   }
   return *stiffness_factor_;
@@ -65,9 +68,9 @@ const assembly::CondensedFactor& ElasticOperators::gram_factor(PrimalNorm norm) 
     Stopwatch clock;
     std::unique_ptr<const assembly::CellSystem> system;
     if (norm == PrimalNorm::h1)
-      system = std::make_unique<assembly::ComponentwiseCellSystem>(*space_, 1.0, 1.0);
+      system = std::make_unique<assembly::ComponentwiseCellSystem>(*vector_space_, 1.0, 1.0);
     else
-      system = std::make_unique<assembly::ElasticCellSystem>(*space_, materials_, 1.0);
+      system = std::make_unique<assembly::ElasticCellSystem>(*vector_space_, materials_, 1.0);
     slot = std::make_unique<assembly::CondensedFactor>(std::move(system), trace_dofs());
     if (log_)
       log_->record(norm == PrimalNorm::h1 ? "factor(K+M)^2" : "factor(A+M)", n_dofs(), n_dofs(), clock.seconds());
@@ -82,8 +85,10 @@ const Eigen::SparseMatrix<double>& ElasticOperators::coupling(const space::Multi
   auto found = couplings_.find(key);
   if (found == couplings_.end()) {
     Stopwatch clock;
-    found = couplings_.emplace(key, assembly::assemble_directional_coupling(*space_, *contact_, multipliers, direction))
-                .first;
+    found =
+        couplings_
+            .emplace(key, assembly::assemble_directional_coupling(*vector_space_, *contact_, multipliers, direction))
+            .first;
     if (log_) log_->record(name, found->second.rows(), found->second.cols(), clock.seconds());
   }
   return found->second;

@@ -16,6 +16,7 @@
 #include "mesh/contact_boundary.hpp"
 #include "space/h1_space.hpp"
 #include "space/multiplier_space.hpp"
+#include "space/vector_space.hpp"
 
 namespace hpcontact::operators {
 
@@ -28,20 +29,23 @@ std::string to_string(PrimalNorm norm);
 class ElasticOperators {
  public:
   /// `mesh` (and `log`, when given) must outlive the object; `materials` one per cell.
-  /// Γ_D clamps both components (u = 0 there).
+  /// Γ_D clamps both components (u = 0 there); `fixed[c]` marks the boundary edges where
+  /// component c alone vanishes (rollers; see space::VectorSpace).
   ElasticOperators(const mesh::QuadMesh& mesh, std::vector<int> cell_degrees, std::vector<assembly::Material> materials,
-                   OperatorLog* log = nullptr);
+                   OperatorLog* log = nullptr, const std::array<std::vector<char>, space::kComponents>& fixed = {});
   ~ElasticOperators();
 
   const mesh::QuadMesh& mesh() const { return *mesh_; }
-  /// The scalar space S^p(T_h); the displacement has 2 n_dofs unknowns (space::component_dof).
+  /// The scalar space S^p(T_h), and the displacement space [S^p(T_h)]² with its rollers.
   const space::H1Space& space() const { return *space_; }
-  int n_dofs() const { return 2 * space_->n_dofs(); }
+  const space::VectorSpace& vector_space() const { return *vector_space_; }
+  int n_dofs() const { return vector_space_->n_dofs(); }
   const mesh::ContactBoundary& contact() const { return *contact_; }
   const std::vector<assembly::Material>& materials() const { return materials_; }
 
   /// A factorized with the trace last ("factor(A)").
-  /// @throws InputError if the body has no Dirichlet part (A would be singular: rigid motions).
+  /// @throws InputError if the body has neither a Dirichlet part nor rollers (A would be singular:
+  /// rigid motions); NumericalError if rollers alone leave a rigid motion free.
   const assembly::CondensedFactor& stiffness_factor() const;
   /// The Gram matrix of `norm` on [S^p(T_h)]² factorized with the trace last ("factor(K+M)^2" or
   /// "factor(A+M)").
@@ -56,6 +60,7 @@ class ElasticOperators {
  private:
   const mesh::QuadMesh* mesh_;
   std::unique_ptr<space::H1Space> space_;
+  std::unique_ptr<space::VectorSpace> vector_space_;
   std::unique_ptr<mesh::ContactBoundary> contact_;
   std::vector<assembly::Material> materials_;
   OperatorLog* log_;

@@ -5,7 +5,6 @@
 #include "assembly/coupling.hpp"
 #include "postprocess/fe_function.hpp"
 #include "space/multiplier_space.hpp"
-#include "space/vector_dofs.hpp"
 
 namespace hpcontact::postprocess {
 
@@ -14,8 +13,8 @@ ElasticBoundarySamples sample_elastic_boundary(const contact::ElasticContactSetu
   const auto& ops = *setup.operators;
   const auto& contact = ops.contact();
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
-  const std::array<Eigen::VectorXd, 2> components{space::component_of(solution.u, 0),
-                                                  space::component_of(solution.u, 1)};
+  const std::array<Eigen::VectorXd, 2> components{ops.vector_space().component(solution.u, 0),
+                                                  ops.vector_space().component(solution.u, 1)};
   ElasticBoundarySamples out{io::CsvTable({"x", "y", "s_arc", "u_n", "u_t", "gap", "pressure", "traction_t"}), 0.0,
                              0.0};
   for (int k = 0; k < multipliers.n_segments(); ++k)  // ∫ P_0 = 2 on [-1, 1]: c_0 times the length

@@ -5,12 +5,13 @@
 
 #include "assembly/cell_values.hpp"
 #include "basis/quadrature.hpp"
-#include "space/vector_dofs.hpp"
 
 namespace hpcontact::postprocess {
 
-ElasticErrors compute_elastic_errors(const space::H1Space& space, const std::vector<assembly::Material>& materials,
-                                     const Eigen::VectorXd& u, const ExactDisplacement& exact) {
+ElasticErrors compute_elastic_errors(const space::VectorSpace& vector_space,
+                                     const std::vector<assembly::Material>& materials, const Eigen::VectorXd& u,
+                                     const ExactDisplacement& exact) {
+  const space::H1Space& space = vector_space.scalar();
   double l2_squared = 0.0, energy_squared = 0.0;
   for (int c = 0; c < space.mesh().n_cells(); ++c) {
     const auto& rule = basis::gauss_legendre(space.cell_degree(c) + 4);
@@ -19,7 +20,7 @@ ElasticErrors compute_elastic_errors(const space::H1Space& space, const std::vec
     Eigen::MatrixXd local = Eigen::MatrixXd::Zero(shapes.size(), 2);  // column = component
     for (std::size_t s = 0; s < shapes.size(); ++s)
       for (int k = 0; k < 2; ++k)
-        if (shapes[s].dof >= 0) local(s, k) = u(space::component_dof(shapes[s].dof, k));
+        if (const int dof = vector_space.dof(shapes[s].dof, k); dof >= 0) local(s, k) = u(dof);
     const Eigen::MatrixXd values = cell.values * local, dx = cell.grad_x * local, dy = cell.grad_y * local;
     const double lambda = materials[c].lambda, mu = materials[c].mu;
     const auto n = rule.points.size();

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "assembly/elastic_system.hpp"
-#include "space/h1_space.hpp"
+#include "space/vector_space.hpp"
 
 namespace hpcontact::postprocess {
 
@@ -21,8 +21,9 @@ struct ElasticErrors {
   double energy = 0.0;  ///< ‖u − u_h‖_E = a(u − u_h, u − u_h)^{1/2}
 };
 
-/// `u` interleaved (space::component_dof); p_T + 4 Gauss points per direction in each cell.
-ElasticErrors compute_elastic_errors(const space::H1Space& space, const std::vector<assembly::Material>& materials,
-                                     const Eigen::VectorXd& u, const ExactDisplacement& exact);
+/// `u` numbered by space::VectorSpace::dof; p_T + 4 Gauss points per direction in each cell.
+ElasticErrors compute_elastic_errors(const space::VectorSpace& vector_space,
+                                     const std::vector<assembly::Material>& materials, const Eigen::VectorXd& u,
+                                     const ExactDisplacement& exact);
 
 }  // namespace hpcontact::postprocess

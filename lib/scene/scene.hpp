@@ -58,6 +58,9 @@ struct Scene {
   // [boundary]: predicates in x, y on edge midpoints (non-zero = inside), or Gmsh group names.
   std::string contact_predicate, dirichlet_predicate;
   std::vector<std::string> contact_groups, dirichlet_groups;
+  /// Elastic scenes: edges where u_x = 0 (u_y = 0) alone (rollers), by predicate or Gmsh group.
+  std::string fixed_x_predicate, fixed_y_predicate;
+  std::vector<std::string> fixed_x_groups, fixed_y_groups;
   // [contact_mesh]: exactly one of m, ratio (= h/H), breakpoints.
   int m = 0;
   std::optional<Ratio> ratio;

@@ -225,6 +225,12 @@ void add_boundary_and_contact_mesh_keys(std::vector<SceneKey>& keys) {
   add(names_key("boundary", "contact_groups", &Scene::contact_groups,
                 "Γ_C as Gmsh physical groups (instead of `contact`)"));
   add(names_key("boundary", "dirichlet_groups", &Scene::dirichlet_groups, "Γ_D as Gmsh physical groups"));
+  add(expression_key("boundary", "fixed_x", "", &Scene::fixed_x_predicate,
+                     "elastic scenes: edges (midpoint predicate) where u_x = 0 alone, a roller; u_y stays free"));
+  add(expression_key("boundary", "fixed_y", "", &Scene::fixed_y_predicate,
+                     "elastic scenes: edges where u_y = 0 alone, a roller; u_x stays free"));
+  add(names_key("boundary", "fixed_x_groups", &Scene::fixed_x_groups, "`fixed_x` as Gmsh physical groups"));
+  add(names_key("boundary", "fixed_y_groups", &Scene::fixed_y_groups, "`fixed_y` as Gmsh physical groups"));
   // [contact_mesh]
   const char* size_group = "contact_mesh size";
   SceneKey m =

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <optional>
 #include <set>
 
 #include "core/error.hpp"
@@ -118,6 +119,37 @@ int whole_degree(const Expression& rule, const mesh::Point& x, int low, int high
 }
 
 }  // namespace
+
+std::array<std::vector<char>, 2> scene_fixed_components(const Scene& scene, const mesh::QuadMesh& mesh) {
+  std::array<std::vector<char>, 2> fixed;
+  const std::array<const std::string*, 2> predicates{&scene.fixed_x_predicate, &scene.fixed_y_predicate};
+  const std::array<const std::vector<std::string>*, 2> groups{&scene.fixed_x_groups, &scene.fixed_y_groups};
+  for (int c = 0; c < 2; ++c) {
+    if (predicates[c]->empty() && groups[c]->empty()) continue;
+    const std::string key =
+        std::string("boundary.fixed_") + (c == 0 ? "x" : "y") + (predicates[c]->empty() ? "_groups" : "");
+    std::optional<Expression> predicate;
+    if (!predicates[c]->empty()) predicate.emplace(*predicates[c], scene.where(key) + ": key '" + key + "'");
+    fixed[c].assign(mesh.n_edges(), 0);
+    int selected = 0;
+    for (int e : mesh.boundary_edges()) {
+      const mesh::Point m = mesh.edge_midpoint(e);
+      bool on = predicate && (*predicate)(m.x(), m.y()) != 0.0;
+      for (const auto& group : *groups[c]) on = on || mesh.edge_label(e) == group;
+      if (!on) continue;
+      if (mesh.edge_part(e) != mesh::BoundaryPart::neumann)
+        throw_bad_input(scene.where(key), key, fmt::format("(the edge with midpoint ({}, {}))", m.x(), m.y()),
+                        fmt::format("edges outside Γ_C and Γ_D (this one is {})", mesh::to_string(mesh.edge_part(e))));
+      fixed[c][e] = 1;
+      ++selected;
+    }
+    if (selected == 0)
+      throw_bad_input(scene.where(key), key,
+                      predicates[c]->empty() ? fmt::format("{}", fmt::join(*groups[c], ", ")) : *predicates[c],
+                      "it must select at least one boundary edge");
+  }
+  return fixed;
+}
 
 std::vector<int> scene_cell_degrees(const Scene& scene, const mesh::QuadMesh& mesh) {
   if (scene.p.rule.empty()) return std::vector<int>(mesh.n_cells(), scene.p.value);

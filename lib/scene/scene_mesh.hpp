@@ -2,6 +2,7 @@
 // segment, and T_{C,H} on Γ_C.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "mesh/boundary_mesh.hpp"
@@ -13,6 +14,12 @@ namespace hpcontact::scene {
 
 /// T_h with boundary parts. @throws InputError if Γ_C is empty or Γ_C and Γ_D overlap.
 mesh::QuadMesh build_scene_mesh(const Scene& scene);
+
+/// The boundary edges where one displacement component alone vanishes (rollers of an elastic
+/// scene: [boundary] fixed_x, fixed_y and their _groups), one mask per component, each of size
+/// n_edges (empty when the scene gives none). @throws InputError naming the key if a roller edge
+/// lies on Γ_C or Γ_D, or a key selects no edge.
+std::array<std::vector<char>, 2> scene_fixed_components(const Scene& scene, const mesh::QuadMesh& mesh);
 
 /// p_T per cell (the rule at Ψ_T(0,0), or p). @throws InputError for values that are not whole
 /// numbers in [1, 20].

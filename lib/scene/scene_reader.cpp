@@ -132,9 +132,18 @@ namespace {
 
 // Keys that apply only to one kind of body: given for the other, they would silently do nothing.
 const std::vector<std::string>& elastic_only_keys() {
-  static const std::vector<std::string> keys{
-      "material.E", "material.nu", "material.model", "data.f_x",
-      "data.f_y",   "data.t_x",    "data.t_y",       "data.friction_coefficient"};
+  static const std::vector<std::string> keys{"material.E",
+                                             "material.nu",
+                                             "material.model",
+                                             "data.f_x",
+                                             "data.f_y",
+                                             "data.t_x",
+                                             "data.t_y",
+                                             "data.friction_coefficient",
+                                             "boundary.fixed_x",
+                                             "boundary.fixed_y",
+                                             "boundary.fixed_x_groups",
+                                             "boundary.fixed_y_groups"};
   return keys;
 }
 

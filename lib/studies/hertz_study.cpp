@@ -64,7 +64,8 @@ HertzRow run_level(const HertzStudy& study, const std::string& sequence, int lev
   Stopwatch clock;
   const auto& scene = variant.scene;
   const auto d = driver::discretize_scene(scene);
-  const operators::ElasticOperators operators(d->mesh, d->cell_degrees, driver::scene_materials(scene, d->mesh));
+  const auto owned = driver::scene_elastic_operators(scene, d->mesh, d->cell_degrees);
+  const operators::ElasticOperators& operators = *owned;
   const auto setup = driver::elastic_setup_of(scene, *d, contact::ElasticContactProblem::frictionless, operators);
   const auto solution = contact::solve_elastic_contact(setup);
   const double seconds = clock.seconds();

@@ -147,8 +147,9 @@ void add_elastic_rows(const PerformanceBenchmark& benchmark, const scene::Scene&
                                          {"data.friction_coefficient", 0.3, origin}});
   const auto d = driver::discretize_scene(scene);
   const auto materials = driver::scene_materials(scene, d->mesh);
-  const space::H1Space space(d->mesh, d->cell_degrees);
-  base.ndofs = 2 * space.n_dofs();
+  const space::H1Space scalar_space(d->mesh, d->cell_degrees);
+  const space::VectorSpace space(scalar_space);
+  base.ndofs = space.n_dofs();
   const Eigen::VectorXd load =
       assembly::assemble_elastic_load(space, [](const mesh::Point&) { return Eigen::Vector2d(0.0, -1.0); }, {}, {});
   BenchmarkRow linear_a = base;

@@ -212,8 +212,7 @@ struct GroupMesh {
         contact(mesh),
         cell_degrees(scene::scene_cell_degrees(scene, mesh)),
         primal(mesh, cell_degrees) {
-    if (scene.is_elastic())
-      elastic = std::make_unique<operators::ElasticOperators>(mesh, cell_degrees, driver::scene_materials(scene, mesh));
+    if (scene.is_elastic()) elastic = driver::scene_elastic_operators(scene, mesh, cell_degrees);
   }
 };
 

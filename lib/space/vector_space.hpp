@@ -1,0 +1,44 @@
+// [S^p(T_h)]², the displacement space of elasticity: two components per dof of the scalar space
+// S^p(T_h) (whose Dirichlet elimination on Γ_D holds both components), and boundary edges on which
+// one component alone vanishes (rollers: u_x = 0 or u_y = 0, the other component free).
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+#include <vector>
+
+#include "space/h1_space.hpp"
+
+namespace hpcontact::space {
+
+inline constexpr int kComponents = 2;
+
+class VectorSpace {
+ public:
+  /// `fixed[c][e]` non-zero: component c vanishes on boundary edge e (closed: with its
+  /// vertices); each either empty (nowhere) or of size n_edges. Unknowns are numbered scalar dof
+  /// by scalar dof, x before y, so that skeleton unknowns stay before interior ones.
+  /// @throws InputError if a mask has the wrong size or marks an interior edge.
+  explicit VectorSpace(const H1Space& scalar, const std::array<std::vector<char>, kComponents>& fixed = {});
+
+  const H1Space& scalar() const { return *scalar_; }
+  int n_dofs() const { return n_dofs_; }
+  int n_skeleton_dofs() const { return n_skeleton_dofs_; }
+  /// The unknown of component c of scalar dof d; -1 where it is eliminated (d < 0, or fixed).
+  int dof(int scalar_dof, int component) const {
+    return scalar_dof < 0 ? -1 : dofs_[kComponents * scalar_dof + component];
+  }
+  /// Whether some edge fixes one component alone.
+  bool has_rollers() const { return n_dofs_ < kComponents * scalar_->n_dofs(); }
+  /// The coefficients of one component over the scalar dofs (0 where fixed), shape (scalar n_dofs).
+  Eigen::VectorXd component(const Eigen::VectorXd& u, int component) const;
+  /// The unknowns of the field with these component coefficients (each of scalar size).
+  Eigen::VectorXd from_components(const Eigen::VectorXd& x, const Eigen::VectorXd& y) const;
+
+ private:
+  const H1Space* scalar_;
+  std::vector<int> dofs_;  ///< (scalar dof, component) → unknown or -1
+  int n_dofs_ = 0, n_skeleton_dofs_ = 0;
+};
+
+}  // namespace hpcontact::space
