@@ -133,6 +133,33 @@ TEST(InequalityQp, EqualityRowsAndSingularHessian) {
   EXPECT_NEAR((p.c.row(17) * result.x)(0), 0.25, 1e-11);
 }
 
+TEST(InequalityQp, DependentEqualityRowsOfAVanishingBound) {
+  // A segment where the bound is 0 with more constraint points (5) than coefficients (3): five
+  // equality rows on three unknowns, rank 3. The Newton system with all five was singular
+  // (stationarity residual inf); reduced to the row space they fix x = 0 there. A fourth unknown
+  // keeps a box row.
+  Eigen::MatrixXd c = Eigen::MatrixXd::Zero(6, 4);
+  // Legendre values at five points, two of them repeated exactly (as the nodal points recur among
+  // Chebyshev–Lobatto points).
+  const double points[] = {-1.0, 0.0, 1.0, -1.0, 0.0};
+  for (int j = 0; j < 5; ++j) {
+    const double t = points[j];
+    c.row(j) << 1.0, t, 0.5 * (3 * t * t - 1), 0.0;
+  }
+  c(5, 3) = 1.0;
+  Eigen::VectorXd lo = Eigen::VectorXd::Zero(6), hi = Eigen::VectorXd::Zero(6);
+  lo(5) = -1.0;
+  hi(5) = 1.0;
+  const Eigen::MatrixXd s = Eigen::MatrixXd::Identity(4, 4);
+  const Eigen::VectorXd d = (Eigen::VectorXd(4) << 1.0, 2.0, 3.0, 5.0).finished();
+  const auto result = contact::solve_inequality_qp(s, d, c, lo, hi);
+  EXPECT_LT(result.report.kkt_residual, 1e-12);
+  EXPECT_LT(result.x.head(3).lpNorm<Eigen::Infinity>(), 1e-12);
+  EXPECT_NEAR(result.x(3), 1.0, 1e-12);
+  // Stationarity with the multipliers of every row: S x − d + Cᵀ y = 0.
+  EXPECT_LT((s * result.x - d + c.transpose() * result.y).lpNorm<Eigen::Infinity>(), 1e-10);
+}
+
 TEST(InequalityQp, ScalingTheDataScalesTheSolutionWithTheSameIterations) {
   const auto p = random_problem(20, 20, 50, true, 11);
   const auto reference = contact::solve_inequality_qp(p.s, p.d, p.c, p.lo, p.hi);

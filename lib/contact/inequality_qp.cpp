@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include <Eigen/LU>
+#include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -76,10 +77,16 @@ double step_to_boundary(const Eigen::VectorXd& v, const Eigen::VectorXd& dv) {
 namespace {
 
 // The rows of C split into one-sided inequalities G x ≤ h (±C_j for each finite bound) and
-// equalities E x = e (rows with lo_j = hi_j).
+// equalities E x = e (rows with lo_j = hi_j). Equality rows that depend on others (a bound
+// s ≡ 0 on a segment with more constraint points than coefficients: q rows on p_C + 1 unknowns)
+// would make the Newton system [S + …, Eᵀ; E, 0] singular: E is then replaced by an orthonormal
+// basis Q_rᵀ of its row space (Eᵀ = Q R Π, rank r) with e → Q_rᵀ x₀, x₀ the least-squares solution
+// of E x = e, and the multipliers w of these rows map back to C's rows by the least-norm solution
+// of Eᵀ y_E = Q_r w (`equality_rows`).
 struct OneSidedForm {
   Eigen::MatrixXd g, e;
   Eigen::VectorXd h, e_value;
+  Eigen::MatrixXd equality_rows;  ///< (original equality rows, rows of e): y_E = equality_rows · w
   std::vector<Eigen::Index> g_row, e_row;
   std::vector<double> g_sign;
   Eigen::Index rows = 0;
@@ -106,12 +113,23 @@ struct OneSidedForm {
       h(i) = g_sign[i] > 0 ? hi(g_row[i]) : -lo(g_row[i]);
     }
     for (Eigen::Index i = 0; i < k; ++i) e.row(i) = c.row(e_row[i]), e_value(i) = lo(e_row[i]);
+    equality_rows = Eigen::MatrixXd::Identity(k, k);
+    if (k == 0) return;
+    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(e.transpose());
+    const Eigen::Index rank = qr.rank();
+    if (rank == k) return;
+    const Eigen::MatrixXd basis = qr.householderQ() * Eigen::MatrixXd::Identity(c.cols(), rank);
+    const Eigen::VectorXd x0 = e.completeOrthogonalDecomposition().solve(e_value);
+    equality_rows = e.transpose().completeOrthogonalDecomposition().pseudoInverse() * basis;
+    e = basis.transpose();
+    e_value = basis.transpose() * x0;
   }
   /// The multipliers y of the rows of C from those of G (z) and E (w).
   Eigen::VectorXd multipliers(const Eigen::VectorXd& z, const Eigen::VectorXd& w) const {
     Eigen::VectorXd y = Eigen::VectorXd::Zero(rows);
     for (std::size_t i = 0; i < g_row.size(); ++i) y(g_row[i]) += g_sign[i] * z(static_cast<Eigen::Index>(i));
-    for (std::size_t i = 0; i < e_row.size(); ++i) y(e_row[i]) += w(static_cast<Eigen::Index>(i));
+    const Eigen::VectorXd w_rows = equality_rows * w;
+    for (std::size_t i = 0; i < e_row.size(); ++i) y(e_row[i]) += w_rows(static_cast<Eigen::Index>(i));
     return y;
   }
 };

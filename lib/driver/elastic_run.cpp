@@ -176,6 +176,8 @@ nlohmann::json effect_summary(const ElasticEffect& effect) {
                      {"total", effect.seconds}}}};
   if (!solution.fixed_point_changes.empty())
     j["fixed_point"] = {{"iterations", solution.fixed_point_changes.size()}, {"changes", solution.fixed_point_changes}};
+  if (effect.setup.problem == contact::ElasticContactProblem::coulomb)
+    j["friction_coefficient"] = effect.setup.friction_coefficient;
   return j;
 }
 
