@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numbers>
 
 #include "basis/quadrature.hpp"
@@ -37,10 +38,25 @@ HertzComparison compare_with_hertz(const contact::ElasticContactSetup& setup,
     const double r = a * a - (x - centre) * (x - centre);
     return r > 0 ? 2.0 * out.total_force / (std::numbers::pi * a * a) * std::sqrt(r) : 0.0;
   };
-  // The profile error, and the support of p_h from 2000 samples per segment.
+  // max p_h and the support {p_h > 1e-2 max p_h} from 2000 samples per segment.
+  constexpr int kSamples = 2000;
+  auto sample = [&](const std::function<void(int, double)>& visit) {
+    for (int k = 0; k < multipliers.n_segments(); ++k) {
+      const double s0 = setup.boundary_mesh->segment_begin(k), s1 = setup.boundary_mesh->segment_end(k);
+      for (int j = 0; j <= kSamples; ++j) visit(k, s0 + (s1 - s0) * j / kSamples);
+    }
+  };
+  double scale = 0.0, lowest = contact.length(), highest = 0.0;
+  sample([&](int k, double s) { scale = std::max(scale, pressure_at(k, s)); });
+  sample([&](int k, double s) {
+    if (pressure_at(k, s) > 1e-2 * scale) {
+      lowest = std::min(lowest, s);
+      highest = std::max(highest, s);
+    }
+  });
+  // The profile error.
   const auto& rule = basis::gauss_legendre(40);
-  double error = 0.0, norm = 0.0, lowest = contact.length(), highest = 0.0;
-  const double scale = solution.pressure.cwiseAbs().maxCoeff();
+  double error = 0.0, norm = 0.0;
   for (int k = 0; k < multipliers.n_segments(); ++k) {
     const double s0 = setup.boundary_mesh->segment_begin(k), s1 = setup.boundary_mesh->segment_end(k);
     std::vector<double> cuts{s0, s1};
@@ -56,14 +72,6 @@ HertzComparison compare_with_hertz(const contact::ElasticContactSetup& setup,
         const double exact = hertz(x_at(s));
         error += w * std::pow(pressure_at(k, s) - exact, 2);
         norm += w * exact * exact;
-      }
-    }
-    constexpr int kSamples = 2000;
-    for (int j = 0; j <= kSamples; ++j) {
-      const double s = s0 + (s1 - s0) * j / kSamples;
-      if (pressure_at(k, s) > 1e-2 * scale) {
-        lowest = std::min(lowest, s);
-        highest = std::max(highest, s);
       }
     }
   }

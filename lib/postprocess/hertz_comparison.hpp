@@ -10,7 +10,7 @@ namespace hpcontact::postprocess {
 struct HertzComparison {
   double total_force = 0.0;       ///< P of the discrete pressure
   double hertz_half_width = 0.0;  ///< a of Hertz for that P
-  /// The discrete contact half-width: half the extent of {p_h > 1e-2 max p_h} on Γ_C, located to
+  /// The discrete contact half-width: half the extent of {p_h > 1e-2 max p_h} on Γ_C (both sampled), to
   /// 5e-4 of the segment length by sampling. The threshold lies above the oscillations a
   /// multiplier constrained at points shows beside the free boundary (≈ 2e-3 max p_h at p_C = 3)
   /// and costs little: p_H = 1e-2 max p_H lies 5e-5 a inside the Hertz edge.

@@ -37,10 +37,19 @@ HertzStudy read_hertz_study(const std::string& path) {
     sequence.reject_unknown_keys();
     for (const auto& level : levels) {
       const auto& effects = level.scene.effects;
+      const std::string where =
+          fmt::format("sequence '{}', {}", name, level.label.empty() ? "base scene" : level.label);
       if (effects.size() != 1 || effects.front() != scene::Effect::frictionless)
         throw_bad_input(path, "hertz.scene", table.string("scene"),
-                        fmt::format("a scene with run.effects = [\"frictionless\"] (sequence '{}', {})", name,
-                                    level.label.empty() ? "base scene" : level.label));
+                        fmt::format("a scene with run.effects = [\"frictionless\"] ({})", where));
+      // A half model carries half the force: Hertz's a of that P would be 1/√2 of the true one.
+      const auto& s = level.scene;
+      if (!s.fixed_x_predicate.empty() || !s.fixed_y_predicate.empty() || !s.fixed_x_groups.empty() ||
+          !s.fixed_y_groups.empty())
+        throw_bad_input(path, "hertz.scene", table.string("scene"),
+                        fmt::format("a scene of the whole contact zone, without rollers (a symmetric half model "
+                                    "carries half the force; {})",
+                                    where));
     }
     study.sequences.push_back({name, std::move(levels)});
   }
