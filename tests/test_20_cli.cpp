@@ -567,3 +567,21 @@ TEST(Cli, TutorialRunsAsDocumented) {
   const double matched = alpha_of("--p 2 --pc 1 --ratio 1"), coarse = alpha_of("--p 2 --pc 1 --ratio 1/2");
   EXPECT_LT(matched, 0.5 * coarse) << matched << " vs " << coarse;
 }
+
+// Not on a terminal (here: a pipe), long runs print a plain progress line at most every
+// HPCONTACT_PROGRESS_SECONDS (default 5 s) with the count and the time left; runs shorter than the
+// interval stay quiet.
+TEST(Cli, ProgressLinesWhenStderrIsNotATerminal) {
+  const auto dir = scratch("progress");
+  const std::string sweep = std::string(HPCONTACT_SOURCE_DIR) + "/studies/tutorial/sweep.toml";
+  const auto every_step = run_command("HPCONTACT_PROGRESS_SECONDS=0 " + std::string(HPCONTACT_CLI) + " sweep " + sweep +
+                                      " --out " + (dir / "a").string());
+  ASSERT_EQ(every_step.exit_code, 0) << every_step.output;
+  EXPECT_NE(every_step.output.find("progress: 1/60 done in "), std::string::npos) << every_step.output;
+  EXPECT_NE(every_step.output.find(" s left; next: "), std::string::npos);
+  // (An interval longer than the run: the default 5 s could pass under the sanitizers' slowdown.)
+  const auto quiet = run_command("HPCONTACT_PROGRESS_SECONDS=1000 " + std::string(HPCONTACT_CLI) + " sweep " + sweep +
+                                 " --out " + (dir / "b").string());
+  ASSERT_EQ(quiet.exit_code, 0) << quiet.output;
+  EXPECT_EQ(quiet.output.find("progress: "), std::string::npos) << "a run shorter than the interval prints none";
+}
