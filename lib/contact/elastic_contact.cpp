@@ -12,6 +12,7 @@
 #include "contact/multiplier_qp.hpp"
 #include "core/error.hpp"
 #include "core/timer.hpp"
+#include "linalg/sparse_stack.hpp"
 #include "space/multiplier_space.hpp"
 
 namespace hpcontact::contact {
@@ -54,19 +55,6 @@ MultiplierConstraints part_constraints(const ElasticContactSetup& setup, const s
   return build_multiplier_constraints(part, multipliers, setup.operators->contact());
 }
 
-Eigen::SparseMatrix<double> stacked_rows(const Eigen::SparseMatrix<double>& a, const Eigen::SparseMatrix<double>& b) {
-  std::vector<Eigen::Triplet<double>> triplets;
-  for (int k = 0; k < a.outerSize(); ++k)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(a, k); it; ++it)
-      triplets.emplace_back(it.row(), it.col(), it.value());
-  for (int k = 0; k < b.outerSize(); ++k)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(b, k); it; ++it)
-      triplets.emplace_back(a.rows() + it.row(), it.col(), it.value());
-  Eigen::SparseMatrix<double> out(a.rows() + b.rows(), a.cols());
-  out.setFromTriplets(triplets.begin(), triplets.end());
-  return out;
-}
-
 // The condensed problem: B, its constraints and the obstacle offset, in the nodal basis.
 struct CondensedProblem {
   Eigen::SparseMatrix<double> coupling;
@@ -91,7 +79,8 @@ CondensedProblem condensed_problem(const ElasticContactSetup& setup, const space
     return out;
   }
   const auto tangential = part_constraints(setup, multipliers, false);
-  out.coupling = stacked_rows(out.coupling, to_nodal * ops.coupling(multipliers, assembly::TraceDirection::tangent));
+  out.coupling =
+      linalg::stack_rows(out.coupling, to_nodal * ops.coupling(multipliers, assembly::TraceDirection::tangent));
   out.offset.conservativeResize(2 * out.n_normal);
   out.offset.tail(out.n_normal).setZero();
   out.constraints = stack_constraints(normal, tangential);

@@ -44,17 +44,6 @@ std::unique_ptr<operators::ElasticOperators> scene_elastic_operators(const scene
                                                        scene::scene_fixed_components(scene, mesh));
 }
 
-namespace {
-
-std::function<double(const mesh::Point&)> scalar_function(const scene::Scene& scene, const std::string& key,
-                                                          const std::string& text) {
-  if (text.empty()) return {};
-  const Expression expression(text, scene.where(key) + ": key '" + key + "'");
-  return [expression](const mesh::Point& x) { return expression(x.x(), x.y()); };
-}
-
-}  // namespace
-
 contact::ElasticContactSetup elastic_setup_of(const scene::Scene& scene, const SceneDiscretization& d,
                                               contact::ElasticContactProblem problem,
                                               const operators::ElasticOperators& operators) {
@@ -64,15 +53,15 @@ contact::ElasticContactSetup elastic_setup_of(const scene::Scene& scene, const S
   setup.segment_degrees = d.segment_degrees;
   setup.problem = problem;
   setup.constraint_points = scene.constraint_points;
-  const auto fx = scalar_function(scene, "data.f_x", scene.body_force_x);
-  const auto fy = scalar_function(scene, "data.f_y", scene.body_force_y);
+  const auto fx = scene_function(scene, "data.f_x", scene.body_force_x);
+  const auto fy = scene_function(scene, "data.f_y", scene.body_force_y);
   setup.body_force = [fx, fy](const mesh::Point& x) { return Eigen::Vector2d(fx(x), fy(x)); };
-  const auto tx = scalar_function(scene, "data.t_x", scene.traction_x);
-  const auto ty = scalar_function(scene, "data.t_y", scene.traction_y);
+  const auto tx = scene_function(scene, "data.t_x", scene.traction_x);
+  const auto ty = scene_function(scene, "data.t_y", scene.traction_y);
   setup.traction = [tx, ty](const mesh::Point& x, const mesh::Point&) { return Eigen::Vector2d(tx(x), ty(x)); };
-  setup.gap = scalar_function(scene, "data.g", scene.obstacle);
+  setup.gap = scene_function(scene, "data.g", scene.obstacle);
   if (problem == contact::ElasticContactProblem::tresca) {
-    const auto bound = scalar_function(scene, "data.s", scene.friction_bound);
+    const auto bound = scene_function(scene, "data.s", scene.friction_bound);
     setup.threshold = [bound, file = scene.where("data.s"), text = scene.friction_bound](const mesh::Point& x) {
       const double value = bound(x);
       if (value < 0)

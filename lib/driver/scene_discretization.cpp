@@ -23,15 +23,12 @@ std::unique_ptr<SceneDiscretization> discretize_scene(const scene::Scene& scene)
   return d;
 }
 
-namespace {
-
-contact::PointFunction function_of(const std::string& text, const std::string& origin) {
+std::function<double(const mesh::Point&)> scene_function(const scene::Scene& scene, const std::string& key,
+                                                         const std::string& text) {
   if (text.empty()) return {};
-  const Expression expression(text, origin);
+  const Expression expression(text, scene.where(key) + ": key '" + key + "'");
   return [expression](const mesh::Point& x) { return expression(x.x(), x.y()); };
 }
-
-}  // namespace
 
 contact::ContactSetup contact_setup_of(const scene::Scene& scene, const SceneDiscretization& d,
                                        contact::ContactProblem problem, const operators::PrimalOperators& primal) {
@@ -52,12 +49,12 @@ contact::ContactSetup contact_setup_of(const scene::Scene& scene, const SceneDis
                                   *std::max_element(setup.segment_degrees.begin(), setup.segment_degrees.end())));
     }
   }
-  setup.f = function_of(scene.load, scene.where("data.f") + ": key 'data.f'");
+  setup.f = scene_function(scene, "data.f", scene.load);
   setup.load_key = "f = " + scene.load;
   if (problem == contact::ContactProblem::signorini)
-    setup.obstacle = function_of(scene.obstacle, scene.where("data.g") + ": key 'data.g'");
+    setup.obstacle = scene_function(scene, "data.g", scene.obstacle);
   else
-    setup.bound = function_of(scene.friction_bound, scene.where("data.s") + ": key 'data.s'");
+    setup.bound = scene_function(scene, "data.s", scene.friction_bound);
   if (setup.bound)  // s ≥ 0 is part of the data's contract: report it against the scene's key
     setup.bound = [bound = setup.bound, file = scene.where("data.s"),
                    text = scene.friction_bound](const mesh::Point& x) {
@@ -109,7 +106,7 @@ infsup::InfSupSetup infsup_setup_of(const scene::Scene& scene, const mesh::QuadM
     if (scene.friction_bound.empty())
       throw_bad_input(scene.where("infsup.problem"), "data.s", "(missing)",
                       "the friction pairing (22) needs the friction bound s");
-    setup.friction_bound = function_of(scene.friction_bound, scene.where("data.s") + ": key 'data.s'");
+    setup.friction_bound = scene_function(scene, "data.s", scene.friction_bound);
   }
   return setup;
 }

@@ -33,6 +33,11 @@ struct SceneDiscretization {
 /// @throws InputError as the scene's builders do.
 std::unique_ptr<SceneDiscretization> discretize_scene(const scene::Scene& scene);
 
+/// The scene's expression `text` (the value of `key`) as a function of the point, its messages
+/// naming where the key came from; empty for empty text.
+std::function<double(const mesh::Point&)> scene_function(const scene::Scene& scene, const std::string& key,
+                                                         const std::string& text);
+
 /// The contact problem `problem` of the scene on `discretization` (data from the scene's
 /// expressions, s ≥ 0 checked where evaluated). `primal` must belong to the discretization.
 /// @throws InputError if the constraint points are fewer than p_C + 1 somewhere (naming where

@@ -9,6 +9,7 @@
 #include "basis/quadrature.hpp"
 #include "core/error.hpp"
 #include "core/timer.hpp"
+#include "linalg/sparse_stack.hpp"
 #include "mesh/contact_boundary.hpp"
 #include "operators/primal_operators.hpp"
 #include "space/multiplier_space.hpp"
@@ -81,19 +82,9 @@ InfSupOperators elastic_infsup_operators(const InfSupSetup& setup) {
   InfSupOperators out;
   const bool friction = setup.problem == PairingProblem::friction;
   Stopwatch assembly_clock;
-  Eigen::SparseMatrix<double> coupling = elastic.coupling(multipliers, assembly::TraceDirection::normal);
-  if (friction) {
-    const auto& tangential = elastic.coupling(multipliers, assembly::TraceDirection::tangent);
-    Eigen::SparseMatrix<double> stacked(2 * coupling.rows(), coupling.cols());
-    std::vector<Eigen::Triplet<double>> entries;
-    for (const Eigen::SparseMatrix<double>* part :
-         {static_cast<const Eigen::SparseMatrix<double>*>(&coupling), &tangential})
-      for (int k = 0; k < part->outerSize(); ++k)
-        for (Eigen::SparseMatrix<double>::InnerIterator it(*part, k); it; ++it)
-          entries.emplace_back(it.row() + (part == &coupling ? 0 : coupling.rows()), it.col(), it.value());
-    stacked.setFromTriplets(entries.begin(), entries.end());
-    coupling = std::move(stacked);
-  }
+  const auto& normal = elastic.coupling(multipliers, assembly::TraceDirection::normal);
+  const Eigen::SparseMatrix<double> coupling =
+      friction ? linalg::stack_rows(normal, elastic.coupling(multipliers, assembly::TraceDirection::tangent)) : normal;
   out.seconds_assembly = assembly_clock.seconds();
   Stopwatch primal_clock;
   const auto& a_g = elastic.gram_factor(setup.primal_norm);

@@ -8,6 +8,14 @@
 
 namespace hpcontact::postprocess {
 
+double total_force(const space::MultiplierSpace& multipliers, const Eigen::VectorXd& pressure) {
+  double force = 0.0;
+  const auto& boundary = multipliers.boundary_mesh();
+  for (int k = 0; k < multipliers.n_segments(); ++k)
+    force += pressure(multipliers.first_dof(k)) * (boundary.segment_end(k) - boundary.segment_begin(k));
+  return force;
+}
+
 ElasticBoundarySamples sample_elastic_boundary(const contact::ElasticContactSetup& setup,
                                                const contact::ElasticContactSolution& solution, int per_interval) {
   const auto& ops = *setup.operators;
@@ -17,9 +25,7 @@ ElasticBoundarySamples sample_elastic_boundary(const contact::ElasticContactSetu
                                                   ops.vector_space().component(solution.u, 1)};
   ElasticBoundarySamples out{io::CsvTable({"x", "y", "s_arc", "u_n", "u_t", "gap", "pressure", "traction_t"}), 0.0,
                              0.0};
-  for (int k = 0; k < multipliers.n_segments(); ++k)  // ∫ P_0 = 2 on [-1, 1]: c_0 times the length
-    out.total_force += solution.pressure(multipliers.first_dof(k)) *
-                       (setup.boundary_mesh->segment_end(k) - setup.boundary_mesh->segment_begin(k));
+  out.total_force = total_force(multipliers, solution.pressure);
   const double pressure_scale = solution.pressure.cwiseAbs().maxCoeff();
   for (const auto& interval : assembly::common_intervals(contact, *setup.boundary_mesh)) {
     const auto& trace = contact.edges()[interval.trace_edge];

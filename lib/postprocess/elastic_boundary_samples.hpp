@@ -5,6 +5,7 @@
 
 #include "contact/elastic_contact.hpp"
 #include "io/csv_writer.hpp"
+#include "space/multiplier_space.hpp"
 
 namespace hpcontact::postprocess {
 
@@ -15,6 +16,10 @@ struct ElasticBoundarySamples {
   double contact_set_length = 0.0;  ///< where pressure > 1e-10 max pressure, from the samples
   double total_force = 0.0;         ///< P = ∫_{Γ_C} pressure ds (exact, from the multiplier)
 };
+
+/// P = ∫_{Γ_C} p ds of a multiplier in M^{p_C}(T_{C,H}) (Legendre coefficients): ∫ P_0 = 2 on
+/// [-1, 1], so each segment contributes its c_0 times its length.
+double total_force(const space::MultiplierSpace& multipliers, const Eigen::VectorXd& pressure);
 
 /// Samples every interval of the common refinement of T_h|Γ_C and T_{C,H} at `per_interval`
 /// equidistant points including both ends.

@@ -9,6 +9,7 @@
 
 #include "basis/quadrature.hpp"
 #include "core/error.hpp"
+#include "postprocess/elastic_boundary_samples.hpp"
 #include "space/multiplier_space.hpp"
 
 namespace hpcontact::postprocess {
@@ -28,9 +29,7 @@ HertzComparison compare_with_hertz(const contact::ElasticContactSetup& setup,
         .dot(solution.pressure.segment(multipliers.first_dof(k), multipliers.segment_degree(k) + 1));
   };
   HertzComparison out;
-  for (int k = 0; k < multipliers.n_segments(); ++k)  // ∫ P_0 = 2 on [-1, 1]: c_0 times the length
-    out.total_force += solution.pressure(multipliers.first_dof(k)) *
-                       (setup.boundary_mesh->segment_end(k) - setup.boundary_mesh->segment_begin(k));
+  out.total_force = total_force(multipliers, solution.pressure);
   if (!(out.total_force > 0.0)) throw InputError("the Hertz comparison needs a contact force P > 0");
   const double a = std::sqrt(4.0 * out.total_force * radius / (std::numbers::pi * plane_strain_modulus));
   out.hertz_half_width = a;
