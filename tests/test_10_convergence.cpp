@@ -24,9 +24,10 @@ postprocess::ErrorNorms solve_and_measure(int n, int p, double perturbation = 0.
   auto m = mesh::make_paper_square_mesh(n);
   if (perturbation > 0) mesh::perturb_interior_vertices(m, perturbation, 5);
   const space::H1Space s(m, p);
-  operators::PoissonData data{manufactured_f, [](const mesh::Point& x, const mesh::Point& normal) {
-                                return manufactured_gradient(x).dot(normal);
-                              }};
+  operators::PoissonData data{
+      manufactured_f,
+      [](const mesh::Point& x, const mesh::Point& normal) { return manufactured_gradient(x).dot(normal); },
+      {}};
   return postprocess::compute_errors(s, operators::solve_poisson(s, data).coefficients,
                                      {manufactured_u, manufactured_gradient});
 }

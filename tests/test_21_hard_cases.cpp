@@ -71,9 +71,11 @@ TEST(HardCases, DegreeSixteenAssemblyAndSolveStayAccurate) {
     previous_global = global_condition;
   }
   const space::H1Space space(square, 16);
-  operators::PoissonData data{hpcontact::testing::manufactured_f, [](const mesh::Point& x, const mesh::Point& normal) {
+  operators::PoissonData data{hpcontact::testing::manufactured_f,
+                              [](const mesh::Point& x, const mesh::Point& normal) {
                                 return hpcontact::testing::manufactured_gradient(x).dot(normal);
-                              }};
+                              },
+                              {}};
   const auto sparse = operators::solve_poisson(space, data).coefficients;
   const auto k = assembly::assemble_volume_matrices(space, {.stiffness = true, .mass = false}).stiffness;
   const Eigen::VectorXd dense = Eigen::MatrixXd(k).llt().solve(Eigen::MatrixXd(k) * sparse);
@@ -166,7 +168,7 @@ TEST(HardCases, ContactSetsWholeEmptyAndTangential) {
   // λ = 0: u is the free solution of −Δu = f with ∂_n u = 0 on Γ_C.
   const auto square = mesh::make_paper_square_mesh(n);
   const space::H1Space space(square, p);
-  const auto free = operators::solve_poisson(space, {[](const mesh::Point&) { return -1.0; }, {}}).coefficients;
+  const auto free = operators::solve_poisson(space, {[](const mesh::Point&) { return -1.0; }, {}, {}}).coefficients;
   EXPECT_LT((none.u - free).lpNorm<Eigen::Infinity>(), 1e-12 * free.lpNorm<Eigen::Infinity>());
 
   // Tangential: the obstacle is the trace of the free solution.

@@ -11,10 +11,14 @@ PoissonSolution solve_poisson(const space::H1Space& space, const PoissonData& da
   PoissonSolution out;
   Stopwatch assembly_clock;
   const auto matrices = assembly::assemble_volume_matrices(space, {.stiffness = true, .mass = false});
-  Eigen::VectorXd load = assembly::assemble_volume_load(space, data.f);
+  if (data.dirichlet) out.lift = std::make_shared<assembly::DirichletLift>(space, data.dirichlet);
+  // With Dirichlet data the load is assembled with Γ_D kept, then moved to u_0's unknowns.
+  const space::H1Space& load_space = out.lift ? out.lift->extended_scalar() : space;
+  Eigen::VectorXd load = assembly::assemble_volume_load(load_space, data.f);
   if (data.neumann)
-    load += assembly::assemble_boundary_load(space, {mesh::BoundaryPart::neumann, mesh::BoundaryPart::contact},
+    load += assembly::assemble_boundary_load(load_space, {mesh::BoundaryPart::neumann, mesh::BoundaryPart::contact},
                                              data.neumann);
+  if (out.lift) load = out.lift->lifted_load(assembly::ScalarCellSystem(space, 1.0, 0.0), load).load;
   out.assembly_seconds = assembly_clock.seconds();
   Stopwatch solve_clock;
   const linalg::SparseCholesky cholesky(matrices.stiffness);

@@ -1,10 +1,12 @@
-// The linear model problem behind the contact problems: -Δu = f in Ω, u = 0 on Γ_D,
+// The linear model problem behind the contact problems: -Δu = f in Ω, u = u_D (default 0) on Γ_D,
 // ∂_n u = g on the rest of the boundary (Γ_N, and Γ_C when no contact is imposed).
 #pragma once
 
 #include <Eigen/Core>
 #include <functional>
+#include <memory>
 
+#include "assembly/dirichlet_lift.hpp"
 #include "space/h1_space.hpp"
 
 namespace hpcontact::operators {
@@ -13,10 +15,14 @@ struct PoissonData {
   std::function<double(const mesh::Point&)> f;
   /// Neumann data g(x, n) on every non-Dirichlet boundary edge; empty means g = 0.
   std::function<double(const mesh::Point& x, const mesh::Point& normal)> neumann;
+  /// Dirichlet data u_D on Γ_D; empty means u = 0 there.
+  std::function<double(const mesh::Point&)> dirichlet;
 };
 
 struct PoissonSolution {
-  Eigen::VectorXd coefficients;  ///< shape (space.n_dofs())
+  Eigen::VectorXd coefficients;  ///< shape (space.n_dofs()): u itself, or u_0 with Dirichlet data
+  /// With Dirichlet data: the lift w, u = u_0 + w (assembly::total_field gives u).
+  std::shared_ptr<const assembly::DirichletLift> lift;
   double assembly_seconds = 0.0;
   double solve_seconds = 0.0;  ///< sparse Cholesky factorization + solve
 };

@@ -29,9 +29,15 @@ std::array<int, 2> edge_mode_index(int local, int k) {
 
 }  // namespace
 
+int local_edge_of(const LocalShape& shape) {
+  if (shape.i >= 2 && shape.j <= 1) return shape.j == 0 ? 0 : 2;
+  if (shape.j >= 2 && shape.i <= 1) return shape.i == 1 ? 1 : 3;
+  return -1;
+}
+
 H1Space::H1Space(const mesh::QuadMesh& mesh, int degree) : H1Space(mesh, std::vector<int>(mesh.n_cells(), degree)) {}
 
-H1Space::H1Space(const mesh::QuadMesh& mesh, std::vector<int> cell_degrees)
+H1Space::H1Space(const mesh::QuadMesh& mesh, std::vector<int> cell_degrees, DirichletDofs dirichlet)
     : mesh_(&mesh), cell_degrees_(std::move(cell_degrees)) {
   if (static_cast<int>(cell_degrees_.size()) != mesh.n_cells())
     throw InputError("degree distribution has " + std::to_string(cell_degrees_.size()) + " entries but the mesh has " +
@@ -40,10 +46,10 @@ H1Space::H1Space(const mesh::QuadMesh& mesh, std::vector<int> cell_degrees)
     if (cell_degrees_[c] < 1)
       throw_bad_input("degree distribution", "p", std::to_string(cell_degrees_[c]),
                       "must be >= 1 (cell " + std::to_string(c) + ")");
-  build();
+  build(dirichlet);
 }
 
-void H1Space::build() {
+void H1Space::build(DirichletDofs dirichlet) {
   const auto& mesh = *mesh_;
   max_degree_ = *std::max_element(cell_degrees_.begin(), cell_degrees_.end());
   edge_degrees_.assign(mesh.n_edges(), 0);
@@ -57,7 +63,7 @@ void H1Space::build() {
   std::vector<bool> vertex_fixed(mesh.n_vertices(), false);
   std::vector<bool> edge_fixed(mesh.n_edges(), false);
   for (int e : mesh.boundary_edges())
-    if (mesh.edge_part(e) == mesh::BoundaryPart::dirichlet) {
+    if (dirichlet == DirichletDofs::eliminated && mesh.edge_part(e) == mesh::BoundaryPart::dirichlet) {
       edge_fixed[e] = true;
       vertex_fixed[mesh.edge(e)[0]] = vertex_fixed[mesh.edge(e)[1]] = true;
     }

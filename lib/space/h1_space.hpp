@@ -17,6 +17,10 @@ struct LocalShape {
   double sign = 1.0;
 };
 
+/// Whether the dofs of Γ_D are dropped (the space of the problems, functions vanishing on Γ_D) or
+/// kept (the same space without the condition: where a lifting of non-zero Dirichlet data lives).
+enum class DirichletDofs { eliminated, kept };
+
 /// Degree distribution and conformity rule ("minimum rule"): cell T carries the full
 /// interior tensor space of degree p_T; an edge carries the modes of degree
 /// p_e = min(p_T over the cells sharing it). So neighbouring cells of different degree share
@@ -26,10 +30,16 @@ struct LocalShape {
 /// Global dof order: vertex dofs, then edge modes (edge by edge, degree 2..p_e), then interior
 /// modes; Dirichlet dofs (vertices on closed Γ_D edges, modes of Γ_D edges) are dropped, so the
 /// discrete functions vanish on Γ_D (the paper's H¹(Ω, Γ_D)).
+/// The local edge (0: η = −1, 1: ξ = 1, 2: η = 1, 3: ξ = −1) whose mode a shape is, with the
+/// shape's restriction to it being sign · N_k(t) (t = ξ on edges 0, 2, η on 1, 3; k its index
+/// along the edge); -1 for vertex and interior shapes.
+int local_edge_of(const LocalShape& shape);
+
 class H1Space {
  public:
   /// @throws InputError if the distribution has the wrong size or a degree < 1.
-  H1Space(const mesh::QuadMesh& mesh, std::vector<int> cell_degrees);
+  H1Space(const mesh::QuadMesh& mesh, std::vector<int> cell_degrees,
+          DirichletDofs dirichlet = DirichletDofs::eliminated);
   /// Uniform degree p.
   H1Space(const mesh::QuadMesh& mesh, int degree);
 
@@ -43,11 +53,12 @@ class H1Space {
   const std::vector<int>& cell_degrees() const { return cell_degrees_; }
   int edge_degree(int edge) const { return edge_degrees_[edge]; }
   int max_degree() const { return max_degree_; }
-  /// Local shape functions of a cell (vertices, edges, interior), with their global dofs.
+  /// Local shape functions of a cell, with their global dofs: the 4 vertices, then the modes of
+  /// local edges 0 … 3 (see local_edge_of), then the interior modes.
   const std::vector<LocalShape>& cell_shapes(int cell) const { return cell_shapes_[cell]; }
 
  private:
-  void build();
+  void build(DirichletDofs dirichlet);
 
   const mesh::QuadMesh* mesh_;
   std::vector<int> cell_degrees_;

@@ -1,0 +1,162 @@
+// DirichletLift: the projection-based interpolant of u_D on the fixed edges, and its action.
+#include "assembly/dirichlet_lift.hpp"
+
+#include <cmath>
+
+#include "basis/lobatto.hpp"
+#include "basis/quadrature.hpp"
+#include "core/error.hpp"
+#include "mesh/cell_map.hpp"
+
+namespace hpcontact::assembly {
+namespace {
+
+// The reference point of parameter t on local edge `local` (the parametrization of local_edge_of).
+Eigen::Vector2d edge_point(int local, double t) {
+  switch (local) {
+    case 0:
+      return {t, -1.0};
+    case 1:
+      return {1.0, t};
+    case 2:
+      return {t, 1.0};
+    default:
+      return {-1.0, t};
+  }
+}
+
+// The index along its edge of an edge mode.
+int mode_index(const space::LocalShape& shape, int local_edge) { return local_edge % 2 == 0 ? shape.i : shape.j; }
+
+}  // namespace
+
+Eigen::VectorXd edge_projection(const mesh::QuadMesh& mesh, int cell, int local_edge, int degree,
+                                const PointFunction& u) {
+  Eigen::VectorXd a = Eigen::VectorXd::Zero(std::max(degree - 1, 0));
+  if (degree < 2) return a;
+  const mesh::CellMap map(mesh, cell);
+  auto at = [&](double t) {
+    const Eigen::Vector2d ref = edge_point(local_edge, t);
+    return u(map.map(ref.x(), ref.y()));
+  };
+  const double start = at(-1.0), end = at(1.0);
+  // a_k = ∫ g' N_k' = −∫ g N_k'' with g = u − I₁u vanishing at ±1, N_k'' = √((2k−1)/2) P'_{k−1};
+  // the data need not be polynomial, so the rule is generous.
+  const auto& rule = basis::gauss_legendre(2 * degree + 12);
+  for (std::size_t q = 0; q < rule.points.size(); ++q) {
+    const double t = rule.points[q];
+    const double g = at(t) - 0.5 * (1.0 - t) * start - 0.5 * (1.0 + t) * end;
+    const Eigen::VectorXd legendre = basis::legendre_values(degree, t);
+    for (int k = 2; k <= degree; ++k) {
+      const int n = k - 1;  // (1 − t²) P'_n = n (P_{n−1} − t P_n), t inside (−1, 1)
+      const double derivative = n * (legendre(n - 1) - t * legendre(n)) / (1.0 - t * t);
+      a(k - 2) -= rule.weights[q] * g * std::sqrt((2.0 * k - 1.0) / 2.0) * derivative;
+    }
+  }
+  return a;
+}
+
+DirichletLift::DirichletLift(const space::H1Space& space, const PointFunction& u_d)
+    : extended_scalar_(
+          std::make_unique<space::H1Space>(space.mesh(), space.cell_degrees(), space::DirichletDofs::kept)) {
+  const space::H1Space& extended = *extended_scalar_;
+  build(
+      1, {u_d, {}}, [&](int c, int s, int) { return space.cell_shapes(c)[s].dof; },
+      [&](int c, int s, int) { return extended.cell_shapes(c)[s].dof; }, space.n_dofs(), extended.n_dofs());
+}
+
+DirichletLift::DirichletLift(const space::VectorSpace& space, const std::array<PointFunction, space::kComponents>& u_d)
+    : extended_scalar_(std::make_unique<space::H1Space>(space.scalar().mesh(), space.scalar().cell_degrees(),
+                                                        space::DirichletDofs::kept)),
+      extended_vector_(std::make_unique<space::VectorSpace>(*extended_scalar_)) {
+  const space::VectorSpace& extended = *extended_vector_;
+  build(
+      space::kComponents, u_d,
+      [&](int c, int s, int comp) { return space.dof(space.scalar().cell_shapes(c)[s].dof, comp); },
+      [&](int c, int s, int comp) { return extended.dof(extended.scalar().cell_shapes(c)[s].dof, comp); },
+      space.n_dofs(), extended.n_dofs());
+}
+
+DirichletLift::~DirichletLift() = default;
+
+void DirichletLift::build(int components, const std::array<PointFunction, space::kComponents>& u_d,
+                          const UnknownOf& unknown, const UnknownOf& extended, int n_unknowns, int n_extended) {
+  const auto& mesh = extended_scalar_->mesh();
+  embedding_.assign(n_unknowns, -1);
+  values_ = Eigen::VectorXd::Zero(n_extended);
+  for (int c = 0; c < mesh.n_cells(); ++c) {
+    const auto& shapes = extended_scalar_->cell_shapes(c);  // (i, j, sign) as the problem's space's
+    Eigen::VectorXd local = Eigen::VectorXd::Zero(components * static_cast<Eigen::Index>(shapes.size()));
+    std::array<std::array<Eigen::VectorXd, space::kComponents>, 4> edge_coefficients;  // on first use
+    for (int s = 0; s < static_cast<int>(shapes.size()); ++s)
+      for (int comp = 0; comp < components; ++comp) {
+        const int target = extended(c, s, comp);
+        if (const int own = unknown(c, s, comp); own >= 0) {
+          embedding_[own] = target;
+          continue;
+        }
+        if (!u_d[comp]) continue;
+        double value = 0.0;
+        if (s < 4) {
+          value = u_d[comp](mesh.vertex(mesh.cell(c)[s]));
+        } else {
+          const int edge = space::local_edge_of(shapes[s]);
+          HPC_VERIFY(edge >= 0, "an interior mode is never fixed");
+          auto& a = edge_coefficients[edge][comp];
+          if (a.size() == 0)
+            a = edge_projection(mesh, c, edge, extended_scalar_->edge_degree(mesh.cell_edge(c, edge)), u_d[comp]);
+          // The shape is sign · N_k(t) on the edge, and w there must be Σ a_k N_k(t).
+          value = shapes[s].sign * a(mode_index(shapes[s], edge) - 2);
+        }
+        local(components * s + comp) = value;
+        values_(target) = value;
+      }
+    if ((local.array() != 0.0).any()) cells_.push_back({c, std::move(local)});
+  }
+  for (int i = 0; i < n_unknowns; ++i) HPC_VERIFY(embedding_[i] >= 0, "every unknown has an extended one");
+}
+
+Eigen::VectorXd DirichletLift::total(const Eigen::VectorXd& u0) const {
+  HPC_VERIFY(u0.size() == static_cast<Eigen::Index>(embedding_.size()), "u_0 on the problem's space");
+  Eigen::VectorXd out = values_;
+  for (std::size_t i = 0; i < embedding_.size(); ++i) out(embedding_[i]) += u0(static_cast<Eigen::Index>(i));
+  return out;
+}
+
+Eigen::VectorXd DirichletLift::restrict(const Eigen::VectorXd& extended) const {
+  HPC_VERIFY(extended.size() == values_.size(), "a vector of the extended space");
+  Eigen::VectorXd out(embedding_.size());
+  for (std::size_t i = 0; i < embedding_.size(); ++i) out(static_cast<Eigen::Index>(i)) = extended(embedding_[i]);
+  return out;
+}
+
+DirichletLift::LiftedLoad DirichletLift::lifted_load(const CellSystem& system,
+                                                     const Eigen::VectorXd& extended_load) const {
+  HPC_VERIFY(system.n_dofs() == static_cast<int>(embedding_.size()), "a cell system on the problem's space");
+  LiftedLoad out{restrict(extended_load), -extended_load.dot(values_)};
+  std::vector<CellDof> dofs;
+  for (const auto& [cell, local] : cells_) {
+    system.cell_dofs(cell, dofs);
+    HPC_VERIFY(static_cast<Eigen::Index>(dofs.size()) == local.size(), "the lift's local layout is the system's");
+    // The element matrix is in the basis of the global functions (signs included), as w's local
+    // coefficients are.
+    const Eigen::VectorXd a_w = system.element_matrix(cell) * local;
+    out.energy_offset += 0.5 * local.dot(a_w);
+    for (std::size_t i = 0; i < dofs.size(); ++i)
+      if (dofs[i].dof >= 0) out.load(dofs[i].dof) -= a_w(static_cast<Eigen::Index>(i));
+  }
+  return out;
+}
+
+ScalarField total_field(const DirichletLift* lift, const space::H1Space& space, const Eigen::VectorXd& u0) {
+  if (!lift) return {space, u0};
+  return {lift->extended_scalar(), lift->total(u0)};
+}
+
+VectorField total_field(const DirichletLift* lift, const space::VectorSpace& space, const Eigen::VectorXd& u0) {
+  if (!lift) return {space, u0};
+  HPC_VERIFY(lift->extended_vector(), "a vector lift for a vector field");
+  return {*lift->extended_vector(), lift->total(u0)};
+}
+
+}  // namespace hpcontact::assembly
