@@ -6,15 +6,20 @@
 
 #include <cmath>
 
+#include "assembly/coupling.hpp"
 #include "assembly/dirichlet_lift.hpp"
 #include "assembly/poisson_assembly.hpp"
+#include "contact_fixture.hpp"
 #include "linalg/sparse_cholesky.hpp"
 #include "manufactured_solution.hpp"
+#include "mesh/boundary_mesh.hpp"
+#include "mesh/contact_boundary.hpp"
 #include "mesh/rectangle_mesh.hpp"
 #include "operators/poisson_problem.hpp"
 #include "postprocess/error_norms.hpp"
 #include "postprocess/fe_function.hpp"
 #include "space/h1_space.hpp"
+#include "space/multiplier_space.hpp"
 
 using namespace hpcontact;
 
@@ -160,4 +165,104 @@ TEST(DirichletData, ExponentialInPOnAPerturbedMesh) {
     previous = error;
   }
   EXPECT_LT(previous, 1e-7);
+}
+
+namespace {
+
+// The §7 square with the whole right edge in Γ_D, so that Γ_D reaches Γ_C at (1, −1) and the
+// constraints see the lift (B w ≠ 0).
+mesh::QuadMesh square_clamped_on_the_right(int n) {
+  auto mesh = mesh::make_paper_square_mesh(n);
+  mesh::assign_boundary_part(mesh, mesh::BoundaryPart::dirichlet,
+                             [](const mesh::Point& x) { return x.x() > 1.0 - 1e-12; });
+  return mesh;
+}
+
+// An obstacle that keeps all of Γ_C in contact, up to (1, −1) where Γ_D begins.
+double touching_obstacle(const mesh::Point& x) { return -0.1 * (1.0 - x.x()); }
+
+// Harmonic and in Q_2, not zero at (1, −1).
+double harmonic(const mesh::Point& x) {
+  return 0.05 + 0.1 * x.x() - 0.15 * x.y() + 0.04 * (x.x() * x.x() - x.y() * x.y()) + 0.06 * x.x() * x.y();
+}
+Eigen::Vector2d harmonic_gradient(const mesh::Point& x) {
+  return {0.1 + 0.08 * x.x() + 0.06 * x.y(), -0.15 - 0.08 * x.y() + 0.06 * x.x()};
+}
+
+}  // namespace
+
+TEST(DirichletData, SignoriniWithHarmonicDataIsTheShiftedSolution) {
+  // With u_D = h, obstacle g + h and traction ∂_n h, the discrete solution is ũ + h with the same λ
+  // (ũ: u_D = 0, obstacle g), because h lies in S^p (p ≥ 2) and is harmonic. Γ_C is in contact up
+  // to Γ_D, so a constraint that missed B w would move λ there.
+  const auto mesh = square_clamped_on_the_right(8);
+  const auto boundary = mesh::BoundaryMesh::uniform(2.0, 8);
+  const hpcontact::testing::ContactData data;
+  auto plain = hpcontact::testing::uniform_setup(mesh, boundary, 3, 1);
+  plain.f = data.f;
+  plain.obstacle = touching_obstacle;
+  auto shifted = plain;
+  shifted.dirichlet = harmonic;
+  shifted.obstacle = [](const mesh::Point& x) { return touching_obstacle(x) + harmonic(x); };
+  shifted.traction = [](const mesh::Point& x, const mesh::Point& n) { return harmonic_gradient(x).dot(n); };
+  const auto a = contact::solve_contact(plain);
+  const auto b = contact::solve_contact(shifted);
+  hpcontact::testing::expect_kkt(b, "u_D = h");
+  ASSERT_GT(a.lambda.lpNorm<Eigen::Infinity>(), 0.1);
+  EXPECT_LT((a.lambda - b.lambda).lpNorm<Eigen::Infinity>(), 1e-9 * a.lambda.lpNorm<Eigen::Infinity>());
+  const space::H1Space space(mesh, 3);
+  const auto ua = assembly::total_field(nullptr, space, a.u);
+  const auto ub = assembly::total_field(b.lift.get(), space, b.u);
+  double worst = 0.0;
+  for (double x = -0.95; x < 1.0; x += 0.15)
+    for (double y = -1.0; y <= 1.0; y += 0.25)
+      worst = std::max(worst, std::abs(value_at(ub, {x, y}) - value_at(ua, {x, y}) - harmonic({x, y})));
+  EXPECT_LT(worst, 1e-10);
+}
+
+TEST(DirichletData, EnergyOfAConstantShift) {
+  // u_D = c, obstacle g + c: u = ũ + c, so E = ½ a(ũ, ũ) − (f, ũ + c) = Ẽ − c ∫f = Ẽ + 4c for f = −1.
+  const auto mesh = square_clamped_on_the_right(4);
+  const auto boundary = mesh::BoundaryMesh::uniform(2.0, 4);
+  const hpcontact::testing::ContactData data;
+  auto plain = hpcontact::testing::uniform_setup(mesh, boundary, 4, 2);
+  plain.f = data.f;
+  plain.obstacle = touching_obstacle;
+  auto shifted = plain;
+  const double c = 0.3;
+  shifted.dirichlet = [=](const mesh::Point&) { return c; };
+  shifted.obstacle = [=](const mesh::Point& x) { return touching_obstacle(x) + c; };
+  const auto a = contact::solve_contact(plain);
+  const auto b = contact::solve_contact(shifted);
+  EXPECT_NEAR(b.energy, a.energy + 4 * c, 1e-10);
+  EXPECT_LT((a.lambda - b.lambda).lpNorm<Eigen::Infinity>(), 1e-9 * a.lambda.lpNorm<Eigen::Infinity>());
+}
+
+TEST(DirichletData, FrictionConstraintsSeeTheWholeField) {
+  // (13) and (15) with u_D = h touching Γ_C: KKT at the constraint points, and λ · gap equals
+  // ∫ λ_H s γ(u_0 + w) (s = 1 for (15)) by the independently assembled coupling of the space with
+  // Γ_D kept: the gap is that of the whole field, not of u_0.
+  const auto mesh = square_clamped_on_the_right(8);
+  const auto boundary = mesh::BoundaryMesh::uniform(2.0, 8);
+  const hpcontact::testing::ContactData data;
+  for (auto problem : {contact::ContactProblem::friction, contact::ContactProblem::friction_s}) {
+    auto setup = hpcontact::testing::uniform_setup(mesh, boundary, 3, 1);
+    setup.problem = problem;
+    setup.f = data.f;
+    setup.bound = data.bound;
+    setup.dirichlet = harmonic;
+    const auto solution = contact::solve_contact(setup);
+    const std::string label = problem == contact::ContactProblem::friction ? "(13)" : "(15)";
+    hpcontact::testing::expect_kkt(solution, label);
+    const space::MultiplierSpace multipliers(boundary, 1);
+    const mesh::ContactBoundary contact(mesh);
+    const auto coupling = assembly::assemble_coupling(
+        solution.lift->extended_scalar(), contact, multipliers,
+        problem == contact::ContactProblem::friction ? data.bound : assembly::BoundaryFunction{});
+    const double whole = solution.lambda_legendre.dot(coupling * solution.lift->total(solution.u));
+    const double without_lift =
+        solution.lambda_legendre.dot(coupling * (solution.lift->total(solution.u) - solution.lift->values()));
+    EXPECT_NEAR(solution.lambda.dot(solution.gap), whole, 1e-10 * std::abs(whole) + 1e-13) << label;
+    EXPECT_GT(std::abs(whole - without_lift), 1e-4 * std::abs(whole)) << label << ": the lift must matter here";
+  }
 }

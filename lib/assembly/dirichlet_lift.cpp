@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "assembly/cell_values.hpp"
 #include "basis/lobatto.hpp"
 #include "basis/quadrature.hpp"
 #include "core/error.hpp"
@@ -10,20 +11,6 @@
 
 namespace hpcontact::assembly {
 namespace {
-
-// The reference point of parameter t on local edge `local` (the parametrization of local_edge_of).
-Eigen::Vector2d edge_point(int local, double t) {
-  switch (local) {
-    case 0:
-      return {t, -1.0};
-    case 1:
-      return {1.0, t};
-    case 2:
-      return {t, 1.0};
-    default:
-      return {-1.0, t};
-  }
-}
 
 // The index along its edge of an edge mode.
 int mode_index(const space::LocalShape& shape, int local_edge) { return local_edge % 2 == 0 ? shape.i : shape.j; }
@@ -36,8 +23,8 @@ Eigen::VectorXd edge_projection(const mesh::QuadMesh& mesh, int cell, int local_
   if (degree < 2) return a;
   const mesh::CellMap map(mesh, cell);
   auto at = [&](double t) {
-    const Eigen::Vector2d ref = edge_point(local_edge, t);
-    return u(map.map(ref.x(), ref.y()));
+    const auto [xi, eta] = edge_reference_points(local_edge, std::vector<double>{t});
+    return u(map.map(xi[0], eta[0]));
   };
   const double start = at(-1.0), end = at(1.0);
   // a_k = ∫ g' N_k' = −∫ g N_k'' with g = u − I₁u vanishing at ±1, N_k'' = √((2k−1)/2) P'_{k−1};

@@ -58,19 +58,29 @@ void check_data(const ContactSetup& setup) {
 // F, shared with the other problems on `primal` when the setup names its data (load_key), else
 // assembled into `own`.
 const Eigen::VectorXd& load_vector(const ContactSetup& setup, const operators::PrimalOperators& primal,
-                                   Eigen::VectorXd& own) {
+                                   const space::H1Space& space, Eigen::VectorXd& own) {
   auto assemble = [&] {
-    Eigen::VectorXd load = assembly::assemble_volume_load(primal.space(), setup.f);
+    Eigen::VectorXd load = assembly::assemble_volume_load(space, setup.f);
     if (setup.traction)
-      load += assembly::assemble_boundary_load(
-          primal.space(), {mesh::BoundaryPart::neumann, mesh::BoundaryPart::contact}, setup.traction);
+      load += assembly::assemble_boundary_load(space, {mesh::BoundaryPart::neumann, mesh::BoundaryPart::contact},
+                                               setup.traction);
     return load;
   };
-  if (!setup.load_key.empty()) return primal.derived_vector("F", setup.load_key, assemble);
+  if (!setup.load_key.empty() && &space == &primal.space()) return primal.derived_vector("F", setup.load_key, assemble);
   Stopwatch clock;
   own = assemble();
   if (primal.log()) primal.log()->record("F", own.size(), 1, clock.seconds());
   return own;
+}
+
+// The load of u, and the energy's constant: with Dirichlet data u = u_0 + w, F is assembled with
+// Γ_D kept and moved to u_0's unknowns (assembly::DirichletLift).
+assembly::DirichletLift::LiftedLoad problem_load(const ContactSetup& setup, const operators::PrimalOperators& primal,
+                                                 const assembly::DirichletLift* lift) {
+  Eigen::VectorXd own;
+  if (!lift) return {load_vector(setup, primal, primal.space(), own), 0.0};
+  const Eigen::VectorXd& extended = load_vector(setup, primal, lift->extended_scalar(), own);
+  return lift->lifted_load(assembly::ScalarCellSystem(primal.space(), 1.0, 0.0), extended);
 }
 
 }  // namespace
@@ -88,8 +98,8 @@ ContactSolution solve_contact(const ContactSetup& setup) {
       operators::shared_or_own(setup.primal, *setup.mesh, setup.cell_degrees, own_primal);
   OperatorLog* log = primal.log();
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
-  Eigen::VectorXd own_load;
-  const Eigen::VectorXd& load = load_vector(setup, primal, own_load);
+  if (setup.dirichlet) out.lift = std::make_shared<assembly::DirichletLift>(primal.space(), setup.dirichlet);
+  const auto [load, energy_offset] = problem_load(setup, primal, out.lift.get());
   const bool weighted = setup.problem == ContactProblem::friction;
   const std::string coupling_name = weighted ? "B^s" : "B";
   const Eigen::SparseMatrix<double>& coupling_legendre =
@@ -104,6 +114,11 @@ ContactSolution solve_contact(const ContactSetup& setup) {
         constraints.to_nodal * assembly::assemble_multiplier_load(primal.contact(), multipliers, setup.obstacle);
     if (log) log->record("g", multipliers.n_dofs(), 1, obstacle_clock.seconds());
   }
+  // The constraints act on u_0 + w: B u_0 against (ℓ_i, g) − B w.
+  if (out.lift)
+    gap_offset -= to_nodal * (assembly::assemble_coupling(out.lift->extended_scalar(), primal.contact(), multipliers,
+                                                          weighted ? setup.bound : assembly::BoundaryFunction{}) *
+                              out.lift->values());
   out.seconds.assembly = assembly_clock.seconds();
 
   // 2. Condensation onto the Γ_C trace: the trace dofs ordered last in the factorization, so that
@@ -141,7 +156,7 @@ ContactSolution solve_contact(const ContactSetup& setup) {
   if (out.qp.method != "interior-point") out.constraint_multiplier = out.gap;
   out.gap_scale = (coupling * u_free).lpNorm<Eigen::Infinity>() + gap_offset.lpNorm<Eigen::Infinity>() +
                   (s * out.lambda).lpNorm<Eigen::Infinity>();
-  out.energy = 0.5 * k_factor.quadratic_form(out.u) - load.dot(out.u);
+  out.energy = 0.5 * k_factor.quadratic_form(out.u) - load.dot(out.u) + energy_offset;
   out.seconds.recovery = recovery_clock.seconds();
   out.constraint_matrix = std::move(constraints.matrix);
   out.lower = std::move(constraints.lower);

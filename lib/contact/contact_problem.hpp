@@ -14,10 +14,12 @@
 
 #include <Eigen/Core>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "assembly/dirichlet_lift.hpp"
 #include "contact/box_qp.hpp"
 #include "contact/inequality_qp.hpp"
 #include "contact/qp_report.hpp"
@@ -54,6 +56,8 @@ struct ContactSetup {
   /// Optional boundary traction t(x, n) on Γ_N and Γ_C, added to the load as ∫ t v ds (Neumann
   /// data; on Γ_C a prescribed traction besides the contact force, used by manufactured tests).
   std::function<double(const mesh::Point& x, const mesh::Point& normal)> traction;
+  /// Dirichlet data u_D on Γ_D; empty: u = 0 there.
+  PointFunction dirichlet;
   /// |𝒞|, the constraint points per segment where Remark 3 applies (p_C ≥ 2, or every p_C for
   /// (15)); must be ≥ p_C + 1 on each such segment. Empty: p_C + 1.
   std::optional<int> constraint_points;
@@ -66,7 +70,10 @@ struct ContactSetup {
 };
 
 struct ContactSolution {
-  Eigen::VectorXd u;  ///< coefficients on S^p(T_h)
+  /// Coefficients on S^p(T_h): u itself, or with Dirichlet data u_0, where u = u_0 + w.
+  Eigen::VectorXd u;
+  /// The lift w of the Dirichlet data (null without them); assembly::total_field gives u.
+  std::shared_ptr<const assembly::DirichletLift> lift;
   /// λ in the Lagrange basis: its values at the constraint points, segment by segment.
   Eigen::VectorXd lambda;
   /// The same λ in the Legendre basis of MultiplierSpace (for evaluation anywhere on Γ_C).
@@ -87,7 +94,7 @@ struct ContactSolution {
   /// gap d − S λ, the scale against which a gap or a multiplier y is small (the gap itself may
   /// vanish, e.g. on a contact set covering Γ_C or an obstacle touching tangentially).
   double gap_scale = 0.0;
-  double energy = 0.0;  ///< E(u) = ½ uᵀKu − Fᵀu
+  double energy = 0.0;  ///< E(u) = ½ a(u, u) − F(u) of the whole u
   QpReport qp;
   int n_trace = 0;  ///< trace dofs the condensation works on (ordered last in the factor)
   struct Seconds {

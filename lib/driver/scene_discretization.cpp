@@ -51,6 +51,10 @@ contact::ContactSetup contact_setup_of(const scene::Scene& scene, const SceneDis
   }
   setup.f = scene_function(scene, "data.f", scene.load);
   setup.load_key = "f = " + scene.load;
+  setup.dirichlet = scene_function(scene, "boundary.u_D", scene.dirichlet_value);
+  if (setup.dirichlet && !d.mesh.has_part(mesh::BoundaryPart::dirichlet))
+    throw_bad_input(scene.where("boundary.u_D"), "boundary.u_D", scene.dirichlet_value,
+                    "absent: the scene has no Γ_D (boundary.dirichlet) for the data to act on");
   if (problem == contact::ContactProblem::signorini)
     setup.obstacle = scene_function(scene, "data.g", scene.obstacle);
   else

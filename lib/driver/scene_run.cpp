@@ -238,8 +238,10 @@ nlohmann::json run_scene(const scene::Scene& given_scene, const SceneRunOptions&
     for (const auto& effect : contacts) {
       if (scene.wants_output(scene::Output::boundary))
         effect.samples.table.write(out / ("boundary_" + effect.problem + ".csv"));
-      if (scene.wants_output(scene::Output::vtu))
-        io::write_vtu(out / ("solution_" + effect.problem + ".vtu"), primal.space(), effect.solution.u);
+      if (scene.wants_output(scene::Output::vtu)) {
+        const auto u = assembly::total_field(effect.solution.lift.get(), primal.space(), effect.solution.u);
+        io::write_vtu(out / ("solution_" + effect.problem + ".vtu"), u.space, u.coefficients);
+      }
     }
     if (mode) mode->write(out / "mode.csv");
     if (convergence) convergence->write(out / "convergence.csv");

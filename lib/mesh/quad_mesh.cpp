@@ -107,6 +107,10 @@ Point QuadMesh::boundary_normal(int e) const {
   return ccw * Point(t.y(), -t.x()).normalized();
 }
 
+bool QuadMesh::has_part(BoundaryPart part) const {
+  return std::find(edge_parts_.begin(), edge_parts_.end(), part) != edge_parts_.end();
+}
+
 void QuadMesh::set_edge_part(int e, BoundaryPart part) {
   HPC_VERIFY(is_boundary_edge(e) || part == BoundaryPart::interior, "boundary part assigned to an interior edge");
   edge_parts_[e] = part;

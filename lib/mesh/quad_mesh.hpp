@@ -58,6 +58,8 @@ class QuadMesh {
   void set_edge_label(int e, std::string label) { edge_labels_[e] = std::move(label); }
   BoundaryPart edge_part(int e) const { return edge_parts_[e]; }
   void set_edge_part(int e, BoundaryPart part);
+  /// Whether some boundary edge belongs to `part`.
+  bool has_part(BoundaryPart part) const;
 
   /// Mesh size h: the longest edge (2/n for the n × n paper square).
   double longest_edge() const;

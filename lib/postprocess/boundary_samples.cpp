@@ -13,6 +13,7 @@ BoundarySamples sample_boundary(const contact::ContactSetup& setup, const contac
                                 int per_interval) {
   const bool signorini = setup.problem == contact::ContactProblem::signorini;
   const space::H1Space space(*setup.mesh, setup.cell_degrees);
+  const auto u_field = assembly::total_field(solution.lift.get(), space, solution.u);
   const mesh::ContactBoundary contact(*setup.mesh);
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
   BoundarySamples out{io::CsvTable({"x", "u", signorini ? "obstacle" : "s", "lambda", "y", "s_arc"}), 0.0};
@@ -27,7 +28,7 @@ BoundarySamples sample_boundary(const contact::ContactSetup& setup, const contac
       const double s = interval.s_begin + (interval.s_end - interval.s_begin) * j / (per_interval - 1);
       const double t = trace.local_parameter(s);
       const auto [xi, eta] = assembly::edge_reference_points(trace.local_edge, std::vector<double>{t});
-      const auto u = postprocess::evaluate(space, solution.u, {trace.cell, xi[0], eta[0]});
+      const auto u = postprocess::evaluate(u_field.space, u_field.coefficients, {trace.cell, xi[0], eta[0]});
       const mesh::Point x = contact.point_at(s);
       const double lambda = multipliers.basis_values(k, multipliers.local_coordinate(k, s)).dot(coefficients);
       const double data = signorini ? setup.obstacle(x) : setup.bound(x);

@@ -61,6 +61,9 @@ struct Scene {
   /// Elastic scenes: edges where u_x = 0 (u_y = 0) alone (rollers), by predicate or Gmsh group.
   std::string fixed_x_predicate, fixed_y_predicate;
   std::vector<std::string> fixed_x_groups, fixed_y_groups;
+  /// Dirichlet data, expressions in x, y: u_D on Γ_D (scalar model), u_D,x and u_D,y wherever that
+  /// component is fixed (Γ_D and rollers; elastic scenes). Empty: 0.
+  std::string dirichlet_value, dirichlet_x, dirichlet_y;
   // [contact_mesh]: exactly one of m, ratio (= h/H), breakpoints.
   int m = 0;
   std::optional<Ratio> ratio;

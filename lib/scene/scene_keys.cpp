@@ -221,7 +221,7 @@ void add_boundary_and_contact_mesh_keys(std::vector<SceneKey>& keys) {
   add(expression_key("boundary", "contact", "", &Scene::contact_predicate,
                      "Γ_C: edges whose midpoint makes this non-zero (one open curve)"));
   add(expression_key("boundary", "dirichlet", "", &Scene::dirichlet_predicate,
-                     "Γ_D (u = 0): edges whose midpoint makes this non-zero; the rest is Γ_N"));
+                     "Γ_D (u = u_D, default 0): edges whose midpoint makes this non-zero; the rest is Γ_N"));
   add(names_key("boundary", "contact_groups", &Scene::contact_groups,
                 "Γ_C as Gmsh physical groups (instead of `contact`)"));
   add(names_key("boundary", "dirichlet_groups", &Scene::dirichlet_groups, "Γ_D as Gmsh physical groups"));
@@ -231,6 +231,12 @@ void add_boundary_and_contact_mesh_keys(std::vector<SceneKey>& keys) {
                      "elastic scenes: edges where u_y = 0 alone, a roller; u_x stays free"));
   add(names_key("boundary", "fixed_x_groups", &Scene::fixed_x_groups, "`fixed_x` as Gmsh physical groups"));
   add(names_key("boundary", "fixed_y_groups", &Scene::fixed_y_groups, "`fixed_y` as Gmsh physical groups"));
+  add(expression_key("boundary", "u_D", "", &Scene::dirichlet_value,
+                     "scalar model: Dirichlet data, u = u_D on Γ_D (empty: 0)"));
+  add(expression_key("boundary", "u_D_x", "", &Scene::dirichlet_x,
+                     "elastic scenes: u_x = u_D_x on Γ_D and on the `fixed_x` edges (empty: 0)"));
+  add(expression_key("boundary", "u_D_y", "", &Scene::dirichlet_y,
+                     "elastic scenes: u_y = u_D_y on Γ_D and on the `fixed_y` edges (empty: 0)"));
   // [contact_mesh]
   const char* size_group = "contact_mesh size";
   SceneKey m =

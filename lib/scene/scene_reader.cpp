@@ -143,7 +143,9 @@ const std::vector<std::string>& elastic_only_keys() {
                                              "boundary.fixed_x",
                                              "boundary.fixed_y",
                                              "boundary.fixed_x_groups",
-                                             "boundary.fixed_y_groups"};
+                                             "boundary.fixed_y_groups",
+                                             "boundary.u_D_x",
+                                             "boundary.u_D_y"};
   return keys;
 }
 
@@ -159,6 +161,9 @@ void check_elastic_effects(const Scene& scene) {
   if (scene.given.contains("data.f"))
     throw_bad_input(scene.where("data.f"), "data.f", scene.load,
                     "absent in an elastic scene: its body force is data.f_x, data.f_y");
+  if (scene.given.contains("boundary.u_D"))
+    throw_bad_input(scene.where("boundary.u_D"), "boundary.u_D", scene.dirichlet_value,
+                    "absent in an elastic scene: its Dirichlet data are boundary.u_D_x, boundary.u_D_y");
   if (!scene.elastic_effects().empty() && scene.obstacle.empty())
     throw_bad_input(scene.where("data.g"), "data.g", "(missing)",
                     "the elastic contact problems need the gap g to the obstacle along the normal");
