@@ -141,6 +141,18 @@ TEST(BadInput, ContactBoundaryEmptyOrOverlappingDirichlet) {
                    {"scene.toml", "overlap", "boundary.dirichlet"});
 }
 
+TEST(BadInput, DirichletDataWithoutDirichletBoundaryOrNotAnExpression) {
+  expect_bad_input("u_d_without_gamma_d",
+                   replaced("dirichlet = \"abs(y - 1) < 1e-9\"", "dirichlet = \"y > 5\"\nu_D = \"x\""),
+                   {"scene.toml", "boundary.u_D", "no Γ_D"});
+  expect_bad_input("u_d_parse",
+                   replaced("dirichlet = \"abs(y - 1) < 1e-9\"", "dirichlet = \"abs(y - 1) < 1e-9\"\nu_D = \"x +\""),
+                   {"scene.toml", "boundary.u_D", "x +"});
+  expect_bad_input("u_d_x_in_scalar_scene",
+                   replaced("dirichlet = \"abs(y - 1) < 1e-9\"", "dirichlet = \"abs(y - 1) < 1e-9\"\nu_D_x = \"1\""),
+                   {"scene.toml", "boundary.u_D_x", "elastic"});
+}
+
 TEST(BadInput, BrokenOrNonQuadrilateralMeshFile) {
   for (const std::string file : {"truncated.msh", "triangles.msh"}) {
     const std::string text =

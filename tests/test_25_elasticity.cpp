@@ -7,6 +7,7 @@
 #include <cmath>
 #include <fstream>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "assembly/condensed_factor.hpp"
@@ -381,6 +382,33 @@ TEST(Hertz, StudyCommandWritesOneRowPerLevel) {
   EXPECT_TRUE(std::filesystem::exists(dir / "hertz_profiles.csv"));
 }
 
+// studies/elasticity/compression.toml: the bottom lifted by u_y = 0.01 on a roller against a flat
+// plate on top; uniaxial stress, so the pressure is E/(1 − ν²) · 0.01/4 everywhere and the energy
+// ½ p · 0.0025 · |Ω|, for any discretization (the solution is affine).
+TEST(ElasticScenes, PrescribedDisplacementGivesTheExactUniformPressure) {
+  const auto dir = hpcontact::testing::scratch("compression");
+  const auto result = hpcontact::testing::run("solve " + std::string(HPCONTACT_SOURCE_DIR) +
+                                              "/studies/elasticity/compression.toml --out " + dir.string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  const double pressure = 0.0025 / (1 - 0.3 * 0.3);
+  std::ifstream in(dir / "boundary_frictionless.csv");
+  std::string line;
+  std::getline(in, line);
+  int rows = 0;
+  for (; std::getline(in, line); ++rows) {
+    std::vector<double> v;
+    std::stringstream fields(line);
+    for (std::string field; std::getline(fields, field, ',');) v.push_back(std::stod(field));
+    ASSERT_EQ(v.size(), 8u) << line;
+    EXPECT_NEAR(v[6], pressure, 1e-12) << line;
+    EXPECT_NEAR(v[3], 0.0, 1e-14) << "u_n: the top stays on the plate";
+  }
+  EXPECT_GT(rows, 100);
+  std::ifstream summary(dir / "summary.json");
+  const auto json = nlohmann::json::parse(summary);
+  EXPECT_NEAR(json["frictionless"]["energy"].get<double>(), 0.5 * pressure * 0.0025 * 32.0, 1e-15);
+}
+
 TEST(ElasticScenes, BadInputNamesTheKeyAndTheRule) {
   std::ifstream in(kHertzScene);
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -403,6 +431,10 @@ TEST(ElasticScenes, BadInputNamesTheKeyAndTheRule) {
         {"model = \"plane_strain\"\n", ""},
         {"[data]\n", "[data]\nf_x = \"1\"\n"}},
        "only with an elastic effect"},
+      // Dirichlet data: the scalar key, or a component that nothing fixes.
+      {{{"[boundary]\n", "[boundary]\nu_D = \"1\"\n"}}, "boundary.u_D_x, boundary.u_D_y"},
+      {{{"dirichlet = \"abs(y + 4) < 1e-9\"\n", "fixed_y = \"abs(y + 4) < 1e-9\"\nu_D_x = \"0.1\"\n"}},
+       "no edge fixes u_x"},
   };
   for (const auto& c : cases) {
     const auto dir = hpcontact::testing::scratch("elastic_bad");

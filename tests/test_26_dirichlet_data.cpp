@@ -6,16 +6,23 @@
 
 #include <cmath>
 
+#include "assembly/condensed_factor.hpp"
 #include "assembly/coupling.hpp"
 #include "assembly/dirichlet_lift.hpp"
+#include "assembly/elastic_load.hpp"
+#include "assembly/elastic_system.hpp"
 #include "assembly/poisson_assembly.hpp"
+#include "contact/elastic_contact.hpp"
 #include "contact_fixture.hpp"
+#include "elastic_manufactured.hpp"
 #include "linalg/sparse_cholesky.hpp"
 #include "manufactured_solution.hpp"
 #include "mesh/boundary_mesh.hpp"
 #include "mesh/contact_boundary.hpp"
 #include "mesh/rectangle_mesh.hpp"
+#include "operators/elastic_operators.hpp"
 #include "operators/poisson_problem.hpp"
+#include "postprocess/elastic_errors.hpp"
 #include "postprocess/error_norms.hpp"
 #include "postprocess/fe_function.hpp"
 #include "space/h1_space.hpp"
@@ -265,4 +272,150 @@ TEST(DirichletData, FrictionConstraintsSeeTheWholeField) {
     EXPECT_NEAR(solution.lambda.dot(solution.gap), whole, 1e-10 * std::abs(whole) + 1e-13) << label;
     EXPECT_GT(std::abs(whole - without_lift), 1e-4 * std::abs(whole)) << label << ": the lift must matter here";
   }
+}
+
+namespace {
+
+using hpcontact::testing::elastic_gradient;
+using hpcontact::testing::elastic_u;
+
+const assembly::Material kMaterial = assembly::lame_parameters(1.0, 0.3, assembly::PlaneModel::strain);
+
+// An affine displacement (constant strain, no body force) that does not vanish on Γ_D.
+Eigen::Vector2d affine(const mesh::Point& x) {
+  return {0.1 + 0.05 * x.x() - 0.02 * x.y(), -0.04 + 0.02 * x.x() + 0.06 * x.y()};
+}
+Eigen::Matrix2d affine_gradient(const mesh::Point&) {
+  return (Eigen::Matrix2d() << 0.05, -0.02, 0.02, 0.06).finished();
+}
+Eigen::Vector2d stress_times(const Eigen::Matrix2d& g, const mesh::Point& normal) {
+  return (kMaterial.lambda * g.trace() * Eigen::Matrix2d::Identity() + kMaterial.mu * (g + g.transpose())) * normal;
+}
+
+// Elasticity on the §7 square with u = elastic_u + `scale` · affine: Dirichlet data on Γ_D (where
+// elastic_u vanishes), traction on the rest; the energy error of u_0 + w.
+double elastic_lifted_error(const mesh::QuadMesh& mesh, int p, double elastic_scale) {
+  const space::H1Space scalar(mesh, p);
+  const space::VectorSpace space(scalar);
+  const std::vector<assembly::Material> materials(mesh.n_cells(), kMaterial);
+  const assembly::DirichletLift lift(
+      space, {[](const mesh::Point& x) { return affine(x).x(); }, [](const mesh::Point& x) { return affine(x).y(); }});
+  const Eigen::VectorXd extended_load = assembly::assemble_elastic_load(
+      *lift.extended_vector(),
+      [&](const mesh::Point& x) -> Eigen::Vector2d {
+        return elastic_scale * hpcontact::testing::elastic_body_force(x, kMaterial);
+      },
+      {mesh::BoundaryPart::neumann, mesh::BoundaryPart::contact},
+      [&](const mesh::Point& x, const mesh::Point& n) {
+        return Eigen::Vector2d(elastic_scale * hpcontact::testing::elastic_traction(x, n, kMaterial) +
+                               stress_times(affine_gradient(x), n));
+      });
+  const assembly::ElasticCellSystem system(space, materials);
+  const auto lifted = lift.lifted_load(system, extended_load);
+  const assembly::CondensedFactor factor(std::make_unique<assembly::ElasticCellSystem>(space, materials));
+  const auto u = assembly::total_field(&lift, space, factor.solve(lifted.load));
+  return postprocess::compute_elastic_errors(
+             u.space, materials, u.coefficients,
+             {[&](const mesh::Point& x) { return Eigen::Vector2d(elastic_scale * elastic_u(x) + affine(x)); },
+              [&](const mesh::Point& x) {
+                return Eigen::Matrix2d(elastic_scale * elastic_gradient(x) + affine_gradient(x));
+              }})
+      .energy;
+}
+
+}  // namespace
+
+TEST(DirichletData, ElasticAffineDisplacementIsReproducedOnAPerturbedMesh) {
+  auto mesh = mesh::make_paper_square_mesh(4);
+  mesh::perturb_interior_vertices(mesh, 0.2, 11);
+  for (int p : {1, 3}) EXPECT_LT(elastic_lifted_error(mesh, p, 0.0), 1e-12) << "p = " << p;
+}
+
+TEST(DirichletData, ElasticEnergyErrorRateIsPWithDataOnTheDirichletBoundary) {
+  const int coarse[] = {0, 8, 4, 2};
+  for (int p = 1; p <= 3; ++p) {
+    const double a = elastic_lifted_error(mesh::make_paper_square_mesh(2 * coarse[p]), p, 1.0);
+    const double b = elastic_lifted_error(mesh::make_paper_square_mesh(4 * coarse[p]), p, 1.0);
+    EXPECT_NEAR(std::log2(a / b), p, 0.25) << "p = " << p << ": " << a << " -> " << b;
+  }
+}
+
+namespace {
+
+// A small rigid motion: no strain, so adding it to u changes neither stress nor pressure.
+Eigen::Vector2d rigid(const mesh::Point& x) {
+  return Eigen::Vector2d(0.02, -0.03) + 0.01 * Eigen::Vector2d(-x.y(), x.x());
+}
+
+// The square clamped on the right edge (Γ_D reaching Γ_C at (1, −1)), hanging over an obstacle
+// below its bottom edge (n = (0, −1)) under f = (0, −1); in contact up to Γ_D.
+struct ElasticBlock {
+  mesh::QuadMesh mesh = square_clamped_on_the_right(8);
+  std::vector<assembly::Material> materials = std::vector<assembly::Material>(mesh.n_cells(), kMaterial);
+  operators::ElasticOperators operators{mesh, std::vector<int>(mesh.n_cells(), 3), materials};
+  mesh::BoundaryMesh boundary = mesh::BoundaryMesh::uniform(2.0, 8);
+
+  contact::ElasticContactSetup setup(contact::ElasticContactProblem problem) const {
+    contact::ElasticContactSetup s;
+    s.operators = &operators;
+    s.boundary_mesh = &boundary;
+    s.segment_degrees.assign(boundary.n_segments(), 1);
+    s.problem = problem;
+    s.body_force = [](const mesh::Point&) { return Eigen::Vector2d(0.0, -1.0); };
+    s.gap = [](const mesh::Point& x) { return 0.02 * (1.0 - x.x()); };
+    s.threshold = [](const mesh::Point&) { return 0.1; };
+    return s;
+  }
+};
+
+}  // namespace
+
+TEST(DirichletData, FrictionlessContactWithRigidMotionDataIsTheMovedSolution) {
+  // u_D = r (rigid) and gap g + r·n: the solution is ũ + r with the same pressure, and
+  // E = Ẽ − (f, r) = Ẽ + ∫ r_y.
+  const ElasticBlock block;
+  const auto plain = contact::solve_elastic_contact(block.setup(contact::ElasticContactProblem::frictionless));
+  auto setup = block.setup(contact::ElasticContactProblem::frictionless);
+  setup.dirichlet = {[](const mesh::Point& x) { return rigid(x).x(); },
+                     [](const mesh::Point& x) { return rigid(x).y(); }};
+  setup.gap = [](const mesh::Point& x) { return 0.02 * (1.0 - x.x()) - rigid(x).y(); };
+  const auto moved = contact::solve_elastic_contact(setup);
+  // The nodal normal multiplier at (1, −1), where Γ_C meets Γ_D: −σ_nn > 0.
+  const double pressure_at_the_end = -plain.lambda(plain.n_normal - 1);
+  ASSERT_GT(pressure_at_the_end, 1e-3 * plain.lambda.lpNorm<Eigen::Infinity>()) << "contact must reach Γ_D";
+  EXPECT_LT((moved.pressure - plain.pressure).lpNorm<Eigen::Infinity>(), 1e-9 * plain.pressure.maxCoeff());
+  EXPECT_NEAR(moved.energy, plain.energy + 4 * (-0.03), 1e-10);  // ∫ r_y over (−1, 1)²: the rotation integrates to 0
+  // u − ũ on the space with Γ_D kept, against r.
+  const auto& lift = *moved.lift;
+  const Eigen::VectorXd difference = lift.total(moved.u) - (lift.total(plain.u) - lift.values());
+  const auto errors = postprocess::compute_elastic_errors(
+      *lift.extended_vector(), block.materials, difference,
+      {rigid, [](const mesh::Point&) { return (Eigen::Matrix2d() << 0.0, -0.01, 0.01, 0.0).finished(); }});
+  EXPECT_LT(errors.l2, 1e-10);
+}
+
+TEST(DirichletData, TrescaGapsAreThoseOfTheWholeDisplacement) {
+  // The QP converged, and λ · gap = (p, u·n − g) − (σ_nt, u·t) with the couplings of
+  // the space with Γ_D kept applied to u_0 + w: the constraints see the whole displacement.
+  const ElasticBlock block;
+  auto setup = block.setup(contact::ElasticContactProblem::tresca);
+  setup.dirichlet = {[](const mesh::Point& x) { return rigid(x).x(); },
+                     [](const mesh::Point& x) { return rigid(x).y(); }};
+  const auto solution = contact::solve_elastic_contact(setup);
+  const auto& lift = *solution.lift;
+  const space::MultiplierSpace multipliers(block.boundary, 1);
+  const auto& contact = block.operators.contact();
+  auto pairing = [&](const Eigen::VectorXd& u) {
+    const auto normal = assembly::assemble_directional_coupling(*lift.extended_vector(), contact, multipliers,
+                                                                assembly::TraceDirection::normal);
+    const auto tangent = assembly::assemble_directional_coupling(*lift.extended_vector(), contact, multipliers,
+                                                                 assembly::TraceDirection::tangent);
+    const Eigen::VectorXd g = assembly::assemble_multiplier_load(contact, multipliers, setup.gap);
+    return solution.pressure.dot(normal * u - g) - solution.shear.dot(tangent * u);
+  };
+  const double whole = pairing(lift.total(solution.u));
+  EXPECT_NEAR(solution.lambda.dot(solution.gap), whole, 1e-10 * solution.gap_scale * solution.lambda.lpNorm<1>());
+  EXPECT_GT(std::abs(whole - pairing(lift.total(solution.u) - lift.values())), 1e-4 * std::abs(whole));
+  EXPECT_LT(solution.qp.kkt_residual, 1e-10);
+  EXPECT_GT(solution.shear.lpNorm<Eigen::Infinity>(), 1e-3);
 }

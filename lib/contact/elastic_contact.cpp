@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "assembly/coupling.hpp"
+#include "assembly/elastic_system.hpp"
 #include "contact/multiplier_constraints.hpp"
 #include "contact/multiplier_qp.hpp"
 #include "core/error.hpp"
@@ -64,7 +65,23 @@ struct CondensedProblem {
   int n_normal_rows = 0;  ///< constraint rows of the normal part
 };
 
-CondensedProblem condensed_problem(const ElasticContactSetup& setup, const space::MultiplierSpace& multipliers) {
+// B w: the rows of the coupling (−B_n; B_t) applied to the lift, with B of the extended space.
+Eigen::VectorXd coupling_of_lift(const ElasticContactSetup& setup, const space::MultiplierSpace& multipliers,
+                                 const Eigen::SparseMatrix<double>& to_nodal, const assembly::DirichletLift& lift) {
+  auto part = [&](assembly::TraceDirection direction) -> Eigen::VectorXd {
+    return to_nodal * (assembly::assemble_directional_coupling(*lift.extended_vector(), setup.operators->contact(),
+                                                               multipliers, direction) *
+                       lift.values());
+  };
+  Eigen::VectorXd out = -part(assembly::TraceDirection::normal);
+  if (setup.problem == ElasticContactProblem::frictionless) return out;
+  out.conservativeResize(2 * out.size());
+  out.tail(out.size() / 2) = part(assembly::TraceDirection::tangent);
+  return out;
+}
+
+CondensedProblem condensed_problem(const ElasticContactSetup& setup, const space::MultiplierSpace& multipliers,
+                                   const assembly::DirichletLift* lift) {
   const auto& ops = *setup.operators;
   CondensedProblem out;
   auto normal = part_constraints(setup, multipliers, true);
@@ -76,15 +93,28 @@ CondensedProblem condensed_problem(const ElasticContactSetup& setup, const space
   out.n_normal_rows = static_cast<int>(normal.matrix.rows());
   if (setup.problem == ElasticContactProblem::frictionless) {
     out.constraints = std::move(normal);
-    return out;
+  } else {
+    const auto tangential = part_constraints(setup, multipliers, false);
+    out.coupling =
+        linalg::stack_rows(out.coupling, to_nodal * ops.coupling(multipliers, assembly::TraceDirection::tangent));
+    out.offset.conservativeResize(2 * out.n_normal);
+    out.offset.tail(out.n_normal).setZero();
+    out.constraints = stack_constraints(normal, tangential);
   }
-  const auto tangential = part_constraints(setup, multipliers, false);
-  out.coupling =
-      linalg::stack_rows(out.coupling, to_nodal * ops.coupling(multipliers, assembly::TraceDirection::tangent));
-  out.offset.conservativeResize(2 * out.n_normal);
-  out.offset.tail(out.n_normal).setZero();
-  out.constraints = stack_constraints(normal, tangential);
+  // The constraints act on u_0 + w: B u_0 against the offset − B w.
+  if (lift) out.offset -= coupling_of_lift(setup, multipliers, to_nodal, *lift);
   return out;
+}
+
+// The load of u_0, and the energy's constant (assembly::DirichletLift).
+assembly::DirichletLift::LiftedLoad problem_load(const ElasticContactSetup& setup,
+                                                 const assembly::DirichletLift* lift) {
+  const auto& ops = *setup.operators;
+  const space::VectorSpace& space = lift ? *lift->extended_vector() : ops.vector_space();
+  Eigen::VectorXd load =
+      assembly::assemble_elastic_load(space, setup.body_force, {mesh::BoundaryPart::neumann}, setup.traction);
+  if (!lift) return {std::move(load), 0.0};
+  return lift->lifted_load(assembly::ElasticCellSystem(ops.vector_space(), ops.materials()), load);
 }
 
 // Coulomb: the tangential bounds ±F p at the tangential constraint points, p = −σ_nn there (the
@@ -135,9 +165,10 @@ ElasticContactSolution solve_elastic_contact(const ElasticContactSetup& setup) {
   // 1. The load, B (normal part, then tangential) and the constraints in the nodal basis.
   Stopwatch assembly_clock;
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
-  const Eigen::VectorXd load = assembly::assemble_elastic_load(ops.vector_space(), setup.body_force,
-                                                               {mesh::BoundaryPart::neumann}, setup.traction);
-  CondensedProblem problem = condensed_problem(setup, multipliers);
+  if (setup.dirichlet[0] || setup.dirichlet[1])
+    out.lift = std::make_shared<assembly::DirichletLift>(ops.vector_space(), setup.dirichlet);
+  const auto [load, energy_offset] = problem_load(setup, out.lift.get());
+  CondensedProblem problem = condensed_problem(setup, multipliers, out.lift.get());
   out.seconds.assembly = assembly_clock.seconds();
 
   // 2. Condensation onto the trace (ordered last in the factor): S = B A⁻¹ Bᵀ, d.
@@ -169,7 +200,7 @@ ElasticContactSolution solve_elastic_contact(const ElasticContactSetup& setup) {
   out.pressure = -legendre.head(problem.n_normal);
   out.shear = setup.problem == ElasticContactProblem::frictionless ? Eigen::VectorXd::Zero(problem.n_normal)
                                                                    : Eigen::VectorXd(-legendre.tail(problem.n_normal));
-  out.energy = 0.5 * factor.quadratic_form(out.u) - load.dot(out.u);
+  out.energy = 0.5 * factor.quadratic_form(out.u) - load.dot(out.u) + energy_offset;
   out.n_normal = problem.n_normal;
   out.constraint_matrix = std::move(problem.constraints.matrix);
   out.lower = std::move(problem.constraints.lower);

@@ -12,10 +12,13 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "assembly/dirichlet_lift.hpp"
 #include "assembly/elastic_load.hpp"
 #include "contact/contact_problem.hpp"
 #include "operators/elastic_operators.hpp"
@@ -34,6 +37,8 @@ struct ElasticContactSetup {
   ElasticContactProblem problem = ElasticContactProblem::frictionless;
   assembly::VectorFunction body_force;  ///< f (may be empty)
   assembly::TractionFunction traction;  ///< t on Γ_N (may be empty)
+  /// Dirichlet data u_D,x and u_D,y wherever the component is fixed (Γ_D, rollers); empty: 0.
+  std::array<PointFunction, space::kComponents> dirichlet;
   /// g: the gap between Γ_C and the obstacle along n in the undeformed state; u·n ≤ g.
   PointFunction gap;
   PointFunction threshold;            ///< s ≥ 0, Tresca only
@@ -47,7 +52,11 @@ struct ElasticContactSetup {
 };
 
 struct ElasticContactSolution {
-  Eigen::VectorXd u;  ///< displacement, numbered by space::VectorSpace::dof
+  /// Displacement numbered by space::VectorSpace::dof: u itself, or with Dirichlet data u_0, where
+  /// u = u_0 + w.
+  Eigen::VectorXd u;
+  /// The lift w of the Dirichlet data (null without them); assembly::total_field gives u.
+  std::shared_ptr<const assembly::DirichletLift> lift;
   /// Contact pressure p = −σ_nn ≥ 0 and tangential traction σ_nt on the body (along the tangent
   /// of increasing arc length), Legendre coefficients in M^{p_C}(T_{C,H}); σ_nt = 0 without friction.
   Eigen::VectorXd pressure, shear;
@@ -60,7 +69,7 @@ struct ElasticContactSolution {
   /// ‖B u_free‖_∞ + ‖offset‖_∞ + ‖S λ‖_∞: the size of the terms whose sum is the gap, against
   /// which a gap is small (as ContactSolution::gap_scale).
   double gap_scale = 0.0;
-  double energy = 0.0;  ///< ½ uᵀ A u − Fᵀ u
+  double energy = 0.0;  ///< ½ a(u, u) − F(u) of the whole u
   QpReport qp;          ///< the last QP solved
   /// Coulomb: fixed-point iterations and max |Δλ| / max |λ| after each; empty otherwise.
   std::vector<double> fixed_point_changes;

@@ -44,6 +44,27 @@ std::unique_ptr<operators::ElasticOperators> scene_elastic_operators(const scene
                                                        scene::scene_fixed_components(scene, mesh));
 }
 
+namespace {
+
+// Dirichlet data of a component need edges that fix it (Γ_D, or its rollers) to act on.
+void check_dirichlet_data(const scene::Scene& scene, const operators::ElasticOperators& operators) {
+  const auto& space = operators.vector_space();
+  const std::array<std::pair<const char*, const std::string*>, 2> data{
+      {{"boundary.u_D_x", &scene.dirichlet_x}, {"boundary.u_D_y", &scene.dirichlet_y}}};
+  for (int c = 0; c < space::kComponents; ++c) {
+    if (data[c].second->empty() || operators.mesh().has_part(mesh::BoundaryPart::dirichlet)) continue;
+    bool fixed = false;
+    for (int d = 0; d < space.scalar().n_dofs() && !fixed; ++d) fixed = space.dof(d, c) < 0;
+    if (!fixed)
+      throw_bad_input(scene.where(data[c].first), data[c].first, *data[c].second,
+                      fmt::format("absent: no edge fixes u_{} (neither Γ_D, boundary.dirichlet, nor a roller, "
+                                  "boundary.fixed_{})",
+                                  c == 0 ? 'x' : 'y', c == 0 ? 'x' : 'y'));
+  }
+}
+
+}  // namespace
+
 contact::ElasticContactSetup elastic_setup_of(const scene::Scene& scene, const SceneDiscretization& d,
                                               contact::ElasticContactProblem problem,
                                               const operators::ElasticOperators& operators) {
@@ -59,6 +80,9 @@ contact::ElasticContactSetup elastic_setup_of(const scene::Scene& scene, const S
   const auto tx = scene_function(scene, "data.t_x", scene.traction_x);
   const auto ty = scene_function(scene, "data.t_y", scene.traction_y);
   setup.traction = [tx, ty](const mesh::Point& x, const mesh::Point&) { return Eigen::Vector2d(tx(x), ty(x)); };
+  setup.dirichlet = {scene_function(scene, "boundary.u_D_x", scene.dirichlet_x),
+                     scene_function(scene, "boundary.u_D_y", scene.dirichlet_y)};
+  check_dirichlet_data(scene, operators);
   setup.gap = scene_function(scene, "data.g", scene.obstacle);
   if (problem == contact::ElasticContactProblem::tresca) {
     const auto bound = scene_function(scene, "data.s", scene.friction_bound);
@@ -183,9 +207,10 @@ void write_outputs(const scene::Scene& scene, const operators::ElasticOperators&
   for (const auto& effect : effects) {
     if (scene.wants_output(scene::Output::boundary))
       effect.samples.table.write(out / ("boundary_" + effect.name + ".csv"));
-    if (scene.wants_output(scene::Output::vtu))
-      io::write_elastic_vtu(out / ("solution_" + effect.name + ".vtu"), operators.vector_space(), operators.materials(),
-                            effect.solution.u);
+    if (scene.wants_output(scene::Output::vtu)) {
+      const auto u = assembly::total_field(effect.solution.lift.get(), operators.vector_space(), effect.solution.u);
+      io::write_elastic_vtu(out / ("solution_" + effect.name + ".vtu"), u.space, operators.materials(), u.coefficients);
+    }
   }
   if (extra.mode) extra.mode->write(out / "mode.csv");
   if (extra.convergence) extra.convergence->write(out / "convergence.csv");

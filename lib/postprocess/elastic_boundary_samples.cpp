@@ -21,8 +21,9 @@ ElasticBoundarySamples sample_elastic_boundary(const contact::ElasticContactSetu
   const auto& ops = *setup.operators;
   const auto& contact = ops.contact();
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
-  const std::array<Eigen::VectorXd, 2> components{ops.vector_space().component(solution.u, 0),
-                                                  ops.vector_space().component(solution.u, 1)};
+  const auto u_field = assembly::total_field(solution.lift.get(), ops.vector_space(), solution.u);
+  const std::array<Eigen::VectorXd, 2> components{u_field.space.component(u_field.coefficients, 0),
+                                                  u_field.space.component(u_field.coefficients, 1)};
   ElasticBoundarySamples out{io::CsvTable({"x", "y", "s_arc", "u_n", "u_t", "gap", "pressure", "traction_t"}), 0.0,
                              0.0};
   out.total_force = total_force(multipliers, solution.pressure);
@@ -39,8 +40,8 @@ ElasticBoundarySamples sample_elastic_boundary(const contact::ElasticContactSetu
       const double s = interval.s_begin + (interval.s_end - interval.s_begin) * j / (per_interval - 1);
       const auto [xi, eta] = assembly::edge_reference_points(trace.local_edge, {trace.local_parameter(s)});
       const CellPoint where{trace.cell, xi[0], eta[0]};
-      const Eigen::Vector2d u(evaluate(ops.space(), components[0], where).value,
-                              evaluate(ops.space(), components[1], where).value);
+      const Eigen::Vector2d u(evaluate(u_field.space.scalar(), components[0], where).value,
+                              evaluate(u_field.space.scalar(), components[1], where).value);
       const mesh::Point x = contact.point_at(s);
       const Eigen::VectorXd basis = multipliers.basis_values(k, multipliers.local_coordinate(k, s));
       const double pressure = basis.dot(solution.pressure.segment(first, n_modes));
