@@ -20,3 +20,14 @@ find_library(SUITESPARSECONFIG_LIBRARY suitesparseconfig REQUIRED)
 add_library(hpcontact_cholmod INTERFACE)
 target_include_directories(hpcontact_cholmod INTERFACE ${CHOLMOD_INCLUDE_DIR})
 target_link_libraries(hpcontact_cholmod INTERFACE ${CHOLMOD_LIBRARY} ${SUITESPARSECONFIG_LIBRARY})
+
+# The Gmsh API (libgmsh-dev) reads mesh files. It is loaded at run time (mesh/gmsh_api.hpp), so
+# only its header is used at build time, and the library's real file is where it is looked for
+# first.
+find_path(GMSH_INCLUDE_DIR gmshc.h REQUIRED)
+find_library(GMSH_LIBRARY gmsh REQUIRED)
+get_filename_component(GMSH_LIBRARY_FILE "${GMSH_LIBRARY}" REALPATH)
+add_library(hpcontact_gmsh INTERFACE)
+target_include_directories(hpcontact_gmsh INTERFACE ${GMSH_INCLUDE_DIR})
+target_compile_definitions(hpcontact_gmsh INTERFACE HPCONTACT_GMSH_LIBRARY="${GMSH_LIBRARY_FILE}")
+target_link_libraries(hpcontact_gmsh INTERFACE ${CMAKE_DL_LIBS})

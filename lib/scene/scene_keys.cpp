@@ -176,7 +176,7 @@ SceneKey degree_key(const char* name, int low, int high, Degree Scene::*member, 
 
 void add_domain_keys(std::vector<SceneKey>& keys) {
   auto add = [&](SceneKey key) { keys.push_back(std::move(key)); };
-  add({"domain", "mesh", "string", "", "a Gmsh MSH 4 ASCII file of quadrilaterals",
+  add({"domain", "mesh", "string", "", "a Gmsh mesh file of quadrilaterals (MSH 2.2 or 4, ASCII or binary)",
        "Gmsh mesh, relative to the scene file; absent: the rectangle below", "",
        [](const TomlTable& table, Scene& scene) {
          if (!table.has("mesh")) return;

@@ -1,0 +1,54 @@
+// The part of the Gmsh API that reading a mesh file needs, loaded on first use: libgmsh pulls in
+// about 180 shared libraries (OpenCASCADE, FLTK, ...), which would cost every process 0.17 s of
+// start-up if it were linked, while only scenes with a mesh file use it. The C API (gmshc.h) is
+// resolved with dlopen/dlsym; outputs come back as std::vector.
+#pragma once
+
+#include <cstddef>
+#include <mutex>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace hpcontact::mesh::gmsh_api {
+
+struct ElementBlocks {
+  std::vector<int> types;                       ///< one block per element type
+  std::vector<std::vector<std::size_t>> tags;   ///< element tags per block
+  std::vector<std::vector<std::size_t>> nodes;  ///< node tags per block, element after element
+};
+
+struct ElementType {
+  std::string name;  ///< Gmsh's name, e.g. "Triangle 3", "Quadrilateral 9"
+  int order = 1;
+};
+
+/// Exclusive use of Gmsh's one global model (loaded and initialized on first use, its terminal
+/// output silenced) for the lifetime of the object.
+/// @throws InputError if the Gmsh library cannot be loaded (naming the Debian package).
+class Session {
+ public:
+  Session();
+  ~Session();
+  Session(const Session&) = delete;
+  Session& operator=(const Session&) = delete;
+
+  /// Clears the model and reads `path` into it. @throws InputError with Gmsh's message (and
+  /// restarts Gmsh, which ignores later files after an error inside a reader).
+  void open(const std::string& path);
+  int dimension() const;
+  /// Elements of dimension `dim` on entity `tag` (-1: all).
+  ElementBlocks elements(int dim, int tag = -1) const;
+  /// Every node's tag and coordinates (x, y, z per node).
+  void nodes(std::vector<std::size_t>& tags, std::vector<double>& coordinates) const;
+  ElementType element_type(int type) const;
+  /// (dim, tag) of the physical groups of dimension `dim`.
+  std::vector<std::pair<int, int>> physical_groups(int dim) const;
+  std::string physical_name(int dim, int tag) const;
+  std::vector<int> entities_of_physical_group(int dim, int tag) const;
+
+ private:
+  std::unique_lock<std::mutex> lock_;
+};
+
+}  // namespace hpcontact::mesh::gmsh_api
