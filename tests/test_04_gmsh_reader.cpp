@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -194,4 +195,33 @@ TEST(GmshReader, LabelledLineInsideTheDomainIsRejected) {
 TEST(GmshReader, CurveInTwoPhysicalGroupsIsRejected) {
   const auto path = write_temp("two_groups.msh", square_with("0 1 1 2 1 -2", "0 2 1 3 2 1 -2"));
   EXPECT_THAT(message_of(path), HasSubstr("curve 1 belongs to the physical groups 'contact' and 'neumann'"));
+}
+
+TEST(GmshReader, GeometryFileIsMeshedIntoQuadrilateralsWithItsPhysicalCurves) {
+  // The tutorial's block: contact on y = 0 (length 2), clamped on the sloped top, free sides.
+  const std::string geo = std::string(HPCONTACT_SOURCE_DIR) + "/studies/tutorial/block.geo";
+  const QuadMesh coarse = read_gmsh_mesh(geo);
+  const QuadMesh fine = read_gmsh_mesh(geo, 0.1);
+  EXPECT_GT(fine.n_cells(), 2 * coarse.n_cells());
+  for (const QuadMesh* mesh : {&coarse, &fine}) {
+    const auto lengths = length_by_label(*mesh);
+    EXPECT_NEAR(lengths.at("contact"), 2.0, 1e-12);
+    EXPECT_NEAR(lengths.at("clamped"), std::hypot(2.0, 0.5), 1e-12);
+    EXPECT_NEAR(lengths.at("free"), 2.5, 1e-12);
+    EXPECT_EQ(lengths.count(""), 0u) << "every boundary edge is labelled";
+  }
+}
+
+TEST(GmshReader, GeometryFileErrorsNameTheFileAndTheRule) {
+  const std::string geo = read_text(std::string(HPCONTACT_SOURCE_DIR) + "/studies/tutorial/block.geo");
+  EXPECT_THAT(message_of(write_temp("order2.geo", geo + "\nMesh.ElementOrder = 2;\n")),
+              HasSubstr("order2.geo: asks for Mesh.ElementOrder = 2"));
+  EXPECT_THAT(message_of(write_temp("broken.geo", "Point(1) = {0, 0, 0;\n")),
+              HasSubstr("broken.geo: Gmsh cannot read the file"));
+  try {
+    read_gmsh_mesh(data("square_2x2.msh"), 0.5);
+    ADD_FAILURE() << "a mesh size for a mesh file must be refused";
+  } catch (const InputError& error) {
+    EXPECT_THAT(error.what(), HasSubstr("square_2x2.msh: a mesh size applies to Gmsh geometry files (.geo) only"));
+  }
 }

@@ -16,6 +16,8 @@ struct Library {
   decltype(&::gmshInitialize) initialize = nullptr;
   decltype(&::gmshFinalize) finalize = nullptr;
   decltype(&::gmshOptionSetNumber) set_number = nullptr;
+  decltype(&::gmshOptionGetNumber) get_number = nullptr;
+  decltype(&::gmshModelMeshGenerate) generate = nullptr;
   decltype(&::gmshClear) clear = nullptr;
   decltype(&::gmshOpen) open = nullptr;
   decltype(&::gmshLoggerGetLastError) last_error = nullptr;
@@ -58,6 +60,8 @@ Library load() {
   resolve(handle, "gmshInitialize", l.initialize);
   resolve(handle, "gmshFinalize", l.finalize);
   resolve(handle, "gmshOptionSetNumber", l.set_number);
+  resolve(handle, "gmshOptionGetNumber", l.get_number);
+  resolve(handle, "gmshModelMeshGenerate", l.generate);
   resolve(handle, "gmshClear", l.clear);
   resolve(handle, "gmshOpen", l.open);
   resolve(handle, "gmshLoggerGetLastError", l.last_error);
@@ -111,17 +115,40 @@ Session::Session() : lock_(gmsh_mutex()) { library(); }
 
 Session::~Session() = default;
 
+// After an error inside a reader (or the mesher) Gmsh ignores later files until it is started
+// afresh: restart it, then report.
+[[noreturn]] void fail(const std::string& path, const char* what) {
+  const std::string error = last_error();
+  int ierr = 0;
+  library().finalize(&ierr);
+  library().start();
+  throw InputError(fmt::format("{}: Gmsh cannot {}: {}", path, what, error.empty() ? "unknown error" : error));
+}
+
 void Session::open(const std::string& path) {
   const Library& l = library();
   int ierr = 0;
   l.clear(&ierr);
   l.open(path.c_str(), &ierr);
-  if (ierr == 0) return;
-  const std::string error = last_error();
-  // After an error inside a reader Gmsh ignores later files until it is started afresh.
-  l.finalize(&ierr);
-  l.start();
-  throw InputError(fmt::format("{}: Gmsh cannot read the file: {}", path, error.empty() ? "unknown error" : error));
+  if (ierr != 0) fail(path, "read the file");
+}
+
+void Session::generate_quadrilaterals(const std::string& path, std::optional<double> max_size) {
+  const Library& l = library();
+  int ierr = 0;
+  double order = 1.0;
+  l.get_number("Mesh.ElementOrder", &order, &ierr);
+  if (order > 1.0)
+    throw InputError(
+        fmt::format("{}: asks for Mesh.ElementOrder = {}; curved (high-order) cells are not supported "
+                    "yet, so mesh with Mesh.ElementOrder = 1",
+                    path, order));
+  for (const auto& [name, value] :
+       {std::pair{"Mesh.RecombineAll", 1.0}, {"Mesh.Algorithm", 6.0}, {"Mesh.SubdivisionAlgorithm", 1.0}})
+    l.set_number(name, value, &ierr);
+  if (max_size) l.set_number("Mesh.MeshSizeMax", *max_size, &ierr);
+  l.generate(2, &ierr);
+  if (ierr != 0) fail(path, "mesh the geometry");
 }
 
 int Session::dimension() const {

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -36,6 +37,12 @@ class Session {
   /// Clears the model and reads `path` into it. @throws InputError with Gmsh's message (and
   /// restarts Gmsh, which ignores later files after an error inside a reader).
   void open(const std::string& path);
+  /// Meshes the geometry read by open() (a .geo file) into first-order quadrilaterals: Gmsh's
+  /// frontal-Delaunay triangulation recombined, every triangle left split into quadrilaterals
+  /// (Mesh.RecombineAll = 1, Mesh.Algorithm = 6, Mesh.SubdivisionAlgorithm = 1), elements at most
+  /// `max_size` (Mesh.MeshSizeMax) before the split when given. @throws InputError with Gmsh's
+  /// message, or if the file asks for Mesh.ElementOrder > 1 (curved cells are not supported yet).
+  void generate_quadrilaterals(const std::string& path, std::optional<double> max_size);
   int dimension() const;
   /// Elements of dimension `dim` on entity `tag` (-1: all).
   ElementBlocks elements(int dim, int tag = -1) const;

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <unordered_map>
 
 #include "core/error.hpp"
@@ -43,10 +44,14 @@ std::string unsupported_cell(const gmsh_api::Session& gmsh, const std::string& p
   return what;
 }
 
-// Reads `path` into Gmsh's model.
-void open_in_gmsh(gmsh_api::Session& gmsh, const std::string& path) {
+// Reads `path` into Gmsh's model; a .geo geometry is meshed into quadrilaterals there.
+void open_in_gmsh(gmsh_api::Session& gmsh, const std::string& path, std::optional<double> geo_mesh_size) {
   if (!std::ifstream(path)) throw InputError(path + ": cannot open the Gmsh mesh file");
+  const bool geometry = std::filesystem::path(path).extension() == ".geo";
+  if (geo_mesh_size && !geometry)
+    throw InputError(path + ": a mesh size applies to Gmsh geometry files (.geo) only, not to a mesh file");
   gmsh.open(path);
+  if (geometry) gmsh.generate_quadrilaterals(path, geo_mesh_size);
   if (gmsh.dimension() < 2)
     throw InputError(path + ": holds no 2-D mesh (no $Nodes or $Elements of quadrilaterals; is it a mesh file?)");
 }
@@ -123,9 +128,9 @@ void label_physical_curves(const gmsh_api::Session& gmsh, const std::string& pat
 
 }  // namespace
 
-QuadMesh read_gmsh_mesh(const std::string& path) {
+QuadMesh read_gmsh_mesh(const std::string& path, std::optional<double> geo_mesh_size) {
   gmsh_api::Session gmsh;
-  open_in_gmsh(gmsh, path);
+  open_in_gmsh(gmsh, path, geo_mesh_size);
   const auto quads = model_quads(gmsh, path);
   const auto nodes = model_nodes(gmsh);
   // Only nodes of quadrilaterals become vertices (in Gmsh's node order): geometry points that no

@@ -2,6 +2,7 @@
 // binary); physical curves become boundary edge labels.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "mesh/quad_mesh.hpp"
@@ -19,6 +20,9 @@ namespace hpcontact::mesh {
 ///         without quadrilaterals, 2-D elements other than 4-node quadrilaterals (naming the type
 ///         and the Gmsh option that avoids it), curved lines, curves in several physical groups,
 ///         and labelled line elements that are not boundary edges of the quadrilateral mesh.
-QuadMesh read_gmsh_mesh(const std::string& path);
+/// A Gmsh geometry file (.geo) is meshed first, into quadrilaterals (gmsh_api::Session::
+/// generate_quadrilaterals, elements at most `geo_mesh_size` before the split into quadrilaterals
+/// when given; the geometry's physical groups label the edges as in a mesh file).
+QuadMesh read_gmsh_mesh(const std::string& path, std::optional<double> geo_mesh_size = {});
 
 }  // namespace hpcontact::mesh

@@ -45,8 +45,9 @@ struct Degree {
 struct Scene {
   std::string file;  ///< the scene file (or the name of a built-in scene)
   // [domain]: a rectangle with n_x × n_y cells, or a Gmsh file.
-  std::string mesh_file;      ///< empty for a rectangle; else absolute or relative to the working folder
-  mesh::Rectangle rectangle;  ///< when mesh_file is empty
+  std::string mesh_file;            ///< empty for a rectangle; else absolute or relative to the working folder
+  std::optional<double> mesh_size;  ///< a .geo mesh_file: Gmsh's maximal element size
+  mesh::Rectangle rectangle;        ///< when mesh_file is empty
   int n_x = 0, n_y = 0;
   double perturb = 0.0;
   std::uint32_t seed = 1;

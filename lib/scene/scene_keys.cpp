@@ -176,15 +176,29 @@ SceneKey degree_key(const char* name, int low, int high, Degree Scene::*member, 
 
 void add_domain_keys(std::vector<SceneKey>& keys) {
   auto add = [&](SceneKey key) { keys.push_back(std::move(key)); };
-  add({"domain", "mesh", "string", "", "a Gmsh mesh file of quadrilaterals (MSH 2.2 or 4, ASCII or binary)",
-       "Gmsh mesh, relative to the scene file; absent: the rectangle below", "",
-       [](const TomlTable& table, Scene& scene) {
+  add({"domain", "mesh", "string", "",
+       "a Gmsh mesh file of quadrilaterals (MSH 2.2 or 4, ASCII or binary) or a Gmsh geometry (.geo)",
+       "Gmsh mesh, or geometry meshed into quadrilaterals on the fly, relative to the scene file; absent: the "
+       "rectangle below",
+       "", [](const TomlTable& table, Scene& scene) {
          if (!table.has("mesh")) return;
          const std::string path = table.string("mesh");
          const bool relative = !path.empty() && path.front() != '/';
          scene.mesh_file = relative ? (std::filesystem::path(scene.file).parent_path() / path).string() : path;
          if (scene.mesh_file.empty())
            throw_bad_input(table.origin("mesh"), table.qualified("mesh"), "\"\"", "a file name");
+       }});
+  add({"domain", "mesh_size", "number", "the .geo's sizes", "(0, 1e6]",
+       "a .geo `mesh`: Gmsh's maximal element size (Mesh.MeshSizeMax) before the split into quadrilaterals, "
+       "which halves it",
+       "", [](const TomlTable& table, Scene& scene) {
+         if (!table.has("mesh_size")) return;
+         scene.mesh_size = table.number_in("mesh_size", 0.0, 1e6);
+         if (!(*scene.mesh_size > 0.0))
+           throw_bad_input(table.origin("mesh_size"), table.qualified("mesh_size"), "0", "a number > 0");
+         if (std::filesystem::path(scene.mesh_file).extension() != ".geo")
+           throw_bad_input(table.origin("mesh_size"), table.qualified("mesh_size"), fmt::format("{}", *scene.mesh_size),
+                           "only with a Gmsh geometry file (.geo) as domain.mesh");
        }});
   add(any_number_key("domain", "x_min", -1.0, &mesh::Rectangle::x_min, "rectangle: left end"));
   add(any_number_key("domain", "x_max", 1.0, &mesh::Rectangle::x_max, "rectangle: right end"));

@@ -56,7 +56,7 @@ mesh::QuadMesh grade_towards_points(const mesh::QuadMesh& mesh, const Scene& sce
 
 mesh::QuadMesh build_scene_mesh(const Scene& scene) {
   mesh::QuadMesh mesh = grade_towards_points(
-      scene.mesh_file.empty() ? build_rectangle(scene) : mesh::read_gmsh_mesh(scene.mesh_file), scene);
+      scene.mesh_file.empty() ? build_rectangle(scene) : mesh::read_gmsh_mesh(scene.mesh_file, scene.mesh_size), scene);
   if (scene.perturb > 0) mesh::perturb_interior_vertices(mesh, scene.perturb, scene.seed);
   for (int k = 0; k < scene.refinements; ++k) mesh = mesh::refine_uniformly(mesh);
   auto predicate = [&](const std::string& text, const char* key) {
