@@ -80,6 +80,10 @@ echo "== convergence study: studies/convergence/study.toml -> results/convergenc
 build/bin/hpcontact convergence studies/convergence/study.toml --out results/convergence
 "$python" plots/plot_convergence.py results/convergence
 cp results/convergence/convergence.png studies/convergence/convergence.png
+echo "== convergence on a curved domain: studies/curved/convergence.toml -> results/curved" >&2
+build/bin/hpcontact convergence studies/curved/convergence.toml --out results/curved
+"$python" plots/plot_curved.py results/curved
+cp results/curved/curved.png studies/curved/curved.png
 
 echo "== stability sweep: studies/stability/quick.toml -> results/stability" >&2
 build/bin/hpcontact sweep studies/stability/quick.toml --out results/stability --restart

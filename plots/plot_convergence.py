@@ -23,7 +23,8 @@ ROUND_OFF_FLOOR = 1e-11
 def read_rows(path):
     with open(path, newline="") as handle:
         return [
-            {k: (int(v) if k in ("p", "n", "ndofs") else float(v)) for k, v in row.items()}
+            {k: (v if k == "geometry" else int(v) if k in ("p", "n", "refinements", "cells", "ndofs") else float(v))
+             for k, v in row.items()}
             for row in csv.DictReader(handle)
         ]
 

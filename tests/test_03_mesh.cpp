@@ -38,7 +38,7 @@ TEST(RectangleMesh, CountsAndTopology) {
 TEST(RectangleMesh, OutwardNormalsAndLabels) {
   const auto m = mesh::make_rectangle_mesh({}, 2, 2);
   for (int e : m.boundary_edges()) {
-    const auto mid = m.edge_midpoint(e), n = m.boundary_normal(e);
+    const auto mid = m.edge_midpoint(e), n = m.boundary_normal(e, 0.0);
     // On the square (-1,1)², the outward normal points along the midpoint's largest coordinate.
     EXPECT_NEAR(n.dot(mid), std::max(std::abs(mid.x()), std::abs(mid.y())), 1e-14);
     if (m.edge_label(e) == "bottom") {

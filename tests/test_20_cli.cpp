@@ -46,7 +46,7 @@ TEST(Cli, ConvergenceWritesCsvWithDocumentedColumns) {
   std::ifstream csv(dir / "out" / "convergence.csv");
   std::string header;
   std::getline(csv, header);
-  EXPECT_EQ(header, "p,n,ndofs,h,error_h1,error_l2,seconds");
+  EXPECT_EQ(header, "p,n,refinements,cells,ndofs,h,error_h1,error_l2,seconds,geometry");
   int rows = 0;
   for (std::string line; std::getline(csv, line);) ++rows;
   EXPECT_EQ(rows, 4);

@@ -26,17 +26,19 @@ void add_convergence_command(CLI::App& app, CommandAction& action) {
       // 1. Read and check the study before any work, so bad input fails fast.
       const auto study = studies::read_convergence_study(*study_file);
       io::ensure_writable_directory(*out_dir);
-      // 2. Run, printing one line per point with the observed rate against the previous n.
-      fmt::print("{:>3} {:>5} {:>9} {:>12} {:>12} {:>6} {:>12} {:>9}\n", "p", "n", "ndofs", "h", "error_h1", "rate",
-                 "error_l2", "seconds");
-      std::map<int, studies::ConvergenceRow> previous;
+      // 2. Run, printing one line per point with the observed rate against the previous h (same p
+      //    and geometry).
+      fmt::print("{:>3} {:>7} {:>10} {:>9} {:>12} {:>12} {:>6} {:>12} {:>9}\n", "p", "cells", "geometry", "ndofs", "h",
+                 "error_h1", "rate", "error_l2", "seconds");
+      std::map<std::pair<int, std::string>, studies::ConvergenceRow> previous;
       const auto rows = studies::run_convergence_study(study, [&](const auto& row) {
         std::string rate = "-";
-        if (auto it = previous.find(row.p); it != previous.end() && it->second.h != row.h)
+        const std::pair key{row.point.p, row.point.geometry};
+        if (auto it = previous.find(key); it != previous.end() && it->second.h != row.h)
           rate = fmt::format("{:.2f}", std::log(it->second.error_h1 / row.error_h1) / std::log(it->second.h / row.h));
-        previous[row.p] = row;
-        fmt::print("{:>3} {:>5} {:>9} {:>12.4e} {:>12.4e} {:>6} {:>12.4e} {:>9.3f}\n", row.p, row.n, row.ndofs, row.h,
-                   row.error_h1, rate, row.error_l2, row.seconds);
+        previous[key] = row;
+        fmt::print("{:>3} {:>7} {:>10} {:>9} {:>12.4e} {:>12.4e} {:>6} {:>12.4e} {:>9.3f}\n", row.point.p, row.cells,
+                   row.point.geometry, row.ndofs, row.h, row.error_h1, rate, row.error_l2, row.seconds);
         std::fflush(stdout);
       });
       // 3. Save.

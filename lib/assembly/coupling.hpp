@@ -25,8 +25,8 @@ Eigen::SparseMatrix<double> assemble_coupling(const space::H1Space& space, const
 
 /// The normal of Γ_C (outward from Ω) or its unit tangent (along increasing arc length s).
 enum class TraceDirection { normal, tangent };
-/// That direction on one trace edge (straight edges: constant along it).
-mesh::Point trace_direction(const mesh::ContactBoundary& contact, int trace_edge, TraceDirection direction);
+/// That direction at arc length s (constant along a straight trace edge).
+mesh::Point trace_direction(const mesh::ContactBoundary& contact, double s, TraceDirection direction);
 
 /// B^d_{i,(j,c)} = ∫_{Γ_C} μ_i φ_j d_c ds with d the normal or the tangent: the pairing of a
 /// multiplier with the normal (tangential) component of a field of [S^p(T_h)]², shape

@@ -17,7 +17,8 @@ namespace {
 
 // The cell's shapes at its tensor Gauss points and the weights w_q · det DΨ_T there.
 std::pair<CellValues, Eigen::VectorXd> quadrature_values(const space::H1Space& space, int cell) {
-  const auto& rule = basis::gauss_legendre(cell_quadrature_points(space.cell_degree(cell)));
+  const auto& rule = basis::gauss_legendre(
+      cell_quadrature_points(space.cell_degree(cell), space.mesh().cell_geometry(cell) != nullptr));
   CellValues values = tabulate_cell(space, cell, rule.points, rule.points);
   Eigen::VectorXd weights(values.jacobians.size());
   for (std::size_t b = 0; b < rule.points.size(); ++b)

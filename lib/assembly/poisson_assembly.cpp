@@ -8,6 +8,7 @@
 #include "assembly/cell_values.hpp"
 #include "assembly/element_matrices.hpp"
 #include "basis/quadrature.hpp"
+#include "mesh/cell_map.hpp"
 
 namespace hpcontact::assembly {
 namespace {
@@ -51,7 +52,8 @@ Eigen::VectorXd assemble_volume_load(const space::H1Space& space, const std::fun
   Eigen::VectorXd load = Eigen::VectorXd::Zero(space.n_dofs());
   for (int c = 0; c < space.mesh().n_cells(); ++c) {
     // Two extra points beyond the matrices: f is general data, not a polynomial.
-    const auto& rule = basis::gauss_legendre(cell_quadrature_points(space.cell_degree(c)) + 2);
+    const auto& rule = basis::gauss_legendre(
+        cell_quadrature_points(space.cell_degree(c), space.mesh().cell_geometry(c) != nullptr) + 2);
     const CellValues cell = tabulate_cell(space, c, rule.points, rule.points);
     Eigen::VectorXd weighted_f(cell.jacobians.size());
     for (std::size_t b = 0; b < rule.points.size(); ++b)
@@ -77,15 +79,20 @@ Eigen::VectorXd assemble_boundary_load(
     if (!parts.contains(mesh.edge_part(e))) continue;
     const int c = mesh.edge_cells(e)[0];
     const int local_edge = mesh.local_edge_of(e, 0);
-    const auto& rule = basis::gauss_legendre(space.cell_degree(c) + 4);
+    // Curved edges: the speed |dΨ/dt| and the normal vary along the edge and are not polynomial.
+    const bool curved = mesh.cell_geometry(c) != nullptr;
+    const auto& rule = basis::gauss_legendre(space.cell_degree(c) + (curved ? 12 : 4));
     const auto [xi, eta] = edge_reference_points(local_edge, rule.points);
     const CellValues values = tabulate_cell(space, c, xi, eta);
-    const mesh::Point normal = mesh.boundary_normal(e);
-    // Straight edges: ds = (|edge| / 2) dt.
-    const double half_length = 0.5 * mesh.edge_length(e);
+    const mesh::CellMap map(mesh, c);
     Eigen::VectorXd weighted_g(rule.points.size());
-    for (std::size_t q = 0; q < rule.points.size(); ++q)
-      weighted_g(q) = rule.weights[q] * half_length * g(mesh::Point(values.points(q, 0), values.points(q, 1)), normal);
+    for (std::size_t q = 0; q < rule.points.size(); ++q) {
+      const double t = rule.points[q];
+      const Eigen::Vector2d ref = mesh::local_edge_point(local_edge, t);
+      const double speed = (map.jacobian(ref.x(), ref.y()) * mesh::local_edge_direction(local_edge)).norm();
+      weighted_g(q) = rule.weights[q] * speed *
+                      g(mesh::Point(values.points(q, 0), values.points(q, 1)), mesh.boundary_normal(e, t));
+    }
     const Eigen::VectorXd local = values.values.transpose() * weighted_g;
     const auto& shapes = space.cell_shapes(c);
     for (std::size_t s = 0; s < shapes.size(); ++s)

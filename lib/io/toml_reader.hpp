@@ -67,10 +67,11 @@ class TomlTable {
   /// @throws InputError for the first key of this table that no getter asked for, with the
   /// nearest known key as suggestion. Call after reading the table.
   void reject_unknown_keys() const;
+  /// The value of `key` as written (for messages about a key that is not allowed here).
+  std::string value_text(const std::string& key) const;
 
  private:
   [[noreturn]] void fail(const std::string& key, const std::string& value, const std::string& allowed) const;
-  std::string value_text(const std::string& key) const;
 
   std::shared_ptr<const toml::table> root_;
   const toml::table* table_;

@@ -1,4 +1,4 @@
-// CellMap: bilinear geometry of one cell.
+// CellMap: the geometry of one cell, bilinear or blended.
 #include "mesh/cell_map.hpp"
 
 #include <Eigen/LU>
@@ -13,13 +13,18 @@ CellMap::CellMap(const QuadMesh& mesh, int cell) {
   b_ = 0.25 * (-p0 + p1 + p2 - p3);
   c_ = 0.25 * (-p0 - p1 + p2 + p3);
   d_ = 0.25 * (p0 - p1 + p2 - p3);
+  curved_ = mesh.cell_geometry(cell);
 }
 
-Point CellMap::map(double xi, double eta) const { return a_ + b_ * xi + c_ * eta + d_ * xi * eta; }
+Point CellMap::map(double xi, double eta) const {
+  if (curved_) return curved_->map(xi, eta);
+  return a_ + b_ * xi + c_ * eta + d_ * xi * eta;
+}
 
-bool CellMap::is_parallelogram() const { return d_.norm() <= 1e-13 * (b_.norm() + c_.norm()); }
+bool CellMap::is_parallelogram() const { return !curved_ && d_.norm() <= 1e-13 * (b_.norm() + c_.norm()); }
 
 Eigen::Matrix2d CellMap::jacobian(double xi, double eta) const {
+  if (curved_) return curved_->jacobian(xi, eta);
   Eigen::Matrix2d j;
   j.col(0) = b_ + d_ * eta;
   j.col(1) = c_ + d_ * xi;
@@ -38,6 +43,23 @@ std::optional<Eigen::Vector2d> CellMap::inverse(const Point& x, double tolerance
   }
   if (ref.cwiseAbs().maxCoeff() > 1.0 + tolerance) return std::nullopt;
   return ref.cwiseMax(-1.0).cwiseMin(1.0);
+}
+
+Eigen::Vector2d local_edge_point(int local_edge, double t) {
+  switch (local_edge) {
+    case 0:
+      return {t, -1.0};
+    case 1:
+      return {1.0, t};
+    case 2:
+      return {t, 1.0};
+    default:
+      return {-1.0, t};
+  }
+}
+
+Eigen::Vector2d local_edge_direction(int local_edge) {
+  return local_edge % 2 == 0 ? Eigen::Vector2d(1.0, 0.0) : Eigen::Vector2d(0.0, 1.0);
 }
 
 }  // namespace hpcontact::mesh

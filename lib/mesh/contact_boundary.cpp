@@ -1,12 +1,66 @@
-// ContactBoundary: chain ordering of Γ_C edges.
+// ContactBoundary: chain ordering of Γ_C edges, arc length along curved ones.
 #include "mesh/contact_boundary.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
+#include "basis/quadrature.hpp"
 #include "core/error.hpp"
+#include "mesh/cell_map.hpp"
 
 namespace hpcontact::mesh {
+
+/// σ(t) = ∫_{-1}^{t} |dΨ/dt| along a curved local edge, and its inverse.
+class EdgeArcLength {
+ public:
+  EdgeArcLength(const QuadMesh& mesh, int cell, int local_edge) : map_(mesh, cell), local_edge_(local_edge) {
+    panel_start_.push_back(0.0);
+    for (int k = 0; k < kPanels; ++k) panel_start_.push_back(panel_start_.back() + integral(panel(k), panel(k + 1)));
+  }
+  double length() const { return panel_start_.back(); }
+  double speed(double t) const {
+    const Eigen::Vector2d ref = local_edge_point(local_edge_, t);
+    return (map_.jacobian(ref.x(), ref.y()) * local_edge_direction(local_edge_)).norm();
+  }
+  double arc(double t) const {
+    const int k = std::clamp(static_cast<int>((t + 1.0) / 2.0 * kPanels), 0, kPanels - 1);
+    return panel_start_[k] + integral(panel(k), t);
+  }
+  /// Newton on σ(t) = σ from the affine guess; σ' = speed > 0 and σ is smooth, so it converges
+  /// quadratically in a few steps.
+  double parameter(double sigma) const {
+    double t = 2.0 * sigma / length() - 1.0;
+    for (int iteration = 0; iteration < 50; ++iteration) {
+      const double step = (arc(t) - sigma) / speed(t);
+      t = std::clamp(t - step, -1.0, 1.0);
+      if (std::abs(step) < 1e-15) break;
+    }
+    return t;
+  }
+
+ private:
+  static constexpr int kPanels = 8;
+  static double panel(int k) { return -1.0 + 2.0 * k / kPanels; }
+  // 16 Gauss points on a panel of 1/8 of a curve resolved at degree ≤ 24: round-off.
+  double integral(double a, double b) const {
+    const auto& rule = basis::gauss_legendre(16);
+    double sum = 0.0;
+    for (std::size_t q = 0; q < rule.points.size(); ++q)
+      sum += rule.weights[q] * speed(a + 0.5 * (b - a) * (rule.points[q] + 1.0));
+    return 0.5 * (b - a) * sum;
+  }
+
+  CellMap map_;
+  int local_edge_;
+  std::vector<double> panel_start_;
+};
+
+double TraceEdge::local_parameter(double s) const {
+  if (arc) return arc->parameter(reversed ? s_end - s : s - s_begin);
+  const double t = 2.0 * (s - s_begin) / (s_end - s_begin) - 1.0;
+  return reversed ? -t : t;
+}
 
 ContactBoundary::ContactBoundary(const QuadMesh& mesh) : mesh_(&mesh) {
   std::map<int, std::vector<int>> edges_at_vertex;
@@ -44,7 +98,12 @@ ContactBoundary::ContactBoundary(const QuadMesh& mesh) : mesh_(&mesh) {
     trace.cell = mesh.edge_cells(e)[0];
     trace.local_edge = mesh.local_edge_of(e, 0);
     trace.s_begin = length_;
-    length_ += mesh.edge_length(e);
+    if (mesh.cell_geometry(trace.cell)) {
+      trace.arc = std::make_shared<EdgeArcLength>(mesh, trace.cell, trace.local_edge);
+      length_ += trace.arc->length();
+    } else {
+      length_ += mesh.edge_length(e);
+    }
     trace.s_end = length_;
     // The local edge parameter runs from local vertex kLocalEdgeVertices[.][0] to [1].
     const int local_start = mesh.cell(trace.cell)[kLocalEdgeVertices[trace.local_edge][0]];
@@ -73,8 +132,30 @@ int ContactBoundary::edge_index_at(double s) const {
 Point ContactBoundary::point_at(double s) const {
   const int k = edge_index_at(s);
   const auto& e = edges_[k];
-  const double fraction = (s - e.s_begin) / (e.s_end - e.s_begin);
-  return (1.0 - fraction) * chain_vertices_[k] + fraction * chain_vertices_[k + 1];
+  if (!e.arc) {
+    const double fraction = (s - e.s_begin) / (e.s_end - e.s_begin);
+    return (1.0 - fraction) * chain_vertices_[k] + fraction * chain_vertices_[k + 1];
+  }
+  const Eigen::Vector2d ref = local_edge_point(e.local_edge, e.local_parameter(s));
+  return CellMap(*mesh_, e.cell).map(ref.x(), ref.y());
+}
+
+Point ContactBoundary::normal_at(double s) const {
+  const auto& e = edges_[edge_index_at(s)];
+  return mesh_->boundary_normal(e.edge, e.local_parameter(s));
+}
+
+Point ContactBoundary::tangent_at(double s) const {
+  const int k = edge_index_at(s);
+  const auto& e = edges_[k];
+  if (!e.arc) return (chain_vertices_[k + 1] - chain_vertices_[k]).normalized();
+  const Eigen::Vector2d ref = local_edge_point(e.local_edge, e.local_parameter(s));
+  const Point along_t = CellMap(*mesh_, e.cell).jacobian(ref.x(), ref.y()) * local_edge_direction(e.local_edge);
+  return (e.reversed ? -1.0 : 1.0) * along_t.normalized();
+}
+
+bool ContactBoundary::is_curved() const {
+  return std::any_of(edges_.begin(), edges_.end(), [](const TraceEdge& e) { return e.arc != nullptr; });
 }
 
 }  // namespace hpcontact::mesh

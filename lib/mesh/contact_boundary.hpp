@@ -1,12 +1,17 @@
 // Γ_C as seen from T_h: the chain of boundary edges with part `contact`, ordered end to end and
-// parametrized by arc length s ∈ [0, L]. Shared by the inf-sup analysis and the contact solver.
+// parametrized by arc length s ∈ [0, L] (along curved edges too: the local edge parameter is then
+// a non-linear function of s, inverted by Newton). Shared by the inf-sup analysis and the contact
+// solver.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "mesh/quad_mesh.hpp"
 
 namespace hpcontact::mesh {
+
+class EdgeArcLength;
 
 /// One edge of T_h on Γ_C: arc-length interval [s_begin, s_end] and how to reach it from its cell.
 struct TraceEdge {
@@ -16,11 +21,10 @@ struct TraceEdge {
   double s_begin = 0.0, s_end = 0.0;
   /// The cell's local edge parameter t ∈ [-1,1] runs against s (t = -1 at s_end).
   bool reversed = false;
+  /// Arc length along a curved edge (nullptr: straight, s affine in t).
+  std::shared_ptr<const EdgeArcLength> arc;
   /// Local edge parameter t of arc length s in [s_begin, s_end].
-  double local_parameter(double s) const {
-    const double t = 2.0 * (s - s_begin) / (s_end - s_begin) - 1.0;
-    return reversed ? -t : t;
-  }
+  double local_parameter(double s) const;
 };
 
 class ContactBoundary {
@@ -37,6 +41,12 @@ class ContactBoundary {
   std::vector<double> breakpoints() const;
   /// Physical point at arc length s.
   Point point_at(double s) const;
+  /// Outward unit normal of Ω at arc length s.
+  Point normal_at(double s) const;
+  /// Unit tangent at arc length s, pointing towards increasing s.
+  Point tangent_at(double s) const;
+  /// Whether some edge of Γ_C is curved.
+  bool is_curved() const;
   /// Index of the trace edge containing s (the left one at a shared vertex).
   int edge_index_at(double s) const;
 

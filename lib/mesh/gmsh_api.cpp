@@ -28,6 +28,10 @@ struct Library {
   decltype(&::gmshModelGetPhysicalGroups) physical_groups = nullptr;
   decltype(&::gmshModelGetPhysicalName) physical_name = nullptr;
   decltype(&::gmshModelGetEntitiesForPhysicalGroup) entities = nullptr;
+  decltype(&::gmshModelGetEntities) all_entities = nullptr;
+  decltype(&::gmshModelGetType) entity_type = nullptr;
+  decltype(&::gmshModelGetParametrization) parametrization = nullptr;
+  decltype(&::gmshModelGetValue) value = nullptr;
 
   void start() const {
     int ierr = 0;
@@ -72,6 +76,10 @@ Library load() {
   resolve(handle, "gmshModelGetPhysicalGroups", l.physical_groups);
   resolve(handle, "gmshModelGetPhysicalName", l.physical_name);
   resolve(handle, "gmshModelGetEntitiesForPhysicalGroup", l.entities);
+  resolve(handle, "gmshModelGetEntities", l.all_entities);
+  resolve(handle, "gmshModelGetType", l.entity_type);
+  resolve(handle, "gmshModelGetParametrization", l.parametrization);
+  resolve(handle, "gmshModelGetValue", l.value);
   l.start();
   return l;
 }
@@ -136,15 +144,11 @@ void Session::open(const std::string& path) {
 void Session::generate_quadrilaterals(const std::string& path, std::optional<double> max_size) {
   const Library& l = library();
   int ierr = 0;
-  double order = 1.0;
-  l.get_number("Mesh.ElementOrder", &order, &ierr);
-  if (order > 1.0)
-    throw InputError(
-        fmt::format("{}: asks for Mesh.ElementOrder = {}; curved (high-order) cells are not supported "
-                    "yet, so mesh with Mesh.ElementOrder = 1",
-                    path, order));
-  for (const auto& [name, value] :
-       {std::pair{"Mesh.RecombineAll", 1.0}, {"Mesh.Algorithm", 6.0}, {"Mesh.SubdivisionAlgorithm", 1.0}})
+  // Curved boundaries come from the geometry itself (curve_points), so first-order cells suffice.
+  for (const auto& [name, value] : {std::pair{"Mesh.RecombineAll", 1.0},
+                                    {"Mesh.Algorithm", 6.0},
+                                    {"Mesh.SubdivisionAlgorithm", 1.0},
+                                    {"Mesh.ElementOrder", 1.0}})
     l.set_number(name, value, &ierr);
   if (max_size) l.set_number("Mesh.MeshSizeMax", *max_size, &ierr);
   l.generate(2, &ierr);
@@ -230,6 +234,54 @@ std::vector<int> Session::entities_of_physical_group(int dim, int tag) const {
   library().entities(dim, tag, &tags, &n, &ierr);
   check(ierr, "getEntitiesForPhysicalGroup");
   return take(tags, n);
+}
+
+std::vector<int> Session::curves() const {
+  int* dim_tags = nullptr;
+  std::size_t n = 0;
+  int ierr = 0;
+  library().all_entities(&dim_tags, &n, 1, &ierr);
+  check(ierr, "getEntities");
+  const std::vector<int> flat = take(dim_tags, n);
+  std::vector<int> out;
+  for (std::size_t k = 1; k < flat.size(); k += 2) out.push_back(flat[k]);
+  return out;
+}
+
+std::string Session::curve_type(int tag) const {
+  char* type = nullptr;
+  int ierr = 0;
+  library().entity_type(1, tag, &type, &ierr);
+  check(ierr, "getType");
+  std::string out = type ? type : "";
+  library().free(type);
+  return out;
+}
+
+std::unordered_map<std::size_t, double> Session::curve_node_parameters(int tag) const {
+  std::size_t *tag_data = nullptr, n_tags = 0, n_coordinates = 0, n_parametric = 0;
+  double *coordinate_data = nullptr, *parametric = nullptr;
+  int ierr = 0;
+  library().nodes(&tag_data, &n_tags, &coordinate_data, &n_coordinates, &parametric, &n_parametric, 1, tag, 1, 1,
+                  &ierr);
+  check(ierr, "getNodes");
+  const auto tags = take(tag_data, n_tags);
+  const auto u = take(parametric, n_parametric);
+  library().free(coordinate_data);
+  HPC_VERIFY(u.size() == tags.size(), "one parameter per node of a curve");
+  std::unordered_map<std::size_t, double> out;
+  for (std::size_t k = 0; k < tags.size(); ++k) out[tags[k]] = u[k];
+  return out;
+}
+
+std::vector<double> Session::curve_points(int tag, const std::vector<double>& parameters) const {
+  std::vector<double> u = parameters;
+  double* xyz = nullptr;
+  std::size_t n = 0;
+  int ierr = 0;
+  library().value(1, tag, u.data(), u.size(), &xyz, &n, &ierr);
+  check(ierr, "getValue");
+  return take(xyz, n);
 }
 
 }  // namespace hpcontact::mesh::gmsh_api

@@ -8,6 +8,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -39,9 +40,10 @@ class Session {
   void open(const std::string& path);
   /// Meshes the geometry read by open() (a .geo file) into first-order quadrilaterals: Gmsh's
   /// frontal-Delaunay triangulation recombined, every triangle left split into quadrilaterals
-  /// (Mesh.RecombineAll = 1, Mesh.Algorithm = 6, Mesh.SubdivisionAlgorithm = 1), elements at most
-  /// `max_size` (Mesh.MeshSizeMax) before the split when given. @throws InputError with Gmsh's
-  /// message, or if the file asks for Mesh.ElementOrder > 1 (curved cells are not supported yet).
+  /// (Mesh.RecombineAll = 1, Mesh.Algorithm = 6, Mesh.SubdivisionAlgorithm = 1,
+  /// Mesh.ElementOrder = 1: curved sides are taken from the geometry, see curve_points), elements
+  /// at most `max_size` (Mesh.MeshSizeMax) before the split when given. @throws InputError with
+  /// Gmsh's message.
   void generate_quadrilaterals(const std::string& path, std::optional<double> max_size);
   int dimension() const;
   /// Elements of dimension `dim` on entity `tag` (-1: all).
@@ -53,6 +55,16 @@ class Session {
   std::vector<std::pair<int, int>> physical_groups(int dim) const;
   std::string physical_name(int dim, int tag) const;
   std::vector<int> entities_of_physical_group(int dim, int tag) const;
+  /// Tags of the model's curves (entities of dimension 1).
+  std::vector<int> curves() const;
+  /// Gmsh's type of curve `tag`: "Line", "Circle", "Ellipse", "BSpline", "Discrete curve", ...
+  std::string curve_type(int tag) const;
+  /// The parameter on curve `tag` of each mesh node on it, its end points included: the parameters
+  /// the mesher placed them at (exact, where projecting a node back onto the curve is accurate only
+  /// to ~1e-9).
+  std::unordered_map<std::size_t, double> curve_node_parameters(int tag) const;
+  /// The points (x, y, z per point) of curve `tag` at the given parameters: the exact geometry.
+  std::vector<double> curve_points(int tag, const std::vector<double>& parameters) const;
 
  private:
   std::unique_lock<std::mutex> lock_;

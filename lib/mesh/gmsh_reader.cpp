@@ -1,6 +1,7 @@
 // read_gmsh_mesh through the Gmsh API (mesh/gmsh_api.hpp): Gmsh parses the file (MSH 2 and 4, ASCII and
-// binary); this file turns its quadrilaterals into a QuadMesh and its physical curves into
-// boundary edge labels, with errors that say what to change.
+// binary); this file turns its quadrilaterals into a QuadMesh, its physical curves into boundary
+// edge labels and its curved geometry into curved edges (mesh/gmsh_curves.hpp), with errors that
+// say what to change.
 #include "mesh/gmsh_reader.hpp"
 
 #include <fmt/format.h>
@@ -14,6 +15,7 @@
 
 #include "core/error.hpp"
 #include "mesh/gmsh_api.hpp"
+#include "mesh/gmsh_curves.hpp"
 
 namespace hpcontact::mesh {
 namespace {
@@ -31,12 +33,11 @@ double twice_signed_area(const std::vector<Point>& vertices, const std::array<in
   return sum;
 }
 
-// What to change in Gmsh when the file holds a 2-D element type other than the 4-node quad.
+// What to change in Gmsh when the file holds a 2-D element type other than a quadrilateral.
 std::string unsupported_cell(const gmsh_api::Session& gmsh, const std::string& path, int type) {
   const auto [name, order] = gmsh.element_type(type);
   const std::string what =
-      fmt::format("{}: only 4-node quadrilaterals (type 3) are supported; found type {} ({})", path, type, name);
-  if (order > 1) return what + ": curved (high-order) cells are not supported yet; mesh with Mesh.ElementOrder = 1";
+      fmt::format("{}: only quadrilaterals (of any order) are supported; found type {} ({})", path, type, name);
   if (name.starts_with("Triangle"))
     return what +
            ": triangles are not supported yet; recombine them into quadrilaterals in Gmsh "
@@ -44,8 +45,9 @@ std::string unsupported_cell(const gmsh_api::Session& gmsh, const std::string& p
   return what;
 }
 
-// Reads `path` into Gmsh's model; a .geo geometry is meshed into quadrilaterals there.
-void open_in_gmsh(gmsh_api::Session& gmsh, const std::string& path, std::optional<double> geo_mesh_size) {
+// Reads `path` into Gmsh's model; a .geo geometry is meshed into quadrilaterals there (returns
+// whether it was one).
+bool open_in_gmsh(gmsh_api::Session& gmsh, const std::string& path, std::optional<double> geo_mesh_size) {
   if (!std::ifstream(path)) throw InputError(path + ": cannot open the Gmsh mesh file");
   const bool geometry = std::filesystem::path(path).extension() == ".geo";
   if (geo_mesh_size && !geometry)
@@ -54,31 +56,48 @@ void open_in_gmsh(gmsh_api::Session& gmsh, const std::string& path, std::optiona
   if (geometry) gmsh.generate_quadrilaterals(path, geo_mesh_size);
   if (gmsh.dimension() < 2)
     throw InputError(path + ": holds no 2-D mesh (no $Nodes or $Elements of quadrilaterals; is it a mesh file?)");
+  return geometry;
 }
 
-// The nodes of the model: tag → position (z ignored), in Gmsh's order.
-std::vector<std::pair<Tag, Point>> model_nodes(const gmsh_api::Session& gmsh) {
+// The nodes of the model: tag → position (z ignored), and the tags in Gmsh's order.
+std::pair<std::vector<Tag>, std::unordered_map<Tag, Point>> model_nodes(const gmsh_api::Session& gmsh) {
   std::vector<Tag> tags;
   std::vector<double> coordinates;
   gmsh.nodes(tags, coordinates);
-  std::vector<std::pair<Tag, Point>> out;
-  for (std::size_t k = 0; k < tags.size(); ++k)
-    out.emplace_back(tags[k], Point(coordinates[3 * k], coordinates[3 * k + 1]));
-  return out;
+  std::unordered_map<Tag, Point> position;
+  for (std::size_t k = 0; k < tags.size(); ++k) position[tags[k]] = Point(coordinates[3 * k], coordinates[3 * k + 1]);
+  return {std::move(tags), std::move(position)};
 }
 
-// The quadrilaterals of the model as node tags. @throws InputError for any other 2-D element.
-std::vector<std::array<Tag, 4>> model_quads(const gmsh_api::Session& gmsh, const std::string& path) {
+struct ModelQuads {
+  std::vector<std::array<Tag, 4>> corners;
+  std::vector<GmshEdgeNodes> edges;  ///< of high-order quadrilaterals: end, edge nodes, end
+};
+
+// The quadrilaterals of the model: corner node tags, and the nodes along each edge of high-order
+// ones (Gmsh numbers the 4 corners first, then edge k's nodes from corner k to corner k + 1).
+// @throws InputError for any other 2-D element.
+ModelQuads model_quads(const gmsh_api::Session& gmsh, const std::string& path) {
   const auto blocks = gmsh.elements(2);
-  const auto& node_tags = blocks.nodes;
-  std::vector<std::array<Tag, 4>> quads;
+  ModelQuads out;
   for (std::size_t t = 0; t < blocks.types.size(); ++t) {
-    if (blocks.types[t] != 3) throw InputError(unsupported_cell(gmsh, path, blocks.types[t]));
-    for (std::size_t k = 0; k + 3 < node_tags[t].size(); k += 4)
-      quads.push_back({node_tags[t][k], node_tags[t][k + 1], node_tags[t][k + 2], node_tags[t][k + 3]});
+    const auto [name, order] = gmsh.element_type(blocks.types[t]);
+    if (!name.starts_with("Quadrilateral")) throw InputError(unsupported_cell(gmsh, path, blocks.types[t]));
+    const auto& nodes = blocks.nodes[t];
+    const std::size_t per_element = nodes.size() / blocks.tags[t].size();
+    for (std::size_t k = 0; k < blocks.tags[t].size(); ++k) {
+      const Tag* element = nodes.data() + per_element * k;
+      out.corners.push_back({element[0], element[1], element[2], element[3]});
+      for (int side = 0; order > 1 && side < 4; ++side) {
+        GmshEdgeNodes along{element[side]};
+        for (int j = 0; j < order - 1; ++j) along.push_back(element[4 + side * (order - 1) + j]);
+        along.push_back(element[(side + 1) % 4]);
+        out.edges.push_back(std::move(along));
+      }
+    }
   }
-  if (quads.empty()) throw InputError(path + ": holds no quadrilaterals");
-  return quads;
+  if (out.corners.empty()) throw InputError(path + ": holds no quadrilaterals");
+  return out;
 }
 
 // Labels the boundary edges on the model's physical curves with the group's name (its tag as text
@@ -103,13 +122,10 @@ void label_physical_curves(const gmsh_api::Session& gmsh, const std::string& pat
       const auto& types = blocks.types;
       const auto &element_tags = blocks.tags, &node_tags = blocks.nodes;
       for (std::size_t t = 0; t < types.size(); ++t) {
-        if (types[t] != 1)
-          throw InputError(
-              fmt::format("{}: only 2-node lines (type 1) are supported on curves; found type {} ({}) "
-                          "on curve {}; mesh with Mesh.ElementOrder = 1",
-                          path, types[t], gmsh.element_type(types[t]).name, curve));
+        // A line of order q lists its two ends first, then its q - 1 inner nodes.
+        const std::size_t per_element = node_tags[t].size() / element_tags[t].size();
         for (std::size_t k = 0; k < element_tags[t].size(); ++k) {
-          const Tag n0 = node_tags[t][2 * k], n1 = node_tags[t][2 * k + 1];
+          const Tag n0 = node_tags[t][per_element * k], n1 = node_tags[t][per_element * k + 1];
           const auto a = vertex_of.find(n0), b = vertex_of.find(n1);
           auto edge = boundary_edge.end();
           if (a != vertex_of.end() && b != vertex_of.end())
@@ -130,23 +146,23 @@ void label_physical_curves(const gmsh_api::Session& gmsh, const std::string& pat
 
 QuadMesh read_gmsh_mesh(const std::string& path, std::optional<double> geo_mesh_size) {
   gmsh_api::Session gmsh;
-  open_in_gmsh(gmsh, path, geo_mesh_size);
-  const auto quads = model_quads(gmsh, path);
-  const auto nodes = model_nodes(gmsh);
-  // Only nodes of quadrilaterals become vertices (in Gmsh's node order): geometry points that no
-  // cell uses would be isolated vertices without any basis function support.
+  const bool geometry = open_in_gmsh(gmsh, path, geo_mesh_size);
+  const ModelQuads quads = model_quads(gmsh, path);
+  const auto [node_order, position] = model_nodes(gmsh);
+  // Only corner nodes of quadrilaterals become vertices (in Gmsh's node order): geometry points
+  // that no cell uses would be isolated vertices without any basis function support.
   std::unordered_map<Tag, bool> used;
-  for (const auto& quad : quads)
+  for (const auto& quad : quads.corners)
     for (Tag tag : quad) used[tag] = true;
   std::vector<Point> vertices;
   std::unordered_map<Tag, int> vertex_of;
-  for (const auto& [tag, position] : nodes)
+  for (Tag tag : node_order)
     if (used.contains(tag) && !vertex_of.contains(tag)) {
       vertex_of[tag] = static_cast<int>(vertices.size());
-      vertices.push_back(position);
+      vertices.push_back(position.at(tag));
     }
   std::vector<std::array<int, 4>> cells;
-  for (const auto& quad : quads) {
+  for (const auto& quad : quads.corners) {
     std::array<int, 4> cell;
     for (int k = 0; k < 4; ++k) cell[k] = vertex_of.at(quad[k]);
     // Gmsh orders nodes along the surface orientation, which may be clockwise in the plane.
@@ -155,6 +171,10 @@ QuadMesh read_gmsh_mesh(const std::string& path, std::optional<double> geo_mesh_
   }
   QuadMesh mesh(std::move(vertices), std::move(cells), path);
   label_physical_curves(gmsh, path, vertex_of, mesh);
+  if (geometry)
+    curve_edges_from_geometry(gmsh, path, vertex_of, position, mesh);
+  else
+    curve_edges_from_nodes(quads.edges, path, vertex_of, position, mesh);
   return mesh;
 }
 

@@ -1,10 +1,14 @@
 // QuadMesh: topology construction (edges, adjacency, orientation) and validity checks.
 #include "mesh/quad_mesh.hpp"
 
+#include <Eigen/LU>
 #include <algorithm>
 #include <map>
 
+#include "basis/quadrature.hpp"
 #include "core/error.hpp"
+#include "mesh/blended_geometry.hpp"
+#include "mesh/cell_map.hpp"
 
 namespace hpcontact::mesh {
 
@@ -92,20 +96,88 @@ int QuadMesh::local_edge_of(int e, int k) const {
   HPC_VERIFY(false, "edge not found in its adjacent cell");
 }
 
-Point QuadMesh::edge_midpoint(int e) const { return 0.5 * (vertices_[edges_[e][0]] + vertices_[edges_[e][1]]); }
+Point QuadMesh::edge_point(int e, double t) const {
+  const int c = edge_cells_[e][0];
+  if (!cell_geometry(c)) return 0.5 * (1.0 - t) * vertices_[edges_[e][0]] + 0.5 * (1.0 + t) * vertices_[edges_[e][1]];
+  const int local = local_edge_of(e, 0);
+  const Eigen::Vector2d ref = local_edge_point(local, cell_edge_signs_[c][local] * t);
+  return CellMap(*this, c).map(ref.x(), ref.y());
+}
 
-double QuadMesh::edge_length(int e) const { return (vertices_[edges_[e][1]] - vertices_[edges_[e][0]]).norm(); }
+double QuadMesh::edge_length(int e) const {
+  const int c = edge_cells_[e][0];
+  if (!cell_geometry(c)) return (vertices_[edges_[e][1]] - vertices_[edges_[e][0]]).norm();
+  // The speed |dΨ/dt| of a curve resolved to round-off at degree ≤ 24 is smooth: 32 Gauss points
+  // give its integral to round-off.
+  const int local = local_edge_of(e, 0);
+  const CellMap map(*this, c);
+  const auto& rule = basis::gauss_legendre(32);
+  double length = 0.0;
+  for (std::size_t q = 0; q < rule.points.size(); ++q) {
+    const Eigen::Vector2d ref = local_edge_point(local, rule.points[q]);
+    length += rule.weights[q] * (map.jacobian(ref.x(), ref.y()) * local_edge_direction(local)).norm();
+  }
+  return length;
+}
 
-Point QuadMesh::boundary_normal(int e) const {
+Point QuadMesh::boundary_normal(int e, double t) const {
   HPC_VERIFY(is_boundary_edge(e), "normal requested for an interior edge");
   const int c = edge_cells_[e][0];
   const int local = local_edge_of(e, 0);
+  const Eigen::Vector2d ref = local_edge_point(local, t);
+  const Point tangent = cell_geometry(c)
+                            ? Point(CellMap(*this, c).jacobian(ref.x(), ref.y()) * local_edge_direction(local))
+                            : Point(vertices_[cells_[c][kLocalEdgeVertices[local][1]]] -
+                                    vertices_[cells_[c][kLocalEdgeVertices[local][0]]]);
   // Local edges 0 and 1 run counterclockwise around the cell, 2 and 3 clockwise.
-  const Point t =
-      vertices_[cells_[c][kLocalEdgeVertices[local][1]]] - vertices_[cells_[c][kLocalEdgeVertices[local][0]]];
   const double ccw = (local <= 1) ? 1.0 : -1.0;
-  return ccw * Point(t.y(), -t.x()).normalized();
+  return ccw * Point(tangent.y(), -tangent.x()).normalized();
 }
+
+void QuadMesh::set_edge_curve(int e, std::shared_ptr<const EdgeCurve> curve, const std::string& origin) {
+  const Point &a = vertices_[edges_[e][0]], &b = vertices_[edges_[e][1]];
+  const double length = (b - a).norm();
+  if ((curve->point(-1.0) - a).norm() > 1e-8 * length || (curve->point(1.0) - b).norm() > 1e-8 * length)
+    throw InputError(origin + ": the curve of edge (" + std::to_string(edges_[e][0]) + ", " +
+                     std::to_string(edges_[e][1]) + ") does not end at its vertices");
+  if (cell_geometry_.empty()) cell_geometry_.resize(cells_.size());
+  for (int k = 0; k < 2; ++k) {
+    const int c = edge_cells_[e][k];
+    if (c < 0) continue;
+    const int local = local_edge_of(e, k);
+    HPC_VERIFY(!cell_geometry_[c] || cell_geometry_[c]->is_whole(), "edge curves are set before refinement");
+    std::array<Point, 4> corners;
+    for (int v = 0; v < 4; ++v) corners[v] = vertices_[cells_[c][v]];
+    auto geometry = cell_geometry_[c] ? std::make_shared<BlendedGeometry>(*cell_geometry_[c])
+                                      : std::make_shared<BlendedGeometry>(corners);
+    geometry->set_side(local, curve, cell_edge_signs_[c][local] < 0);
+    cell_geometry_[c] = std::move(geometry);
+    // The blended map must stay invertible: a side bulging past the opposite side (a curve much
+    // more curved than the cell is small) folds the cell.
+    const CellMap map(*this, c);
+    const double scale = map.jacobian(0.0, 0.0).determinant();
+    for (int i = 0; i <= 8; ++i)
+      for (int j = 0; j <= 8; ++j)
+        if (!(map.jacobian(-1.0 + i / 4.0, -1.0 + j / 4.0).determinant() > 1e-10 * std::abs(scale)))
+          throw InputError(origin + ": cell " + std::to_string(c) +
+                           " folds over with its curved side (Jacobian determinant ≤ 0); refine the mesh near the "
+                           "curve");
+  }
+}
+
+void QuadMesh::set_cell_geometry(int c, std::shared_ptr<const BlendedGeometry> geometry) {
+  if (cell_geometry_.empty()) {
+    if (!geometry) return;
+    cell_geometry_.resize(cells_.size());
+  }
+  cell_geometry_[c] = std::move(geometry);
+}
+
+bool QuadMesh::has_curved_cells() const {
+  return std::any_of(cell_geometry_.begin(), cell_geometry_.end(), [](const auto& g) { return g != nullptr; });
+}
+
+void QuadMesh::straighten() { cell_geometry_.clear(); }
 
 bool QuadMesh::has_part(BoundaryPart part) const {
   return std::find(edge_parts_.begin(), edge_parts_.end(), part) != edge_parts_.end();
@@ -124,6 +196,10 @@ double QuadMesh::longest_edge() const {
 
 void QuadMesh::move_vertices(std::vector<Point> new_positions, const std::string& origin) {
   HPC_VERIFY(new_positions.size() == vertices_.size(), "vertex count changed");
+  if (has_curved_cells())
+    throw InputError(origin +
+                     ": a mesh with curved cells cannot be perturbed or graded (its curves would no "
+                     "longer end at the vertices)");
   vertices_ = std::move(new_positions);
   check_cells(origin);
 }

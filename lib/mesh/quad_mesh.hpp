@@ -1,15 +1,19 @@
-// Conforming quadrilateral mesh T_h of a 2-D domain with bilinear cell maps Ψ_T and boundary
-// edges carrying a label (from the generator or a Gmsh physical group) and a BoundaryPart.
+// Conforming quadrilateral mesh T_h of a 2-D domain with cell maps Ψ_T (bilinear, or blended from
+// curved sides) and boundary edges carrying a label (from the generator or a Gmsh physical group)
+// and a BoundaryPart.
 #pragma once
 
 #include <Eigen/Core>
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace hpcontact::mesh {
 
 using Point = Eigen::Vector2d;
+class BlendedGeometry;
+class EdgeCurve;
 
 /// Which boundary condition an edge carries. Interior edges are `interior`.
 enum class BoundaryPart : unsigned char { interior, neumann, dirichlet, contact };
@@ -48,10 +52,27 @@ class QuadMesh {
   bool is_boundary_edge(int e) const { return edge_cells_[e][1] < 0; }
   const std::vector<int>& boundary_edges() const { return boundary_edges_; }
 
-  Point edge_midpoint(int e) const;
-  /// Outward unit normal of boundary edge e (straight edges).
-  Point boundary_normal(int e) const;
+  /// The point of edge e at parameter t ∈ [-1, 1] in the global direction (lower vertex first).
+  Point edge_point(int e, double t) const;
+  Point edge_midpoint(int e) const { return edge_point(e, 0.0); }
+  /// Outward unit normal of boundary edge e at the local edge parameter t of its cell.
+  Point boundary_normal(int e, double t) const;
+  /// Arc length of edge e (the chord for a straight edge).
   double edge_length(int e) const;
+
+  /// Edge e follows `curve` (t = -1 at edge(e)[0], t = 1 at edge(e)[1]); its cells become
+  /// blended (mesh/blended_geometry.hpp). Only on an unrefined mesh.
+  /// @throws InputError naming `origin` if the curve's ends miss the edge's vertices (by more than
+  /// 1e-8 of its length) or a cell's map is no longer invertible (Jacobian determinant ≤ 0).
+  void set_edge_curve(int e, std::shared_ptr<const EdgeCurve> curve, const std::string& origin);
+  /// The blended map of cell c, or nullptr for a bilinear cell.
+  const BlendedGeometry* cell_geometry(int c) const {
+    return cell_geometry_.empty() ? nullptr : cell_geometry_[c].get();
+  }
+  void set_cell_geometry(int c, std::shared_ptr<const BlendedGeometry> geometry);
+  bool has_curved_cells() const;
+  /// Drops every curve: the polygonal mesh with the same vertices.
+  void straighten();
 
   /// Label of a boundary edge ("bottom", a Gmsh physical name, ...); empty for interior edges.
   const std::string& edge_label(int e) const { return edge_labels_[e]; }
@@ -65,7 +86,7 @@ class QuadMesh {
   double longest_edge() const;
 
   /// Vertex positions may be moved (perturbation, grading) without changing topology.
-  /// @throws InputError if a cell becomes invalid.
+  /// @throws InputError if a cell becomes invalid, or if the mesh has curved cells.
   void move_vertices(std::vector<Point> new_positions, const std::string& origin);
 
  private:
@@ -81,6 +102,7 @@ class QuadMesh {
   std::vector<int> boundary_edges_;
   std::vector<std::string> edge_labels_;
   std::vector<BoundaryPart> edge_parts_;
+  std::vector<std::shared_ptr<const BlendedGeometry>> cell_geometry_;  ///< empty while all cells are bilinear
 };
 
 /// The smallest cell size, relative to the extent of the domain, that grading may create. Vertex

@@ -1,6 +1,7 @@
 // refine_uniformly.
 #include "mesh/refine.hpp"
 
+#include "mesh/blended_geometry.hpp"
 #include "mesh/cell_map.hpp"
 
 namespace hpcontact::mesh {
@@ -26,6 +27,17 @@ QuadMesh refine_uniformly(const QuadMesh& mesh) {
     cells.push_back({m3, centre, m2, v[3]});
   }
   QuadMesh fine(std::move(vertices), std::move(cells), "refined mesh");
+  // Children of a curved cell keep its map on their quarter of the reference square, in the order
+  // the cells were pushed above.
+  constexpr std::array<std::array<double, 4>, 4> kQuarters{
+      {{-1.0, 0.0, -1.0, 0.0}, {0.0, 1.0, -1.0, 0.0}, {0.0, 1.0, 0.0, 1.0}, {-1.0, 0.0, 0.0, 1.0}}};
+  for (int c = 0; c < mesh.n_cells(); ++c)
+    if (const BlendedGeometry* geometry = mesh.cell_geometry(c))
+      for (int k = 0; k < 4; ++k) {
+        const auto& [xi0, xi1, eta0, eta1] = kQuarters[k];
+        fine.set_cell_geometry(4 * c + k,
+                               std::make_shared<BlendedGeometry>(geometry->restricted(xi0, xi1, eta0, eta1)));
+      }
   // A fine boundary edge has one original vertex and the midpoint of its parent edge.
   for (int e : fine.boundary_edges()) {
     const auto& ends = fine.edge(e);

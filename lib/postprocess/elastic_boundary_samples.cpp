@@ -31,10 +31,6 @@ ElasticBoundarySamples sample_elastic_boundary(const contact::ElasticContactSetu
   for (const auto& interval : assembly::common_intervals(contact, *setup.boundary_mesh)) {
     const auto& trace = contact.edges()[interval.trace_edge];
     const int k = interval.segment, first = multipliers.first_dof(k), n_modes = multipliers.segment_degree(k) + 1;
-    const mesh::Point normal =
-        assembly::trace_direction(contact, interval.trace_edge, assembly::TraceDirection::normal);
-    const mesh::Point tangent =
-        assembly::trace_direction(contact, interval.trace_edge, assembly::TraceDirection::tangent);
     int in_contact = 0;
     for (int j = 0; j < per_interval; ++j) {
       const double s = interval.s_begin + (interval.s_end - interval.s_begin) * j / (per_interval - 1);
@@ -43,6 +39,8 @@ ElasticBoundarySamples sample_elastic_boundary(const contact::ElasticContactSetu
       const Eigen::Vector2d u(evaluate(u_field.space.scalar(), components[0], where).value,
                               evaluate(u_field.space.scalar(), components[1], where).value);
       const mesh::Point x = contact.point_at(s);
+      const mesh::Point normal = assembly::trace_direction(contact, s, assembly::TraceDirection::normal);
+      const mesh::Point tangent = assembly::trace_direction(contact, s, assembly::TraceDirection::tangent);
       const Eigen::VectorXd basis = multipliers.basis_values(k, multipliers.local_coordinate(k, s));
       const double pressure = basis.dot(solution.pressure.segment(first, n_modes));
       const double shear = basis.dot(solution.shear.segment(first, n_modes));

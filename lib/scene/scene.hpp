@@ -47,7 +47,9 @@ struct Scene {
   // [domain]: a rectangle with n_x × n_y cells, or a Gmsh file.
   std::string mesh_file;            ///< empty for a rectangle; else absolute or relative to the working folder
   std::optional<double> mesh_size;  ///< a .geo mesh_file: Gmsh's maximal element size
-  mesh::Rectangle rectangle;        ///< when mesh_file is empty
+  /// Whether cells follow the mesh file's curves, or only its vertices (the polygonal domain).
+  enum class Geometry { curved, polygonal } geometry = Geometry::curved;
+  mesh::Rectangle rectangle;  ///< when mesh_file is empty
   int n_x = 0, n_y = 0;
   double perturb = 0.0;
   std::uint32_t seed = 1;

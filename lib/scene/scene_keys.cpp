@@ -200,6 +200,11 @@ void add_domain_keys(std::vector<SceneKey>& keys) {
            throw_bad_input(table.origin("mesh_size"), table.qualified("mesh_size"), fmt::format("{}", *scene.mesh_size),
                            "only with a Gmsh geometry file (.geo) as domain.mesh");
        }});
+  add(choice_key<Scene::Geometry>(
+      "domain", "geometry", {{"curved", Scene::Geometry::curved}, {"polygonal", Scene::Geometry::polygonal}},
+      Scene::Geometry::curved, &Scene::geometry,
+      "a Gmsh `mesh`: cells follow its curves (a .geo's exact curves, a high-order mesh's edge nodes), or "
+      "only its vertices"));
   add(any_number_key("domain", "x_min", -1.0, &mesh::Rectangle::x_min, "rectangle: left end"));
   add(any_number_key("domain", "x_max", 1.0, &mesh::Rectangle::x_max, "rectangle: right end"));
   add(any_number_key("domain", "y_min", -1.0, &mesh::Rectangle::y_min, "rectangle: bottom end"));

@@ -52,11 +52,27 @@ mesh::QuadMesh grade_towards_points(const mesh::QuadMesh& mesh, const Scene& sce
   return mesh::grade_towards_vertices(mesh, centres, scene.domain_grading, scene.grading_layers, origin);
 }
 
+/// The scene's mesh file with its curves (or without, for geometry = "polygonal").
+mesh::QuadMesh read_mesh_file(const Scene& scene) {
+  mesh::QuadMesh mesh = mesh::read_gmsh_mesh(scene.mesh_file, scene.mesh_size);
+  if (scene.geometry == Scene::Geometry::polygonal) mesh.straighten();
+  // Grading and perturbation move or add vertices off the curves.
+  if (mesh.has_curved_cells())
+    for (const auto& [used, key] :
+         {std::pair{!scene.grading_points.empty(), "grading_points"}, std::pair{scene.perturb > 0, "perturb"}})
+      if (used)
+        throw InputError(
+            fmt::format("{}: key 'domain.{}': not available on the curved mesh of {}; refine with "
+                        "domain.refinements, or set domain.geometry = \"polygonal\"",
+                        scene.file, key, scene.mesh_file));
+  return mesh;
+}
+
 }  // namespace
 
 mesh::QuadMesh build_scene_mesh(const Scene& scene) {
-  mesh::QuadMesh mesh = grade_towards_points(
-      scene.mesh_file.empty() ? build_rectangle(scene) : mesh::read_gmsh_mesh(scene.mesh_file, scene.mesh_size), scene);
+  mesh::QuadMesh mesh =
+      grade_towards_points(scene.mesh_file.empty() ? build_rectangle(scene) : read_mesh_file(scene), scene);
   if (scene.perturb > 0) mesh::perturb_interior_vertices(mesh, scene.perturb, scene.seed);
   for (int k = 0; k < scene.refinements; ++k) mesh = mesh::refine_uniformly(mesh);
   auto predicate = [&](const std::string& text, const char* key) {
