@@ -214,8 +214,8 @@ TEST(Faults, MessagesNameTheInputAndWhy) {
            Case{"equal.toml", "[domain]\n", "[domain]\nx_min = 1\nx_max = 1\n", "= 1, 1: must satisfy x_min < x_max"},
            Case{"huge.toml", "n_x = 4\nn_y = 4", "n_x = 100000\nn_y = 100000", "at most 2^31 - 1 unknowns"},
            Case{"free.toml", "dirichlet = \"abs(y - 1) < 1e-9\"", "dirichlet = \"x > 5\"", "has no Dirichlet part"},
-           Case{"pieces.toml", "contact = \"abs(y + 1) < 1e-9\"", "contact = \"abs(y + 1) < 1e-9 && abs(x) > 0.6\"",
-                "pieces.toml: key 'boundary.contact': Γ_C must be one open curve; it has 2 pieces"},
+           Case{"empty.toml", "contact = \"abs(y + 1) < 1e-9\"", "contact = \"abs(y + 1) < 1e-9 && x > 5\"",
+                "empty.toml: key 'boundary.contact' = abs(y + 1) < 1e-9 && x > 5: it must select at least one"},
            Case{"expression.toml", "g = \"-x^2\"", "g = \"" + huge + "+\"", "(200001 characters)"},
        }) {
     const auto result = scene_with(c.name, c.from, c.to);

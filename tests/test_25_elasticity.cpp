@@ -335,14 +335,14 @@ TEST(Hertz, SolveWritesTheBoundaryColumnsWithPressureAndGapComplementary) {
   std::ifstream in(dir / "boundary_frictionless.csv");
   std::string header;
   std::getline(in, header);
-  EXPECT_EQ(header, "x,y,s_arc,u_n,u_t,gap,pressure,traction_t");
+  EXPECT_EQ(header, "x,y,s_arc,u_n,u_t,gap,pressure,traction_t,zone");
   double max_pressure = 0.0, min_pressure = 0.0, min_gap = 0.0, max_product = 0.0;
   int rows = 0;
   for (std::string line; std::getline(in, line); ++rows) {
     std::vector<double> v;
     std::stringstream fields(line);
     for (std::string field; std::getline(fields, field, ',');) v.push_back(std::stod(field));
-    ASSERT_EQ(v.size(), 8u) << line;
+    ASSERT_EQ(v.size(), 9u) << line;
     max_pressure = std::max(max_pressure, v[6]);
     min_pressure = std::min(min_pressure, v[6]);
     min_gap = std::min(min_gap, v[5]);
@@ -399,7 +399,7 @@ TEST(ElasticScenes, PrescribedDisplacementGivesTheExactUniformPressure) {
     std::vector<double> v;
     std::stringstream fields(line);
     for (std::string field; std::getline(fields, field, ',');) v.push_back(std::stod(field));
-    ASSERT_EQ(v.size(), 8u) << line;
+    ASSERT_EQ(v.size(), 9u) << line;
     EXPECT_NEAR(v[6], pressure, 1e-12) << line;
     EXPECT_NEAR(v[3], 0.0, 1e-14) << "u_n: the top stays on the plate";
   }

@@ -264,7 +264,7 @@ TEST(CurvedScenes, SignoriniOnACurvedContactEdgeMeetsKkt) {
   // constraint points of λ), so between them u may dip below g by the discretization error.
   double deepest = 0.0;
   for (const auto& row : read_csv_numbers(dir / "boundary_signorini.csv")) {
-    ASSERT_EQ(row.size(), 6u);
+    ASSERT_EQ(row.size(), 7u);
     EXPECT_NEAR(std::hypot(row[0], row[4]), 2.0, 1e-13);
     deepest = std::min(deepest, row[1] - row[2]);
   }

@@ -28,6 +28,15 @@ struct SolveOptions {
   std::string distributed_solver = "substructuring";
 };
 
+// " (zones 0.4500 + 0.5000)" when Γ_C has several zones: each zone's contact set length.
+std::string zone_lengths(const nlohmann::json& result) {
+  if (!result.contains("zones") || result["zones"].size() < 2) return "";
+  std::vector<std::string> lengths;
+  for (const auto& zone : result["zones"])
+    lengths.push_back(fmt::format("{:.4f}", zone["contact_set_length"].get<double>()));
+  return fmt::format(" (zones {})", fmt::join(lengths, " + "));
+}
+
 int run_solve(const SolveOptions& o) {
   const std::string where = "hpcontact solve";
   // 1. The scene with the options as overrides, each checked like the scene's own key.
@@ -64,10 +73,10 @@ int run_solve(const SolveOptions& o) {
   for (const auto problem : scene.contact_effects()) {
     const std::string name = scene::to_string(scene::effect_of(problem));
     const auto& result = summary[name];
-    fmt::print("{}: energy = {:.17g}, {} {} steps, KKT residual {:.2e}, contact set length {:.4f}\n", name,
+    fmt::print("{}: energy = {:.17g}, {} {} steps, KKT residual {:.2e}, contact set length {:.4f}{}\n", name,
                result["energy"].get<double>(), result["solver"]["iterations"].get<int>(),
                result["solver"]["method"].get<std::string>(), result["solver"]["kkt_residual"].get<double>(),
-               result["contact_set_length"].get<double>());
+               result["contact_set_length"].get<double>(), zone_lengths(result));
   }
   for (const auto problem : scene.elastic_effects()) {
     const std::string name = contact::to_string(problem);
@@ -77,6 +86,7 @@ int run_solve(const SolveOptions& o) {
         name, result["energy"].get<double>(), result["total_force"].get<double>(),
         result["solver"]["iterations"].get<int>(), result["solver"]["method"].get<std::string>(),
         result["solver"]["kkt_residual"].get<double>(), result["contact_set_length"].get<double>());
+    fmt::print("{}", zone_lengths(result));
     if (result.contains("fixed_point"))
       fmt::print(", {} fixed-point iterations", result["fixed_point"]["iterations"].get<int>());
     fmt::print("\n");

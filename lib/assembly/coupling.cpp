@@ -15,6 +15,16 @@ std::vector<CommonInterval> common_intervals(const mesh::ContactBoundary& contac
   if (std::abs(boundary_mesh.length() - contact.length()) > 1e-10 * contact.length())
     throw InputError("the boundary mesh T_{C,H} spans [0, " + std::to_string(boundary_mesh.length()) +
                      "] but Γ_C has length " + std::to_string(contact.length()));
+  // Multipliers are discontinuous, but no segment may join two zones of Γ_C; and the zones the
+  // H^{-1/2} Gram matrices are built from must be Γ_C's.
+  const auto& zones = boundary_mesh.zones();
+  bool same = zones.size() == contact.zones().size();
+  for (std::size_t z = 0; same && z < zones.size(); ++z)
+    same = std::abs(zones[z].end - contact.zones()[z].s_end) <= 1e-10 * contact.length() &&
+           zones[z].closed == contact.zones()[z].closed;
+  if (!same)
+    throw InputError("the boundary mesh T_{C,H} does not break at the ends of the " +
+                     std::to_string(contact.zones().size()) + " zones of Γ_C (or disagrees on which are closed)");
   const auto nodes = mesh::common_refinement(contact.breakpoints(), boundary_mesh.nodes());
   std::vector<CommonInterval> intervals;
   for (std::size_t k = 0; k + 1 < nodes.size(); ++k) {

@@ -191,6 +191,13 @@ nlohmann::json effect_summary(const ElasticEffect& effect) {
     j["fixed_point"] = {{"iterations", solution.fixed_point_changes.size()}, {"changes", solution.fixed_point_changes}};
   if (effect.setup.problem == contact::ElasticContactProblem::coulomb)
     j["friction_coefficient"] = effect.setup.friction_coefficient;
+  const auto& zones = effect.setup.boundary_mesh->zones();
+  j["zones"] = nlohmann::json::array();
+  for (std::size_t z = 0; z < zones.size(); ++z)
+    j["zones"].push_back({{"length", zones[z].end - zones[z].begin},
+                          {"closed", zones[z].closed},
+                          {"contact_set_length", effect.samples.zone_contact_set_length[z]},
+                          {"total_force", effect.samples.zone_total_force[z]}});
   return j;
 }
 

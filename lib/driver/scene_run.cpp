@@ -40,6 +40,12 @@ nlohmann::json contact_summary(const ContactEffect& effect) {
   j["energy"] = solution.energy;
   j["nmult"] = solution.lambda.size();
   j["contact_set_length"] = effect.samples.contact_set_length;
+  j["zones"] = nlohmann::json::array();
+  const auto& zones = effect.setup.boundary_mesh->zones();
+  for (std::size_t z = 0; z < zones.size(); ++z)
+    j["zones"].push_back({{"length", zones[z].end - zones[z].begin},
+                          {"closed", zones[z].closed},
+                          {"contact_set_length", effect.samples.zone_contact_set_length[z]}});
   const auto& q = solution.constraint_points;
   j["constraint_points_per_segment"] = {{"min", *std::min_element(q.begin(), q.end())},
                                         {"max", *std::max_element(q.begin(), q.end())},

@@ -14,6 +14,31 @@ BoundaryMesh::BoundaryMesh(std::vector<double> nodes, const std::string& origin)
   for (std::size_t k = 1; k < nodes_.size(); ++k)
     if (!(nodes_[k] > nodes_[k - 1]))
       throw InputError(origin + ": breakpoints must increase strictly (breakpoint " + std::to_string(k) + ")");
+  zones_ = {{0.0, nodes_.back(), false}};
+}
+
+void BoundaryMesh::set_zones(std::vector<BoundaryZone> zones, const std::string& origin) {
+  const double tolerance = 1e-12 * length();
+  double at = 0.0;
+  for (auto& zone : zones) {
+    const auto node = std::min_element(nodes_.begin(), nodes_.end(), [&](double a, double b) {
+      return std::abs(a - zone.end) < std::abs(b - zone.end);
+    });
+    if (std::abs(zone.begin - at) > tolerance || std::abs(*node - zone.end) > tolerance)
+      throw InputError(origin + ": the zone [" + std::to_string(zone.begin) + ", " + std::to_string(zone.end) +
+                       "] of Γ_C must start where the previous one ends and end at a breakpoint of T_{C,H}");
+    zone.begin = at;
+    zone.end = at = *node;
+  }
+  if (zones.empty() || at != length()) throw InputError(origin + ": the zones of Γ_C must cover it to its end");
+  zones_ = std::move(zones);
+}
+
+int BoundaryMesh::zone_of_segment(int k) const {
+  const double middle = 0.5 * (nodes_[k] + nodes_[k + 1]);
+  for (std::size_t z = 0; z < zones_.size(); ++z)
+    if (middle < zones_[z].end) return static_cast<int>(z);
+  return static_cast<int>(zones_.size()) - 1;
 }
 
 BoundaryMesh BoundaryMesh::uniform(double length, int m) {

@@ -1,11 +1,17 @@
 // The boundary mesh T_{C,H} of Γ_C, independent of T_h: segments given by breakpoints in the
-// arc length s of ContactBoundary (uniform, graded, or explicit).
+// arc length s of ContactBoundary (uniform, graded, or explicit), grouped by the zones of Γ_C.
 #pragma once
 
 #include <string>
 #include <vector>
 
 namespace hpcontact::mesh {
+
+/// A connected piece of Γ_C as seen by T_{C,H}: the arc [begin, end] of s.
+struct BoundaryZone {
+  double begin = 0.0, end = 0.0;
+  bool closed = false;
+};
 
 class BoundaryMesh {
  public:
@@ -29,8 +35,17 @@ class BoundaryMesh {
   /// Segment containing s (the left one at a breakpoint).
   int segment_at(double s) const;
 
+  /// The zones, one after the other from 0 to the length (default: one open zone).
+  const std::vector<BoundaryZone>& zones() const { return zones_; }
+  /// @throws InputError naming `origin` unless the zones run from 0 to the length end to end and
+  /// every zone end is a breakpoint.
+  void set_zones(std::vector<BoundaryZone> zones, const std::string& origin);
+  /// The zone of segment k.
+  int zone_of_segment(int k) const;
+
  private:
   std::vector<double> nodes_;
+  std::vector<BoundaryZone> zones_;
 };
 
 /// Sorted union of two breakpoint sets, merging points closer than 1e-12·length: the common

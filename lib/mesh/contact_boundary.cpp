@@ -62,59 +62,131 @@ double TraceEdge::local_parameter(double s) const {
   return reversed ? -t : t;
 }
 
-ContactBoundary::ContactBoundary(const QuadMesh& mesh) : mesh_(&mesh) {
-  std::map<int, std::vector<int>> edges_at_vertex;
-  int n_contact = 0;
+namespace {
+
+bool lexicographically_before(const Point& a, const Point& b) {
+  return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+}
+
+// The contact edges at each vertex of Γ_C. @throws InputError if Γ_C is empty or branches.
+std::map<int, std::vector<int>> contact_edges_at_vertices(const QuadMesh& mesh) {
+  std::map<int, std::vector<int>> at;
   for (int e : mesh.boundary_edges())
-    if (mesh.edge_part(e) == BoundaryPart::contact) {
-      ++n_contact;
-      for (int v : mesh.edge(e)) edges_at_vertex[v].push_back(e);
-    }
-  if (n_contact == 0) throw InputError("Γ_C is empty: no boundary edge is marked as contact");
-  std::vector<int> ends;
-  for (const auto& [v, incident] : edges_at_vertex) {
+    if (mesh.edge_part(e) == BoundaryPart::contact)
+      for (int v : mesh.edge(e)) at[v].push_back(e);
+  if (at.empty()) throw InputError("Γ_C is empty: no boundary edge is marked as contact");
+  for (const auto& [v, incident] : at)
     if (incident.size() > 2)
       throw InputError("Γ_C branches at vertex (" + std::to_string(mesh.vertex(v).x()) + ", " +
-                       std::to_string(mesh.vertex(v).y()) + "): it must be one open curve");
+                       std::to_string(mesh.vertex(v).y()) + "): each zone must be one open or closed curve");
+  return at;
+}
+
+struct Walk {
+  std::vector<int> vertices, edges;  ///< vertices.size() = edges.size() + 1 (a closed walk repeats its start)
+};
+
+// Follows Γ_C from `start` along `first`, until an end of the curve or back at `start`.
+Walk walk_from(const QuadMesh& mesh, const std::map<int, std::vector<int>>& at, int start, int first) {
+  Walk walk{{start}, {}};
+  int vertex = start, edge = first;
+  while (edge >= 0) {
+    walk.edges.push_back(edge);
+    vertex = mesh.edge(edge)[0] == vertex ? mesh.edge(edge)[1] : mesh.edge(edge)[0];
+    walk.vertices.push_back(vertex);
+    if (vertex == start) break;
+    const auto& incident = at.at(vertex);
+    const int previous = edge;
+    edge = -1;
+    for (int e : incident)
+      if (e != previous) edge = e;
+  }
+  return walk;
+}
+
+// The zones of Γ_C: open curves from their lexicographically first end, then closed curves from
+// their lexicographically first vertex, running with Ω on their left; all ordered by start point.
+std::vector<Walk> contact_zones(const QuadMesh& mesh) {
+  const auto at = contact_edges_at_vertices(mesh);
+  std::vector<Walk> zones;
+  std::map<int, bool> used;
+  std::vector<int> ends;
+  for (const auto& [v, incident] : at)
     if (incident.size() == 1) ends.push_back(v);
+  std::sort(ends.begin(), ends.end(),
+            [&](int a, int b) { return lexicographically_before(mesh.vertex(a), mesh.vertex(b)); });
+  for (int end : ends) {
+    if (used[at.at(end)[0]]) continue;  // the far end of a zone already walked
+    zones.push_back(walk_from(mesh, at, end, at.at(end)[0]));
+    for (int e : zones.back().edges) used[e] = true;
   }
-  if (ends.size() != 2)
-    throw InputError("Γ_C must be one open curve; it has " + std::to_string(ends.size() / 2) + " pieces or is closed");
-  const auto lexicographic = [&](int a, int b) {
-    const Point &pa = mesh.vertex(a), &pb = mesh.vertex(b);
-    return pa.x() < pb.x() || (pa.x() == pb.x() && pa.y() < pb.y());
-  };
-  int vertex = lexicographic(ends[0], ends[1]) ? ends[0] : ends[1];
-  int previous_edge = -1;
-  chain_vertices_.push_back(mesh.vertex(vertex));
   while (true) {
-    const auto& incident = edges_at_vertex[vertex];
-    const auto next = std::find_if(incident.begin(), incident.end(), [&](int e) { return e != previous_edge; });
-    if (next == incident.end()) break;
-    const int e = *next;
-    const int other = mesh.edge(e)[0] == vertex ? mesh.edge(e)[1] : mesh.edge(e)[0];
-    TraceEdge trace;
-    trace.edge = e;
-    trace.cell = mesh.edge_cells(e)[0];
-    trace.local_edge = mesh.local_edge_of(e, 0);
-    trace.s_begin = length_;
-    if (mesh.cell_geometry(trace.cell)) {
-      trace.arc = std::make_shared<EdgeArcLength>(mesh, trace.cell, trace.local_edge);
-      length_ += trace.arc->length();
-    } else {
-      length_ += mesh.edge_length(e);
-    }
-    trace.s_end = length_;
-    // The local edge parameter runs from local vertex kLocalEdgeVertices[.][0] to [1].
-    const int local_start = mesh.cell(trace.cell)[kLocalEdgeVertices[trace.local_edge][0]];
-    trace.reversed = local_start != vertex;
-    edges_.push_back(trace);
-    chain_vertices_.push_back(mesh.vertex(other));
-    previous_edge = e;
-    vertex = other;
+    int start = -1;
+    for (const auto& [v, incident] : at)
+      if (!used[incident[0]] && (start < 0 || lexicographically_before(mesh.vertex(v), mesh.vertex(start)))) start = v;
+    if (start < 0) break;
+    // Ω on the left: the outward normal points to the right of the direction of travel.
+    int first = at.at(start)[0];
+    const Point direction =
+        mesh.vertex(mesh.edge(first)[0] == start ? mesh.edge(first)[1] : mesh.edge(first)[0]) - mesh.vertex(start);
+    const Point normal = mesh.boundary_normal(first, 0.0);
+    if (normal.dot(Point(direction.y(), -direction.x())) < 0.0) first = at.at(start)[1];
+    zones.push_back(walk_from(mesh, at, start, first));
+    for (int e : zones.back().edges) used[e] = true;
   }
-  if (static_cast<int>(edges_.size()) != n_contact)
-    throw InputError("Γ_C must be one connected curve; it has several pieces");
+  std::stable_sort(zones.begin(), zones.end(), [&](const Walk& a, const Walk& b) {
+    return lexicographically_before(mesh.vertex(a.vertices.front()), mesh.vertex(b.vertices.front()));
+  });
+  return zones;
+}
+
+}  // namespace
+
+ContactBoundary::ContactBoundary(const QuadMesh& mesh) : mesh_(&mesh) {
+  for (const Walk& walk : contact_zones(mesh)) {
+    ContactZone zone;
+    zone.s_begin = length_;
+    zone.first_edge = static_cast<int>(edges_.size());
+    zone.closed = walk.vertices.front() == walk.vertices.back();
+    for (std::size_t k = 0; k < walk.edges.size(); ++k) {
+      const int e = walk.edges[k], vertex = walk.vertices[k];
+      TraceEdge trace;
+      trace.edge = e;
+      trace.cell = mesh.edge_cells(e)[0];
+      trace.local_edge = mesh.local_edge_of(e, 0);
+      trace.zone = static_cast<int>(zones_.size());
+      trace.s_begin = length_;
+      if (mesh.cell_geometry(trace.cell)) {
+        trace.arc = std::make_shared<EdgeArcLength>(mesh, trace.cell, trace.local_edge);
+        length_ += trace.arc->length();
+      } else {
+        length_ += mesh.edge_length(e);
+      }
+      trace.s_end = length_;
+      // The local edge parameter runs from local vertex kLocalEdgeVertices[.][0] to [1].
+      const int local_start = mesh.cell(trace.cell)[kLocalEdgeVertices[trace.local_edge][0]];
+      trace.reversed = local_start != vertex;
+      edges_.push_back(trace);
+      edge_ends_.push_back({mesh.vertex(vertex), mesh.vertex(walk.vertices[k + 1])});
+    }
+    zone.s_end = length_;
+    zone.end_edge = static_cast<int>(edges_.size());
+    zones_.push_back(zone);
+  }
+}
+
+int ContactBoundary::zone_at(double s) const { return edges_[edge_index_at(s)].zone; }
+
+std::vector<BoundaryZone> ContactBoundary::boundary_zones() const {
+  std::vector<BoundaryZone> out;
+  for (const auto& zone : zones_) out.push_back({zone.s_begin, zone.s_end, zone.closed});
+  return out;
+}
+
+BoundaryMesh ContactBoundary::edge_mesh() const {
+  BoundaryMesh edges(breakpoints(), "trace of T_h");
+  edges.set_zones(boundary_zones(), "trace of T_h");
+  return edges;
 }
 
 std::vector<double> ContactBoundary::breakpoints() const {
@@ -134,7 +206,7 @@ Point ContactBoundary::point_at(double s) const {
   const auto& e = edges_[k];
   if (!e.arc) {
     const double fraction = (s - e.s_begin) / (e.s_end - e.s_begin);
-    return (1.0 - fraction) * chain_vertices_[k] + fraction * chain_vertices_[k + 1];
+    return (1.0 - fraction) * edge_ends_[k][0] + fraction * edge_ends_[k][1];
   }
   const Eigen::Vector2d ref = local_edge_point(e.local_edge, e.local_parameter(s));
   return CellMap(*mesh_, e.cell).map(ref.x(), ref.y());
@@ -148,7 +220,7 @@ Point ContactBoundary::normal_at(double s) const {
 Point ContactBoundary::tangent_at(double s) const {
   const int k = edge_index_at(s);
   const auto& e = edges_[k];
-  if (!e.arc) return (chain_vertices_[k + 1] - chain_vertices_[k]).normalized();
+  if (!e.arc) return (edge_ends_[k][1] - edge_ends_[k][0]).normalized();
   const Eigen::Vector2d ref = local_edge_point(e.local_edge, e.local_parameter(s));
   const Point along_t = CellMap(*mesh_, e.cell).jacobian(ref.x(), ref.y()) * local_edge_direction(e.local_edge);
   return (e.reversed ? -1.0 : 1.0) * along_t.normalized();

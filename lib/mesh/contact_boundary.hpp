@@ -1,12 +1,14 @@
-// Γ_C as seen from T_h: the chain of boundary edges with part `contact`, ordered end to end and
-// parametrized by arc length s ∈ [0, L] (along curved edges too: the local edge parameter is then
-// a non-linear function of s, inverted by Newton). Shared by the inf-sup analysis and the contact
-// solver.
+// Γ_C as seen from T_h: the boundary edges with part `contact`, in zones (each an open or a closed
+// curve), ordered end to end and parametrized by arc length s ∈ [0, L], the zones one after the
+// other (along curved edges too: the local edge parameter is then a non-linear function of s,
+// inverted by Newton). Shared by the inf-sup analysis and the contact solver.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <vector>
 
+#include "mesh/boundary_mesh.hpp"
 #include "mesh/quad_mesh.hpp"
 
 namespace hpcontact::mesh {
@@ -18,6 +20,7 @@ struct TraceEdge {
   int edge = -1;
   int cell = -1;
   int local_edge = -1;
+  int zone = 0;  ///< index into ContactBoundary::zones()
   double s_begin = 0.0, s_end = 0.0;
   /// The cell's local edge parameter t ∈ [-1,1] runs against s (t = -1 at s_end).
   bool reversed = false;
@@ -27,11 +30,21 @@ struct TraceEdge {
   double local_parameter(double s) const;
 };
 
+/// One connected piece of Γ_C: the arc [s_begin, s_end] of s, edges [first_edge, end_edge).
+struct ContactZone {
+  double s_begin = 0.0, s_end = 0.0;
+  int first_edge = 0, end_edge = 0;
+  bool closed = false;  ///< a closed curve (a hole, a whole circle): s_end is s_begin again
+  double length() const { return s_end - s_begin; }
+};
+
 class ContactBoundary {
  public:
-  /// Orders the contact edges into one open chain. s = 0 is the chain end with the smaller
-  /// x (then smaller y): on the paper's square s = x + 1.
-  /// @throws InputError if Γ_C is empty, not connected, closed, or branches.
+  /// Orders the contact edges into zones, each a chain of edges. An open zone starts at its end
+  /// with the smaller x (then smaller y): on the paper's square s = x + 1; a closed zone at its
+  /// lexicographically first vertex, running with Ω on its left. Zones follow one another in the
+  /// order of their start points.
+  /// @throws InputError if Γ_C is empty or branches (a vertex with three or more contact edges).
   explicit ContactBoundary(const QuadMesh& mesh);
 
   const QuadMesh& mesh() const { return *mesh_; }
@@ -47,13 +60,21 @@ class ContactBoundary {
   Point tangent_at(double s) const;
   /// Whether some edge of Γ_C is curved.
   bool is_curved() const;
+  const std::vector<ContactZone>& zones() const { return zones_; }
+  /// The zone containing s (the left one where two meet).
+  int zone_at(double s) const;
+  /// The zones as a boundary mesh sees them (BoundaryMesh::set_zones).
+  std::vector<BoundaryZone> boundary_zones() const;
+  /// T_h|Γ_C as a boundary mesh: one segment per edge, with Γ_C's zones.
+  BoundaryMesh edge_mesh() const;
   /// Index of the trace edge containing s (the left one at a shared vertex).
   int edge_index_at(double s) const;
 
  private:
   const QuadMesh* mesh_;
   std::vector<TraceEdge> edges_;
-  std::vector<Point> chain_vertices_;
+  std::vector<std::array<Point, 2>> edge_ends_;  ///< each trace edge's ends in the direction of s
+  std::vector<ContactZone> zones_;
   double length_ = 0.0;
 };
 

@@ -68,6 +68,8 @@ QuadMesh grade_towards_vertices(const QuadMesh& mesh, const std::vector<int>& ce
                                 const std::string& origin, std::vector<int>* parents) {
   if (!(ratio > 0.0 && ratio < 1.0)) throw_bad_input(origin, "grading", fmt::format("{}", ratio), "must be in (0, 1)");
   if (layers < 0) throw_bad_input(origin, "grading_layers", std::to_string(layers), "must be >= 0");
+  if (mesh.has_curved_cells())
+    throw InputError(origin + ": grading towards vertices is not available on a mesh with curved cells");
   // 1. Which star each cell belongs to, and whether the layers stay resolvable.
   const std::vector<int> star_of = stars_of_cells(mesh, centres, origin);
   check_layer_depth(mesh, star_of, ratio, layers, origin);

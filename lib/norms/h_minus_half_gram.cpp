@@ -31,17 +31,24 @@ Eigen::MatrixXd interpolation_norm_gram_on_reference(const mesh::ContactBoundary
       nodes.push_back(interval.s_begin + (interval.s_end - interval.s_begin) * k / reference.subdivisions);
   nodes.push_back(contact.length());
   const int n_intervals = static_cast<int>(nodes.size()) - 1;
-  // Dofs: vertices 0..n_intervals, then q - 1 bubbles per interval.
-  const int n_w = n_intervals + 1 + n_intervals * (q - 1);
+  // Dofs: the vertices of each zone (W is continuous within a zone, not across zones: interval k
+  // of zone z has vertices k + z and k + z + 1), then q - 1 bubbles per interval.
+  const auto& boundary = multipliers.boundary_mesh();
+  const int n_zones = static_cast<int>(boundary.zones().size());
+  for (const auto& zone : boundary.zones())
+    if (zone.closed) throw InputError("the interpolation norm on a reference space is built for open zones of Γ_C");
+  const int n_vertices = n_intervals + n_zones;
+  const int n_w = n_vertices + n_intervals * (q - 1);
   std::vector<Eigen::Triplet<double>> a_entries, m_entries, c_entries;
   const int pc_max = multipliers.max_degree();
   const auto& rule = basis::gauss_legendre(basis::gauss_points_for_degree(2 * q + pc_max));
   const auto table = basis::tabulate_lobatto(q, rule.points);
   for (int k = 0; k < n_intervals; ++k) {
-    std::vector<int> dofs{k, k + 1};
-    for (int j = 2; j <= q; ++j) dofs.push_back(n_intervals + 1 + k * (q - 1) + (j - 2));
+    const int segment = boundary.segment_at(0.5 * (nodes[k] + nodes[k + 1]));
+    const int zone = boundary.zone_of_segment(segment);
+    std::vector<int> dofs{k + zone, k + zone + 1};
+    for (int j = 2; j <= q; ++j) dofs.push_back(n_vertices + k * (q - 1) + (j - 2));
     const double half = 0.5 * (nodes[k + 1] - nodes[k]);
-    const int segment = multipliers.boundary_mesh().segment_at(0.5 * (nodes[k] + nodes[k + 1]));
     const int first = multipliers.first_dof(segment), pc = multipliers.segment_degree(segment);
     Eigen::MatrixXd a_local = Eigen::MatrixXd::Zero(q + 1, q + 1), m_local = a_local;
     Eigen::MatrixXd c_local = Eigen::MatrixXd::Zero(q + 1, pc + 1);
@@ -119,8 +126,11 @@ std::optional<std::vector<int>> grading_vertices(const mesh::QuadMesh& mesh, con
     const auto& edge = contact.edges()[std::min<std::size_t>(at - trace.begin(), contact.edges().size() - 1)];
     const auto [a, b] = mesh.edge(edge.edge);
     const mesh::Point x = contact.point_at(*at);
-    vertices.push_back((mesh.vertex(a) - x).norm() < (mesh.vertex(b) - x).norm() ? a : b);
-    wanted[vertices.back()] = 0;
+    const int vertex = (mesh.vertex(a) - x).norm() < (mesh.vertex(b) - x).norm() ? a : b;
+    // A closed zone's end is its start: the same vertex.
+    if (wanted.contains(vertex)) continue;
+    vertices.push_back(vertex);
+    wanted[vertex] = 0;
   }
   std::vector<int> star_of(mesh.n_cells(), -1);
   for (int c = 0; c < mesh.n_cells(); ++c)
@@ -148,7 +158,11 @@ ExtensionReferenceFactor::ExtensionReferenceFactor(const mesh::QuadMesh& mesh, c
     degrees = std::move(children);
   };
   for (int level = 0; level < reference.refinements; ++level) refine();
-  if (reference.layers > 0 && !grading_points.empty()) {
+  if (fine_->has_curved_cells()) {
+    // Grading would move vertices off the curves: refine uniformly instead (one level per two
+    // layers, at most two), and report the reference as not geometric.
+    for (int level = 0; level < std::min(reference.layers / 2, 2); ++level) refine();
+  } else if (reference.layers > 0 && !grading_points.empty()) {
     // Breakpoints of T_{C,H} inside edges of T_h become vertices after enough refinements (two
     // more at most; beyond that the grading is left out and the error estimate shows it).
     auto centres = grading_vertices(*fine_, grading_points);
@@ -166,6 +180,7 @@ ExtensionReferenceFactor::ExtensionReferenceFactor(const mesh::QuadMesh& mesh, c
       degrees = std::move(graded);
     }
   }
+  if (fine_->has_curved_cells()) graded_ = false;
   for (int& p : degrees) p += reference.extra_degree;
   operators_ = std::make_unique<operators::PrimalOperators>(*fine_, std::move(degrees));
   operators_->gram_factor();

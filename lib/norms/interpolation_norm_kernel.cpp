@@ -251,22 +251,38 @@ Eigen::MatrixXd interpolation_norm_gram_kernel(const space::MultiplierSpace& mul
                                                const KernelQuadrature& quadrature) {
   if (quadrature.level < 0 || quadrature.level > 4)
     throw_bad_input("interpolation norm", "quadrature level", std::to_string(quadrature.level), "must be in 0..4");
+  // Γ_C's zones are disjoint curves: H^{1/2} of their union is the sum of each one's, and G is
+  // block diagonal, each zone's block the Neumann kernel of its own arc [0, L_z].
   const auto& boundary = multipliers.boundary_mesh();
-  const double length = boundary.length();
-  const Kernel difference = difference_kernel(length), sum = sum_kernel(length);
   const Resolution resolution = resolution_of(quadrature.level);
-  std::vector<Segment> segments;
-  for (int k = 0; k < multipliers.n_segments(); ++k)
-    segments.push_back({boundary.segment_begin(k), boundary.segment_end(k), multipliers.segment_degree(k)});
   Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(multipliers.n_dofs(), multipliers.n_dofs());
-  for (int k = 0; k < multipliers.n_segments(); ++k)
-    for (int l = k; l < multipliers.n_segments(); ++l) {
-      const Eigen::MatrixXd block = PairIntegral(segments[k], segments[l], difference, resolution).compute() +
-                                    PairIntegral(segments[k], segments[l], sum, resolution).compute();
-      gram.block(multipliers.first_dof(k), multipliers.first_dof(l), block.rows(), block.cols()) = block;
-      if (l != k)
-        gram.block(multipliers.first_dof(l), multipliers.first_dof(k), block.cols(), block.rows()) = block.transpose();
-    }
+  for (std::size_t z = 0; z < boundary.zones().size(); ++z) {
+    const auto& zone = boundary.zones()[z];
+    if (zone.closed)
+      throw InputError(
+          "the interpolation norm of H^{-1/2}(Γ_C) is built for open curves (the kernel of an interval); a zone "
+          "of Γ_C is a closed curve: use the extension norm ([infsup] norm = \"extension\")");
+    const double length = zone.end - zone.begin;
+    const Kernel difference = difference_kernel(length), sum = sum_kernel(length);
+    std::vector<int> indices;
+    std::vector<Segment> segments;
+    for (int k = 0; k < multipliers.n_segments(); ++k)
+      if (boundary.zone_of_segment(k) == static_cast<int>(z)) {
+        indices.push_back(k);
+        segments.push_back({boundary.segment_begin(k) - zone.begin, boundary.segment_end(k) - zone.begin,
+                            multipliers.segment_degree(k)});
+      }
+    for (std::size_t a = 0; a < segments.size(); ++a)
+      for (std::size_t b = a; b < segments.size(); ++b) {
+        const Eigen::MatrixXd block = PairIntegral(segments[a], segments[b], difference, resolution).compute() +
+                                      PairIntegral(segments[a], segments[b], sum, resolution).compute();
+        const int k = indices[a], l = indices[b];
+        gram.block(multipliers.first_dof(k), multipliers.first_dof(l), block.rows(), block.cols()) = block;
+        if (l != k)
+          gram.block(multipliers.first_dof(l), multipliers.first_dof(k), block.cols(), block.rows()) =
+              block.transpose();
+      }
+  }
   gram /= std::numbers::pi;
   return 0.5 * (gram + gram.transpose());
 }

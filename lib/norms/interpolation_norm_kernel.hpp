@@ -33,8 +33,9 @@ struct KernelQuadrature {
   int level = 1;
 };
 
-/// Dense, symmetric positive definite, shape (n_multiplier_dofs, n_multiplier_dofs); Γ_C is the
-/// arc [0, multipliers.boundary_mesh().length()].
+/// Dense, symmetric positive definite, shape (n_multiplier_dofs, n_multiplier_dofs); each zone of
+/// the boundary mesh is an arc [0, L_z] of its own, and G is block diagonal by zones.
+/// @throws InputError for a closed zone (its kernel would be periodic; the extension norm serves).
 Eigen::MatrixXd interpolation_norm_gram_kernel(const space::MultiplierSpace& multipliers,
                                                const KernelQuadrature& quadrature = {});
 

@@ -33,7 +33,7 @@ const std::vector<int>& ElasticOperators::trace_dofs() const {
     // The scalar trace dofs (columns a full-degree multiplier space on the edges of T_h|Γ_C
     // touches), each with both components.
     const int p_max = *std::max_element(space_->cell_degrees().begin(), space_->cell_degrees().end());
-    const mesh::BoundaryMesh edges(contact_->breakpoints(), "trace of T_h");
+    const mesh::BoundaryMesh edges = contact_->edge_mesh();  // full_trace keeps a pointer to it
     const space::MultiplierSpace full_trace(edges, p_max);
     const auto scalar = linalg::nonzero_columns(assembly::assemble_coupling(*space_, *contact_, full_trace));
     trace_dofs_ = std::make_unique<std::vector<int>>();

@@ -27,7 +27,7 @@ PrimalOperators::~PrimalOperators() = default;
 const std::vector<int>& PrimalOperators::trace_dofs() const {
   if (!trace_dofs_) {
     const int p_max = *std::max_element(space_->cell_degrees().begin(), space_->cell_degrees().end());
-    const mesh::BoundaryMesh edges(contact_->breakpoints(), "trace of T_h");
+    const mesh::BoundaryMesh edges = contact_->edge_mesh();  // full_trace keeps a pointer to it
     const space::MultiplierSpace full_trace(edges, p_max);
     trace_dofs_ = std::make_unique<std::vector<int>>(
         linalg::nonzero_columns(assembly::assemble_coupling(*space_, *contact_, full_trace)));

@@ -16,7 +16,8 @@ BoundarySamples sample_boundary(const contact::ContactSetup& setup, const contac
   const auto u_field = assembly::total_field(solution.lift.get(), space, solution.u);
   const mesh::ContactBoundary contact(*setup.mesh);
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
-  BoundarySamples out{io::CsvTable({"x", "u", signorini ? "obstacle" : "s", "lambda", "y", "s_arc"}), 0.0};
+  BoundarySamples out{io::CsvTable({"x", "u", signorini ? "obstacle" : "s", "lambda", "y", "s_arc", "zone"}), 0.0,
+                      std::vector<double>(contact.zones().size(), 0.0)};
   const double lambda_scale = solution.lambda.cwiseAbs().maxCoeff();
   for (const auto& interval : assembly::common_intervals(contact, *setup.boundary_mesh)) {
     const auto& trace = contact.edges()[interval.trace_edge];
@@ -32,10 +33,12 @@ BoundarySamples sample_boundary(const contact::ContactSetup& setup, const contac
       const mesh::Point x = contact.point_at(s);
       const double lambda = multipliers.basis_values(k, multipliers.local_coordinate(k, s)).dot(coefficients);
       const double data = signorini ? setup.obstacle(x) : setup.bound(x);
-      out.table.add_row({x.x(), u.value, data, lambda, x.y(), s});
+      out.table.add_row({x.x(), u.value, data, lambda, x.y(), s, static_cast<long long>(trace.zone)});
       if (std::abs(lambda) > 1e-10 * lambda_scale) ++in_contact;
     }
-    out.contact_set_length += (interval.s_end - interval.s_begin) * in_contact / per_interval;
+    const double in_contact_length = (interval.s_end - interval.s_begin) * in_contact / per_interval;
+    out.contact_set_length += in_contact_length;
+    out.zone_contact_set_length[trace.zone] += in_contact_length;
   }
   return out;
 }

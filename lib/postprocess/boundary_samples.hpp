@@ -8,8 +8,10 @@
 namespace hpcontact::postprocess {
 
 struct BoundarySamples {
-  io::CsvTable table;         ///< x,u,obstacle,lambda (Signorini) or x,u,s,lambda (friction), plus y,s_arc
+  /// x,u,obstacle,lambda (Signorini) or x,u,s,lambda (friction), plus y,s_arc,zone
+  io::CsvTable table;
   double contact_set_length;  ///< length of Γ_C where λ ≠ 0 (|λ| > 1e-10 max|λ|), from the samples
+  std::vector<double> zone_contact_set_length;  ///< the same per zone of Γ_C
 };
 
 /// Samples every interval of the common refinement of T_h|Γ_C and T_{C,H} at `per_interval`

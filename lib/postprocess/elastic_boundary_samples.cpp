@@ -8,11 +8,12 @@
 
 namespace hpcontact::postprocess {
 
-double total_force(const space::MultiplierSpace& multipliers, const Eigen::VectorXd& pressure) {
+double total_force(const space::MultiplierSpace& multipliers, const Eigen::VectorXd& pressure, int zone) {
   double force = 0.0;
   const auto& boundary = multipliers.boundary_mesh();
   for (int k = 0; k < multipliers.n_segments(); ++k)
-    force += pressure(multipliers.first_dof(k)) * (boundary.segment_end(k) - boundary.segment_begin(k));
+    if (zone < 0 || boundary.zone_of_segment(k) == zone)
+      force += pressure(multipliers.first_dof(k)) * (boundary.segment_end(k) - boundary.segment_begin(k));
   return force;
 }
 
@@ -24,9 +25,12 @@ ElasticBoundarySamples sample_elastic_boundary(const contact::ElasticContactSetu
   const auto u_field = assembly::total_field(solution.lift.get(), ops.vector_space(), solution.u);
   const std::array<Eigen::VectorXd, 2> components{u_field.space.component(u_field.coefficients, 0),
                                                   u_field.space.component(u_field.coefficients, 1)};
-  ElasticBoundarySamples out{io::CsvTable({"x", "y", "s_arc", "u_n", "u_t", "gap", "pressure", "traction_t"}), 0.0,
-                             0.0};
+  ElasticBoundarySamples out{
+      io::CsvTable({"x", "y", "s_arc", "u_n", "u_t", "gap", "pressure", "traction_t", "zone"}), 0.0, 0.0, {}, {}};
   out.total_force = total_force(multipliers, solution.pressure);
+  out.zone_contact_set_length.assign(contact.zones().size(), 0.0);
+  for (std::size_t z = 0; z < contact.zones().size(); ++z)
+    out.zone_total_force.push_back(total_force(multipliers, solution.pressure, static_cast<int>(z)));
   const double pressure_scale = solution.pressure.cwiseAbs().maxCoeff();
   for (const auto& interval : assembly::common_intervals(contact, *setup.boundary_mesh)) {
     const auto& trace = contact.edges()[interval.trace_edge];
@@ -44,11 +48,13 @@ ElasticBoundarySamples sample_elastic_boundary(const contact::ElasticContactSetu
       const Eigen::VectorXd basis = multipliers.basis_values(k, multipliers.local_coordinate(k, s));
       const double pressure = basis.dot(solution.pressure.segment(first, n_modes));
       const double shear = basis.dot(solution.shear.segment(first, n_modes));
-      out.table.add_row(
-          {x.x(), x.y(), s, u.dot(normal), u.dot(tangent), setup.gap(x) - u.dot(normal), pressure, shear});
+      out.table.add_row({x.x(), x.y(), s, u.dot(normal), u.dot(tangent), setup.gap(x) - u.dot(normal), pressure, shear,
+                         static_cast<long long>(trace.zone)});
       if (pressure > 1e-10 * pressure_scale) ++in_contact;
     }
-    out.contact_set_length += (interval.s_end - interval.s_begin) * in_contact / per_interval;
+    const double in_contact_length = (interval.s_end - interval.s_begin) * in_contact / per_interval;
+    out.contact_set_length += in_contact_length;
+    out.zone_contact_set_length[trace.zone] += in_contact_length;
   }
   return out;
 }

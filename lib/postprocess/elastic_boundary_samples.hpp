@@ -10,16 +10,17 @@
 namespace hpcontact::postprocess {
 
 struct ElasticBoundarySamples {
-  /// x,y,s_arc,u_n,u_t,gap,pressure,traction_t with gap = g − u·n ≥ 0, pressure = −σ_nn ≥ 0 in
-  /// contact (the normal multiplier), traction_t = σ_nt (along increasing s).
+  /// x,y,s_arc,u_n,u_t,gap,pressure,traction_t,zone with gap = g − u·n ≥ 0, pressure = −σ_nn ≥ 0 in
+  /// contact (the normal multiplier), traction_t = σ_nt (along increasing s), zone of Γ_C.
   io::CsvTable table;
   double contact_set_length = 0.0;  ///< where pressure > 1e-10 max pressure, from the samples
   double total_force = 0.0;         ///< P = ∫_{Γ_C} pressure ds (exact, from the multiplier)
+  std::vector<double> zone_contact_set_length, zone_total_force;  ///< the same per zone of Γ_C
 };
 
 /// P = ∫_{Γ_C} p ds of a multiplier in M^{p_C}(T_{C,H}) (Legendre coefficients): ∫ P_0 = 2 on
 /// [-1, 1], so each segment contributes its c_0 times its length.
-double total_force(const space::MultiplierSpace& multipliers, const Eigen::VectorXd& pressure);
+double total_force(const space::MultiplierSpace& multipliers, const Eigen::VectorXd& pressure, int zone = -1);
 
 /// Samples every interval of the common refinement of T_h|Γ_C and T_{C,H} at `per_interval`
 /// equidistant points including both ends.

@@ -238,7 +238,8 @@ void add_domain_keys(std::vector<SceneKey>& keys) {
 void add_boundary_and_contact_mesh_keys(std::vector<SceneKey>& keys) {
   auto add = [&](SceneKey key) { keys.push_back(std::move(key)); };
   add(expression_key("boundary", "contact", "", &Scene::contact_predicate,
-                     "Γ_C: edges whose midpoint makes this non-zero (one open curve)"));
+                     "Γ_C: edges whose midpoint makes this non-zero (its connected pieces are its zones, open or "
+                     "closed curves)"));
   add(expression_key("boundary", "dirichlet", "", &Scene::dirichlet_predicate,
                      "Γ_D (u = u_D, default 0): edges whose midpoint makes this non-zero; the rest is Γ_N"));
   add(names_key("boundary", "contact_groups", &Scene::contact_groups,
@@ -258,20 +259,23 @@ void add_boundary_and_contact_mesh_keys(std::vector<SceneKey>& keys) {
                      "elastic scenes: u_y = u_D_y on Γ_D and on the `fixed_y` edges (empty: 0)"));
   // [contact_mesh]
   const char* size_group = "contact_mesh size";
-  SceneKey m =
-      integer_key("contact_mesh", "m", 1, 1000000, std::nullopt, &Scene::m, "segments of T_{C,H}, graded by `grading`");
+  SceneKey m = integer_key("contact_mesh", "m", 1, 1000000, std::nullopt, &Scene::m,
+                           "segments of T_{C,H} per zone of Γ_C, graded by `grading`");
   m.group = size_group;
   add(m);
   add({"contact_mesh", "ratio", "number or fraction", "", "positive, e.g. 1, 0.5, \"2/3\"",
-       "h/H: on a uniform T_h|Γ_C m = n · ratio; on a graded one 1/k merges k edges, k splits each edge", size_group,
-       [](const TomlTable& table, Scene& scene) {
+       "h/H in each zone of Γ_C: on a uniform T_h there m = n · ratio; on a graded one 1/k merges k edges, k "
+       "splits each edge",
+       size_group, [](const TomlTable& table, Scene& scene) {
          if (table.has("ratio"))
            scene.ratio =
                parse_ratio(table.string_list("ratio").front(), table.origin("ratio"), table.qualified("ratio"));
        }});
   add(numbers_key(
       "contact_mesh", "breakpoints", "positive arc lengths (numbers), strictly increasing, the last the length of Γ_C",
-      &Scene::breakpoints, "the interior and last breakpoints of T_{C,H} by arc length",
+      &Scene::breakpoints,
+      "the interior and last breakpoints of T_{C,H} by arc length (the zones of Γ_C one after the other; their ends "
+      "are added)",
       [](double v) { return v > 0.0; }, size_group));
   add(number_key("contact_mesh", "grading", 1e-3, 1.0, 1.0, &Scene::grading,
                  "with `m`: each segment this times the previous one (1: uniform)"));

@@ -191,13 +191,13 @@ std::vector<int> scene_segment_degrees(const Scene& scene, const mesh::ContactBo
 
 namespace {
 
-/// Indices k of the trace vertices s_k (1 ≤ k ≤ n, n always last) that are grading points, or at
-/// which Γ_C meets one of the scene's grading lines x = c or y = c at an isolated vertex: the
-/// singular points the mesh is graded towards. A line Γ_C runs along (grading towards Γ_C
-/// itself) marks none of its vertices.
-std::vector<int> grading_nodes_on_contact(const Scene& scene, const mesh::ContactBoundary& contact) {
+/// Indices k of the trace vertices s_k (first < k ≤ last, last always included) of one zone that
+/// are grading points, or at which Γ_C meets one of the scene's grading lines x = c or y = c at an
+/// isolated vertex: the singular points the mesh is graded towards. A line Γ_C runs along (grading
+/// towards Γ_C itself) marks none of its vertices.
+std::vector<int> grading_nodes_on_contact(const Scene& scene, const mesh::ContactBoundary& contact, int first,
+                                          int last) {
   const auto s = contact.breakpoints();
-  const int n = static_cast<int>(s.size()) - 1;
   const double tolerance = 1e-12 * contact.length();
   auto on_a_line = [&](int k, bool along_x) {
     const auto point = contact.point_at(s[k]);
@@ -217,75 +217,107 @@ std::vector<int> grading_nodes_on_contact(const Scene& scene, const mesh::Contac
     return false;
   };
   std::vector<int> nodes;
-  for (int k = 1; k < n; ++k)
+  for (int k = first + 1; k < last; ++k)
     if (a_grading_point(k) || meets_a_line(k)) nodes.push_back(k);
-  nodes.push_back(n);
+  nodes.push_back(last);
   return nodes;
 }
 
-}  // namespace
-
-mesh::BoundaryMesh build_scene_boundary_mesh(const Scene& scene, const mesh::ContactBoundary& contact) {
-  const int split = 1 << scene.refinements;  // segments per segment of the scene's own T_{C,H}
-  if (!scene.breakpoints.empty()) {
-    auto given = scene.breakpoints;
-    if (std::abs(given.back() - contact.length()) > 1e-10 * contact.length())
-      throw_bad_input(scene.file, "contact_mesh.breakpoints", fmt::format("last = {}", given.back()),
-                      fmt::format("must run from 0 to the length of Γ_C, {}", contact.length()));
-    given.back() = contact.length();
-    given.insert(given.begin(), 0.0);
-    std::vector<double> nodes{0.0};
-    for (std::size_t k = 0; k + 1 < given.size(); ++k)
-      for (int i = 1; i <= split; ++i) nodes.push_back(given[k] + (given[k + 1] - given[k]) * i / split);
-    nodes.back() = contact.length();
-    return mesh::BoundaryMesh(nodes, scene.file + ": key 'contact_mesh.breakpoints'");
-  }
-  if (!scene.ratio) return mesh::BoundaryMesh::graded(contact.length(), scene.m * split, scene.grading);
-  // ratio = h/H. On a uniform T_h|Γ_C: m = n · ratio equal segments. On a graded one, T_{C,H}
-  // follows T_h|Γ_C: ratio 1/k merges k neighbouring edges (the last segment also takes the
-  // n mod k left over), ratio k splits every edge in k.
+/// The breakpoints of T_{C,H} after the start of `zone` (its end last) for a ratio h/H: on a
+/// uniform T_h|zone m = n · ratio equal segments; on a graded one T_{C,H} follows T_h: ratio 1/k
+/// merges k neighbouring edges (the last segment also takes the n mod k left over), ratio k splits
+/// every edge in k.
+std::vector<double> zone_nodes_by_ratio(const Scene& scene, const mesh::ContactBoundary& contact,
+                                        const mesh::ContactZone& zone) {
   const auto edges = contact.breakpoints();
-  const int n = static_cast<int>(edges.size()) - 1;
-  const double ratio = scene.ratio->value;
+  const int first = zone.first_edge, n = zone.end_edge - zone.first_edge;
+  const double ratio = scene.ratio->value, length = zone.length();
   const std::string ratio_where = scene.where("contact_mesh.ratio");
   bool uniform = true;
-  for (int e = 0; e < n; ++e)
-    uniform = uniform && std::abs(edges[e + 1] - edges[e] - contact.length() / n) < 1e-9 * contact.length() / n;
+  for (int e = first; e < zone.end_edge; ++e)
+    uniform = uniform && std::abs(edges[e + 1] - edges[e] - length / n) < 1e-9 * length / n;
+  std::vector<double> nodes;
   if (uniform) {
     const double exact = n * ratio;
     const int m = static_cast<int>(std::lround(exact));
     if (m < 1 || std::abs(exact - m) > 1e-9 * exact)
       throw_bad_input(
           ratio_where, "contact_mesh.ratio", scene.ratio->text,
-          fmt::format("Γ_C has {} edges of T_h; {} · ratio = {} must be a whole number of segments", n, n, exact));
-    return mesh::BoundaryMesh::graded(contact.length(), m, scene.grading);
+          fmt::format("a zone of Γ_C has {} edges of T_h; {} · ratio = {} must be a whole number of segments", n, n,
+                      exact));
+    const auto graded = mesh::BoundaryMesh::graded(length, m, scene.grading).nodes();
+    for (std::size_t k = 1; k < graded.size(); ++k) nodes.push_back(zone.s_begin + graded[k]);
+    return nodes;
   }
   const long merge = std::lround(1.0 / ratio), divide = std::lround(ratio);
-  std::vector<double> nodes{0.0};
   if (merge >= 1 && std::abs(merge * ratio - 1.0) < 1e-9 && n >= merge) {
     // Groups of k edges within each run between grading nodes, so that the singular points the
     // mesh is graded towards stay breakpoints of T_{C,H} (a segment straddling the end of a
     // contact set cannot represent λ's square-root onset); a run's last segment also takes the
     // edges left over, a run shorter than k is one segment.
-    const auto runs = grading_nodes_on_contact(scene, contact);
-    int run_begin = 0;
-    for (int run_end : runs) {
-      const int length = run_end - run_begin, groups = std::max(1, length / static_cast<int>(merge));
+    int run_begin = first;
+    for (int run_end : grading_nodes_on_contact(scene, contact, first, zone.end_edge)) {
+      const int run = run_end - run_begin, groups = std::max(1, run / static_cast<int>(merge));
       for (int g = 1; g < groups; ++g) nodes.push_back(edges[run_begin + g * static_cast<int>(merge)]);
       nodes.push_back(edges[run_end]);
       run_begin = run_end;
     }
   } else if (divide >= 1 && std::abs(ratio - static_cast<double>(divide)) < 1e-9) {
-    for (int e = 0; e < n; ++e)
+    for (int e = first; e < zone.end_edge; ++e)
       for (long i = 1; i <= divide; ++i) nodes.push_back(edges[e] + (edges[e + 1] - edges[e]) * i / divide);
   } else {
     throw_bad_input(
         ratio_where, "contact_mesh.ratio", scene.ratio->text,
-        fmt::format("T_h is not uniform on Γ_C ({} edges): the ratio must be 1/k with k <= {}, or a whole number", n,
-                    n));
+        fmt::format("T_h is not uniform on a zone of Γ_C ({} edges): the ratio must be 1/k with k <= {}, or a whole "
+                    "number",
+                    n, n));
   }
+  return nodes;
+}
+
+/// The scene's explicit breakpoints, with every zone's end added (a segment cannot span two zones).
+std::vector<double> given_breakpoints(const Scene& scene, const mesh::ContactBoundary& contact) {
+  auto given = scene.breakpoints;
+  if (std::abs(given.back() - contact.length()) > 1e-10 * contact.length())
+    throw_bad_input(scene.file, "contact_mesh.breakpoints", fmt::format("last = {}", given.back()),
+                    fmt::format("must run from 0 to the length of Γ_C, {}", contact.length()));
+  given.back() = contact.length();
+  given.insert(given.begin(), 0.0);
+  std::vector<double> zone_ends{0.0};
+  for (const auto& zone : contact.zones()) zone_ends.push_back(zone.s_end);
+  return mesh::common_refinement(given, zone_ends);
+}
+
+}  // namespace
+
+mesh::BoundaryMesh build_scene_boundary_mesh(const Scene& scene, const mesh::ContactBoundary& contact) {
+  int split = 1 << scene.refinements;  // segments per given segment after the scene's refinements
+  std::vector<double> coarse{0.0};
+  std::string origin;
+  if (!scene.breakpoints.empty()) {
+    coarse = given_breakpoints(scene, contact);
+    origin = scene.file + ": key 'contact_mesh.breakpoints'";
+  } else {
+    for (const auto& zone : contact.zones()) {
+      if (scene.ratio) {
+        for (double s : zone_nodes_by_ratio(scene, contact, zone)) coarse.push_back(s);
+        continue;
+      }
+      // m segments per zone (m · 2^refinements after refinements), graded towards its ends.
+      const auto graded = mesh::BoundaryMesh::graded(zone.length(), scene.m * split, scene.grading).nodes();
+      for (std::size_t k = 1; k < graded.size(); ++k) coarse.push_back(zone.s_begin + graded[k]);
+    }
+    split = 1;  // the ratio follows the refined T_h; m was multiplied above
+    origin = scene.ratio ? scene.where("contact_mesh.ratio") + ": key 'contact_mesh.ratio'"
+                         : scene.file + ": key 'contact_mesh.m'";
+  }
+  std::vector<double> nodes{0.0};
+  for (std::size_t k = 0; k + 1 < coarse.size(); ++k)
+    for (int i = 1; i <= split; ++i) nodes.push_back(coarse[k] + (coarse[k + 1] - coarse[k]) * i / split);
   nodes.back() = contact.length();
-  return mesh::BoundaryMesh(nodes, ratio_where + ": key 'contact_mesh.ratio'");
+  mesh::BoundaryMesh boundary_mesh(nodes, origin);
+  boundary_mesh.set_zones(contact.boundary_zones(), origin);
+  return boundary_mesh;
 }
 
 }  // namespace hpcontact::scene
