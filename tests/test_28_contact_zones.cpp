@@ -129,8 +129,22 @@ TEST(ContactZones, TwoZonesAreTwiceTheHalfProblem) {
   EXPECT_NEAR(zones[0]["contact_set_length"].get<double>(), zones[1]["contact_set_length"].get<double>(), 1e-12);
   EXPECT_NEAR(zones[0]["contact_set_length"].get<double>(), half["signorini"]["contact_set_length"].get<double>(),
               1e-12);
-  // The multipliers of the two zones couple through Ω: α of the whole is not the half's.
-  EXPECT_GT(whole["infsup"]["alpha"].get<double>(), 0.1);
+  // α of each zone's multipliers alone: equal by symmetry, and at least α of the whole (a
+  // smaller multiplier space); the zones couple through Ω, so the whole's α is below both.
+  const double alpha = whole["infsup"]["alpha"].get<double>();
+  const auto& zone_alpha = whole["infsup"]["zone_alpha"];
+  ASSERT_EQ(zone_alpha.size(), 2u);
+  EXPECT_NEAR(zone_alpha[0].get<double>(), zone_alpha[1].get<double>(), 1e-10);
+  EXPECT_GT(alpha, 0.1);
+  EXPECT_LT(alpha, zone_alpha[0].get<double>() - 1e-4);
+  EXPECT_FALSE(half["infsup"].contains("zone_alpha"));
+  // Independently: the same body with only the bottom edge as Γ_C (the top free) has the bottom
+  // zone's α, since the primal space and the bottom multipliers are the same.
+  const auto bottom = run("two_zones.toml",
+                          {{"boundary.contact", std::string("abs(y + 1) < 1e-9"), "test"},
+                           {"run.effects", std::vector<std::string>{"infsup"}, "test"}},
+                          "bottom");
+  EXPECT_NEAR(bottom["infsup"]["alpha"].get<double>(), zone_alpha[0].get<double>(), 1e-9);
   // The boundary samples carry their zone.
   std::ifstream in(std::filesystem::temp_directory_path() / "hpcontact_zones_two" / "boundary_signorini.csv");
   std::string line;

@@ -88,6 +88,8 @@ int run_infsup(const InfSupOptions& o) {
   const double ratio = static_cast<double>(m) / n;
   const std::string problem = infsup::to_string(setup.problem), norm = infsup::to_string(setup.norm);
   fmt::print("alpha = {:.17g}\n", result.alpha);
+  for (std::size_t z = 0; z < result.zone_alpha.size(); ++z)
+    fmt::print("# zone {} alone: alpha = {:.17g}\n", z, result.zone_alpha[z]);
   fmt::print("# alpha_error {:.2e} (reference level {}{})\n", result.alpha_error, result.reference_level,
              result.alpha_converged
                  ? ""

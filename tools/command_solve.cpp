@@ -37,6 +37,15 @@ std::string zone_lengths(const nlohmann::json& result) {
   return fmt::format(" (zones {})", fmt::join(lengths, " + "));
 }
 
+// ", zones alone 0.4800, 0.4800": α of each zone's multipliers when Γ_C has several zones.
+std::string zone_alphas(const nlohmann::json& infsup) {
+  if (!infsup.contains("zone_alpha")) return "";
+  std::vector<std::string> alphas;
+  for (const auto& alpha : infsup["zone_alpha"])
+    alphas.push_back(alpha.is_number() ? fmt::format("{:.10g}", alpha.get<double>()) : "-");
+  return fmt::format(", zones alone {}", fmt::join(alphas, ", "));
+}
+
 int run_solve(const SolveOptions& o) {
   const std::string where = "hpcontact solve";
   // 1. The scene with the options as overrides, each checked like the scene's own key.
@@ -92,8 +101,9 @@ int run_solve(const SolveOptions& o) {
     fmt::print("\n");
   }
   if (summary.contains("infsup"))
-    fmt::print("infsup: alpha = {:.10g} ({})\n", summary["infsup"]["alpha"].get<double>(),
-               summary["infsup"]["lambda_unique"].get<bool>() ? "lambda unique" : "singular: lambda not unique");
+    fmt::print("infsup: alpha = {:.10g} ({}){}\n", summary["infsup"]["alpha"].get<double>(),
+               summary["infsup"]["lambda_unique"].get<bool>() ? "lambda unique" : "singular: lambda not unique",
+               zone_alphas(summary["infsup"]));
   fmt::print("# p {} pC {} m {} ndofs {}: wrote {} in {:.2f} s on {} rank{}\n", summary["p"].get<std::string>(),
              summary["pC"].get<std::string>(), summary["m"].get<int>(), summary["ndofs"].get<int>(), o.out,
              summary["seconds_total"].get<double>(), ranks, ranks > 1 ? "s" : "");

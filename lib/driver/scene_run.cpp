@@ -178,6 +178,7 @@ nlohmann::json infsup_effect(const scene::Scene& scene, const SceneDiscretizatio
                    {"residual", alpha.residual},
                    {"seconds", alpha.seconds}};
   if (setup.elastic) j["primal_norm"] = operators::to_string(setup.primal_norm);
+  if (!alpha.zone_alpha.empty()) j["zone_alpha"] = alpha.zone_alpha;
   return j;
 }
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 
 #include "core/error.hpp"
@@ -29,6 +30,37 @@ std::unique_ptr<norms::GramLadder> own_ladder(const InfSupSetup& setup, const sp
       norms::extension_gram_ladder(*setup.mesh, setup.cell_degrees, multipliers));
 }
 
+// α of each zone's multipliers alone: the pencil (S_G, G) restricted to the active dofs whose
+// segment lies in the zone (every copy of the multiplier, for the elastic pairings).
+std::vector<double> zone_alphas(const InfSupOperators& operators, const space::MultiplierSpace& multipliers,
+                                const Eigen::MatrixXd& gram) {
+  const auto& boundary = multipliers.boundary_mesh();
+  const int n_zones = static_cast<int>(boundary.zones().size());
+  if (n_zones < 2) return {};
+  std::vector<int> zone_of_dof(multipliers.n_dofs());
+  for (int k = 0; k < multipliers.n_segments(); ++k)
+    for (int j = 0; j <= multipliers.segment_degree(k); ++j)
+      zone_of_dof[multipliers.first_dof(k) + j] = boundary.zone_of_segment(k);
+  std::vector<double> alphas;
+  for (int z = 0; z < n_zones; ++z) {
+    std::vector<int> rows;
+    for (std::size_t i = 0; i < operators.active_dofs.size(); ++i)
+      if (zone_of_dof[operators.active_dofs[i] % multipliers.n_dofs()] == z) rows.push_back(static_cast<int>(i));
+    if (rows.empty()) {
+      alphas.push_back(std::numeric_limits<double>::quiet_NaN());  // no active multiplier (s ≡ 0 there)
+      continue;
+    }
+    const auto sub = [&](const Eigen::MatrixXd& m) {
+      Eigen::MatrixXd out(rows.size(), rows.size());
+      for (std::size_t a = 0; a < rows.size(); ++a)
+        for (std::size_t b = 0; b < rows.size(); ++b) out(a, b) = m(rows[a], rows[b]);
+      return out;
+    };
+    alphas.push_back(std::sqrt(std::max(smallest_eigenpair_dense(sub(operators.s_g), sub(gram)).eigenvalue, 0.0)));
+  }
+  return alphas;
+}
+
 }  // namespace
 
 InfSupResult analyse_infsup(const InfSupSetup& setup, EigenBackend backend) {
@@ -42,8 +74,9 @@ InfSupResult analyse_infsup(const InfSupSetup& setup, EigenBackend backend) {
   const double seconds_gram_before = grams.seconds();
   InfSupResult result;
   SmallestEigenpair pair;
+  Eigen::MatrixXd fine;
   for (int level = 1;; ++level) {
-    const Eigen::MatrixXd fine = restrict(block_copies(grams.at(level), operators.gram_copies), operators.active_dofs);
+    fine = restrict(block_copies(grams.at(level), operators.gram_copies), operators.active_dofs);
     Stopwatch eigen_clock;
     pair = backend == EigenBackend::slepc ? smallest_eigenpair_slepc(operators.s_g, fine)
                                           : smallest_eigenpair_dense(operators.s_g, fine);
@@ -59,6 +92,7 @@ InfSupResult analyse_infsup(const InfSupSetup& setup, EigenBackend backend) {
     result.alpha_converged = grams.geometric() && result.alpha_error <= setup.alpha_tolerance * result.alpha;
     if (result.alpha_converged || !grams.geometric() || level == grams.top_level()) break;
   }
+  result.zone_alpha = zone_alphas(operators, multipliers, fine);
   result.lambda_max = pair.largest_eigenvalue;
   result.singular = result.lambda_min <= kRoundOffZero * result.lambda_max;
   result.mode = Eigen::VectorXd::Zero(operators.n_multiplier_dofs);

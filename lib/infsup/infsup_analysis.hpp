@@ -13,6 +13,7 @@
 
 #include <Eigen/Core>
 #include <string>
+#include <vector>
 
 #include "infsup/generalized_eigen.hpp"
 #include "infsup/infsup_operators.hpp"
@@ -42,6 +43,9 @@ struct InfSupResult {
   double seconds_assembly = 0.0, seconds_primal = 0.0, seconds_gram = 0.0, seconds_eigen = 0.0;  ///< its parts
   std::string method;                                                                            ///< eigen solver used
   double residual = 0.0;  ///< relative eigen residual
+  /// With several zones of Γ_C: α of each zone's multipliers alone (principal submatrices of S_G
+  /// and G on the final reference, dense), each ≥ α; empty for one zone.
+  std::vector<double> zone_alpha;
 };
 
 InfSupResult analyse_infsup(const InfSupSetup& setup, EigenBackend backend);
