@@ -23,7 +23,8 @@ void add_benchmark_command(CLI::App& app, CommandAction& action) {
   command->callback([&action, file, out_dir] {
     action = [file, out_dir] {
       // 1. Read and check the benchmark, and the output folder, before timing anything.
-      const auto benchmark = studies::read_performance_benchmark(*file);
+      auto benchmark = studies::read_performance_benchmark(*file);
+      benchmark.executable = std::filesystem::read_symlink("/proc/self/exe").string();
       io::check_output_directory(*out_dir);
       // 2. Run, one line per row on stderr (the large levels take minutes).
       fmt::print(stderr, "{:>10} {:>5} {:>9} {:>9} {:>9} {:>7} {:>8}\n", "kind", "n", "ndofs", "baseline", "seconds",

@@ -66,11 +66,14 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : 2;
   }
 
-  // 4. Run with PETSc/SLEPc initialized once for the whole process; a failure is reported while
-  // MPI is still up (finalizing first could leave the message unprinted).
+  // 4. Run with PETSc/SLEPc initialized once for the whole process: at once under an MPI launcher
+  // or with PETSc options, else when a PETSc/SLEPc path first runs (a solve needing none starts
+  // as fast as --version). A failure is reported while MPI is still up (finalizing first could
+  // leave the message unprinted).
   std::unique_ptr<PetscSession> session;
   try {
-    session = std::make_unique<PetscSession>(command_line.petsc);
+    const bool eager = launched_by_mpi_launcher() || command_line.petsc.size() > 1;
+    session = std::make_unique<PetscSession>(command_line.petsc, eager);
   } catch (const std::exception& error) {
     return report(error);
   }

@@ -5,6 +5,8 @@
 #include <slepcsys.h>
 
 #include <algorithm>
+#include <cstdlib>
+#include <mutex>
 #include <regex>
 #include <stdexcept>
 
@@ -42,15 +44,50 @@ SplitCommandLine split_petsc_options(int argc, const char* const* argv) {
   return split;
 }
 
-PetscSession::PetscSession(const std::vector<std::string>& petsc_arguments) : storage_(petsc_arguments) {
+namespace {
+
+std::mutex session_mutex;
+PetscSession* lazy_session = nullptr;  // the process's session, until it is destroyed
+
+}  // namespace
+
+PetscSession::PetscSession(const std::vector<std::string>& petsc_arguments, bool eager) : storage_(petsc_arguments) {
   for (auto& argument : storage_) argv_.push_back(argument.data());
   argv_.push_back(nullptr);
+  const std::lock_guard lock(session_mutex);
+  lazy_session = this;
+  if (eager) initialize();
+}
+
+void PetscSession::initialize() {
+  if (initialized_) return;
   int argc = static_cast<int>(storage_.size());
   char** argv = argv_.data();
   if (SlepcInitialize(&argc, &argv, nullptr, nullptr) != 0) throw std::runtime_error("SlepcInitialize failed");
+  initialized_ = true;
 }
 
-PetscSession::~PetscSession() { SlepcFinalize(); }
+PetscSession::~PetscSession() {
+  const std::lock_guard lock(session_mutex);
+  lazy_session = nullptr;
+  if (initialized_) SlepcFinalize();
+}
+
+bool ensure_petsc_initialized() {
+  PetscBool initialized = PETSC_FALSE;
+  SlepcInitialized(&initialized);
+  if (initialized == PETSC_TRUE) return true;
+  const std::lock_guard lock(session_mutex);
+  if (!lazy_session) return false;
+  lazy_session->initialize();
+  return true;
+}
+
+bool launched_by_mpi_launcher() {
+  for (const char* variable : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE", "MPI_LOCALNRANKS"})
+    if (std::getenv(variable)) return true;
+  return false;
+}
 
 std::pair<int, int> mpi_rank_and_size() {
   int initialized = 0, finalized = 0;

@@ -20,19 +20,32 @@ struct SplitCommandLine {
 
 SplitCommandLine split_petsc_options(int argc, const char* const* argv);
 
-/// RAII: SlepcInitialize on construction (which initializes PETSc and MPI), SlepcFinalize on
-/// destruction. Create exactly one, in main().
+/// RAII: SlepcInitialize (which initializes PETSc and MPI) on construction, or, when not `eager`,
+/// on the first ensure_petsc_initialized() of the process; SlepcFinalize on destruction if it was
+/// initialized. Create exactly one, in main(). Starting MPI costs a singleton process about 0.3 s
+/// (OpenMPI launches its daemon), which a run that needs no PETSc/SLEPc path should not pay.
 class PetscSession {
  public:
-  explicit PetscSession(const std::vector<std::string>& petsc_arguments);
+  explicit PetscSession(const std::vector<std::string>& petsc_arguments, bool eager = true);
   ~PetscSession();
   PetscSession(const PetscSession&) = delete;
   PetscSession& operator=(const PetscSession&) = delete;
+  /// SlepcInitialize with the stored arguments, once. @throws std::runtime_error if it fails.
+  void initialize();
 
  private:
   std::vector<std::string> storage_;
   std::vector<char*> argv_;
+  bool initialized_ = false;
 };
+
+/// Makes SLEPc usable: true if it already is (initialized by anyone), else initializes it through
+/// the process's PetscSession; false if there is none (a library user must initialize SLEPc).
+bool ensure_petsc_initialized();
+
+/// Whether an MPI launcher started this process (mpirun/mpiexec of OpenMPI or MPICH, srun with
+/// PMI/PMIx): then MPI must start at once, since the other ranks wait for it.
+bool launched_by_mpi_launcher();
 
 /// (rank, size) in MPI_COMM_WORLD; (0, 1) when MPI is not initialized (unit tests, libraries).
 std::pair<int, int> mpi_rank_and_size();

@@ -20,6 +20,7 @@
 #include "core/error.hpp"
 #include "core/petsc_check.hpp"
 #include "core/petsc_handle.hpp"
+#include "core/petsc_session.hpp"
 
 namespace hpcontact::infsup {
 namespace {
@@ -348,9 +349,7 @@ SmallestEigenpair smallest_eigenpair_dense(const Eigen::MatrixXd& S, const Eigen
 SmallestEigenpair smallest_eigenpair_slepc(const Eigen::MatrixXd& S, const Eigen::MatrixXd& G,
                                            const std::string& options_prefix) {
   const std::string where = "smallest_eigenpair_slepc";
-  PetscBool initialized = PETSC_FALSE;
-  HPC_PETSC_CALL(SlepcInitialized(&initialized));
-  if (initialized != PETSC_TRUE)
+  if (!ensure_petsc_initialized())
     throw std::logic_error(where + ": SLEPc is not initialized (create a PetscSession first)");
   const Pencil pencil = checked_pencil(S, G, where);
   const Eigen::Index n = pencil.s.rows();

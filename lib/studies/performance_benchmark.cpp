@@ -24,6 +24,7 @@
 #include "operators/primal_operators.hpp"
 #include "scene/ratio.hpp"
 #include "scene/scene_reader.hpp"
+#include "studies/startup_benchmark.hpp"
 
 namespace hpcontact::studies {
 
@@ -42,12 +43,13 @@ PerformanceBenchmark read_performance_benchmark(const std::string& path) {
       throw_bad_input(path, "benchmark.n", std::to_string(n), "even, with n · ratio a whole number >= 1");
     out.levels.push_back(static_cast<int>(n));
   }
-  const std::vector<std::string> allowed{"signorini", "friction", "friction_s", "alpha", "assembled", "elastic"};
+  const std::vector<std::string> allowed{"signorini", "friction", "friction_s", "alpha",
+                                         "assembled", "elastic",  "startup"};
   out.kinds = table.string_list("kinds", allowed);
   for (const auto& kind : out.kinds)
     if (std::find(allowed.begin(), allowed.end(), kind) == allowed.end())
       throw_bad_input(path, "benchmark.kinds", kind,
-                      "any of signorini, friction, friction_s, alpha, assembled, elastic");
+                      "any of signorini, friction, friction_s, alpha, assembled, elastic, startup");
   table.reject_unknown_keys();
   root.reject_unknown_keys();
   return out;
@@ -192,6 +194,11 @@ std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& 
   auto has = [&](const char* kind) {
     return std::find(benchmark.kinds.begin(), benchmark.kinds.end(), kind) != benchmark.kinds.end();
   };
+  if (has("startup")) {
+    if (benchmark.executable.empty())
+      throw InputError(benchmark.file + ": kind startup needs the hpcontact executable");
+    add(startup_row(benchmark.executable));
+  }
   for (int n : benchmark.levels) {
     // The built-in §7 scene at this level: n × n cells, T_{C,H} with the benchmark's h/H.
     const std::string where = benchmark.file + ": key 'benchmark.n' = " + std::to_string(n);
@@ -223,7 +230,7 @@ std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& 
     add(linear_k);
 
     for (const auto& kind : benchmark.kinds)
-      if (kind != "alpha" && kind != "assembled" && kind != "elastic")
+      if (kind != "alpha" && kind != "assembled" && kind != "elastic" && kind != "startup")
         add(contact_row(kind, scene, *discretization, base, linear_k));
     BenchmarkRow linear_ag = base;
     linear_ag.kind = "linear_AG";
