@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # One-command set-up and run on Debian 12: installs the missing Debian packages (apt-get, through
 # sudo when not root), configures and builds with CMake (Release, build/), then runs
-#   study  the main job: the studies (convergence, stability, the paper's §7 figures, work-precision),
-#          writing CSV and PNG into results/ (and the README figures)
+#   study    the main job: the studies (convergence, stability, the paper's §7 figures, work-precision,
+#            curved boundaries, elasticity), writing CSV and PNG into results/ only
+#   figures  the same, then copies the pictures and tables the docs show from results/ into
+#            studies/ (the committed ones; for developers)
 #   test   a formatting check (.clang-format), the GoogleTest suite through CTest; then the same
 #          suite built with clang under
 #          AddressSanitizer + UndefinedBehaviorSanitizer (build-sanitize/), and the scene fuzzer
@@ -10,10 +12,10 @@
 # Idempotent: a second call installs nothing and rebuilds only what changed.
 set -euo pipefail
 
-usage() { echo "usage: bash cmake/quickstart.sh study|test" >&2; exit 2; }
+usage() { echo "usage: bash cmake/quickstart.sh study|figures|test" >&2; exit 2; }
 [ $# -eq 1 ] || usage
 mode=$1
-case "$mode" in study|test) ;; *) usage ;; esac
+case "$mode" in study|figures|test) ;; *) usage ;; esac
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 cd "$root"
@@ -75,15 +77,17 @@ for candidate in /usr/bin/python3 python3; do
 done
 [ -n "$python" ] || { echo "quickstart: no python3 with matplotlib (install python3-matplotlib)" >&2; exit 1; }
 
+# The main job writes only under results/; `figures` also refreshes the committed copies.
+publish() { if [ "$mode" = figures ]; then cp "$1" "$2"; fi; }
 mkdir -p results
 echo "== convergence study: studies/convergence/study.toml -> results/convergence" >&2
 build/bin/hpcontact convergence studies/convergence/study.toml --out results/convergence
 "$python" plots/plot_convergence.py results/convergence
-cp results/convergence/convergence.png studies/convergence/convergence.png
+publish results/convergence/convergence.png studies/convergence/convergence.png
 echo "== convergence on a curved domain: studies/curved/convergence.toml -> results/curved" >&2
 build/bin/hpcontact convergence studies/curved/convergence.toml --out results/curved
 "$python" plots/plot_curved.py results/curved
-cp results/curved/curved.png studies/curved/curved.png
+publish results/curved/curved.png studies/curved/curved.png
 
 echo "== stability sweep: studies/stability/quick.toml -> results/stability" >&2
 build/bin/hpcontact sweep studies/stability/quick.toml --out results/stability --restart
@@ -95,22 +99,22 @@ for pairing in "1 0 1" "1 0 1/2" "2 1 1" "3 2 1" "3 2 1/2" "3 1 1"; do
 done
 "$python" plots/plot_stability.py results/stability
 for picture in stable_map alpha_vs_h alpha_vs_pi modes; do
-  cp "results/stability/$picture.png" "studies/stability/$picture.png"
+  publish "results/stability/$picture.png" "studies/stability/$picture.png"
 done
 echo "== full stability grid: studies/stability/study.toml -> results/stability_full" >&2
 build/bin/hpcontact sweep studies/stability/study.toml --out results/stability_full --restart
-cp results/stability_full/verdicts.csv studies/stability/verdicts_full.csv
+publish results/stability_full/verdicts.csv studies/stability/verdicts_full.csv
 echo "== stability on geometric meshes: studies/stability/graded*.toml -> results/stability_graded*" >&2
 for study in graded graded_anisotropic; do
   build/bin/hpcontact sweep "studies/stability/$study.toml" --out "results/stability_$study" --restart
   "$python" plots/plot_stability.py "results/stability_$study"
-  cp "results/stability_$study/alpha_vs_h.png" "studies/stability/${study}_alpha_vs_h.png"
+  publish "results/stability_$study/alpha_vs_h.png" "studies/stability/${study}_alpha_vs_h.png"
 done
 echo "== contact problems of Figures 1, 4, 6: studies/paper/*.toml -> results/paper" >&2
 for figure in figure1_signorini figure4_friction figure6_friction_s; do
   build/bin/hpcontact solve "studies/paper/$figure.toml" --out "results/paper/$figure"
   "$python" plots/plot_paper.py "results/paper/$figure"
-  cp "results/paper/$figure/figure_${figure#*_}.png" "studies/paper/$figure.png"
+  publish "results/paper/$figure/figure_${figure#*_}.png" "studies/paper/$figure.png"
 done
 echo "== multiplier panels of Figures 2, 3, 5, 7 -> results/paper/panels" >&2
 for problem in signorini friction friction_s; do
@@ -127,21 +131,21 @@ for problem in signorini friction friction_s; do
 done
 "$python" plots/plot_panels.py results/paper/panels
 for problem in signorini friction friction_s; do
-  cp "results/paper/panels/panels_$problem.png" "studies/paper/panels_$problem.png"
+  publish "results/paper/panels/panels_$problem.png" "studies/paper/panels_$problem.png"
 done
 echo "== work-precision study: studies/work_precision/study.toml -> results/work_precision" >&2
 build/bin/hpcontact work-precision studies/work_precision/study.toml --out results/work_precision
 "$python" plots/plot_work_precision.py results/work_precision
-cp results/work_precision/work_precision.png studies/work_precision/work_precision.png
-cp results/work_precision/cheapest.csv studies/work_precision/cheapest.csv
-cp results/work_precision/reference.csv studies/work_precision/reference.csv
+publish results/work_precision/work_precision.png studies/work_precision/work_precision.png
+publish results/work_precision/cheapest.csv studies/work_precision/cheapest.csv
+publish results/work_precision/reference.csv studies/work_precision/reference.csv
 echo "== Hertz validation of the elastic contact solver: studies/elasticity/hertz_study.toml -> results/hertz" >&2
 build/bin/hpcontact hertz studies/elasticity/hertz_study.toml --out results/hertz
 "$python" plots/plot_hertz.py results/hertz
-cp results/hertz/hertz.png studies/elasticity/hertz.png
+publish results/hertz/hertz.png studies/elasticity/hertz.png
 echo "== elastic stability sweep: studies/elasticity/stability.toml -> results/elastic_stability" >&2
 build/bin/hpcontact sweep studies/elasticity/stability.toml --out results/elastic_stability --restart
 "$python" plots/plot_stability.py results/elastic_stability
-cp results/elastic_stability/stable_map.png studies/elasticity/stable_map.png
-cp results/elastic_stability/stable_map_friction_interp.png studies/elasticity/stable_map_friction.png
+publish results/elastic_stability/stable_map.png studies/elasticity/stable_map.png
+publish results/elastic_stability/stable_map_friction_interp.png studies/elasticity/stable_map_friction.png
 echo "quickstart: done; CSV and PNG in results/" >&2

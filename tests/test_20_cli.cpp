@@ -527,14 +527,17 @@ TEST(Cli, ConvergenceEffectWritesOneRowPerLevelAndProblem) {
   std::ifstream csv(dir / "out" / "convergence.csv");
   std::string header, line;
   std::getline(csv, header);
-  EXPECT_EQ(header, "problem,level,p,pC,n,m,ndofs,nmult,energy,error_energy,error_lambda,seconds");
+  EXPECT_EQ(header, "problem,level,p,pC,n,m,ndofs,nmult,energy,error_energy,error_lambda,seconds,p_rule,pC_rule");
   std::map<std::string, std::vector<double>> errors;
   while (std::getline(csv, line)) {
     std::vector<std::string> cells;
     std::stringstream stream(line);
     for (std::string cell; std::getline(stream, cell, ',');) cells.push_back(cell);
-    ASSERT_EQ(cells.size(), 12u) << line;
+    ASSERT_EQ(cells.size(), 14u) << line;
     errors[cells[0]].push_back(std::stod(cells[9]));
+    // p and pC are numbers whatever the scene writes; p_rule, pC_rule as written.
+    EXPECT_EQ(std::to_string(std::stoi(cells[2])), cells[2]) << line;
+    EXPECT_EQ(std::to_string(std::stoi(cells[3])), cells[3]) << line;
   }
   ASSERT_EQ(errors.size(), 2u);
   for (const auto& [problem, e] : errors) {

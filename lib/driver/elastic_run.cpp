@@ -157,13 +157,13 @@ io::CsvTable elastic_convergence(const scene::Scene& scene, const SceneDiscretiz
       const auto& effect = k == 0 ? base[e] : levels[k].effects[e];
       const auto& reference = finest.effects.empty() ? base[e].solution : finest.effects[e].solution;
       table.add_row(
-          {effect.name, static_cast<long long>(k), scene.p.label(), scene.pc.label(),
+          {effect.name, static_cast<long long>(k), largest_degree(d.cell_degrees), largest_degree(d.segment_degrees),
            static_cast<long long>(d.contact->edges().size()), static_cast<long long>(d.boundary_mesh->n_segments()),
            static_cast<long long>(effect.solution.u.size()), static_cast<long long>(effect.solution.lambda.size()),
            effect.solution.energy, std::abs(effect.solution.energy - reference.energy),
            contact::multiplier_l2_distance(*d.multipliers, effect.solution.pressure, *finest.d->multipliers,
                                            reference.pressure),
-           effect.seconds});
+           effect.seconds, scene.p.label(), scene.pc.label()});
     }
   return table;
 }

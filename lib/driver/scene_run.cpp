@@ -118,14 +118,14 @@ void add_convergence_rows(const scene::Scene& scene, const std::vector<ContactEf
       const auto& effect = (*levels[k].effects)[e];
       const auto& reference = (*finest.effects)[e].solution;
       table.add_row(
-          {effect.problem, static_cast<long long>(k), scene.p.label(), scene.pc.label(),
+          {effect.problem, static_cast<long long>(k), largest_degree(d.cell_degrees), largest_degree(d.segment_degrees),
            static_cast<long long>(d.contact->edges().size()), static_cast<long long>(d.boundary_mesh->n_segments()),
            static_cast<long long>(effect.solution.u.size()), static_cast<long long>(effect.solution.lambda.size()),
            effect.solution.energy, std::abs(effect.solution.energy - reference.energy),
            contact::multiplier_l2_distance(*d.multipliers, effect.solution.lambda_legendre,
                                            *finest.discretization->multipliers, reference.lambda_legendre,
                                            multiplier_error_weight(scene, *finest.discretization, effect.kind)),
-           effect.seconds});
+           effect.seconds, scene.p.label(), scene.pc.label()});
     }
 }
 
@@ -182,9 +182,11 @@ nlohmann::json infsup_effect(const scene::Scene& scene, const SceneDiscretizatio
   return j;
 }
 
+long long largest_degree(const std::vector<int>& degrees) { return *std::max_element(degrees.begin(), degrees.end()); }
+
 std::vector<std::string> refinement_columns() {
-  return {"problem",      "level",        "p",      "pC", "n", "m", "ndofs", "nmult", "energy",
-          "error_energy", "error_lambda", "seconds"};
+  return {"problem",      "level",        "p",       "pC",     "n",      "m", "ndofs", "nmult", "energy",
+          "error_energy", "error_lambda", "seconds", "p_rule", "pC_rule"};
 }
 
 nlohmann::json run_scene(const scene::Scene& given_scene, const SceneRunOptions& options) {

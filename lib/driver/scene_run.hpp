@@ -32,7 +32,9 @@ struct SceneRunOptions {
 ///   solution_<problem>.vtu    (output "vtu") u on Ω
 ///   mode.csv                  (output "mode", effect infsup) the eigenvector of α
 ///   convergence.csv           (effect convergence) problem,level,p,pC,n,m,ndofs,nmult,energy,
-///                              error_energy,error_lambda,seconds; errors against the finest level
+///                              error_energy,error_lambda,seconds,p_rule,pC_rule; p and pC the
+///                              largest degrees (numbers), p_rule and pC_rule as the scene writes
+///                              them (a number or a rule's text); errors against the finest level
 /// Nothing is written unless every effect succeeded. Returns the summary.
 nlohmann::json run_scene(const scene::Scene& scene, const SceneRunOptions& options);
 
@@ -43,5 +45,8 @@ nlohmann::json infsup_effect(const scene::Scene& scene, const SceneDiscretizatio
 
 /// The columns of convergence.csv and of the work–precision study's rows.
 std::vector<std::string> refinement_columns();
+/// The largest of a level's degrees: the numeric p and pC of a convergence row (a degree rule's
+/// text goes into p_rule, pC_rule).
+long long largest_degree(const std::vector<int>& degrees);
 
 }  // namespace hpcontact::driver
