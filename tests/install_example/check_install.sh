@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# Installs the build tree into a fresh prefix and builds tests/install_example against it, once
+# with find_package(hpcontact) and once with pkg-config; both programs must give the energy that
+# `hpcontact solve` of the installed executable prints for the same scene.
+#   check_install.sh BUILD_DIR EXAMPLE_SOURCE_DIR
+set -euo pipefail
+build=$1 source=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cmake --install "$build" --prefix "$work/prefix" > /dev/null
+
+# 1. CMake package.
+cmake -S "$source" -B "$work/example" -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_BUILD_TYPE=Release > /dev/null
+cmake --build "$work/example" > /dev/null
+by_cmake=$("$work/example/solve_paper_scene" "$work/out_cmake")
+
+# 2. pkg-config.
+export PKG_CONFIG_PATH="$work/prefix/lib/pkgconfig:${PKG_CONFIG_PATH:-}"
+# shellcheck disable=SC2046
+c++ -O1 "$source/solve_paper_scene.cpp" -o "$work/by_pkg_config" $(pkg-config --cflags --libs hpcontact)
+by_pkg_config=$("$work/by_pkg_config" "$work/out_pkg_config")
+
+# 3. The installed executable on the same scene.
+cat > "$work/scene.toml" <<'TOML'
+[domain]
+n_x = 8
+n_y = 8
+[boundary]
+contact = "abs(y + 1) < 1e-9"
+dirichlet = "abs(y - 1) < 1e-9 || (abs(x - 1) < 1e-9 && y > 0)"
+[contact_mesh]
+ratio = 1
+[discretization]
+p = 1
+pC = 0
+[data]
+s = "(1 - x)^2"
+TOML
+by_cli=$("$work/prefix/bin/hpcontact" solve "$work/scene.toml" --effects friction_s --out "$work/out_cli" | grep '^friction_s:' | sed 's/, .*//')
+
+echo "find_package: $by_cmake"
+echo "pkg-config:   $by_pkg_config"
+echo "hpcontact:    $by_cli"
+[ "$by_cmake" = "$by_cli" ] && [ "$by_pkg_config" = "$by_cli" ] && [ -f "$work/out_cmake/summary.json" ] ||
+  { echo "check_install: the programs disagree" >&2; exit 1; }
