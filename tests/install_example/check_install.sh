@@ -20,23 +20,8 @@ export PKG_CONFIG_PATH="$work/prefix/lib/pkgconfig:${PKG_CONFIG_PATH:-}"
 c++ -O1 "$source/solve_paper_scene.cpp" -o "$work/by_pkg_config" $(pkg-config --cflags --libs hpcontact)
 by_pkg_config=$("$work/by_pkg_config" "$work/out_pkg_config")
 
-# 3. The installed executable on the same scene.
-cat > "$work/scene.toml" <<'TOML'
-[domain]
-n_x = 8
-n_y = 8
-[boundary]
-contact = "abs(y + 1) < 1e-9"
-dirichlet = "abs(y - 1) < 1e-9 || (abs(x - 1) < 1e-9 && y > 0)"
-[contact_mesh]
-ratio = 1
-[discretization]
-p = 1
-pC = 0
-[data]
-s = "(1 - x)^2"
-TOML
-by_cli=$("$work/prefix/bin/hpcontact" solve "$work/scene.toml" --effects friction_s --out "$work/out_cli" | grep '^friction_s:' | sed 's/, .*//')
+# 3. The installed executable on the scene the example wrote.
+by_cli=$("$work/prefix/bin/hpcontact" solve "$work/out_cmake/scene.toml" --effects friction_s --out "$work/out_cli" | grep '^friction_s:' | sed 's/, .*//')
 
 echo "find_package: $by_cmake"
 echo "pkg-config:   $by_pkg_config"

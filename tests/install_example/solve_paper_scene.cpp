@@ -1,5 +1,6 @@
 // Uses the installed hpcontact library: the paper's §7 scene with the friction problem (15),
-// solved through the driver as `hpcontact solve` does; prints the energy and writes the outputs.
+// solved through the driver as `hpcontact solve` does; prints the energy and writes the outputs
+// and the scene (OUT_DIR/scene.toml, for `hpcontact solve` to compare).
 //   solve_paper_scene OUT_DIR
 #include <cstdio>
 #include <string>
@@ -24,6 +25,11 @@ int main(int argc, char** argv) {
     options.out = argv[1];
     const auto summary = hpcontact::driver::run_scene(scene, options);
     // 3. Report.
+    std::FILE* file = std::fopen((std::string(argv[1]) + "/scene.toml").c_str(), "w");
+    if (!file || std::fputs(hpcontact::scene::paper_scene_text().c_str(), file) < 0 || std::fclose(file) != 0) {
+      std::fprintf(stderr, "error: cannot write %s/scene.toml\n", argv[1]);
+      return 4;
+    }
     std::printf("friction_s: energy = %.17g\n", summary["friction_s"]["energy"].get<double>());
   } catch (const hpcontact::InputError& error) {
     std::fprintf(stderr, "error: %s\n", error.what());
