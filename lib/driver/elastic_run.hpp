@@ -32,7 +32,7 @@ contact::ElasticContactSetup elastic_setup_of(const scene::Scene& scene, const S
 
 /// Runs the elastic effects of `scene` and writes into `options.out`:
 ///   summary.json              (output "summary") every effect's results, the operators, timings
-///   boundary_<effect>.csv     (output "boundary") x,y,s_arc,u_n,u_t,gap,pressure,traction_t on Γ_C
+///   boundary_<effect>.csv     (output "boundary") x,y,s_arc,u_n,u_t,gap,pressure,traction_t,zone on Γ_C
 ///   solution_<effect>.vtu     (output "vtu") the displacement and the von Mises stress
 /// Nothing is written unless every effect succeeded. Returns the summary. Serial only.
 nlohmann::json run_elastic_scene(const scene::Scene& scene, const SceneRunOptions& options);
