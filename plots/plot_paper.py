@@ -1,12 +1,14 @@
 #!/usr/bin/env python3
 """Plots contact solutions written by `hpcontact solve` like the paper's Figures 1, 4 and 6:
-u on Γ_C with the obstacle g (or the bound s) and the multiplier λ, next to a colour view of u on Ω.
+u on Γ_C with the obstacle g (or the bound s) against arc length, the multiplier λ on its own
+axis, next to a colour view of u on Ω; the title names the scene (summary.json).
 
 Reads DIR/boundary_<problem>.csv and DIR/solution_<problem>.vtu for every contact problem a run
 wrote into each DIR given; writes DIR/figure_<problem>.png.
 Usage: plot_paper.py DIR [DIR ...]
 """
 import csv
+import json
 import re
 import sys
 from pathlib import Path
@@ -36,27 +38,55 @@ def read_vtu(path):
     return x, y, triangles, array("u")
 
 
+def scene_title(folder, problem):
+    """The scene file's name (from summary.json) and the problem, else the folder's name."""
+    try:
+        scene = json.loads((folder / "summary.json").read_text())["scene"]
+        name = Path(scene).stem.replace("_", " ")
+    except (OSError, KeyError, ValueError):
+        name = folder.name.replace("_", " ")
+    return f"{name}: problem {problem}"
+
+
 def plot(folder, problem):
     with open(folder / f"boundary_{problem}.csv", newline="") as handle:
         rows = list(csv.DictReader(handle))
     data_key = "obstacle" if "obstacle" in rows[0] else "s"
-    x = [float(r["x"]) for r in rows]
-    figure, (left, right) = plt.subplots(1, 2, figsize=(11, 4.2))
-    left.plot(x, [float(r["u"]) for r in rows], label=r"$u_h$ on $\Gamma_C$")
-    left.plot(x, [float(r[data_key]) for r in rows], "--",
-              label="obstacle g" if data_key == "obstacle" else "bound s")
-    if problem == "friction":
-        left.plot(x, [1.0] * len(x), ":", color="grey", label="1")
-    left.plot(x, [float(r["lambda"]) for r in rows], label=r"$\lambda_H$")
-    left.set_xlabel(r"x on $\Gamma_C$")
+    # Along Γ_C by arc length (a vertical or curved Γ_C would collapse in x), one piece per zone.
+    zones = sorted({r.get("zone", "0") for r in rows}, key=int)
+    figure, (left, right) = plt.subplots(1, 2, figsize=(12, 4.4))
+    multiplier_axis = left.twinx()
+    for index, zone in enumerate(zones):
+        part = [r for r in rows if r.get("zone", "0") == zone]
+        s = [float(r["s_arc"]) for r in part]
+        first = index == 0
+        left.plot(s, [float(r["u"]) for r in part], color="tab:blue", label=r"$u_h$" if first else None)
+        left.plot(s, [float(r[data_key]) for r in part], "--", color="tab:green",
+                  label=("obstacle g" if data_key == "obstacle" else "bound s") if first else None)
+        multiplier_axis.plot(s, [float(r["lambda"]) for r in part], color="tab:red",
+                             label=r"$\lambda_H$ (right axis)" if first else None)
+        if index > 0:
+            left.axvline(s[0], color="grey", linewidth=0.8, linestyle=":")
+    if problem == "friction":  # problem (13): |λ| ≤ 1
+        for bound in (-1.0, 1.0):
+            multiplier_axis.axhline(bound, color="tab:red", linestyle=":", linewidth=1,
+                                    label=r"$|\lambda| \leq 1$" if bound > 0 else None)
+    left.set_xlabel(r"arc length $s$ along $\Gamma_C$" + (" (dotted: start of a zone)" if len(zones) > 1 else ""))
+    left.set_ylabel(r"$u_h$ and " + ("g" if data_key == "obstacle" else "s") + r" on $\Gamma_C$")
+    multiplier_axis.set_ylabel(r"multiplier $\lambda_H$", color="tab:red")
+    multiplier_axis.tick_params(axis="y", colors="tab:red")
     left.grid(True, alpha=0.3)
-    left.legend(fontsize=8)
+    handles = left.get_legend_handles_labels()
+    extra = multiplier_axis.get_legend_handles_labels()
+    left.legend(handles[0] + extra[0], handles[1] + extra[1], fontsize=8, loc="best")
     px, py, triangles, u = read_vtu(folder / f"solution_{problem}.vtu")
     picture = right.tripcolor(mtri.Triangulation(px, py, triangles), u, shading="gouraud", cmap="viridis")
     figure.colorbar(picture, ax=right, label=r"$u_h$")
     right.set_aspect("equal")
+    right.set_xlabel("x")
+    right.set_ylabel("y")
     right.set_title(r"$u_h$ on $\Omega$")
-    figure.suptitle(f"{folder.name.replace('_', ' ')}: problem {problem}")
+    figure.suptitle(scene_title(folder, problem))
     figure.tight_layout()
     output = folder / f"figure_{problem}.png"
     temporary = output.with_suffix(".tmp.png")
