@@ -39,6 +39,16 @@ def save(figure, path):
     print(f"wrote {path}")
 
 
+# One colour per p, one marker and line style per p_C: every curve is told apart on every panel.
+P_COLOURS = plt.get_cmap("tab10").colors
+PC_STYLES = [("o", "-"), ("s", "--"), ("^", "-."), ("D", ":"), ("v", "-"), ("P", "--"), ("X", "-."), ("*", ":")]
+
+
+def curve_style(p, pc):
+    marker, line = PC_STYLES[pc % len(PC_STYLES)]
+    return {"color": P_COLOURS[(p - 1) % len(P_COLOURS)], "marker": marker, "linestyle": line}
+
+
 def plot_alpha_vs_h(rows, folder):
     groups = defaultdict(list)
     for row in rows:
@@ -46,22 +56,30 @@ def plot_alpha_vs_h(rows, folder):
         # h_min, the shortest edge on Γ_C: h on uniform meshes, the finest layer on graded ones.
         groups[key].append((float(row["h_min"]), float(row["alpha"])))
     ratios = sorted({key[2] for key in groups}, reverse=True)
-    figure, axes = plt.subplots(1, len(ratios), figsize=(4.2 * len(ratios), 4.2), squeeze=False)
+    labels = {(key[3], key[4]) for key in groups}
+    legend_rows = -(-len(labels) // 8)
+    height = 4.2 + 0.28 * legend_rows
+    figure, axes = plt.subplots(1, len(ratios), figsize=(3.6 * len(ratios), height), squeeze=False)
+    legend = {}
     for axis, ratio in zip(axes[0], ratios):
         for key, points in sorted(groups.items()):
             if key[2] != ratio:
                 continue
             points.sort()
             h, alpha = zip(*points)
-            axis.loglog(h, [max(a, 1e-8) for a in alpha], "o-", markersize=3, linewidth=1,
-                        label=f"p={key[3]} pC={key[4]}" + ("" if key[0] == "signorini" else f" {key[0]}"))
+            label = f"p = {key[3]}, $p_C$ = {key[4]}" + ("" if key[0] == "signorini" else f" ({key[0]})")
+            (line,) = axis.loglog(h, [max(a, 1e-8) for a in alpha], markersize=4, linewidth=1,
+                                  **curve_style(key[3], key[4]))
+            legend.setdefault(label, line)
         axis.set_title(f"h/H = {ratio_label(ratio)}")
         axis.set_xlabel(r"$h_{\min}$ (shortest edge on $\Gamma_C$)")
+        axis.set_ylabel(r"inf-sup constant $\alpha$")
         axis.grid(True, which="both", alpha=0.3)
-    axes[0][0].set_ylabel(r"$\alpha$")
-    axes[0][-1].legend(fontsize=6, ncol=2, loc="lower right")
-    figure.suptitle(r"inf-sup constant $\alpha$ against $h_{\min}$ (slope 1 = unstable pairing)")
-    figure.tight_layout()
+    # One legend for all panels, below them (the same p and p_C look the same everywhere).
+    figure.legend(list(legend.values()), list(legend.keys()), loc="lower center", ncol=min(len(legend), 8),
+                  fontsize=8, bbox_to_anchor=(0.5, 0.0))
+    figure.suptitle(r"inf-sup constant $\alpha$ against $h_{\min}$ (slope 1: an unstable pairing)")
+    figure.tight_layout(rect=(0, (0.28 * legend_rows + 0.1) / height, 1, 1))
     save(figure, folder / "alpha_vs_h.png")
 
 
@@ -70,7 +88,8 @@ def plot_stable_map(verdicts, folder):
         selected = [v for v in verdicts if v["problem"] == problem and v["norm"] == norm]
         ratios = sorted({float(v["ratio"]) for v in selected}, reverse=True)
         p_max = max(int(v["p"]) for v in selected)
-        figure, axes = plt.subplots(1, len(ratios), figsize=(3.2 * len(ratios), 3.4), squeeze=False)
+        figure, axes = plt.subplots(1, len(ratios), figsize=(3.2 * len(ratios), 3.8), squeeze=False,
+                                    layout="constrained")
         for axis, ratio in zip(axes[0], ratios):
             grid = [[float("nan")] * (p_max + 1) for _ in range(p_max + 1)]
             for v in selected:
@@ -79,13 +98,13 @@ def plot_stable_map(verdicts, folder):
             axis.imshow(grid, origin="lower", cmap=ListedColormap(VERDICT_COLOURS), vmin=0, vmax=2)
             axis.set_xlim(0.5, p_max + 0.5)
             axis.set_ylim(-0.5, p_max - 0.5)
-            axis.set_xlabel("p")
+            axis.set_xlabel("p (degree of $S^p(T_h)$)")
             axis.set_title(f"h/H = {ratio_label(ratio)}")
-        axes[0][0].set_ylabel(r"$p_C$")
+        axes[0][0].set_ylabel(r"$p_C$ (degree of the multipliers)")
         handles = [plt.Rectangle((0, 0), 1, 1, color=c) for c in VERDICT_COLOURS]
-        figure.legend(handles, list(VERDICT_CODE), loc="upper right", fontsize=8)
+        # In the empty corner p_C ≥ p of the first panel.
+        axes[0][0].legend(handles, list(VERDICT_CODE), loc="upper left", fontsize=8)
         figure.suptitle(f"stable pairings ({problem}, {norm} norm)")
-        figure.tight_layout(rect=(0, 0, 0.92, 1))
         save(figure, folder / ("stable_map.png" if problem == "signorini" and norm == "interp"
                                else f"stable_map_{problem}_{norm}.png"))
 
@@ -114,13 +133,13 @@ def plot_modes(folder):
     figure, axes = plt.subplots(len(files), 1, figsize=(7, 1.9 * len(files)), squeeze=False)
     for axis, path in zip(axes[:, 0], files):
         rows = read(path)
-        axis.plot([float(r["x"]) for r in rows], [float(r["mu"]) for r in rows], linewidth=1)
-        axis.set_ylabel(r"$\mu$")
+        axis.plot([float(r["s"]) for r in rows], [float(r["mu"]) for r in rows], linewidth=1)
+        axis.set_ylabel(r"mode $\mu$")
         # mode_p3_pC2_hH1-2.csv -> "p=3 pC=2 h/H=1/2"
         p, pc, ratio = path.stem.split("_")[1:4]
         axis.set_title(f"p={p[1:]}  pC={pc[2:]}  h/H={ratio[2:].replace('-', '/')}", fontsize=9)
         axis.grid(True, alpha=0.3)
-    axes[-1, 0].set_xlabel(r"x on $\Gamma_C$")
+    axes[-1, 0].set_xlabel(r"arc length $s$ along $\Gamma_C$")
     figure.suptitle("spurious multiplier modes (eigenvectors of the smallest eigenvalue)")
     figure.tight_layout()
     save(figure, folder / "modes.png")
