@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Multiplier panels like the paper's Figures 2, 3, 5 and 7: λ_H on Γ_C for several pairings.
+"""Multiplier panels like the paper's Figures 2, 3, 5 and 7: λ_H against arc length on Γ_C for
+several pairings, each panel with its axis labels.
 
 Reads DIR/<name>/boundary_<problem>.csv for every sub-folder DIR/<name> written by `hpcontact solve`,
 where <name> = <problem>_p<p>_pC<pc>_hH<ratio with '-' for '/'>; writes DIR/panels_<problem>.png.
@@ -33,8 +34,10 @@ def main():
         for axis, (sub, p, pc, ratio) in zip(axes.flat, panels):
             with open(sub / f"boundary_{problem}.csv", newline="") as handle:
                 data = list(csv.DictReader(handle))
-            axis.plot([float(r["x"]) for r in data], [float(r["lambda"]) for r in data], linewidth=1)
-            axis.set_title(f"p={p}  pC={pc}  h/H={ratio}", fontsize=9)
+            axis.plot([float(r["s_arc"]) for r in data], [float(r["lambda"]) for r in data], linewidth=1)
+            axis.set_title(f"p = {p}, $p_C$ = {pc}, h/H = {ratio}", fontsize=9)
+            axis.set_xlabel(r"arc length $s$ along $\Gamma_C$", fontsize=8)
+            axis.set_ylabel(r"$\lambda_H$", fontsize=9)
             axis.grid(True, alpha=0.3)
         for axis in list(axes.flat)[len(panels):]:
             axis.set_visible(False)
