@@ -15,6 +15,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+from figure_file import save_figure  # noqa: E402
+
 
 # Below this the H¹ error is dominated by round-off (cond(K) ~ h⁻² times machine epsilon).
 ROUND_OFF_FLOOR = 1e-11
@@ -74,11 +76,7 @@ def main():
 
     figure.suptitle(r"S$^p$(T$_h$) on the §7 square, u = sin(1-x) sin(1-y) e$^{(x+y)/2}$")
     figure.tight_layout()
-    output = folder / "convergence.png"
-    temporary = output.with_suffix(".tmp.png")
-    figure.savefig(temporary, dpi=120)
-    temporary.replace(output)
-    print(f"wrote {output}")
+    save_figure(figure, folder / "convergence.png")
 
 
 if __name__ == "__main__":

@@ -16,6 +16,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+from figure_file import save_figure  # noqa: E402
 from plot_convergence import read_rows  # noqa: E402  (the same convergence.csv)
 
 
@@ -65,11 +66,7 @@ def main():
 
     figure.suptitle(r"Quarter annulus $1<r<2$, $u = (r^2-1)(4-r^2)\,e^x$, $u_D = 0$ on the inner arc")
     figure.tight_layout()
-    output = folder / "curved.png"
-    temporary = output.with_suffix(".tmp.png")
-    figure.savefig(temporary, dpi=120)
-    temporary.replace(output)
-    print(f"wrote {output}")
+    save_figure(figure, folder / "curved.png")
 
 
 if __name__ == "__main__":

@@ -88,9 +88,7 @@ Eigen::VectorXd assemble_boundary_load(
     Eigen::VectorXd weighted_g(rule.points.size());
     for (std::size_t q = 0; q < rule.points.size(); ++q) {
       const double t = rule.points[q];
-      const Eigen::Vector2d ref = mesh::local_edge_point(local_edge, t);
-      const double speed = (map.jacobian(ref.x(), ref.y()) * mesh::local_edge_direction(local_edge)).norm();
-      weighted_g(q) = rule.weights[q] * speed *
+      weighted_g(q) = rule.weights[q] * map.edge_tangent(local_edge, t).norm() *
                       g(mesh::Point(values.points(q, 0), values.points(q, 1)), mesh.boundary_normal(e, t));
     }
     const Eigen::VectorXd local = values.values.transpose() * weighted_g;

@@ -58,8 +58,10 @@ Eigen::Vector2d local_edge_point(int local_edge, double t) {
   }
 }
 
-Eigen::Vector2d local_edge_direction(int local_edge) {
-  return local_edge % 2 == 0 ? Eigen::Vector2d(1.0, 0.0) : Eigen::Vector2d(0.0, 1.0);
+Point CellMap::edge_tangent(int local_edge, double t) const {
+  const Eigen::Vector2d ref = local_edge_point(local_edge, t);
+  // Local edges 0 and 2 run along ξ, 1 and 3 along η.
+  return jacobian(ref.x(), ref.y()).col(local_edge % 2);
 }
 
 }  // namespace hpcontact::mesh

@@ -19,6 +19,8 @@ class CellMap {
   Point map(double xi, double eta) const;
   /// DΨ_T(ξ, η) = [[∂x/∂ξ, ∂x/∂η], [∂y/∂ξ, ∂y/∂η]].
   Eigen::Matrix2d jacobian(double xi, double eta) const;
+  /// dΨ_T/dt along local edge `local_edge` at its parameter t (its length is the speed ds/dt).
+  Point edge_tangent(int local_edge, double t) const;
   /// Whether the cell has a curved side (or is part of a cell that has one).
   bool is_curved() const { return curved_ != nullptr; }
   /// Whether the cell is a parallelogram (Ψ_T affine, DΨ_T constant): the ξη coefficient is
@@ -36,7 +38,5 @@ class CellMap {
 
 /// The reference point of local edge `local_edge` at its parameter t (see QuadMesh's numbering).
 Eigen::Vector2d local_edge_point(int local_edge, double t);
-/// d(ξ, η)/dt along local edge `local_edge`.
-Eigen::Vector2d local_edge_direction(int local_edge);
 
 }  // namespace hpcontact::mesh

@@ -19,10 +19,7 @@ class EdgeArcLength {
     for (int k = 0; k < kPanels; ++k) panel_start_.push_back(panel_start_.back() + integral(panel(k), panel(k + 1)));
   }
   double length() const { return panel_start_.back(); }
-  double speed(double t) const {
-    const Eigen::Vector2d ref = local_edge_point(local_edge_, t);
-    return (map_.jacobian(ref.x(), ref.y()) * local_edge_direction(local_edge_)).norm();
-  }
+  double speed(double t) const { return map_.edge_tangent(local_edge_, t).norm(); }
   double arc(double t) const {
     const int k = std::clamp(static_cast<int>((t + 1.0) / 2.0 * kPanels), 0, kPanels - 1);
     return panel_start_[k] + integral(panel(k), t);
@@ -221,8 +218,7 @@ Point ContactBoundary::tangent_at(double s) const {
   const int k = edge_index_at(s);
   const auto& e = edges_[k];
   if (!e.arc) return (edge_ends_[k][1] - edge_ends_[k][0]).normalized();
-  const Eigen::Vector2d ref = local_edge_point(e.local_edge, e.local_parameter(s));
-  const Point along_t = CellMap(*mesh_, e.cell).jacobian(ref.x(), ref.y()) * local_edge_direction(e.local_edge);
+  const Point along_t = CellMap(*mesh_, e.cell).edge_tangent(e.local_edge, e.local_parameter(s));
   return (e.reversed ? -1.0 : 1.0) * along_t.normalized();
 }
 

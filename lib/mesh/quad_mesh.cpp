@@ -113,10 +113,8 @@ double QuadMesh::edge_length(int e) const {
   const CellMap map(*this, c);
   const auto& rule = basis::gauss_legendre(32);
   double length = 0.0;
-  for (std::size_t q = 0; q < rule.points.size(); ++q) {
-    const Eigen::Vector2d ref = local_edge_point(local, rule.points[q]);
-    length += rule.weights[q] * (map.jacobian(ref.x(), ref.y()) * local_edge_direction(local)).norm();
-  }
+  for (std::size_t q = 0; q < rule.points.size(); ++q)
+    length += rule.weights[q] * map.edge_tangent(local, rule.points[q]).norm();
   return length;
 }
 
@@ -124,11 +122,9 @@ Point QuadMesh::boundary_normal(int e, double t) const {
   HPC_VERIFY(is_boundary_edge(e), "normal requested for an interior edge");
   const int c = edge_cells_[e][0];
   const int local = local_edge_of(e, 0);
-  const Eigen::Vector2d ref = local_edge_point(local, t);
-  const Point tangent = cell_geometry(c)
-                            ? Point(CellMap(*this, c).jacobian(ref.x(), ref.y()) * local_edge_direction(local))
-                            : Point(vertices_[cells_[c][kLocalEdgeVertices[local][1]]] -
-                                    vertices_[cells_[c][kLocalEdgeVertices[local][0]]]);
+  const Point tangent = cell_geometry(c) ? CellMap(*this, c).edge_tangent(local, t)
+                                         : Point(vertices_[cells_[c][kLocalEdgeVertices[local][1]]] -
+                                                 vertices_[cells_[c][kLocalEdgeVertices[local][0]]]);
   // Local edges 0 and 1 run counterclockwise around the cell, 2 and 3 clockwise.
   const double ccw = (local <= 1) ? 1.0 : -1.0;
   return ccw * Point(tangent.y(), -tangent.x()).normalized();
