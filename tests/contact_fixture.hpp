@@ -14,8 +14,7 @@
 namespace hpcontact::testing {
 
 // Uniform degrees p and p_C on the given meshes (which must outlive the setup).
-inline contact::ContactSetup uniform_setup(const mesh::QuadMesh& mesh, const mesh::BoundaryMesh& boundary, int p,
-                                           int pc) {
+inline contact::ContactSetup uniform_setup(const mesh::Mesh& mesh, const mesh::BoundaryMesh& boundary, int p, int pc) {
   contact::ContactSetup setup;
   setup.mesh = &mesh;
   setup.cell_degrees.assign(mesh.n_cells(), p);

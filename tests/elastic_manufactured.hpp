@@ -9,7 +9,7 @@
 #include <cmath>
 
 #include "assembly/elastic_system.hpp"
-#include "mesh/quad_mesh.hpp"
+#include "mesh/mesh.hpp"
 
 namespace hpcontact::testing {
 

@@ -5,7 +5,7 @@
 #include <Eigen/Core>
 #include <cmath>
 
-#include "mesh/quad_mesh.hpp"
+#include "mesh/mesh.hpp"
 
 namespace hpcontact::testing {
 

@@ -15,7 +15,7 @@ using namespace hpcontact;
 using mesh::BoundaryPart;
 
 namespace {
-double part_length(const mesh::QuadMesh& m, BoundaryPart part) {
+double part_length(const mesh::Mesh& m, BoundaryPart part) {
   double length = 0.0;
   for (int e : m.boundary_edges())
     if (m.edge_part(e) == part) length += m.edge_length(e);
@@ -60,11 +60,11 @@ TEST(PaperSquare, BoundaryPartsAsInSection7) {
 
 TEST(Mesh, ClockwiseOrDegenerateCellsAreRejected) {
   std::vector<mesh::Point> v{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  EXPECT_NO_THROW(mesh::QuadMesh(v, {{0, 1, 2, 3}}));
-  EXPECT_THROW(mesh::QuadMesh(v, {{0, 3, 2, 1}}), InputError);
+  EXPECT_NO_THROW(mesh::Mesh(v, {{0, 1, 2, 3}}));
+  EXPECT_THROW(mesh::Mesh(v, {{0, 3, 2, 1}}), InputError);
   std::vector<mesh::Point> collapsed{{0, 0}, {1, 0}, {2, 0}, {0, 1}};
-  EXPECT_THROW(mesh::QuadMesh(collapsed, {{0, 1, 2, 3}}), InputError);
-  EXPECT_THROW(mesh::QuadMesh(v, {{0, 1, 2, 7}}), InputError);
+  EXPECT_THROW(mesh::Mesh(collapsed, {{0, 1, 2, 3}}), InputError);
+  EXPECT_THROW(mesh::Mesh(v, {{0, 1, 2, 7}}), InputError);
 }
 
 TEST(Mesh, PerturbationKeepsBoundaryAndValidity) {
@@ -131,7 +131,7 @@ TEST(GradedNodes, ShrinkGeometricallyTowardsEachPoint) {
 }
 
 namespace {
-double cell_area(const mesh::QuadMesh& m, int c) {
+double cell_area(const mesh::Mesh& m, int c) {
   double area = 0.0;  // shoelace
   for (int k = 0; k < 4; ++k) {
     const auto &a = m.vertex(m.cell(c)[k]), &b = m.vertex(m.cell(c)[(k + 1) % 4]);

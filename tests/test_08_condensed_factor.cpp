@@ -1,8 +1,8 @@
 // Stage 8, static condensation: the factorization of a K + b M from element eliminations and the
 // skeleton Schur complement must equal a direct factorization of the assembled matrix: Schur
 // complements B A⁻¹ Bᵀ (through the trace and by solves), solves and quadratic forms, on meshes
-// of parallelograms (shared eliminations, reversed edges) and of general quadrilaterals, with
-// mixed degrees and Dirichlet dofs.
+// of parallelograms (shared eliminations, reversed edges), of general quadrilaterals and of mixed
+// triangles and quadrilaterals, with mixed degrees and Dirichlet dofs.
 #include <gtest/gtest.h>
 
 #include <Eigen/Cholesky>
@@ -16,6 +16,7 @@
 #include "mesh/contact_boundary.hpp"
 #include "mesh/point_grading.hpp"
 #include "mesh/rectangle_mesh.hpp"
+#include "mesh/refine.hpp"
 #include "space/multiplier_space.hpp"
 
 using namespace hpcontact;
@@ -26,7 +27,7 @@ double relative_difference(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
 
 // The §7 mesh with its vertices numbered in random order, so that the local edge directions
 // disagree with the global ones on about half the edges (shape signs −1), as in Gmsh meshes.
-mesh::QuadMesh renumbered_paper_square(int n, std::uint32_t seed) {
+mesh::Mesh renumbered_paper_square(int n, std::uint32_t seed) {
   const auto ordered = mesh::make_paper_square_mesh(n);
   std::vector<int> new_index(ordered.n_vertices());
   for (int v = 0; v < ordered.n_vertices(); ++v) new_index[v] = v;
@@ -39,13 +40,13 @@ mesh::QuadMesh renumbered_paper_square(int n, std::uint32_t seed) {
     for (int k = 0; k < 4; ++k) cell[k] = new_index[ordered.cell(c)[k]];
     cells.push_back(cell);
   }
-  mesh::QuadMesh out(std::move(vertices), std::move(cells), "renumbered §7 square");
+  mesh::Mesh out(std::move(vertices), std::move(cells), "renumbered §7 square");
   mesh::assign_paper_boundary_parts(out);
   return out;
 }
 
 // Sheared into congruent parallelograms, and randomly perturbed; both with mixed edge signs.
-std::vector<mesh::QuadMesh> test_meshes() {
+std::vector<mesh::Mesh> test_meshes() {
   auto sheared = renumbered_paper_square(6, 1);
   std::vector<mesh::Point> moved;
   for (int v = 0; v < sheared.n_vertices(); ++v) {
@@ -55,13 +56,17 @@ std::vector<mesh::QuadMesh> test_meshes() {
   sheared.move_vertices(moved, "test");
   auto perturbed = renumbered_paper_square(6, 2);
   mesh::perturb_interior_vertices(perturbed, 0.2, 3);
-  std::vector<mesh::QuadMesh> out;
+  // Two of every three cells cut into triangles: a mixed mesh, perturbed.
+  auto mixed = mesh::split_into_triangles(renumbered_paper_square(6, 4), [](int c) { return c % 3 != 0; });
+  mesh::perturb_interior_vertices(mixed, 0.1, 7);
+  std::vector<mesh::Mesh> out;
   out.push_back(std::move(sheared));
   out.push_back(std::move(perturbed));
+  out.push_back(std::move(mixed));
   for (const auto& mesh : out) {
     int reversed = 0;
     for (int c = 0; c < mesh.n_cells(); ++c)
-      for (int k = 0; k < 4; ++k) reversed += mesh.edge_sign(c, k) < 0;
+      for (int k = 0; k < mesh.cell_size(c); ++k) reversed += mesh.edge_sign(c, k) < 0;
     EXPECT_GT(reversed, mesh.n_cells());  // the test exercises the signs
   }
   return out;

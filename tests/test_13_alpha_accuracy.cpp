@@ -27,7 +27,7 @@ struct Point {
   int p, pc, n, m;
 };
 
-infsup::InfSupSetup setup_of(const Point& c, const mesh::QuadMesh& mesh, const mesh::BoundaryMesh& boundary,
+infsup::InfSupSetup setup_of(const Point& c, const mesh::Mesh& mesh, const mesh::BoundaryMesh& boundary,
                              infsup::GramNorm norm) {
   infsup::InfSupSetup setup;
   setup.mesh = &mesh;

@@ -109,9 +109,8 @@ TEST(Elasticity, KroneckerAndQuadratureElementMatricesAgreeAndRigidMotionsHaveNo
     for (int motion = 0; motion < 3; ++motion) {
       Eigen::VectorXd coefficients = Eigen::VectorXd::Zero(k.rows());
       for (std::size_t s = 0; s < shapes.size(); ++s) {
-        if (shapes[s].i >= 2 || shapes[s].j >= 2) continue;  // edge and interior modes vanish at vertices
-        const mesh::Point v =
-            m.vertex(m.cell(0)[shapes[s].i == 0 ? (shapes[s].j == 0 ? 0 : 3) : (shapes[s].j == 0 ? 1 : 2)]);
+        if (shapes[s].role != space::ShapeRole::vertex) continue;  // other modes vanish at vertices
+        const mesh::Point v = m.vertex(m.cell(0)[shapes[s].entity]);
         const Eigen::Vector2d value = motion == 0   ? Eigen::Vector2d(1, 0)
                                       : motion == 1 ? Eigen::Vector2d(0, 1)
                                                     : Eigen::Vector2d(-v.y(), v.x());
@@ -171,7 +170,7 @@ namespace {
 // (the bottom edge, n = (0, −1)) at the gap g = 0.05 + 0.3 x²: contact in the middle, a gap
 // towards the corners.
 struct ElasticContactFixture {
-  mesh::QuadMesh mesh = mesh::make_paper_square_mesh(8);
+  mesh::Mesh mesh = mesh::make_paper_square_mesh(8);
   std::unique_ptr<operators::ElasticOperators> operators;
   std::unique_ptr<mesh::BoundaryMesh> boundary_mesh;
 

@@ -45,7 +45,7 @@ operators::PoissonData shifted_data() {
   return {shifted_f, [](const mesh::Point& x, const mesh::Point& n) { return shifted_gradient(x).dot(n); }, shifted_u};
 }
 
-postprocess::ErrorNorms lifted_errors(const mesh::QuadMesh& mesh, int p) {
+postprocess::ErrorNorms lifted_errors(const mesh::Mesh& mesh, int p) {
   const space::H1Space space(mesh, p);
   const auto solution = operators::solve_poisson(space, shifted_data());
   const auto field = assembly::total_field(solution.lift.get(), space, solution.coefficients);
@@ -60,17 +60,17 @@ double value_at(const assembly::ScalarField& field, const mesh::Point& x) {
 
 // The paper square with its vertices numbered backwards: every global edge (lower index to higher)
 // runs the other way, so the odd edge modes of Γ_D change sign.
-mesh::QuadMesh reversed_paper_square(int n) {
+mesh::Mesh reversed_paper_square(int n) {
   const auto mesh = mesh::make_paper_square_mesh(n);
   const int last = mesh.n_vertices() - 1;
   std::vector<mesh::Point> vertices(mesh.vertices().rbegin(), mesh.vertices().rend());
   std::vector<std::array<int, 4>> cells;
   for (int c = 0; c < mesh.n_cells(); ++c) {
-    auto cell = mesh.cell(c);
+    auto cell = mesh.cells()[c];
     for (int& v : cell) v = last - v;
     cells.push_back(cell);
   }
-  mesh::QuadMesh reversed(std::move(vertices), std::move(cells));
+  mesh::Mesh reversed(std::move(vertices), std::move(cells));
   mesh::assign_paper_boundary_parts(reversed);
   return reversed;
 }
@@ -178,7 +178,7 @@ namespace {
 
 // The §7 square with the whole right edge in Γ_D, so that Γ_D reaches Γ_C at (1, −1) and the
 // constraints see the lift (B w ≠ 0).
-mesh::QuadMesh square_clamped_on_the_right(int n) {
+mesh::Mesh square_clamped_on_the_right(int n) {
   auto mesh = mesh::make_paper_square_mesh(n);
   mesh::assign_boundary_part(mesh, mesh::BoundaryPart::dirichlet,
                              [](const mesh::Point& x) { return x.x() > 1.0 - 1e-12; });
@@ -294,7 +294,7 @@ Eigen::Vector2d stress_times(const Eigen::Matrix2d& g, const mesh::Point& normal
 
 // Elasticity on the §7 square with u = elastic_u + `scale` · affine: Dirichlet data on Γ_D (where
 // elastic_u vanishes), traction on the rest; the energy error of u_0 + w.
-double elastic_lifted_error(const mesh::QuadMesh& mesh, int p, double elastic_scale) {
+double elastic_lifted_error(const mesh::Mesh& mesh, int p, double elastic_scale) {
   const space::H1Space scalar(mesh, p);
   const space::VectorSpace space(scalar);
   const std::vector<assembly::Material> materials(mesh.n_cells(), kMaterial);
@@ -350,7 +350,7 @@ Eigen::Vector2d rigid(const mesh::Point& x) {
 // The square clamped on the right edge (Γ_D reaching Γ_C at (1, −1)), hanging over an obstacle
 // below its bottom edge (n = (0, −1)) under f = (0, −1); in contact up to Γ_D.
 struct ElasticBlock {
-  mesh::QuadMesh mesh = square_clamped_on_the_right(8);
+  mesh::Mesh mesh = square_clamped_on_the_right(8);
   std::vector<assembly::Material> materials = std::vector<assembly::Material>(mesh.n_cells(), kMaterial);
   operators::ElasticOperators operators{mesh, std::vector<int>(mesh.n_cells(), 3), materials};
   mesh::BoundaryMesh boundary = mesh::BoundaryMesh::uniform(2.0, 8);

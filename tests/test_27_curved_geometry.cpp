@@ -38,7 +38,7 @@ Point on_circle(double radius, double angle) { return radius * Point(std::cos(an
 
 // The quarter annulus 1 < r < 2, 0 < θ < π/2 with n_r × n_θ cells whose sides on the two arcs
 // follow the circles exactly (degree-16 interpolants).
-mesh::QuadMesh quarter_annulus(int n_r, int n_theta) {
+mesh::Mesh quarter_annulus(int n_r, int n_theta) {
   std::vector<Point> vertices;
   const auto index = [&](int i, int j) { return i + (n_r + 1) * j; };
   for (int j = 0; j <= n_theta; ++j)
@@ -46,7 +46,7 @@ mesh::QuadMesh quarter_annulus(int n_r, int n_theta) {
   std::vector<std::array<int, 4>> cells;
   for (int j = 0; j < n_theta; ++j)
     for (int i = 0; i < n_r; ++i) cells.push_back({index(i, j), index(i + 1, j), index(i + 1, j + 1), index(i, j + 1)});
-  mesh::QuadMesh mesh(vertices, cells, "quarter annulus");
+  mesh::Mesh mesh(vertices, cells, "quarter annulus");
   for (int e : mesh.boundary_edges()) {
     const Point a = mesh.vertex(mesh.edge(e)[0]), b = mesh.vertex(mesh.edge(e)[1]);
     const double radius = a.norm();
@@ -60,7 +60,7 @@ mesh::QuadMesh quarter_annulus(int n_r, int n_theta) {
   return mesh;
 }
 
-double area(const mesh::QuadMesh& mesh) {
+double area(const mesh::Mesh& mesh) {
   const auto& rule = basis::gauss_legendre(20);
   double sum = 0.0;
   for (int c = 0; c < mesh.n_cells(); ++c) {
@@ -72,7 +72,7 @@ double area(const mesh::QuadMesh& mesh) {
   return sum;
 }
 
-std::map<std::string, double> length_by_label(const mesh::QuadMesh& mesh) {
+std::map<std::string, double> length_by_label(const mesh::Mesh& mesh) {
   std::map<std::string, double> out;
   for (int e : mesh.boundary_edges()) out[mesh.edge_label(e)] += mesh.edge_length(e);
   return out;
@@ -153,7 +153,7 @@ TEST(BlendedGeometry, CoversTheCurvedDomainExactlyAndNestsUnderRefinement) {
         const Point x = fine.edge_point(e, t);
         EXPECT_NEAR(x.norm(), 2.0, 1e-15);
         const int local = fine.local_edge_of(e, 0);
-        const Eigen::Vector2d ref = mesh::local_edge_point(local, t);
+        const Eigen::Vector2d ref = mesh::local_edge_point(fine.cell_type(fine.edge_cells(e)[0]), local, t);
         EXPECT_LT(
             (fine.boundary_normal(e, t) - mesh::CellMap(fine, fine.edge_cells(e)[0]).map(ref.x(), ref.y()) / 2).norm(),
             1e-14);

@@ -1,4 +1,4 @@
-// Parallelogram congruence keys and the scalar cell system a K + b M.
+// Affine-cell congruence keys and the scalar cell system a K + b M.
 #include "assembly/cell_system.hpp"
 
 #include <cmath>
@@ -7,17 +7,18 @@
 
 namespace hpcontact::assembly {
 
-std::optional<CongruenceKey> parallelogram_key(const space::H1Space& space, int cell, bool kronecker_parallelograms) {
-  if (!kronecker_parallelograms) return std::nullopt;
+std::optional<CongruenceKey> affine_key(const space::H1Space& space, int cell, bool enabled) {
+  if (!enabled) return std::nullopt;
   const mesh::CellMap map(space.mesh(), cell);
-  if (!map.is_parallelogram()) return std::nullopt;
+  if (!map.is_affine()) return std::nullopt;
   // Cells of a uniform mesh whose vertex coordinates differ in the last bits share their
   // elimination, at a relative change of the element matrix far below 1e-12; similar cells of
   // different sizes (the layers of a geometric mesh) must not share a block of K + M.
   const Eigen::Matrix2d jacobian = map.jacobian(0.0, 0.0);
   const double largest = jacobian.cwiseAbs().maxCoeff(), unit = 1e-12 * largest;
-  CongruenceKey key{space.cell_degree(cell)};
-  for (int e = 0; e < 4; ++e) key.push_back(space.edge_degree(space.mesh().cell_edge(cell, e)));
+  CongruenceKey key{space.cell_degree(cell), space.mesh().cell_size(cell)};
+  for (int e = 0; e < space.mesh().cell_size(cell); ++e)
+    key.push_back(space.edge_degree(space.mesh().cell_edge(cell, e)));
   for (int k = 0; k < 4; ++k) key.push_back(std::llround(jacobian(k % 2, k / 2) / unit));
   key.push_back(std::llround(1e11 * std::log(largest)));
   return key;
@@ -30,7 +31,7 @@ void ScalarCellSystem::cell_dofs(int cell, std::vector<CellDof>& out) const {
   const auto& shapes = space_->cell_shapes(cell);
   out.resize(shapes.size());
   for (std::size_t s = 0; s < shapes.size(); ++s)
-    out[s] = {shapes[s].dof, shapes[s].sign, shapes[s].i >= 2 && shapes[s].j >= 2};
+    out[s] = {shapes[s].dof, shapes[s].sign, shapes[s].role == space::ShapeRole::interior};
 }
 
 Eigen::MatrixXd ScalarCellSystem::element_matrix(int cell) const {
@@ -44,7 +45,7 @@ Eigen::MatrixXd ScalarCellSystem::element_matrix(int cell) const {
 }
 
 std::optional<CongruenceKey> ScalarCellSystem::congruence_key(int cell) const {
-  return parallelogram_key(*space_, cell, true);
+  return affine_key(*space_, cell, true);
 }
 
 }  // namespace hpcontact::assembly

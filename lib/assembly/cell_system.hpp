@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "assembly/element_matrices.hpp"
-#include "mesh/quad_mesh.hpp"
+#include "mesh/mesh.hpp"
 #include "space/h1_space.hpp"
 
 namespace hpcontact::assembly {
@@ -28,7 +28,7 @@ using CongruenceKey = std::vector<long long>;
 class CellSystem {
  public:
   virtual ~CellSystem() = default;
-  virtual const mesh::QuadMesh& mesh() const = 0;
+  virtual const mesh::Mesh& mesh() const = 0;
   virtual int n_dofs() const = 0;
   /// Skeleton dofs are numbered 0 … n_skeleton_dofs() − 1, before every interior dof.
   virtual int n_skeleton_dofs() const = 0;
@@ -37,23 +37,24 @@ class CellSystem {
   /// The element matrix in the basis of the signed local shapes, shape (n, n) with n the size of
   /// cell_dofs(cell).
   virtual Eigen::MatrixXd element_matrix(int cell) const = 0;
-  /// A key shared exactly by the cells whose unsigned element matrices are equal (parallelograms
-  /// of equal Jacobian, degrees and coefficients); empty where the cell has no congruent partner
-  /// to look for.
+  /// A key shared exactly by the cells whose unsigned element matrices are equal (affine cells of
+  /// one type with equal Jacobian, degrees and coefficients); empty where the cell has no
+  /// congruent partner to look for.
   virtual std::optional<CongruenceKey> congruence_key(int cell) const = 0;
 };
 
-/// The key of a parallelogram cell: its cell and edge degrees and its Jacobian rounded to 1e-12 of
-/// the largest entry, with the cell's size (log of the largest entry, to 1e-11) because the mass
-/// matrix scales with the area. Empty for other cells (or with the Kronecker path off).
-std::optional<CongruenceKey> parallelogram_key(const space::H1Space& space, int cell, bool kronecker_parallelograms);
+/// The key of an affine cell (parallelogram or straight triangle): its degree, vertex count and
+/// edge degrees and its Jacobian rounded to 1e-12 of the largest entry, with the cell's size (log
+/// of the largest entry, to 1e-11) because the mass matrix scales with the area. Empty for other
+/// cells (or with `enabled` false).
+std::optional<CongruenceKey> affine_key(const space::H1Space& space, int cell, bool enabled);
 
 /// A K + b M on S^p(T_h) (a, b ≥ 0, not both 0).
 class ScalarCellSystem final : public CellSystem {
  public:
   ScalarCellSystem(const space::H1Space& space, double stiffness_weight, double mass_weight);
   const space::H1Space& space() const { return *space_; }
-  const mesh::QuadMesh& mesh() const override { return space_->mesh(); }
+  const mesh::Mesh& mesh() const override { return space_->mesh(); }
   int n_dofs() const override { return space_->n_dofs(); }
   int n_skeleton_dofs() const override { return space_->n_skeleton_dofs(); }
   void cell_dofs(int cell, std::vector<CellDof>& out) const override;

@@ -54,8 +54,8 @@ Eigen::MatrixXd interval_coupling(const space::H1Space& space, const mesh::Conta
     s[q] = interval.s_begin + half * (rule.points[q] + 1.0);
     t[q] = trace.local_parameter(s[q]);
   }
-  const auto [xi, eta] = edge_reference_points(trace.local_edge, t);
-  const CellValues cell = tabulate_cell(space, trace.cell, xi, eta);
+  const CellValues cell =
+      tabulate_cell(space, trace.cell, edge_reference_points(space.mesh().cell_type(trace.cell), trace.local_edge, t));
   Eigen::MatrixXd mu(n_points, pc + 1);
   for (int q = 0; q < n_points; ++q) {
     double w = rule.weights[q] * half;

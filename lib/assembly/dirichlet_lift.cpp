@@ -10,21 +10,14 @@
 #include "mesh/cell_map.hpp"
 
 namespace hpcontact::assembly {
-namespace {
 
-// The index along its edge of an edge mode.
-int mode_index(const space::LocalShape& shape, int local_edge) { return local_edge % 2 == 0 ? shape.i : shape.j; }
-
-}  // namespace
-
-Eigen::VectorXd edge_projection(const mesh::QuadMesh& mesh, int cell, int local_edge, int degree,
-                                const PointFunction& u) {
+Eigen::VectorXd edge_projection(const mesh::Mesh& mesh, int cell, int local_edge, int degree, const PointFunction& u) {
   Eigen::VectorXd a = Eigen::VectorXd::Zero(std::max(degree - 1, 0));
   if (degree < 2) return a;
   const mesh::CellMap map(mesh, cell);
   auto at = [&](double t) {
-    const auto [xi, eta] = edge_reference_points(local_edge, std::vector<double>{t});
-    return u(map.map(xi[0], eta[0]));
+    const Eigen::Vector2d ref = mesh::local_edge_point(map.type(), local_edge, t);
+    return u(map.map(ref.x(), ref.y()));
   };
   const double start = at(-1.0), end = at(1.0);
   // a_k = ∫ g' N_k' = −∫ g N_k'' with g = u − I₁u vanishing at ±1, N_k'' = √((2k−1)/2) P'_{k−1};
@@ -74,7 +67,7 @@ void DirichletLift::build(int components, const std::array<PointFunction, space:
   for (int c = 0; c < mesh.n_cells(); ++c) {
     const auto& shapes = extended_scalar_->cell_shapes(c);  // (i, j, sign) as the problem's space's
     Eigen::VectorXd local = Eigen::VectorXd::Zero(components * static_cast<Eigen::Index>(shapes.size()));
-    std::array<std::array<Eigen::VectorXd, space::kComponents>, 4> edge_coefficients;  // on first use
+    std::array<std::array<Eigen::VectorXd, space::kComponents>, 4> edge_coefficients;  // on first use, per edge
     for (int s = 0; s < static_cast<int>(shapes.size()); ++s)
       for (int comp = 0; comp < components; ++comp) {
         const int target = extended(c, s, comp);
@@ -84,8 +77,8 @@ void DirichletLift::build(int components, const std::array<PointFunction, space:
         }
         if (!u_d[comp]) continue;
         double value = 0.0;
-        if (s < 4) {
-          value = u_d[comp](mesh.vertex(mesh.cell(c)[s]));
+        if (shapes[s].role == space::ShapeRole::vertex) {
+          value = u_d[comp](mesh.vertex(mesh.cell(c)[shapes[s].entity]));
         } else {
           const int edge = space::local_edge_of(shapes[s]);
           HPC_VERIFY(edge >= 0, "an interior mode is never fixed");
@@ -93,7 +86,7 @@ void DirichletLift::build(int components, const std::array<PointFunction, space:
           if (a.size() == 0)
             a = edge_projection(mesh, c, edge, extended_scalar_->edge_degree(mesh.cell_edge(c, edge)), u_d[comp]);
           // The shape is sign · N_k(t) on the edge, and w there must be Σ a_k N_k(t).
-          value = shapes[s].sign * a(mode_index(shapes[s], edge) - 2);
+          value = shapes[s].sign * a(space::edge_mode_degree(shapes[s]) - 2);
         }
         local(components * s + comp) = value;
         values_(target) = value;

@@ -26,8 +26,7 @@ using PointFunction = std::function<double(const mesh::Point&)>;
 /// On a cell edge (local edge 0 … 3, parameter t as space::local_edge_of), the coefficients
 /// a_2 … a_p of the H¹₀ projection of u − (its linear interpolant between the edge's ends) onto
 /// the Lobatto bubbles N_2 … N_p: a_k = ∫ (u − I₁u)' N_k' dt (the N_k' are orthonormal).
-Eigen::VectorXd edge_projection(const mesh::QuadMesh& mesh, int cell, int local_edge, int degree,
-                                const PointFunction& u);
+Eigen::VectorXd edge_projection(const mesh::Mesh& mesh, int cell, int local_edge, int degree, const PointFunction& u);
 
 class DirichletLift {
  public:

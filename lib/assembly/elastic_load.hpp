@@ -5,7 +5,7 @@
 #include <functional>
 #include <set>
 
-#include "mesh/quad_mesh.hpp"
+#include "mesh/mesh.hpp"
 #include "space/vector_space.hpp"
 
 namespace hpcontact::assembly {

@@ -40,7 +40,7 @@ void interleaved_dofs(const space::VectorSpace& space, int cell, std::vector<Cel
   const auto& shapes = space.scalar().cell_shapes(cell);
   out.resize(space::kComponents * shapes.size());
   for (std::size_t s = 0; s < shapes.size(); ++s) {
-    const bool interior = shapes[s].i >= 2 && shapes[s].j >= 2;
+    const bool interior = shapes[s].role == space::ShapeRole::interior;
     for (int c = 0; c < space::kComponents; ++c)
       out[space::kComponents * s + c] = {space.dof(shapes[s].dof, c), shapes[s].sign, interior};
   }
@@ -78,7 +78,7 @@ Eigen::MatrixXd ElasticCellSystem::element_matrix(int cell) const {
 }
 
 std::optional<CongruenceKey> ElasticCellSystem::congruence_key(int cell) const {
-  auto key = parallelogram_key(space_->scalar(), cell, true);
+  auto key = affine_key(space_->scalar(), cell, true);
   if (key) {  // equal geometry and degrees give equal matrices only with equal coefficients
     key->push_back(std::bit_cast<long long>(mass_weight_));
     key->push_back(std::bit_cast<long long>(materials_[cell].lambda));

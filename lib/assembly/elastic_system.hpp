@@ -42,7 +42,7 @@ class ElasticCellSystem final : public CellSystem {
  public:
   /// `materials`: one per cell. @throws InputError on a size mismatch.
   ElasticCellSystem(const space::VectorSpace& space, std::vector<Material> materials, double mass_weight = 0.0);
-  const mesh::QuadMesh& mesh() const override { return space_->scalar().mesh(); }
+  const mesh::Mesh& mesh() const override { return space_->scalar().mesh(); }
   int n_dofs() const override;
   int n_skeleton_dofs() const override;
   void cell_dofs(int cell, std::vector<CellDof>& out) const override;
@@ -61,7 +61,7 @@ class ElasticCellSystem final : public CellSystem {
 class ComponentwiseCellSystem final : public CellSystem {
  public:
   ComponentwiseCellSystem(const space::VectorSpace& space, double stiffness_weight, double mass_weight);
-  const mesh::QuadMesh& mesh() const override { return scalar_.mesh(); }
+  const mesh::Mesh& mesh() const override { return scalar_.mesh(); }
   int n_dofs() const override;
   int n_skeleton_dofs() const override;
   void cell_dofs(int cell, std::vector<CellDof>& out) const override;

@@ -1,7 +1,7 @@
 // Parallelogram cells (DΨ_T = J constant) take their element matrices from Kronecker products of
 // 1D Lobatto matrices: O(p⁴) per cell instead of the O(p⁶) of quadrature, which is what makes
-// degree 10 affordable (the extension norm's reference). Other cells use tensor Gauss rules and
-// dense products K_T = Gxᵀ W Gx + Gyᵀ W Gy, M_T = Φᵀ W Φ.
+// degree 10 affordable (the extension norm's reference). Other cells (triangles among them) use
+// their reference cell's Gauss rule and dense products K_T = Gxᵀ W Gx + Gyᵀ W Gy, M_T = Φᵀ W Φ.
 #include "assembly/element_matrices.hpp"
 
 #include <Eigen/LU>
@@ -15,17 +15,12 @@
 namespace hpcontact::assembly {
 namespace {
 
-// The cell's shapes at its tensor Gauss points and the weights w_q · det DΨ_T there.
+// The cell's shapes at its Gauss points and the weights w_q · det DΨ_T there.
 std::pair<CellValues, Eigen::VectorXd> quadrature_values(const space::H1Space& space, int cell) {
-  const auto& rule = basis::gauss_legendre(
-      cell_quadrature_points(space.cell_degree(cell), space.mesh().cell_geometry(cell) != nullptr));
-  CellValues values = tabulate_cell(space, cell, rule.points, rule.points);
+  const CellQuadrature rule = cell_rule(space, cell);
+  CellValues values = tabulate_cell(space, cell, rule.points);
   Eigen::VectorXd weights(values.jacobians.size());
-  for (std::size_t b = 0; b < rule.points.size(); ++b)
-    for (std::size_t a = 0; a < rule.points.size(); ++a) {
-      const auto q = a + rule.points.size() * b;
-      weights(q) = rule.weights[a] * rule.weights[b] * values.jacobians(q);
-    }
+  for (int q = 0; q < rule.points.size(); ++q) weights(q) = rule.weights[q] * values.jacobians(q);
   return {std::move(values), std::move(weights)};
 }
 
@@ -54,7 +49,7 @@ const ElementMatrices::LineMatrices& ElementMatrices::line(int degree) {
 bool ElementMatrices::constant_jacobian(int cell, Eigen::Matrix2d& jacobian) const {
   if (!kronecker_parallelograms_) return false;
   const mesh::CellMap map(space_->mesh(), cell);
-  if (!map.is_parallelogram()) return false;
+  if (map.type() != mesh::CellType::quadrilateral || !map.is_affine()) return false;
   jacobian = map.jacobian(0.0, 0.0);
   return true;
 }

@@ -28,7 +28,8 @@ class ElementMatrices {
   Directional directional(int cell);
 
   /// The Jacobian DΨ_T if the cell is a parallelogram (and the Kronecker path is on): equal
-  /// Jacobians and degrees give equal element matrices up to the shapes' signs.
+  /// Jacobians and degrees give equal element matrices up to the shapes' signs. False for
+  /// triangles (no tensor structure), which always take the quadrature path.
   bool constant_jacobian(int cell, Eigen::Matrix2d& jacobian) const;
 
  private:

@@ -52,16 +52,11 @@ Eigen::VectorXd assemble_volume_load(const space::H1Space& space, const std::fun
   Eigen::VectorXd load = Eigen::VectorXd::Zero(space.n_dofs());
   for (int c = 0; c < space.mesh().n_cells(); ++c) {
     // Two extra points beyond the matrices: f is general data, not a polynomial.
-    const auto& rule = basis::gauss_legendre(
-        cell_quadrature_points(space.cell_degree(c), space.mesh().cell_geometry(c) != nullptr) + 2);
-    const CellValues cell = tabulate_cell(space, c, rule.points, rule.points);
+    const CellQuadrature rule = cell_rule(space, c, 2);
+    const CellValues cell = tabulate_cell(space, c, rule.points);
     Eigen::VectorXd weighted_f(cell.jacobians.size());
-    for (std::size_t b = 0; b < rule.points.size(); ++b)
-      for (std::size_t a = 0; a < rule.points.size(); ++a) {
-        const auto q = a + rule.points.size() * b;
-        weighted_f(q) = rule.weights[a] * rule.weights[b] * cell.jacobians(q) *
-                        f(mesh::Point(cell.points(q, 0), cell.points(q, 1)));
-      }
+    for (int q = 0; q < rule.points.size(); ++q)
+      weighted_f(q) = rule.weights[q] * cell.jacobians(q) * f(mesh::Point(cell.points(q, 0), cell.points(q, 1)));
     const Eigen::VectorXd local = cell.values.transpose() * weighted_f;
     const auto& shapes = space.cell_shapes(c);
     for (std::size_t s = 0; s < shapes.size(); ++s)
@@ -82,8 +77,8 @@ Eigen::VectorXd assemble_boundary_load(
     // Curved edges: the speed |dΨ/dt| and the normal vary along the edge and are not polynomial.
     const bool curved = mesh.cell_geometry(c) != nullptr;
     const auto& rule = basis::gauss_legendre(space.cell_degree(c) + (curved ? 12 : 4));
-    const auto [xi, eta] = edge_reference_points(local_edge, rule.points);
-    const CellValues values = tabulate_cell(space, c, xi, eta);
+    const CellValues values =
+        tabulate_cell(space, c, edge_reference_points(mesh.cell_type(c), local_edge, rule.points));
     const mesh::CellMap map(mesh, c);
     Eigen::VectorXd weighted_g(rule.points.size());
     for (std::size_t q = 0; q < rule.points.size(); ++q) {

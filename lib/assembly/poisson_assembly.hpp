@@ -6,7 +6,7 @@
 #include <functional>
 #include <set>
 
-#include "mesh/quad_mesh.hpp"
+#include "mesh/mesh.hpp"
 #include "space/h1_space.hpp"
 
 namespace hpcontact::assembly {

@@ -1,4 +1,5 @@
-// Gauss–Legendre rules from GSL's fixed-order tables, cached per size.
+// Gauss–Legendre rules from GSL's fixed-order tables and the collapsed triangle rules built from
+// them, cached per size.
 #include "basis/quadrature.hpp"
 
 #include <gsl/gsl_integration.h>
@@ -24,6 +25,24 @@ const QuadratureRule1D& gauss_legendre(int n) {
   rule.weights.resize(n);
   for (int i = 0; i < n; ++i) gsl_integration_glfixed_point(-1.0, 1.0, i, &rule.points[i], &rule.weights[i], table);
   gsl_integration_glfixed_table_free(table);
+  return rule;
+}
+
+const QuadratureRule2D& collapsed_triangle_rule(int n) {
+  const QuadratureRule1D& line = gauss_legendre(n);
+  static std::map<int, QuadratureRule2D> cache;
+  static std::mutex mutex;
+  std::lock_guard lock(mutex);
+  auto [it, inserted] = cache.try_emplace(n);
+  if (!inserted) return it->second;
+  QuadratureRule2D& rule = it->second;
+  for (int b = 0; b < n; ++b)
+    for (int a = 0; a < n; ++a) {
+      const double u = line.points[a], v = line.points[b];
+      rule.xi.push_back(0.5 * (1.0 + u) * (1.0 - v) - 1.0);
+      rule.eta.push_back(v);
+      rule.weights.push_back(line.weights[a] * line.weights[b] * 0.5 * (1.0 - v));
+    }
   return rule;
 }
 

@@ -1,4 +1,5 @@
-// Gauss–Legendre quadrature on [-1,1] (GSL) and its tensor product on [-1,1]².
+// Gauss–Legendre quadrature on [-1,1] (GSL), and the collapsed (Duffy) rule on the reference
+// triangle (-1,-1), (1,-1), (-1,1) built from it.
 #pragma once
 
 #include <vector>
@@ -13,6 +14,16 @@ struct QuadratureRule1D {
 
 /// @throws InputError if n < 1. Rules are cached: repeated calls are cheap.
 const QuadratureRule1D& gauss_legendre(int n);
+
+/// Points (ξ_q, η_q) and weights of a rule on a 2-D reference cell.
+struct QuadratureRule2D {
+  std::vector<double> xi, eta, weights;
+};
+
+/// The n²-point collapsed rule on the reference triangle: the tensor Gauss rule on the square
+/// mapped by ξ = (1 + u)(1 − v)/2 − 1, η = v, weights times (1 − v)/2. Exact for polynomials of
+/// total degree ≤ 2n − 2. Cached like gauss_legendre.
+const QuadratureRule2D& collapsed_triangle_rule(int n);
 
 /// Number of Gauss points that integrates polynomials of degree `degree` exactly.
 inline int gauss_points_for_degree(int degree) { return degree / 2 + 1; }

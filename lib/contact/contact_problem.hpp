@@ -24,7 +24,7 @@
 #include "contact/inequality_qp.hpp"
 #include "contact/qp_report.hpp"
 #include "mesh/boundary_mesh.hpp"
-#include "mesh/quad_mesh.hpp"
+#include "mesh/mesh.hpp"
 #include "operators/primal_operators.hpp"
 
 namespace hpcontact::contact {
@@ -42,7 +42,7 @@ int segment_constraint_points(ContactProblem problem, int pc, std::optional<int>
 using PointFunction = std::function<double(const mesh::Point&)>;
 
 struct ContactSetup {
-  const mesh::QuadMesh* mesh = nullptr;
+  const mesh::Mesh* mesh = nullptr;
   std::vector<int> cell_degrees;
   const mesh::BoundaryMesh* boundary_mesh = nullptr;
   std::vector<int> segment_degrees;

@@ -17,7 +17,7 @@
 
 namespace hpcontact::driver {
 
-std::vector<assembly::Material> scene_materials(const scene::Scene& scene, const mesh::QuadMesh& mesh) {
+std::vector<assembly::Material> scene_materials(const scene::Scene& scene, const mesh::Mesh& mesh) {
   const Expression young(scene.young, scene.where("material.E") + ": key 'material.E'");
   const Expression poisson(scene.poisson, scene.where("material.nu") + ": key 'material.nu'");
   std::vector<assembly::Material> materials(mesh.n_cells());
@@ -36,8 +36,7 @@ std::vector<assembly::Material> scene_materials(const scene::Scene& scene, const
   return materials;
 }
 
-std::unique_ptr<operators::ElasticOperators> scene_elastic_operators(const scene::Scene& scene,
-                                                                     const mesh::QuadMesh& mesh,
+std::unique_ptr<operators::ElasticOperators> scene_elastic_operators(const scene::Scene& scene, const mesh::Mesh& mesh,
                                                                      const std::vector<int>& cell_degrees,
                                                                      OperatorLog* log) {
   return std::make_unique<operators::ElasticOperators>(mesh, cell_degrees, scene_materials(scene, mesh), log,

@@ -16,11 +16,10 @@ namespace hpcontact::driver {
 
 /// (E, ν) of the scene evaluated at each cell's centre, as Lamé parameters of its plane model.
 /// @throws InputError naming the key, the value and the cell centre where E ≤ 0 or ν ∉ (−1, ½).
-std::vector<assembly::Material> scene_materials(const scene::Scene& scene, const mesh::QuadMesh& mesh);
+std::vector<assembly::Material> scene_materials(const scene::Scene& scene, const mesh::Mesh& mesh);
 
 /// The elastic operators of the scene on T_h (`mesh`, `cell_degrees`): its materials and rollers.
-std::unique_ptr<operators::ElasticOperators> scene_elastic_operators(const scene::Scene& scene,
-                                                                     const mesh::QuadMesh& mesh,
+std::unique_ptr<operators::ElasticOperators> scene_elastic_operators(const scene::Scene& scene, const mesh::Mesh& mesh,
                                                                      const std::vector<int>& cell_degrees,
                                                                      OperatorLog* log = nullptr);
 

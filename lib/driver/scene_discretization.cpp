@@ -85,7 +85,7 @@ std::function<double(double)> multiplier_error_weight(const scene::Scene& scene,
 
 namespace {
 
-infsup::InfSupSetup common_infsup_setup(const scene::Scene& scene, const mesh::QuadMesh& mesh,
+infsup::InfSupSetup common_infsup_setup(const scene::Scene& scene, const mesh::Mesh& mesh,
                                         std::vector<int> cell_degrees, const mesh::BoundaryMesh& boundary_mesh,
                                         std::vector<int> segment_degrees) {
   infsup::InfSupSetup setup;
@@ -101,9 +101,9 @@ infsup::InfSupSetup common_infsup_setup(const scene::Scene& scene, const mesh::Q
 
 }  // namespace
 
-infsup::InfSupSetup infsup_setup_of(const scene::Scene& scene, const mesh::QuadMesh& mesh,
-                                    std::vector<int> cell_degrees, const mesh::BoundaryMesh& boundary_mesh,
-                                    std::vector<int> segment_degrees, const operators::PrimalOperators& primal) {
+infsup::InfSupSetup infsup_setup_of(const scene::Scene& scene, const mesh::Mesh& mesh, std::vector<int> cell_degrees,
+                                    const mesh::BoundaryMesh& boundary_mesh, std::vector<int> segment_degrees,
+                                    const operators::PrimalOperators& primal) {
   auto setup = common_infsup_setup(scene, mesh, std::move(cell_degrees), boundary_mesh, std::move(segment_degrees));
   setup.primal = &primal;
   if (setup.problem == infsup::PairingProblem::friction) {
@@ -115,9 +115,9 @@ infsup::InfSupSetup infsup_setup_of(const scene::Scene& scene, const mesh::QuadM
   return setup;
 }
 
-infsup::InfSupSetup infsup_setup_of(const scene::Scene& scene, const mesh::QuadMesh& mesh,
-                                    std::vector<int> cell_degrees, const mesh::BoundaryMesh& boundary_mesh,
-                                    std::vector<int> segment_degrees, const operators::ElasticOperators& elastic) {
+infsup::InfSupSetup infsup_setup_of(const scene::Scene& scene, const mesh::Mesh& mesh, std::vector<int> cell_degrees,
+                                    const mesh::BoundaryMesh& boundary_mesh, std::vector<int> segment_degrees,
+                                    const operators::ElasticOperators& elastic) {
   auto setup = common_infsup_setup(scene, mesh, std::move(cell_degrees), boundary_mesh, std::move(segment_degrees));
   setup.elastic = &elastic;
   setup.primal_norm = scene.primal_norm;

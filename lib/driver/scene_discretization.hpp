@@ -13,7 +13,7 @@
 #include "infsup/infsup_operators.hpp"
 #include "mesh/boundary_mesh.hpp"
 #include "mesh/contact_boundary.hpp"
-#include "mesh/quad_mesh.hpp"
+#include "mesh/mesh.hpp"
 #include "operators/elastic_operators.hpp"
 #include "operators/primal_operators.hpp"
 #include "scene/scene.hpp"
@@ -22,7 +22,7 @@
 namespace hpcontact::driver {
 
 struct SceneDiscretization {
-  mesh::QuadMesh mesh;
+  mesh::Mesh mesh;
   std::unique_ptr<mesh::ContactBoundary> contact;  ///< refers to `mesh`
   std::unique_ptr<mesh::BoundaryMesh> boundary_mesh;
   std::vector<int> cell_degrees, segment_degrees;
@@ -55,14 +55,14 @@ std::function<double(double)> multiplier_error_weight(const scene::Scene& scene,
 /// The inf-sup pairing of the scene ([infsup] problem: (11), or (22) with the scene's s) in its
 /// H^{-1/2} realization ([infsup] norm) on T_h (`mesh`, `cell_degrees`) and T_{C,H}
 /// (`boundary_mesh`, `segment_degrees`); `primal` must belong to T_h.
-infsup::InfSupSetup infsup_setup_of(const scene::Scene& scene, const mesh::QuadMesh& mesh,
-                                    std::vector<int> cell_degrees, const mesh::BoundaryMesh& boundary_mesh,
-                                    std::vector<int> segment_degrees, const operators::PrimalOperators& primal);
+infsup::InfSupSetup infsup_setup_of(const scene::Scene& scene, const mesh::Mesh& mesh, std::vector<int> cell_degrees,
+                                    const mesh::BoundaryMesh& boundary_mesh, std::vector<int> segment_degrees,
+                                    const operators::PrimalOperators& primal);
 /// The same for an elastic scene: the normal multiplier (problem friction: the normal and the
 /// tangential one) paired with [S^p(T_h)]² in [infsup] primal_norm; `elastic` built on T_h.
-infsup::InfSupSetup infsup_setup_of(const scene::Scene& scene, const mesh::QuadMesh& mesh,
-                                    std::vector<int> cell_degrees, const mesh::BoundaryMesh& boundary_mesh,
-                                    std::vector<int> segment_degrees, const operators::ElasticOperators& elastic);
+infsup::InfSupSetup infsup_setup_of(const scene::Scene& scene, const mesh::Mesh& mesh, std::vector<int> cell_degrees,
+                                    const mesh::BoundaryMesh& boundary_mesh, std::vector<int> segment_degrees,
+                                    const operators::ElasticOperators& elastic);
 
 /// One contact problem of a scene, solved from scratch with its own operators.
 struct SceneContactRun {

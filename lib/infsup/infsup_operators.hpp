@@ -10,7 +10,7 @@
 
 #include "assembly/coupling.hpp"
 #include "mesh/boundary_mesh.hpp"
-#include "mesh/quad_mesh.hpp"
+#include "mesh/mesh.hpp"
 #include "norms/gram_ladder.hpp"
 #include "operators/elastic_operators.hpp"
 #include "operators/primal_operators.hpp"
@@ -26,7 +26,7 @@ std::string to_string(GramNorm norm);
 std::string to_string(PairingProblem problem);
 
 struct InfSupSetup {
-  const mesh::QuadMesh* mesh = nullptr;
+  const mesh::Mesh* mesh = nullptr;
   std::vector<int> cell_degrees;  ///< p_T
   const mesh::BoundaryMesh* boundary_mesh = nullptr;
   std::vector<int> segment_degrees;  ///< p_C per segment

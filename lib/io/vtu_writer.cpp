@@ -8,17 +8,56 @@
 #include "io/atomic_file.hpp"
 
 namespace hpcontact::io {
+namespace {
+
+// A cell's reference cell cut into k × k quadrilaterals (square) or k² triangles (triangle): the
+// lattice points and the sub-cells' corners (counterclockwise) as indices into them.
+struct Subdivision {
+  assembly::ReferencePoints points;
+  std::vector<std::vector<int>> cells;
+  int vtk_type = 9;  // VTK_QUAD; VTK_TRIANGLE = 5
+};
+
+Subdivision subdivide(mesh::CellType type, int k) {
+  Subdivision out;
+  std::vector<double> t(k + 1);
+  for (int i = 0; i <= k; ++i) t[i] = -1.0 + 2.0 * i / k;
+  if (type == mesh::CellType::quadrilateral) {
+    out.points = assembly::tensor_points(t, t);
+    for (int j = 0; j < k; ++j)
+      for (int i = 0; i < k; ++i) {
+        const int a = j * (k + 1) + i;
+        out.cells.push_back({a, a + 1, a + k + 2, a + k + 1});
+      }
+    return out;
+  }
+  out.vtk_type = 5;
+  std::vector<std::vector<int>> index(k + 1);
+  for (int j = 0; j <= k; ++j)
+    for (int i = 0; i + j <= k; ++i) {
+      index[j].push_back(out.points.size());
+      out.points.xi.push_back(t[i]);
+      out.points.eta.push_back(t[j]);
+    }
+  for (int j = 0; j < k; ++j)
+    for (int i = 0; i + j < k; ++i) {
+      out.cells.push_back({index[j][i], index[j][i + 1], index[j + 1][i]});
+      if (i + j + 1 < k) out.cells.push_back({index[j][i + 1], index[j + 1][i + 1], index[j + 1][i]});
+    }
+  return out;
+}
+
+}  // namespace
 
 void write_vtu_fields(const std::filesystem::path& path, const space::H1Space& space,
                       const std::vector<VtuField>& fields, int subdivisions) {
   std::string points, connectivity, offsets, types;
   std::vector<std::string> values(fields.size());
-  int n_points = 0, n_cells = 0;
+  int n_points = 0, n_cells = 0, n_connectivity = 0;
   for (int c = 0; c < space.mesh().n_cells(); ++c) {
     const int k = subdivisions > 0 ? subdivisions : std::max(space.cell_degree(c), 1);
-    std::vector<double> t(k + 1);
-    for (int i = 0; i <= k; ++i) t[i] = -1.0 + 2.0 * i / k;
-    const auto cell = assembly::tabulate_cell(space, c, t, t);
+    const Subdivision pieces = subdivide(space.mesh().cell_type(c), k);
+    const auto cell = assembly::tabulate_cell(space, c, pieces.points);
     const int first = n_points;
     for (int q = 0; q < cell.points.rows(); ++q)
       points += fmt::format("{:.17g} {:.17g} 0\n", cell.points(q, 0), cell.points(q, 1));
@@ -30,13 +69,15 @@ void write_vtu_fields(const std::filesystem::path& path, const space::H1Space& s
       }
     }
     n_points += static_cast<int>(cell.points.rows());
-    for (int j = 0; j < k; ++j)
-      for (int i = 0; i < k; ++i) {
-        const int a = first + j * (k + 1) + i;
-        connectivity += fmt::format("{} {} {} {}\n", a, a + 1, a + k + 2, a + k + 1);
-        offsets += fmt::format("{}\n", 4 * (++n_cells));
-        types += "9\n";  // VTK_QUAD
-      }
+    for (const auto& piece : pieces.cells) {
+      for (std::size_t v = 0; v < piece.size(); ++v)
+        connectivity += fmt::format("{}{}", v ? " " : "", first + piece[v]);
+      connectivity += "\n";
+      n_connectivity += static_cast<int>(piece.size());
+      offsets += fmt::format("{}\n", n_connectivity);
+      types += fmt::format("{}\n", pieces.vtk_type);
+      ++n_cells;
+    }
   }
   AtomicFile file(path);
   auto& out = file.stream();

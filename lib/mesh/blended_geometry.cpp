@@ -32,8 +32,8 @@ BlendedGeometry BlendedGeometry::restricted(double xi0, double xi1, double eta0,
 std::pair<Point, Point> BlendedGeometry::deviation(int local_edge, double s) const {
   const Side& side = sides_[local_edge];
   if (!side.curve) return {Point::Zero(), Point::Zero()};
-  const Point& a = corners_[kLocalEdgeVertices[local_edge][0]];
-  const Point& b = corners_[kLocalEdgeVertices[local_edge][1]];
+  const Point& a = corners_[local_edge_vertices(CellType::quadrilateral, local_edge)[0]];
+  const Point& b = corners_[local_edge_vertices(CellType::quadrilateral, local_edge)[1]];
   const double t = side.reversed ? -s : s;
   const Point gamma = side.curve->point(t);
   const Point slope = (side.reversed ? -1.0 : 1.0) * side.curve->derivative(t);

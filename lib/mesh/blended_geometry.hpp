@@ -11,13 +11,13 @@
 #include <memory>
 
 #include "mesh/edge_curve.hpp"
-#include "mesh/quad_mesh.hpp"
+#include "mesh/mesh.hpp"
 
 namespace hpcontact::mesh {
 
 class BlendedGeometry {
  public:
-  /// A cell with straight sides between `corners` (local vertex order of QuadMesh).
+  /// A cell with straight sides between `corners` (local vertex order of Mesh).
   explicit BlendedGeometry(const std::array<Point, 4>& corners);
 
   /// Side `local_edge` follows `curve`; `reversed`: the curve runs against the local edge

@@ -6,13 +6,22 @@
 
 namespace hpcontact::mesh {
 
-CellMap::CellMap(const QuadMesh& mesh, int cell) {
-  const auto& v = mesh.cell(cell);
-  const Point &p0 = mesh.vertex(v[0]), &p1 = mesh.vertex(v[1]), &p2 = mesh.vertex(v[2]), &p3 = mesh.vertex(v[3]);
-  a_ = 0.25 * (p0 + p1 + p2 + p3);
-  b_ = 0.25 * (-p0 + p1 + p2 - p3);
-  c_ = 0.25 * (-p0 - p1 + p2 + p3);
-  d_ = 0.25 * (p0 - p1 + p2 - p3);
+CellMap::CellMap(const Mesh& mesh, int cell) : type_(mesh.cell_type(cell)) {
+  const auto v = mesh.cell(cell);
+  const Point &p0 = mesh.vertex(v[0]), &p1 = mesh.vertex(v[1]), &p2 = mesh.vertex(v[2]);
+  if (type_ == CellType::triangle) {
+    // Ψ(-1,-1) = p0, Ψ(1,-1) = p1, Ψ(-1,1) = p2.
+    a_ = 0.5 * (p1 + p2);
+    b_ = 0.5 * (p1 - p0);
+    c_ = 0.5 * (p2 - p0);
+    d_ = Point::Zero();
+  } else {
+    const Point& p3 = mesh.vertex(v[3]);
+    a_ = 0.25 * (p0 + p1 + p2 + p3);
+    b_ = 0.25 * (-p0 + p1 + p2 - p3);
+    c_ = 0.25 * (-p0 - p1 + p2 + p3);
+    d_ = 0.25 * (p0 - p1 + p2 - p3);
+  }
   curved_ = mesh.cell_geometry(cell);
 }
 
@@ -21,7 +30,7 @@ Point CellMap::map(double xi, double eta) const {
   return a_ + b_ * xi + c_ * eta + d_ * xi * eta;
 }
 
-bool CellMap::is_parallelogram() const { return !curved_ && d_.norm() <= 1e-13 * (b_.norm() + c_.norm()); }
+bool CellMap::is_affine() const { return !curved_ && d_.norm() <= 1e-13 * (b_.norm() + c_.norm()); }
 
 Eigen::Matrix2d CellMap::jacobian(double xi, double eta) const {
   if (curved_) return curved_->jacobian(xi, eta);
@@ -41,27 +50,13 @@ std::optional<Eigen::Vector2d> CellMap::inverse(const Point& x, double tolerance
     // Far outside the cell the Newton iterate may wander off; stop early.
     if (ref.cwiseAbs().maxCoeff() > 10.0) return std::nullopt;
   }
-  if (ref.cwiseAbs().maxCoeff() > 1.0 + tolerance) return std::nullopt;
-  return ref.cwiseMax(-1.0).cwiseMin(1.0);
-}
-
-Eigen::Vector2d local_edge_point(int local_edge, double t) {
-  switch (local_edge) {
-    case 0:
-      return {t, -1.0};
-    case 1:
-      return {1.0, t};
-    case 2:
-      return {t, 1.0};
-    default:
-      return {-1.0, t};
-  }
+  if (!reference_contains(type_, ref, tolerance)) return std::nullopt;
+  return clamp_to_reference(type_, ref);
 }
 
 Point CellMap::edge_tangent(int local_edge, double t) const {
-  const Eigen::Vector2d ref = local_edge_point(local_edge, t);
-  // Local edges 0 and 2 run along ξ, 1 and 3 along η.
-  return jacobian(ref.x(), ref.y()).col(local_edge % 2);
+  const Eigen::Vector2d ref = local_edge_point(type_, local_edge, t);
+  return jacobian(ref.x(), ref.y()) * local_edge_direction(type_, local_edge);
 }
 
 }  // namespace hpcontact::mesh

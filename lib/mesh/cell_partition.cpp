@@ -31,14 +31,14 @@ void bisect(const std::vector<Point>& centroids, std::vector<int>& cells, int be
 
 }  // namespace
 
-std::vector<int> bisect_cells(const QuadMesh& mesh, int parts) {
+std::vector<int> bisect_cells(const Mesh& mesh, int parts) {
   HPC_VERIFY(parts >= 1, "a partition needs at least one part");
   std::vector<Point> centroids(mesh.n_cells());
   std::vector<int> cells(mesh.n_cells());
   for (int c = 0; c < mesh.n_cells(); ++c) {
     Point sum = Point::Zero();
     for (int v : mesh.cell(c)) sum += mesh.vertex(v);
-    centroids[c] = 0.25 * sum;
+    centroids[c] = sum / mesh.cell_size(c);
     cells[c] = c;
   }
   std::vector<int> part_of_cell(mesh.n_cells(), 0);

@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "mesh/quad_mesh.hpp"
+#include "mesh/mesh.hpp"
 
 namespace hpcontact::mesh {
 
@@ -12,6 +12,6 @@ namespace hpcontact::mesh {
 /// median centroid coordinate along the longer side of the centroids' bounding box, in sizes
 /// proportional to the parts on either side; ties break by cell index, so every process computes
 /// the same partition. Part sizes differ by at most one cell per bisection level.
-std::vector<int> bisect_cells(const QuadMesh& mesh, int parts);
+std::vector<int> bisect_cells(const Mesh& mesh, int parts);
 
 }  // namespace hpcontact::mesh

@@ -14,7 +14,7 @@ namespace hpcontact::mesh {
 /// σ(t) = ∫_{-1}^{t} |dΨ/dt| along a curved local edge, and its inverse.
 class EdgeArcLength {
  public:
-  EdgeArcLength(const QuadMesh& mesh, int cell, int local_edge) : map_(mesh, cell), local_edge_(local_edge) {
+  EdgeArcLength(const Mesh& mesh, int cell, int local_edge) : map_(mesh, cell), local_edge_(local_edge) {
     panel_start_.push_back(0.0);
     for (int k = 0; k < kPanels; ++k) panel_start_.push_back(panel_start_.back() + integral(panel(k), panel(k + 1)));
   }
@@ -66,7 +66,7 @@ bool lexicographically_before(const Point& a, const Point& b) {
 }
 
 // The contact edges at each vertex of Γ_C. @throws InputError if Γ_C is empty or branches.
-std::map<int, std::vector<int>> contact_edges_at_vertices(const QuadMesh& mesh) {
+std::map<int, std::vector<int>> contact_edges_at_vertices(const Mesh& mesh) {
   std::map<int, std::vector<int>> at;
   for (int e : mesh.boundary_edges())
     if (mesh.edge_part(e) == BoundaryPart::contact)
@@ -84,7 +84,7 @@ struct Walk {
 };
 
 // Follows Γ_C from `start` along `first`, until an end of the curve or back at `start`.
-Walk walk_from(const QuadMesh& mesh, const std::map<int, std::vector<int>>& at, int start, int first) {
+Walk walk_from(const Mesh& mesh, const std::map<int, std::vector<int>>& at, int start, int first) {
   Walk walk{{start}, {}};
   int vertex = start, edge = first;
   while (edge >= 0) {
@@ -103,7 +103,7 @@ Walk walk_from(const QuadMesh& mesh, const std::map<int, std::vector<int>>& at, 
 
 // The zones of Γ_C: open curves from their lexicographically first end, then closed curves from
 // their lexicographically first vertex, running with Ω on their left; all ordered by start point.
-std::vector<Walk> contact_zones(const QuadMesh& mesh) {
+std::vector<Walk> contact_zones(const Mesh& mesh) {
   const auto at = contact_edges_at_vertices(mesh);
   std::vector<Walk> zones;
   std::map<int, bool> used;
@@ -139,7 +139,7 @@ std::vector<Walk> contact_zones(const QuadMesh& mesh) {
 
 }  // namespace
 
-ContactBoundary::ContactBoundary(const QuadMesh& mesh) : mesh_(&mesh) {
+ContactBoundary::ContactBoundary(const Mesh& mesh) : mesh_(&mesh) {
   for (const Walk& walk : contact_zones(mesh)) {
     ContactZone zone;
     zone.s_begin = length_;
@@ -160,8 +160,9 @@ ContactBoundary::ContactBoundary(const QuadMesh& mesh) : mesh_(&mesh) {
         length_ += mesh.edge_length(e);
       }
       trace.s_end = length_;
-      // The local edge parameter runs from local vertex kLocalEdgeVertices[.][0] to [1].
-      const int local_start = mesh.cell(trace.cell)[kLocalEdgeVertices[trace.local_edge][0]];
+      // The local edge parameter runs from the local edge's start vertex to its end.
+      const int local_start =
+          mesh.cell(trace.cell)[local_edge_vertices(mesh.cell_type(trace.cell), trace.local_edge)[0]];
       trace.reversed = local_start != vertex;
       edges_.push_back(trace);
       edge_ends_.push_back({mesh.vertex(vertex), mesh.vertex(walk.vertices[k + 1])});
@@ -205,7 +206,7 @@ Point ContactBoundary::point_at(double s) const {
     const double fraction = (s - e.s_begin) / (e.s_end - e.s_begin);
     return (1.0 - fraction) * edge_ends_[k][0] + fraction * edge_ends_[k][1];
   }
-  const Eigen::Vector2d ref = local_edge_point(e.local_edge, e.local_parameter(s));
+  const Eigen::Vector2d ref = local_edge_point(mesh_->cell_type(e.cell), e.local_edge, e.local_parameter(s));
   return CellMap(*mesh_, e.cell).map(ref.x(), ref.y());
 }
 

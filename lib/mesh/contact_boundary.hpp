@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "mesh/boundary_mesh.hpp"
-#include "mesh/quad_mesh.hpp"
+#include "mesh/mesh.hpp"
 
 namespace hpcontact::mesh {
 
@@ -45,9 +45,9 @@ class ContactBoundary {
   /// lexicographically first vertex, running with Ω on its left. Zones follow one another in the
   /// order of their start points.
   /// @throws InputError if Γ_C is empty or branches (a vertex with three or more contact edges).
-  explicit ContactBoundary(const QuadMesh& mesh);
+  explicit ContactBoundary(const Mesh& mesh);
 
-  const QuadMesh& mesh() const { return *mesh_; }
+  const Mesh& mesh() const { return *mesh_; }
   double length() const { return length_; }
   const std::vector<TraceEdge>& edges() const { return edges_; }
   /// Arc lengths of the trace vertices: 0 = s_0 < ... < s_k = L.
@@ -71,7 +71,7 @@ class ContactBoundary {
   int edge_index_at(double s) const;
 
  private:
-  const QuadMesh* mesh_;
+  const Mesh* mesh_;
   std::vector<TraceEdge> edges_;
   std::vector<std::array<Point, 2>> edge_ends_;  ///< each trace edge's ends in the direction of s
   std::vector<ContactZone> zones_;

@@ -6,7 +6,7 @@
 #include <functional>
 #include <vector>
 
-#include "mesh/quad_mesh.hpp"
+#include "mesh/mesh.hpp"
 
 namespace hpcontact::mesh {
 

@@ -141,13 +141,14 @@ void Session::open(const std::string& path) {
   if (ierr != 0) fail(path, "read the file");
 }
 
-void Session::generate_quadrilaterals(const std::string& path, std::optional<double> max_size) {
+void Session::generate(const std::string& path, std::optional<double> max_size, bool quadrilaterals) {
   const Library& l = library();
   int ierr = 0;
   // Curved boundaries come from the geometry itself (curve_points), so first-order cells suffice.
-  for (const auto& [name, value] : {std::pair{"Mesh.RecombineAll", 1.0},
+  const double recombine = quadrilaterals ? 1.0 : 0.0;
+  for (const auto& [name, value] : {std::pair{"Mesh.RecombineAll", recombine},
                                     {"Mesh.Algorithm", 6.0},
-                                    {"Mesh.SubdivisionAlgorithm", 1.0},
+                                    {"Mesh.SubdivisionAlgorithm", recombine},
                                     {"Mesh.ElementOrder", 1.0}})
     l.set_number(name, value, &ierr);
   if (max_size) l.set_number("Mesh.MeshSizeMax", *max_size, &ierr);

@@ -38,13 +38,13 @@ class Session {
   /// Clears the model and reads `path` into it. @throws InputError with Gmsh's message (and
   /// restarts Gmsh, which ignores later files after an error inside a reader).
   void open(const std::string& path);
-  /// Meshes the geometry read by open() (a .geo file) into first-order quadrilaterals: Gmsh's
-  /// frontal-Delaunay triangulation recombined, every triangle left split into quadrilaterals
-  /// (Mesh.RecombineAll = 1, Mesh.Algorithm = 6, Mesh.SubdivisionAlgorithm = 1,
-  /// Mesh.ElementOrder = 1: curved sides are taken from the geometry, see curve_points), elements
-  /// at most `max_size` (Mesh.MeshSizeMax) before the split when given. @throws InputError with
-  /// Gmsh's message.
-  void generate_quadrilaterals(const std::string& path, std::optional<double> max_size);
+  /// Meshes the geometry read by open() (a .geo file) into first-order cells: Gmsh's
+  /// frontal-Delaunay triangulation (Mesh.Algorithm = 6, Mesh.ElementOrder = 1: curved sides are
+  /// taken from the geometry, see curve_points), with `quadrilaterals` recombined and every
+  /// triangle left split into quadrilaterals (Mesh.RecombineAll = 1, Mesh.SubdivisionAlgorithm =
+  /// 1), else kept as triangles (both options 0); elements at most `max_size` (Mesh.MeshSizeMax)
+  /// before any split when given. @throws InputError with Gmsh's message.
+  void generate(const std::string& path, std::optional<double> max_size, bool quadrilaterals);
   int dimension() const;
   /// Elements of dimension `dim` on entity `tag` (-1: all).
   ElementBlocks elements(int dim, int tag = -1) const;

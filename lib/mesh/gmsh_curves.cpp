@@ -14,7 +14,7 @@ namespace {
 
 using Tag = std::size_t;
 
-std::map<std::pair<int, int>, int> edges_by_vertices(const QuadMesh& mesh) {
+std::map<std::pair<int, int>, int> edges_by_vertices(const Mesh& mesh) {
   std::map<std::pair<int, int>, int> out;
   for (int e = 0; e < mesh.n_edges(); ++e) out[{mesh.edge(e)[0], mesh.edge(e)[1]}] = e;
   return out;
@@ -50,7 +50,7 @@ EdgeCurve sample_curve(const gmsh_api::Session& gmsh, int curve, double u_a, dou
 
 void curve_edges_from_geometry(const gmsh_api::Session& gmsh, const std::string& path,
                                const std::unordered_map<Tag, int>& vertex_of,
-                               const std::unordered_map<Tag, Point>& position, QuadMesh& mesh) {
+                               const std::unordered_map<Tag, Point>& position, Mesh& mesh) {
   const auto edge_of = edges_by_vertices(mesh);
   for (int curve : gmsh.curves()) {
     if (gmsh.curve_type(curve) == "Line") continue;
@@ -85,7 +85,7 @@ void curve_edges_from_geometry(const gmsh_api::Session& gmsh, const std::string&
 
 void curve_edges_from_nodes(const std::vector<GmshEdgeNodes>& edges, const std::string& path,
                             const std::unordered_map<Tag, int>& vertex_of,
-                            const std::unordered_map<Tag, Point>& position, QuadMesh& mesh) {
+                            const std::unordered_map<Tag, Point>& position, Mesh& mesh) {
   const auto edge_of = edges_by_vertices(mesh);
   std::vector<bool> done(mesh.n_edges(), false);
   for (const auto& nodes : edges) {

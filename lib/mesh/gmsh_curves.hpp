@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "mesh/gmsh_api.hpp"
-#include "mesh/quad_mesh.hpp"
+#include "mesh/mesh.hpp"
 
 namespace hpcontact::mesh {
 
@@ -26,12 +26,12 @@ using GmshEdgeNodes = std::vector<std::size_t>;
 ///         crosses the seam of a closed curve's parametrization.
 void curve_edges_from_geometry(const gmsh_api::Session& gmsh, const std::string& path,
                                const std::unordered_map<std::size_t, int>& vertex_of,
-                               const std::unordered_map<std::size_t, Point>& position, QuadMesh& mesh);
+                               const std::unordered_map<std::size_t, Point>& position, Mesh& mesh);
 
 /// Every edge whose high-order nodes leave its chord (by more than 1e-12 of its length) follows
 /// the polynomial through them (equally spaced in the edge's parameter, as Gmsh places them).
 void curve_edges_from_nodes(const std::vector<GmshEdgeNodes>& edges, const std::string& path,
                             const std::unordered_map<std::size_t, int>& vertex_of,
-                            const std::unordered_map<std::size_t, Point>& position, QuadMesh& mesh);
+                            const std::unordered_map<std::size_t, Point>& position, Mesh& mesh);
 
 }  // namespace hpcontact::mesh

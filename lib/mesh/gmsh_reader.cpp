@@ -1,5 +1,5 @@
 // read_gmsh_mesh through the Gmsh API (mesh/gmsh_api.hpp): Gmsh parses the file (MSH 2 and 4, ASCII and
-// binary); this file turns its quadrilaterals into a QuadMesh, its physical curves into boundary
+// binary); this file turns its quadrilaterals and triangles into a Mesh, its physical curves into boundary
 // edge labels and its curved geometry into curved edges (mesh/gmsh_curves.hpp), with errors that
 // say what to change.
 #include "mesh/gmsh_reader.hpp"
@@ -23,39 +23,36 @@ namespace {
 using Tag = std::size_t;
 
 /// Twice the signed area of the polygon cell (positive if counterclockwise).
-double twice_signed_area(const std::vector<Point>& vertices, const std::array<int, 4>& cell) {
+double twice_signed_area(const std::vector<Point>& vertices, const std::array<int, 4>& cell, int n) {
   double sum = 0.0;
-  for (int k = 0; k < 4; ++k) {
+  for (int k = 0; k < n; ++k) {
     const Point& a = vertices[cell[k]];
-    const Point& b = vertices[cell[(k + 1) % 4]];
+    const Point& b = vertices[cell[(k + 1) % n]];
     sum += a.x() * b.y() - b.x() * a.y();
   }
   return sum;
 }
 
-// What to change in Gmsh when the file holds a 2-D element type other than a quadrilateral.
+// What to change in Gmsh when the file holds a 2-D element type other than a quadrilateral or a
+// triangle (polygons, serendipity-free types are all one of the two in 2-D Gmsh files).
 std::string unsupported_cell(const gmsh_api::Session& gmsh, const std::string& path, int type) {
   const auto [name, order] = gmsh.element_type(type);
-  const std::string what =
-      fmt::format("{}: only quadrilaterals (of any order) are supported; found type {} ({})", path, type, name);
-  if (name.starts_with("Triangle"))
-    return what +
-           ": triangles are not supported yet; recombine them into quadrilaterals in Gmsh "
-           "(Recombine Surface{...}; or Mesh.RecombineAll = 1, with Mesh.Algorithm = 8)";
-  return what;
+  return fmt::format(
+      "{}: only triangles and quadrilaterals (of any order) are supported; found type {} ({}): mesh the "
+      "surface with Gmsh's default 2-D algorithms (Mesh.Algorithm = 6), optionally recombined",
+      path, type, name);
 }
 
-// Reads `path` into Gmsh's model; a .geo geometry is meshed into quadrilaterals there (returns
-// whether it was one).
-bool open_in_gmsh(gmsh_api::Session& gmsh, const std::string& path, std::optional<double> geo_mesh_size) {
+// Reads `path` into Gmsh's model; a .geo geometry is meshed there (returns whether it was one).
+bool open_in_gmsh(gmsh_api::Session& gmsh, const std::string& path, const GeoMeshing& geo) {
   if (!std::ifstream(path)) throw InputError(path + ": cannot open the Gmsh mesh file");
   const bool geometry = std::filesystem::path(path).extension() == ".geo";
-  if (geo_mesh_size && !geometry)
+  if (geo.mesh_size && !geometry)
     throw InputError(path + ": a mesh size applies to Gmsh geometry files (.geo) only, not to a mesh file");
   gmsh.open(path);
-  if (geometry) gmsh.generate_quadrilaterals(path, geo_mesh_size);
+  if (geometry) gmsh.generate(path, geo.mesh_size, geo.cells == GeneratedCells::quadrilaterals);
   if (gmsh.dimension() < 2)
-    throw InputError(path + ": holds no 2-D mesh (no $Nodes or $Elements of quadrilaterals; is it a mesh file?)");
+    throw InputError(path + ": holds no 2-D mesh (no $Nodes or $Elements of 2-D cells; is it a mesh file?)");
   return geometry;
 }
 
@@ -69,41 +66,46 @@ std::pair<std::vector<Tag>, std::unordered_map<Tag, Point>> model_nodes(const gm
   return {std::move(tags), std::move(position)};
 }
 
-struct ModelQuads {
-  std::vector<std::array<Tag, 4>> corners;
-  std::vector<GmshEdgeNodes> edges;  ///< of high-order quadrilaterals: end, edge nodes, end
+struct ModelCells {
+  std::vector<std::array<Tag, 4>> corners;  ///< a triangle's fourth entry is 0 (Gmsh tags start at 1)
+  std::vector<int> sizes;                   ///< 3 or 4 corners
+  std::vector<GmshEdgeNodes> edges;         ///< of high-order cells: end, edge nodes, end
 };
 
-// The quadrilaterals of the model: corner node tags, and the nodes along each edge of high-order
-// ones (Gmsh numbers the 4 corners first, then edge k's nodes from corner k to corner k + 1).
-// @throws InputError for any other 2-D element.
-ModelQuads model_quads(const gmsh_api::Session& gmsh, const std::string& path) {
+// The quadrilaterals and triangles of the model: corner node tags, and the nodes along each edge
+// of high-order ones (Gmsh numbers the corners first, then edge k's nodes from corner k to corner
+// k + 1). @throws InputError for any other 2-D element.
+ModelCells model_cells(const gmsh_api::Session& gmsh, const std::string& path) {
   const auto blocks = gmsh.elements(2);
-  ModelQuads out;
+  ModelCells out;
   for (std::size_t t = 0; t < blocks.types.size(); ++t) {
     const auto [name, order] = gmsh.element_type(blocks.types[t]);
-    if (!name.starts_with("Quadrilateral")) throw InputError(unsupported_cell(gmsh, path, blocks.types[t]));
+    int n = 0;
+    if (name.starts_with("Quadrilateral")) n = 4;
+    if (name.starts_with("Triangle")) n = 3;
+    if (n == 0) throw InputError(unsupported_cell(gmsh, path, blocks.types[t]));
     const auto& nodes = blocks.nodes[t];
     const std::size_t per_element = nodes.size() / blocks.tags[t].size();
     for (std::size_t k = 0; k < blocks.tags[t].size(); ++k) {
       const Tag* element = nodes.data() + per_element * k;
-      out.corners.push_back({element[0], element[1], element[2], element[3]});
-      for (int side = 0; order > 1 && side < 4; ++side) {
+      out.corners.push_back({element[0], element[1], element[2], n == 4 ? element[3] : Tag{0}});
+      out.sizes.push_back(n);
+      for (int side = 0; order > 1 && side < n; ++side) {
         GmshEdgeNodes along{element[side]};
-        for (int j = 0; j < order - 1; ++j) along.push_back(element[4 + side * (order - 1) + j]);
-        along.push_back(element[(side + 1) % 4]);
+        for (int j = 0; j < order - 1; ++j) along.push_back(element[n + side * (order - 1) + j]);
+        along.push_back(element[(side + 1) % n]);
         out.edges.push_back(std::move(along));
       }
     }
   }
-  if (out.corners.empty()) throw InputError(path + ": holds no quadrilaterals");
+  if (out.corners.empty()) throw InputError(path + ": holds no triangles or quadrilaterals");
   return out;
 }
 
 // Labels the boundary edges on the model's physical curves with the group's name (its tag as text
 // if unnamed).
 void label_physical_curves(const gmsh_api::Session& gmsh, const std::string& path,
-                           const std::unordered_map<Tag, int>& vertex_of, QuadMesh& mesh) {
+                           const std::unordered_map<Tag, int>& vertex_of, Mesh& mesh) {
   std::map<std::pair<int, int>, int> boundary_edge;  // (lower, higher vertex) -> edge
   for (int e : mesh.boundary_edges()) boundary_edge[{mesh.edge(e)[0], mesh.edge(e)[1]}] = e;
   std::map<int, std::string> label_of_curve;
@@ -133,7 +135,7 @@ void label_physical_curves(const gmsh_api::Session& gmsh, const std::string& pat
           if (edge == boundary_edge.end())
             throw InputError(
                 fmt::format("{}: line element {} (nodes {}, {}) of physical group '{}' is not a boundary "
-                            "edge of the quadrilateral mesh",
+                            "edge of the 2-D mesh",
                             path, element_tags[t][k], n0, n1, label));
           mesh.set_edge_label(edge->second, label);
         }
@@ -144,16 +146,16 @@ void label_physical_curves(const gmsh_api::Session& gmsh, const std::string& pat
 
 }  // namespace
 
-QuadMesh read_gmsh_mesh(const std::string& path, std::optional<double> geo_mesh_size) {
+Mesh read_gmsh_mesh(const std::string& path, const GeoMeshing& geo) {
   gmsh_api::Session gmsh;
-  const bool geometry = open_in_gmsh(gmsh, path, geo_mesh_size);
-  const ModelQuads quads = model_quads(gmsh, path);
+  const bool geometry = open_in_gmsh(gmsh, path, geo);
+  const ModelCells model = model_cells(gmsh, path);
   const auto [node_order, position] = model_nodes(gmsh);
-  // Only corner nodes of quadrilaterals become vertices (in Gmsh's node order): geometry points
-  // that no cell uses would be isolated vertices without any basis function support.
+  // Only corner nodes of cells become vertices (in Gmsh's node order): geometry points that no
+  // cell uses would be isolated vertices without any basis function support.
   std::unordered_map<Tag, bool> used;
-  for (const auto& quad : quads.corners)
-    for (Tag tag : quad) used[tag] = true;
+  for (std::size_t c = 0; c < model.corners.size(); ++c)
+    for (int k = 0; k < model.sizes[c]; ++k) used[model.corners[c][k]] = true;
   std::vector<Point> vertices;
   std::unordered_map<Tag, int> vertex_of;
   for (Tag tag : node_order)
@@ -162,19 +164,20 @@ QuadMesh read_gmsh_mesh(const std::string& path, std::optional<double> geo_mesh_
       vertices.push_back(position.at(tag));
     }
   std::vector<std::array<int, 4>> cells;
-  for (const auto& quad : quads.corners) {
-    std::array<int, 4> cell;
-    for (int k = 0; k < 4; ++k) cell[k] = vertex_of.at(quad[k]);
+  for (std::size_t c = 0; c < model.corners.size(); ++c) {
+    const int n = model.sizes[c];
+    std::array<int, 4> cell{-1, -1, -1, -1};
+    for (int k = 0; k < n; ++k) cell[k] = vertex_of.at(model.corners[c][k]);
     // Gmsh orders nodes along the surface orientation, which may be clockwise in the plane.
-    if (twice_signed_area(vertices, cell) < 0.0) std::swap(cell[1], cell[3]);
+    if (twice_signed_area(vertices, cell, n) < 0.0) std::swap(cell[1], cell[n - 1]);
     cells.push_back(cell);
   }
-  QuadMesh mesh(std::move(vertices), std::move(cells), path);
+  Mesh mesh(std::move(vertices), std::move(cells), path);
   label_physical_curves(gmsh, path, vertex_of, mesh);
   if (geometry)
     curve_edges_from_geometry(gmsh, path, vertex_of, position, mesh);
   else
-    curve_edges_from_nodes(quads.edges, path, vertex_of, position, mesh);
+    curve_edges_from_nodes(model.edges, path, vertex_of, position, mesh);
   return mesh;
 }
 

@@ -13,7 +13,7 @@
 
 namespace hpcontact::mesh {
 
-int vertex_at(const QuadMesh& mesh, const Point& point, const std::string& origin) {
+int vertex_at(const Mesh& mesh, const Point& point, const std::string& origin) {
   const double tolerance = 1e-9 * mesh.longest_edge();
   for (int v = 0; v < mesh.n_vertices(); ++v)
     if ((mesh.vertex(v) - point).norm() < tolerance) return v;
@@ -24,7 +24,7 @@ int vertex_at(const QuadMesh& mesh, const Point& point, const std::string& origi
 namespace {
 
 // The index of the centre whose star (the cells sharing it) holds each cell, or -1.
-std::vector<int> stars_of_cells(const QuadMesh& mesh, const std::vector<int>& centres, const std::string& origin) {
+std::vector<int> stars_of_cells(const Mesh& mesh, const std::vector<int>& centres, const std::string& origin) {
   std::vector<int> star_of(mesh.n_cells(), -1);
   for (std::size_t s = 0; s < centres.size(); ++s) {
     if (centres[s] < 0 || centres[s] >= mesh.n_vertices())
@@ -45,7 +45,7 @@ std::vector<int> stars_of_cells(const QuadMesh& mesh, const std::vector<int>& ce
 
 // The innermost cells have the star's shortest edge times ratio^layers; below kFinestRelativeCell
 // of the domain's extent round-off in the vertex coordinates distorts them.
-void check_layer_depth(const QuadMesh& mesh, const std::vector<int>& star_of, double ratio, int layers,
+void check_layer_depth(const Mesh& mesh, const std::vector<int>& star_of, double ratio, int layers,
                        const std::string& origin) {
   const auto& all = mesh.vertices();
   double extent = 0.0, shortest = INFINITY;
@@ -64,8 +64,8 @@ void check_layer_depth(const QuadMesh& mesh, const std::vector<int>& star_of, do
 
 }  // namespace
 
-QuadMesh grade_towards_vertices(const QuadMesh& mesh, const std::vector<int>& centres, double ratio, int layers,
-                                const std::string& origin, std::vector<int>* parents) {
+Mesh grade_towards_vertices(const Mesh& mesh, const std::vector<int>& centres, double ratio, int layers,
+                            const std::string& origin, std::vector<int>* parents) {
   if (!(ratio > 0.0 && ratio < 1.0)) throw_bad_input(origin, "grading", fmt::format("{}", ratio), "must be in (0, 1)");
   if (layers < 0) throw_bad_input(origin, "grading_layers", std::to_string(layers), "must be >= 0");
   if (mesh.has_curved_cells())
@@ -91,25 +91,34 @@ QuadMesh grade_towards_vertices(const QuadMesh& mesh, const std::vector<int>& ce
   std::vector<int> parent;
   for (int c = 0; c < mesh.n_cells(); ++c)
     if (star_of[c] < 0) {
-      cells.push_back(mesh.cell(c));
+      cells.push_back(mesh.cells()[c]);
       parent.push_back(c);
     }
   for (int c = 0; c < mesh.n_cells(); ++c) {
     const int star = star_of[c];
     if (star < 0) continue;
-    const auto& cell = mesh.cell(c);
+    const auto cell = mesh.cell(c);
+    const int n = mesh.cell_size(c);
     const int i = static_cast<int>(std::find(cell.begin(), cell.end(), centres[star]) - cell.begin());
-    const int v1 = cell[(i + 1) % 4], v2 = cell[(i + 2) % 4], v3 = cell[(i + 3) % 4];
-    for (auto [q, r] : {std::pair{v1, v2}, std::pair{v2, v3}})
-      for (int k = 0; k < layers; ++k)
+    // The sides facing the centre are scaled towards it layer by layer; the trapezoids between
+    // two levels are quadrilaterals, and the innermost copy of the cell keeps its type.
+    std::vector<int> outer;
+    for (int k = 1; k < n; ++k) outer.push_back(cell[(i + k) % n]);
+    for (std::size_t side = 0; side + 1 < outer.size(); ++side)
+      for (int k = 0; k < layers; ++k) {
+        const int q = outer[side], r = outer[side + 1];
         cells.push_back(
             {at_level(star, q, k + 1), at_level(star, q, k), at_level(star, r, k), at_level(star, r, k + 1)});
-    cells.push_back(
-        {centres[star], at_level(star, v1, layers), at_level(star, v2, layers), at_level(star, v3, layers)});
+      }
+    if (n == 4)
+      cells.push_back({centres[star], at_level(star, outer[0], layers), at_level(star, outer[1], layers),
+                       at_level(star, outer[2], layers)});
+    else
+      cells.push_back({centres[star], at_level(star, outer[0], layers), at_level(star, outer[1], layers), -1});
     parent.resize(cells.size(), c);
   }
   if (parents) *parents = std::move(parent);
-  QuadMesh graded(std::move(vertices), std::move(cells), origin);
+  Mesh graded(std::move(vertices), std::move(cells), origin);
   // 4. Boundary edges lie on a boundary edge of the input: the same vertices, or on the ray P–V.
   std::map<std::pair<int, int>, int> edge_of;
   for (int e = 0; e < mesh.n_edges(); ++e) edge_of[{mesh.edge(e)[0], mesh.edge(e)[1]}] = e;

@@ -12,7 +12,7 @@
 
 namespace hpcontact::mesh {
 
-QuadMesh make_rectangle_mesh(const Rectangle& r, int n_x, int n_y) {
+Mesh make_rectangle_mesh(const Rectangle& r, int n_x, int n_y) {
   if (n_x < 1) throw_bad_input("rectangle mesh", "n_x", std::to_string(n_x), "must be >= 1");
   if (n_y < 1) throw_bad_input("rectangle mesh", "n_y", std::to_string(n_y), "must be >= 1");
   if (!(r.x_max > r.x_min) || !(r.y_max > r.y_min))
@@ -23,7 +23,7 @@ QuadMesh make_rectangle_mesh(const Rectangle& r, int n_x, int n_y) {
   return make_tensor_mesh(x, y, "rectangle mesh");
 }
 
-QuadMesh make_tensor_mesh(const std::vector<double>& x, const std::vector<double>& y, const std::string& origin) {
+Mesh make_tensor_mesh(const std::vector<double>& x, const std::vector<double>& y, const std::string& origin) {
   for (const auto* nodes : {&x, &y})
     if (nodes->size() < 2 || !std::is_sorted(nodes->begin(), nodes->end(), std::less_equal<>()))
       throw InputError(origin + ": the nodes must be strictly increasing, at least two in each direction");
@@ -37,7 +37,7 @@ QuadMesh make_tensor_mesh(const std::vector<double>& x, const std::vector<double
   cells.reserve(static_cast<std::size_t>(n_x) * n_y);
   for (int j = 0; j < n_y; ++j)
     for (int i = 0; i < n_x; ++i) cells.push_back({index(i, j), index(i + 1, j), index(i + 1, j + 1), index(i, j + 1)});
-  QuadMesh mesh(std::move(vertices), std::move(cells), origin);
+  Mesh mesh(std::move(vertices), std::move(cells), origin);
   const double tol_x = 1e-9 * (x.back() - x.front()), tol_y = 1e-9 * (y.back() - y.front());
   for (int e : mesh.boundary_edges()) {
     const Point m = mesh.edge_midpoint(e);
@@ -121,7 +121,7 @@ std::vector<double> graded_nodes(double a, double b, int n, const std::vector<do
   return all;
 }
 
-void perturb_interior_vertices(QuadMesh& mesh, double amplitude, std::uint32_t seed) {
+void perturb_interior_vertices(Mesh& mesh, double amplitude, std::uint32_t seed) {
   if (!(amplitude >= 0.0 && amplitude < 0.25))
     throw_bad_input("mesh perturbation", "amplitude", std::to_string(amplitude),
                     "must be in [0, 0.25) so that cells stay convex");
@@ -144,7 +144,7 @@ void perturb_interior_vertices(QuadMesh& mesh, double amplitude, std::uint32_t s
   mesh.move_vertices(std::move(moved), "perturbed mesh");
 }
 
-int assign_boundary_part(QuadMesh& mesh, BoundaryPart part, const std::function<bool(const Point&)>& contains) {
+int assign_boundary_part(Mesh& mesh, BoundaryPart part, const std::function<bool(const Point&)>& contains) {
   int count = 0;
   for (int e : mesh.boundary_edges())
     if (contains(mesh.edge_midpoint(e))) {
@@ -154,7 +154,7 @@ int assign_boundary_part(QuadMesh& mesh, BoundaryPart part, const std::function<
   return count;
 }
 
-int assign_boundary_parts_by_label(QuadMesh& mesh, const std::map<std::string, BoundaryPart>& part_of_label) {
+int assign_boundary_parts_by_label(Mesh& mesh, const std::map<std::string, BoundaryPart>& part_of_label) {
   int count = 0;
   for (int e : mesh.boundary_edges()) {
     const auto it = part_of_label.find(mesh.edge_label(e));
@@ -165,7 +165,7 @@ int assign_boundary_parts_by_label(QuadMesh& mesh, const std::map<std::string, B
   return count;
 }
 
-void assign_paper_boundary_parts(QuadMesh& mesh) {
+void assign_paper_boundary_parts(Mesh& mesh) {
   constexpr double tol = 1e-9;
   assign_boundary_part(mesh, BoundaryPart::contact, [](const Point& m) { return std::abs(m.y() + 1.0) < tol; });
   assign_boundary_part(mesh, BoundaryPart::dirichlet, [](const Point& m) {
@@ -173,11 +173,11 @@ void assign_paper_boundary_parts(QuadMesh& mesh) {
   });
 }
 
-QuadMesh make_paper_square_mesh(int n) {
+Mesh make_paper_square_mesh(int n) {
   if (n < 2 || n % 2 != 0)
     throw_bad_input("paper square", "n", std::to_string(n),
                     "must be even and >= 2 so that (1,0), where Γ_D ends, is a mesh vertex");
-  QuadMesh mesh = make_rectangle_mesh(Rectangle{}, n, n);
+  Mesh mesh = make_rectangle_mesh(Rectangle{}, n, n);
   assign_paper_boundary_parts(mesh);
   return mesh;
 }

@@ -28,7 +28,7 @@ GramLadder interpolation_gram_ladder(const space::MultiplierSpace& multipliers) 
                     2);
 }
 
-GramLadder extension_gram_ladder(const mesh::QuadMesh& mesh, std::vector<int> cell_degrees,
+GramLadder extension_gram_ladder(const mesh::Mesh& mesh, std::vector<int> cell_degrees,
                                  const space::MultiplierSpace& multipliers) {
   return GramLadder(
       [mesh, degrees = std::move(cell_degrees), &multipliers](int level, bool* geometric) {

@@ -13,7 +13,7 @@
 #include <memory>
 #include <vector>
 
-#include "mesh/quad_mesh.hpp"
+#include "mesh/mesh.hpp"
 #include "space/multiplier_space.hpp"
 
 namespace hpcontact::norms {
@@ -48,7 +48,7 @@ GramLadder interpolation_gram_ladder(const space::MultiplierSpace& multipliers);
 
 /// The extension norm on the references extension_reference_at(level), graded towards the
 /// breakpoints of `multipliers` (which must outlive the ladder; the ladder keeps a copy of `mesh`).
-GramLadder extension_gram_ladder(const mesh::QuadMesh& mesh, std::vector<int> cell_degrees,
+GramLadder extension_gram_ladder(const mesh::Mesh& mesh, std::vector<int> cell_degrees,
                                  const space::MultiplierSpace& multipliers);
 
 /// The ladder of `sub` read off that of `envelope` (restrict_gram), which must outlive it.

@@ -113,7 +113,7 @@ namespace {
 
 // The vertices of `mesh` at the arc lengths `points` on Γ_C, or nothing if one is not a vertex or
 // two share a cell (grading needs disjoint stars).
-std::optional<std::vector<int>> grading_vertices(const mesh::QuadMesh& mesh, const std::vector<double>& points) {
+std::optional<std::vector<int>> grading_vertices(const mesh::Mesh& mesh, const std::vector<double>& points) {
   const mesh::ContactBoundary contact(mesh);
   const auto trace = contact.breakpoints();
   const double tolerance = 1e-9 * contact.length();
@@ -144,12 +144,12 @@ std::optional<std::vector<int>> grading_vertices(const mesh::QuadMesh& mesh, con
 
 }  // namespace
 
-ExtensionReferenceFactor::ExtensionReferenceFactor(const mesh::QuadMesh& mesh, const std::vector<int>& cell_degrees,
+ExtensionReferenceFactor::ExtensionReferenceFactor(const mesh::Mesh& mesh, const std::vector<int>& cell_degrees,
                                                    const ExtensionReference& reference,
                                                    const std::vector<double>& grading_points) {
   if (reference.refinements < 0 || reference.extra_degree < 0 || reference.layers < 0)
     throw InputError("extension norm: refinements, layers and extra_degree must be >= 0");
-  fine_ = std::make_unique<mesh::QuadMesh>(mesh);
+  fine_ = std::make_unique<mesh::Mesh>(mesh);
   std::vector<int> degrees = cell_degrees;
   auto refine = [&] {
     *fine_ = mesh::refine_uniformly(*fine_);
@@ -193,7 +193,7 @@ Eigen::MatrixXd extension_norm_gram(const ExtensionReferenceFactor& reference,
       assembly::assemble_coupling(reference_operators.space(), reference_operators.contact(), multipliers));
 }
 
-Eigen::MatrixXd extension_norm_gram(const mesh::QuadMesh& mesh, const std::vector<int>& cell_degrees,
+Eigen::MatrixXd extension_norm_gram(const mesh::Mesh& mesh, const std::vector<int>& cell_degrees,
                                     const space::MultiplierSpace& multipliers, const ExtensionReference& reference,
                                     bool* graded) {
   const ExtensionReferenceFactor factor(mesh, cell_degrees, reference, multipliers.boundary_mesh().nodes());

@@ -65,7 +65,7 @@ ExtensionReference extension_reference_at(int level);
 class ExtensionReferenceFactor {
  public:
   /// `grading_points`: arc lengths on Γ_C of `mesh`.
-  ExtensionReferenceFactor(const mesh::QuadMesh& mesh, const std::vector<int>& cell_degrees,
+  ExtensionReferenceFactor(const mesh::Mesh& mesh, const std::vector<int>& cell_degrees,
                            const ExtensionReference& reference, const std::vector<double>& grading_points = {});
   const operators::PrimalOperators& operators() const { return *operators_; }
   /// Whether S_ref is graded towards every grading point (they are vertices of T_h refined at most
@@ -75,7 +75,7 @@ class ExtensionReferenceFactor {
 
  private:
   bool graded_ = false;
-  std::unique_ptr<mesh::QuadMesh> fine_;
+  std::unique_ptr<mesh::Mesh> fine_;
   std::unique_ptr<operators::PrimalOperators> operators_;
 };
 
@@ -86,7 +86,7 @@ Eigen::MatrixXd extension_norm_gram(const ExtensionReferenceFactor& reference,
 /// The same, building the reference first, graded towards the breakpoints of `multipliers`.
 /// `cell_degrees` is the degree distribution on `mesh`. `graded`, if given, receives
 /// ExtensionReferenceFactor::graded().
-Eigen::MatrixXd extension_norm_gram(const mesh::QuadMesh& mesh, const std::vector<int>& cell_degrees,
+Eigen::MatrixXd extension_norm_gram(const mesh::Mesh& mesh, const std::vector<int>& cell_degrees,
                                     const space::MultiplierSpace& multipliers, const ExtensionReference& reference,
                                     bool* graded = nullptr);
 

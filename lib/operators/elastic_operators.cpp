@@ -13,7 +13,7 @@ namespace hpcontact::operators {
 
 std::string to_string(PrimalNorm norm) { return norm == PrimalNorm::h1 ? "h1" : "energy"; }
 
-ElasticOperators::ElasticOperators(const mesh::QuadMesh& mesh, std::vector<int> cell_degrees,
+ElasticOperators::ElasticOperators(const mesh::Mesh& mesh, std::vector<int> cell_degrees,
                                    std::vector<assembly::Material> materials, OperatorLog* log,
                                    const std::array<std::vector<char>, space::kComponents>& fixed)
     : mesh_(&mesh), materials_(std::move(materials)), log_(log) {

@@ -31,11 +31,11 @@ class ElasticOperators {
   /// `mesh` (and `log`, when given) must outlive the object; `materials` one per cell.
   /// Γ_D clamps both components (u = 0 there); `fixed[c]` marks the boundary edges where
   /// component c alone vanishes (rollers; see space::VectorSpace).
-  ElasticOperators(const mesh::QuadMesh& mesh, std::vector<int> cell_degrees, std::vector<assembly::Material> materials,
+  ElasticOperators(const mesh::Mesh& mesh, std::vector<int> cell_degrees, std::vector<assembly::Material> materials,
                    OperatorLog* log = nullptr, const std::array<std::vector<char>, space::kComponents>& fixed = {});
   ~ElasticOperators();
 
-  const mesh::QuadMesh& mesh() const { return *mesh_; }
+  const mesh::Mesh& mesh() const { return *mesh_; }
   /// The scalar space S^p(T_h), and the displacement space [S^p(T_h)]² with its rollers.
   const space::H1Space& space() const { return *space_; }
   const space::VectorSpace& vector_space() const { return *vector_space_; }
@@ -58,7 +58,7 @@ class ElasticOperators {
   OperatorLog* log() const { return log_; }
 
  private:
-  const mesh::QuadMesh* mesh_;
+  const mesh::Mesh* mesh_;
   std::unique_ptr<space::H1Space> space_;
   std::unique_ptr<space::VectorSpace> vector_space_;
   std::unique_ptr<mesh::ContactBoundary> contact_;

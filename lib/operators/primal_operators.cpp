@@ -13,7 +13,7 @@
 
 namespace hpcontact::operators {
 
-PrimalOperators::PrimalOperators(const mesh::QuadMesh& mesh, std::vector<int> cell_degrees, OperatorLog* log,
+PrimalOperators::PrimalOperators(const mesh::Mesh& mesh, std::vector<int> cell_degrees, OperatorLog* log,
                                  linalg::Distribution distribution)
     : mesh_(&mesh), log_(log), distribution_(distribution) {
   Stopwatch clock;
@@ -117,7 +117,7 @@ const Eigen::MatrixXd& PrimalOperators::derived_matrix(const std::string& name, 
   return memoized(derived_matrices_, name, name + "#" + key, build, log_);
 }
 
-const PrimalOperators& shared_or_own(const PrimalOperators* shared, const mesh::QuadMesh& mesh,
+const PrimalOperators& shared_or_own(const PrimalOperators* shared, const mesh::Mesh& mesh,
                                      const std::vector<int>& cell_degrees, std::unique_ptr<PrimalOperators>& own) {
   if (!shared) {
     own = std::make_unique<PrimalOperators>(mesh, cell_degrees);

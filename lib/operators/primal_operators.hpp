@@ -26,11 +26,11 @@ class PrimalOperators {
   /// `mesh` (and `log`, when given) must outlive the object. Builds the space and Γ_C only.
   /// `distribution` other than serial: the factors are factorized over the MPI ranks (every rank
   /// must construct the object and make the same calls on it, in the same order).
-  PrimalOperators(const mesh::QuadMesh& mesh, std::vector<int> cell_degrees, OperatorLog* log = nullptr,
+  PrimalOperators(const mesh::Mesh& mesh, std::vector<int> cell_degrees, OperatorLog* log = nullptr,
                   linalg::Distribution distribution = linalg::Distribution::serial);
   ~PrimalOperators();
 
-  const mesh::QuadMesh& mesh() const { return *mesh_; }
+  const mesh::Mesh& mesh() const { return *mesh_; }
   const space::H1Space& space() const { return *space_; }
   const mesh::ContactBoundary& contact() const { return *contact_; }
 
@@ -57,7 +57,7 @@ class PrimalOperators {
   linalg::Distribution distribution() const { return distribution_; }
 
  private:
-  const mesh::QuadMesh* mesh_;
+  const mesh::Mesh* mesh_;
   std::unique_ptr<space::H1Space> space_;
   std::unique_ptr<mesh::ContactBoundary> contact_;
   OperatorLog* log_;
@@ -70,7 +70,7 @@ class PrimalOperators {
 };
 
 /// `shared` when given (checked to belong to mesh and degrees), else a new object kept in `own`.
-const PrimalOperators& shared_or_own(const PrimalOperators* shared, const mesh::QuadMesh& mesh,
+const PrimalOperators& shared_or_own(const PrimalOperators* shared, const mesh::Mesh& mesh,
                                      const std::vector<int>& cell_degrees, std::unique_ptr<PrimalOperators>& own);
 
 }  // namespace hpcontact::operators

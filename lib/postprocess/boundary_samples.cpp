@@ -28,8 +28,8 @@ BoundarySamples sample_boundary(const contact::ContactSetup& setup, const contac
     for (int j = 0; j < per_interval; ++j) {
       const double s = interval.s_begin + (interval.s_end - interval.s_begin) * j / (per_interval - 1);
       const double t = trace.local_parameter(s);
-      const auto [xi, eta] = assembly::edge_reference_points(trace.local_edge, std::vector<double>{t});
-      const auto u = postprocess::evaluate(u_field.space, u_field.coefficients, {trace.cell, xi[0], eta[0]});
+      const Eigen::Vector2d ref = mesh::local_edge_point(contact.mesh().cell_type(trace.cell), trace.local_edge, t);
+      const auto u = postprocess::evaluate(u_field.space, u_field.coefficients, {trace.cell, ref.x(), ref.y()});
       const mesh::Point x = contact.point_at(s);
       const double lambda = multipliers.basis_values(k, multipliers.local_coordinate(k, s)).dot(coefficients);
       const double data = signorini ? setup.obstacle(x) : setup.bound(x);

@@ -38,8 +38,9 @@ ElasticBoundarySamples sample_elastic_boundary(const contact::ElasticContactSetu
     int in_contact = 0;
     for (int j = 0; j < per_interval; ++j) {
       const double s = interval.s_begin + (interval.s_end - interval.s_begin) * j / (per_interval - 1);
-      const auto [xi, eta] = assembly::edge_reference_points(trace.local_edge, {trace.local_parameter(s)});
-      const CellPoint where{trace.cell, xi[0], eta[0]};
+      const Eigen::Vector2d ref =
+          mesh::local_edge_point(contact.mesh().cell_type(trace.cell), trace.local_edge, trace.local_parameter(s));
+      const CellPoint where{trace.cell, ref.x(), ref.y()};
       const Eigen::Vector2d u(evaluate(u_field.space.scalar(), components[0], where).value,
                               evaluate(u_field.space.scalar(), components[1], where).value);
       const mesh::Point x = contact.point_at(s);

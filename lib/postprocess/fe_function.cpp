@@ -1,4 +1,4 @@
-// Point evaluation through the cell tabulation at a 1×1 grid.
+// Point evaluation through the cell tabulation at one reference point.
 #include "postprocess/fe_function.hpp"
 
 #include "assembly/cell_values.hpp"
@@ -7,7 +7,7 @@
 namespace hpcontact::postprocess {
 
 PointValue evaluate(const space::H1Space& space, const Eigen::VectorXd& coefficients, const CellPoint& where) {
-  const auto cell = assembly::tabulate_cell(space, where.cell, {where.xi}, {where.eta});
+  const auto cell = assembly::tabulate_cell(space, where.cell, {{where.xi}, {where.eta}});
   PointValue out;
   const auto& shapes = space.cell_shapes(where.cell);
   for (std::size_t s = 0; s < shapes.size(); ++s) {

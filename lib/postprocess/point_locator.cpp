@@ -8,7 +8,7 @@
 
 namespace hpcontact::postprocess {
 
-PointLocator::PointLocator(const mesh::QuadMesh& mesh) : mesh_(&mesh) {
+PointLocator::PointLocator(const mesh::Mesh& mesh) : mesh_(&mesh) {
   lower_ = upper_ = mesh.vertex(0);
   for (const auto& v : mesh.vertices()) {
     lower_ = lower_.cwiseMin(v);

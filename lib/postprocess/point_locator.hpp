@@ -4,7 +4,7 @@
 #include <optional>
 #include <vector>
 
-#include "mesh/quad_mesh.hpp"
+#include "mesh/mesh.hpp"
 
 namespace hpcontact::postprocess {
 
@@ -16,13 +16,13 @@ struct CellPoint {
 
 class PointLocator {
  public:
-  explicit PointLocator(const mesh::QuadMesh& mesh);
+  explicit PointLocator(const mesh::Mesh& mesh);
   /// A cell containing x (the first one found for points on shared edges), or nothing if x is
   /// outside the mesh.
   std::optional<CellPoint> locate(const mesh::Point& x) const;
 
  private:
-  const mesh::QuadMesh* mesh_;
+  const mesh::Mesh* mesh_;
   mesh::Point lower_, upper_;
   int n_x_ = 1, n_y_ = 1;
   std::vector<std::vector<int>> buckets_;

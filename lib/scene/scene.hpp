@@ -16,7 +16,7 @@
 #include "contact/contact_problem.hpp"
 #include "contact/elastic_contact.hpp"
 #include "infsup/infsup_operators.hpp"
-#include "mesh/quad_mesh.hpp"
+#include "mesh/mesh.hpp"
 #include "mesh/rectangle_mesh.hpp"
 #include "scene/ratio.hpp"
 
@@ -49,6 +49,8 @@ struct Scene {
   std::optional<double> mesh_size;  ///< a .geo mesh_file: Gmsh's maximal element size
   /// Whether cells follow the mesh file's curves, or only its vertices (the polygonal domain).
   enum class Geometry { curved, polygonal } geometry = Geometry::curved;
+  /// The cells of the rectangle, or of a .geo mesh_file (a .msh file holds its own).
+  mesh::GeneratedCells cells = mesh::GeneratedCells::quadrilaterals;
   mesh::Rectangle rectangle;  ///< when mesh_file is empty
   int n_x = 0, n_y = 0;
   double perturb = 0.0;

@@ -177,8 +177,8 @@ SceneKey degree_key(const char* name, int low, int high, Degree Scene::*member, 
 void add_domain_keys(std::vector<SceneKey>& keys) {
   auto add = [&](SceneKey key) { keys.push_back(std::move(key)); };
   add({"domain", "mesh", "string", "",
-       "a Gmsh mesh file of quadrilaterals (MSH 2.2 or 4, ASCII or binary) or a Gmsh geometry (.geo)",
-       "Gmsh mesh, or geometry meshed into quadrilaterals on the fly, relative to the scene file; absent: the "
+       "a Gmsh mesh file of triangles and/or quadrilaterals (MSH 2.2 or 4, ASCII or binary) or a Gmsh geometry (.geo)",
+       "Gmsh mesh, or geometry meshed on the fly (see `cells`), relative to the scene file; absent: the "
        "rectangle below",
        "", [](const TomlTable& table, Scene& scene) {
          if (!table.has("mesh")) return;
@@ -189,8 +189,8 @@ void add_domain_keys(std::vector<SceneKey>& keys) {
            throw_bad_input(table.origin("mesh"), table.qualified("mesh"), "\"\"", "a file name");
        }});
   add({"domain", "mesh_size", "number", "the .geo's sizes", "(0, 1e6]",
-       "a .geo `mesh`: Gmsh's maximal element size (Mesh.MeshSizeMax) before the split into quadrilaterals, "
-       "which halves it",
+       "a .geo `mesh`: Gmsh's maximal element size (Mesh.MeshSizeMax), before the split into quadrilaterals "
+       "(which halves it) when cells = \"quadrilaterals\"",
        "", [](const TomlTable& table, Scene& scene) {
          if (!table.has("mesh_size")) return;
          scene.mesh_size = table.number_in("mesh_size", 0.0, 1e6);
@@ -205,6 +205,20 @@ void add_domain_keys(std::vector<SceneKey>& keys) {
       Scene::Geometry::curved, &Scene::geometry,
       "a Gmsh `mesh`: cells follow its curves (a .geo's exact curves, a high-order mesh's edge nodes), or "
       "only its vertices"));
+  SceneKey cells = choice_key<mesh::GeneratedCells>(
+      "domain", "cells",
+      {{"quadrilaterals", mesh::GeneratedCells::quadrilaterals}, {"triangles", mesh::GeneratedCells::triangles}},
+      mesh::GeneratedCells::quadrilaterals, &Scene::cells,
+      "the rectangle's cells (triangles: each cut along its diagonal from lower left to upper right), or the "
+      "cells a .geo `mesh` is meshed into (a mesh file holds its own)");
+  cells.read = [choose = cells.read](const TomlTable& table, Scene& scene) {
+    choose(table, scene);
+    if (table.has("cells") && !scene.mesh_file.empty() && std::filesystem::path(scene.mesh_file).extension() != ".geo")
+      throw_bad_input(table.origin("cells"), table.qualified("cells"), table.string("cells"),
+                      "only with the rectangle or a Gmsh geometry file (.geo) as domain.mesh: " + scene.mesh_file +
+                          " holds its own cells");
+  };
+  add(std::move(cells));
   add(any_number_key("domain", "x_min", -1.0, &mesh::Rectangle::x_min, "rectangle: left end"));
   add(any_number_key("domain", "x_max", 1.0, &mesh::Rectangle::x_max, "rectangle: right end"));
   add(any_number_key("domain", "y_min", -1.0, &mesh::Rectangle::y_min, "rectangle: bottom end"));

@@ -26,25 +26,28 @@ namespace {
 
 /// The tensor mesh, graded towards the lines of grading_x, grading_y, with a node at every
 /// coordinate of the grading points (whose local layers come after).
-mesh::QuadMesh build_rectangle(const Scene& scene) {
+mesh::Mesh build_rectangle(const Scene& scene) {
   const auto& r = scene.rectangle;
   std::vector<double> point_x, point_y;
   for (const auto& point : scene.grading_points) {
     point_x.push_back(point.x());
     point_y.push_back(point.y());
   }
-  return mesh::make_tensor_mesh(
-      mesh::graded_nodes(r.x_min, r.x_max, scene.n_x, scene.grading_x, scene.domain_grading, scene.grading_layers,
-                         scene.file + ": key 'domain.grading_x'", point_x,
-                         scene.file + ": key 'domain.grading_points' (an x coordinate)"),
-      mesh::graded_nodes(r.y_min, r.y_max, scene.n_y, scene.grading_y, scene.domain_grading, scene.grading_layers,
-                         scene.file + ": key 'domain.grading_y'", point_y,
-                         scene.file + ": key 'domain.grading_points' (a y coordinate)"),
-      scene.file + ": rectangle");
+  mesh::Mesh tensor =
+      mesh::make_tensor_mesh(mesh::graded_nodes(r.x_min, r.x_max, scene.n_x, scene.grading_x, scene.domain_grading,
+                                                scene.grading_layers, scene.file + ": key 'domain.grading_x'", point_x,
+                                                scene.file + ": key 'domain.grading_points' (an x coordinate)"),
+                             mesh::graded_nodes(r.y_min, r.y_max, scene.n_y, scene.grading_y, scene.domain_grading,
+                                                scene.grading_layers, scene.file + ": key 'domain.grading_y'", point_y,
+                                                scene.file + ": key 'domain.grading_points' (a y coordinate)"),
+                             scene.file + ": rectangle");
+  if (scene.cells == mesh::GeneratedCells::triangles)
+    return mesh::split_into_triangles(tensor, {}, scene.file + ": rectangle");
+  return tensor;
 }
 
 /// Local geometric layers towards the scene's grading points.
-mesh::QuadMesh grade_towards_points(const mesh::QuadMesh& mesh, const Scene& scene) {
+mesh::Mesh grade_towards_points(const mesh::Mesh& mesh, const Scene& scene) {
   if (scene.grading_points.empty()) return mesh;
   const std::string origin = scene.file + ": key 'domain.grading_points'";
   std::vector<int> centres;
@@ -53,8 +56,8 @@ mesh::QuadMesh grade_towards_points(const mesh::QuadMesh& mesh, const Scene& sce
 }
 
 /// The scene's mesh file with its curves (or without, for geometry = "polygonal").
-mesh::QuadMesh read_mesh_file(const Scene& scene) {
-  mesh::QuadMesh mesh = mesh::read_gmsh_mesh(scene.mesh_file, scene.mesh_size);
+mesh::Mesh read_mesh_file(const Scene& scene) {
+  mesh::Mesh mesh = mesh::read_gmsh_mesh(scene.mesh_file, {scene.mesh_size, scene.cells});
   if (scene.geometry == Scene::Geometry::polygonal) mesh.straighten();
   // Grading and perturbation move or add vertices off the curves.
   if (mesh.has_curved_cells())
@@ -70,8 +73,8 @@ mesh::QuadMesh read_mesh_file(const Scene& scene) {
 
 }  // namespace
 
-mesh::QuadMesh build_scene_mesh(const Scene& scene) {
-  mesh::QuadMesh mesh =
+mesh::Mesh build_scene_mesh(const Scene& scene) {
+  mesh::Mesh mesh =
       grade_towards_points(scene.mesh_file.empty() ? build_rectangle(scene) : read_mesh_file(scene), scene);
   if (scene.perturb > 0) mesh::perturb_interior_vertices(mesh, scene.perturb, scene.seed);
   for (int k = 0; k < scene.refinements; ++k) mesh = mesh::refine_uniformly(mesh);
@@ -136,7 +139,7 @@ int whole_degree(const Expression& rule, const mesh::Point& x, int low, int high
 
 }  // namespace
 
-std::array<std::vector<char>, 2> scene_fixed_components(const Scene& scene, const mesh::QuadMesh& mesh) {
+std::array<std::vector<char>, 2> scene_fixed_components(const Scene& scene, const mesh::Mesh& mesh) {
   std::array<std::vector<char>, 2> fixed;
   const std::array<const std::string*, 2> predicates{&scene.fixed_x_predicate, &scene.fixed_y_predicate};
   const std::array<const std::vector<std::string>*, 2> groups{&scene.fixed_x_groups, &scene.fixed_y_groups};
@@ -167,7 +170,7 @@ std::array<std::vector<char>, 2> scene_fixed_components(const Scene& scene, cons
   return fixed;
 }
 
-std::vector<int> scene_cell_degrees(const Scene& scene, const mesh::QuadMesh& mesh) {
+std::vector<int> scene_cell_degrees(const Scene& scene, const mesh::Mesh& mesh) {
   if (scene.p.rule.empty()) return std::vector<int>(mesh.n_cells(), scene.p.value);
   const Expression rule(scene.p.rule, scene.where("discretization.p") + ": key 'discretization.p'");
   std::vector<int> degrees(mesh.n_cells());

@@ -7,23 +7,23 @@
 
 #include "mesh/boundary_mesh.hpp"
 #include "mesh/contact_boundary.hpp"
-#include "mesh/quad_mesh.hpp"
+#include "mesh/mesh.hpp"
 #include "scene/scene.hpp"
 
 namespace hpcontact::scene {
 
 /// T_h with boundary parts. @throws InputError if Γ_C is empty or Γ_C and Γ_D overlap.
-mesh::QuadMesh build_scene_mesh(const Scene& scene);
+mesh::Mesh build_scene_mesh(const Scene& scene);
 
 /// The boundary edges where one displacement component alone vanishes (rollers of an elastic
 /// scene: [boundary] fixed_x, fixed_y and their _groups), one mask per component, each of size
 /// n_edges (empty when the scene gives none). @throws InputError naming the key if a roller edge
 /// lies on Γ_C or Γ_D, or a key selects no edge.
-std::array<std::vector<char>, 2> scene_fixed_components(const Scene& scene, const mesh::QuadMesh& mesh);
+std::array<std::vector<char>, 2> scene_fixed_components(const Scene& scene, const mesh::Mesh& mesh);
 
 /// p_T per cell (the rule at Ψ_T(0,0), or p). @throws InputError for values that are not whole
 /// numbers in [1, 20].
-std::vector<int> scene_cell_degrees(const Scene& scene, const mesh::QuadMesh& mesh);
+std::vector<int> scene_cell_degrees(const Scene& scene, const mesh::Mesh& mesh);
 /// p_C per segment (the rule at the segment midpoint, or pC), whole numbers in [0, 19].
 std::vector<int> scene_segment_degrees(const Scene& scene, const mesh::ContactBoundary& contact,
                                        const mesh::BoundaryMesh& boundary_mesh);

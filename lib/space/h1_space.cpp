@@ -1,10 +1,13 @@
-// H1Space: dof numbering with the minimum rule, edge orientation and Dirichlet elimination.
+// H1Space: dof numbering with the minimum rule, edge orientation and Dirichlet elimination, on
+// quadrilaterals and triangles alike.
 #include "space/h1_space.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "core/error.hpp"
+#include "mesh/reference_cell.hpp"
 
 namespace hpcontact::space {
 namespace {
@@ -29,15 +32,17 @@ std::array<int, 2> edge_mode_index(int local, int k) {
 
 }  // namespace
 
-int local_edge_of(const LocalShape& shape) {
-  if (shape.i >= 2 && shape.j <= 1) return shape.j == 0 ? 0 : 2;
-  if (shape.j >= 2 && shape.i <= 1) return shape.i == 1 ? 1 : 3;
-  return -1;
+int local_edge_of(const LocalShape& shape) { return shape.role == ShapeRole::edge ? shape.entity : -1; }
+
+int edge_mode_degree(const LocalShape& shape) {
+  HPC_VERIFY(shape.role == ShapeRole::edge, "an edge mode");
+  // Quadrilateral: the index along the edge is the one ≥ 2; triangle: j = 0.
+  return std::max(shape.i, shape.j);
 }
 
-H1Space::H1Space(const mesh::QuadMesh& mesh, int degree) : H1Space(mesh, std::vector<int>(mesh.n_cells(), degree)) {}
+H1Space::H1Space(const mesh::Mesh& mesh, int degree) : H1Space(mesh, std::vector<int>(mesh.n_cells(), degree)) {}
 
-H1Space::H1Space(const mesh::QuadMesh& mesh, std::vector<int> cell_degrees, DirichletDofs dirichlet)
+H1Space::H1Space(const mesh::Mesh& mesh, std::vector<int> cell_degrees, DirichletDofs dirichlet)
     : mesh_(&mesh), cell_degrees_(std::move(cell_degrees)) {
   if (static_cast<int>(cell_degrees_.size()) != mesh.n_cells())
     throw InputError("degree distribution has " + std::to_string(cell_degrees_.size()) + " entries but the mesh has " +
@@ -84,20 +89,28 @@ void H1Space::build(DirichletDofs dirichlet) {
   for (int c = 0; c < mesh.n_cells(); ++c) {
     auto& shapes = cell_shapes_[c];
     const int p = cell_degrees_[c];
-    for (int k = 0; k < 4; ++k)
-      shapes.push_back({kVertexIndex[k][0], kVertexIndex[k][1], vertex_dof[mesh.cell(c)[k]], 1.0});
-    for (int local = 0; local < 4; ++local) {
+    const bool triangle = mesh.cell_type(c) == mesh::CellType::triangle;
+    for (int k = 0; k < mesh.cell_size(c); ++k) {
+      const auto [i, j] = triangle ? std::array<int, 2>{0, 0} : kVertexIndex[k];
+      shapes.push_back({i, j, vertex_dof[mesh.cell(c)[k]], 1.0, ShapeRole::vertex, k});
+    }
+    for (int local = 0; local < mesh.cell_size(c); ++local) {
       const int e = mesh.cell_edge(c, local);
       const int sign = mesh.edge_sign(c, local);
       for (int k = 2; k <= edge_degrees_[e]; ++k) {
-        const auto [i, j] = edge_mode_index(local, k);
+        const auto [i, j] = triangle ? std::array<int, 2>{k, 0} : edge_mode_index(local, k);
         const int dof = edge_first_dof[e] < 0 ? -1 : edge_first_dof[e] + (k - 2);
         // N_k(-t) = (-1)^k N_k(t): a reversed edge flips the odd modes.
-        shapes.push_back({i, j, dof, (sign < 0 && k % 2 == 1) ? -1.0 : 1.0});
+        shapes.push_back({i, j, dof, (sign < 0 && k % 2 == 1) ? -1.0 : 1.0, ShapeRole::edge, local});
       }
     }
-    for (int j = 2; j <= p; ++j)
-      for (int i = 2; i <= p; ++i) shapes.push_back({i, j, next++, 1.0});
+    if (triangle) {
+      for (int n1 = 0; n1 <= p - 3; ++n1)
+        for (int n2 = 0; n1 + n2 <= p - 3; ++n2) shapes.push_back({n1, n2, next++, 1.0, ShapeRole::interior, -1});
+    } else {
+      for (int j = 2; j <= p; ++j)
+        for (int i = 2; i <= p; ++i) shapes.push_back({i, j, next++, 1.0, ShapeRole::interior, -1});
+    }
   }
   n_dofs_ = next;
 }

@@ -3,26 +3,26 @@
 
 #include <fmt/format.h>
 
+#include <array>
+
 #include "core/error.hpp"
 
 namespace hpcontact::space {
 
 namespace {
 
-// The local edge a shape belongs to (-1 for interior modes); vertex shapes belong to two, and
-// `second` gets the other one. Local numbering of quad_mesh.hpp: vertex (i, j) ∈ {0,1}² is
-// (ξ, η) = (2i − 1, 2j − 1); edges 0: η = −1, 1: ξ = +1, 2: η = +1, 3: ξ = −1.
-int shape_edge(const LocalShape& shape, int& second) {
-  second = -1;
-  const bool vertex_i = shape.i <= 1, vertex_j = shape.j <= 1;
-  const int edge_of_j = shape.j == 0 ? 0 : 2, edge_of_i = shape.i == 1 ? 1 : 3;
-  if (vertex_i && vertex_j) {
-    second = edge_of_i;
-    return edge_of_j;
+// The local edges a shape belongs to (none for interior modes): a vertex shape belongs to the two
+// local edges that meet at its vertex, an edge mode to its edge.
+std::array<int, 2> shape_edges(const mesh::Mesh& mesh, int cell, const LocalShape& shape) {
+  if (shape.role == ShapeRole::edge) return {shape.entity, -1};
+  if (shape.role == ShapeRole::interior) return {-1, -1};
+  std::array<int, 2> out{-1, -1};
+  int found = 0;
+  for (int local = 0; local < mesh.cell_size(cell); ++local) {
+    const auto ends = mesh::local_edge_vertices(mesh.cell_type(cell), local);
+    if (ends[0] == shape.entity || ends[1] == shape.entity) out[found++] = local;
   }
-  if (vertex_j) return edge_of_j;  // an edge mode along ξ
-  if (vertex_i) return edge_of_i;  // an edge mode along η
-  return -1;
+  return out;
 }
 
 }  // namespace
@@ -41,9 +41,7 @@ VectorSpace::VectorSpace(const H1Space& scalar, const std::array<std::vector<cha
     for (int cell = 0; cell < mesh.n_cells(); ++cell)
       for (const auto& shape : scalar.cell_shapes(cell)) {
         if (shape.dof < 0) continue;
-        int second = -1;
-        const int local = shape_edge(shape, second);
-        for (const int edge : {local, second})
+        for (const int edge : shape_edges(mesh, cell, shape))
           if (edge >= 0 && fixed[c][mesh.cell_edge(cell, edge)]) is_fixed[kComponents * shape.dof + c] = 1;
       }
   }

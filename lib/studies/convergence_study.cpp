@@ -125,7 +125,7 @@ namespace {
 
 // The mesh of one point: the §7 scene's n × n square (perturbed as the study asks), or the study's
 // scene refined and with its curves or without.
-mesh::QuadMesh point_mesh(const ConvergenceStudy& study, const ConvergencePoint& point) {
+mesh::Mesh point_mesh(const ConvergenceStudy& study, const ConvergencePoint& point) {
   if (study.scene_file.empty()) {
     const std::string where = study.file + ": [[runs]] n = " + std::to_string(point.n);
     return scene::build_scene_mesh(
@@ -160,7 +160,7 @@ std::vector<ConvergenceRow> run_convergence_study(const ConvergenceStudy& study,
   std::vector<ConvergenceRow> rows;
   for (const auto& point : study.points) {
     Stopwatch clock;
-    const mesh::QuadMesh mesh = point_mesh(study, point);
+    const mesh::Mesh mesh = point_mesh(study, point);
     const space::H1Space space(mesh, point.p);
     const auto solution = operators::solve_poisson(space, data);
     ConvergenceRow row;

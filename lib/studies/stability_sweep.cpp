@@ -199,7 +199,7 @@ struct SweepRun {
 // T_h of one group (level, p) and its operators, shared by the group's points.
 struct GroupMesh {
   scene::Scene scene;
-  mesh::QuadMesh mesh;
+  mesh::Mesh mesh;
   mesh::ContactBoundary contact;
   std::vector<int> cell_degrees;
   operators::PrimalOperators primal;

@@ -1,5 +1,5 @@
-// QuadMesh: topology construction (edges, adjacency, orientation) and validity checks.
-#include "mesh/quad_mesh.hpp"
+// Mesh: topology construction (edges, adjacency, orientation) and validity checks.
+#include "mesh/mesh.hpp"
 
 #include <Eigen/LU>
 #include <algorithm>
@@ -26,11 +26,11 @@ std::string to_string(BoundaryPart part) {
   return "unknown";
 }
 
-QuadMesh::QuadMesh(std::vector<Point> vertices, std::vector<std::array<int, 4>> cells, const std::string& origin)
+Mesh::Mesh(std::vector<Point> vertices, std::vector<std::array<int, 4>> cells, const std::string& origin)
     : vertices_(std::move(vertices)), cells_(std::move(cells)) {
   if (cells_.empty()) throw InputError(origin + ": the mesh has no cells");
   for (std::size_t c = 0; c < cells_.size(); ++c)
-    for (int v : cells_[c])
+    for (int v : cell(static_cast<int>(c)))
       if (v < 0 || v >= n_vertices())
         throw InputError(origin + ": cell " + std::to_string(c) + " refers to vertex " + std::to_string(v) +
                          ", but the mesh has " + std::to_string(n_vertices()) + " vertices");
@@ -38,32 +38,37 @@ QuadMesh::QuadMesh(std::vector<Point> vertices, std::vector<std::array<int, 4>> 
   build_topology(origin);
 }
 
-void QuadMesh::check_cells(const std::string& origin) const {
+void Mesh::check_cells(const std::string& origin) const {
   for (int c = 0; c < n_cells(); ++c) {
     // Strict convexity and counterclockwise order: every corner turns left, which makes
-    // the bilinear map's Jacobian determinant positive on the whole reference square.
-    for (int k = 0; k < 4; ++k) {
+    // the bilinear (affine) map's Jacobian determinant positive on the whole reference cell.
+    const int n = cell_size(c);
+    for (int k = 0; k < n; ++k) {
       const Point& a = vertices_[cells_[c][k]];
-      const Point& b = vertices_[cells_[c][(k + 1) % 4]];
-      const Point& d = vertices_[cells_[c][(k + 3) % 4]];
+      const Point& b = vertices_[cells_[c][(k + 1) % n]];
+      const Point& d = vertices_[cells_[c][(k + n - 1) % n]];
       const Point u = b - a, w = d - a;
       const double cross = u.x() * w.y() - u.y() * w.x();
       const double scale = u.norm() * w.norm();
       if (!(cross > 1e-12 * scale))
-        throw InputError(origin + ": cell " + std::to_string(c) +
-                         " is not a strictly convex counterclockwise quadrilateral (corner " + std::to_string(k) + ")");
+        throw InputError(
+            origin + ": cell " + std::to_string(c) + " is not a " +
+            (n == 3 ? "non-degenerate counterclockwise triangle" : "strictly convex counterclockwise quadrilateral") +
+            " (corner " + std::to_string(k) + ")");
     }
   }
 }
 
-void QuadMesh::build_topology(const std::string& origin) {
+void Mesh::build_topology(const std::string& origin) {
   std::map<std::pair<int, int>, int> edge_index;
   cell_edges_.assign(cells_.size(), {});
   cell_edge_signs_.assign(cells_.size(), {});
   for (int c = 0; c < n_cells(); ++c) {
-    for (int k = 0; k < 4; ++k) {
-      const int a = cells_[c][kLocalEdgeVertices[k][0]];
-      const int b = cells_[c][kLocalEdgeVertices[k][1]];
+    cell_edges_[c].fill(-1);
+    for (int k = 0; k < cell_size(c); ++k) {
+      const auto [start, end] = local_edge_vertices(cell_type(c), k);
+      const int a = cells_[c][start];
+      const int b = cells_[c][end];
       const auto key = std::minmax(a, b);
       auto [it, inserted] = edge_index.try_emplace({key.first, key.second}, n_edges());
       if (inserted) {
@@ -89,22 +94,22 @@ void QuadMesh::build_topology(const std::string& origin) {
     }
 }
 
-int QuadMesh::local_edge_of(int e, int k) const {
+int Mesh::local_edge_of(int e, int k) const {
   const int c = edge_cells_[e][k];
-  for (int local = 0; local < 4; ++local)
+  for (int local = 0; local < cell_size(c); ++local)
     if (cell_edges_[c][local] == e) return local;
   HPC_VERIFY(false, "edge not found in its adjacent cell");
 }
 
-Point QuadMesh::edge_point(int e, double t) const {
+Point Mesh::edge_point(int e, double t) const {
   const int c = edge_cells_[e][0];
   if (!cell_geometry(c)) return 0.5 * (1.0 - t) * vertices_[edges_[e][0]] + 0.5 * (1.0 + t) * vertices_[edges_[e][1]];
   const int local = local_edge_of(e, 0);
-  const Eigen::Vector2d ref = local_edge_point(local, cell_edge_signs_[c][local] * t);
+  const Eigen::Vector2d ref = local_edge_point(cell_type(c), local, cell_edge_signs_[c][local] * t);
   return CellMap(*this, c).map(ref.x(), ref.y());
 }
 
-double QuadMesh::edge_length(int e) const {
+double Mesh::edge_length(int e) const {
   const int c = edge_cells_[e][0];
   if (!cell_geometry(c)) return (vertices_[edges_[e][1]] - vertices_[edges_[e][0]]).norm();
   // The speed |dΨ/dt| of a curve resolved to round-off at degree ≤ 24 is smooth: 32 Gauss points
@@ -118,24 +123,29 @@ double QuadMesh::edge_length(int e) const {
   return length;
 }
 
-Point QuadMesh::boundary_normal(int e, double t) const {
+Point Mesh::boundary_normal(int e, double t) const {
   HPC_VERIFY(is_boundary_edge(e), "normal requested for an interior edge");
   const int c = edge_cells_[e][0];
   const int local = local_edge_of(e, 0);
+  const auto [start, end] = local_edge_vertices(cell_type(c), local);
   const Point tangent = cell_geometry(c) ? CellMap(*this, c).edge_tangent(local, t)
-                                         : Point(vertices_[cells_[c][kLocalEdgeVertices[local][1]]] -
-                                                 vertices_[cells_[c][kLocalEdgeVertices[local][0]]]);
-  // Local edges 0 and 1 run counterclockwise around the cell, 2 and 3 clockwise.
-  const double ccw = (local <= 1) ? 1.0 : -1.0;
+                                         : Point(vertices_[cells_[c][end]] - vertices_[cells_[c][start]]);
+  const double ccw = local_edge_counterclockwise(cell_type(c), local) ? 1.0 : -1.0;
   return ccw * Point(tangent.y(), -tangent.x()).normalized();
 }
 
-void QuadMesh::set_edge_curve(int e, std::shared_ptr<const EdgeCurve> curve, const std::string& origin) {
+void Mesh::set_edge_curve(int e, std::shared_ptr<const EdgeCurve> curve, const std::string& origin) {
   const Point &a = vertices_[edges_[e][0]], &b = vertices_[edges_[e][1]];
   const double length = (b - a).norm();
   if ((curve->point(-1.0) - a).norm() > 1e-8 * length || (curve->point(1.0) - b).norm() > 1e-8 * length)
     throw InputError(origin + ": the curve of edge (" + std::to_string(edges_[e][0]) + ", " +
                      std::to_string(edges_[e][1]) + ") does not end at its vertices");
+  for (int k = 0; k < 2; ++k)
+    if (edge_cells_[e][k] >= 0 && cell_type(edge_cells_[e][k]) == CellType::triangle)
+      throw InputError(origin + ": edge (" + std::to_string(edges_[e][0]) + ", " + std::to_string(edges_[e][1]) +
+                       ") is curved but belongs to a triangle; curved sides are supported on quadrilaterals only "
+                       "(mesh the cells along the curve as quadrilaterals, e.g. Gmsh's Recombine, or set "
+                       "[domain] geometry = \"polygonal\")");
   if (cell_geometry_.empty()) cell_geometry_.resize(cells_.size());
   for (int k = 0; k < 2; ++k) {
     const int c = edge_cells_[e][k];
@@ -161,7 +171,7 @@ void QuadMesh::set_edge_curve(int e, std::shared_ptr<const EdgeCurve> curve, con
   }
 }
 
-void QuadMesh::set_cell_geometry(int c, std::shared_ptr<const BlendedGeometry> geometry) {
+void Mesh::set_cell_geometry(int c, std::shared_ptr<const BlendedGeometry> geometry) {
   if (cell_geometry_.empty()) {
     if (!geometry) return;
     cell_geometry_.resize(cells_.size());
@@ -169,28 +179,32 @@ void QuadMesh::set_cell_geometry(int c, std::shared_ptr<const BlendedGeometry> g
   cell_geometry_[c] = std::move(geometry);
 }
 
-bool QuadMesh::has_curved_cells() const {
+bool Mesh::has_curved_cells() const {
   return std::any_of(cell_geometry_.begin(), cell_geometry_.end(), [](const auto& g) { return g != nullptr; });
 }
 
-void QuadMesh::straighten() { cell_geometry_.clear(); }
+void Mesh::straighten() { cell_geometry_.clear(); }
 
-bool QuadMesh::has_part(BoundaryPart part) const {
+bool Mesh::has_triangles() const {
+  return std::any_of(cells_.begin(), cells_.end(), [](const auto& cell) { return cell[3] < 0; });
+}
+
+bool Mesh::has_part(BoundaryPart part) const {
   return std::find(edge_parts_.begin(), edge_parts_.end(), part) != edge_parts_.end();
 }
 
-void QuadMesh::set_edge_part(int e, BoundaryPart part) {
+void Mesh::set_edge_part(int e, BoundaryPart part) {
   HPC_VERIFY(is_boundary_edge(e) || part == BoundaryPart::interior, "boundary part assigned to an interior edge");
   edge_parts_[e] = part;
 }
 
-double QuadMesh::longest_edge() const {
+double Mesh::longest_edge() const {
   double h = 0.0;
   for (int e = 0; e < n_edges(); ++e) h = std::max(h, edge_length(e));
   return h;
 }
 
-void QuadMesh::move_vertices(std::vector<Point> new_positions, const std::string& origin) {
+void Mesh::move_vertices(std::vector<Point> new_positions, const std::string& origin) {
   HPC_VERIFY(new_positions.size() == vertices_.size(), "vertex count changed");
   if (has_curved_cells())
     throw InputError(origin +

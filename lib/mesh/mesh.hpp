@@ -1,13 +1,16 @@
-// Conforming quadrilateral mesh T_h of a 2-D domain with cell maps Ψ_T (bilinear, or blended from
-// curved sides) and boundary edges carrying a label (from the generator or a Gmsh physical group)
-// and a BoundaryPart.
+// Conforming mesh T_h of a 2-D domain of quadrilaterals and triangles (mixed meshes too) with cell
+// maps Ψ_T (bilinear / affine, or blended from curved sides) and boundary edges carrying a label
+// (from the generator or a Gmsh physical group) and a BoundaryPart.
 #pragma once
 
 #include <Eigen/Core>
 #include <array>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
+
+#include "mesh/reference_cell.hpp"
 
 namespace hpcontact::mesh {
 
@@ -20,18 +23,16 @@ enum class BoundaryPart : unsigned char { interior, neumann, dirichlet, contact 
 
 std::string to_string(BoundaryPart part);
 
-/// Local numbering on the reference square [-1,1]²:
-///   vertices  0:(-1,-1)  1:(1,-1)  2:(1,1)  3:(-1,1)   (counterclockwise)
-///   edges     0: η=-1 (v0→v1)   1: ξ=+1 (v1→v2)   2: η=+1 (v3→v2)   3: ξ=-1 (v0→v3)
-/// Each local edge is parametrized by t ∈ [-1,1] running in the direction given above.
+/// Local numbering of the reference cells: mesh/reference_cell.hpp.
 /// A global edge runs from its lower to its higher global vertex index; edge_sign tells whether
 /// the local direction agrees (+1) or not (-1).
-class QuadMesh {
+class Mesh {
  public:
-  /// Builds topology and checks validity: every cell must be a strictly convex,
-  /// counterclockwise quadrilateral, and every edge shared by at most two cells.
+  /// Cells list their vertices counterclockwise; a triangle has -1 as its fourth entry.
+  /// Builds topology and checks validity: every quadrilateral must be strictly convex and every
+  /// triangle non-degenerate, both counterclockwise, and every edge shared by at most two cells.
   /// @throws InputError naming `origin` otherwise.
-  QuadMesh(std::vector<Point> vertices, std::vector<std::array<int, 4>> cells, const std::string& origin = "mesh");
+  Mesh(std::vector<Point> vertices, std::vector<std::array<int, 4>> cells, const std::string& origin = "mesh");
 
   int n_vertices() const { return static_cast<int>(vertices_.size()); }
   int n_cells() const { return static_cast<int>(cells_.size()); }
@@ -39,7 +40,14 @@ class QuadMesh {
 
   const Point& vertex(int v) const { return vertices_[v]; }
   const std::vector<Point>& vertices() const { return vertices_; }
-  const std::array<int, 4>& cell(int c) const { return cells_[c]; }
+  /// Global vertex indices of cell c, counterclockwise (three or four).
+  std::span<const int> cell(int c) const { return {cells_[c].data(), cells_[c][3] < 0 ? 3u : 4u}; }
+  /// Every cell as given to the constructor (a triangle's fourth entry is -1).
+  const std::vector<std::array<int, 4>>& cells() const { return cells_; }
+  CellType cell_type(int c) const { return cells_[c][3] < 0 ? CellType::triangle : CellType::quadrilateral; }
+  /// Number of vertices (= of edges) of cell c.
+  int cell_size(int c) const { return cells_[c][3] < 0 ? 3 : 4; }
+  bool has_triangles() const;
   /// Global vertex indices of edge e, lower index first.
   const std::array<int, 2>& edge(int e) const { return edges_[e]; }
   int cell_edge(int c, int local_edge) const { return cell_edges_[c][local_edge]; }
@@ -63,7 +71,8 @@ class QuadMesh {
   /// Edge e follows `curve` (t = -1 at edge(e)[0], t = 1 at edge(e)[1]); its cells become
   /// blended (mesh/blended_geometry.hpp). Only on an unrefined mesh.
   /// @throws InputError naming `origin` if the curve's ends miss the edge's vertices (by more than
-  /// 1e-8 of its length) or a cell's map is no longer invertible (Jacobian determinant ≤ 0).
+  /// 1e-8 of its length), a cell's map is no longer invertible (Jacobian determinant ≤ 0), or the
+  /// edge belongs to a triangle (curved triangles are not supported).
   void set_edge_curve(int e, std::shared_ptr<const EdgeCurve> curve, const std::string& origin);
   /// The blended map of cell c, or nullptr for a bilinear cell.
   const BlendedGeometry* cell_geometry(int c) const {
@@ -110,8 +119,5 @@ class QuadMesh {
 /// about 1e-4; measured on the §7 problems, energies on meshes graded to 1e-12 move by 1e-9 …
 /// 6e-7, while down to 1e-10 they agree with shallower meshes to 1e-11.
 inline constexpr double kFinestRelativeCell = 1e-10;
-
-/// Local vertex pair (start, end) of each local edge, in the local direction.
-inline constexpr std::array<std::array<int, 2>, 4> kLocalEdgeVertices{{{0, 1}, {1, 2}, {3, 2}, {0, 3}}};
 
 }  // namespace hpcontact::mesh
