@@ -31,10 +31,13 @@ def read_vtu(path):
     xyz = [float(v) for v in points]
     x, y = xyz[0::3], xyz[1::3]
     cells = [int(v) for v in array("connectivity")]
-    triangles = []
-    for k in range(0, len(cells), 4):
-        a, b, c, d = cells[k:k + 4]
-        triangles += [(a, b, c), (a, c, d)]
+    offsets = [int(v) for v in array("offsets")]
+    # Sub-cells are triangles or quadrilaterals (mixed meshes hold both); fan each into triangles.
+    triangles, start = [], 0
+    for end in offsets:
+        corners = cells[start:end]
+        triangles += [(corners[0], corners[k], corners[k + 1]) for k in range(1, len(corners) - 1)]
+        start = end
     return x, y, triangles, array("u")
 
 

@@ -2,8 +2,9 @@
 // functions, exact gradients, a basis of P_p with conditioning measured against Q_p), the collapsed
 // quadrature rule, triangle cell maps and refinement, conformity across triangle–quadrilateral
 // edges with mixed degrees, convergence against an exact solution (rate p in h, exponential in p),
-// the §7 Signorini problem on a Gmsh triangle mesh against the quadrilateral mesh, and the Gmsh
-// reader and scene keys for triangles.
+// the §7 Signorini problem on a Gmsh triangle mesh against the quadrilateral mesh, the Gmsh
+// reader and scene keys for triangles, and triangles with curved sides (exact arcs, exponential
+// convergence, the tutorial's arch scene).
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -31,6 +32,7 @@
 #include "scene/scene_mesh.hpp"
 #include "scene/scene_reader.hpp"
 #include "space/h1_space.hpp"
+#include "studies/convergence_study.hpp"
 
 using namespace hpcontact;
 using mesh::CellType;
@@ -318,4 +320,71 @@ TEST(TriangleScenes, GmshTrianglesReadAndTheCellsKeyIsChecked) {
   EXPECT_EQ(rectangle.n_cells(), 2 * 16 * 16);
   EXPECT_THROW(scene::read_scene(kTriangles + "signorini.toml", {{"domain.cells", std::string("hexagons"), "test"}}),
                InputError);
+}
+namespace {
+
+double triangle_aware_area(const mesh::Mesh& m) {
+  double sum = 0.0;
+  for (int c = 0; c < m.n_cells(); ++c) {
+    const mesh::CellMap map(m, c);
+    const auto rule = assembly::cell_quadrature(m.cell_type(c), 20);
+    for (int q = 0; q < rule.points.size(); ++q)
+      sum += rule.weights[q] * map.jacobian(rule.points.xi[q], rule.points.eta[q]).determinant();
+  }
+  return sum;
+}
+
+}  // namespace
+
+// Triangles with a curved side: the annulus.geo arcs followed exactly by blended triangles, on the
+// mesh and on its refinements (children keep the parent's map), and the H¹ error falls
+// exponentially in p where the polygonal domain through the same vertices stalls.
+TEST(CurvedTriangles, ArcsFollowedExactlyNestedUnderRefinementAndExponentialInP) {
+  const double quarter_annulus = 3.0 * std::acos(-1.0) / 4.0;
+  auto m = mesh::read_gmsh_mesh(std::string(HPCONTACT_SOURCE_DIR) + "/studies/curved/annulus.geo",
+                                {std::nullopt, mesh::GeneratedCells::triangles});
+  ASSERT_TRUE(m.has_triangles());
+  ASSERT_TRUE(m.has_curved_cells());
+  for (int level = 0; level < 3; ++level) {
+    EXPECT_NEAR(triangle_aware_area(m), quarter_annulus, 1e-13) << "level " << level;
+    for (int e : m.boundary_edges())
+      for (double t : {-0.6, 0.1, 0.7}) {
+        const double radius = m.edge_point(e, t).norm();
+        if (m.edge_label(e) == "outer") {
+          EXPECT_NEAR(radius, 2.0, 1e-14);
+        } else if (m.edge_label(e) == "inner") {
+          EXPECT_NEAR(radius, 1.0, 1e-14);
+        }
+      }
+    m = mesh::refine_uniformly(m);
+  }
+  auto study = studies::read_convergence_study(kTriangles + "curved_convergence.toml");
+  study.points = {
+      {4, 0, 0, "curved"}, {8, 0, 0, "curved"}, {12, 0, 0, "curved"}, {8, 0, 0, "polygonal"}, {12, 0, 0, "polygonal"}};
+  const auto rows = studies::run_convergence_study(study);
+  EXPECT_LT(rows[1].error_h1, 1e-3 * rows[0].error_h1);
+  EXPECT_LT(rows[2].error_h1, 1e-10);
+  EXPECT_GT(rows[3].error_h1, 1e-2);
+  EXPECT_GT(rows[4].error_h1, 0.9 * rows[3].error_h1) << "the polygonal geometry's error does not fall with p";
+  study.points = {{3, 0, 1, "curved"}, {3, 0, 2, "curved"}};
+  const auto h_rows = studies::run_convergence_study(study);
+  EXPECT_NEAR(std::log(h_rows[0].error_h1 / h_rows[1].error_h1) / std::log(h_rows[0].h / h_rows[1].h), 3.0, 0.15);
+}
+
+// The tutorial's triangle scene: a slab with a circular-arc contact edge meshed into triangles on
+// the fly; the contact problem meets KKT and the contact set is a proper part of the arc.
+TEST(CurvedTriangles, TutorialArchSceneSolvesOnItsArc) {
+  const auto dir = std::filesystem::temp_directory_path() / "hpcontact_triangle_arch";
+  std::filesystem::remove_all(dir);
+  const auto scene = scene::read_scene(std::string(HPCONTACT_SOURCE_DIR) + "/studies/tutorial/arch.toml",
+                                       {{"run.effects", std::vector<std::string>{"signorini"}, "test"}});
+  driver::SceneRunOptions options;
+  options.out = dir;
+  const auto summary = driver::run_scene(scene, options);
+  EXPECT_LT(summary["signorini"]["solver"]["kkt_residual"].get<double>(), 1e-12);
+  // The arc through (±1, 0) and (0, -0.3) with centre (0, 91/60): radius 109/60, angle 2 asin(60/109).
+  const double arc = 109.0 / 60.0 * 2.0 * std::asin(60.0 / 109.0);
+  const double contact = summary["signorini"]["contact_set_length"].get<double>();
+  EXPECT_GT(contact, 0.2 * arc);
+  EXPECT_LT(contact, 0.95 * arc);
 }

@@ -1,14 +1,17 @@
-// The transfinite (Gordon–Hall) map of a quadrilateral cell with curved sides: the bilinear map of
-// its corners plus, for each curved side, that side's deviation from its chord blended linearly
-// into the cell. On every side the map is exactly that side's curve (or its chord), so two cells
-// sharing a side agree on it; no nodes inside the cell are needed.
-// A refined cell keeps its parent's map restricted to a sub-square, so refinement nests spaces and
-// leaves the domain unchanged.
+// The transfinite map of a cell with curved sides: the bilinear (square) or affine (triangle) map
+// of its corners plus, for each curved side, that side's deviation from its chord blended into
+// the cell — Gordon–Hall on the square, 0.5 (1 ∓ ·) δ(s) per side; on the triangle
+// 4 λ_a λ_b φ(λ_b − λ_a) with φ(s) = δ(s)/(1 − s²) for side a→b, which is δ on that side and
+// vanishes on the other two. On every side the map is exactly that side's curve (or its chord), so
+// two cells sharing a side agree on it; no nodes inside the cell are needed.
+// A refined cell keeps its parent's map composed with the affine map of its child's reference cell
+// into the parent's, so refinement nests spaces and leaves the domain unchanged.
 #pragma once
 
 #include <Eigen/Core>
 #include <array>
 #include <memory>
+#include <optional>
 
 #include "mesh/edge_curve.hpp"
 #include "mesh/mesh.hpp"
@@ -17,19 +20,20 @@ namespace hpcontact::mesh {
 
 class BlendedGeometry {
  public:
-  /// A cell with straight sides between `corners` (local vertex order of Mesh).
-  explicit BlendedGeometry(const std::array<Point, 4>& corners);
+  /// A cell of `type` with straight sides between `corners` (local vertex order of Mesh; the
+  /// fourth is unused for a triangle).
+  BlendedGeometry(CellType type, const std::array<Point, 4>& corners);
 
   /// Side `local_edge` follows `curve`; `reversed`: the curve runs against the local edge
   /// direction (its t = -1 at the local edge's end vertex).
   void set_side(int local_edge, std::shared_ptr<const EdgeCurve> curve, bool reversed);
   bool has_curved_side() const;
   /// Whether the map covers the whole original cell (not a refined part of it).
-  bool is_whole() const { return xi0_ == -1.0 && xi1_ == 1.0 && eta0_ == -1.0 && eta1_ == 1.0; }
+  bool is_whole() const { return !part_; }
 
-  /// The same map restricted to the sub-square [ξ0, ξ1] × [η0, η1] of this cell's reference square,
-  /// reparametrized onto [-1, 1]².
-  BlendedGeometry restricted(double xi0, double xi1, double eta0, double eta1) const;
+  /// The same map composed with the affine map r ↦ offset + matrix · r of a child's reference cell
+  /// into this cell's (of the same type).
+  BlendedGeometry restricted(const Eigen::Matrix2d& matrix, const Eigen::Vector2d& offset) const;
 
   Point map(double xi, double eta) const;
   /// [[∂x/∂ξ, ∂x/∂η], [∂y/∂ξ, ∂y/∂η]].
@@ -39,14 +43,25 @@ class BlendedGeometry {
   struct Side {
     std::shared_ptr<const EdgeCurve> curve;
     bool reversed = false;
+    /// Triangle: φ(s) = δ(s)/(1 − s²) as a polynomial in the local edge parameter s.
+    std::shared_ptr<const EdgeCurve> quotient;
   };
   /// The side's deviation δ(s) from its chord and δ'(s), s the local edge parameter.
   std::pair<Point, Point> deviation(int local_edge, double s) const;
+  /// The map and its Jacobian at a point of the original cell's reference cell.
+  std::pair<Point, Eigen::Matrix2d> square_map(double x, double y) const;
+  std::pair<Point, Eigen::Matrix2d> triangle_map(double x, double y) const;
+  std::pair<Point, Eigen::Matrix2d> original(double xi, double eta) const;
 
+  CellType type_;
   std::array<Point, 4> corners_;
   std::array<Side, 4> sides_;
-  // The sub-square of the original cell's reference square this map covers.
-  double xi0_ = -1.0, xi1_ = 1.0, eta0_ = -1.0, eta1_ = 1.0;
+  /// The affine map of this part's reference cell into the original cell's (empty: the whole cell).
+  struct Part {
+    Eigen::Matrix2d matrix;
+    Eigen::Vector2d offset;
+  };
+  std::optional<Part> part_;
 };
 
 }  // namespace hpcontact::mesh

@@ -41,7 +41,7 @@ Eigen::Matrix2d CellMap::jacobian(double xi, double eta) const {
 }
 
 std::optional<Eigen::Vector2d> CellMap::inverse(const Point& x, double tolerance) const {
-  Eigen::Vector2d ref(0.0, 0.0);
+  Eigen::Vector2d ref = reference_centre(type_);
   const double scale = b_.norm() + c_.norm();
   for (int iteration = 0; iteration < 30; ++iteration) {
     const Point residual = map(ref.x(), ref.y()) - x;

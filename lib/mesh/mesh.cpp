@@ -140,31 +140,28 @@ void Mesh::set_edge_curve(int e, std::shared_ptr<const EdgeCurve> curve, const s
   if ((curve->point(-1.0) - a).norm() > 1e-8 * length || (curve->point(1.0) - b).norm() > 1e-8 * length)
     throw InputError(origin + ": the curve of edge (" + std::to_string(edges_[e][0]) + ", " +
                      std::to_string(edges_[e][1]) + ") does not end at its vertices");
-  for (int k = 0; k < 2; ++k)
-    if (edge_cells_[e][k] >= 0 && cell_type(edge_cells_[e][k]) == CellType::triangle)
-      throw InputError(origin + ": edge (" + std::to_string(edges_[e][0]) + ", " + std::to_string(edges_[e][1]) +
-                       ") is curved but belongs to a triangle; curved sides are supported on quadrilaterals only "
-                       "(mesh the cells along the curve as quadrilaterals, e.g. Gmsh's Recombine, or set "
-                       "[domain] geometry = \"polygonal\")");
   if (cell_geometry_.empty()) cell_geometry_.resize(cells_.size());
   for (int k = 0; k < 2; ++k) {
     const int c = edge_cells_[e][k];
     if (c < 0) continue;
     const int local = local_edge_of(e, k);
     HPC_VERIFY(!cell_geometry_[c] || cell_geometry_[c]->is_whole(), "edge curves are set before refinement");
-    std::array<Point, 4> corners;
-    for (int v = 0; v < 4; ++v) corners[v] = vertices_[cells_[c][v]];
+    std::array<Point, 4> corners{};
+    for (int v = 0; v < cell_size(c); ++v) corners[v] = vertices_[cells_[c][v]];
     auto geometry = cell_geometry_[c] ? std::make_shared<BlendedGeometry>(*cell_geometry_[c])
-                                      : std::make_shared<BlendedGeometry>(corners);
+                                      : std::make_shared<BlendedGeometry>(cell_type(c), corners);
     geometry->set_side(local, curve, cell_edge_signs_[c][local] < 0);
     cell_geometry_[c] = std::move(geometry);
     // The blended map must stay invertible: a side bulging past the opposite side (a curve much
     // more curved than the cell is small) folds the cell.
     const CellMap map(*this, c);
-    const double scale = map.jacobian(0.0, 0.0).determinant();
+    const Eigen::Vector2d centre = reference_centre(cell_type(c));
+    const double scale = map.jacobian(centre.x(), centre.y()).determinant();
     for (int i = 0; i <= 8; ++i)
       for (int j = 0; j <= 8; ++j)
-        if (!(map.jacobian(-1.0 + i / 4.0, -1.0 + j / 4.0).determinant() > 1e-10 * std::abs(scale)))
+        if (const Eigen::Vector2d r(-1.0 + i / 4.0, -1.0 + j / 4.0);
+            reference_contains(cell_type(c), r, 0.0) &&
+            !(map.jacobian(r.x(), r.y()).determinant() > 1e-10 * std::abs(scale)))
           throw InputError(origin + ": cell " + std::to_string(c) +
                            " folds over with its curved side (Jacobian determinant ≤ 0); refine the mesh near the "
                            "curve");

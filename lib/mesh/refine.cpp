@@ -42,17 +42,30 @@ Mesh refine_uniformly(const Mesh& mesh) {
     ++centre;
   }
   Mesh fine(std::move(vertices), std::move(cells), "refined mesh");
-  // Children of a curved cell keep its map on their quarter of the reference square, in the order
-  // the cells were pushed above.
-  constexpr std::array<std::array<double, 4>, 4> kQuarters{
-      {{-1.0, 0.0, -1.0, 0.0}, {0.0, 1.0, -1.0, 0.0}, {0.0, 1.0, 0.0, 1.0}, {-1.0, 0.0, 0.0, 1.0}}};
+  // Children of a curved cell keep its map composed with the affine map of their reference cell into
+  // the parent's, in the order the cells were pushed above: the child's reference vertices 0, 1
+  // and the last one (3 on the square, 2 on the triangle) in the parent's reference cell.
+  using Corners = std::array<Eigen::Vector2d, 3>;
+  const std::array<Corners, 4> square_children{{{{{-1, -1}, {0, -1}, {-1, 0}}},
+                                                {{{0, -1}, {1, -1}, {0, 0}}},
+                                                {{{0, 0}, {1, 0}, {0, 1}}},
+                                                {{{-1, 0}, {0, 0}, {-1, 1}}}}};
+  const std::array<Corners, 4> triangle_children{{{{{-1, -1}, {0, -1}, {-1, 0}}},
+                                                  {{{0, -1}, {1, -1}, {0, 0}}},
+                                                  {{{-1, 0}, {0, 0}, {-1, 1}}},
+                                                  {{{0, -1}, {0, 0}, {-1, 0}}}}};
   for (int c = 0; c < mesh.n_cells(); ++c)
-    if (const BlendedGeometry* geometry = mesh.cell_geometry(c))
+    if (const BlendedGeometry* geometry = mesh.cell_geometry(c)) {
+      const auto& children = mesh.cell_type(c) == CellType::triangle ? triangle_children : square_children;
       for (int k = 0; k < 4; ++k) {
-        const auto& [xi0, xi1, eta0, eta1] = kQuarters[k];
-        fine.set_cell_geometry(4 * c + k,
-                               std::make_shared<BlendedGeometry>(geometry->restricted(xi0, xi1, eta0, eta1)));
+        // r ↦ offset + matrix r sends the reference vertices (-1,-1), (1,-1), (-1,1) to the corners.
+        const auto& [v0, v1, v2] = children[k];
+        Eigen::Matrix2d matrix;
+        matrix << 0.5 * (v1 - v0), 0.5 * (v2 - v0);
+        const Eigen::Vector2d offset = v0 + matrix * Eigen::Vector2d(1.0, 1.0);
+        fine.set_cell_geometry(4 * c + k, std::make_shared<BlendedGeometry>(geometry->restricted(matrix, offset)));
       }
+    }
   // A fine boundary edge has one original vertex and the midpoint of its parent edge.
   for (int e : fine.boundary_edges()) {
     const auto& ends = fine.edge(e);
