@@ -40,7 +40,7 @@ inline contact::ContactSolution solve_paper_contact(contact::ContactProblem prob
   const auto boundary = mesh::BoundaryMesh::uniform(2.0, m);
   auto setup = uniform_setup(mesh, boundary, p, pc);
   setup.problem = problem;
-  setup.constraint_points = constraint_points;
+  if (constraint_points) setup.constraint_points = {*constraint_points};
   setup.f = data.f;
   setup.obstacle = data.obstacle;
   setup.bound = data.bound;

@@ -274,8 +274,8 @@ pC = 0
 )toml";
   const auto scene = scene::parse_scene(
       base, "base.toml", {{"contact_mesh.ratio", std::string("1/2"), "--ratio"}, {"discretization.p", 4LL, "--p"}});
-  ASSERT_TRUE(scene.ratio.has_value());
-  EXPECT_EQ(scene.ratio->text, "1/2");
+  ASSERT_EQ(scene.ratio.size(), 1u);
+  EXPECT_EQ(scene.ratio.front().text, "1/2");
   EXPECT_EQ(scene.p.value, 4);
   EXPECT_TRUE(scene.p.rule.empty());
   EXPECT_EQ(scene.where("contact_mesh.ratio"), "--ratio");

@@ -184,3 +184,43 @@ TEST(ContactZones, ClosedCurveAroundAPinMeetsKkt) {
     EXPECT_THAT(error.what(), ::testing::HasSubstr("closed curve"));
   }
 }
+
+// Each zone its own T_{C,H}, p_C and constraint points: lists with one value per zone (ratio,
+// constraint_points) and a p_C rule by position give the same discrete problem as the equivalent
+// explicit breakpoints, and lists of the wrong length or too few points are refused by name.
+TEST(ContactZones, EachZoneItsOwnContactMeshDegreeAndConstraintPoints) {
+  const std::vector<scene::SceneOverride> per_zone{{"contact_mesh.ratio", std::vector<std::string>{"1/2", "1"}, "test"},
+                                                   {"discretization.pC", std::string("1 + 2 * (y > 0)"), "test"},
+                                                   {"solve.constraint_points", std::vector<long long>{2, 5}, "test"},
+                                                   {"run.effects", std::vector<std::string>{"signorini"}, "test"}};
+  const auto lists = run("two_zones.toml", per_zone, "per_zone");
+  // Zone 0 (the bottom edge, s ∈ [0, 2]): 4 segments; zone 1 (the top, s ∈ [2, 4]): 8.
+  std::vector<double> breakpoints{0.5, 1.0, 1.5, 2.0};
+  for (int k = 1; k <= 8; ++k) breakpoints.push_back(2.0 + 0.25 * k);
+  auto explicit_overrides = per_zone;
+  explicit_overrides[0] = {"contact_mesh.breakpoints", breakpoints, "test"};
+  const auto given = run("two_zones.toml", explicit_overrides, "breakpoints");
+  const auto& signorini = lists["signorini"];
+  EXPECT_NEAR(signorini["energy"].get<double>(), given["signorini"]["energy"].get<double>(), 1e-14);
+  EXPECT_LT(signorini["solver"]["kkt_residual"].get<double>(), 1e-12);
+  EXPECT_EQ(signorini["nmult"].get<int>(), 4 * 2 + 8 * 4);
+  EXPECT_EQ(signorini["constraint_points_per_segment"]["total"].get<int>(), 4 * 2 + 8 * 5);
+  EXPECT_EQ(signorini["constraint_points_per_segment"]["max"].get<int>(), 5);
+
+  auto expect_refused = [&](const std::vector<scene::SceneOverride>& overrides, const std::string& key,
+                            const std::string& rule) {
+    try {
+      run("two_zones.toml", overrides, "refused");
+      ADD_FAILURE() << key << " was accepted";
+    } catch (const InputError& error) {
+      EXPECT_THAT(error.what(), ::testing::HasSubstr(key));
+      EXPECT_THAT(error.what(), ::testing::HasSubstr(rule));
+    }
+  };
+  auto three_ratios = per_zone;
+  three_ratios[0] = {"contact_mesh.ratio", std::vector<std::string>{"1/2", "1", "1"}, "test"};
+  expect_refused(three_ratios, "contact_mesh.ratio", "one per zone of Γ_C: the scene has 2 zones");
+  auto too_few = per_zone;
+  too_few[2] = {"solve.constraint_points", std::vector<long long>{2, 3}, "test"};
+  expect_refused(too_few, "solve.constraint_points", "at least p_C + 1 = 4 (a segment of zone 1 has p_C = 3)");
+}

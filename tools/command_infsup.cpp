@@ -98,8 +98,8 @@ int run_infsup(const InfSupOptions& o) {
                                "leave it ungraded and the estimate is then too low: use --norm interp",
                                scene.alpha_tolerance));
   fmt::print("# problem {} norm {} p {} pC {} n {} m {} h/H {} Pi {:.6g} ndofs {} nmult {}\n", problem, norm, p, pc, n,
-             m, scene.ratio ? scene.ratio->text : fmt::format("{}", ratio), result.pi, result.n_primal_dofs,
-             result.n_multiplier_dofs);
+             m, scene.ratio.size() == 1 ? scene.ratio.front().text : fmt::format("{}", ratio), result.pi,
+             result.n_primal_dofs, result.n_multiplier_dofs);
   fmt::print("# lambda_min {:.6e} lambda_max {:.6e}{} solver {} residual {:.2e} seconds {:.3f}\n", result.lambda_min,
              result.lambda_max, result.singular ? " (singular to working precision: alpha = 0)" : "", result.method,
              result.residual, result.seconds);
@@ -107,8 +107,9 @@ int run_infsup(const InfSupOptions& o) {
     io::CsvTable row({"problem", "norm", "p", "pC", "n", "m", "h", "H", "ratio", "Pi", "alpha", "alpha_error", "ndofs",
                       "nmult", "seconds"});
     row.add_row({problem, norm, static_cast<long long>(p), static_cast<long long>(pc), static_cast<long long>(n),
-                 static_cast<long long>(m), result.h, result.H, scene.ratio ? scene.ratio->value : ratio, result.pi,
-                 result.alpha, result.alpha_error, static_cast<long long>(result.n_primal_dofs),
+                 static_cast<long long>(m), result.h, result.H,
+                 scene.ratio.size() == 1 ? scene.ratio.front().value : ratio, result.pi, result.alpha,
+                 result.alpha_error, static_cast<long long>(result.n_primal_dofs),
                  static_cast<long long>(result.n_multiplier_dofs), result.seconds});
     io::append_csv_rows(o.csv, row);
   }

@@ -44,6 +44,18 @@ int segment_constraint_points(ContactProblem problem, int pc, std::optional<int>
   return q;
 }
 
+std::optional<int> requested_constraint_points(const std::vector<int>& per_zone,
+                                               const mesh::BoundaryMesh& boundary_mesh, int segment) {
+  if (per_zone.empty()) return std::nullopt;
+  if (per_zone.size() == 1) return per_zone.front();
+  const auto zones = boundary_mesh.zones().size();
+  if (per_zone.size() != zones)
+    throw InputError(
+        fmt::format("{} constraint point counts given for the {} zones of T_C,H: give one, or one per zone",
+                    per_zone.size(), zones));
+  return per_zone[static_cast<std::size_t>(boundary_mesh.zone_of_segment(segment))];
+}
+
 namespace {
 
 void check_data(const ContactSetup& setup) {

@@ -39,6 +39,12 @@ std::vector<double> constraint_points(int q);
 /// M_1 with p_C ≤ 1), else `requested` or p_C + 1. @throws InputError if requested < p_C + 1.
 int segment_constraint_points(ContactProblem problem, int pc, std::optional<int> requested);
 
+/// The |𝒞| requested for segment `segment` of T_{C,H} from a list holding one value for every
+/// segment or one per zone of T_{C,H}; empty: nothing requested (p_C + 1).
+/// @throws InputError if the list has another length.
+std::optional<int> requested_constraint_points(const std::vector<int>& per_zone,
+                                               const mesh::BoundaryMesh& boundary_mesh, int segment);
+
 using PointFunction = std::function<double(const mesh::Point&)>;
 
 struct ContactSetup {
@@ -59,8 +65,9 @@ struct ContactSetup {
   /// Dirichlet data u_D on Γ_D; empty: u = 0 there.
   PointFunction dirichlet;
   /// |𝒞|, the constraint points per segment where Remark 3 applies (p_C ≥ 2, or every p_C for
-  /// (15)); must be ≥ p_C + 1 on each such segment. Empty: p_C + 1.
-  std::optional<int> constraint_points;
+  /// (15)); must be ≥ p_C + 1 on each such segment. One value for every segment, or one per zone
+  /// of T_{C,H}; empty: p_C + 1.
+  std::vector<int> constraint_points;
   BoxQpOptions qp;
   InequalityQpOptions interior_point;
   /// Optional: the operators of S^p(T_h) shared with other computations (α of the same pairing),

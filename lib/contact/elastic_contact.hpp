@@ -43,8 +43,8 @@ struct ElasticContactSetup {
   PointFunction gap;
   PointFunction threshold;            ///< s ≥ 0, Tresca only
   double friction_coefficient = 0.0;  ///< F ≥ 0, Coulomb only
-  /// |𝒞| per segment where Remark 3 applies; empty: p_C + 1.
-  std::optional<int> constraint_points;
+  /// |𝒞| per segment where Remark 3 applies: one value, or one per zone of T_{C,H}; empty: p_C + 1.
+  std::vector<int> constraint_points;
   BoxQpOptions qp;
   InequalityQpOptions interior_point;
   int max_fixed_point_iterations = 100;  ///< Coulomb

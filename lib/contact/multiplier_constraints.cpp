@@ -75,7 +75,8 @@ MultiplierConstraints build_multiplier_constraints(const ContactSetup& setup, co
     for (int i = 0; i <= pc; ++i) v.row(i) = basis::legendre_values(pc, nodes[i]).transpose();
     const Eigen::MatrixXd v_inverse = v.inverse();
     out.to_nodal.block(first, first, pc + 1, pc + 1) = v_inverse.transpose();
-    const int q = segment_constraint_points(setup.problem, pc, setup.constraint_points);
+    const int q = segment_constraint_points(
+        setup.problem, pc, requested_constraint_points(setup.constraint_points, multipliers.boundary_mesh(), k));
     out.points_per_segment.push_back(q);
     out.bounds_only = out.bounds_only && q == pc + 1;
     segments.push_back(segment_constraints(setup, contact, pc, q, v_inverse, setup.boundary_mesh->segment_begin(k),

@@ -72,7 +72,11 @@ contact::ElasticContactSetup elastic_setup_of(const scene::Scene& scene, const S
   setup.boundary_mesh = d.boundary_mesh.get();
   setup.segment_degrees = d.segment_degrees;
   setup.problem = problem;
-  setup.constraint_points = scene.constraint_points;
+  // The tangential multiplier's box (friction) is where Remark 3 asks the most points.
+  setup.constraint_points = checked_constraint_points(scene, d,
+                                                      problem == contact::ElasticContactProblem::frictionless
+                                                          ? contact::ContactProblem::signorini
+                                                          : contact::ContactProblem::friction_s);
   const auto fx = scene_function(scene, "data.f_x", scene.body_force_x);
   const auto fy = scene_function(scene, "data.f_y", scene.body_force_y);
   setup.body_force = [fx, fy](const mesh::Point& x) { return Eigen::Vector2d(fx(x), fy(x)); };

@@ -30,6 +30,26 @@ std::function<double(const mesh::Point&)> scene_function(const scene::Scene& sce
   return [expression](const mesh::Point& x) { return expression(x.x(), x.y()); };
 }
 
+std::vector<int> checked_constraint_points(const scene::Scene& scene, const SceneDiscretization& d,
+                                           contact::ContactProblem problem) {
+  const auto& boundary_mesh = *d.boundary_mesh;
+  const int n_zones = static_cast<int>(boundary_mesh.zones().size());
+  for (int k = 0; k < boundary_mesh.n_segments(); ++k) {
+    if (scene.constraint_points.empty()) break;
+    const int zone = boundary_mesh.zone_of_segment(k);
+    const int requested = scene.of_zone(scene.constraint_points, zone, n_zones, "solve.constraint_points");
+    const int pc = d.segment_degrees[static_cast<std::size_t>(k)];
+    try {
+      contact::segment_constraint_points(problem, pc, requested);
+    } catch (const InputError&) {
+      throw_bad_input(scene.where("solve.constraint_points"), "solve.constraint_points", std::to_string(requested),
+                      fmt::format("at least p_C + 1 = {} (a segment of {} has p_C = {})", pc + 1,
+                                  n_zones > 1 ? fmt::format("zone {}", zone) : std::string("Γ_C"), pc));
+    }
+  }
+  return scene.constraint_points;
+}
+
 contact::ContactSetup contact_setup_of(const scene::Scene& scene, const SceneDiscretization& d,
                                        contact::ContactProblem problem, const operators::PrimalOperators& primal) {
   contact::ContactSetup setup;
@@ -38,17 +58,7 @@ contact::ContactSetup contact_setup_of(const scene::Scene& scene, const SceneDis
   setup.boundary_mesh = d.boundary_mesh.get();
   setup.segment_degrees = d.segment_degrees;
   setup.problem = problem;
-  setup.constraint_points = scene.constraint_points;
-  for (int pc : setup.segment_degrees) {
-    try {
-      contact::segment_constraint_points(problem, pc, setup.constraint_points);
-    } catch (const InputError&) {
-      throw_bad_input(scene.where("solve.constraint_points"), "solve.constraint_points",
-                      std::to_string(*setup.constraint_points),
-                      fmt::format("at least p_C + 1 = {} (the largest p_C of the scene's segments is {})", pc + 1,
-                                  *std::max_element(setup.segment_degrees.begin(), setup.segment_degrees.end())));
-    }
-  }
+  setup.constraint_points = checked_constraint_points(scene, d, problem);
   setup.f = scene_function(scene, "data.f", scene.load);
   setup.load_key = "f = " + scene.load;
   setup.dirichlet = scene_function(scene, "boundary.u_D", scene.dirichlet_value);

@@ -45,6 +45,11 @@ std::function<double(const mesh::Point&)> scene_function(const scene::Scene& sce
 contact::ContactSetup contact_setup_of(const scene::Scene& scene, const SceneDiscretization& discretization,
                                        contact::ContactProblem problem, const operators::PrimalOperators& primal);
 
+/// solve.constraint_points (one value or one per zone) checked against every segment's p_C for
+/// `problem`. @throws InputError naming the key, the zone and p_C + 1 where it is too small.
+std::vector<int> checked_constraint_points(const scene::Scene& scene, const SceneDiscretization& discretization,
+                                           contact::ContactProblem problem);
+
 /// The weight of the norm in which multiplier errors of `problem` are measured, as a function of
 /// the arc length on Γ_C: s for (13), where the data determine only sλ (λ itself not where s
 /// vanishes, so ‖λ_H − λ‖ would measure an undetermined part); none (L²) for (9) and (15).

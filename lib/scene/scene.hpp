@@ -5,6 +5,8 @@
 // their reference (docs/scene_keys.md).
 #pragma once
 
+#include <fmt/format.h>
+
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -15,6 +17,7 @@
 #include "assembly/elastic_system.hpp"
 #include "contact/contact_problem.hpp"
 #include "contact/elastic_contact.hpp"
+#include "core/error.hpp"
 #include "infsup/infsup_operators.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/rectangle_mesh.hpp"
@@ -69,9 +72,10 @@ struct Scene {
   /// Dirichlet data, expressions in x, y: u_D on Γ_D (scalar model), u_D,x and u_D,y wherever that
   /// component is fixed (Γ_D and rollers; elastic scenes). Empty: 0.
   std::string dirichlet_value, dirichlet_x, dirichlet_y;
-  // [contact_mesh]: exactly one of m, ratio (= h/H), breakpoints.
-  int m = 0;
-  std::optional<Ratio> ratio;
+  // [contact_mesh]: exactly one of m, ratio (= h/H), breakpoints. m and ratio hold one value for
+  // every zone of Γ_C or one per zone (in the zones' order, ContactBoundary); empty: not given.
+  std::vector<int> m;
+  std::vector<Ratio> ratio;
   std::vector<double> breakpoints;
   double grading = 1.0;
   // [discretization]
@@ -93,7 +97,8 @@ struct Scene {
   operators::PrimalNorm primal_norm = operators::PrimalNorm::h1;  ///< elastic scenes: h1 or energy
   double alpha_tolerance = 1e-4;
   // [solve]
-  std::optional<int> constraint_points;  ///< |𝒞| per segment (Remark 3); empty: p_C + 1
+  /// |𝒞| per segment (Remark 3): one value, or one per zone of Γ_C; empty: p_C + 1.
+  std::vector<int> constraint_points;
   bool fit_free_boundary = false;
   // [run]: empty effects when the scene has no [run] table (`solve` then needs --effects).
   std::vector<Effect> effects;
@@ -108,6 +113,10 @@ struct Scene {
   /// Where the value of a dotted key came from, for messages: an option such as
   /// "hpcontact solve --p" if one replaced it, else the file.
   std::string where(const std::string& key) const;
+  /// The value of a per-zone list (one value for all zones, or one per zone) for zone `zone` of
+  /// `n_zones`. @throws InputError naming `key` if the list has another length.
+  template <typename T>
+  const T& of_zone(const std::vector<T>& values, int zone, int n_zones, const std::string& key) const;
   bool is_rectangle() const { return mesh_file.empty(); }
   bool has_effect(Effect effect) const;
   /// The contact problems among the effects, in the order signorini, friction, friction_s.
@@ -129,5 +138,15 @@ Effect effect_of(contact::ElasticContactProblem problem);
 std::optional<contact::ElasticContactProblem> elastic_problem_of(Effect effect);
 /// The effect with this name ("friction_s"); empty if none has it.
 std::optional<Effect> effect_named(const std::string& name);
+
+template <typename T>
+const T& Scene::of_zone(const std::vector<T>& values, int zone, int n_zones, const std::string& key) const {
+  if (values.size() == 1) return values.front();
+  if (static_cast<int>(values.size()) != n_zones)
+    throw_bad_input(
+        where(key), key, fmt::format("(a list of {})", values.size()),
+        fmt::format("one value, or one per zone of Γ_C: the scene has {} zone{}", n_zones, n_zones == 1 ? "" : "s"));
+  return values[static_cast<std::size_t>(zone)];
+}
 
 }  // namespace hpcontact::scene

@@ -273,17 +273,25 @@ void add_boundary_and_contact_mesh_keys(std::vector<SceneKey>& keys) {
                      "elastic scenes: u_y = u_D_y on Γ_D and on the `fixed_y` edges (empty: 0)"));
   // [contact_mesh]
   const char* size_group = "contact_mesh size";
-  SceneKey m = integer_key("contact_mesh", "m", 1, 1000000, std::nullopt, &Scene::m,
-                           "segments of T_{C,H} per zone of Γ_C, graded by `grading`");
-  m.group = size_group;
-  add(m);
-  add({"contact_mesh", "ratio", "number or fraction", "", "positive, e.g. 1, 0.5, \"2/3\"",
-       "h/H in each zone of Γ_C: on a uniform T_h there m = n · ratio; on a graded one 1/k merges k edges, k "
-       "splits each edge",
+  add({"contact_mesh", "m", "integer or list", "", "[1, 1000000]; one value, or one per zone of Γ_C",
+       "segments of T_{C,H} per zone of Γ_C, graded by `grading` (a list: zone by zone)", size_group,
+       [](const TomlTable& table, Scene& scene) {
+         if (!table.has("m")) return;
+         scene.m.clear();
+         for (long long m : table.integer_list("m", 1, 1000000)) scene.m.push_back(static_cast<int>(m));
+         if (scene.m.empty()) throw_bad_input(table.origin("m"), table.qualified("m"), "[]", "at least one value");
+       }});
+  add({"contact_mesh", "ratio", "number, fraction or list", "",
+       "positive, e.g. 1, 0.5, \"2/3\"; one value, or one per zone of Γ_C",
+       "h/H in each zone of Γ_C (a list: zone by zone): on a uniform T_h there m = n · ratio; on a graded one 1/k "
+       "merges k edges, k splits each edge",
        size_group, [](const TomlTable& table, Scene& scene) {
-         if (table.has("ratio"))
-           scene.ratio =
-               parse_ratio(table.string_list("ratio").front(), table.origin("ratio"), table.qualified("ratio"));
+         if (!table.has("ratio")) return;
+         scene.ratio.clear();
+         for (const auto& text : table.string_list("ratio"))
+           scene.ratio.push_back(parse_ratio(text, table.origin("ratio"), table.qualified("ratio")));
+         if (scene.ratio.empty())
+           throw_bad_input(table.origin("ratio"), table.qualified("ratio"), "[]", "at least one value");
        }});
   add(numbers_key(
       "contact_mesh", "breakpoints", "positive arc lengths (numbers), strictly increasing, the last the length of Γ_C",
@@ -342,10 +350,17 @@ void add_run_keys(std::vector<SceneKey>& keys) {
   add(number_key("infsup", "alpha_tol", 1e-12, 0.1, 1e-4, &Scene::alpha_tolerance,
                  "relative error of α: the H^{-1/2} reference is refined until the estimate is below it"));
   // [solve]
-  add({"solve", "constraint_points", "integer", "p_C + 1", "[1, 64], at least p_C + 1",
-       "constraint points per segment (Chebyshev–Lobatto, Remark 3)", "", [](const TomlTable& table, Scene& scene) {
-         if (table.has("constraint_points"))
-           scene.constraint_points = static_cast<int>(table.integer("constraint_points", 1, 64));
+  add({"solve", "constraint_points", "integer or list", "p_C + 1",
+       "[1, 64], at least p_C + 1; one value, or one per zone of Γ_C",
+       "constraint points per segment (Chebyshev–Lobatto, Remark 3; a list: zone by zone)", "",
+       [](const TomlTable& table, Scene& scene) {
+         if (!table.has("constraint_points")) return;
+         scene.constraint_points.clear();
+         for (long long q : table.integer_list("constraint_points", 1, 64))
+           scene.constraint_points.push_back(static_cast<int>(q));
+         if (scene.constraint_points.empty())
+           throw_bad_input(table.origin("constraint_points"), table.qualified("constraint_points"), "[]",
+                           "at least one value");
        }});
   add({"solve", "fit_free_boundary", "boolean", "false", "true, false",
        "grade the mesh towards the free boundary of the contact problems first (rectangle domains)", "",

@@ -230,11 +230,13 @@ std::vector<int> grading_nodes_on_contact(const Scene& scene, const mesh::Contac
 /// uniform T_h|zone m = n · ratio equal segments; on a graded one T_{C,H} follows T_h: ratio 1/k
 /// merges k neighbouring edges (the last segment also takes the n mod k left over), ratio k splits
 /// every edge in k.
-std::vector<double> zone_nodes_by_ratio(const Scene& scene, const mesh::ContactBoundary& contact,
-                                        const mesh::ContactZone& zone) {
+std::vector<double> zone_nodes_by_ratio(const Scene& scene, const mesh::ContactBoundary& contact, int zone_index) {
+  const mesh::ContactZone& zone = contact.zones()[static_cast<std::size_t>(zone_index)];
+  const Ratio& given =
+      scene.of_zone(scene.ratio, zone_index, static_cast<int>(contact.zones().size()), "contact_mesh.ratio");
   const auto edges = contact.breakpoints();
   const int first = zone.first_edge, n = zone.end_edge - zone.first_edge;
-  const double ratio = scene.ratio->value, length = zone.length();
+  const double ratio = given.value, length = zone.length();
   const std::string ratio_where = scene.where("contact_mesh.ratio");
   bool uniform = true;
   for (int e = first; e < zone.end_edge; ++e)
@@ -245,7 +247,7 @@ std::vector<double> zone_nodes_by_ratio(const Scene& scene, const mesh::ContactB
     const int m = static_cast<int>(std::lround(exact));
     if (m < 1 || std::abs(exact - m) > 1e-9 * exact)
       throw_bad_input(
-          ratio_where, "contact_mesh.ratio", scene.ratio->text,
+          ratio_where, "contact_mesh.ratio", given.text,
           fmt::format("a zone of Γ_C has {} edges of T_h; {} · ratio = {} must be a whole number of segments", n, n,
                       exact));
     const auto graded = mesh::BoundaryMesh::graded(length, m, scene.grading).nodes();
@@ -270,7 +272,7 @@ std::vector<double> zone_nodes_by_ratio(const Scene& scene, const mesh::ContactB
       for (long i = 1; i <= divide; ++i) nodes.push_back(edges[e] + (edges[e + 1] - edges[e]) * i / divide);
   } else {
     throw_bad_input(
-        ratio_where, "contact_mesh.ratio", scene.ratio->text,
+        ratio_where, "contact_mesh.ratio", given.text,
         fmt::format("T_h is not uniform on a zone of Γ_C ({} edges): the ratio must be 1/k with k <= {}, or a whole "
                     "number",
                     n, n));
@@ -301,18 +303,21 @@ mesh::BoundaryMesh build_scene_boundary_mesh(const Scene& scene, const mesh::Con
     coarse = given_breakpoints(scene, contact);
     origin = scene.file + ": key 'contact_mesh.breakpoints'";
   } else {
-    for (const auto& zone : contact.zones()) {
-      if (scene.ratio) {
-        for (double s : zone_nodes_by_ratio(scene, contact, zone)) coarse.push_back(s);
+    const int n_zones = static_cast<int>(contact.zones().size());
+    for (int z = 0; z < n_zones; ++z) {
+      const auto& zone = contact.zones()[static_cast<std::size_t>(z)];
+      if (!scene.ratio.empty()) {
+        for (double s : zone_nodes_by_ratio(scene, contact, z)) coarse.push_back(s);
         continue;
       }
       // m segments per zone (m · 2^refinements after refinements), graded towards its ends.
-      const auto graded = mesh::BoundaryMesh::graded(zone.length(), scene.m * split, scene.grading).nodes();
+      const int m = scene.of_zone(scene.m, z, n_zones, "contact_mesh.m");
+      const auto graded = mesh::BoundaryMesh::graded(zone.length(), m * split, scene.grading).nodes();
       for (std::size_t k = 1; k < graded.size(); ++k) coarse.push_back(zone.s_begin + graded[k]);
     }
     split = 1;  // the ratio follows the refined T_h; m was multiplied above
-    origin = scene.ratio ? scene.where("contact_mesh.ratio") + ": key 'contact_mesh.ratio'"
-                         : scene.file + ": key 'contact_mesh.m'";
+    origin = !scene.ratio.empty() ? scene.where("contact_mesh.ratio") + ": key 'contact_mesh.ratio'"
+                                  : scene.file + ": key 'contact_mesh.m'";
   }
   std::vector<double> nodes{0.0};
   for (std::size_t k = 0; k + 1 < coarse.size(); ++k)

@@ -25,9 +25,13 @@ void assign(toml::table& section, const std::string& name, const SceneOverride::
         using T = std::decay_t<decltype(v)>;
         if constexpr (std::is_same_v<T, long long>) {
           section.insert_or_assign(name, static_cast<std::int64_t>(v));
-        } else if constexpr (std::is_same_v<T, std::vector<std::string>>) {
+        } else if constexpr (std::is_same_v<T, std::vector<long long>>) {
           toml::array list;
-          for (const auto& text : v) list.push_back(text);
+          for (long long k : v) list.push_back(static_cast<std::int64_t>(k));
+          section.insert_or_assign(name, std::move(list));
+        } else if constexpr (std::is_same_v<T, std::vector<std::string>> || std::is_same_v<T, std::vector<double>>) {
+          toml::array list;
+          for (const auto& element : v) list.push_back(element);
           section.insert_or_assign(name, std::move(list));
         } else {
           section.insert_or_assign(name, v);

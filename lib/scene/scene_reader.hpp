@@ -16,7 +16,8 @@ namespace hpcontact::scene {
 /// where it came from ("hpcontact solve --p"). Setting a key of an exclusive group
 /// (contact_mesh.m, .ratio, .breakpoints) removes the others.
 struct SceneOverride {
-  using Value = std::variant<long long, double, bool, std::string, std::vector<std::string>>;
+  using Value = std::variant<long long, double, bool, std::string, std::vector<std::string>, std::vector<long long>,
+                             std::vector<double>>;
   std::string key;
   Value value;
   std::string origin;

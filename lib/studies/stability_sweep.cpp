@@ -46,8 +46,8 @@ scene::Scene point_scene(scene::Scene scene, int p, int pc, const std::optional<
   if (p > 0) scene.p = scene::Degree{p, {}};
   if (pc >= 0) scene.pc = scene::Degree{pc, {}};
   if (ratio) {
-    scene.ratio = *ratio;
-    scene.m = 0;
+    scene.ratio = {*ratio};
+    scene.m.clear();
     scene.breakpoints.clear();
   }
   scene.problem = problem;
