@@ -239,9 +239,16 @@ nlohmann::json run_scene(const scene::Scene& given_scene, const SceneRunOptions&
   const int rank = mpi_rank_and_size().first, ranks = mpi_rank_and_size().second;
   summary["ranks"] = ranks;
   summary["distributed_solver"] = linalg::to_string(options.distribution);
+  if (options.tables) {
+    for (const auto& effect : contacts)
+      if (scene.wants_output(scene::Output::boundary))
+        options.tables->insert_or_assign("boundary_" + effect.problem, effect.samples.table);
+    if (mode) options.tables->insert_or_assign("mode", *mode);
+    if (convergence) options.tables->insert_or_assign("convergence", *convergence);
+  }
   // 5. The outputs as one set (rank 0 writes; a failure to write ends every rank the same way).
   run_on_all_ranks_agreeing([&] {
-    if (rank != 0) return;
+    if (rank != 0 || !options.write_files) return;
     io::OutputFolder folder(options.out);
     const auto& out = folder.path();
     for (const auto& effect : contacts) {

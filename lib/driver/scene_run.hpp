@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -23,6 +24,11 @@ struct SceneRunOptions {
   /// Under mpirun: every rank runs the scene with K and A_G factorized over the ranks by this
   /// solver, and rank 0 alone writes the files.
   linalg::Distribution distribution = linalg::Distribution::serial;
+  /// If given, receives every table the run writes, by file stem ("boundary_signorini", "mode",
+  /// "convergence"), so that callers (the Python module) get the data without files.
+  std::map<std::string, io::CsvTable>* tables = nullptr;
+  /// Write the output files into `out`; false: only return the summary (and fill `tables`).
+  bool write_files = true;
 };
 
 /// Runs the effects of `scene` and writes into `out`:

@@ -17,6 +17,7 @@ class CsvTable {
   void add_row(std::vector<CsvCell> row);
   const std::vector<std::string>& columns() const { return columns_; }
   std::size_t n_rows() const { return rows_.size(); }
+  const std::vector<std::vector<CsvCell>>& rows() const { return rows_; }
   std::string to_string() const;
   /// Writes the table atomically.
   void write(const std::filesystem::path& path) const;

@@ -1,0 +1,103 @@
+"""The Python module against the command-line tool and the library's own checks: scenes from files
+and dicts, solve -> arrays, infsup -> alpha with its mode, sweep -> rows, errors with the same
+messages. Run by CTest (Python.Module) with the build tree's python/ folder on PYTHONPATH."""
+
+import json
+import math
+import os
+import subprocess
+
+import numpy as np
+import pytest
+
+import hpcontact
+
+SOURCE = os.environ["HPCONTACT_SOURCE_DIR"]
+CLI = os.environ["HPCONTACT_CLI"]
+FIGURE1 = os.path.join(SOURCE, "studies", "paper", "figure1_signorini.toml")
+
+
+def cli_summary(tmp_path, *arguments):
+    out = tmp_path / "cli"
+    subprocess.run([CLI, "solve", *arguments, "--out", str(out)], check=True, capture_output=True)
+    return json.loads((out / "summary.json").read_text()), out
+
+
+def test_solve_gives_the_command_line_results_as_arrays(tmp_path):
+    result = hpcontact.solve(FIGURE1, {"discretization.p": 3}, effects=["signorini"])
+    summary, out = cli_summary(tmp_path, FIGURE1, "--p", "3", "--effects", "signorini")
+    assert result.summary["signorini"]["energy"] == summary["signorini"]["energy"]
+    assert result.summary["signorini"]["solver"]["kkt_residual"] < 1e-12
+    samples = result.boundary["signorini"]
+    assert isinstance(samples["lambda"], np.ndarray) and samples["lambda"].dtype == np.float64
+    # The same samples as the CLI's boundary CSV, to the last digit.
+    cli_rows = np.genfromtxt(out / "boundary_signorini.csv", delimiter=",", names=True)
+    for column in ("x", "u", "obstacle", "lambda", "s_arc"):
+        np.testing.assert_array_equal(samples[column], cli_rows[column])
+    # Signorini: u >= g where λ < 0 is active, λ <= 0 (the sign condition of M_-).
+    assert samples["lambda"].max() <= 1e-12
+    assert np.all(np.diff(samples["s_arc"]) >= 0)
+
+
+def test_scene_from_a_dict_equals_the_file(tmp_path):
+    tables = {
+        "domain": {"n_x": 16, "n_y": 16},
+        "boundary": {"contact": "abs(y + 1) < 1e-9",
+                     "dirichlet": "abs(y - 1) < 1e-9 || (abs(x - 1) < 1e-9 && y > 0)"},
+        "contact_mesh": {"ratio": "1/2"},
+        "discretization": {"p": 2, "pC": 1},
+        "data": {"f": "-1", "g": "-x^2"},
+        "run": {"effects": ["signorini"]},
+    }
+    from_dict = hpcontact.solve(tables)
+    from_file = hpcontact.solve(FIGURE1, effects=["signorini"])
+    assert from_dict.summary["signorini"]["energy"] == from_file.summary["signorini"]["energy"]
+    # Files only when asked for.
+    hpcontact.solve(tables, out=tmp_path / "written")
+    assert (tmp_path / "written" / "summary.json").exists()
+
+
+def test_infsup_gives_alpha_its_error_and_the_mode():
+    result = hpcontact.infsup(FIGURE1)
+    assert 0.5 < result.alpha < 1.0
+    assert result.alpha_error < 1e-4 and result.converged and result.unique
+    assert set(result.mode) >= {"s"}
+    assert len(result.mode["s"]) > 10
+    # A triangle mesh of the same scene, through an override of the dict-free path.
+    triangles = hpcontact.infsup(FIGURE1, {"domain.cells": "triangles"})
+    assert 0.5 < triangles.alpha < result.alpha
+
+
+def test_sweep_returns_alpha_rows_and_verdicts(tmp_path):
+    study = tmp_path / "study.toml"
+    study.write_text(
+        '[sweep]\nscene = "{}"\nlevels = {{ "domain.n_x" = [8, 16], "domain.n_y" = [8, 16] }}\n'
+        'p = [2]\npC = [1]\nratio = ["1/2", 1]\nnorm = ["interp"]\nproblem = ["signorini"]\nfit_levels = 2\n'
+        .format(os.path.join(SOURCE, "studies", "stability", "square.toml")))
+    alpha, verdicts = hpcontact.sweep(study)
+    assert len(alpha["alpha"]) == 4
+    assert np.all((alpha["alpha"] > 0) & (alpha["alpha"] <= 1))
+    assert sorted(verdicts["verdict"]) == ["decaying", "stable"]
+
+
+def test_bad_input_raises_input_error_with_the_cli_message(tmp_path):
+    with pytest.raises(hpcontact.InputError) as error:
+        hpcontact.solve(FIGURE1, {"discretization.p": 0})
+    assert "discretization.p" in str(error.value)
+    cli = subprocess.run([CLI, "solve", FIGURE1, "--p", "0", "--out", str(tmp_path / "x")], capture_output=True,
+                         text=True)
+    assert cli.returncode != 0
+    assert str(error.value).split(": key")[1].split("\n")[0] in cli.stderr
+    with pytest.raises(hpcontact.InputError, match="no_such_scene.toml"):
+        hpcontact.solve("no_such_scene.toml")
+    with pytest.raises(hpcontact.InputError, match="allowed are dicts"):
+        hpcontact.solve({"domain": {"n_x": object()}})
+    assert issubclass(hpcontact.InputError, ValueError)
+
+
+def test_scene_keys_are_the_documented_ones():
+    keys = {key["key"] for key in hpcontact.scene_keys()}
+    assert {"domain.cells", "contact_mesh.ratio", "solve.constraint_points"} <= keys
+    documented = open(os.path.join(SOURCE, "docs", "scene_keys.md")).read()
+    for key in keys:
+        assert "`" + key.split(".")[1] + "`" in documented

@@ -1,0 +1,129 @@
+"""hpcontact: higher-order mixed finite element methods for contact problems and their inf-sup
+stability analysis (the paper "Mixed finite element methods of higher-order for model contact
+problems" by A. Schröder, and linear elasticity), from Python.
+
+Scenes are the TOML scenes of the command-line tool (docs/scene_keys.md), from a file or a dict,
+with dotted-key overrides::
+
+    import hpcontact
+    result = hpcontact.solve("studies/paper/figure1_signorini.toml", {"discretization.p": 4})
+    result.summary["signorini"]["energy"]          # the summary.json of a run, as a dict
+    b = result.boundary["signorini"]               # numpy arrays along Γ_C
+    b["s_arc"], b["u"], b["obstacle"], b["lambda"]
+    hpcontact.infsup("studies/paper/figure1_signorini.toml").alpha
+
+Errors in the input raise hpcontact.InputError (a ValueError) with the command-line tool's message.
+"""
+
+import csv
+import os
+import tempfile
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ._hpcontact import InputError, Scene, read_scene, scene_from_dict, scene_keys
+from . import _hpcontact
+
+__all__ = ["InputError", "Scene", "read_scene", "scene_from_dict", "scene_keys", "scene", "solve", "infsup",
+           "sweep", "Result", "InfSup"]
+
+
+def scene(source, overrides=None, path=None):
+    """A checked Scene from a scene file (str or os.PathLike), a dict of tables, or a Scene.
+
+    `overrides` maps dotted keys ("discretization.p", "run.effects") to values; `path` names a dict
+    scene in messages and anchors its relative mesh files (default: "<dict>" in the working folder).
+    """
+    overrides = dict(overrides or {})
+    if isinstance(source, Scene):
+        if overrides:
+            raise InputError("overrides apply to a scene file or dict, not to an already checked Scene")
+        return source
+    if isinstance(source, dict):
+        return scene_from_dict(source, path or os.path.join(os.getcwd(), "<dict>"), overrides)
+    return read_scene(os.fspath(source), overrides)
+
+
+@dataclass
+class Result:
+    """What a run computed: the summary (summary.json as a dict) and its tables as numpy arrays."""
+
+    summary: dict
+    tables: dict = field(default_factory=dict)
+
+    @property
+    def boundary(self):
+        """Samples along Γ_C per contact problem: {problem: {column: array}} (x, u, obstacle or
+        bound, lambda, y, s_arc, zone for the scalar problems; docs/user_guide.md for the elastic ones)."""
+        return {name[len("boundary_"):]: columns for name, columns in self.tables.items()
+                if name.startswith("boundary_")}
+
+    @property
+    def mode(self):
+        """The eigenvector of α sampled along Γ_C (effect infsup), or None."""
+        return self.tables.get("mode")
+
+    @property
+    def convergence(self):
+        """The rows of the effect convergence as columns, or None."""
+        return self.tables.get("convergence")
+
+
+def solve(source, overrides=None, effects=None, out=None, path=None):
+    """Runs a scene's effects (or `effects`, a list of names) and returns a Result.
+
+    With `out` (a folder) the run also writes the command-line tool's files there.
+    """
+    overrides = dict(overrides or {})
+    if effects is not None:
+        overrides["run.effects"] = list(effects)
+    checked = scene(source, overrides, path)
+    summary, tables = _hpcontact.run_scene(checked, os.fspath(out) if out is not None else "")
+    return Result(summary, tables)
+
+
+@dataclass
+class InfSup:
+    """The discrete inf-sup constant of a scene's pairing."""
+
+    alpha: float
+    alpha_error: float
+    converged: bool
+    unique: bool
+    mode: dict
+    summary: dict
+
+
+def infsup(source, overrides=None, path=None):
+    """α of the scene's pairing (effect infsup alone), its error estimate and the mode along Γ_C."""
+    overrides = dict(overrides or {})
+    overrides["run.effects"] = ["infsup"]
+    overrides.setdefault("run.outputs", ["summary", "mode"])
+    result = solve(source, overrides, path=path)
+    info = result.summary["infsup"]
+    return InfSup(info["alpha"], info["alpha_error"], info["alpha_converged"], info["lambda_unique"],
+                  result.mode, result.summary)
+
+
+def _read_columns(path):
+    with open(path, newline="") as handle:
+        rows = list(csv.DictReader(handle))
+    columns = {}
+    for name in (rows[0].keys() if rows else []):
+        values = [row[name] for row in rows]
+        try:
+            columns[name] = np.array([float(v) for v in values])
+        except ValueError:
+            columns[name] = values
+    return columns
+
+
+def sweep(study, out=None):
+    """Runs a stability sweep (a study file, as `hpcontact sweep`) and returns (alpha, verdicts), each
+    {column: array}. With `out` the resumable alpha.csv and verdicts.csv stay there."""
+    if out is None:
+        with tempfile.TemporaryDirectory(prefix="hpcontact_sweep_") as folder:
+            return sweep(study, folder)
+    alpha_csv, verdicts_csv = _hpcontact.run_sweep(os.fspath(study), os.fspath(out))
+    return _read_columns(alpha_csv), _read_columns(verdicts_csv)

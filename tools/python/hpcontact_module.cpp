@@ -1,0 +1,237 @@
+// The compiled part of the Python module: scenes from a file or a dict (with overrides), a scene
+// run returning its summary and its tables as numpy arrays, the stability sweep, and hpcontact's
+// InputError as a Python exception with the same message. hpcontact/__init__.py wraps these.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+#include <toml++/toml.h>
+
+#include <filesystem>
+#include <memory>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "core/petsc_session.hpp"
+#include "driver/scene_run.hpp"
+#include "scene/scene_keys.hpp"
+#include "scene/scene_reader.hpp"
+#include "studies/stability_sweep.hpp"
+#include "studies/sweep_verdicts.hpp"
+
+namespace py = pybind11;
+using namespace hpcontact;
+
+namespace {
+
+// PETSc/SLEPc start on the first path that needs them (as in the command-line tool) and stop when
+// the interpreter exits.
+std::unique_ptr<PetscSession>& session() {
+  static std::unique_ptr<PetscSession> instance;
+  return instance;
+}
+
+// A Python value as a scene override (numbers, booleans, text, lists of one kind).
+scene::SceneOverride::Value override_value(const std::string& key, const py::handle& value) {
+  if (py::isinstance<py::bool_>(value)) return value.cast<bool>();
+  if (py::isinstance<py::int_>(value)) return value.cast<long long>();
+  if (py::isinstance<py::float_>(value)) return value.cast<double>();
+  if (py::isinstance<py::str>(value)) return value.cast<std::string>();
+  if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
+    const auto items = value.cast<py::sequence>();
+    bool all_int = true, all_number = true, all_text = true;
+    for (const auto& item : items) {
+      const bool is_int = py::isinstance<py::int_>(item) && !py::isinstance<py::bool_>(item);
+      all_int = all_int && is_int;
+      all_number = all_number && (is_int || py::isinstance<py::float_>(item));
+      all_text = all_text && py::isinstance<py::str>(item);
+    }
+    if (all_int) return items.cast<std::vector<long long>>();
+    if (all_number) return items.cast<std::vector<double>>();
+    // Text and numbers mixed (ratio = ["1/2", 1]) are read as text, as in a scene file.
+    std::vector<std::string> texts;
+    for (const auto& item : items) texts.push_back(py::str(item).cast<std::string>());
+    if (all_text || all_number) return texts;
+    return texts;
+  }
+  throw InputError("override '" + key + "': a number, a boolean, a string or a list of them, not " +
+                   py::str(py::type::handle_of(value)).cast<std::string>());
+}
+
+std::vector<scene::SceneOverride> overrides_of(const py::dict& overrides) {
+  std::vector<scene::SceneOverride> out;
+  for (const auto& [key, value] : overrides) {
+    const std::string name = py::str(key).cast<std::string>();
+    out.push_back({name, override_value(name, value), "Python override " + name});
+  }
+  return out;
+}
+
+// A dict as TOML: tables, arrays, strings, integers, floats, booleans, put into `table` under
+// `key` (or appended to `array`).
+void put(const py::handle& value, const std::string& where, toml::table* table, const std::string& key,
+         toml::array* array);
+
+template <typename T>
+void put_value(T&& node, toml::table* table, const std::string& key, toml::array* array) {
+  if (table)
+    table->insert_or_assign(key, std::forward<T>(node));
+  else
+    array->push_back(std::forward<T>(node));
+}
+
+toml::table toml_table(const py::dict& dict, const std::string& where) {
+  toml::table out;
+  for (const auto& [key, item] : dict) {
+    const std::string name = py::str(key).cast<std::string>();
+    put(item, where.empty() ? name : where + "." + name, &out, name, nullptr);
+  }
+  return out;
+}
+
+void put(const py::handle& value, const std::string& where, toml::table* table, const std::string& key,
+         toml::array* array) {
+  if (py::isinstance<py::bool_>(value)) return put_value(value.cast<bool>(), table, key, array);
+  if (py::isinstance<py::int_>(value)) return put_value(value.cast<int64_t>(), table, key, array);
+  if (py::isinstance<py::float_>(value)) return put_value(value.cast<double>(), table, key, array);
+  if (py::isinstance<py::str>(value)) return put_value(value.cast<std::string>(), table, key, array);
+  if (py::isinstance<py::dict>(value)) return put_value(toml_table(value.cast<py::dict>(), where), table, key, array);
+  if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
+    toml::array items;
+    for (const auto& item : value.cast<py::sequence>()) put(item, where + "[]", nullptr, "", &items);
+    return put_value(std::move(items), table, key, array);
+  }
+  throw InputError("scene dict: key '" + where + "' holds a " +
+                   py::str(py::type::handle_of(value)).cast<std::string>() +
+                   "; allowed are dicts, lists, strings, integers, floats and booleans");
+}
+
+// A table's columns: numbers as float64 (or int64) arrays, text as lists of str.
+py::dict columns_of(const io::CsvTable& table) {
+  py::dict out;
+  const auto& rows = table.rows();
+  for (std::size_t c = 0; c < table.columns().size(); ++c) {
+    bool integers = true, numbers = true;
+    for (const auto& row : rows) {
+      integers = integers && std::holds_alternative<long long>(row[c]);
+      numbers = numbers && !std::holds_alternative<std::string>(row[c]);
+    }
+    const auto n = static_cast<py::ssize_t>(rows.size());
+    if (integers) {
+      py::array_t<long long> column(n);
+      auto view = column.mutable_unchecked<1>();
+      for (py::ssize_t r = 0; r < n; ++r) view(r) = std::get<long long>(rows[r][c]);
+      out[py::str(table.columns()[c])] = column;
+    } else if (numbers) {
+      py::array_t<double> column(n);
+      auto view = column.mutable_unchecked<1>();
+      for (py::ssize_t r = 0; r < n; ++r)
+        view(r) = std::holds_alternative<double>(rows[r][c]) ? std::get<double>(rows[r][c])
+                                                             : static_cast<double>(std::get<long long>(rows[r][c]));
+      out[py::str(table.columns()[c])] = column;
+    } else {
+      py::list column;
+      for (const auto& row : rows)
+        column.append(std::visit(
+            [](const auto& v) -> py::object {
+              using T = std::decay_t<decltype(v)>;
+              if constexpr (std::is_same_v<T, std::string>)
+                return py::str(v);
+              else
+                return py::cast(v);
+            },
+            row[c]));
+      out[py::str(table.columns()[c])] = column;
+    }
+  }
+  return out;
+}
+
+py::object json_to_python(const nlohmann::json& value) {
+  return py::module_::import("json").attr("loads")(value.dump());
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_hpcontact, m) {
+  m.doc() = "hpcontact: higher-order mixed FEM for contact problems and their inf-sup stability (compiled part)";
+  static py::exception<InputError> input_error(m, "InputError", PyExc_ValueError);
+  py::register_exception_translator([](std::exception_ptr error) {
+    try {
+      if (error) std::rethrow_exception(error);
+    } catch (const InputError& e) {
+      PyErr_SetString(input_error.ptr(), e.what());
+    }
+  });
+  session() = std::make_unique<PetscSession>(std::vector<std::string>{"hpcontact-python"}, false);
+  py::module_::import("atexit").attr("register")(py::cpp_function([] { session().reset(); }));
+
+  py::class_<scene::Scene>(m, "Scene", "A checked scene (read_scene, scene_from_dict)")
+      .def_property_readonly("file", [](const scene::Scene& s) { return s.file; })
+      .def_property_readonly("effects",
+                             [](const scene::Scene& s) {
+                               std::vector<std::string> names;
+                               for (auto effect : s.effects) names.push_back(scene::to_string(effect));
+                               return names;
+                             })
+      .def("__repr__", [](const scene::Scene& s) { return "<hpcontact.Scene " + s.file + ">"; });
+
+  m.def(
+      "read_scene",
+      [](const std::string& path, const py::dict& overrides) {
+        return scene::read_scene(path, overrides_of(overrides));
+      },
+      py::arg("path"), py::arg("overrides") = py::dict(), "The scene of a TOML file, with dotted-key overrides");
+  m.def(
+      "scene_from_dict",
+      [](const py::dict& tables, const std::string& path, const py::dict& overrides) {
+        std::ostringstream text;
+        text << toml_table(tables, "");
+        return scene::parse_scene(text.str(), path, overrides_of(overrides));
+      },
+      py::arg("tables"), py::arg("path"), py::arg("overrides") = py::dict(),
+      "The scene of a dict of tables ({'domain': {...}, ...}); `path` names it and anchors relative mesh files");
+  m.def(
+      "run_scene",
+      [](const scene::Scene& scene, const std::string& out) {
+        std::map<std::string, io::CsvTable> tables;
+        driver::SceneRunOptions options;
+        options.out = out;
+        options.write_files = !out.empty();
+        options.tables = &tables;
+        nlohmann::json summary;
+        {
+          py::gil_scoped_release release;
+          summary = driver::run_scene(scene, options);
+        }
+        py::dict arrays;
+        for (const auto& [name, table] : tables) arrays[py::str(name)] = columns_of(table);
+        return py::make_tuple(json_to_python(summary), arrays);
+      },
+      py::arg("scene"), py::arg("out") = "",
+      "Runs the scene's effects: (summary dict, {table name: {column: array}}); writes files into `out` if given");
+  m.def(
+      "run_sweep",
+      [](const std::string& study, const std::filesystem::path& out) {
+        const auto sweep = studies::read_stability_sweep(study);
+        std::filesystem::create_directories(out);
+        const auto alpha_csv = out / "alpha.csv";
+        {
+          py::gil_scoped_release release;
+          studies::run_stability_sweep(sweep, alpha_csv, {});
+        }
+        const auto verdicts = studies::fit_verdicts(alpha_csv, sweep.fit_levels);
+        verdicts.write(out / "verdicts.csv");
+        return py::make_tuple(alpha_csv.string(), (out / "verdicts.csv").string());
+      },
+      py::arg("study"), py::arg("out"),
+      "Runs a stability sweep into `out` (alpha.csv, resumable; verdicts.csv): the two file paths");
+  m.def("scene_keys", [] {
+    py::list keys;
+    for (const auto& key : scene::scene_keys())
+      keys.append(py::dict(py::arg("key") = key.dotted(), py::arg("type") = key.type,
+                           py::arg("default") = key.default_text, py::arg("allowed") = key.allowed,
+                           py::arg("doc") = key.doc));
+    return keys;
+  });
+}
