@@ -16,6 +16,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from figure_file import save_figure  # noqa: E402
 
 STYLE = {
     "linear_K": ("k", "o", "one linear solve of K"),
@@ -77,7 +78,7 @@ def main():
     extra = memory.get_legend_handles_labels()
     ratios.legend(lines[0] + extra[0], lines[1] + extra[1], fontsize=8, loc="upper left")
     figure.tight_layout()
-    figure.savefig(folder / "benchmark.png", dpi=120)
+    save_figure(figure, folder / "benchmark.png")
 
 
 if __name__ == "__main__":

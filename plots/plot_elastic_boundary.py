@@ -16,6 +16,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from figure_file import save_figure  # noqa: E402
 
 STYLES = {"frictionless": ("tab:blue", "-"), "tresca": ("tab:green", "--"), "coulomb": ("tab:red", "-")}
 
@@ -62,8 +63,7 @@ def main():
         axis.legend(fontsize=8)
     figure.suptitle(f"{summary.get('scene', '')}: p = {summary.get('p')}, p_C = {summary.get('pC')}", fontsize=10)
     figure.tight_layout()
-    figure.savefig(folder / "boundary_elastic.png", dpi=120)
-    print(f"wrote {folder / 'boundary_elastic.png'}")
+    save_figure(figure, folder / "boundary_elastic.png")
 
 
 if __name__ == "__main__":

@@ -16,6 +16,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from figure_file import save_figure  # noqa: E402
 
 STYLES = {"h": ("tab:blue", "o"), "p": ("tab:orange", "s"), "hp": ("tab:green", "^"), "block": ("tab:red", "D")}
 NAMES = {
@@ -70,7 +71,7 @@ def main():
         axis.grid(True, which="both", alpha=0.3)
         axis.legend(fontsize=8)
     figure.tight_layout()
-    figure.savefig(folder / "hertz.png", dpi=120)
+    save_figure(figure, folder / "hertz.png")
 
 
 if __name__ == "__main__":

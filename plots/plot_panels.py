@@ -15,6 +15,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from figure_file import save_figure  # noqa: E402
 
 
 def main():
@@ -43,12 +44,7 @@ def main():
             axis.set_visible(False)
         figure.suptitle(rf"$\lambda_H$ on $\Gamma_C$, problem {problem}")
         figure.tight_layout()
-        output = folder / f"panels_{problem}.png"
-        temporary = output.with_suffix(".tmp.png")
-        figure.savefig(temporary, dpi=110)
-        temporary.replace(output)
-        plt.close(figure)
-        print(f"wrote {output}")
+        save_figure(figure, folder / f"panels_{problem}.png", dpi=110)
 
 
 if __name__ == "__main__":

@@ -18,6 +18,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.tri as mtri  # noqa: E402
+from figure_file import save_figure  # noqa: E402
 
 
 def read_vtu(path):
@@ -91,12 +92,7 @@ def plot(folder, problem):
     right.set_title(r"$u_h$ on $\Omega$")
     figure.suptitle(scene_title(folder, problem))
     figure.tight_layout()
-    output = folder / f"figure_{problem}.png"
-    temporary = output.with_suffix(".tmp.png")
-    figure.savefig(temporary, dpi=110)
-    temporary.replace(output)
-    plt.close(figure)
-    print(f"wrote {output}")
+    save_figure(figure, folder / f"figure_{problem}.png", dpi=110)
 
 
 def main():

@@ -17,6 +17,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.colors import ListedColormap  # noqa: E402
+from figure_file import save_figure  # noqa: E402
 
 VERDICT_CODE = {"stable": 0, "decaying": 1, "singular": 2}
 VERDICT_COLOURS = ["#4caf50", "#ff9800", "#d32f2f"]
@@ -32,11 +33,7 @@ def ratio_label(value):
 
 
 def save(figure, path):
-    temporary = path.with_suffix(".tmp.png")
-    figure.savefig(temporary, dpi=110)
-    temporary.replace(path)
-    plt.close(figure)
-    print(f"wrote {path}")
+    save_figure(figure, path, dpi=110)
 
 
 # One colour per p, one marker and line style per p_C: every curve is told apart on every panel.

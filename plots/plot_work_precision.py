@@ -16,6 +16,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from figure_file import save_figure  # noqa: E402
 
 LAMBDA_NORM = {
     "signorini": r"$\|\lambda_H-\lambda_{ref}\|_{L^2(\Gamma_C)}$",
@@ -62,12 +63,7 @@ def main():
             axis.set_ylim(bottom=max(lowest / 3, accuracy / 30, 1e-12))
         row_axes[0].legend(fontsize=7, ncol=2)
     figure.tight_layout()
-    output = folder / "work_precision.png"
-    temporary = output.with_suffix(".tmp.png")
-    figure.savefig(temporary, dpi=100)
-    temporary.replace(output)
-    plt.close(figure)
-    print(f"wrote {output}")
+    save_figure(figure, folder / "work_precision.png", dpi=100)
 
 
 if __name__ == "__main__":
