@@ -101,3 +101,13 @@ def test_scene_keys_are_the_documented_ones():
     documented = open(os.path.join(SOURCE, "docs", "scene_keys.md")).read()
     for key in keys:
         assert "`" + key.split(".")[1] + "`" in documented
+
+
+def test_list_overrides_reach_the_scene_per_zone():
+    # Text and numbers mixed, as in a scene file: one ratio per contact zone of two_zones.toml.
+    two_zones = os.path.join(SOURCE, "studies", "zones", "two_zones.toml")
+    result = hpcontact.solve(two_zones, {"contact_mesh.ratio": ["1/2", 1], "solve.constraint_points": [2, 2]},
+                             effects=["signorini"])
+    assert result.summary["signorini"]["nmult"] == (4 + 8) * 2
+    with pytest.raises(hpcontact.InputError, match="one per zone"):
+        hpcontact.solve(two_zones, {"contact_mesh.ratio": [1, 1, 1]}, effects=["signorini"])

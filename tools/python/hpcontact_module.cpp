@@ -39,19 +39,17 @@ scene::SceneOverride::Value override_value(const std::string& key, const py::han
   if (py::isinstance<py::str>(value)) return value.cast<std::string>();
   if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
     const auto items = value.cast<py::sequence>();
-    bool all_int = true, all_number = true, all_text = true;
+    bool all_int = true, all_number = true;
     for (const auto& item : items) {
       const bool is_int = py::isinstance<py::int_>(item) && !py::isinstance<py::bool_>(item);
       all_int = all_int && is_int;
       all_number = all_number && (is_int || py::isinstance<py::float_>(item));
-      all_text = all_text && py::isinstance<py::str>(item);
     }
     if (all_int) return items.cast<std::vector<long long>>();
     if (all_number) return items.cast<std::vector<double>>();
-    // Text and numbers mixed (ratio = ["1/2", 1]) are read as text, as in a scene file.
+    // Text, or text and numbers mixed (ratio = ["1/2", 1]): read as text, as in a scene file.
     std::vector<std::string> texts;
     for (const auto& item : items) texts.push_back(py::str(item).cast<std::string>());
-    if (all_text || all_number) return texts;
     return texts;
   }
   throw InputError("override '" + key + "': a number, a boolean, a string or a list of them, not " +
