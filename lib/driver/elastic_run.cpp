@@ -270,13 +270,10 @@ nlohmann::json run_elastic_scene(const scene::Scene& scene, const SceneRunOption
   if (convergence)
     summary["convergence"] = {{"refinements", scene.convergence_refinements}, {"file", "convergence.csv"}};
   summary["seconds_total"] = clock.seconds();
-  if (options.tables) {
-    for (const auto& effect : effects)
-      if (scene.wants_output(scene::Output::boundary))
-        options.tables->insert_or_assign("boundary_" + effect.name, effect.samples.table);
-    if (mode) options.tables->insert_or_assign("mode", *mode);
-    if (convergence) options.tables->insert_or_assign("convergence", *convergence);
-  }
+  std::vector<std::pair<std::string, const io::CsvTable*>> boundary;
+  if (scene.wants_output(scene::Output::boundary))
+    for (const auto& effect : effects) boundary.emplace_back(effect.name, &effect.samples.table);
+  hand_over_tables(options, boundary, mode, convergence);
   if (options.write_files) write_outputs(scene, operators, effects, {mode, convergence}, summary, options.out);
   return summary;
 }

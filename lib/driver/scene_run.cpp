@@ -189,6 +189,15 @@ std::vector<std::string> refinement_columns() {
           "error_energy", "error_lambda", "seconds", "p_rule", "pC_rule"};
 }
 
+void hand_over_tables(const SceneRunOptions& options,
+                      const std::vector<std::pair<std::string, const io::CsvTable*>>& boundary,
+                      const std::optional<io::CsvTable>& mode, const std::optional<io::CsvTable>& convergence) {
+  if (!options.tables) return;
+  for (const auto& [problem, table] : boundary) options.tables->insert_or_assign("boundary_" + problem, *table);
+  if (mode) options.tables->insert_or_assign("mode", *mode);
+  if (convergence) options.tables->insert_or_assign("convergence", *convergence);
+}
+
 nlohmann::json run_scene(const scene::Scene& given_scene, const SceneRunOptions& options) {
   if (given_scene.is_elastic()) {
     if (mpi_rank_and_size().second > 1)
@@ -239,13 +248,10 @@ nlohmann::json run_scene(const scene::Scene& given_scene, const SceneRunOptions&
   const int rank = mpi_rank_and_size().first, ranks = mpi_rank_and_size().second;
   summary["ranks"] = ranks;
   summary["distributed_solver"] = linalg::to_string(options.distribution);
-  if (options.tables) {
-    for (const auto& effect : contacts)
-      if (scene.wants_output(scene::Output::boundary))
-        options.tables->insert_or_assign("boundary_" + effect.problem, effect.samples.table);
-    if (mode) options.tables->insert_or_assign("mode", *mode);
-    if (convergence) options.tables->insert_or_assign("convergence", *convergence);
-  }
+  std::vector<std::pair<std::string, const io::CsvTable*>> boundary;
+  if (scene.wants_output(scene::Output::boundary))
+    for (const auto& effect : contacts) boundary.emplace_back(effect.problem, &effect.samples.table);
+  hand_over_tables(options, boundary, mode, convergence);
   // 5. The outputs as one set (rank 0 writes; a failure to write ends every rank the same way).
   run_on_all_ranks_agreeing([&] {
     if (rank != 0 || !options.write_files) return;

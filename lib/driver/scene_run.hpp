@@ -9,6 +9,8 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "driver/scene_discretization.hpp"
 #include "io/csv_writer.hpp"
@@ -48,6 +50,12 @@ nlohmann::json run_scene(const scene::Scene& scene, const SceneRunOptions& optio
 /// "infsup" entry of summary.json; with output "mode" the sampled eigenvector into `mode`.
 nlohmann::json infsup_effect(const scene::Scene& scene, const SceneDiscretization& d, const infsup::InfSupSetup& setup,
                              std::optional<io::CsvTable>& mode);
+
+/// Hands a run's tables to options.tables, if set: the boundary samples of each problem (as
+/// "boundary_<problem>"), mode and convergence where computed.
+void hand_over_tables(const SceneRunOptions& options,
+                      const std::vector<std::pair<std::string, const io::CsvTable*>>& boundary,
+                      const std::optional<io::CsvTable>& mode, const std::optional<io::CsvTable>& convergence);
 
 /// The columns of convergence.csv and of the work–precision study's rows.
 std::vector<std::string> refinement_columns();
