@@ -26,7 +26,7 @@ packages=(build-essential cmake pkg-config libeigen3-dev petsc-dev slepc-dev lib
           libmuparser-dev libcli11-dev libtomlplusplus-dev libfmt-dev nlohmann-json3-dev
           libsuitesparse-dev libgtest-dev libgmock-dev libbenchmark-dev python3-matplotlib
           clang libclang-rt-14-dev clang-format libopenblas0-pthread openmpi-bin libgmsh-dev
-          pybind11-dev python3-dev python3-numpy python3-pytest)
+          pybind11-dev python3-dev python3-numpy python3-pytest python3-meshio python3-vtk9)
 missing=()
 for package in "${packages[@]}"; do
   status=$(dpkg-query -W -f='${Status}' "$package" 2>/dev/null || true)

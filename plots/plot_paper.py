@@ -9,7 +9,6 @@ Usage: plot_paper.py DIR [DIR ...]
 """
 import csv
 import json
-import re
 import sys
 from pathlib import Path
 
@@ -19,27 +18,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.tri as mtri  # noqa: E402
 from figure_file import save_figure  # noqa: E402
-
-
-def read_vtu(path):
-    text = path.read_text()
-
-    def array(name):
-        match = re.search(rf'Name="{name}"[^>]*>(.*?)</DataArray>', text, re.S)
-        return [float(v) for v in match.group(1).split()]
-
-    points = re.search(r"<Points>\s*<DataArray[^>]*>(.*?)</DataArray>", text, re.S).group(1).split()
-    xyz = [float(v) for v in points]
-    x, y = xyz[0::3], xyz[1::3]
-    cells = [int(v) for v in array("connectivity")]
-    offsets = [int(v) for v in array("offsets")]
-    # Sub-cells are triangles or quadrilaterals (mixed meshes hold both); fan each into triangles.
-    triangles, start = [], 0
-    for end in offsets:
-        corners = cells[start:end]
-        triangles += [(corners[0], corners[k], corners[k + 1]) for k in range(1, len(corners) - 1)]
-        start = end
-    return x, y, triangles, array("u")
+from vtk_lagrange import read_lagrange_vtu  # noqa: E402
 
 
 def scene_title(folder, problem):
@@ -83,8 +62,8 @@ def plot(folder, problem):
     handles = left.get_legend_handles_labels()
     extra = multiplier_axis.get_legend_handles_labels()
     left.legend(handles[0] + extra[0], handles[1] + extra[1], fontsize=8, loc="best")
-    px, py, triangles, u = read_vtu(folder / f"solution_{problem}.vtu")
-    picture = right.tripcolor(mtri.Triangulation(px, py, triangles), u, shading="gouraud", cmap="viridis")
+    px, py, triangles, fields = read_lagrange_vtu(folder / f"solution_{problem}.vtu")
+    picture = right.tripcolor(mtri.Triangulation(px, py, triangles), fields["u"], shading="gouraud", cmap="viridis")
     figure.colorbar(picture, ax=right, label=r"$u_h$")
     right.set_aspect("equal")
     right.set_xlabel("x")

@@ -10,6 +10,7 @@
 #include "core/timer.hpp"
 #include "io/atomic_file.hpp"
 #include "io/output_folder.hpp"
+#include "io/vtp_writer.hpp"
 #include "io/vtu_writer.hpp"
 #include "mesh/cell_map.hpp"
 #include "postprocess/elastic_boundary_samples.hpp"
@@ -132,8 +133,16 @@ std::vector<ElasticEffect> solve_elastic_effects(const scene::Scene& scene, cons
 // The convergence effect: the scene's elastic problems on `convergence_refinements` uniform
 // refinements beyond its own mesh, each level with its own operators; errors of the energy and
 // of the pressure (L²(Γ_C)) against the finest level.
+// With output "vtu" every level's displacement goes into `files` with one PVD per problem.
+std::string elastic_solution_vtu(const ElasticEffect& effect, const operators::ElasticOperators& operators) {
+  const auto u = assembly::total_field(effect.solution.lift.get(), operators.vector_space(), effect.solution.u);
+  return io::elastic_vtu_text(u.space, operators.materials(), u.coefficients);
+}
+
 io::CsvTable elastic_convergence(const scene::Scene& scene, const SceneDiscretization& base_mesh,
-                                 const std::vector<ElasticEffect>& base, const SceneRunOptions& options) {
+                                 const operators::ElasticOperators& base_operators,
+                                 const std::vector<ElasticEffect>& base, const SceneRunOptions& options,
+                                 std::vector<OutputText>& files) {
   struct Level {
     std::unique_ptr<SceneDiscretization> own;
     const SceneDiscretization* d;
@@ -167,7 +176,12 @@ io::CsvTable elastic_convergence(const scene::Scene& scene, const SceneDiscretiz
            contact::multiplier_l2_distance(*d.multipliers, effect.solution.pressure, *finest.d->multipliers,
                                            reference.pressure),
            effect.seconds, scene.p.label(), scene.pc.label()});
+      if (scene.wants_output(scene::Output::vtu))
+        files.push_back({level_vtu_name(effect.name, static_cast<int>(k)),
+                         elastic_solution_vtu(effect, k == 0 ? base_operators : *levels[k].operators)});
     }
+  if (scene.wants_output(scene::Output::vtu))
+    for (const auto& effect : base) files.push_back(level_collection(effect.name, scene.convergence_refinements));
   return table;
 }
 
@@ -207,6 +221,7 @@ nlohmann::json effect_summary(const ElasticEffect& effect) {
 struct ExtraTables {
   const std::optional<io::CsvTable>& mode;         ///< mode.csv (effect infsup, output mode)
   const std::optional<io::CsvTable>& convergence;  ///< convergence.csv (effect convergence)
+  const std::vector<OutputText>& level_files;      ///< the convergence levels' VTU and PVD files
 };
 
 void write_outputs(const scene::Scene& scene, const operators::ElasticOperators& operators,
@@ -218,12 +233,13 @@ void write_outputs(const scene::Scene& scene, const operators::ElasticOperators&
     if (scene.wants_output(scene::Output::boundary))
       effect.samples.table.write(out / ("boundary_" + effect.name + ".csv"));
     if (scene.wants_output(scene::Output::vtu)) {
-      const auto u = assembly::total_field(effect.solution.lift.get(), operators.vector_space(), effect.solution.u);
-      io::write_elastic_vtu(out / ("solution_" + effect.name + ".vtu"), u.space, operators.materials(), u.coefficients);
+      io::write_file_atomically(out / ("solution_" + effect.name + ".vtu"), elastic_solution_vtu(effect, operators));
+      io::write_file_atomically(out / ("contact_" + effect.name + ".vtp"), io::polyline_vtp_text(effect.samples.table));
     }
   }
   if (extra.mode) extra.mode->write(out / "mode.csv");
   if (extra.convergence) extra.convergence->write(out / "convergence.csv");
+  for (const auto& file : extra.level_files) io::write_file_atomically(out / file.name, file.text);
   if (scene.wants_output(scene::Output::summary))
     io::write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
   folder.commit();
@@ -242,7 +258,9 @@ nlohmann::json run_elastic_scene(const scene::Scene& scene, const SceneRunOption
   const std::vector<ElasticEffect> effects = solve_elastic_effects(scene, *d, operators, options, "");
   // 3. Convergence under uniform refinement, then the inf-sup constant of the elastic pairing.
   std::optional<io::CsvTable> convergence;
-  if (scene.has_effect(scene::Effect::convergence)) convergence = elastic_convergence(scene, *d, effects, options);
+  std::vector<OutputText> level_files;
+  if (scene.has_effect(scene::Effect::convergence))
+    convergence = elastic_convergence(scene, *d, operators, effects, options, level_files);
   std::optional<io::CsvTable> mode;
   nlohmann::json infsup;
   if (scene.has_effect(scene::Effect::infsup)) {
@@ -274,7 +292,8 @@ nlohmann::json run_elastic_scene(const scene::Scene& scene, const SceneRunOption
   if (scene.wants_output(scene::Output::boundary))
     for (const auto& effect : effects) boundary.emplace_back(effect.name, &effect.samples.table);
   hand_over_tables(options, boundary, mode, convergence);
-  if (options.write_files) write_outputs(scene, operators, effects, {mode, convergence}, summary, options.out);
+  if (options.write_files)
+    write_outputs(scene, operators, effects, {mode, convergence, level_files}, summary, options.out);
   return summary;
 }
 

@@ -32,7 +32,9 @@ contact::ElasticContactSetup elastic_setup_of(const scene::Scene& scene, const S
 /// Runs the elastic effects of `scene` and writes into `options.out`:
 ///   summary.json              (output "summary") every effect's results, the operators, timings
 ///   boundary_<effect>.csv     (output "boundary") x,y,s_arc,u_n,u_t,gap,pressure,traction_t,zone on Γ_C
-///   solution_<effect>.vtu     (output "vtu") the displacement and the von Mises stress
+///   solution_<effect>.vtu     (output "vtu") the displacement and the von Mises stress, VTK
+///                              Lagrange cells of the largest p
+///   contact_<effect>.vtp      (output "vtu") the boundary samples on Γ_C, one polyline per zone
 /// Nothing is written unless every effect succeeded. Returns the summary. Serial only.
 nlohmann::json run_elastic_scene(const scene::Scene& scene, const SceneRunOptions& options);
 

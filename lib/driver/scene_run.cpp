@@ -18,6 +18,8 @@
 #include "io/atomic_file.hpp"
 #include "io/csv_writer.hpp"
 #include "io/output_folder.hpp"
+#include "io/vtk_xml_document.hpp"
+#include "io/vtp_writer.hpp"
 #include "io/vtu_writer.hpp"
 #include "postprocess/boundary_samples.hpp"
 #include "postprocess/mode_samples.hpp"
@@ -88,9 +90,25 @@ std::vector<ContactEffect> solve_contact_effects(const scene::Scene& scene, cons
 // The convergence effect: the scene's contact problems on `convergence_refinements` uniform
 // refinements beyond its own mesh, each level with its own operators shared by its problems; the
 // finest level is the reference for the errors of the others.
+// solution_<problem>.vtu: u = u0 + the Dirichlet lift on Ω.
+std::string solution_vtu(const ContactEffect& effect, const operators::PrimalOperators& primal) {
+  const auto u = assembly::total_field(effect.solution.lift.get(), primal.space(), effect.solution.u);
+  return io::solution_vtu_text(u.space, u.coefficients);
+}
+
+// With output "vtu": every level's u as solution_<problem>_level<k>.vtu and one PVD per problem
+// (the level as ParaView's time), so the refinement sequence plays as an animation.
+void add_level_solutions(const scene::Scene& scene, const std::vector<ContactEffect>& effects,
+                         const operators::PrimalOperators& primal, int level, std::vector<OutputText>& files) {
+  if (!scene.wants_output(scene::Output::vtu)) return;
+  for (const auto& effect : effects)
+    files.push_back({level_vtu_name(effect.problem, level), solution_vtu(effect, primal)});
+}
+
 void add_convergence_rows(const scene::Scene& scene, const std::vector<ContactEffect>& base,
-                          const SceneDiscretization& base_mesh, const SceneRunOptions& options, OperatorLog& log,
-                          io::CsvTable& table) {
+                          const SceneDiscretization& base_mesh, const operators::PrimalOperators& base_primal,
+                          const SceneRunOptions& options, OperatorLog& log, io::CsvTable& table,
+                          std::vector<OutputText>& files) {
   struct Level {
     const SceneDiscretization* discretization;
     const std::vector<ContactEffect>* effects;
@@ -98,6 +116,7 @@ void add_convergence_rows(const scene::Scene& scene, const std::vector<ContactEf
   std::vector<Level> levels{{&base_mesh, &base}};
   std::vector<std::unique_ptr<SceneDiscretization>> refined_meshes;
   std::vector<std::unique_ptr<std::vector<ContactEffect>>> refined_effects;
+  add_level_solutions(scene, base, base_primal, 0, files);
   for (int k = 1; k <= scene.convergence_refinements; ++k) {
     scene::Scene refined = scene;
     refined.refinements += k;
@@ -106,6 +125,7 @@ void add_convergence_rows(const scene::Scene& scene, const std::vector<ContactEf
     const operators::PrimalOperators primal(d->mesh, d->cell_degrees, &level_log, options.distribution);
     refined_effects.push_back(std::make_unique<std::vector<ContactEffect>>(
         solve_contact_effects(refined, *d, primal, options, fmt::format(" (convergence level {})", k))));
+    add_level_solutions(scene, *refined_effects.back(), primal, k, files);
     for (const auto& record : level_log.records())
       log.record(fmt::format("{} (convergence level {})", record.name, k), record.rows, record.cols, record.seconds);
     levels.push_back({d.get(), refined_effects.back().get()});
@@ -127,6 +147,8 @@ void add_convergence_rows(const scene::Scene& scene, const std::vector<ContactEf
                                            multiplier_error_weight(scene, *finest.discretization, effect.kind)),
            effect.seconds, scene.p.label(), scene.pc.label()});
     }
+  if (scene.wants_output(scene::Output::vtu))
+    for (const auto& effect : base) files.push_back(level_collection(effect.problem, scene.convergence_refinements));
 }
 
 // The scene with its mesh graded towards the free boundary of its contact problems; what the fit
@@ -184,6 +206,16 @@ nlohmann::json infsup_effect(const scene::Scene& scene, const SceneDiscretizatio
 
 long long largest_degree(const std::vector<int>& degrees) { return *std::max_element(degrees.begin(), degrees.end()); }
 
+std::string level_vtu_name(const std::string& problem, int level) {
+  return fmt::format("solution_{}_level{}.vtu", problem, level);
+}
+
+OutputText level_collection(const std::string& problem, int finest) {
+  std::vector<io::PvdEntry> entries;
+  for (int k = 0; k <= finest; ++k) entries.push_back({static_cast<double>(k), level_vtu_name(problem, k)});
+  return {"solution_" + problem + ".pvd", io::pvd_text(entries)};
+}
+
 std::vector<std::string> refinement_columns() {
   return {"problem",      "level",        "p",       "pC",     "n",      "m", "ndofs", "nmult", "energy",
           "error_energy", "error_lambda", "seconds", "p_rule", "pC_rule"};
@@ -233,9 +265,10 @@ nlohmann::json run_scene(const scene::Scene& given_scene, const SceneRunOptions&
 
   // 4. Convergence under uniform refinement of every contact problem of the scene.
   std::optional<io::CsvTable> convergence;
+  std::vector<OutputText> level_files;
   if (scene.has_effect(scene::Effect::convergence)) {
     convergence.emplace(refinement_columns());
-    add_convergence_rows(scene, contacts, *d, options, log, *convergence);
+    add_convergence_rows(scene, contacts, *d, primal, options, log, *convergence, level_files);
   }
 
   // 5. The summary, then every file at once.
@@ -261,10 +294,12 @@ nlohmann::json run_scene(const scene::Scene& given_scene, const SceneRunOptions&
       if (scene.wants_output(scene::Output::boundary))
         effect.samples.table.write(out / ("boundary_" + effect.problem + ".csv"));
       if (scene.wants_output(scene::Output::vtu)) {
-        const auto u = assembly::total_field(effect.solution.lift.get(), primal.space(), effect.solution.u);
-        io::write_vtu(out / ("solution_" + effect.problem + ".vtu"), u.space, u.coefficients);
+        io::write_file_atomically(out / ("solution_" + effect.problem + ".vtu"), solution_vtu(effect, primal));
+        io::write_file_atomically(out / ("contact_" + effect.problem + ".vtp"),
+                                  io::polyline_vtp_text(effect.samples.table));
       }
     }
+    for (const auto& file : level_files) io::write_file_atomically(out / file.name, file.text);
     if (mode) mode->write(out / "mode.csv");
     if (convergence) convergence->write(out / "convergence.csv");
     if (scene.wants_output(scene::Output::summary))

@@ -37,7 +37,10 @@ struct SceneRunOptions {
 ///   summary.json              (output "summary") every effect's results, the operators built with
 ///                              their sizes and seconds, and timings
 ///   boundary_<problem>.csv    (output "boundary") u, obstacle or bound, λ sampled on Γ_C
-///   solution_<problem>.vtu    (output "vtu") u on Ω
+///   solution_<problem>.vtu    (output "vtu") u and ∇u on Ω, VTK Lagrange cells of the largest p
+///   contact_<problem>.vtp     (output "vtu") the boundary samples on Γ_C, one polyline per zone
+///   solution_<problem>_level<k>.vtu, solution_<problem>.pvd
+///                             (output "vtu", effect convergence) u on every level, as a series
 ///   mode.csv                  (output "mode", effect infsup) the eigenvector of α
 ///   convergence.csv           (effect convergence) problem,level,p,pC,n,m,ndofs,nmult,energy,
 ///                              error_energy,error_lambda,seconds,p_rule,pC_rule; p and pC the
@@ -56,6 +59,15 @@ nlohmann::json infsup_effect(const scene::Scene& scene, const SceneDiscretizatio
 void hand_over_tables(const SceneRunOptions& options,
                       const std::vector<std::pair<std::string, const io::CsvTable*>>& boundary,
                       const std::optional<io::CsvTable>& mode, const std::optional<io::CsvTable>& convergence);
+
+/// A file of the output folder made before the folder is written: its name and content.
+struct OutputText {
+  std::string name, text;
+};
+/// The VTU of level k of the convergence effect: solution_<problem>_level<k>.vtu.
+std::string level_vtu_name(const std::string& problem, int level);
+/// solution_<problem>.pvd: the levels 0 … `finest` of a problem with the level as ParaView's time.
+OutputText level_collection(const std::string& problem, int finest);
 
 /// The columns of convergence.csv and of the work–precision study's rows.
 std::vector<std::string> refinement_columns();

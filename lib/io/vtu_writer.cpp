@@ -1,105 +1,70 @@
-// write_vtu_fields and the scalar and elastic fields written through it.
+// vtu_text and the scalar and elastic fields written through it.
 #include "io/vtu_writer.hpp"
 
 #include <fmt/format.h>
 
 #include <cmath>
+#include <map>
+#include <optional>
 
-#include "io/atomic_file.hpp"
+#include "io/vtk_lagrange_nodes.hpp"
+#include "io/vtk_xml_document.hpp"
 
 namespace hpcontact::io {
 namespace {
 
-// A cell's reference cell cut into k × k quadrilaterals (square) or k² triangles (triangle): the
-// lattice points and the sub-cells' corners (counterclockwise) as indices into them.
-struct Subdivision {
+// The nodes of one reference cell's Lagrange cell: VTK order, reference points, entities.
+struct NodePattern {
   assembly::ReferencePoints points;
-  std::vector<std::vector<int>> cells;
-  int vtk_type = 9;  // VTK_QUAD; VTK_TRIANGLE = 5
+  std::vector<LatticeEntity> entities;
 };
 
-Subdivision subdivide(mesh::CellType type, int k) {
-  Subdivision out;
-  std::vector<double> t(k + 1);
-  for (int i = 0; i <= k; ++i) t[i] = -1.0 + 2.0 * i / k;
-  if (type == mesh::CellType::quadrilateral) {
-    out.points = assembly::tensor_points(t, t);
-    for (int j = 0; j < k; ++j)
-      for (int i = 0; i < k; ++i) {
-        const int a = j * (k + 1) + i;
-        out.cells.push_back({a, a + 1, a + k + 2, a + k + 1});
-      }
-    return out;
-  }
-  out.vtk_type = 5;
-  std::vector<std::vector<int>> index(k + 1);
-  for (int j = 0; j <= k; ++j)
-    for (int i = 0; i + j <= k; ++i) {
-      index[j].push_back(out.points.size());
-      out.points.xi.push_back(t[i]);
-      out.points.eta.push_back(t[j]);
-    }
-  for (int j = 0; j < k; ++j)
-    for (int i = 0; i + j < k; ++i) {
-      out.cells.push_back({index[j][i], index[j][i + 1], index[j + 1][i]});
-      if (i + j + 1 < k) out.cells.push_back({index[j][i + 1], index[j + 1][i + 1], index[j + 1][i]});
-    }
+NodePattern node_pattern(mesh::CellType type, int k) {
+  const auto lattice = vtk_lagrange_lattice(type, k);
+  NodePattern out{lattice_reference_points(lattice, k), {}};
+  for (const auto& node : lattice) out.entities.push_back(lattice_entity(type, node, k));
   return out;
 }
 
-}  // namespace
+// Shares the points of vertices and edges between the cells that meet there: a vertex is keyed
+// by its number, an edge node by its edge's vertices (smaller first) and its steps from the
+// smaller one, so that both cells of an edge find the same point whatever their edge directions.
+class SharedPoints {
+ public:
+  /// @param components of each point field summed at the points.
+  SharedPoints(int k, std::vector<int> components)
+      : sums(components.size()), k_(k), components_(std::move(components)) {}
 
-void write_vtu_fields(const std::filesystem::path& path, const space::H1Space& space,
-                      const std::vector<VtuField>& fields, int subdivisions) {
-  std::string points, connectivity, offsets, types;
-  std::vector<std::string> values(fields.size());
-  int n_points = 0, n_cells = 0, n_connectivity = 0;
-  for (int c = 0; c < space.mesh().n_cells(); ++c) {
-    const int k = subdivisions > 0 ? subdivisions : std::max(space.cell_degree(c), 1);
-    const Subdivision pieces = subdivide(space.mesh().cell_type(c), k);
-    const auto cell = assembly::tabulate_cell(space, c, pieces.points);
-    const int first = n_points;
-    for (int q = 0; q < cell.points.rows(); ++q)
-      points += fmt::format("{:.17g} {:.17g} 0\n", cell.points(q, 0), cell.points(q, 1));
-    for (std::size_t f = 0; f < fields.size(); ++f) {
-      const Eigen::MatrixXd field = fields[f].evaluate(c, cell);
-      for (int q = 0; q < field.rows(); ++q) {
-        for (int j = 0; j < field.cols(); ++j) values[f] += fmt::format("{}{:.17g}", j ? " " : "", field(q, j));
-        values[f] += "\n";
-      }
+  int index(mesh::CellType type, const LatticeEntity& entity, std::span<const int> cell_vertices) {
+    if (entity.kind == LatticeEntity::Kind::interior) return add();
+    std::array<long long, 3> key;
+    if (entity.kind == LatticeEntity::Kind::vertex) {
+      key = {-1, cell_vertices[entity.local], 0};
+    } else {
+      const auto [a, b] = mesh::local_edge_vertices(type, entity.local);
+      const int va = cell_vertices[a], vb = cell_vertices[b];
+      key = {std::min(va, vb), std::max(va, vb), va < vb ? entity.step : k_ - entity.step};
     }
-    n_points += static_cast<int>(cell.points.rows());
-    for (const auto& piece : pieces.cells) {
-      for (std::size_t v = 0; v < piece.size(); ++v)
-        connectivity += fmt::format("{}{}", v ? " " : "", first + piece[v]);
-      connectivity += "\n";
-      n_connectivity += static_cast<int>(piece.size());
-      offsets += fmt::format("{}\n", n_connectivity);
-      types += fmt::format("{}\n", pieces.vtk_type);
-      ++n_cells;
-    }
+    const auto [it, inserted] = keyed_.try_emplace(key, -1);
+    if (inserted) it->second = add();
+    return it->second;
   }
-  AtomicFile file(path);
-  auto& out = file.stream();
-  out << "<?xml version=\"1.0\"?>\n"
-      << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-      << "<UnstructuredGrid>\n"
-      << fmt::format("<Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", n_points, n_cells) << "<PointData>\n";
-  for (std::size_t f = 0; f < fields.size(); ++f)
-    out << fmt::format("<DataArray type=\"Float64\" Name=\"{}\" NumberOfComponents=\"{}\" format=\"ascii\">\n",
-                       fields[f].name, fields[f].components)
-        << values[f] << "</DataArray>\n";
-  out << "</PointData>\n"
-      << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n"
-      << points << "</DataArray>\n</Points>\n<Cells>\n"
-      << "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n"
-      << connectivity << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n"
-      << offsets << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n"
-      << types << "</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
-  file.commit();
-}
 
-namespace {
+  std::vector<double> xyz;                // 3 per point
+  std::vector<int> counts;                // cells that met at each point
+  std::vector<std::vector<double>> sums;  // per field: its components per point
+
+ private:
+  int add() {
+    xyz.insert(xyz.end(), {0.0, 0.0, 0.0});
+    counts.push_back(0);
+    for (std::size_t f = 0; f < sums.size(); ++f) sums[f].resize(sums[f].size() + components_[f], 0.0);
+    return static_cast<int>(counts.size()) - 1;
+  }
+  int k_;
+  std::vector<int> components_;
+  std::map<std::array<long long, 3>, int> keyed_;
+};
 
 // The coefficients of u on one cell's shapes, shape (n_shapes, components); 0 where eliminated.
 // `dof(scalar dof, component)` numbers u.
@@ -115,19 +80,81 @@ Eigen::MatrixXd cell_coefficients(const space::H1Space& space, int cell, const E
 
 }  // namespace
 
-void write_vtu(const std::filesystem::path& path, const space::H1Space& space, const Eigen::VectorXd& u,
-               int subdivisions) {
-  write_vtu_fields(
-      path, space,
-      {{"u", 1,
-        [&](int cell, const assembly::CellValues& values) {
-          return Eigen::MatrixXd(values.values * cell_coefficients(space, cell, u, 1, [](int d, int) { return d; }));
-        }}},
-      subdivisions);
+std::string vtu_text(const space::H1Space& space, const std::vector<VtuField>& fields, int order) {
+  const auto& mesh = space.mesh();
+  int k = order;
+  if (k <= 0) {
+    k = 1;
+    for (int c = 0; c < mesh.n_cells(); ++c) k = std::max(k, space.cell_degree(c));
+  }
+  std::optional<NodePattern> patterns[2];
+  std::vector<int> components;
+  for (const auto& field : fields) components.push_back(field.components);
+  SharedPoints points(k, components);
+  std::vector<std::int64_t> connectivity, offsets;
+  std::vector<std::uint8_t> types;
+  std::vector<std::int32_t> degrees;
+  for (int c = 0; c < mesh.n_cells(); ++c) {
+    const mesh::CellType type = mesh.cell_type(c);
+    auto& pattern = patterns[static_cast<int>(type)];
+    if (!pattern) pattern = node_pattern(type, k);
+    const auto values = assembly::tabulate_cell(space, c, pattern->points);
+    std::vector<Eigen::MatrixXd> field_values;
+    for (const auto& field : fields) field_values.push_back(field.evaluate(c, values));
+    for (int n = 0; n < pattern->points.size(); ++n) {
+      const int p = points.index(type, pattern->entities[n], mesh.cell(c));
+      if (points.counts[p] == 0) {
+        points.xyz[3 * p] = values.points(n, 0);
+        points.xyz[3 * p + 1] = values.points(n, 1);
+      }
+      ++points.counts[p];
+      for (std::size_t f = 0; f < fields.size(); ++f) {
+        const int m = fields[f].components;
+        for (int j = 0; j < m; ++j) points.sums[f][m * p + j] += field_values[f](n, j);
+      }
+      connectivity.push_back(p);
+    }
+    offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
+    types.push_back(static_cast<std::uint8_t>(vtk_lagrange_cell_type(type)));
+    degrees.push_back(space.cell_degree(c));
+  }
+  const std::size_t n_points = points.counts.size();
+  for (std::size_t f = 0; f < fields.size(); ++f) {
+    auto& sums = points.sums[f];
+    const int m = fields[f].components;
+    for (std::size_t p = 0; p < n_points; ++p)
+      for (int j = 0; j < m; ++j) sums[m * p + j] /= points.counts[p];
+  }
+
+  VtkXmlDocument document("UnstructuredGrid");
+  std::string piece =
+      fmt::format("<Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n<PointData>\n", n_points, types.size());
+  for (std::size_t f = 0; f < fields.size(); ++f)
+    piece += document.array(fields[f].name, points.sums[f], fields[f].components);
+  piece += "</PointData>\n<CellData>\n" + document.array("p", degrees) + "</CellData>\n<Points>\n" +
+           document.array("Points", points.xyz, 3) + "</Points>\n<Cells>\n" +
+           document.array("connectivity", connectivity) + document.array("offsets", offsets) +
+           document.array("types", types) + "</Cells>\n</Piece>\n";
+  return document.text(piece);
 }
 
-void write_elastic_vtu(const std::filesystem::path& path, const space::VectorSpace& vector_space,
-                       const std::vector<assembly::Material>& materials, const Eigen::VectorXd& u) {
+std::string solution_vtu_text(const space::H1Space& space, const Eigen::VectorXd& u) {
+  auto coefficients = [&](int cell) { return cell_coefficients(space, cell, u, 1, [](int d, int) { return d; }); };
+  return vtu_text(space, {{"u", 1,
+                           [&](int cell, const assembly::CellValues& values) {
+                             return Eigen::MatrixXd(values.values * coefficients(cell));
+                           }},
+                          {"grad_u", 3, [&](int cell, const assembly::CellValues& values) {
+                             const Eigen::MatrixXd local = coefficients(cell);
+                             Eigen::MatrixXd out = Eigen::MatrixXd::Zero(values.values.rows(), 3);
+                             out.col(0) = values.grad_x * local;
+                             out.col(1) = values.grad_y * local;
+                             return out;
+                           }}});
+}
+
+std::string elastic_vtu_text(const space::VectorSpace& vector_space, const std::vector<assembly::Material>& materials,
+                             const Eigen::VectorXd& u) {
   const space::H1Space& space = vector_space.scalar();
   const auto dof = [&](int d, int c) { return vector_space.dof(d, c); };
   auto displacement = [&](int cell, const assembly::CellValues& values) {
@@ -149,7 +176,7 @@ void write_elastic_vtu(const std::filesystem::path& path, const space::VectorSpa
     }
     return out;
   };
-  write_vtu_fields(path, space, {{"displacement", 3, displacement}, {"von_mises", 1, von_mises}});
+  return vtu_text(space, {{"displacement", 3, displacement}, {"von_mises", 1, von_mises}});
 }
 
 }  // namespace hpcontact::io

@@ -1,9 +1,10 @@
-// ParaView output of fields on S^p(T_h): every cell subdivided into k × k bilinear quadrilaterals
-// (k = p_T by default), fields as point data, written as VTK XML UnstructuredGrid (ASCII).
+// ParaView output of fields on S^p(T_h): VTK XML UnstructuredGrid of VTK Lagrange cells of one
+// order k (quadrilaterals and triangles), points shared between cells, arrays appended as raw
+// binary. Every field of degree ≤ k per cell is represented exactly, so ParaView draws u_h with
+// its own nonlinear subdivision; fields with jumps between cells (∇u) are averaged at shared points.
 #pragma once
 
 #include <Eigen/Core>
-#include <filesystem>
 #include <functional>
 #include <string>
 #include <vector>
@@ -23,17 +24,16 @@ struct VtuField {
   std::function<Eigen::MatrixXd(int cell, const assembly::CellValues& values)> evaluate;
 };
 
-/// @param subdivisions per cell and direction; 0 means p_T (so fields are sampled at p_T + 1 points).
-void write_vtu_fields(const std::filesystem::path& path, const space::H1Space& space,
-                      const std::vector<VtuField>& fields, int subdivisions = 0);
+/// The VTU file's text: `fields` as point data, the cell degree p_T as cell data "p".
+/// @param order k of the Lagrange cells; 0 means the largest p_T.
+std::string vtu_text(const space::H1Space& space, const std::vector<VtuField>& fields, int order = 0);
 
-/// u_h ∈ S^p(T_h) as the field "u".
-void write_vtu(const std::filesystem::path& path, const space::H1Space& space, const Eigen::VectorXd& u,
-               int subdivisions = 0);
+/// u_h ∈ S^p(T_h) as the point fields "u" and "grad_u".
+std::string solution_vtu_text(const space::H1Space& space, const Eigen::VectorXd& u);
 
-/// A displacement of [S^p(T_h)]² as the vector field "displacement" and the von
-/// Mises stress "von_mises" (with σ_zz of the plane model).
-void write_elastic_vtu(const std::filesystem::path& path, const space::VectorSpace& space,
-                       const std::vector<assembly::Material>& materials, const Eigen::VectorXd& u);
+/// A displacement of [S^p(T_h)]² as the vector field "displacement" and the von Mises stress
+/// "von_mises" (with σ_zz of the plane model).
+std::string elastic_vtu_text(const space::VectorSpace& space, const std::vector<assembly::Material>& materials,
+                             const Eigen::VectorXd& u);
 
 }  // namespace hpcontact::io

@@ -1,0 +1,17 @@
+// Samples along Γ_C (u, the obstacle or bound, λ, … from the boundary tables) as a VTK XML
+// PolyData file: one polyline per contact zone, every numeric column as point data, so ParaView
+// shows the multiplier beside the VTU of u.
+#pragma once
+
+#include <string>
+
+#include "io/csv_writer.hpp"
+
+namespace hpcontact::io {
+
+/// @param table with numeric columns "x", "y" and "zone"; rows of one zone consecutive and in
+///        order along it. Columns other than x, y and zone become point arrays.
+/// @throws std::logic_error if a required column is missing (a programming error).
+std::string polyline_vtp_text(const CsvTable& table);
+
+}  // namespace hpcontact::io

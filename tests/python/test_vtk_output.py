@@ -1,0 +1,142 @@
+"""The ParaView outputs read back by independent readers: meshio (cell types, shared points, arrays)
+and VTK itself (python3-vtk9), whose own Lagrange-cell interpolation must give u_h at the boundary
+samples the library evaluates on its own, to round-off. Run by CTest (Python.Module)."""
+
+import os
+import xml.etree.ElementTree as ET
+
+import meshio
+import numpy as np
+import pytest
+import vtk
+from vtk.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+
+import hpcontact
+
+SOURCE = os.environ["HPCONTACT_SOURCE_DIR"]
+FIGURE1 = os.path.join(SOURCE, "studies", "paper", "figure1_signorini.toml")
+TRIANGLES = os.path.join(SOURCE, "studies", "triangles", "signorini.toml")
+ELASTIC = os.path.join(SOURCE, "studies", "elasticity", "hertz.toml")
+VTK_TYPES = {"VTK_LAGRANGE_QUADRILATERAL": 70, "VTK_LAGRANGE_TRIANGLE": 69}
+
+
+def solve_to(tmp_path, scene, p, effects, extra=None):
+    overrides = {"discretization.p": p, "run.outputs": ["summary", "boundary", "vtu"], **(extra or {})}
+    hpcontact.solve(scene, overrides, effects=effects, out=tmp_path)
+    return tmp_path
+
+
+def nodes_of(cell_type, k):
+    return (k + 1) ** 2 if cell_type == "VTK_LAGRANGE_QUADRILATERAL" else (k + 1) * (k + 2) // 2
+
+
+def probe(vtu_path, points, array):
+    """VTK's own interpolation of `array` of the VTU at 2D points."""
+    reader = vtk.vtkXMLUnstructuredGridReader()
+    reader.SetFileName(str(vtu_path))
+    polydata = vtk.vtkPolyData()
+    xyz = np.column_stack([points, np.zeros(len(points))])
+    vtk_points = vtk.vtkPoints()
+    vtk_points.SetData(numpy_to_vtk(np.ascontiguousarray(xyz), deep=True))
+    polydata.SetPoints(vtk_points)
+    prober = vtk.vtkProbeFilter()
+    prober.SetInputData(polydata)
+    prober.SetSourceConnection(reader.GetOutputPort())
+    prober.SetTolerance(1e-10)
+    prober.Update()
+    output = prober.GetOutput()
+    found = vtk_to_numpy(output.GetPointData().GetArray(prober.GetValidPointMaskArrayName()))
+    return vtk_to_numpy(output.GetPointData().GetArray(array)), found.astype(bool)
+
+
+@pytest.mark.parametrize("scene, p", [(FIGURE1, 4), (TRIANGLES, 5)])
+def test_vtu_holds_lagrange_cells_of_degree_p_with_shared_points(tmp_path, scene, p):
+    out = solve_to(tmp_path, scene, p, ["signorini"])
+    mesh = meshio.read(out / "solution_signorini.vtu")
+    for block in mesh.cells:
+        assert block.type in VTK_TYPES
+        assert block.data.shape[1] == nodes_of(block.type, p)
+    # Shared points: no two points at the same place, every point used.
+    rounded = np.round(mesh.points[:, :2], 12)
+    assert len(np.unique(rounded, axis=0)) == len(mesh.points)
+    used = np.unique(np.concatenate([block.data.ravel() for block in mesh.cells]))
+    assert len(used) == len(mesh.points)
+    assert set(mesh.point_data) == {"u", "grad_u"} and mesh.point_data["grad_u"].shape[1] == 3
+    assert np.all(np.concatenate(mesh.cell_data["p"]) == p)
+    # Appended raw binary with 64-bit headers.
+    header = (out / "solution_signorini.vtu").read_bytes().split(b"<AppendedData")[0].decode()
+    assert 'header_type="UInt64"' in header and 'format="appended"' in header and "ascii" not in header
+
+
+@pytest.mark.parametrize("scene, p", [(FIGURE1, 4), (TRIANGLES, 5)])
+def test_vtk_interpolation_of_the_lagrange_cells_gives_u_on_the_contact_boundary(tmp_path, scene, p):
+    out = solve_to(tmp_path, scene, p, ["signorini"])
+    samples = np.genfromtxt(out / "boundary_signorini.csv", delimiter=",", names=True)
+    points = np.column_stack([samples["x"], samples["y"]])
+    u, found = probe(out / "solution_signorini.vtu", points, "u")
+    assert found.all()
+    # The cells carry u_h exactly (degree k = p), so VTK's node order and ours agree iff this holds.
+    np.testing.assert_allclose(u, samples["u"], rtol=0, atol=1e-10 * np.abs(samples["u"]).max())
+
+
+@pytest.mark.parametrize("scene, p", [(FIGURE1, 5), (TRIANGLES, 6)])
+def test_vtk_geometry_of_every_node_matches_the_affine_cells(tmp_path, scene, p):
+    """Inside the cells: on affine cells VTK's Lagrange map of the nodes must be the affine map of
+    the corners at every parametric point; any node (edge or interior) out of VTK's order breaks it."""
+    out = solve_to(tmp_path, scene, p, ["signorini"])
+    reader = vtk.vtkXMLUnstructuredGridReader()
+    reader.SetFileName(str(out / "solution_signorini.vtu"))
+    reader.Update()
+    grid = reader.GetOutput()
+    rng = np.random.default_rng(7)
+    worst = 0.0
+    for c in range(grid.GetNumberOfCells()):
+        cell = grid.GetCell(c)
+        corners = np.array([cell.GetPoints().GetPoint(v)[:2] for v in range(4 if cell.GetCellType() == 70 else 3)])
+        for _ in range(3):
+            r, s = rng.random(2)
+            if cell.GetCellType() == 69:
+                r, s = (r, s) if r + s <= 1 else (1 - r, 1 - s)
+                expected = (1 - r - s) * corners[0] + r * corners[1] + s * corners[2]
+            else:
+                expected = ((1 - r) * (1 - s) * corners[0] + r * (1 - s) * corners[1] + r * s * corners[2]
+                            + (1 - r) * s * corners[3])
+            x = [0.0, 0.0, 0.0]
+            weights = [0.0] * cell.GetNumberOfPoints()
+            cell.EvaluateLocation(vtk.mutable(0), [r, s, 0.0], x, weights)
+            worst = max(worst, np.abs(np.array(x[:2]) - expected).max())
+    assert worst < 1e-12
+
+
+def test_vtp_carries_lambda_and_the_obstacle_on_each_contact_zone(tmp_path):
+    out = solve_to(tmp_path, FIGURE1, 3, ["signorini"])
+    reader = vtk.vtkXMLPolyDataReader()
+    reader.SetFileName(str(out / "contact_signorini.vtp"))
+    reader.Update()
+    polydata = reader.GetOutput()
+    samples = np.genfromtxt(out / "boundary_signorini.csv", delimiter=",", names=True)
+    assert polydata.GetNumberOfLines() == 1 and polydata.GetNumberOfPoints() == len(samples)
+    for name in ("lambda", "obstacle", "u", "s_arc"):
+        np.testing.assert_array_equal(vtk_to_numpy(polydata.GetPointData().GetArray(name)), samples[name])
+    np.testing.assert_array_equal(vtk_to_numpy(polydata.GetPoints().GetData())[:, 0], samples["x"])
+
+
+def test_convergence_writes_one_vtu_per_level_and_a_pvd(tmp_path):
+    out = solve_to(tmp_path, FIGURE1, 2, ["signorini", "convergence"], {"convergence.refinements": 2})
+    collection = ET.parse(out / "solution_signorini.pvd").getroot()
+    files = [(float(d.get("timestep")), d.get("file")) for d in collection.iter("DataSet")]
+    assert [t for t, _ in files] == [0.0, 1.0, 2.0]
+    cells = [sum(len(b.data) for b in meshio.read(out / f).cells) for _, f in files]
+    assert cells[1] == 4 * cells[0] and cells[2] == 4 * cells[1]
+
+
+def test_elastic_vtu_carries_the_displacement_and_von_mises_per_level(tmp_path):
+    out = solve_to(tmp_path, ELASTIC, 3, ["frictionless", "convergence"], {"convergence.refinements": 1})
+    mesh = meshio.read(out / "solution_frictionless.vtu")
+    assert mesh.point_data["displacement"].shape == (len(mesh.points), 3)
+    assert np.all(mesh.point_data["displacement"][:, 2] == 0)
+    assert np.all(mesh.point_data["von_mises"] >= 0)
+    assert (out / "contact_frictionless.vtp").exists()
+    collection = ET.parse(out / "solution_frictionless.pvd").getroot()
+    levels = [meshio.read(out / d.get("file")) for d in collection.iter("DataSet")]
+    assert [sum(len(b.data) for b in m.cells) for m in levels][1] == 4 * len(mesh.cells[0].data)
