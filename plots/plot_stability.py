@@ -53,10 +53,13 @@ def plot_alpha_vs_h(rows, folder):
         # h_min, the shortest edge on Γ_C: h on uniform meshes, the finest layer on graded ones.
         groups[key].append((float(row["h_min"]), float(row["alpha"])))
     ratios = sorted({key[2] for key in groups}, reverse=True)
-    labels = {(key[3], key[4]) for key in groups}
-    legend_rows = -(-len(labels) // 8)
+    labels = {(key[0], key[3], key[4]) for key in groups}
+    # As many legend columns as fit the figure's width (an entry takes about 1.5 inches).
+    width = max(3.6 * len(ratios), 6.0)
+    columns = max(1, min(len(labels), int(width // 1.5)))
+    legend_rows = -(-len(labels) // columns)
     height = 4.2 + 0.28 * legend_rows
-    figure, axes = plt.subplots(1, len(ratios), figsize=(3.6 * len(ratios), height), squeeze=False)
+    figure, axes = plt.subplots(1, len(ratios), figsize=(width, height), squeeze=False)
     legend = {}
     for axis, ratio in zip(axes[0], ratios):
         for key, points in sorted(groups.items()):
@@ -67,14 +70,15 @@ def plot_alpha_vs_h(rows, folder):
             label = f"p = {key[3]}, $p_C$ = {key[4]}" + ("" if key[0] == "signorini" else f" ({key[0]})")
             (line,) = axis.loglog(h, [max(a, 1e-8) for a in alpha], markersize=4, linewidth=1,
                                   **curve_style(key[3], key[4]))
-            legend.setdefault(label, line)
+            legend.setdefault((key[3], key[4], key[0]), (label, line))
         axis.set_title(f"h/H = {ratio_label(ratio)}")
         axis.set_xlabel(r"$h_{\min}$ (shortest edge on $\Gamma_C$)")
         axis.set_ylabel(r"inf-sup constant $\alpha$")
         axis.grid(True, which="both", alpha=0.3)
     # One legend for all panels, below them (the same p and p_C look the same everywhere).
-    figure.legend(list(legend.values()), list(legend.keys()), loc="lower center", ncol=min(len(legend), 8),
-                  fontsize=8, bbox_to_anchor=(0.5, 0.0))
+    entries = [legend[key] for key in sorted(legend)]  # by p, then p_C
+    figure.legend([line for _, line in entries], [label for label, _ in entries], loc="lower center",
+                  ncol=columns, fontsize=8, bbox_to_anchor=(0.5, 0.0))
     figure.suptitle(r"inf-sup constant $\alpha$ against $h_{\min}$ (slope 1: an unstable pairing)")
     figure.tight_layout(rect=(0, (0.28 * legend_rows + 0.1) / height, 1, 1))
     save(figure, folder / "alpha_vs_h.png")
