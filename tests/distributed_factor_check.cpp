@@ -4,7 +4,7 @@
 // the ranks, and rank 0 prints the relative differences from CHOLMOD on the assembled matrix.
 //
 //   distributed_factor_check SOLVER SPLIT [indefinite]
-//     SOLVER  substructuring | mumps
+//     SOLVER  substructuring | mumps | bddc
 //     SPLIT   strips (elements in strips of x, one per rank) | scattered (element e on rank e %
 //     ranks) indefinite: one Dirichlet diagonal is −50 (the factorization must fail on every rank)
 #include <fmt/format.h>
@@ -14,6 +14,7 @@
 
 #include "core/error.hpp"
 #include "core/petsc_session.hpp"
+#include "linalg/bddc_solver.hpp"
 #include "linalg/distributed_cholesky.hpp"
 #include "linalg/sparse_cholesky.hpp"
 #include "linalg/substructured_cholesky.hpp"
@@ -83,8 +84,12 @@ int run(const std::string& solver, const std::string& split, bool indefinite) {
   } else if (solver == "mumps") {
     const linalg::DistributedCholesky factor(n, mine);
     solution = factor.solve(rhs), schur = factor.schur_complement(b), schur_out = factor.schur_complement(b_out);
+  } else if (solver == "bddc") {
+    const linalg::BddcSolver factor(n, mine);
+    solution = factor.solve(rhs), schur = factor.schur_complement(b), schur_out = factor.schur_complement(b_out);
+    if (rank == 0) fmt::print("iterations_largest {}\n", factor.iterations().largest);
   } else {
-    throw_bad_input("distributed_factor_check", "SOLVER", solver, "substructuring | mumps");
+    throw_bad_input("distributed_factor_check", "SOLVER", solver, "substructuring | mumps | bddc");
   }
   if (rank != 0) return 0;
   Eigen::SparseMatrix<double> a(n, n);

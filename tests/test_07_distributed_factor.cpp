@@ -1,5 +1,5 @@
-// Stage 7, the sparse direct solvers over MPI ranks (run under mpirun through a helper program):
-// substructuring and MUMPS must give CHOLMOD's solves and Schur complements B A⁻¹ Bᵀ (through the
+// Stage 7, the distributed solvers over MPI ranks (run under mpirun through a helper program):
+// substructuring, MUMPS and MATIS + BDDC must give CHOLMOD's solves and Schur complements B A⁻¹ Bᵀ (through the
 // trailing set, and by solves when B reaches outside it) on 1, 2 and 3 ranks, with the elements
 // split in strips or scattered (every unknown shared, ranks without interior, floating parts);
 // an indefinite matrix must fail on every rank with a clear message, not hang.
@@ -28,8 +28,8 @@ std::string check_command(int ranks, const std::string& arguments) {
 
 }  // namespace
 
-TEST(DistributedFactor, SubstructuringAndMumpsEqualCholmodOnEverySplit) {
-  for (const char* solver : {"substructuring", "mumps"})
+TEST(DistributedFactor, SubstructuringMumpsAndBddcEqualCholmodOnEverySplit) {
+  for (const char* solver : {"substructuring", "mumps", "bddc"})
     for (const char* split : {"strips", "scattered"})
       for (int ranks : {1, 2, 3}) {
         const auto run = run_command(check_command(ranks, std::string(solver) + " " + split));
@@ -37,6 +37,11 @@ TEST(DistributedFactor, SubstructuringAndMumpsEqualCholmodOnEverySplit) {
         ASSERT_EQ(run.exit_code, 0) << where << "\n" << run.output;
         for (const char* key : {"solve", "schur_trailing", "schur_fallback"})
           EXPECT_LT(number_after(run.output, key), 1e-11) << where << ": " << key << "\n" << run.output;
+        // BDDC: a handful of iterations with strips (one interface per neighbour); scattered
+        // cells make every node an interface node, still well below the 384 unknowns.
+        if (std::string(solver) == "bddc") {
+          EXPECT_LT(number_after(run.output, "iterations_largest"), std::string(split) == "strips" ? 15 : 60) << where;
+        }
         if (std::string(solver) == "substructuring") {
           // The interface: the trailing row (24) alone on one rank; with strips, plus the nodes
           // between strips and the top nodes rank 0 shares; scattered, nearly every node.
@@ -56,7 +61,7 @@ TEST(DistributedFactor, SubstructuringAndMumpsEqualCholmodOnEverySplit) {
 }
 
 TEST(DistributedFactor, IndefiniteMatrixFailsOnEveryRankWithAClearMessage) {
-  for (const char* solver : {"substructuring", "mumps"})
+  for (const char* solver : {"substructuring", "mumps", "bddc"})
     for (int ranks : {1, 2}) {
       const auto run = run_command(check_command(ranks, std::string(solver) + " strips indefinite"));
       EXPECT_EQ(run.exit_code, 3) << solver << ", " << ranks << " ranks\n" << run.output;

@@ -315,20 +315,21 @@ TEST(Cli, SweepUnderMpirunWritesTheSerialCsv) {
 }
 
 // `mpirun -n 2 hpcontact solve` factorizes K and A_G over the ranks (by default substructuring:
-// the cells split by coordinate bisection, CHOLMOD per rank, a dense interface problem) and gives
-// the serial run's contact solution and α: every number of the boundary CSV to 1e-8 of its
-// column's size, the energies and α to 1e-10.
+// the cells split by coordinate bisection, CHOLMOD per rank, a dense interface problem; and with
+// MATIS + BDDC on 3 ranks, so that the parts meet at a cross point) and gives the serial run's
+// contact solution and α: every number of the boundary CSV to 1e-8 of its column's size, the
+// energies and α to 1e-10.
 // `mpirun -n 2 hpcontact infsup` factorizes A_G over the ranks and prints the serial α, in both
-// H^{-1/2} realizations and with both distributed solvers; only rank 0 prints.
+// H^{-1/2} realizations and with the three distributed solvers; only rank 0 prints.
 TEST(Cli, InfsupUnderMpirunGivesTheSerialAlpha) {
   const std::string env = "env OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ";
   for (const char* norm : {"interp", "extension"}) {
     const std::string arguments = std::string(" infsup --n 16 --p 3 --pc 2 --ratio 1/2 --norm ") + norm;
     const auto serial = run(arguments);
     ASSERT_EQ(serial.exit_code, 0) << serial.output;
-    for (const char* solver : {"substructuring", "mumps"}) {
-      const auto parallel =
-          run_command(env + "mpirun -n 2 " + HPCONTACT_CLI + arguments + " --distributed-solver " + solver);
+    for (const char* solver : {"substructuring", "mumps", "bddc"}) {
+      const auto parallel = run_command(env + "mpirun -n 2 --oversubscribe " + HPCONTACT_CLI + arguments +
+                                        " --distributed-solver " + solver);
       ASSERT_EQ(parallel.exit_code, 0) << parallel.output;
       const std::string key = "alpha = ";
       ASSERT_NE(parallel.output.find(key), std::string::npos) << parallel.output;
@@ -361,37 +362,40 @@ TEST(Cli, SolveUnderMpirunGivesTheSerialSolutionAndAlpha) {
   };
   const std::vector<std::pair<std::string, std::string>> cases{{"figure1_signorini", "signorini,infsup"},
                                                                {"figure6_friction_s", "friction_s"}};
-  for (const auto& [scene, effects] : cases) {
-    const auto dir = scratch("solve_mpi_" + scene);
-    const std::string arguments =
-        " solve " HPCONTACT_SOURCE_DIR "/studies/paper/" + scene + ".toml --effects " + effects;
-    const auto serial = run_command(env + HPCONTACT_CLI + arguments + " --out " + (dir / "serial").string());
-    ASSERT_EQ(serial.exit_code, 0) << serial.output;
-    const auto parallel = run_command(env + "mpirun -n 2 --oversubscribe " HPCONTACT_CLI + arguments + " --out " +
-                                      (dir / "parallel").string());
-    ASSERT_EQ(parallel.exit_code, 0) << parallel.output;
-    EXPECT_NE(parallel.output.find("on 2 ranks"), std::string::npos) << parallel.output;
-    const double energy = number_after(serial.output, "energy = ");
-    EXPECT_NEAR(number_after(parallel.output, "energy = "), energy, 1e-10 * std::abs(energy)) << parallel.output;
-    if (effects.find("infsup") != std::string::npos) {
-      const double alpha = number_after(serial.output, "alpha = ");
-      EXPECT_GT(alpha, 0.1);
-      EXPECT_NEAR(number_after(parallel.output, "alpha = "), alpha, 1e-10) << parallel.output;
-    }
-    const std::string problem = effects.substr(0, effects.find(','));
-    const auto a = table(dir / "serial" / ("boundary_" + problem + ".csv"));
-    const auto b = table(dir / "parallel" / ("boundary_" + problem + ".csv"));
-    ASSERT_EQ(a.size(), b.size());
-    ASSERT_GT(a.size(), 100u);
-    for (std::size_t column = 0; column < a.front().size(); ++column) {
-      double scale = 0.0, difference = 0.0;
-      for (std::size_t row = 0; row < a.size(); ++row) {
-        scale = std::max(scale, std::abs(a[row][column]));
-        difference = std::max(difference, std::abs(a[row][column] - b[row][column]));
+  for (const auto& [scene, effects] : cases)
+    for (const std::string launch : {"mpirun -n 2", "mpirun -n 3"}) {
+      const auto dir = scratch("solve_mpi_" + scene);
+      const std::string arguments =
+          " solve " HPCONTACT_SOURCE_DIR "/studies/paper/" + scene + ".toml --effects " + effects;
+      const auto serial = run_command(env + HPCONTACT_CLI + arguments + " --out " + (dir / "serial").string());
+      ASSERT_EQ(serial.exit_code, 0) << serial.output;
+      const std::string solver = launch == "mpirun -n 3" ? " --distributed-solver bddc" : "";
+      const auto parallel = run_command(env + launch + " --oversubscribe " HPCONTACT_CLI + arguments + solver +
+                                        " --out " + (dir / "parallel").string());
+      ASSERT_EQ(parallel.exit_code, 0) << parallel.output;
+      EXPECT_NE(parallel.output.find(launch == "mpirun -n 3" ? "on 3 ranks" : "on 2 ranks"), std::string::npos)
+          << parallel.output;
+      const double energy = number_after(serial.output, "energy = ");
+      EXPECT_NEAR(number_after(parallel.output, "energy = "), energy, 1e-10 * std::abs(energy)) << parallel.output;
+      if (effects.find("infsup") != std::string::npos) {
+        const double alpha = number_after(serial.output, "alpha = ");
+        EXPECT_GT(alpha, 0.1);
+        EXPECT_NEAR(number_after(parallel.output, "alpha = "), alpha, 1e-10) << parallel.output;
       }
-      EXPECT_LE(difference, 1e-8 * scale) << scene << " column " << column;
+      const std::string problem = effects.substr(0, effects.find(','));
+      const auto a = table(dir / "serial" / ("boundary_" + problem + ".csv"));
+      const auto b = table(dir / "parallel" / ("boundary_" + problem + ".csv"));
+      ASSERT_EQ(a.size(), b.size());
+      ASSERT_GT(a.size(), 100u);
+      for (std::size_t column = 0; column < a.front().size(); ++column) {
+        double scale = 0.0, difference = 0.0;
+        for (std::size_t row = 0; row < a.size(); ++row) {
+          scale = std::max(scale, std::abs(a[row][column]));
+          difference = std::max(difference, std::abs(a[row][column] - b[row][column]));
+        }
+        EXPECT_LE(difference, 1e-8 * scale) << scene << " column " << column << " (" << launch << solver << ")";
+      }
     }
-  }
 }
 
 // A folder holding an alpha.csv of other columns (an older version's) is refused with a hint;

@@ -2,6 +2,7 @@
 // SLEPc once, runs one subcommand and maps errors to exit codes: 0 ok, 2 bad input, 3 numerical
 // failure, 4 I/O failure, 130 interrupted (SIGINT, SIGTERM), 1 a bug.
 #include <fmt/format.h>
+#include <mpi.h>
 
 #include <CLI/CLI.hpp>
 #include <iostream>
@@ -17,16 +18,24 @@
 namespace {
 
 // The message for an exit code, printed once: by every rank for a failure of its own, by rank 0
-// alone for one that all ranks agreed on.
+// alone for one that all ranks agreed on. A failure of one rank that the others did not agree on
+// (an error inside a library's collective operation, e.g. a local solver of PCBDDC) may leave them
+// waiting in a collective call: under mpirun it aborts the whole job, so that no rank hangs.
 int report(const std::exception& error) {
   using namespace hpcontact;
   const int code = exit_code_of(error);
-  if (failure_agreed() && mpi_rank_and_size().first != 0) return code;
+  const auto [rank, ranks] = mpi_rank_and_size();
+  if (failure_agreed() && rank != 0) return code;
   const char* kind = code == 2   ? "error"
                      : code == 3 ? "numerical failure"
                      : code == 4 ? "I/O failure"
                                  : "internal error";
-  fmt::print(stderr, "hpcontact: {}: {}\n", kind, error.what());
+  fmt::print(stderr, "hpcontact: {}{}: {}\n", kind,
+             ranks > 1 && !failure_agreed() ? fmt::format(" on rank {}", rank) : "", error.what());
+  if (ranks > 1 && !failure_agreed()) {
+    std::fflush(stderr);
+    MPI_Abort(MPI_COMM_WORLD, code);
+  }
   return code;
 }
 
@@ -79,7 +88,7 @@ int main(int argc, char** argv) {
   }
   int code = 0;
   try {
-    infsup::check_petsc_options(command_line.petsc);
+    run_on_all_ranks_agreeing([&] { infsup::check_petsc_options(command_line.petsc); });
     code = action();
   } catch (const std::exception& error) {
     code = report(error);

@@ -77,6 +77,9 @@ CondensedFactor::CondensedFactor(std::unique_ptr<const CellSystem> system, const
     case linalg::Distribution::mumps:
       mumps_ = std::make_unique<linalg::DistributedCholesky>(n_skeleton, lower);
       break;
+    case linalg::Distribution::bddc:
+      bddc_ = std::make_unique<linalg::BddcSolver>(n_skeleton, lower);
+      break;
   }
 }
 
@@ -138,6 +141,7 @@ CondensedFactor& CondensedFactor::operator=(CondensedFactor&&) noexcept = defaul
 
 Eigen::MatrixXd CondensedFactor::skeleton_solve(const Eigen::MatrixXd& rhs) const {
   if (serial_) return serial_->solve(rhs);
+  if (bddc_) return bddc_->solve(rhs);
   return substructured_ ? substructured_->solve(rhs) : mumps_->solve(rhs);
 }
 
@@ -186,6 +190,7 @@ Eigen::MatrixXd CondensedFactor::schur_complement(const Eigen::SparseMatrix<doub
   if (skeleton_only) {
     const Eigen::SparseMatrix<double> b_skeleton = b.leftCols(n_skeleton);
     if (serial_) return serial_->schur_complement(b_skeleton);
+    if (bddc_) return bddc_->schur_complement(b_skeleton);
     return substructured_ ? substructured_->schur_complement(b_skeleton) : mumps_->schur_complement(b_skeleton);
   }
   const Eigen::MatrixXd result = b * solve(Eigen::MatrixXd(b.transpose()));

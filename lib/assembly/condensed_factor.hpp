@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "assembly/cell_system.hpp"
+#include "linalg/bddc_solver.hpp"
 #include "linalg/distributed_cholesky.hpp"
 #include "linalg/distribution.hpp"
 #include "linalg/sparse_cholesky.hpp"
@@ -35,7 +36,8 @@ namespace hpcontact::assembly {
 /// SubstructuredCholesky): each rank factorizes the skeleton dofs only its part touches, and the
 /// dofs between parts and the trailing set form a small dense interface problem whose trailing
 /// block gives B A⁻¹ Bᵀ; or by MUMPS on an MPIAIJ matrix (DistributedCholesky), where B A⁻¹ Bᵀ
-/// comes from solves with Bᵀ.
+/// comes from solves with Bᵀ; or kept unassembled as MATIS, each rank's part its subdomain, and
+/// solved by CG + BDDC (BddcSolver), B A⁻¹ Bᵀ again by solves.
 class CondensedFactor {
  public:
   /// `trailing`: dofs (skeleton dofs only) ordered last in the factorization of S.
@@ -84,9 +86,10 @@ class CondensedFactor {
   std::vector<std::unique_ptr<CellBlock>> blocks_;
   std::vector<int> block_of_cell_;
   int n_trailing_ = 0;
-  std::unique_ptr<linalg::SparseCholesky> serial_;  ///< one of the three, by the distribution
+  std::unique_ptr<linalg::SparseCholesky> serial_;  ///< one of the four, by the distribution
   std::unique_ptr<linalg::SubstructuredCholesky> substructured_;
   std::unique_ptr<linalg::DistributedCholesky> mumps_;
+  std::unique_ptr<linalg::BddcSolver> bddc_;
 };
 
 }  // namespace hpcontact::assembly

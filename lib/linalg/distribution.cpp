@@ -8,7 +8,8 @@ namespace hpcontact::linalg {
 Distribution parse_distributed_solver(const std::string& text, const std::string& origin, const std::string& key) {
   if (text == "substructuring") return Distribution::substructuring;
   if (text == "mumps") return Distribution::mumps;
-  throw_bad_input(origin, key, text, "must be one of: substructuring, mumps");
+  if (text == "bddc") return Distribution::bddc;
+  throw_bad_input(origin, key, text, "must be one of: substructuring, mumps, bddc");
 }
 
 std::string to_string(Distribution distribution) {
@@ -19,6 +20,8 @@ std::string to_string(Distribution distribution) {
       return "substructuring";
     case Distribution::mumps:
       return "mumps";
+    case Distribution::bddc:
+      return "bddc";
   }
   return "?";
 }

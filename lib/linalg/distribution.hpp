@@ -11,9 +11,10 @@ enum class Distribution {
   substructuring,  ///< SubstructuredCholesky: CHOLMOD per rank, dense interface problem on every
                    ///< rank
   mumps,           ///< DistributedCholesky: PETSc MPIAIJ + MUMPS's Cholesky
+  bddc,            ///< BddcSolver: PETSc MATIS + conjugate gradients with PCBDDC
 };
 
-/// "substructuring" | "mumps". @throws InputError naming `origin` and `key` otherwise.
+/// "substructuring" | "mumps" | "bddc". @throws InputError naming `origin` and `key` otherwise.
 Distribution parse_distributed_solver(const std::string& text, const std::string& origin, const std::string& key);
 std::string to_string(Distribution distribution);
 /// `choice` when more than one rank runs, serial otherwise.

@@ -1,0 +1,150 @@
+// BddcSolver: the local numbering of a rank's contributions, MATIS with its local SeqAIJ matrix,
+// KSP CG + PCBDDC, replicated right-hand sides scattered in and results gathered back.
+#include "linalg/bddc_solver.hpp"
+
+#include <fmt/format.h>
+#include <petscksp.h>
+
+#include <algorithm>
+
+#include "core/error.hpp"
+#include "core/petsc_check.hpp"
+#include "core/petsc_handle.hpp"
+#include "core/petsc_session.hpp"
+
+namespace hpcontact::linalg {
+
+struct BddcSolver::Impl {
+  PetscHandle<Mat, MatDestroy> matrix;
+  PetscHandle<KSP, KSPDestroy> ksp;
+  PetscInt row_begin = 0, row_end = 0;
+  mutable BddcIterations iterations;
+};
+
+BddcSolver::BddcSolver(int n, const std::vector<Eigen::Triplet<double>>& lower_entries, double relative_tolerance)
+    : impl_(std::make_unique<Impl>()), size_(n) {
+  // 1. The rank's subdomain: the unknowns its entries touch, numbered locally in global order.
+  std::vector<PetscInt> global;
+  global.reserve(2 * lower_entries.size());
+  for (const auto& entry : lower_entries) {
+    HPC_VERIFY(entry.row() >= entry.col() && entry.row() < n, "BDDC: entry outside the lower triangle");
+    global.push_back(entry.row());
+    global.push_back(entry.col());
+  }
+  std::sort(global.begin(), global.end());
+  global.erase(std::unique(global.begin(), global.end()), global.end());
+  auto local_of = [&](PetscInt g) {
+    return static_cast<PetscInt>(std::lower_bound(global.begin(), global.end(), g) - global.begin());
+  };
+  const auto n_local = static_cast<PetscInt>(global.size());
+  PetscHandle<ISLocalToGlobalMapping, ISLocalToGlobalMappingDestroy> map;
+  HPC_PETSC_CALL(
+      ISLocalToGlobalMappingCreate(PETSC_COMM_WORLD, 1, n_local, global.data(), PETSC_COPY_VALUES, map.out()));
+  // 2. MATIS: the local matrix holds the rank's contributions (both triangles).
+  Mat& a = *impl_->matrix.out();
+  HPC_PETSC_CALL(MatCreateIS(PETSC_COMM_WORLD, 1, PETSC_DECIDE, PETSC_DECIDE, n, n, map.get(), map.get(), &a));
+  Mat local = nullptr;
+  HPC_PETSC_CALL(MatISGetLocalMat(a, &local));
+  std::vector<PetscInt> row_nonzeros(n_local, 0);
+  std::vector<PetscInt> rows, cols;
+  std::vector<PetscScalar> values;
+  for (const auto& entry : lower_entries) {
+    const PetscInt r = local_of(entry.row()), c = local_of(entry.col());
+    rows.push_back(r), cols.push_back(c), values.push_back(entry.value());
+    if (r != c) rows.push_back(c), cols.push_back(r), values.push_back(entry.value());
+  }
+  HPC_PETSC_CALL(MatSetType(local, MATSEQAIJ));
+  HPC_PETSC_CALL(MatSetPreallocationCOO(local, static_cast<PetscCount>(rows.size()), rows.data(), cols.data()));
+  HPC_PETSC_CALL(MatSetValuesCOO(local, values.data(), ADD_VALUES));
+  HPC_PETSC_CALL(MatISRestoreLocalMat(a, &local));
+  HPC_PETSC_CALL(MatAssemblyBegin(a, MAT_FINAL_ASSEMBLY));
+  HPC_PETSC_CALL(MatAssemblyEnd(a, MAT_FINAL_ASSEMBLY));
+  HPC_PETSC_CALL(MatSetOption(a, MAT_SYMMETRIC, PETSC_TRUE));
+  HPC_PETSC_CALL(MatSetOption(a, MAT_SPD, PETSC_TRUE));
+  HPC_PETSC_CALL(MatGetOwnershipRange(a, &impl_->row_begin, &impl_->row_end));
+  // 3. CG + BDDC with PETSc's default (multiplicity) scaling: deluxe scaling fails in Debian 12's
+  // PETSc 3.18 with MUMPS 5.5 (INFOG(1) = -46 in PCBDDCSetUpCorrection); -bddc_pc_bddc_use_deluxe_scaling
+  // turns it on where the stack allows.
+  KSP& ksp = *impl_->ksp.out();
+  HPC_PETSC_CALL(KSPCreate(PETSC_COMM_WORLD, &ksp));
+  HPC_PETSC_CALL(KSPSetOptionsPrefix(ksp, "bddc_"));
+  HPC_PETSC_CALL(KSPSetOperators(ksp, a, a));
+  HPC_PETSC_CALL(KSPSetType(ksp, KSPCG));
+  PC pc = nullptr;
+  HPC_PETSC_CALL(KSPGetPC(ksp, &pc));
+  HPC_PETSC_CALL(PCSetType(pc, PCBDDC));
+  HPC_PETSC_CALL(KSPSetTolerances(ksp, relative_tolerance, 0.0, PETSC_DEFAULT, 2000));
+  HPC_PETSC_CALL(KSPSetFromOptions(ksp));
+  HPC_PETSC_CALL(KSPSetUp(ksp));
+}
+
+BddcSolver::~BddcSolver() = default;
+BddcSolver::BddcSolver(BddcSolver&&) noexcept = default;
+BddcSolver& BddcSolver::operator=(BddcSolver&&) noexcept = default;
+
+BddcIterations BddcSolver::iterations() const { return impl_->iterations; }
+
+namespace {
+
+// One solve of the rank's rows of `rhs_column` (a replicated column); the rank's rows of the
+// solution into `owned_solution`.
+void solve_column(KSP ksp, Mat a, const double* rhs_column, PetscInt row_begin, PetscInt row_end,
+                  double* owned_solution, BddcIterations& count) {
+  PetscHandle<Vec, VecDestroy> b, x;
+  HPC_PETSC_CALL(MatCreateVecs(a, x.out(), b.out()));
+  PetscScalar* array = nullptr;
+  HPC_PETSC_CALL(VecGetArray(b.get(), &array));
+  std::copy(rhs_column + row_begin, rhs_column + row_end, array);
+  HPC_PETSC_CALL(VecRestoreArray(b.get(), &array));
+  HPC_PETSC_CALL(KSPSolve(ksp, b.get(), x.get()));
+  KSPConvergedReason reason;
+  HPC_PETSC_CALL(KSPGetConvergedReason(ksp, &reason));
+  PetscInt iterations = 0;
+  HPC_PETSC_CALL(KSPGetIterationNumber(ksp, &iterations));
+  if (reason < 0) {
+    const bool indefinite = reason == KSP_DIVERGED_INDEFINITE_PC || reason == KSP_DIVERGED_INDEFINITE_MAT;
+    throw NumericalError(fmt::format(
+        "BDDC: conjugate gradients did not converge ({} after {} iterations; {})", KSPConvergedReasons[reason],
+        iterations,
+        indefinite ? "the matrix is not positive definite" : "raise -bddc_ksp_max_it or loosen -bddc_ksp_rtol"));
+  }
+  ++count.solves;
+  count.total += iterations;
+  count.largest = std::max(count.largest, static_cast<int>(iterations));
+  const PetscScalar* solution = nullptr;
+  HPC_PETSC_CALL(VecGetArrayRead(x.get(), &solution));
+  std::copy(solution, solution + (row_end - row_begin), owned_solution);
+  HPC_PETSC_CALL(VecRestoreArrayRead(x.get(), &solution));
+}
+
+}  // namespace
+
+Eigen::MatrixXd BddcSolver::solve(const Eigen::MatrixXd& rhs) const {
+  HPC_VERIFY(rhs.rows() == size_, "right-hand side of the wrong size");
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(size_, rhs.cols());
+  for (Eigen::Index k = 0; k < rhs.cols(); ++k)
+    solve_column(impl_->ksp.get(), impl_->matrix.get(), rhs.col(k).data(), impl_->row_begin, impl_->row_end,
+                 out.col(k).data() + impl_->row_begin, impl_->iterations);
+  sum_over_ranks(out.data(), out.size());  // each row is non-zero on its owner only
+  return out;
+}
+
+Eigen::MatrixXd BddcSolver::schur_complement(const Eigen::SparseMatrix<double>& b) const {
+  HPC_VERIFY(b.cols() == size_, "B A⁻¹ Bᵀ: B has the wrong number of columns");
+  const auto m = b.rows();
+  const PetscInt owned = impl_->row_end - impl_->row_begin;
+  const Eigen::SparseMatrix<double> b_owned = b.middleCols(impl_->row_begin, owned);
+  const Eigen::SparseMatrix<double> bt = b.transpose();
+  Eigen::MatrixXd result = Eigen::MatrixXd::Zero(m, m);
+  Eigen::VectorXd column(size_), owned_solution(owned);
+  for (Eigen::Index j = 0; j < m; ++j) {
+    column = bt.col(j);
+    solve_column(impl_->ksp.get(), impl_->matrix.get(), column.data(), impl_->row_begin, impl_->row_end,
+                 owned_solution.data(), impl_->iterations);
+    result.col(j) = b_owned * owned_solution;
+  }
+  sum_over_ranks(result.data(), result.size());
+  return 0.5 * (result + result.transpose());
+}
+
+}  // namespace hpcontact::linalg
