@@ -314,6 +314,59 @@ TEST(Cli, SweepUnderMpirunWritesTheSerialCsv) {
   EXPECT_EQ(std::string(std::istreambuf_iterator<char>(a), {}), std::string(std::istreambuf_iterator<char>(b), {}));
 }
 
+// `hpcontact sweep --shard i/N` on three independent processes (a batch job array) and `--merge`
+// of their folders give the serial alpha.csv and verdicts.csv; a slice resumed after another
+// slice's rows are stored still owns the same groups; a missing slice is refused by name.
+TEST(Cli, ShardedSweepMergesIntoTheSerialCsv) {
+  const auto dir = scratch("sweep_shards");
+  const std::string study = HPCONTACT_SOURCE_DIR "/studies/stability/quick.toml";
+  const std::string env = "env OPENBLAS_NUM_THREADS=1 ";
+  const auto serial = run_command(env + HPCONTACT_CLI " sweep " + study + " --out " + (dir / "serial").string());
+  ASSERT_EQ(serial.exit_code, 0) << serial.output;
+  std::string merge_dirs;
+  int rows = 0;
+  for (int i = 0; i < 3; ++i) {
+    const auto out = dir / ("shard" + std::to_string(i));
+    const auto slice = run_command(env + HPCONTACT_CLI " sweep " + study + " --shard " + std::to_string(i) +
+                                   "/3 --out " + out.string());
+    ASSERT_EQ(slice.exit_code, 0) << slice.output;
+    EXPECT_FALSE(std::filesystem::exists(out / "verdicts.csv"));
+    std::ifstream in(out / "alpha.csv");
+    const std::string text((std::istreambuf_iterator<char>(in)), {});
+    const int lines = static_cast<int>(std::count(text.begin(), text.end(), '\n')) - 1;
+    EXPECT_GT(lines, 0) << "slice " << i << " computed nothing";
+    rows += lines;
+    merge_dirs += " " + out.string();
+  }
+  auto without_seconds = [](const std::filesystem::path& path) {
+    std::ifstream in(path);
+    std::string text, line;
+    while (std::getline(in, line)) text += line.substr(0, line.rfind(',')) + "\n";
+    return text;
+  };
+  const std::string serial_alpha = without_seconds(dir / "serial" / "alpha.csv");
+  EXPECT_EQ(rows + 1, std::count(serial_alpha.begin(), serial_alpha.end(), '\n'));  // disjoint slices
+  // Resuming slice 1 computes nothing more (its groups do not move).
+  const auto again =
+      run_command(env + HPCONTACT_CLI " sweep " + study + " --shard 1/3 --out " + (dir / "shard1").string());
+  ASSERT_EQ(again.exit_code, 0) << again.output;
+  const auto missing = run(" sweep " + study + " --merge " + (dir / "shard0").string() + " " +
+                           (dir / "shard1").string() + " --out " + (dir / "merged").string());
+  EXPECT_EQ(missing.exit_code, 2) << missing.output;
+  EXPECT_NE(missing.output.find("points are in none of them"), std::string::npos) << missing.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "merged" / "alpha.csv"));
+  const auto merged = run(" sweep " + study + " --merge" + merge_dirs + " --out " + (dir / "merged").string());
+  ASSERT_EQ(merged.exit_code, 0) << merged.output;
+  EXPECT_EQ(serial_alpha, without_seconds(dir / "merged" / "alpha.csv"));
+  std::ifstream a(dir / "serial" / "verdicts.csv"), b(dir / "merged" / "verdicts.csv");
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(a), {}), std::string(std::istreambuf_iterator<char>(b), {}));
+  for (const char* bad : {"3/3", "1/0", "-1/2", "a/b", "2"}) {
+    const auto refused = run(" sweep " + study + " --shard " + bad + " --out " + (dir / "bad").string());
+    EXPECT_EQ(refused.exit_code, 2) << bad << ": " << refused.output;
+    EXPECT_NE(refused.output.find("--shard"), std::string::npos) << refused.output;
+  }
+}
+
 // `mpirun -n 2 hpcontact solve` factorizes K and A_G over the ranks (by default substructuring:
 // the cells split by coordinate bisection, CHOLMOD per rank, a dense interface problem; and with
 // MATIS + BDDC on 3 ranks, so that the parts meet at a cross point) and gives the serial run's

@@ -1,5 +1,6 @@
 // `hpcontact sweep STUDY.toml --out DIR`: α over a grid of (problem, norm, p, p_C, n, h/H) into
-// DIR/alpha.csv (resumable), then rate fits and verdicts into DIR/verdicts.csv.
+// DIR/alpha.csv (resumable), then rate fits and verdicts into DIR/verdicts.csv; with --shard i/N
+// one slice of it (a job of an array), with --merge DIR… the slices' rows into one alpha.csv.
 #include <fmt/format.h>
 #include <mpi.h>
 
@@ -29,12 +30,39 @@ void add_sweep_command(CLI::App& app, CommandAction& action) {
       ->capture_default_str();
   auto restart = std::make_shared<bool>(false);
   command->add_flag("--restart", *restart, "Start afresh: replace DIR/alpha.csv instead of resuming it");
-  command->callback([&action, study_file, out_dir, restart] {
-    action = [study_file, out_dir, restart] {
+  auto shard_text = std::make_shared<std::string>();
+  command->add_option("--shard", *shard_text,
+                      "i/N: compute only slice i (0 <= i < N) of the sweep, e.g. one job of a batch array; merge the "
+                      "slices' folders with --merge");
+  auto merge_dirs = std::make_shared<std::vector<std::string>>();
+  command
+      ->add_option("--merge", *merge_dirs,
+                   "Folders of --shard runs: their rows into DIR/alpha.csv (every point must be in one), then "
+                   "the verdicts")
+      ->excludes("--shard")
+      ->excludes("--restart");
+  command->callback([&action, study_file, out_dir, restart, shard_text, merge_dirs] {
+    action = [study_file, out_dir, restart, shard_text, merge_dirs] {
       // 1. Read and check the whole sweep before computing anything.
       const auto sweep = studies::read_stability_sweep(*study_file);
+      const studies::SweepShard shard =
+          shard_text->empty() ? studies::SweepShard{} : studies::parse_sweep_shard(*shard_text, "command line");
       io::ensure_writable_directory(*out_dir);
       const auto alpha_csv = std::filesystem::path(*out_dir) / "alpha.csv";
+      const auto verdicts_csv = std::filesystem::path(*out_dir) / "verdicts.csv";
+      if (!merge_dirs->empty()) {
+        // Merging is quick and serial: rank 0 writes, the others wait for the outcome.
+        run_on_all_ranks_agreeing([&] {
+          if (mpi_rank_and_size().first != 0) return;
+          const studies::FolderLock lock(*out_dir);
+          studies::merge_sweep_shards(sweep, {merge_dirs->begin(), merge_dirs->end()}, alpha_csv);
+          const auto verdicts = studies::fit_verdicts(alpha_csv, sweep.fit_levels);
+          verdicts.write(verdicts_csv);
+          fmt::print("merged {} folders into {} and {} ({} configurations)\n", merge_dirs->size(), alpha_csv.string(),
+                     verdicts_csv.string(), verdicts.n_rows());
+        });
+        return 0;
+      }
       const int rank = mpi_rank_and_size().first, size = mpi_rank_and_size().second;
       // One sweep per folder at a time (rank 0 holds the lock until the process ends).
       std::unique_ptr<studies::FolderLock> lock;
@@ -49,17 +77,27 @@ void add_sweep_command(CLI::App& app, CommandAction& action) {
       // 2. Run, with a progress line on stderr when it is a terminal (rank 0 only under mpirun).
       Stopwatch clock;
       const auto bar = progress_bar(rank == 0);
-      studies::run_stability_sweep(sweep, alpha_csv, [&](int done, int total, const std::string& label) {
-        if (bar) bar(done - 1, total, label);
-      });
+      const bool complete = studies::run_stability_sweep(
+          sweep, alpha_csv,
+          [&](int done, int total, const std::string& label) {
+            if (bar) bar(done - 1, total, label);
+          },
+          shard);
       finish_progress_bar(bar);
-      // 3. Fit rates and write verdicts (rank 0; alpha.csv is complete on every rank here).
+      // 3. Fit rates and write verdicts (rank 0; alpha.csv is complete on every rank here); a
+      // shard's rows wait for --merge.
       if (rank != 0) return 0;
+      if (!complete) {
+        fmt::print(
+            "wrote {} (slice {}/{}, {:.1f} s on {} rank{}); merge the slices with: hpcontact sweep {} --merge "
+            "DIR... --out DIR\n",
+            alpha_csv.string(), shard.index, shard.count, clock.seconds(), size, size > 1 ? "s" : "", *study_file);
+        return 0;
+      }
       const auto verdicts = studies::fit_verdicts(alpha_csv, sweep.fit_levels);
-      verdicts.write(std::filesystem::path(*out_dir) / "verdicts.csv");
+      verdicts.write(verdicts_csv);
       fmt::print("wrote {} and {} ({} configurations, {:.1f} s on {} rank{})\n", alpha_csv.string(),
-                 (std::filesystem::path(*out_dir) / "verdicts.csv").string(), verdicts.n_rows(), clock.seconds(), size,
-                 size > 1 ? "s" : "");
+                 verdicts_csv.string(), verdicts.n_rows(), clock.seconds(), size, size > 1 ? "s" : "");
       return 0;
     };
   });

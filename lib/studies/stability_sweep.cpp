@@ -5,6 +5,7 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -273,13 +274,16 @@ std::string compute_point(const SweepRun& run, const SweepPoint& point, const Gr
 // computed again) and the new ones, always written in the order of the points.
 class AlphaRows {
  public:
-  AlphaRows(const std::vector<SweepPoint>& points, const std::filesystem::path& alpha_csv, bool warn) {
-    std::set<std::string> keys;
+  explicit AlphaRows(const std::vector<SweepPoint>& points) {
     for (std::size_t k = 0; k < points.size(); ++k) {
       index_of_key_[points[k].key()] = k;
-      keys.insert(points[k].key());
+      keys_.insert(points[k].key());
     }
-    rows_ = read_stored_rows(alpha_csv, keys, warn);
+  }
+  /// Adds the valid rows stored in alpha_csv and the per-rank shards beside it; a point already
+  /// held keeps its row.
+  void read(const std::filesystem::path& alpha_csv, bool warn) {
+    rows_.merge(read_stored_rows(alpha_csv, keys_, warn));
   }
   bool has(const std::string& key) const { return rows_.contains(key); }
   std::set<std::string> keys() const {
@@ -299,14 +303,50 @@ class AlphaRows {
   }
 
  private:
+  std::set<std::string> keys_;
   std::map<std::string, std::size_t> index_of_key_;
   std::map<std::string, std::string> rows_;
 };
 
 }  // namespace
 
-void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::path& alpha_csv,
-                         const std::function<void(int, int, const std::string&)>& progress) {
+SweepShard parse_sweep_shard(const std::string& text, const std::string& origin) {
+  const auto slash = text.find('/');
+  int index = -1, count = 0;
+  if (slash != std::string::npos) {
+    const char* end = text.data() + text.size();
+    const auto [after_index, e1] = std::from_chars(text.data(), text.data() + slash, index);
+    const auto [after_count, e2] = std::from_chars(text.data() + slash + 1, end, count);
+    if (e1 != std::errc() || after_index != text.data() + slash || e2 != std::errc() || after_count != end) index = -1;
+  }
+  if (index < 0 || count < 1 || index >= count)
+    throw_bad_input(origin, "--shard", text, "i/N with 0 <= i < N, e.g. 3/16 (job i of an array of N)");
+  return {index, count};
+}
+
+void merge_sweep_shards(const StabilitySweep& sweep, const std::vector<std::filesystem::path>& shards,
+                        const std::filesystem::path& alpha_csv) {
+  const auto points = list_sweep_points(sweep);
+  AlphaRows merged(points);
+  for (const auto& folder : shards) {
+    const auto file = folder / "alpha.csv";
+    if (!std::filesystem::exists(file) && existing_shards(file).empty())
+      throw_bad_input("command line", "--merge", folder.string(), "a folder with an alpha.csv of this sweep");
+    merged.read(file, true);  // a point in two folders keeps the first folder's row
+  }
+  std::vector<std::string> missing;
+  for (const auto& point : points)
+    if (!merged.has(point.key())) missing.push_back(point.key());
+  if (!missing.empty())
+    throw_bad_input("command line", "--merge", fmt::format("{} folder{}", shards.size(), shards.size() > 1 ? "s" : ""),
+                    fmt::format("{} of the {} points are in none of them (e.g. {}): run or resume the shards that "
+                                "own them, then merge again",
+                                missing.size(), points.size(), missing.front()));
+  io::write_file_atomically(alpha_csv, merged.content());
+}
+
+bool run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::path& alpha_csv,
+                         const std::function<void(int, int, const std::string&)>& progress, SweepShard shard) {
   // 1. The points, the rows an earlier run stored, and the plan of what is left.
   const int rank = mpi_rank_and_size().first;
   const int size = mpi_rank_and_size().second;
@@ -317,8 +357,17 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
                infsup::parse_eigen_backend(sweep.eigensolver, sweep.file),
                sweep.degrees.empty() ? 0 : *std::max_element(sweep.degrees.begin(), sweep.degrees.end())};
   run.degrees_used = multiplier_degrees_used(run.points);
-  AlphaRows rows(run.points, alpha_csv, rank == 0);
+  AlphaRows rows(run.points);
+  rows.read(alpha_csv, rank == 0);
   SweepPlan plan = plan_sweep(sweep, run.points, rows.keys());
+  if (shard.count > 1) {
+    // The shard's groups come from the plan of the whole sweep, so they do not move when this
+    // shard (or another) resumes with part of its rows stored.
+    SweepPlan whole = plan_sweep(sweep, run.points, {});
+    schedule_sweep_groups(whole, shard.count);
+    for (std::size_t g = 0; g < plan.groups.size(); ++g)
+      if (whole.groups[g].owner != shard.index) plan.groups[g].todo = false;
+  }
   schedule_sweep_groups(plan, size);
 
   // 2. Every group this rank owns, saved durably when it is finished: an interrupted sweep resumes
@@ -364,9 +413,10 @@ void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
         rows.set(run.points[static_cast<std::size_t>(point_index)].key(), line);
     if (rank == 0) {
       io::write_file_atomically(alpha_csv, rows.content());
-      for (const auto& shard : existing_shards(alpha_csv)) std::filesystem::remove(shard);
+      for (const auto& rank_shard : existing_shards(alpha_csv)) std::filesystem::remove(rank_shard);
     }
   });
+  return std::ranges::all_of(run.points, [&](const SweepPoint& point) { return rows.has(point.key()); });
 }
 
 }  // namespace hpcontact::studies

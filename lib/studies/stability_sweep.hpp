@@ -57,11 +57,27 @@ StabilitySweep read_stability_sweep(const std::string& path);
 /// the smallest p_T and pC the largest p_C (the worst case, as in Π).
 std::vector<std::string> alpha_columns();
 
-/// Runs every point not already in `alpha_csv` (resumable), rewriting the file atomically after
-/// each group of points sharing (level, p). `progress(done, total, label)` is called before each
-/// point. Under mpirun the groups are distributed over the ranks of MPI_COMM_WORLD and rank 0
-/// writes the rows in the serial order (the file is then written once, at the end).
-void run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::path& alpha_csv,
-                         const std::function<void(int, int, const std::string&)>& progress = {});
+/// Slice `index` of `count` of a sweep (`hpcontact sweep --shard index/count`): the groups the
+/// scheduler gives to process `index` of `count` on the whole sweep, the same in every run, so
+/// that the jobs of a batch scheduler's array compute disjoint parts without talking to each other.
+struct SweepShard {
+  int index = 0, count = 1;
+};
+/// "i/N" with 0 ≤ i < N. @throws InputError naming `origin`, the option and the allowed form.
+SweepShard parse_sweep_shard(const std::string& text, const std::string& origin);
+
+/// Runs every point (of `shard`) not already in `alpha_csv` (resumable), rewriting the file
+/// atomically after each group of points sharing (level, p). `progress(done, total, label)` is
+/// called before each point. Under mpirun the groups are distributed over the ranks of
+/// MPI_COMM_WORLD and rank 0 writes the rows in the serial order (the file is then written once,
+/// at the end). Returns whether alpha_csv holds every point of the sweep.
+bool run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::path& alpha_csv,
+                         const std::function<void(int, int, const std::string&)>& progress = {}, SweepShard shard = {});
+
+/// The alpha.csv of every folder in `shards` (and the per-rank shards beside each) into
+/// `alpha_csv`, in the serial order: equal to a serial run's file but for the seconds column.
+/// @throws InputError if a point of the sweep is in none of them (naming how many and a few).
+void merge_sweep_shards(const StabilitySweep& sweep, const std::vector<std::filesystem::path>& shards,
+                        const std::filesystem::path& alpha_csv);
 
 }  // namespace hpcontact::studies
