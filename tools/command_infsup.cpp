@@ -139,7 +139,8 @@ void add_infsup_command(CLI::App& app, CommandAction& action) {
       ->capture_default_str();
   command
       ->add_option("--distributed-solver", o->distributed_solver,
-                   "Under mpirun: substructuring (CHOLMOD per rank, dense interface) | mumps (MPIAIJ + MUMPS) | bddc (MATIS + CG with PCBDDC)")
+                   "Under mpirun: substructuring (CHOLMOD per rank, dense interface) | mumps (MPIAIJ + MUMPS) | bddc "
+                   "(MATIS + CG with PCBDDC)")
       ->capture_default_str();
   command->add_option("--csv", o->csv, "Append one row to this CSV file");
   command->add_option("--mode", o->mode, "Write the spurious mode as CSV x,mu (20 samples/segment)");

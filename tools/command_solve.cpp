@@ -131,7 +131,8 @@ void add_solve_command(CLI::App& app, CommandAction& action) {
                       "Override the scene's constraint points per segment (Remark 3; >= p_C + 1)");
   command
       ->add_option("--distributed-solver", o->distributed_solver,
-                   "Under mpirun: substructuring (CHOLMOD per rank, dense interface) | mumps (MPIAIJ + MUMPS) | bddc (MATIS + CG with PCBDDC)")
+                   "Under mpirun: substructuring (CHOLMOD per rank, dense interface) | mumps (MPIAIJ + MUMPS) | bddc "
+                   "(MATIS + CG with PCBDDC)")
       ->capture_default_str();
   command->callback([&action, o] { action = [o] { return run_solve(*o); }; });
 }

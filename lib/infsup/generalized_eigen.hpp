@@ -59,9 +59,9 @@ namespace hpcontact::infsup {
 /// Checks the PETSc/SLEPc options of the command line (`arguments`: names and values as split off
 /// by split_petsc_options, program name first) before any work: every name must be one that the
 /// toolkit reads (`options_prefix`, a few global PETSc options: -help, -info, -log_view,
-/// -options_left, -malloc_*, -on_error_*, -mat_mumps_*; -bddc_* of linalg/bddc_solver.hpp), and the eigensolvers' values are set on
-/// blank EPS objects. @throws InputError naming the option (for an unprefixed one, the prefixed
-/// name).
+/// -options_left, -malloc_*, -on_error_*, -mat_mumps_*; -bddc_* of linalg/bddc_solver.hpp), and
+/// the eigensolvers' values are set on blank EPS objects. @throws InputError naming the option
+/// (for an unprefixed one, the prefixed name).
 void check_petsc_options(const std::vector<std::string>& arguments, const std::string& options_prefix = "infsup_");
 
 }  // namespace hpcontact::infsup
