@@ -283,6 +283,18 @@ TEST(Cli, WorkPrecisionFitsTheReferenceAndEstimatesItsAccuracy) {
   EXPECT_FALSE(std::filesystem::exists(dir / "bad"));
 }
 
+namespace {
+
+// A sweep's alpha.csv without its last column (seconds), for comparing runs.
+std::string without_seconds(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::string text, line;
+  while (std::getline(in, line)) text += line.substr(0, line.rfind(',')) + "\n";
+  return text;
+}
+
+}  // namespace
+
 // `mpirun -n 2 hpcontact sweep` distributes the (n, p) groups over the ranks and writes the same
 // alpha.csv and verdicts.csv as a serial run (compared without the timing column). Both runs use
 // one BLAS thread per process, so that every floating-point operation is the same.
@@ -301,12 +313,6 @@ TEST(Cli, SweepUnderMpirunWritesTheSerialCsv) {
                                     (dir / "sweep.toml").string() + " --out " + (dir / "parallel").string());
   ASSERT_EQ(parallel.exit_code, 0) << parallel.output;
   EXPECT_NE(parallel.output.find("on 2 ranks"), std::string::npos) << parallel.output;
-  auto without_seconds = [](const std::filesystem::path& path) {
-    std::ifstream in(path);
-    std::string text, line;
-    while (std::getline(in, line)) text += line.substr(0, line.rfind(',')) + "\n";
-    return text;
-  };
   const std::string serial_alpha = without_seconds(dir / "serial" / "alpha.csv");
   EXPECT_EQ(std::count(serial_alpha.begin(), serial_alpha.end(), '\n'), 1 + 2 * 2 * 6 * 3 * 2);
   EXPECT_EQ(serial_alpha, without_seconds(dir / "parallel" / "alpha.csv"));
@@ -338,12 +344,6 @@ TEST(Cli, ShardedSweepMergesIntoTheSerialCsv) {
     rows += lines;
     merge_dirs += " " + out.string();
   }
-  auto without_seconds = [](const std::filesystem::path& path) {
-    std::ifstream in(path);
-    std::string text, line;
-    while (std::getline(in, line)) text += line.substr(0, line.rfind(',')) + "\n";
-    return text;
-  };
   const std::string serial_alpha = without_seconds(dir / "serial" / "alpha.csv");
   EXPECT_EQ(rows + 1, std::count(serial_alpha.begin(), serial_alpha.end(), '\n'));  // disjoint slices
   // Resuming slice 1 computes nothing more (its groups do not move).

@@ -130,15 +130,16 @@ std::vector<ElasticEffect> solve_elastic_effects(const scene::Scene& scene, cons
   return effects;
 }
 
-// The convergence effect: the scene's elastic problems on `convergence_refinements` uniform
-// refinements beyond its own mesh, each level with its own operators; errors of the energy and
-// of the pressure (L²(Γ_C)) against the finest level.
-// With output "vtu" every level's displacement goes into `files` with one PVD per problem.
+// solution_<effect>.vtu: the displacement u0 + the Dirichlet lift and its von Mises stress.
 std::string elastic_solution_vtu(const ElasticEffect& effect, const operators::ElasticOperators& operators) {
   const auto u = assembly::total_field(effect.solution.lift.get(), operators.vector_space(), effect.solution.u);
   return io::elastic_vtu_text(u.space, operators.materials(), u.coefficients);
 }
 
+// The convergence effect: the scene's elastic problems on `convergence_refinements` uniform
+// refinements beyond its own mesh, each level with its own operators; errors of the energy and
+// of the pressure (L²(Γ_C)) against the finest level. With output "vtu" every level's
+// displacement goes into `files` with one PVD per problem.
 io::CsvTable elastic_convergence(const scene::Scene& scene, const SceneDiscretization& base_mesh,
                                  const operators::ElasticOperators& base_operators,
                                  const std::vector<ElasticEffect>& base, const SceneRunOptions& options,

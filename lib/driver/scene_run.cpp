@@ -87,9 +87,6 @@ std::vector<ContactEffect> solve_contact_effects(const scene::Scene& scene, cons
   return effects;
 }
 
-// The convergence effect: the scene's contact problems on `convergence_refinements` uniform
-// refinements beyond its own mesh, each level with its own operators shared by its problems; the
-// finest level is the reference for the errors of the others.
 // solution_<problem>.vtu: u = u0 + the Dirichlet lift on Ω.
 std::string solution_vtu(const ContactEffect& effect, const operators::PrimalOperators& primal) {
   const auto u = assembly::total_field(effect.solution.lift.get(), primal.space(), effect.solution.u);
@@ -105,6 +102,9 @@ void add_level_solutions(const scene::Scene& scene, const std::vector<ContactEff
     files.push_back({level_vtu_name(effect.problem, level), solution_vtu(effect, primal)});
 }
 
+// The convergence effect: the scene's contact problems on `convergence_refinements` uniform
+// refinements beyond its own mesh, each level with its own operators shared by its problems; the
+// finest level is the reference for the errors of the others.
 void add_convergence_rows(const scene::Scene& scene, const std::vector<ContactEffect>& base,
                           const SceneDiscretization& base_mesh, const operators::PrimalOperators& base_primal,
                           const SceneRunOptions& options, OperatorLog& log, io::CsvTable& table,
