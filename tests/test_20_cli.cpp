@@ -346,10 +346,17 @@ TEST(Cli, ShardedSweepMergesIntoTheSerialCsv) {
   }
   const std::string serial_alpha = without_seconds(dir / "serial" / "alpha.csv");
   EXPECT_EQ(rows + 1, std::count(serial_alpha.begin(), serial_alpha.end(), '\n'));  // disjoint slices
-  // Resuming slice 1 computes nothing more (its groups do not move).
+  // Resuming slice 1 computes nothing more (its groups do not move): its file stays byte for byte,
+  // seconds included.
+  auto text_of = [](const std::filesystem::path& path) {
+    std::ifstream in(path);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  const std::string slice1 = text_of(dir / "shard1" / "alpha.csv");
   const auto again =
       run_command(env + HPCONTACT_CLI " sweep " + study + " --shard 1/3 --out " + (dir / "shard1").string());
   ASSERT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_EQ(text_of(dir / "shard1" / "alpha.csv"), slice1);
   const auto missing = run(" sweep " + study + " --merge " + (dir / "shard0").string() + " " +
                            (dir / "shard1").string() + " --out " + (dir / "merged").string());
   EXPECT_EQ(missing.exit_code, 2) << missing.output;
@@ -360,6 +367,18 @@ TEST(Cli, ShardedSweepMergesIntoTheSerialCsv) {
   EXPECT_EQ(serial_alpha, without_seconds(dir / "merged" / "alpha.csv"));
   std::ifstream a(dir / "serial" / "verdicts.csv"), b(dir / "merged" / "verdicts.csv");
   EXPECT_EQ(std::string(std::istreambuf_iterator<char>(a), {}), std::string(std::istreambuf_iterator<char>(b), {}));
+  // A folder repeating slice 0's points with other numbers: the first folder's rows are kept, with a
+  // warning naming one such point.
+  std::filesystem::create_directories(dir / "conflict");
+  std::string conflicting = text_of(dir / "shard0" / "alpha.csv");
+  const auto first_row_end = conflicting.find('\n', conflicting.find('\n') + 1);
+  conflicting.insert(conflicting.rfind(',', first_row_end), "9");  // nmult of the first row, one digit more
+  std::ofstream(dir / "conflict" / "alpha.csv") << conflicting;
+  const auto remerged = run(" sweep " + study + " --merge" + merge_dirs + " " + (dir / "conflict").string() +
+                            " --out " + (dir / "remerged").string());
+  ASSERT_EQ(remerged.exit_code, 0) << remerged.output;
+  EXPECT_NE(remerged.output.find("with other numbers"), std::string::npos) << remerged.output;
+  EXPECT_EQ(serial_alpha, without_seconds(dir / "remerged" / "alpha.csv"));
   for (const char* bad : {"3/3", "1/0", "-1/2", "a/b", "2"}) {
     const auto refused = run(" sweep " + study + " --shard " + bad + " --out " + (dir / "bad").string());
     EXPECT_EQ(refused.exit_code, 2) << bad << ": " << refused.output;

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 #include <thread>
+#include <vector>
 
 #include "cli_runner.hpp"
 #include "studies/sweep_rows.hpp"
@@ -93,6 +94,32 @@ TEST(Faults, FullDiskUnderMpirunEndsEveryRank) {
   ASSERT_NE(first, std::string::npos) << result.output;
   EXPECT_EQ(result.output.find("hpcontact: I/O failure", first + 1), std::string::npos) << result.output;
   EXPECT_FALSE(has_temporary_files(disk.path));
+}
+
+// Under mpirun, a failure every rank raises alike (bad input, a refusal, a bad command line) is
+// printed once by rank 0 and ends every rank with exit 2, without aborting the job.
+TEST(Faults, FailuresOfEveryRankAreReportedOnceUnderMpirun) {
+  const auto dir = scratch("faults_mpi_alike");
+  std::ofstream(dir / "bad.toml") << "[domain]\nn_x = -3\n";
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {"solve " + (dir / "bad.toml").string(), "key 'domain.n_x' = -3"},
+      {"sweep " HPCONTACT_SOURCE_DIR "/studies/stability/quick.toml --shard 5/3 --out " + (dir / "s").string(),
+       "key '--shard' = 5/3"},
+      {"solve " HPCONTACT_SOURCE_DIR "/studies/elasticity/square.toml --out " + (dir / "e").string(),
+       "elastic effects run on one process"},
+      {"solve " + (dir / "missing.toml").string(), "File does not exist"}};
+  for (const auto& [arguments, message] : cases) {
+    const auto start = std::chrono::steady_clock::now();
+    const auto result = run_command(kMpi + "timeout 120 mpirun -n 3 --oversubscribe " HPCONTACT_CLI " " + arguments);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_EQ(result.exit_code, 2) << arguments << "\n" << result.output;
+    EXPECT_LT(seconds, 30.0) << arguments;
+    const auto first = result.output.find(message);
+    ASSERT_NE(first, std::string::npos) << arguments << "\n" << result.output;
+    EXPECT_EQ(result.output.find(message, first + 1), std::string::npos) << "printed once: " << result.output;
+    EXPECT_EQ(result.output.find("on rank"), std::string::npos) << result.output;
+    EXPECT_EQ(result.output.find("MPI_ABORT"), std::string::npos) << result.output;
+  }
 }
 
 // SIGINT during a run: exit 130 and no temporary file (finished files are whole).

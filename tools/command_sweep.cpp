@@ -32,8 +32,8 @@ void add_sweep_command(CLI::App& app, CommandAction& action) {
   command->add_flag("--restart", *restart, "Start afresh: replace DIR/alpha.csv instead of resuming it");
   auto shard_text = std::make_shared<std::string>();
   command->add_option("--shard", *shard_text,
-                      "i/N: compute only slice i (0 <= i < N) of the sweep, e.g. one job of a batch array; merge the "
-                      "slices' folders with --merge");
+                      "i/N: compute only slice i (0 <= i < N) of the sweep, e.g. one job of a batch array, each slice "
+                      "with its own --out folder; merge the slices' folders with --merge");
   auto merge_dirs = std::make_shared<std::vector<std::string>>();
   command
       ->add_option("--merge", *merge_dirs,

@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <memory>
+#include <sstream>
 
 #include "commands.hpp"
 #include "core/error.hpp"
@@ -17,14 +18,17 @@
 
 namespace {
 
-// The message for an exit code, printed once: by every rank for a failure of its own, by rank 0
-// alone for one that all ranks agreed on. A failure of one rank that the others did not agree on
-// (an error inside a library's collective operation, e.g. a local solver of PCBDDC) may leave them
-// waiting in a collective call: under mpirun it aborts the whole job, so that no rank hangs.
+// The message for an exit code, printed once: by rank 0 alone for a failure every rank raised
+// (agreed inside the work, or met on the failure channel within a few seconds: bad input, a
+// refusal, a collective solve that failed), else by the failing rank. A failure of one rank alone
+// (an error inside a library's collective operation, e.g. a local solver of PCBDDC) may leave the
+// others waiting in a collective call: under mpirun it aborts the whole job, so that no rank hangs.
 int report(const std::exception& error) {
   using namespace hpcontact;
   const int code = exit_code_of(error);
   const auto [rank, ranks] = mpi_rank_and_size();
+  constexpr double kPatience = 10.0;  // seconds between the first and last rank failing alike
+  if (ranks > 1 && !failure_agreed()) every_rank_fails_within(kPatience);
   if (failure_agreed() && rank != 0) return code;
   const char* kind = code == 2   ? "error"
                      : code == 3 ? "numerical failure"
@@ -71,7 +75,10 @@ int main(int argc, char** argv) {
   try {
     app.parse(arguments);
   } catch (const CLI::ParseError& error) {
-    const int code = app.exit(error);
+    // Under a launcher every rank parses the same line: rank 0 alone prints (MPI is not up yet,
+    // so the launcher's rank variable tells).
+    std::ostringstream discarded;
+    const int code = launcher_rank() == 0 ? app.exit(error) : app.exit(error, discarded, discarded);
     return code == 0 ? 0 : 2;
   }
 
@@ -83,6 +90,7 @@ int main(int argc, char** argv) {
   try {
     const bool eager = launched_by_mpi_launcher() || command_line.petsc.size() > 1;
     session = std::make_unique<PetscSession>(command_line.petsc, eager);
+    open_failure_channel();
   } catch (const std::exception& error) {
     return report(error);
   }

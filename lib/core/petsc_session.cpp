@@ -89,6 +89,12 @@ bool launched_by_mpi_launcher() {
   return false;
 }
 
+int launcher_rank() {
+  for (const char* variable : {"OMPI_COMM_WORLD_RANK", "PMIX_RANK", "PMI_RANK"})
+    if (const char* value = std::getenv(variable)) return std::atoi(value);
+  return 0;
+}
+
 std::pair<int, int> mpi_rank_and_size() {
   int initialized = 0, finalized = 0;
   MPI_Initialized(&initialized);

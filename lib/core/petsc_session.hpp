@@ -47,6 +47,9 @@ bool ensure_petsc_initialized();
 /// PMI/PMIx): then MPI must start at once, since the other ranks wait for it.
 bool launched_by_mpi_launcher();
 
+/// This process's rank as the launcher's environment gives it (before MPI is up); 0 without one.
+int launcher_rank();
+
 /// (rank, size) in MPI_COMM_WORLD; (0, 1) when MPI is not initialized (unit tests, libraries).
 std::pair<int, int> mpi_rank_and_size();
 

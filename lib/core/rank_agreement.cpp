@@ -1,12 +1,16 @@
 // run_on_all_ranks_agreeing: a MAX reduction of the exit codes, then the lowest failing rank's
-// message broadcast to all.
+// message broadcast to all; and the failure channel, a communicator of its own on which failing
+// ranks meet in a non-blocking barrier, so that it cannot be confused with a collective call of the
+// work in progress.
 #include "core/rank_agreement.hpp"
 
 #include <mpi.h>
 
+#include <chrono>
 #include <exception>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 #include "core/error.hpp"
 #include "core/petsc_session.hpp"
@@ -14,9 +18,32 @@
 namespace hpcontact {
 namespace {
 bool agreed = false;
+MPI_Comm failure_channel = MPI_COMM_NULL;
 }  // namespace
 
 bool failure_agreed() { return agreed; }
+
+void open_failure_channel() {
+  if (failure_channel != MPI_COMM_NULL || mpi_rank_and_size().second == 1) return;
+  MPI_Comm_dup(MPI_COMM_WORLD, &failure_channel);
+}
+
+bool every_rank_fails_within(double seconds) {
+  if (failure_channel == MPI_COMM_NULL) return false;
+  MPI_Request request = MPI_REQUEST_NULL;
+  MPI_Ibarrier(failure_channel, &request);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  int done = 0;
+  for (;;) {
+    MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+    if (done) {
+      agreed = true;
+      return true;
+    }
+    if (std::chrono::steady_clock::now() > deadline) return false;  // the job is aborted next
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+}
 
 void run_on_all_ranks_agreeing(const std::function<void()>& work) {
   const int rank = mpi_rank_and_size().first, size = mpi_rank_and_size().second;

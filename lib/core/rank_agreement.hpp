@@ -16,4 +16,14 @@ void run_on_all_ranks_agreeing(const std::function<void()>& work);
 /// rank 0 alone reports it.
 bool failure_agreed();
 
+/// Opens the channel on which failing ranks look for each other (collective, once, after MPI is up
+/// under a launcher; a no-op on one rank).
+void open_failure_channel();
+
+/// Whether every rank reports a failure within `seconds` of this rank's: a failure all ranks raise
+/// alike (bad input read by each, a collective solve that did not converge) is then reported once
+/// and ends every rank cleanly, while a failure of one rank alone (the others may wait in a
+/// collective call) is not. Called by failing ranks only; false without an open channel.
+bool every_rank_fails_within(double seconds);
+
 }  // namespace hpcontact

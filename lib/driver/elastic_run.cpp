@@ -177,11 +177,11 @@ io::CsvTable elastic_convergence(const scene::Scene& scene, const SceneDiscretiz
            contact::multiplier_l2_distance(*d.multipliers, effect.solution.pressure, *finest.d->multipliers,
                                            reference.pressure),
            effect.seconds, scene.p.label(), scene.pc.label()});
-      if (scene.wants_output(scene::Output::vtu))
+      if (scene.wants_output(scene::Output::vtu) && options.write_files)
         files.push_back({level_vtu_name(effect.name, static_cast<int>(k)),
                          elastic_solution_vtu(effect, k == 0 ? base_operators : *levels[k].operators)});
     }
-  if (scene.wants_output(scene::Output::vtu))
+  if (scene.wants_output(scene::Output::vtu) && options.write_files)
     for (const auto& effect : base) files.push_back(level_collection(effect.name, scene.convergence_refinements));
   return table;
 }

@@ -93,11 +93,18 @@ std::string solution_vtu(const ContactEffect& effect, const operators::PrimalOpe
   return io::solution_vtu_text(u.space, u.coefficients);
 }
 
+// Whether this process writes the convergence levels' VTU files: output "vtu", files wanted, rank 0
+// (the text of a fine level is large; no other rank builds it).
+bool writes_level_files(const scene::Scene& scene, const SceneRunOptions& options) {
+  return scene.wants_output(scene::Output::vtu) && options.write_files && mpi_rank_and_size().first == 0;
+}
+
 // With output "vtu": every level's u as solution_<problem>_level<k>.vtu and one PVD per problem
 // (the level as ParaView's time), so the refinement sequence plays as an animation.
 void add_level_solutions(const scene::Scene& scene, const std::vector<ContactEffect>& effects,
-                         const operators::PrimalOperators& primal, int level, std::vector<OutputText>& files) {
-  if (!scene.wants_output(scene::Output::vtu)) return;
+                         const operators::PrimalOperators& primal, const SceneRunOptions& options, int level,
+                         std::vector<OutputText>& files) {
+  if (!writes_level_files(scene, options)) return;
   for (const auto& effect : effects)
     files.push_back({level_vtu_name(effect.problem, level), solution_vtu(effect, primal)});
 }
@@ -116,7 +123,7 @@ void add_convergence_rows(const scene::Scene& scene, const std::vector<ContactEf
   std::vector<Level> levels{{&base_mesh, &base}};
   std::vector<std::unique_ptr<SceneDiscretization>> refined_meshes;
   std::vector<std::unique_ptr<std::vector<ContactEffect>>> refined_effects;
-  add_level_solutions(scene, base, base_primal, 0, files);
+  add_level_solutions(scene, base, base_primal, options, 0, files);
   for (int k = 1; k <= scene.convergence_refinements; ++k) {
     scene::Scene refined = scene;
     refined.refinements += k;
@@ -125,7 +132,7 @@ void add_convergence_rows(const scene::Scene& scene, const std::vector<ContactEf
     const operators::PrimalOperators primal(d->mesh, d->cell_degrees, &level_log, options.distribution);
     refined_effects.push_back(std::make_unique<std::vector<ContactEffect>>(
         solve_contact_effects(refined, *d, primal, options, fmt::format(" (convergence level {})", k))));
-    add_level_solutions(scene, *refined_effects.back(), primal, k, files);
+    add_level_solutions(scene, *refined_effects.back(), primal, options, k, files);
     for (const auto& record : level_log.records())
       log.record(fmt::format("{} (convergence level {})", record.name, k), record.rows, record.cols, record.seconds);
     levels.push_back({d.get(), refined_effects.back().get()});
@@ -147,7 +154,7 @@ void add_convergence_rows(const scene::Scene& scene, const std::vector<ContactEf
                                            multiplier_error_weight(scene, *finest.discretization, effect.kind)),
            effect.seconds, scene.p.label(), scene.pc.label()});
     }
-  if (scene.wants_output(scene::Output::vtu))
+  if (writes_level_files(scene, options))
     for (const auto& effect : base) files.push_back(level_collection(effect.problem, scene.convergence_refinements));
 }
 

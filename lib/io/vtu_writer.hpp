@@ -32,7 +32,7 @@ std::string vtu_text(const space::H1Space& space, const std::vector<VtuField>& f
 std::string solution_vtu_text(const space::H1Space& space, const Eigen::VectorXd& u);
 
 /// A displacement of [S^p(T_h)]² as the vector field "displacement" and the von Mises stress
-/// "von_mises" (with σ_zz of the plane model).
+/// "von_mises" (with σ_zz of the plane model; averaged over the cells meeting at a point).
 std::string elastic_vtu_text(const space::VectorSpace& space, const std::vector<assembly::Material>& materials,
                              const Eigen::VectorXd& u);
 

@@ -101,10 +101,11 @@ void solve_column(KSP ksp, Mat a, const double* rhs_column, PetscInt row_begin, 
   HPC_PETSC_CALL(KSPGetConvergedReason(ksp, &reason));
   PetscInt iterations = 0;
   HPC_PETSC_CALL(KSPGetIterationNumber(ksp, &iterations));
-  if (reason < 0) {
-    // Near round-off CG may stop on a tiny negative (z, r) of the preconditioner (not exactly
-    // symmetric in floating point) after the iterate is already converged: judge the answer by its
-    // true residual.
+  const bool round_off_stop = reason == KSP_DIVERGED_INDEFINITE_PC || reason == KSP_DIVERGED_BREAKDOWN;
+  if (round_off_stop) {
+    // Near round-off CG may stop on a tiny negative or zero (z, r) of the preconditioner (not
+    // exactly symmetric in floating point) after the iterate is already converged: judge the answer
+    // by its true residual. Other stops (iteration limit, divergence) are failures as they are.
     PetscHandle<Vec, VecDestroy> residual;
     HPC_PETSC_CALL(VecDuplicate(b.get(), residual.out()));
     HPC_PETSC_CALL(MatMult(a, x.get(), residual.get()));
@@ -113,7 +114,10 @@ void solve_column(KSP ksp, Mat a, const double* rhs_column, PetscInt row_begin, 
     HPC_PETSC_CALL(VecNorm(residual.get(), NORM_2, &residual_norm));
     HPC_PETSC_CALL(VecNorm(b.get(), NORM_2, &rhs_norm));
     HPC_PETSC_CALL(KSPGetTolerances(ksp, &rtol, nullptr, nullptr, nullptr));
-    if (residual_norm <= 100 * rtol * rhs_norm) reason = KSP_CONVERGED_RTOL;
+    if (residual_norm <= 100 * rtol * rhs_norm) {
+      reason = KSP_CONVERGED_RTOL;
+      ++count.round_off_stops;
+    }
   }
   if (reason < 0) {
     const bool indefinite = reason == KSP_DIVERGED_INDEFINITE_PC || reason == KSP_DIVERGED_INDEFINITE_MAT;

@@ -14,17 +14,20 @@
 
 namespace hpcontact::linalg {
 
-/// Iterations of the conjugate gradients over all solves of one BddcSolver.
+/// Iterations of the conjugate gradients over all solves of one BddcSolver. `round_off_stops`:
+/// solves where CG stopped on an indefinite preconditioner or a breakdown at round-off and the true
+/// residual ‖b − A x‖ met 100 × the relative tolerance, so the answer was kept.
 struct BddcIterations {
-  long solves = 0, total = 0;
+  long solves = 0, total = 0, round_off_stops = 0;
   int largest = 0;
 };
 
 class BddcSolver {
  public:
   /// `lower_entries`: this rank's contributions (row ≥ col) to the lower triangle of the n × n
-  /// matrix, summed where they meet. `relative_tolerance`: of the preconditioned residual (1e-12
-  /// gives the serial results to about 1e-12; round-off stalls CG near 1e-14 on these systems).
+  /// matrix, summed where they meet. `relative_tolerance`: of the preconditioned residual (with
+  /// 1e-12 the energies and α of the §7 runs equal the serial ones to about 1e-14, the solves
+  /// CHOLMOD's to 1e-13; round-off stalls CG near 1e-14 on these systems, so do not ask for less).
   /// PETSc options with the prefix "bddc_" (e.g. -bddc_ksp_monitor, -bddc_ksp_rtol 1e-10)
   /// adjust the solver. Collective on PETSC_COMM_WORLD.
   BddcSolver(int n, const std::vector<Eigen::Triplet<double>>& lower_entries, double relative_tolerance = 1e-12);

@@ -270,6 +270,9 @@ std::string compute_point(const SweepRun& run, const SweepPoint& point, const Gr
   return text.substr(text.find('\n') + 1);
 }
 
+// A row of alpha.csv without its last column (the seconds, which differ between runs).
+std::string without_seconds(const std::string& line) { return line.substr(0, line.rfind(',')); }
+
 // The rows of alpha.csv: those stored by an earlier run (validated: bad or foreign rows are
 // computed again) and the new ones, always written in the order of the points.
 class AlphaRows {
@@ -284,6 +287,16 @@ class AlphaRows {
   /// held keeps its row.
   void read(const std::filesystem::path& alpha_csv, bool warn) {
     rows_.merge(read_stored_rows(alpha_csv, keys_, warn));
+  }
+  /// Adds the rows of one slice's folder; returns the keys it holds that an earlier folder already
+  /// gave with other numbers (all columns but the seconds), which keep the earlier row.
+  std::vector<std::string> merge_slice(const std::filesystem::path& alpha_csv) {
+    std::vector<std::string> conflicts;
+    for (auto& [key, line] : read_stored_rows(alpha_csv, keys_, true, StoredRowsUse::merge)) {
+      const auto [held, inserted] = rows_.emplace(key, line);
+      if (!inserted && without_seconds(held->second) != without_seconds(line)) conflicts.push_back(key);
+    }
+    return conflicts;
   }
   bool has(const std::string& key) const { return rows_.contains(key); }
   std::set<std::string> keys() const {
@@ -332,15 +345,20 @@ void merge_sweep_shards(const StabilitySweep& sweep, const std::vector<std::file
     const auto file = folder / "alpha.csv";
     if (!std::filesystem::exists(file) && existing_shards(file).empty())
       throw_bad_input("command line", "--merge", folder.string(), "a folder with an alpha.csv of this sweep");
-    merged.read(file, true);  // a point in two folders keeps the first folder's row
+    const auto conflicts = merged.merge_slice(file);
+    if (!conflicts.empty())
+      fmt::print(stderr,
+                 "hpcontact: warning: {} has {} point{} that an earlier folder gives with other numbers (e.g. {}); "
+                 "the earlier folder's rows are kept\n",
+                 folder.string(), conflicts.size(), conflicts.size() > 1 ? "s" : "", conflicts.front());
   }
   std::vector<std::string> missing;
   for (const auto& point : points)
     if (!merged.has(point.key())) missing.push_back(point.key());
   if (!missing.empty())
     throw_bad_input("command line", "--merge", fmt::format("{} folder{}", shards.size(), shards.size() > 1 ? "s" : ""),
-                    fmt::format("{} of the {} points are in none of them (e.g. {}): run or resume the shards that "
-                                "own them, then merge again",
+                    fmt::format("{} of the {} points are in none of them (e.g. {}): run or resume the slices (--shard "
+                                "i/N) that own them, then merge again",
                                 missing.size(), points.size(), missing.front()));
   io::write_file_atomically(alpha_csv, merged.content());
 }

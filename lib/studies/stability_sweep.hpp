@@ -75,8 +75,9 @@ bool run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
                          const std::function<void(int, int, const std::string&)>& progress = {}, SweepShard shard = {});
 
 /// The alpha.csv of every folder in `shards` (and the per-rank shards beside each) into
-/// `alpha_csv`, in the serial order: equal to a serial run's file but for the seconds column.
-/// @throws InputError if a point of the sweep is in none of them (naming how many and a few).
+/// `alpha_csv`, in the serial order: equal to a serial run's file but for the seconds column. A
+/// point in two folders keeps the first folder's row (a warning names points whose numbers differ).
+/// @throws InputError if a point of the sweep is in none of them (naming how many and one).
 void merge_sweep_shards(const StabilitySweep& sweep, const std::vector<std::filesystem::path>& shards,
                         const std::filesystem::path& alpha_csv);
 

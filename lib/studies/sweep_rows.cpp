@@ -58,7 +58,7 @@ std::string key_of_row(const std::vector<std::string>& header, const std::vector
 }
 
 void read_rows(const std::filesystem::path& file, bool with_header, const std::set<std::string>& keys,
-               std::map<std::string, std::string>& rows, std::vector<std::string>& dropped) {
+               StoredRowsUse use, std::map<std::string, std::string>& rows, std::vector<std::string>& dropped) {
   std::ifstream in(file);
   if (!in) return;
   const std::vector<std::string> header = alpha_columns();
@@ -69,7 +69,9 @@ void read_rows(const std::filesystem::path& file, bool with_header, const std::s
     ++number;
     if (split(line) != header)
       throw InputError("'" + file.string() + "' is not an alpha.csv written by this version of hpcontact sweep " +
-                       "(other columns): choose another --out folder, or --restart");
+                       (use == StoredRowsUse::resume
+                            ? "(other columns): choose another --out folder, or --restart"
+                            : "(other columns): merge only the folders of this sweep's slices"));
   }
   while (std::getline(in, line)) {
     ++number;
@@ -110,19 +112,20 @@ std::vector<std::filesystem::path> existing_shards(const std::filesystem::path& 
 }
 
 std::map<std::string, std::string> read_stored_rows(const std::filesystem::path& alpha_csv,
-                                                    const std::set<std::string>& keys, bool warn) {
+                                                    const std::set<std::string>& keys, bool warn, StoredRowsUse use) {
   std::map<std::string, std::string> rows;
   std::vector<std::string> dropped;
-  read_rows(alpha_csv, true, keys, rows, dropped);
-  for (const auto& shard : existing_shards(alpha_csv)) read_rows(shard, false, keys, rows, dropped);
+  read_rows(alpha_csv, true, keys, use, rows, dropped);
+  for (const auto& shard : existing_shards(alpha_csv)) read_rows(shard, false, keys, use, rows, dropped);
   if (warn && !dropped.empty()) {
     std::string list;
     for (std::size_t k = 0; k < dropped.size() && k < 10; ++k) list += (k ? ", " : "") + dropped[k];
     if (dropped.size() > 10) list += fmt::format(" and {} more", dropped.size() - 10);
     fmt::print(stderr,
-               "hpcontact: warning: {} stored row{} of {} will be computed again (torn, incomplete or "
-               "unparsable): {}\n",
-               dropped.size(), dropped.size() > 1 ? "s" : "", alpha_csv.string(), list);
+               "hpcontact: warning: {} stored row{} of {} {} (torn, incomplete, unparsable or not of this "
+               "sweep): {}\n",
+               dropped.size(), dropped.size() > 1 ? "s" : "", alpha_csv.string(),
+               use == StoredRowsUse::resume ? "will be computed again" : "are left out of the merge", list);
   }
   return rows;
 }

@@ -14,13 +14,18 @@ namespace hpcontact::studies {
 /// Identifies a point for resuming: the ratio through m, degrees as reported.
 std::string point_key(const std::string& problem, const std::string& norm, int p, int pc, int level, long m);
 
+/// Why stored rows are read: to resume a sweep in its folder, or to merge the folders of its slices.
+/// The messages differ (a dropped row is computed again, or left out of the merge).
+enum class StoredRowsUse { resume, merge };
+
 /// The rows stored for a sweep, key → CSV line (ending in '\n'), from alpha.csv and every shard
 /// beside it. A row is kept only if it has every column, every numeric column parses completely,
 /// and its key is one of `keys` (a point of the study); the others are dropped with one warning on
-/// stderr naming the file and line, so that they are computed again.
+/// stderr (when `warn`) naming the file and line.
 /// @throws InputError if alpha.csv has other columns (another program's or version's file).
 std::map<std::string, std::string> read_stored_rows(const std::filesystem::path& alpha_csv,
-                                                    const std::set<std::string>& keys, bool warn);
+                                                    const std::set<std::string>& keys, bool warn,
+                                                    StoredRowsUse use = StoredRowsUse::resume);
 
 /// The shard of `rank` beside alpha.csv, and all shards present (of any earlier run).
 std::filesystem::path shard_path(const std::filesystem::path& alpha_csv, int rank);
