@@ -82,8 +82,9 @@ int run(const std::string& solver, const std::string& split, bool indefinite) {
     solution = factor.solve(rhs), schur = factor.schur_complement(b), schur_out = factor.schur_complement(b_out);
     interface = factor.interface_size();
   } else if (solver == "mumps") {
-    const linalg::DistributedCholesky factor(n, mine);
+    const linalg::DistributedCholesky factor(n, mine, trailing);
     solution = factor.solve(rhs), schur = factor.schur_complement(b), schur_out = factor.schur_complement(b_out);
+    interface = factor.trailing_size();  // the Schur complement MUMPS returned
   } else if (solver == "bddc") {
     const linalg::BddcSolver factor(n, mine);
     solution = factor.solve(rhs), schur = factor.schur_complement(b), schur_out = factor.schur_complement(b_out);

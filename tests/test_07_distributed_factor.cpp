@@ -42,6 +42,9 @@ TEST(DistributedFactor, SubstructuringMumpsAndBddcEqualCholmodOnEverySplit) {
         if (std::string(solver) == "bddc") {
           EXPECT_LT(number_after(run.output, "iterations_largest"), std::string(split) == "strips" ? 15 : 60) << where;
         }
+        if (std::string(solver) == "mumps") {
+          EXPECT_EQ(number_after(run.output, "interface"), 24) << where << ": S_T from MUMPS's Schur interface";
+        }
         if (std::string(solver) == "substructuring") {
           // The interface: the trailing row (24) alone on one rank; with strips, plus the nodes
           // between strips and the top nodes rank 0 shares; scattered, nearly every node.

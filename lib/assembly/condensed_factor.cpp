@@ -75,7 +75,7 @@ CondensedFactor::CondensedFactor(std::unique_ptr<const CellSystem> system, const
       substructured_ = std::make_unique<linalg::SubstructuredCholesky>(n_skeleton, lower, trailing);
       break;
     case linalg::Distribution::mumps:
-      mumps_ = std::make_unique<linalg::DistributedCholesky>(n_skeleton, lower);
+      mumps_ = std::make_unique<linalg::DistributedCholesky>(n_skeleton, lower, trailing);
       break;
     case linalg::Distribution::bddc:
       bddc_ = std::make_unique<linalg::BddcSolver>(n_skeleton, lower);

@@ -35,8 +35,9 @@ namespace hpcontact::assembly {
 /// to S only its own part's S_T. S is then factorized either by substructuring (default,
 /// SubstructuredCholesky): each rank factorizes the skeleton dofs only its part touches, and the
 /// dofs between parts and the trailing set form a small dense interface problem whose trailing
-/// block gives B A⁻¹ Bᵀ; or by MUMPS on an MPIAIJ matrix (DistributedCholesky), where B A⁻¹ Bᵀ
-/// comes from solves with Bᵀ; or kept unassembled as MATIS, each rank's part its subdomain, and
+/// block gives B A⁻¹ Bᵀ; or by MUMPS on an MPIAIJ matrix (DistributedCholesky), whose
+/// Schur complement on the trailing set gives B A⁻¹ Bᵀ the same way; or kept unassembled as MATIS,
+/// each rank's part its subdomain, and
 /// solved by CG + BDDC (BddcSolver), B A⁻¹ Bᵀ again by solves.
 class CondensedFactor {
  public:

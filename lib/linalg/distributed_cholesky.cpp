@@ -1,25 +1,68 @@
 // DistributedCholesky: COO assembly into MPIAIJ (both triangles: MUMPS's Cholesky reads the upper
-// one of an AIJ matrix), MUMPS factorization, MatMatSolve on dense right-hand sides whose rows are
-// split like the matrix's, results summed over the ranks.
+// one of an AIJ matrix), MUMPS factorization (with a Schur set on rank 0 for the trailing set),
+// MatMatSolve on dense right-hand sides whose rows are split like the matrix's, results summed
+// over the ranks.
 #include "linalg/distributed_cholesky.hpp"
 
+#include <mpi.h>
 #include <petscmat.h>
+#include <petscvec.h>
 
+#include <Eigen/Cholesky>
 #include <algorithm>
 
 #include "core/error.hpp"
 #include "core/petsc_check.hpp"
 #include "core/petsc_handle.hpp"
 #include "core/petsc_session.hpp"
+#include "linalg/schur_complement.hpp"
 
 namespace hpcontact::linalg {
 
 struct DistributedCholesky::Impl {
   PetscHandle<Mat, MatDestroy> matrix, factor;
   PetscInt row_begin = 0, row_end = 0;
+  Eigen::SparseMatrix<double> contributions;  ///< this rank's share of A, both triangles
+  std::vector<int> trailing, trailing_position;
+  Eigen::LLT<Eigen::MatrixXd> trailing_schur;  ///< S_T = L_T L_Tᵀ, replicated
 };
 
-DistributedCholesky::DistributedCholesky(int n, const std::vector<Eigen::Triplet<double>>& lower_entries)
+namespace {
+
+// S_T as MUMPS returned it on rank 0 (one triangle or both) made whole and symmetric, then sent to
+// every rank.
+Eigen::MatrixXd replicated_trailing_schur(Mat factor, int size) {
+  Eigen::MatrixXd schur = Eigen::MatrixXd::Zero(size, size);
+  if (mpi_rank_and_size().first == 0) {
+    PetscHandle<Mat, MatDestroy> s;
+    MatFactorSchurStatus status;
+    HPC_PETSC_CALL(MatFactorCreateSchurComplement(factor, s.out(), &status));
+    const PetscScalar* values = nullptr;
+    PetscInt lda = 0;
+    HPC_PETSC_CALL(MatDenseGetLDA(s.get(), &lda));
+    HPC_PETSC_CALL(MatDenseGetArrayRead(s.get(), &values));
+    for (int j = 0; j < size; ++j)
+      for (int i = 0; i < size; ++i) schur(i, j) = values[i + static_cast<std::ptrdiff_t>(j) * lda];
+    HPC_PETSC_CALL(MatDenseRestoreArrayRead(s.get(), &values));
+    const double upper = schur.triangularView<Eigen::StrictlyUpper>().toDenseMatrix().cwiseAbs().sum();
+    const double lower = schur.triangularView<Eigen::StrictlyLower>().toDenseMatrix().cwiseAbs().sum();
+    if (upper == 0.0)
+      schur = Eigen::MatrixXd(schur.selfadjointView<Eigen::Lower>());
+    else if (lower == 0.0)
+      schur = Eigen::MatrixXd(schur.selfadjointView<Eigen::Upper>());
+    else
+      schur = 0.5 * (schur + schur.transpose());
+  }
+  if (mpi_rank_and_size().second > 1)
+    HPC_VERIFY(MPI_Bcast(schur.data(), static_cast<int>(schur.size()), MPI_DOUBLE, 0, MPI_COMM_WORLD) == MPI_SUCCESS,
+               "MPI_Bcast failed");
+  return schur;
+}
+
+}  // namespace
+
+DistributedCholesky::DistributedCholesky(int n, const std::vector<Eigen::Triplet<double>>& lower_entries,
+                                         const std::vector<int>& trailing)
     : impl_(std::make_unique<Impl>()), size_(n) {
   std::vector<PetscInt> rows, cols;
   std::vector<PetscScalar> values;
@@ -32,6 +75,21 @@ DistributedCholesky::DistributedCholesky(int n, const std::vector<Eigen::Triplet
     if (entry.row() != entry.col())
       rows.push_back(entry.col()), cols.push_back(entry.row()), values.push_back(entry.value());
   }
+  impl_->trailing = trailing;
+  impl_->trailing_position.assign(n, -1);
+  for (std::size_t k = 0; k < trailing.size(); ++k) {
+    HPC_VERIFY(trailing[k] >= 0 && trailing[k] < n && impl_->trailing_position[trailing[k]] < 0,
+               "distributed Cholesky: trailing set outside the unknowns or repeated");
+    impl_->trailing_position[trailing[k]] = static_cast<int>(k);
+  }
+  if (!trailing.empty()) {
+    // A x for the solves through S_T, from this rank's own contributions (summed over the ranks).
+    std::vector<Eigen::Triplet<double>> both;
+    both.reserve(rows.size());
+    for (std::size_t k = 0; k < rows.size(); ++k) both.emplace_back(rows[k], cols[k], values[k]);
+    impl_->contributions.resize(n, n);
+    impl_->contributions.setFromTriplets(both.begin(), both.end());
+  }
   Mat& a = *impl_->matrix.out();
   HPC_PETSC_CALL(MatCreate(PETSC_COMM_WORLD, &a));
   HPC_PETSC_CALL(MatSetSizes(a, PETSC_DECIDE, PETSC_DECIDE, n, n));
@@ -42,27 +100,68 @@ DistributedCholesky::DistributedCholesky(int n, const std::vector<Eigen::Triplet
   HPC_PETSC_CALL(MatSetOption(a, MAT_SPD, PETSC_TRUE));
   HPC_PETSC_CALL(MatGetOwnershipRange(a, &impl_->row_begin, &impl_->row_end));
   Mat& f = *impl_->factor.out();
-  HPC_PETSC_CALL(MatGetFactor(a, MATSOLVERMUMPS, MAT_FACTOR_CHOLESKY, &f));
+  // With a Schur set the factorization is MUMPS's LU: its symmetric Schur complement comes back
+  // under mpirun with the off-diagonal entries zero (PETSc 3.18.5, MUMPS 5.5; tried: LU gives
+  // CHOLMOD's S_T to 1e-15 on 1-3 ranks, Cholesky only on one).
+  const MatFactorType type = trailing.empty() ? MAT_FACTOR_CHOLESKY : MAT_FACTOR_LU;
+  HPC_PETSC_CALL(MatGetFactor(a, MATSOLVERMUMPS, type, &f));
+  if (!trailing.empty()) {
+    // PETSc's MUMPS interface takes a parallel Schur set only when rank 0 holds all of it: S_T
+    // comes back whole on rank 0.
+    const bool root = mpi_rank_and_size().first == 0;
+    std::vector<PetscInt> indices =
+        root ? std::vector<PetscInt>(trailing.begin(), trailing.end()) : std::vector<PetscInt>{};
+    PetscHandle<IS, ISDestroy> schur_set;
+    HPC_PETSC_CALL(ISCreateGeneral(PETSC_COMM_SELF, static_cast<PetscInt>(indices.size()), indices.data(),
+                                   PETSC_COPY_VALUES, schur_set.out()));
+    HPC_PETSC_CALL(MatFactorSetSchurIS(f, schur_set.get()));
+  }
   MatFactorInfo info;
   HPC_PETSC_CALL(MatFactorInfoInitialize(&info));
-  HPC_PETSC_CALL(MatCholeskyFactorSymbolic(f, a, nullptr, &info));
-  HPC_PETSC_CALL(MatCholeskyFactorNumeric(f, a, &info));
+  if (type == MAT_FACTOR_CHOLESKY) {
+    HPC_PETSC_CALL(MatCholeskyFactorSymbolic(f, a, nullptr, &info));
+    HPC_PETSC_CALL(MatCholeskyFactorNumeric(f, a, &info));
+  } else {
+    HPC_PETSC_CALL(MatLUFactorSymbolic(f, a, nullptr, nullptr, &info));
+    HPC_PETSC_CALL(MatLUFactorNumeric(f, a, &info));
+  }
   MatFactorError error = MAT_FACTOR_NOERROR;
   HPC_PETSC_CALL(MatFactorGetError(f, &error));
   if (error != MAT_FACTOR_NOERROR)
     throw NumericalError("distributed Cholesky (MUMPS) failed on a " + std::to_string(n) + "x" + std::to_string(n) +
                          " matrix (not positive definite?)");
+  if (!trailing.empty()) {
+    // Solves on the interior problem A_II only (MUMPS's ICNTL(26) = 0); S_T is solved here.
+    HPC_PETSC_CALL(MatMumpsSetIcntl(f, 26, 0));
+    impl_->trailing_schur.compute(replicated_trailing_schur(f, static_cast<int>(trailing.size())));
+    if (impl_->trailing_schur.info() != Eigen::Success)
+      throw NumericalError("distributed Cholesky (MUMPS): the Schur complement on the " +
+                           std::to_string(trailing.size()) + " trailing unknowns is not positive definite");
+  }
 }
 
 DistributedCholesky::~DistributedCholesky() = default;
 DistributedCholesky::DistributedCholesky(DistributedCholesky&&) noexcept = default;
 DistributedCholesky& DistributedCholesky::operator=(DistributedCholesky&&) noexcept = default;
 
-Eigen::MatrixXd DistributedCholesky::solve_owned_rows(const Eigen::MatrixXd& rhs) const {
+int DistributedCholesky::trailing_size() const { return static_cast<int>(impl_->trailing.size()); }
+
+Eigen::MatrixXd DistributedCholesky::mumps_owned_rows(const Eigen::MatrixXd& rhs) const {
   HPC_VERIFY(rhs.rows() == size_, "right-hand side of the wrong size");
   const PetscInt owned = impl_->row_end - impl_->row_begin, k = static_cast<PetscInt>(rhs.cols());
   // Column-major local blocks: PETSc's dense layout (lda = owned rows).
   Eigen::MatrixXd local_rhs = rhs.middleRows(impl_->row_begin, owned), local_solution(owned, k);
+  if (!impl_->trailing.empty()) {
+    // PETSc's MatMatSolve refuses a parallel factor with a Schur set; MatSolve takes the interior
+    // solve column by column.
+    for (PetscInt j = 0; j < k; ++j) {
+      PetscHandle<Vec, VecDestroy> b, x;
+      HPC_PETSC_CALL(VecCreateMPIWithArray(PETSC_COMM_WORLD, 1, owned, size_, local_rhs.col(j).data(), b.out()));
+      HPC_PETSC_CALL(VecCreateMPIWithArray(PETSC_COMM_WORLD, 1, owned, size_, local_solution.col(j).data(), x.out()));
+      HPC_PETSC_CALL(MatSolve(impl_->factor.get(), b.get(), x.get()));
+    }
+    return local_solution;
+  }
   PetscHandle<Mat, MatDestroy> b, x;
   HPC_PETSC_CALL(MatCreateDense(PETSC_COMM_WORLD, owned, PETSC_DECIDE, size_, k, local_rhs.data(), b.out()));
   HPC_PETSC_CALL(MatCreateDense(PETSC_COMM_WORLD, owned, PETSC_DECIDE, size_, k, local_solution.data(), x.out()));
@@ -70,16 +169,42 @@ Eigen::MatrixXd DistributedCholesky::solve_owned_rows(const Eigen::MatrixXd& rhs
   return local_solution;
 }
 
-Eigen::MatrixXd DistributedCholesky::solve(const Eigen::MatrixXd& rhs) const {
+Eigen::MatrixXd DistributedCholesky::mumps_solve(const Eigen::MatrixXd& rhs) const {
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(size_, rhs.cols());
-  if (rhs.cols() == 0) return out;
-  out.middleRows(impl_->row_begin, impl_->row_end - impl_->row_begin) = solve_owned_rows(rhs);
+  out.middleRows(impl_->row_begin, impl_->row_end - impl_->row_begin) = mumps_owned_rows(rhs);
   sum_over_ranks(out.data(), out.size());  // each row is non-zero on its owner only
+  for (int t : impl_->trailing) out.row(t).setZero();
   return out;
+}
+
+Eigen::MatrixXd DistributedCholesky::multiply(const Eigen::MatrixXd& x) const {
+  Eigen::MatrixXd out = impl_->contributions * x;
+  sum_over_ranks(out.data(), out.size());
+  return out;
+}
+
+Eigen::MatrixXd DistributedCholesky::solve(const Eigen::MatrixXd& rhs) const {
+  if (rhs.cols() == 0) return Eigen::MatrixXd::Zero(size_, 0);
+  if (impl_->trailing.empty()) return mumps_solve(rhs);
+  // [A_II A_IT; A_TI A_TT] x = b: y = A_II⁻¹ b_I, S_T x_T = b_T − A_TI y, x_I = A_II⁻¹ (b_I − A_IT x_T).
+  const auto& trailing = impl_->trailing;
+  const Eigen::MatrixXd y = mumps_solve(rhs);
+  const Eigen::MatrixXd ay = multiply(y);
+  Eigen::MatrixXd x_trailing(trailing.size(), rhs.cols());
+  for (std::size_t k = 0; k < trailing.size(); ++k) x_trailing.row(k) = rhs.row(trailing[k]) - ay.row(trailing[k]);
+  x_trailing = impl_->trailing_schur.solve(x_trailing);
+  Eigen::MatrixXd x_hat = Eigen::MatrixXd::Zero(size_, rhs.cols());
+  for (std::size_t k = 0; k < trailing.size(); ++k) x_hat.row(trailing[k]) = x_trailing.row(k);
+  Eigen::MatrixXd out = mumps_solve(rhs - multiply(x_hat));
+  return out + x_hat;
 }
 
 Eigen::MatrixXd DistributedCholesky::schur_complement(const Eigen::SparseMatrix<double>& b) const {
   HPC_VERIFY(b.cols() == size_, "B A⁻¹ Bᵀ: B has the wrong number of columns");
+  if (!impl_->trailing.empty())
+    return schur_complement_through_trailing(b, impl_->trailing_schur.matrixL().toDenseMatrix(),
+                                             impl_->trailing_position,
+                                             [this](const Eigen::MatrixXd& rhs) { return solve(rhs); });
   const auto m = b.rows();
   const PetscInt owned = impl_->row_end - impl_->row_begin;
   const Eigen::SparseMatrix<double> bt = b.transpose();
@@ -88,7 +213,7 @@ Eigen::MatrixXd DistributedCholesky::schur_complement(const Eigen::SparseMatrix<
   constexpr Eigen::Index block = 64;
   for (Eigen::Index first = 0; first < m; first += block) {
     const auto count = std::min<Eigen::Index>(block, m - first);
-    result.middleCols(first, count) = b_owned * solve_owned_rows(Eigen::MatrixXd(bt.middleCols(first, count)));
+    result.middleCols(first, count) = b_owned * mumps_owned_rows(Eigen::MatrixXd(bt.middleCols(first, count)));
   }
   sum_over_ranks(result.data(), result.size());
   return 0.5 * (result + result.transpose());

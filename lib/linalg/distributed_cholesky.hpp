@@ -1,7 +1,8 @@
 // Sparse symmetric positive definite direct solver over the MPI ranks: PETSc MPIAIJ (rows in
-// contiguous blocks, assembled from every rank's contributions) and MUMPS's Cholesky. Right-hand
-// sides and results are replicated on every rank, so that the small dense work around it (the
-// contact QP, the eigenproblem on the trace) runs unchanged on each.
+// contiguous blocks, assembled from every rank's contributions) and MUMPS's Cholesky, with a
+// trailing set (the Γ_C trace) through MUMPS's Schur-complement interface. Right-hand sides and
+// results are replicated on every rank, so that the small dense work around it (the contact QP,
+// the eigenproblem on the trace) runs unchanged on each.
 #pragma once
 
 #include <Eigen/Core>
@@ -14,9 +15,14 @@ namespace hpcontact::linalg {
 class DistributedCholesky {
  public:
   /// `lower_entries`: this rank's contributions (row ≥ col) to the lower triangle of the n × n
-  /// matrix; contributions to one entry, from one rank or several, are summed. Collective on
-  /// PETSC_COMM_WORLD. @throws NumericalError if MUMPS fails (e.g. not positive definite).
-  DistributedCholesky(int n, const std::vector<Eigen::Triplet<double>>& lower_entries);
+  /// matrix; contributions to one entry, from one rank or several, are summed. `trailing` (the
+  /// same on every rank): unknowns T whose Schur complement S_T = A_TT − A_TI A_II⁻¹ A_IT MUMPS
+  /// returns with the factorization of A_II (dense, |T|², replicated: T is trace-sized). Then
+  /// B A⁻¹ Bᵀ = B_T S_T⁻¹ B_Tᵀ needs no solve when B lives on T, and a solve runs as interior
+  /// solve, dense S_T solve, interior solve. Collective on PETSC_COMM_WORLD.
+  /// @throws NumericalError if MUMPS fails (e.g. not positive definite).
+  DistributedCholesky(int n, const std::vector<Eigen::Triplet<double>>& lower_entries,
+                      const std::vector<int>& trailing = {});
   ~DistributedCholesky();
   DistributedCholesky(DistributedCholesky&&) noexcept;
   DistributedCholesky& operator=(DistributedCholesky&&) noexcept;
@@ -24,14 +30,22 @@ class DistributedCholesky {
   int size() const { return size_; }
   /// A⁻¹ rhs, shape (n, k), the same on every rank. Collective.
   Eigen::MatrixXd solve(const Eigen::MatrixXd& rhs) const;
-  /// B A⁻¹ Bᵀ, dense symmetric (m, m), the same on every rank; B (m, n) replicated. Solves in
-  /// blocks of 64 columns, each rank multiplying its own rows of A⁻¹ Bᵀ. Collective.
+  /// B A⁻¹ Bᵀ, dense symmetric (m, m), the same on every rank; B (m, n) replicated. From S_T when
+  /// B's nonzero columns lie in the trailing set, else by solves in blocks of 64 columns.
+  /// Collective.
   Eigen::MatrixXd schur_complement(const Eigen::SparseMatrix<double>& b) const;
+  /// |T|: the size of the dense Schur complement MUMPS returned (0 without a trailing set).
+  int trailing_size() const;
 
  private:
   struct Impl;
-  /// This rank's rows [row_begin, row_end) of A⁻¹ rhs, for replicated rhs of shape (n, k).
-  Eigen::MatrixXd solve_owned_rows(const Eigen::MatrixXd& rhs) const;
+  /// This rank's rows [row_begin, row_end) of the MUMPS solve of replicated rhs (n, k): A⁻¹ rhs,
+  /// or with a trailing set A_II⁻¹ rhs_I (zero on T).
+  Eigen::MatrixXd mumps_owned_rows(const Eigen::MatrixXd& rhs) const;
+  /// The replicated result of mumps_owned_rows.
+  Eigen::MatrixXd mumps_solve(const Eigen::MatrixXd& rhs) const;
+  /// (A x) on every rank from every rank's contributions, for x replicated (n, k).
+  Eigen::MatrixXd multiply(const Eigen::MatrixXd& x) const;
   std::unique_ptr<Impl> impl_;
   int size_ = 0;
 };

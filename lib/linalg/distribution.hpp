@@ -10,7 +10,7 @@ enum class Distribution {
   serial,          ///< one process (CHOLMOD)
   substructuring,  ///< SubstructuredCholesky: CHOLMOD per rank, dense interface problem on every
                    ///< rank
-  mumps,           ///< DistributedCholesky: PETSc MPIAIJ + MUMPS's Cholesky
+  mumps,           ///< DistributedCholesky: PETSc MPIAIJ + MUMPS, S_T by its Schur interface
   bddc,            ///< BddcSolver: PETSc MATIS + conjugate gradients with PCBDDC
 };
 
