@@ -57,7 +57,8 @@ CondensedFactor::CondensedFactor(std::unique_ptr<const CellSystem> system, const
     HPC_VERIFY(index >= 0 && index < system_->n_skeleton_dofs(), "trailing set outside the skeleton dofs");
   const int n_cells = system_->mesh().n_cells(), n_skeleton = system_->n_skeleton_dofs();
   std::vector<char> contributes(n_cells, 1);
-  if (distribution != linalg::Distribution::serial) {
+  distributed_ = distribution != linalg::Distribution::serial;
+  if (distributed_) {
     const int rank = mpi_rank_and_size().first, ranks = mpi_rank_and_size().second;
     const std::vector<int> part_of_cell = mesh::bisect_cells(system_->mesh(), ranks);
     for (int c = 0; c < n_cells; ++c) contributes[c] = part_of_cell[c] == rank;
@@ -91,6 +92,7 @@ std::vector<Eigen::Triplet<double>> CondensedFactor::eliminate_interiors(const s
   std::vector<Eigen::Triplet<double>> lower;
   std::vector<CellDof> dofs;
   for (int c = 0; c < n_cells; ++c) {
+    if (!contributes[c]) continue;  // another rank's cell: eliminated there
     system.cell_dofs(c, dofs);
     const std::optional<CongruenceKey> key = system.congruence_key(c);
     if (key)
@@ -117,7 +119,6 @@ std::vector<Eigen::Triplet<double>> CondensedFactor::eliminate_interiors(const s
       if (key) congruent.emplace(*key, block_of_cell_[c]);
       blocks_.push_back(std::move(block));
     }
-    if (!contributes[c]) continue;
     const CellBlock& block = *blocks_[block_of_cell_[c]];
     // The lower triangle (all CHOLMOD reads); exact zeros (Lobatto orthogonality on
     // parallelograms) stay out of the pattern.
@@ -146,9 +147,11 @@ Eigen::MatrixXd CondensedFactor::skeleton_solve(const Eigen::MatrixXd& rhs) cons
 }
 
 Eigen::MatrixXd CondensedFactor::condense(const Eigen::MatrixXd& rhs) const {
-  Eigen::MatrixXd out = rhs.topRows(n_skeleton());
+  // Each rank subtracts its own cells' corrections; distributed, they are summed over the ranks.
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(n_skeleton(), rhs.cols());
   std::vector<CellDof> dofs;
   for (int c = 0; c < static_cast<int>(block_of_cell_.size()); ++c) {
+    if (block_of_cell_[c] < 0) continue;
     const CellBlock& block = *blocks_[block_of_cell_[c]];
     if (block.interior.empty()) continue;
     system_->cell_dofs(c, dofs);
@@ -159,22 +162,31 @@ Eigen::MatrixXd CondensedFactor::condense(const Eigen::MatrixXd& rhs) const {
       if (dof.dof >= 0) out.row(dof.dof) -= dof.sign * correction.row(s);
     }
   }
-  return out;
+  if (distributed_) sum_over_ranks(out.data(), out.size());
+  return out + rhs.topRows(n_skeleton());
 }
 
 Eigen::MatrixXd CondensedFactor::solve(const Eigen::MatrixXd& rhs) const {
   HPC_VERIFY(rhs.rows() == size_, "right-hand side of the wrong size");
   Eigen::MatrixXd out(size_, rhs.cols());
-  out.topRows(n_skeleton()) = skeleton_solve(condense(rhs));
+  const int n_skeleton = this->n_skeleton();
+  out.topRows(n_skeleton) = skeleton_solve(condense(rhs));
+  // Each rank recovers its own cells' interior modes (the unknowns after the skeleton, each in one
+  // cell); distributed, the other ranks' are summed in.
+  Eigen::MatrixXd interiors = Eigen::MatrixXd::Zero(size_ - n_skeleton, rhs.cols());
   std::vector<CellDof> dofs;
   for (int c = 0; c < static_cast<int>(block_of_cell_.size()); ++c) {
+    if (block_of_cell_[c] < 0) continue;
     const CellBlock& block = *blocks_[block_of_cell_[c]];
     if (block.interior.empty()) continue;
     system_->cell_dofs(c, dofs);
     const Eigen::MatrixXd interior = block.interior_factor.solve(interior_rows(dofs, block.interior, rhs)) -
                                      block.interior_solve * signed_skeleton_rows(dofs, block.skeleton, out);
-    for (std::size_t k = 0; k < block.interior.size(); ++k) out.row(dofs[block.interior[k]].dof) = interior.row(k);
+    for (std::size_t k = 0; k < block.interior.size(); ++k)
+      interiors.row(dofs[block.interior[k]].dof - n_skeleton) = interior.row(k);
   }
+  if (distributed_) sum_over_ranks(interiors.data(), interiors.size());
+  out.bottomRows(size_ - n_skeleton) = interiors;
   return out;
 }
 
@@ -203,6 +215,7 @@ double CondensedFactor::quadratic_form(const Eigen::VectorXd& u) const {
   double sum = 0.0;
   std::vector<CellDof> dofs;
   for (int c = 0; c < static_cast<int>(block_of_cell_.size()); ++c) {
+    if (block_of_cell_[c] < 0) continue;
     const CellBlock& block = *blocks_[block_of_cell_[c]];
     system_->cell_dofs(c, dofs);
     const Eigen::VectorXd skeleton = signed_skeleton_rows(dofs, block.skeleton, u);
@@ -211,6 +224,7 @@ double CondensedFactor::quadratic_form(const Eigen::VectorXd& u) const {
     const Eigen::VectorXd interior = interior_rows(dofs, block.interior, u) + block.interior_solve * skeleton;
     sum += (block.interior_factor.matrixU() * interior).squaredNorm();
   }
+  if (distributed_) sum_over_ranks(&sum, 1);
   return sum;
 }
 

@@ -31,8 +31,9 @@ namespace hpcontact::assembly {
 /// applies to S unchanged.
 ///
 /// Distributed (under mpirun): the cells are split into one part per rank by coordinate bisection
-/// (short interfaces); every rank eliminates every cell (vectors stay replicated) but contributes
-/// to S only its own part's S_T. S is then factorized either by substructuring (default,
+/// (short interfaces); each rank eliminates only its own part's cells and contributes their S_T to
+/// S; condensing a right-hand side, recovering the interior modes and the quadratic form add up the
+/// ranks' parts (vectors stay replicated). S is then factorized either by substructuring (default,
 /// SubstructuredCholesky): each rank factorizes the skeleton dofs only its part touches, and the
 /// dofs between parts and the trailing set form a small dense interface problem whose trailing
 /// block gives B A⁻¹ Bᵀ; or by MUMPS on an MPIAIJ matrix (DistributedCholesky), whose
@@ -58,7 +59,8 @@ class CondensedFactor {
   int n_skeleton() const { return system_->n_skeleton_dofs(); }
   /// The trace dofs the Schur complements are taken on (the trailing set).
   int n_trailing() const { return n_trailing_; }
-  /// Distinct interior eliminations: 1 on a uniform mesh of one degree, n_cells on a general mesh.
+  /// Distinct interior eliminations (of this rank's cells when distributed): 1 on a uniform mesh
+  /// of one degree, n_cells on a general mesh.
   int n_eliminations() const { return static_cast<int>(blocks_.size()); }
 
   /// A⁻¹ rhs, shape (n) or (n, k). Distributed: collective, rhs and result the same on every rank.
@@ -69,13 +71,13 @@ class CondensedFactor {
   /// Distributed: collective.
   Eigen::MatrixXd schur_complement(const Eigen::SparseMatrix<double>& b) const;
   /// uᵀ A u, cell by cell from the eliminated blocks (a sum of non-negative terms, so as accurate
-  /// as u itself), without A.
+  /// as u itself), without A. Distributed: collective.
   double quadratic_form(const Eigen::VectorXd& u) const;
 
  private:
   struct CellBlock;
-  /// Fills blocks_ and block_of_cell_ for every cell; returns the entries of the lower triangle
-  /// of S that the cells c with contributes[c] add.
+  /// Fills blocks_ and block_of_cell_ for the cells c with contributes[c] (−1 for the others);
+  /// returns the entries of the lower triangle of S that they add.
   std::vector<Eigen::Triplet<double>> eliminate_interiors(const std::vector<char>& contributes);
   /// S⁻¹ rhs on the skeleton, shape (n_skeleton, k).
   Eigen::MatrixXd skeleton_solve(const Eigen::MatrixXd& rhs) const;
@@ -91,6 +93,7 @@ class CondensedFactor {
   std::unique_ptr<linalg::SubstructuredCholesky> substructured_;
   std::unique_ptr<linalg::DistributedCholesky> mumps_;
   std::unique_ptr<linalg::BddcSolver> bddc_;
+  bool distributed_ = false;  ///< cells split over the ranks: per-cell work is summed over them
 };
 
 }  // namespace hpcontact::assembly
