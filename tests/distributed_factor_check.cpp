@@ -6,7 +6,8 @@
 //   distributed_factor_check SOLVER SPLIT [indefinite]
 //     SOLVER  substructuring | mumps | bddc
 //     SPLIT   strips (elements in strips of x, one per rank) | scattered (element e on rank e %
-//     ranks) indefinite: one Dirichlet diagonal is −50 (the factorization must fail on every rank)
+//     ranks) indefinite: one Dirichlet diagonal is −50 and one on the trailing row too (the
+//     factorization must fail on every rank; exit 5 if the solver accepted the matrix)
 #include <fmt/format.h>
 
 #include <random>
@@ -65,6 +66,7 @@ int run(const std::string& solver, const std::string& split, bool indefinite) {
   // The trailing set: the bottom row. B: 10 rows on it; B_out also reaches one interior node.
   std::vector<int> trailing;
   for (int i = 0; i < kNx; ++i) trailing.push_back(node(i, 0));
+  if (indefinite) add_element({{node(kNx / 2, 0), node(kNx / 2, 0), -50.0}}, 0);
   std::vector<Eigen::Triplet<double>> b_entries;
   for (int r = 0; r < 10; ++r)
     for (int k = 0; k < 5; ++k) b_entries.emplace_back(r, trailing[(3 * r + 5 * k) % kNx], value(random));
@@ -91,6 +93,10 @@ int run(const std::string& solver, const std::string& split, bool indefinite) {
     if (rank == 0) fmt::print("iterations_largest {}\n", factor.iterations().largest);
   } else {
     throw_bad_input("distributed_factor_check", "SOLVER", solver, "substructuring | mumps | bddc");
+  }
+  if (indefinite) {  // the solver under test must have refused it (not the reference below)
+    if (rank == 0) fmt::print("error: {} accepted an indefinite matrix\n", solver);
+    return 5;
   }
   if (rank != 0) return 0;
   Eigen::SparseMatrix<double> a(n, n);

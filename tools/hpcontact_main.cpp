@@ -7,7 +7,6 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <memory>
-#include <sstream>
 
 #include "commands.hpp"
 #include "core/error.hpp"
@@ -75,10 +74,11 @@ int main(int argc, char** argv) {
   try {
     app.parse(arguments);
   } catch (const CLI::ParseError& error) {
-    // Under a launcher every rank parses the same line: rank 0 alone prints (MPI is not up yet,
-    // so the launcher's rank variable tells).
-    std::ostringstream discarded;
-    const int code = launcher_rank() == 0 ? app.exit(error) : app.exit(error, discarded, discarded);
+    // Under a launcher every rank parses the same line: rank 0 alone prints and returns the exit
+    // code (MPI is not up yet, so the launcher's rank variable tells). The other ranks end quietly
+    // with 0: a non-zero exit of theirs could make the launcher kill rank 0 before it printed.
+    if (launcher_rank() != 0) return 0;
+    const int code = app.exit(error);
     return code == 0 ? 0 : 2;
   }
 

@@ -10,6 +10,7 @@
 
 #include "core/error.hpp"
 #include "core/petsc_session.hpp"
+#include "core/rank_agreement.hpp"
 #include "mesh/cell_partition.hpp"
 
 namespace hpcontact::assembly {
@@ -63,7 +64,13 @@ CondensedFactor::CondensedFactor(std::unique_ptr<const CellSystem> system, const
     const std::vector<int> part_of_cell = mesh::bisect_cells(system_->mesh(), ranks);
     for (int c = 0; c < n_cells; ++c) contributes[c] = part_of_cell[c] == rank;
   }
-  auto lower = eliminate_interiors(contributes);
+  // Distributed, a degenerate cell fails on the rank that owns it: every rank ends the same way.
+  // (Serial factors may be built by one rank alone, e.g. a sweep's points: no collective then.)
+  std::vector<Eigen::Triplet<double>> lower;
+  if (distributed_)
+    run_on_all_ranks_agreeing([&] { lower = eliminate_interiors(contributes); });
+  else
+    lower = eliminate_interiors(contributes);
   switch (distribution) {
     case linalg::Distribution::serial: {
       Eigen::SparseMatrix<double> schur(n_skeleton, n_skeleton);

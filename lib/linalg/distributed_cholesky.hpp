@@ -20,7 +20,9 @@ class DistributedCholesky {
   /// returns with the factorization of A_II (dense, |T|², replicated: T is trace-sized). Then
   /// B A⁻¹ Bᵀ = B_T S_T⁻¹ B_Tᵀ needs no solve when B lives on T, and a solve runs as interior
   /// solve, dense S_T solve, interior solve. Collective on PETSC_COMM_WORLD.
-  /// @throws NumericalError if MUMPS fails (e.g. not positive definite).
+  /// @throws NumericalError if MUMPS fails (not positive definite; with a trailing set MUMPS
+  /// factorizes A_II by LU, which refuses a singular A_II but not an indefinite one: then only an
+  /// indefinite S_T is refused, by its Cholesky factorization).
   DistributedCholesky(int n, const std::vector<Eigen::Triplet<double>>& lower_entries,
                       const std::vector<int>& trailing = {});
   ~DistributedCholesky();
