@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <string>
 
@@ -36,6 +37,14 @@ inline std::filesystem::path scratch(const std::string& name) {
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
+}
+
+// A sweep's alpha.csv without its last column (seconds), for comparing runs.
+inline std::string without_seconds(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::string text, line;
+  while (std::getline(in, line)) text += line.substr(0, line.rfind(',')) + "\n";
+  return text;
 }
 
 }  // namespace hpcontact::testing

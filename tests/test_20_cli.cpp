@@ -19,6 +19,7 @@ namespace {
 using hpcontact::testing::run;
 using hpcontact::testing::run_command;
 using hpcontact::testing::scratch;
+using hpcontact::testing::without_seconds;
 
 const char* kStudy = R"toml([solution]
 u  = "sin(1-x)*sin(1-y)"
@@ -282,18 +283,6 @@ TEST(Cli, WorkPrecisionFitsTheReferenceAndEstimatesItsAccuracy) {
   EXPECT_NE(bad.output.find("reference.set.domain.refinements"), std::string::npos) << bad.output;
   EXPECT_FALSE(std::filesystem::exists(dir / "bad"));
 }
-
-namespace {
-
-// A sweep's alpha.csv without its last column (seconds), for comparing runs.
-std::string without_seconds(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::string text, line;
-  while (std::getline(in, line)) text += line.substr(0, line.rfind(',')) + "\n";
-  return text;
-}
-
-}  // namespace
 
 // `mpirun -n 2 hpcontact sweep` distributes the (n, p) groups over the ranks and writes the same
 // alpha.csv and verdicts.csv as a serial run (compared without the timing column). Both runs use

@@ -21,6 +21,7 @@ namespace {
 using hpcontact::testing::run;
 using hpcontact::testing::run_command;
 using hpcontact::testing::scratch;
+using hpcontact::testing::without_seconds;
 
 const std::string kMpi = "env OPENBLAS_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ";
 
@@ -55,13 +56,6 @@ std::filesystem::path write_sweep(const std::filesystem::path& dir, bool long_ru
                          "levels = { \"domain.n_x\" = [4, 8, 16], \"domain.n_y\" = [4, 8, 16] }\n")
       << "ratio = [1, \"1/2\"]\nproblem = [\"signorini\", \"friction\"]\n";
   return dir / "sweep.toml";
-}
-
-std::string without_seconds(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::string text, line;
-  while (std::getline(in, line)) text += line.substr(0, line.rfind(',')) + "\n";
-  return text;
 }
 
 }  // namespace
