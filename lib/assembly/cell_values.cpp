@@ -13,7 +13,7 @@ namespace hpcontact::assembly {
 namespace {
 
 // Reference values and gradients (value, ∂/∂ξ, ∂/∂η) of every shape of the cell at point q.
-void reference_shapes(const std::vector<space::LocalShape>& shapes, mesh::CellType type, int p, double xi, double eta,
+void reference_shapes(std::span<const space::LocalShape> shapes, mesh::CellType type, int p, double xi, double eta,
                       Eigen::VectorXd& lobatto_xi, Eigen::VectorXd& lobatto_dxi, Eigen::VectorXd& lobatto_eta,
                       Eigen::VectorXd& lobatto_deta, std::vector<basis::ShapeValue>& out) {
   out.resize(shapes.size());

@@ -15,7 +15,7 @@ namespace {
 
 using Triplets = std::vector<Eigen::Triplet<double>>;
 
-void scatter_matrix(const std::vector<space::LocalShape>& shapes, const Eigen::MatrixXd& local, Triplets& triplets) {
+void scatter_matrix(std::span<const space::LocalShape> shapes, const Eigen::MatrixXd& local, Triplets& triplets) {
   const int n = static_cast<int>(shapes.size());
   for (int s = 0; s < n; ++s) {
     if (shapes[s].dof < 0) continue;

@@ -8,6 +8,7 @@
 #include <Eigen/Cholesky>
 #include <algorithm>
 #include <exception>
+#include <optional>
 
 #include "core/error.hpp"
 #include "core/petsc_session.hpp"
@@ -20,12 +21,15 @@ struct SubstructuredCholesky::Impl {
   int rank = 0;
   std::vector<int> interface;  ///< global index of every interface position (G \ C, then C)
   int n_trailing = 0;
-  std::vector<int> trailing_position;            ///< per global index: its row in the trailing block of L_G, or −1
-  std::vector<int> interior;                     ///< this rank's interior unknowns (global, ascending)
-  std::vector<int> own_interface;                ///< interface positions this rank touches (ascending)
-  std::unique_ptr<SparseCholesky> local;         ///< [interior; own interface] of A_r + D_r (null without interior)
-  Eigen::MatrixXd shifted_schur;                 ///< S_r + D_r on own_interface
-  Eigen::LLT<Eigen::MatrixXd> interface_factor;  ///< S_G = L_G L_Gᵀ
+  std::vector<int> trailing_position;     ///< per global index: its row in the trailing block of L_G, or −1
+  std::vector<int> interior;              ///< this rank's interior unknowns (global, ascending)
+  std::vector<int> own_interface;         ///< interface positions this rank touches (ascending)
+  std::unique_ptr<SparseCholesky> local;  ///< [interior; own interface] of A_r + D_r (null without interior)
+  Eigen::MatrixXd shifted_schur;          ///< S_r + D_r on own_interface
+  /// S_G, overwritten by its factor L_G (S_G = L_G L_Gᵀ): the factorization runs in place, since
+  /// this dense |G| × |G| matrix is the largest item of a rank beyond a few ranks.
+  Eigen::MatrixXd interface_storage;
+  std::optional<Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>>> interface_factor;
 
   int n_local() const { return static_cast<int>(interior.size() + own_interface.size()); }
   /// Factorizes this rank's part A_r + D_r (interior unknowns first, own interface positions
@@ -69,8 +73,8 @@ Eigen::VectorXd SubstructuredCholesky::Impl::factor_own_part(const std::vector<E
     product.selfadjointView<Eigen::Lower>().rankUpdate(d.local->trailing_factor());
     std::vector<int> position(n_own);
     for (int k = 0; k < n_own; ++k) position[k] = d.local->trailing_position()[n_interior + k];
-    const Eigen::MatrixXd full = product.selfadjointView<Eigen::Lower>();
-    d.shifted_schur = full(position, position);
+    product.triangularView<Eigen::StrictlyUpper>() = product.transpose();
+    d.shifted_schur = product(position, position);
   }
   return shift;
 }
@@ -134,13 +138,13 @@ SubstructuredCholesky::SubstructuredCholesky(int n, const std::vector<Eigen::Tri
   const int n_own = static_cast<int>(d.own_interface.size());
   // 5. S_G = Σ_r (S_r + D_r − D_r), every rank factorizes it.
   const int n_interface = static_cast<int>(d.interface.size());
-  Eigen::MatrixXd interface_matrix = Eigen::MatrixXd::Zero(n_interface, n_interface);
+  d.interface_storage = Eigen::MatrixXd::Zero(n_interface, n_interface);
   for (int k = 0; k < n_own; ++k)
     for (int l = 0; l < n_own; ++l)
-      interface_matrix(d.own_interface[k], d.own_interface[l]) += d.shifted_schur(k, l) - (k == l ? shift(k) : 0.0);
-  sum_over_ranks(interface_matrix.data(), interface_matrix.size());
-  d.interface_factor.compute(interface_matrix);
-  if (d.interface_factor.info() != Eigen::Success)
+      d.interface_storage(d.own_interface[k], d.own_interface[l]) += d.shifted_schur(k, l) - (k == l ? shift(k) : 0.0);
+  sum_over_ranks(d.interface_storage.data(), d.interface_storage.size());
+  d.interface_factor.emplace(d.interface_storage);
+  if (d.interface_factor->info() != Eigen::Success)
     throw NumericalError(
         fmt::format("substructured Cholesky: the {0}x{0} interface problem of a {1}x{1} matrix is "
                     "not positive definite",
@@ -169,7 +173,7 @@ Eigen::MatrixXd SubstructuredCholesky::solve(const Eigen::MatrixXd& rhs) const {
   }
   sum_over_ranks(interface_rhs.data(), interface_rhs.size());
   interface_rhs += rhs(d.interface, Eigen::all);
-  const Eigen::MatrixXd interface_solution = d.interface_factor.solve(interface_rhs);
+  const Eigen::MatrixXd interface_solution = d.interface_factor->solve(interface_rhs);
   // Back-substitute: with the trailing right-hand side (S_r + D_r) u_G − g_r the local solve
   // returns y = u_G, hence x = A_II⁻¹ (f_I − A_IG u_G).
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(size_, k);
@@ -187,7 +191,7 @@ Eigen::MatrixXd SubstructuredCholesky::schur_complement(const Eigen::SparseMatri
   HPC_VERIFY(b.cols() == size_, "B A⁻¹ Bᵀ: B has the wrong number of columns");
   const Impl& d = *impl_;
   return schur_complement_through_trailing(
-      b, d.interface_factor.matrixLLT().bottomRightCorner(d.n_trailing, d.n_trailing), d.trailing_position,
+      b, d.interface_factor->matrixLLT().bottomRightCorner(d.n_trailing, d.n_trailing), d.trailing_position,
       [this](const Eigen::MatrixXd& rhs) { return solve(rhs); });
 }
 

@@ -30,6 +30,11 @@ std::array<int, 2> edge_mode_index(int local, int k) {
   }
 }
 
+LocalShape shape(int i, int j, int dof, double sign, ShapeRole role, int entity) {
+  return {static_cast<std::int16_t>(i),    static_cast<std::int16_t>(j), dof, static_cast<float>(sign), role,
+          static_cast<std::int8_t>(entity)};
+}
+
 }  // namespace
 
 int local_edge_of(const LocalShape& shape) { return shape.role == ShapeRole::edge ? shape.entity : -1; }
@@ -85,14 +90,24 @@ void H1Space::build(DirichletDofs dirichlet) {
     }
 
   n_skeleton_dofs_ = next;
-  cell_shapes_.assign(mesh.n_cells(), {});
+  // Sizes first, so the flat table is allocated once.
+  first_shape_.assign(mesh.n_cells() + 1, 0);
   for (int c = 0; c < mesh.n_cells(); ++c) {
-    auto& shapes = cell_shapes_[c];
+    const int p = cell_degrees_[c];
+    int count =
+        mesh.cell_size(c) + (mesh.cell_type(c) == mesh::CellType::triangle ? (p - 1) * (p - 2) / 2 : (p - 1) * (p - 1));
+    for (int local = 0; local < mesh.cell_size(c); ++local)
+      count += std::max(edge_degrees_[mesh.cell_edge(c, local)] - 1, 0);
+    first_shape_[c + 1] = first_shape_[c] + count;
+  }
+  shapes_.clear();
+  shapes_.reserve(first_shape_.back());
+  for (int c = 0; c < mesh.n_cells(); ++c) {
     const int p = cell_degrees_[c];
     const bool triangle = mesh.cell_type(c) == mesh::CellType::triangle;
     for (int k = 0; k < mesh.cell_size(c); ++k) {
       const auto [i, j] = triangle ? std::array<int, 2>{0, 0} : kVertexIndex[k];
-      shapes.push_back({i, j, vertex_dof[mesh.cell(c)[k]], 1.0, ShapeRole::vertex, k});
+      shapes_.push_back(shape(i, j, vertex_dof[mesh.cell(c)[k]], 1.0, ShapeRole::vertex, k));
     }
     for (int local = 0; local < mesh.cell_size(c); ++local) {
       const int e = mesh.cell_edge(c, local);
@@ -101,16 +116,17 @@ void H1Space::build(DirichletDofs dirichlet) {
         const auto [i, j] = triangle ? std::array<int, 2>{k, 0} : edge_mode_index(local, k);
         const int dof = edge_first_dof[e] < 0 ? -1 : edge_first_dof[e] + (k - 2);
         // N_k(-t) = (-1)^k N_k(t): a reversed edge flips the odd modes.
-        shapes.push_back({i, j, dof, (sign < 0 && k % 2 == 1) ? -1.0 : 1.0, ShapeRole::edge, local});
+        shapes_.push_back(shape(i, j, dof, (sign < 0 && k % 2 == 1) ? -1.0 : 1.0, ShapeRole::edge, local));
       }
     }
     if (triangle) {
       for (int n1 = 0; n1 <= p - 3; ++n1)
-        for (int n2 = 0; n1 + n2 <= p - 3; ++n2) shapes.push_back({n1, n2, next++, 1.0, ShapeRole::interior, -1});
+        for (int n2 = 0; n1 + n2 <= p - 3; ++n2) shapes_.push_back(shape(n1, n2, next++, 1.0, ShapeRole::interior, -1));
     } else {
       for (int j = 2; j <= p; ++j)
-        for (int i = 2; i <= p; ++i) shapes.push_back({i, j, next++, 1.0, ShapeRole::interior, -1});
+        for (int i = 2; i <= p; ++i) shapes_.push_back(shape(i, j, next++, 1.0, ShapeRole::interior, -1));
     }
+    HPC_VERIFY(static_cast<std::int64_t>(shapes_.size()) == first_shape_[c + 1], "shape count of a cell");
   }
   n_dofs_ = next;
 }

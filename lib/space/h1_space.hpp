@@ -4,6 +4,8 @@
 // on Γ_D eliminated.
 #pragma once
 
+#include <cstdint>
+#include <span>
 #include <vector>
 
 #include "mesh/mesh.hpp"
@@ -18,14 +20,18 @@ enum class ShapeRole : unsigned char { vertex, edge, interior };
 /// Triangle (basis/triangle_basis.hpp): vertex `entity`; mode k = i of edge `entity` (j = 0);
 /// bubble (n1, n2) = (i, j).
 /// `dof` is the global free dof, or -1 if the function is eliminated by the Dirichlet condition.
+/// 16 bytes: a space holds one per shape of every cell, the largest table of a run after the
+/// factorizations (25 per cell at p = 4).
 struct LocalShape {
-  int i = 0;
-  int j = 0;
+  std::int16_t i = 0;
+  std::int16_t j = 0;
   int dof = -1;
-  double sign = 1.0;
+  float sign = 1.0F;  ///< ±1, exact in float
   ShapeRole role = ShapeRole::vertex;
-  int entity = -1;  ///< local vertex (vertex shapes) or local edge (edge modes); -1 for interior
+  std::int8_t entity = -1;  ///< local vertex (vertex shapes) or local edge (edge modes); -1 for interior
 };
+
+static_assert(sizeof(LocalShape) == 16, "LocalShape is stored once per shape of every cell");
 
 /// Whether the dofs of Γ_D are dropped (the space of the problems, functions vanishing on Γ_D) or
 /// kept (the same space without the condition: where a lifting of non-zero Dirichlet data lives).
@@ -67,7 +73,9 @@ class H1Space {
   int max_degree() const { return max_degree_; }
   /// Local shape functions of a cell, with their global dofs: the vertices, then the modes of
   /// the local edges in order (see local_edge_of), then the interior modes.
-  const std::vector<LocalShape>& cell_shapes(int cell) const { return cell_shapes_[cell]; }
+  std::span<const LocalShape> cell_shapes(int cell) const {
+    return {shapes_.data() + first_shape_[cell], shapes_.data() + first_shape_[cell + 1]};
+  }
 
  private:
   void build(DirichletDofs dirichlet);
@@ -75,7 +83,8 @@ class H1Space {
   const mesh::Mesh* mesh_;
   std::vector<int> cell_degrees_;
   std::vector<int> edge_degrees_;
-  std::vector<std::vector<LocalShape>> cell_shapes_;
+  std::vector<LocalShape> shapes_;         ///< every cell's shapes, cell after cell
+  std::vector<std::int64_t> first_shape_;  ///< cell c's shapes: [first_shape_[c], first_shape_[c + 1])
   int n_dofs_ = 0;
   int n_skeleton_dofs_ = 0;
   int max_degree_ = 1;
