@@ -202,8 +202,8 @@ Eigen::MatrixXd DistributedCholesky::solve(const Eigen::MatrixXd& rhs) const {
 Eigen::MatrixXd DistributedCholesky::schur_complement(const Eigen::SparseMatrix<double>& b) const {
   HPC_VERIFY(b.cols() == size_, "B A⁻¹ Bᵀ: B has the wrong number of columns");
   if (!impl_->trailing.empty())
-    return schur_complement_through_trailing(b, impl_->trailing_schur.matrixL().toDenseMatrix(),
-                                             impl_->trailing_position,
+    // matrixLLT() holds L_T in its lower triangle, the only part read: no dense copy of L_T.
+    return schur_complement_through_trailing(b, impl_->trailing_schur.matrixLLT(), impl_->trailing_position,
                                              [this](const Eigen::MatrixXd& rhs) { return solve(rhs); });
   const auto m = b.rows();
   const PetscInt owned = impl_->row_end - impl_->row_begin;
