@@ -118,7 +118,9 @@ ContactSolution solve_contact(const ContactSetup& setup) {
       primal.coupling(multipliers, weighted ? setup.bound : assembly::BoundaryFunction{}, coupling_name);
   MultiplierConstraints constraints = build_multiplier_constraints(setup, multipliers, primal.contact());
   const Eigen::SparseMatrix<double> to_nodal = constraints.to_nodal.sparseView();
-  const Eigen::SparseMatrix<double> coupling = (to_nodal * coupling_legendre).pruned();
+  Eigen::SparseMatrix<double> coupling = (to_nodal * coupling_legendre).pruned();
+  // pruned() leaves room for 2 max(m, n) entries: 25 MB at 1e6 dofs for a few thousand nonzeros.
+  coupling.data().squeeze();
   Eigen::VectorXd gap_offset = Eigen::VectorXd::Zero(multipliers.n_dofs());
   if (signorini) {
     Stopwatch obstacle_clock;

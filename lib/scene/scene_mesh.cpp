@@ -47,7 +47,7 @@ mesh::Mesh build_rectangle(const Scene& scene) {
 }
 
 /// Local geometric layers towards the scene's grading points.
-mesh::Mesh grade_towards_points(const mesh::Mesh& mesh, const Scene& scene) {
+mesh::Mesh grade_towards_points(mesh::Mesh mesh, const Scene& scene) {  // by value: ungraded, it is moved out
   if (scene.grading_points.empty()) return mesh;
   const std::string origin = scene.file + ": key 'domain.grading_points'";
   std::vector<int> centres;
