@@ -83,6 +83,7 @@ int run(const std::string& solver, const std::string& split, bool indefinite) {
     const linalg::SubstructuredCholesky factor(n, mine, trailing);
     solution = factor.solve(rhs), schur = factor.schur_complement(b), schur_out = factor.schur_complement(b_out);
     interface = factor.interface_size();
+    if (rank == 0) fmt::print("factor_nonzeros_mean {}\n", factor.mean_factor_nonzeros());
   } else if (solver == "mumps") {
     const linalg::DistributedCholesky factor(n, mine, trailing);
     solution = factor.solve(rhs), schur = factor.schur_complement(b), schur_out = factor.schur_complement(b_out);
@@ -106,6 +107,7 @@ int run(const std::string& solver, const std::string& split, bool indefinite) {
   fmt::print("schur_trailing {:.3e}\n", relative_difference(schur, reference.schur_complement(b)));
   fmt::print("schur_fallback {:.3e}\n", relative_difference(schur_out, reference.schur_complement(b_out)));
   fmt::print("interface {}\n", interface);
+  fmt::print("reference_factor_nonzeros {}\n", linalg::SparseCholesky(a, trailing).factor_nonzeros());
   return 0;
 }
 

@@ -10,8 +10,10 @@
 
 #define HPCONTACT_CLI "hpcontact"  // cli_runner.hpp's run() is not used here
 #include "cli_runner.hpp"
+#include "linalg/substructured_cholesky.hpp"
 
 using hpcontact::testing::run_command;
+namespace linalg = hpcontact::linalg;
 
 namespace {
 
@@ -59,6 +61,17 @@ TEST(DistributedFactor, SubstructuringMumpsAndBddcEqualCholmodOnEverySplit) {
           if (ranks > 1 && std::string(split) == "scattered") {
             EXPECT_GT(interface, 24 * 16 / 2) << where;
           }
+          // The ranks' sparse factors: on one rank the serial factor with the trailing set last
+          // (AMD may break ties differently in the local numbering); strips split it.
+          const double mean = number_after(run.output, "factor_nonzeros_mean");
+          const double serial = number_after(run.output, "reference_factor_nonzeros");
+          if (ranks == 1) {
+            EXPECT_NEAR(mean, serial, 0.1 * serial) << where;
+          }
+          if (ranks > 1 && std::string(split) == "strips") {
+            EXPECT_GT(mean, 0.0) << where;
+            EXPECT_LT(mean, serial) << where;
+          }
         }
       }
 }
@@ -73,4 +86,11 @@ TEST(DistributedFactor, IndefiniteMatrixFailsOnEveryRankWithAClearMessage) {
       EXPECT_EQ(run.exit_code, 3) << solver << ", " << ranks << " ranks\n" << run.output;
       EXPECT_NE(run.output.find("not positive definite"), std::string::npos) << run.output;
     }
+}
+
+TEST(DistributedFactor, SubstructuringNotesAnInterfaceLargerThanTheFactorsAndThan64MB) {
+  // 2000² entries are 32 MB: too small to matter whatever the factors; 3000² are 72 MB.
+  EXPECT_FALSE(linalg::interface_outweighs_factors(2000, 0.0));
+  EXPECT_TRUE(linalg::interface_outweighs_factors(3000, 1e6));
+  EXPECT_FALSE(linalg::interface_outweighs_factors(3000, 1e7));
 }

@@ -26,6 +26,22 @@ struct CondensedFactor::CellBlock {
 
 namespace {
 
+// Tells the user (once per process, on rank 0) when substructuring's dense interface problem
+// outweighs the ranks' factors: adding ranks then costs memory per rank instead of saving it.
+void note_if_interface_dominates(const linalg::SubstructuredCholesky& factor) {
+  static bool noted = false;
+  if (noted || mpi_rank_and_size().first != 0 ||
+      !linalg::interface_outweighs_factors(factor.interface_size(), factor.mean_factor_nonzeros()))
+    return;
+  noted = true;
+  const double g = factor.interface_size();
+  fmt::print(stderr,
+             "hpcontact: note: substructuring's dense interface problem ({} unknowns between the parts and on Γ_C, "
+             "{:.0f} MB on every rank) outweighs the ranks' sparse factors ({:.0f} MB on average): more ranks raise "
+             "the memory per rank; --distributed-solver mumps or bddc hold no interface matrix\n",
+             factor.interface_size(), g * g * 8e-6, factor.mean_factor_nonzeros() * 8e-6);
+}
+
 // Rows of `values` (global dof order) at a cell's interior unknowns `local`.
 Eigen::MatrixXd interior_rows(const std::vector<CellDof>& dofs, const std::vector<int>& local,
                               const Eigen::Ref<const Eigen::MatrixXd>& values) {
@@ -81,6 +97,7 @@ CondensedFactor::CondensedFactor(std::unique_ptr<const CellSystem> system, const
     }
     case linalg::Distribution::substructuring:
       substructured_ = std::make_unique<linalg::SubstructuredCholesky>(n_skeleton, lower, trailing);
+      note_if_interface_dominates(*substructured_);
       break;
     case linalg::Distribution::mumps:
       mumps_ = std::make_unique<linalg::DistributedCholesky>(n_skeleton, lower, trailing);

@@ -149,6 +149,15 @@ SubstructuredCholesky::SubstructuredCholesky(int n, const std::vector<Eigen::Tri
         fmt::format("substructured Cholesky: the {0}x{0} interface problem of a {1}x{1} matrix is "
                     "not positive definite",
                     n_interface, n));
+  mean_factor_nonzeros_ = d.local ? static_cast<double>(d.local->factor_nonzeros()) : 0.0;
+  sum_over_ranks(&mean_factor_nonzeros_, 1);
+  mean_factor_nonzeros_ /= mpi_rank_and_size().second;
+}
+
+bool interface_outweighs_factors(int interface_size, double mean_factor_nonzeros) {
+  const double entries = static_cast<double>(interface_size) * interface_size;
+  constexpr double large = 64e6 / sizeof(double);
+  return entries > large && entries > mean_factor_nonzeros;
 }
 
 SubstructuredCholesky::~SubstructuredCholesky() = default;

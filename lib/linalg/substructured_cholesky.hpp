@@ -41,6 +41,8 @@ class SubstructuredCholesky {
   int size() const { return size_; }
   /// |G|: the size of the dense interface problem (unknowns shared by ranks, and the trailing set).
   int interface_size() const;
+  /// Nonzeros of the ranks' sparse (CHOLMOD) factors, averaged over the ranks.
+  double mean_factor_nonzeros() const { return mean_factor_nonzeros_; }
   /// A⁻¹ rhs, shape (n, k), the same on every rank. Collective.
   Eigen::MatrixXd solve(const Eigen::MatrixXd& rhs) const;
   /// B A⁻¹ Bᵀ, dense symmetric (m, m), the same on every rank, for B (m, n) replicated: from the
@@ -52,6 +54,13 @@ class SubstructuredCholesky {
   struct Impl;
   std::unique_ptr<Impl> impl_;
   int size_ = 0;
+  double mean_factor_nonzeros_ = 0.0;
 };
+
+/// Whether the dense interface problem (|G|² entries on every rank) holds more than the ranks'
+/// sparse factors on average and more than 64 MB: from there on more ranks raise the memory per
+/// rank (the factors shrink like 1/P, |G|² grows with P), so another distributed solver scales
+/// further.
+bool interface_outweighs_factors(int interface_size, double mean_factor_nonzeros);
 
 }  // namespace hpcontact::linalg
