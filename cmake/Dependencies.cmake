@@ -21,6 +21,14 @@ add_library(hpcontact_cholmod INTERFACE)
 target_include_directories(hpcontact_cholmod INTERFACE ${CHOLMOD_INCLUDE_DIR})
 target_link_libraries(hpcontact_cholmod INTERFACE ${CHOLMOD_LIBRARY} ${SUITESPARSECONFIG_LIBRARY})
 
+# PT-Scotch (libptscotch-dev, which PETSc's MatPartitioning calls): hpcontact resets its random
+# generator before each partition, so that the same graph always gets the same parts.
+find_path(PTSCOTCH_INCLUDE_DIR ptscotch.h PATH_SUFFIXES scotch REQUIRED)
+find_library(PTSCOTCH_LIBRARY ptscotch REQUIRED)
+add_library(hpcontact_ptscotch INTERFACE)
+target_include_directories(hpcontact_ptscotch INTERFACE ${PTSCOTCH_INCLUDE_DIR})
+target_link_libraries(hpcontact_ptscotch INTERFACE ${PTSCOTCH_LIBRARY})
+
 # The Gmsh API (libgmsh-dev) reads mesh files. It is loaded at run time (mesh/gmsh_api.hpp), so
 # only its header is used at build time, and the library's real file is where it is looked for
 # first.

@@ -6,7 +6,7 @@ include(CMakePackageConfigHelpers)
 install(TARGETS hpcontact_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 # The interface targets defined in cmake/Dependencies.cmake travel with the library: a static
 # library's private dependencies are link dependencies of whoever links it.
-install(TARGETS hpcontact hpcontact_cholmod hpcontact_gmsh hpcontact_warnings
+install(TARGETS hpcontact hpcontact_cholmod hpcontact_ptscotch hpcontact_gmsh hpcontact_warnings
         EXPORT hpcontactTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(DIRECTORY lib/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/hpcontact FILES_MATCHING PATTERN "*.hpp")

@@ -24,7 +24,7 @@ jobs=$(nproc 2>/dev/null || echo 2)
 # 1. Debian packages (the only source of dependencies; nothing is downloaded otherwise).
 packages=(build-essential cmake pkg-config libeigen3-dev petsc-dev slepc-dev libgsl-dev
           libmuparser-dev libcli11-dev libtomlplusplus-dev libfmt-dev nlohmann-json3-dev
-          libsuitesparse-dev libgtest-dev libgmock-dev libbenchmark-dev python3-matplotlib
+          libsuitesparse-dev libptscotch-dev libgtest-dev libgmock-dev libbenchmark-dev python3-matplotlib
           clang libclang-rt-14-dev clang-format libopenblas0-pthread openmpi-bin libgmsh-dev
           pybind11-dev python3-dev python3-numpy python3-pytest python3-meshio python3-vtk9)
 missing=()

@@ -2,7 +2,8 @@
 // substructuring, MUMPS and MATIS + BDDC must give CHOLMOD's solves and Schur complements B A⁻¹ Bᵀ (through the
 // trailing set, and by solves when B reaches outside it) on 1, 2 and 3 ranks, with the elements
 // split in strips or scattered (every unknown shared, ranks without interior, floating parts);
-// an indefinite matrix must fail on every rank with a clear message, not hang.
+// an indefinite matrix must fail on every rank with a clear message, not hang; PT-Scotch's split of
+// the cells over the ranks must be balanced and cut no more than coordinate bisection.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -22,10 +23,22 @@ double number_after(const std::string& text, const std::string& key) {
   return at == std::string::npos ? NAN : std::stod(text.substr(at + key.size() + 1));
 }
 
-std::string check_command(int ranks, const std::string& arguments) {
+std::string mpirun_command(int ranks, const std::string& program, const std::string& arguments) {
   return "env OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_THREADS=1 "
          "timeout 120 mpirun -n " +
-         std::to_string(ranks) + " --oversubscribe " HPCONTACT_FACTOR_CHECK " " + arguments;
+         std::to_string(ranks) + " --oversubscribe " + program + " " + arguments;
+}
+
+std::string check_command(int ranks, const std::string& arguments) {
+  return mpirun_command(ranks, HPCONTACT_FACTOR_CHECK, arguments);
+}
+
+// The number after `key` on the line that starts with `mesh method`.
+double partition_number(const std::string& output, const std::string& mesh, const std::string& method,
+                        const std::string& key) {
+  const auto line = output.find(mesh + " " + method + " ");
+  if (line == std::string::npos) return NAN;
+  return number_after(output.substr(line, output.find('\n', line) - line), key);
 }
 
 }  // namespace
@@ -74,6 +87,32 @@ TEST(DistributedFactor, SubstructuringMumpsAndBddcEqualCholmodOnEverySplit) {
           }
         }
       }
+}
+
+// PT-Scotch's parts (the distributed solvers' split of the cells): the same on every rank and on a
+// second call, every
+// cell in one of them, equal work to 2 %, and a cut no longer than coordinate bisection's by more
+// than 10 % (equal on the uniform square) and shorter on the unstructured annulus.
+TEST(DistributedFactor, GraphPartitionIsBalancedAndCutsLessThanBisection) {
+  for (int ranks : {2, 3, 4}) {
+    const auto run = run_command(mpirun_command(ranks, HPCONTACT_PARTITION_CHECK, HPCONTACT_TEST_DATA));
+    const std::string where = std::to_string(ranks) + " ranks";
+    ASSERT_EQ(run.exit_code, 0) << where << "\n" << run.output;
+    for (const char* mesh : {"square", "graded", "triangles", "annulus"}) {
+      const std::string at = where + ", " + mesh + "\n" + run.output;
+      EXPECT_EQ(partition_number(run.output, mesh, "graph", "outside"), 0) << at;
+      EXPECT_EQ(partition_number(run.output, mesh, "graph", "ranks_differ"), 0) << at;
+      EXPECT_EQ(partition_number(run.output, mesh, "graph", "repeat_differs"), 0) << at;
+      EXPECT_LE(partition_number(run.output, mesh, "graph", "imbalance"), 1.02) << at;
+      const double graph = partition_number(run.output, mesh, "graph", "cut_edges");
+      const double bisection = partition_number(run.output, mesh, "bisection", "cut_edges");
+      EXPECT_GT(graph, 0) << at;
+      EXPECT_LE(graph, 1.1 * bisection) << at;
+      if (std::string(mesh) == "annulus") {
+        EXPECT_LT(graph, 0.9 * bisection) << at;
+      }
+    }
+  }
 }
 
 // (BDDC on one rank is a direct solve of the one subdomain that does not check definiteness; the

@@ -376,7 +376,7 @@ TEST(Cli, ShardedSweepMergesIntoTheSerialCsv) {
 }
 
 // `mpirun -n 2 hpcontact solve` factorizes K and A_G over the ranks (by default substructuring:
-// the cells split by coordinate bisection, CHOLMOD per rank, a dense interface problem; and with
+// the cells split by PT-Scotch, CHOLMOD per rank, a dense interface problem; and with
 // MATIS + BDDC on 3 ranks, so that the parts meet at a cross point) and gives the serial run's
 // contact solution and α: every number of the boundary CSV to 1e-8 of its column's size, the
 // energies and α to 1e-10.
