@@ -1,17 +1,21 @@
 // Helper of test_07_distributed_factor, run under mpirun: partitions test meshes over the ranks by
-// recursive coordinate bisection (the baseline) and by PT-Scotch on the dual graph, and rank 0 prints, per mesh and
-// method, the cut (edges and vertices shared between parts), the largest part's weight over the mean, the smallest
-// part's cell count, and whether every rank holds the same partition.
+// recursive coordinate bisection, by PT-Scotch on the dual graph (twice) and by the toolkit's
+// choice of the two, and rank 0 prints per mesh and method the cut (edges and vertices shared
+// between parts), the largest part's weight over the mean, the smallest part's cell count,
+// whether every rank holds the same partition, whether a second call gave another one, and a hash
+// of the parts (to compare two runs).
 //
 //   partition_check MESH_DIR     (MESH_DIR holds annulus_order2.msh)
 #include <fmt/format.h>
 #include <mpi.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <string>
 
 #include "core/error.hpp"
 #include "core/petsc_session.hpp"
+#include "mesh/cell_partition.hpp"
 #include "mesh/gmsh_reader.hpp"
 #include "mesh/graph_partition.hpp"
 #include "mesh/point_grading.hpp"
@@ -22,41 +26,12 @@ using namespace hpcontact;
 
 namespace {
 
-// Assigns parts [first_part, first_part + parts) to cells[begin, end).
-void bisect(const std::vector<mesh::Point>& centroids, std::vector<int>& cells, int begin, int end, int first_part,
-            int parts, std::vector<int>& part_of_cell) {
-  if (parts == 1 || end - begin <= 1) {
-    for (int k = begin; k < end; ++k) part_of_cell[cells[k]] = first_part;
-    return;
-  }
-  mesh::Point low = centroids[cells[begin]], high = low;
-  for (int k = begin; k < end; ++k) low = low.cwiseMin(centroids[cells[k]]), high = high.cwiseMax(centroids[cells[k]]);
-  const int axis = (high - low)(0) >= (high - low)(1) ? 0 : 1;
-  const int left_parts = parts / 2;
-  const int middle = begin + static_cast<int>(static_cast<long long>(end - begin) * left_parts / parts);
-  std::nth_element(cells.begin() + begin, cells.begin() + middle, cells.begin() + end, [&](int a, int b) {
-    const double xa = centroids[a](axis), xb = centroids[b](axis);
-    return xa < xb || (xa == xb && a < b);
-  });
-  bisect(centroids, cells, begin, middle, first_part, left_parts, part_of_cell);
-  bisect(centroids, cells, middle, end, first_part + left_parts, parts - left_parts, part_of_cell);
-}
-
-// The baseline: recursive coordinate bisection of the cell centroids (the partition the toolkit used
-// before PT-Scotch), each split at the median along the longer side of the bounding box.
-std::vector<int> bisect_cells(const mesh::Mesh& mesh, int parts) {
-  HPC_VERIFY(parts >= 1, "a partition needs at least one part");
-  std::vector<mesh::Point> centroids(mesh.n_cells());
-  std::vector<int> cells(mesh.n_cells());
-  for (int c = 0; c < mesh.n_cells(); ++c) {
-    mesh::Point sum = mesh::Point::Zero();
-    for (int v : mesh.cell(c)) sum += mesh.vertex(v);
-    centroids[c] = sum / mesh.cell_size(c);
-    cells[c] = c;
-  }
-  std::vector<int> part_of_cell(mesh.n_cells(), 0);
-  bisect(centroids, cells, 0, mesh.n_cells(), 0, parts, part_of_cell);
-  return part_of_cell;
+// FNV-1a over the parts, in cell order: equal partitions in two processes print equal hashes (the
+// number stays below 2^53, so the test reads it back exactly).
+std::uint64_t parts_hash(const std::vector<int>& part_of_cell) {
+  std::uint64_t hash = 1469598103934665603ull;
+  for (int part : part_of_cell) hash = (hash ^ static_cast<std::uint64_t>(part)) * 1099511628211ull;
+  return hash >> 12;
 }
 
 void report(const std::string& name, const std::string& method, const mesh::Mesh& mesh,
@@ -84,16 +59,18 @@ void report(const std::string& name, const std::string& method, const mesh::Mesh
   if (mpi_rank_and_size().first == 0)
     fmt::print(
         "{} {} cut_edges {} cut_vertices {} imbalance {:.4f} smallest_part {} outside {} ranks_differ {} "
-        "repeat_differs {}\n",
+        "repeat_differs {} parts_hash {}\n",
         name, method, cut.edges, cut.vertices, *std::max_element(weight.begin(), weight.end()) / (total / ranks),
-        *std::min_element(cells.begin(), cells.end()), outside, any_differs, repeat_differs ? 1 : 0);
+        *std::min_element(cells.begin(), cells.end()), outside, any_differs, repeat_differs ? 1 : 0,
+        parts_hash(part_of_cell));
 }
 
 void compare(const std::string& name, const mesh::Mesh& mesh) {
-  report(name, "bisection", mesh, bisect_cells(mesh, mpi_rank_and_size().second), false);
+  report(name, "bisection", mesh, mesh::bisect_cells(mesh, mpi_rank_and_size().second), false);
   // Twice: a partition must be a function of the graph (K and A_G of one run share it).
   const std::vector<int> parts = mesh::partition_cells_by_graph(mesh);
   report(name, "graph", mesh, parts, mesh::partition_cells_by_graph(mesh) != parts);
+  report(name, "chosen", mesh, mesh::split_cells_over_ranks(mesh), false);
 }
 
 }  // namespace

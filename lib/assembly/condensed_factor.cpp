@@ -11,7 +11,7 @@
 #include "core/error.hpp"
 #include "core/petsc_session.hpp"
 #include "core/rank_agreement.hpp"
-#include "mesh/graph_partition.hpp"
+#include "mesh/cell_partition.hpp"
 
 namespace hpcontact::assembly {
 
@@ -77,7 +77,7 @@ CondensedFactor::CondensedFactor(std::unique_ptr<const CellSystem> system, const
   distributed_ = distribution != linalg::Distribution::serial;
   if (distributed_) {
     const int rank = mpi_rank_and_size().first;
-    const std::vector<int> part_of_cell = mesh::partition_cells_by_graph(system_->mesh());
+    const std::vector<int> part_of_cell = mesh::split_cells_over_ranks(system_->mesh());
     for (int c = 0; c < n_cells; ++c) contributes[c] = part_of_cell[c] == rank;
   }
   // Distributed, a degenerate cell fails on the rank that owns it: every rank ends the same way.

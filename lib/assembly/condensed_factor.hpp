@@ -30,8 +30,8 @@ namespace hpcontact::assembly {
 /// coupling B has no interior columns, B A⁻¹ Bᵀ = B_s S⁻¹ B_sᵀ: the Steklov–Poincaré condensation of SparseCholesky
 /// applies to S unchanged.
 ///
-/// Distributed (under mpirun): the cells are split into one part per rank by PT-Scotch on the dual
-/// graph (mesh/graph_partition.hpp: equal parts, fewest cut edges); each rank eliminates only its own part's cells and
+/// Distributed (under mpirun): the cells are split into one part per rank by coordinate bisection or
+/// PT-Scotch, whichever cuts fewer edges (mesh/cell_partition.hpp); each rank eliminates only its own part's cells and
 /// contributes their S_T to S; condensing a right-hand side, recovering the interior modes and the quadratic form add
 /// up the ranks' parts (vectors stay replicated). S is then factorized either by substructuring (default,
 /// SubstructuredCholesky): each rank factorizes the skeleton dofs only its part touches, and the

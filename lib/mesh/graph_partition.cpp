@@ -1,16 +1,17 @@
 // partition_cells_by_graph: the cells' dual graph as a PETSc MPIAdj matrix (one contiguous slice
-// of rows per rank), MatPartitioning with PT-Scotch, the parts gathered on every rank;
-// partition_interface: the edges and vertices shared between parts.
+// of rows per rank), MatPartitioning with PT-Scotch, the parts gathered on every rank.
 #include "mesh/graph_partition.hpp"
 
 #include <mpi.h>
 #include <petscmat.h>
-// ptscotch.h needs FILE and MPI declared first.
+
+#include <cstdio>  // ptscotch.h needs FILE (and MPI) declared first
+#include <cstdlib>
+// (the reset below reaches the generator PT-Scotch runs on because libptscotch, linked here, and
+// the copy PETSc loads are one library in the process)
 #include <ptscotch.h>
 
-#include <cstdio>
-#include <cstdlib>
-
+#include "core/error.hpp"
 #include "core/petsc_check.hpp"
 #include "core/petsc_handle.hpp"
 #include "core/petsc_session.hpp"
@@ -62,27 +63,10 @@ std::vector<int> partition_cells_by_graph(const Mesh& mesh) {
   std::vector<int> counts(ranks), displacements(ranks);
   for (int r = 0; r < ranks; ++r) displacements[r] = slice_begin(r), counts[r] = slice_begin(r + 1) - slice_begin(r);
   std::vector<int> part_of_cell(n_cells);
-  MPI_Allgatherv(local.data(), n_local, MPI_INT, part_of_cell.data(), counts.data(), displacements.data(), MPI_INT,
-                 PETSC_COMM_WORLD);
+  HPC_VERIFY(MPI_Allgatherv(local.data(), n_local, MPI_INT, part_of_cell.data(), counts.data(), displacements.data(),
+                            MPI_INT, PETSC_COMM_WORLD) == MPI_SUCCESS,
+             "gathering the cells' parts failed");
   return part_of_cell;
-}
-
-PartitionInterface partition_interface(const Mesh& mesh, const std::vector<int>& part_of_cell) {
-  PartitionInterface interface;
-  // A vertex is shared if two of its cells lie in different parts: remember one part per vertex.
-  std::vector<int> part_of_vertex(mesh.n_vertices(), -1);
-  std::vector<char> shared(mesh.n_vertices(), 0);
-  for (int c = 0; c < mesh.n_cells(); ++c)
-    for (int v : mesh.cell(c)) {
-      if (part_of_vertex[v] < 0) part_of_vertex[v] = part_of_cell[c];
-      if (part_of_vertex[v] != part_of_cell[c]) shared[v] = 1;
-    }
-  for (int v = 0; v < mesh.n_vertices(); ++v) interface.vertices += shared[v];
-  for (int e = 0; e < mesh.n_edges(); ++e) {
-    const auto& cells = mesh.edge_cells(e);
-    if (cells[1] >= 0 && part_of_cell[cells[0]] != part_of_cell[cells[1]]) ++interface.edges;
-  }
-  return interface;
 }
 
 }  // namespace hpcontact::mesh

@@ -1,0 +1,78 @@
+// bisect_cells: recursive coordinate bisection on cell centroids; partition_interface: the edges
+// and vertices shared between parts; split_cells_over_ranks: the shorter cut of bisection and
+// PT-Scotch.
+#include "mesh/cell_partition.hpp"
+
+#include <algorithm>
+
+#include "core/error.hpp"
+#include "core/petsc_session.hpp"
+#include "mesh/graph_partition.hpp"
+
+namespace hpcontact::mesh {
+
+namespace {
+
+// Assigns parts [first_part, first_part + parts) to cells[begin, end).
+void bisect(const std::vector<Point>& centroids, std::vector<int>& cells, int begin, int end, int first_part, int parts,
+            std::vector<int>& part_of_cell) {
+  if (parts == 1 || end - begin <= 1) {
+    for (int k = begin; k < end; ++k) part_of_cell[cells[k]] = first_part;
+    return;
+  }
+  Point low = centroids[cells[begin]], high = low;
+  for (int k = begin; k < end; ++k) low = low.cwiseMin(centroids[cells[k]]), high = high.cwiseMax(centroids[cells[k]]);
+  const int axis = (high - low)(0) >= (high - low)(1) ? 0 : 1;
+  const int left_parts = parts / 2;
+  const int middle = begin + static_cast<int>(static_cast<long long>(end - begin) * left_parts / parts);
+  std::nth_element(cells.begin() + begin, cells.begin() + middle, cells.begin() + end, [&](int a, int b) {
+    const double xa = centroids[a](axis), xb = centroids[b](axis);
+    return xa < xb || (xa == xb && a < b);
+  });
+  bisect(centroids, cells, begin, middle, first_part, left_parts, part_of_cell);
+  bisect(centroids, cells, middle, end, first_part + left_parts, parts - left_parts, part_of_cell);
+}
+
+}  // namespace
+
+std::vector<int> bisect_cells(const Mesh& mesh, int parts) {
+  HPC_VERIFY(parts >= 1, "a partition needs at least one part");
+  std::vector<Point> centroids(mesh.n_cells());
+  std::vector<int> cells(mesh.n_cells());
+  for (int c = 0; c < mesh.n_cells(); ++c) {
+    Point sum = Point::Zero();
+    for (int v : mesh.cell(c)) sum += mesh.vertex(v);
+    centroids[c] = sum / mesh.cell_size(c);
+    cells[c] = c;
+  }
+  std::vector<int> part_of_cell(mesh.n_cells(), 0);
+  bisect(centroids, cells, 0, mesh.n_cells(), 0, parts, part_of_cell);
+  return part_of_cell;
+}
+
+PartitionInterface partition_interface(const Mesh& mesh, const std::vector<int>& part_of_cell) {
+  PartitionInterface interface;
+  // A vertex is shared if two of its cells lie in different parts: remember one part per vertex.
+  std::vector<int> part_of_vertex(mesh.n_vertices(), -1);
+  std::vector<char> shared(mesh.n_vertices(), 0);
+  for (int c = 0; c < mesh.n_cells(); ++c)
+    for (int v : mesh.cell(c)) {
+      if (part_of_vertex[v] < 0) part_of_vertex[v] = part_of_cell[c];
+      if (part_of_vertex[v] != part_of_cell[c]) shared[v] = 1;
+    }
+  for (int v = 0; v < mesh.n_vertices(); ++v) interface.vertices += shared[v];
+  for (int e = 0; e < mesh.n_edges(); ++e) {
+    const auto& cells = mesh.edge_cells(e);
+    if (cells[1] >= 0 && part_of_cell[cells[0]] != part_of_cell[cells[1]]) ++interface.edges;
+  }
+  return interface;
+}
+
+std::vector<int> split_cells_over_ranks(const Mesh& mesh) {
+  std::vector<int> bisection = bisect_cells(mesh, mpi_rank_and_size().second);
+  std::vector<int> graph = partition_cells_by_graph(mesh);  // collective: every rank calls it
+  // Both partitions are the same on every rank, so every rank makes the same choice.
+  return partition_interface(mesh, graph).edges < partition_interface(mesh, bisection).edges ? graph : bisection;
+}
+
+}  // namespace hpcontact::mesh
