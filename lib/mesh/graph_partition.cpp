@@ -19,7 +19,8 @@
 namespace hpcontact::mesh {
 
 std::vector<int> partition_cells_by_graph(const Mesh& mesh) {
-  const auto [rank, ranks] = mpi_rank_and_size();
+  // (not a structured binding: clang 14 refuses to capture one in the lambda below)
+  const int rank = mpi_rank_and_size().first, ranks = mpi_rank_and_size().second;
   const int n_cells = mesh.n_cells();
   if (ranks == 1) return std::vector<int>(n_cells, 0);
   const auto slice_begin = [&](int r) { return static_cast<int>(static_cast<long long>(n_cells) * r / ranks); };
