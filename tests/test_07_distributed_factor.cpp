@@ -122,6 +122,27 @@ TEST(DistributedFactor, GraphPartitionIsBalancedAndRanksTakeTheShorterCut) {
   }
 }
 
+// The sweep's work queue: every value below N goes to exactly one rank, on 1 to 4 ranks; a rank
+// that exhausts the counter stops every rank from taking more.
+TEST(SharedCounter, HandsEveryValueToExactlyOneRankAndStopsWhenExhausted) {
+  for (int ranks : {1, 2, 4}) {
+    const std::string where = std::to_string(ranks) + " ranks";
+    const auto run = run_command(mpirun_command(ranks, HPCONTACT_COUNTER_CHECK, "400"));
+    ASSERT_EQ(run.exit_code, 0) << where << "\n" << run.output;
+    EXPECT_EQ(number_after(run.output, "taken"), 400) << where << "\n" << run.output;
+    EXPECT_EQ(number_after(run.output, "distinct"), 400) << where << "\n" << run.output;
+    EXPECT_EQ(number_after(run.output, "outside"), 0) << where << "\n" << run.output;
+    // Value 3 exhausts the counter: the values taken before, and at most one more per other
+    // rank (taken while the exhausting rank worked), each once.
+    const auto stopped = run_command(mpirun_command(ranks, HPCONTACT_COUNTER_CHECK, "400 3"));
+    ASSERT_EQ(stopped.exit_code, 0) << where << "\n" << stopped.output;
+    const double taken = number_after(stopped.output, "taken");
+    EXPECT_GE(taken, 4) << where << "\n" << stopped.output;
+    EXPECT_LE(taken, 4 + 2 * (ranks - 1)) << where << "\n" << stopped.output;
+    EXPECT_EQ(number_after(stopped.output, "distinct"), taken) << where << "\n" << stopped.output;
+  }
+}
+
 // (BDDC on one rank is a direct solve of the one subdomain that does not check definiteness; the
 // toolkit never uses it there: one rank takes the serial CHOLMOD path.)
 TEST(DistributedFactor, IndefiniteMatrixFailsOnEveryRankWithAClearMessage) {

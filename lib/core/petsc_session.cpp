@@ -61,6 +61,11 @@ PetscSession::PetscSession(const std::vector<std::string>& petsc_arguments, bool
 
 void PetscSession::initialize() {
   if (initialized_) return;
+  // PT-Scotch (the cells' split over ranks) runs threads whose scheduling and its running random
+  // generator make the parts of one graph differ between calls and runs; one thread (the ranks
+  // take the cores anyway; a user's own setting is kept) makes them a function of the graph. Set
+  // here, before MPI and PETSc start threads: setenv is unsafe beside a concurrent getenv.
+  setenv("SCOTCH_PTHREAD_NUMBER", "1", 0);
   int argc = static_cast<int>(storage_.size());
   char** argv = argv_.data();
   if (SlepcInitialize(&argc, &argv, nullptr, nullptr) != 0) throw std::runtime_error("SlepcInitialize failed");

@@ -6,7 +6,8 @@
 #include <petscmat.h>
 
 #include <cstdio>  // ptscotch.h needs FILE (and MPI) declared first
-#include <cstdlib>
+#include <stdexcept>
+#include <string>
 // (the reset below reaches the generator PT-Scotch runs on because libptscotch, linked here, and
 // the copy PETSc loads are one library in the process)
 #include <ptscotch.h>
@@ -15,6 +16,7 @@
 #include "core/petsc_check.hpp"
 #include "core/petsc_handle.hpp"
 #include "core/petsc_session.hpp"
+#include "core/rank_agreement.hpp"
 
 namespace hpcontact::mesh {
 
@@ -25,11 +27,20 @@ std::vector<int> partition_cells_by_graph(const Mesh& mesh) {
   if (ranks == 1) return std::vector<int>(n_cells, 0);
   const auto slice_begin = [&](int r) { return static_cast<int>(static_cast<long long>(n_cells) * r / ranks); };
   const int begin = slice_begin(rank), end = slice_begin(rank + 1), n_local = end - begin;
-  // The MPIAdj matrix takes ownership of its arrays, which must come from PetscMalloc.
+  // The MPIAdj matrix takes ownership of its arrays, which must come from PetscMalloc. A rank
+  // whose allocation fails must not leave the others waiting in MatCreateMPIAdj: all agree first.
   PetscInt *offsets = nullptr, *neighbours = nullptr, *weights = nullptr;
-  HPC_PETSC_CALL(PetscMalloc1(n_local + 1, &offsets));
-  HPC_PETSC_CALL(PetscMalloc1(4 * static_cast<std::size_t>(n_local) + 1, &neighbours));
-  HPC_PETSC_CALL(PetscMalloc1(n_local + 1, &weights));
+  run_on_all_ranks_agreeing([&] {
+    const bool allocated = PetscMalloc1(n_local + 1, &offsets) == 0 &&
+                           PetscMalloc1(4 * static_cast<std::size_t>(n_local) + 1, &neighbours) == 0 &&
+                           PetscMalloc1(n_local + 1, &weights) == 0;
+    if (!allocated) {
+      PetscFree(offsets);
+      PetscFree(neighbours);
+      PetscFree(weights);
+      throw std::runtime_error("out of memory for the cells' dual graph (" + std::to_string(n_local) + " cells)");
+    }
+  });
   offsets[0] = 0;
   for (int c = begin; c < end; ++c) {
     PetscInt count = offsets[c - begin];
@@ -50,9 +61,8 @@ std::vector<int> partition_cells_by_graph(const Mesh& mesh) {
   HPC_PETSC_CALL(MatPartitioningSetVertexWeights(partitioning.get(), weights));
   // Scotch's threads and its random generator, which runs on from call to call, make the parts
   // of one graph differ (K and A_G of one run, two runs of one scene: interface sizes 2284 to
-  // 2396 on a 45 056-cell annulus over 2 ranks). One thread (the ranks take the cores anyway; a
-  // user's own SCOTCH_PTHREAD_NUMBER is kept) and a reset make them a function of the graph.
-  setenv("SCOTCH_PTHREAD_NUMBER", "1", 0);
+  // 2396 on a 45 056-cell annulus over 2 ranks). One thread (SCOTCH_PTHREAD_NUMBER, set by
+  // PetscSession before MPI starts) and a reset make them a function of the graph.
   SCOTCH_randomReset();
   PetscHandle<IS, ISDestroy> parts;
   HPC_PETSC_CALL(MatPartitioningApply(partitioning.get(), parts.out()));

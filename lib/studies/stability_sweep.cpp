@@ -18,6 +18,7 @@
 #include "core/error.hpp"
 #include "core/petsc_session.hpp"
 #include "core/rank_agreement.hpp"
+#include "core/shared_counter.hpp"
 #include "driver/elastic_run.hpp"
 #include "driver/scene_discretization.hpp"
 #include "io/atomic_file.hpp"
@@ -172,7 +173,8 @@ std::vector<std::pair<int, std::string>> gather_rows_on_rank_zero(
 
 namespace {
 
-// What the points of the current level share: per (norm, ratio) the Gram ladder of the envelope
+// What the points of one level share (kept for every level a rank has run, since a rank may take
+// a level's groups in several turns; trace-sized): per (norm, ratio) the Gram ladder of the envelope
 // multiplier space, whose degree on each segment is the largest of the sweep's p_C there: every
 // point's G is a principal submatrix of it (norms::restrict_gram), so one Gram matrix per
 // reference level serves all p_C (and, for the extension norm, one reference at the sweep's
@@ -183,7 +185,6 @@ struct EnvelopeGram {
   std::unique_ptr<norms::GramLadder> ladder;
 };
 struct LevelGrams {
-  std::size_t level = 0;
   std::map<std::pair<infsup::GramNorm, std::size_t>, EnvelopeGram> envelopes;
 };
 
@@ -386,41 +387,46 @@ bool run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
     for (std::size_t g = 0; g < plan.groups.size(); ++g)
       if (whole.groups[g].owner != shard.index) plan.groups[g].todo = false;
   }
+  // The schedule on `size` ranks decides whether levels stay whole (sweep_work_units).
   schedule_sweep_groups(plan, size);
 
-  // 2. Every group this rank owns, saved durably when it is finished: an interrupted sweep resumes
-  // from the last finished (level, p). A failure on one rank (bad data at a level, a full disk)
-  // ends the run on every rank.
+  // 2. Units of groups, taken in turn by whichever rank is idle; every group saved durably when it
+  // is finished: an interrupted sweep resumes from the last finished (level, p). A failure on one
+  // rank (bad data at a level, a full disk) lets no rank take new work and ends the run on every
+  // rank.
   std::vector<std::pair<int, std::string>> new_rows;  // (point index, CSV line) under mpirun
-  LevelGrams grams;
-  int index = 0;
+  const auto units = sweep_work_units(plan);
+  SharedCounter next_unit;
+  std::map<std::size_t, LevelGrams> grams_of_level;
+  auto run_group = [&](const SweepGroup& g) {
+    LevelGrams& grams = grams_of_level[g.level];
+    const GroupMesh group(point_scene(sweep.levels[g.level].scene, run.points[g.first].p, -1, std::nullopt));
+    std::string group_lines;
+    for (std::size_t k = g.first; k < g.last; ++k) {
+      const SweepPoint& point = run.points[k];
+      if (rows.has(point.key())) continue;
+      const auto& ratio = run.ratios[point.ratio];
+      if (progress)
+        progress(static_cast<int>(k + 1), static_cast<int>(run.points.size()),
+                 fmt::format("{} {} p={} pC={} {}{}", point.problem, point.norm, point.reported_p, point.reported_pc,
+                             level_name(sweep, g.level), ratio ? " h/H=" + ratio->text : ""));
+      const std::string line = compute_point(run, point, group, grams);
+      rows.set(point.key(), line);
+      group_lines += line;
+      if (size > 1) new_rows.emplace_back(static_cast<int>(k), line);
+    }
+    if (size == 1)
+      io::write_file_atomically(alpha_csv, rows.content());
+    else if (!group_lines.empty())
+      append_durably(shard_path(alpha_csv, rank), group_lines);
+  };
   run_on_all_ranks_agreeing([&] {
-    for (const SweepGroup& g : plan.groups) {
-      if (!g.todo || g.owner != rank) {
-        index += static_cast<int>(g.last - g.first);
-        continue;
-      }
-      if (g.level != grams.level) grams = LevelGrams{g.level, {}};  // the last level's are not needed again
-      const GroupMesh group(point_scene(sweep.levels[g.level].scene, run.points[g.first].p, -1, std::nullopt));
-      std::string group_lines;
-      for (std::size_t k = g.first; k < g.last; ++k) {
-        const SweepPoint& point = run.points[k];
-        ++index;
-        if (rows.has(point.key())) continue;
-        const auto& ratio = run.ratios[point.ratio];
-        if (progress)
-          progress(index, static_cast<int>(run.points.size()),
-                   fmt::format("{} {} p={} pC={} {}{}", point.problem, point.norm, point.reported_p, point.reported_pc,
-                               level_name(sweep, g.level), ratio ? " h/H=" + ratio->text : ""));
-        const std::string line = compute_point(run, point, group, grams);
-        rows.set(point.key(), line);
-        group_lines += line;
-        if (size > 1) new_rows.emplace_back(static_cast<int>(k), line);
-      }
-      if (size == 1)
-        io::write_file_atomically(alpha_csv, rows.content());
-      else if (!group_lines.empty())
-        append_durably(shard_path(alpha_csv, rank), group_lines);
+    try {
+      for (long unit = next_unit.take(); unit < static_cast<long>(units.size()); unit = next_unit.take())
+        for (std::size_t g : units[static_cast<std::size_t>(unit)]) run_group(plan.groups[g]);
+    } catch (...) {
+      next_unit.exhaust(static_cast<long>(units.size()));
+      throw;
     }
   });
   // 3. Every rank's rows into alpha.csv (rank 0), in the serial order, and the shards removed

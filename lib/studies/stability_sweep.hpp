@@ -68,8 +68,9 @@ SweepShard parse_sweep_shard(const std::string& text, const std::string& origin)
 
 /// Runs every point (of `shard`) not already in `alpha_csv` (resumable), rewriting the file
 /// atomically after each group of points sharing (level, p). `progress(done, total, label)` is
-/// called before each point. Under mpirun the groups are distributed over the ranks of
-/// MPI_COMM_WORLD and rank 0 writes the rows in the serial order (the file is then written once,
+/// called before each point (`done`: the point's index). Under mpirun the ranks of MPI_COMM_WORLD
+/// take units of groups (whole levels or single groups, longest first: sweep_work_units) as they
+/// become idle, and rank 0 writes the rows in the serial order (the file is then written once,
 /// at the end). Returns whether alpha_csv holds every point of the sweep.
 bool run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::path& alpha_csv,
                          const std::function<void(int, int, const std::string&)>& progress = {}, SweepShard shard = {});

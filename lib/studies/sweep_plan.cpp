@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "studies/stability_sweep.hpp"
 #include "studies/sweep_rows.hpp"
@@ -128,8 +129,35 @@ double schedule_sweep_groups(SweepPlan& plan, int ranks) {
     group_owner[i] = owner;
   }
   const double by_groups = *std::max_element(load.begin(), load.end());
-  for (std::size_t i : todo) groups[i].owner = by_levels <= by_groups ? level_owner[groups[i].level] : group_owner[i];
+  plan.whole_levels = by_levels <= by_groups;
+  for (std::size_t i : todo) groups[i].owner = plan.whole_levels ? level_owner[groups[i].level] : group_owner[i];
   return std::min(by_levels, by_groups);
+}
+
+std::vector<std::vector<std::size_t>> sweep_work_units(const SweepPlan& plan) {
+  std::vector<std::vector<std::size_t>> units;
+  std::vector<double> cost;
+  std::map<std::size_t, std::size_t> unit_of_level;
+  for (std::size_t i = 0; i < plan.groups.size(); ++i) {
+    const SweepGroup& group = plan.groups[i];
+    if (!group.todo) continue;
+    const auto level_unit = unit_of_level.find(group.level);
+    std::size_t unit = units.size();
+    if (plan.whole_levels && level_unit != unit_of_level.end()) {
+      unit = level_unit->second;
+    } else {
+      units.emplace_back();
+      cost.push_back(plan.level_shared_cost[group.level]);
+      unit_of_level[group.level] = unit;
+    }
+    units[unit].push_back(i);
+    cost[unit] += group.cost;
+  }
+  std::vector<std::size_t> order(units.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::vector<std::vector<std::size_t>> sorted;
+  for (std::size_t k : longest_first(order, cost)) sorted.push_back(std::move(units[k]));
+  return sorted;
 }
 
 }  // namespace hpcontact::studies

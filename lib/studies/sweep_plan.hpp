@@ -1,7 +1,7 @@
 // Planning a stability sweep, without building anything: the points it computes (level × p ×
 // problem × norm × p_C × ratio), grouped by (level, p) because the points of a group share T_h
-// and one factorization of A_G, a cost estimate per group, and the groups scheduled on the MPI
-// ranks.
+// and one factorization of A_G, a cost estimate per group, the groups scheduled on the slices of
+// a sharded sweep, and the units of work the MPI ranks take in turn.
 #pragma once
 
 #include <map>
@@ -49,7 +49,7 @@ struct SweepGroup {
   bool todo = false;       ///< some point is not stored yet
   bool extension = false;  ///< some point to do uses the extension norm
   double cost = 0.0;       ///< estimated work of the points to do
-  int owner = 0;           ///< the rank that computes it
+  int owner = 0;           ///< the slice (--shard) that computes it, by schedule_sweep_groups
 };
 
 struct SweepPlan {
@@ -57,6 +57,8 @@ struct SweepPlan {
   /// Per level: the estimated work every rank that runs a group of the level repeats (the
   /// extension norm's reference); 0 when no group of the level needs it.
   std::vector<double> level_shared_cost;
+  /// Set by schedule_sweep_groups: whether its schedule keeps every level on one rank.
+  bool whole_levels = false;
 };
 
 /// Groups the points, skipping those whose key is in `done`, with cost estimates: the
@@ -65,11 +67,18 @@ struct SweepPlan {
 SweepPlan plan_sweep(const StabilitySweep& sweep, const std::vector<SweepPoint>& points,
                      const std::set<std::string>& done);
 
-/// Sets the owner of every group to do on `ranks` ranks, by whichever of two schedules finishes
+/// Sets the owner of every group to do on `ranks` processes (the slices of --shard; under mpirun
+/// only whether levels stay whole is used, see sweep_work_units), by whichever of two schedules finishes
 /// first by the estimates: whole levels longest first, each to the least loaded rank (no shared
 /// work repeated), or single groups longest first, each to the rank that would finish it first
 /// counting the level's shared work on a rank without a group of that level yet (better when
 /// there are fewer levels than ranks). Returns the estimated finishing time (the largest load).
 double schedule_sweep_groups(SweepPlan& plan, int ranks);
+
+/// The units of work that idle ranks take in turn under mpirun (a dynamic queue, so a group that
+/// takes longer than its estimate delays no other rank's work): whole levels when the plan's
+/// schedule keeps levels together (their shared work then done once), single groups otherwise;
+/// longest first by the estimates, shared work included. Each unit lists its groups in order.
+std::vector<std::vector<std::size_t>> sweep_work_units(const SweepPlan& plan);
 
 }  // namespace hpcontact::studies

@@ -1,0 +1,48 @@
+// SharedCounter: one long in an MPI window on rank 0, in a shared lock epoch for the counter's
+// lifetime, advanced by MPI_Fetch_and_op.
+#include "core/shared_counter.hpp"
+
+#include "core/error.hpp"
+#include "core/petsc_session.hpp"
+
+namespace hpcontact {
+
+SharedCounter::SharedCounter() {
+  const auto [rank, size] = mpi_rank_and_size();
+  if (size == 1) return;
+  const MPI_Aint bytes = rank == 0 ? static_cast<MPI_Aint>(sizeof(long)) : 0;
+  HPC_VERIFY(MPI_Win_allocate(bytes, sizeof(long), MPI_INFO_NULL, MPI_COMM_WORLD, &value_, &window_) == MPI_SUCCESS,
+             "MPI_Win_allocate failed");
+  if (rank == 0) *value_ = 0;
+  // Rank 0's initial value must be in place before any rank's first fetch-and-add.
+  MPI_Barrier(MPI_COMM_WORLD);
+  MPI_Win_lock_all(MPI_MODE_NOCHECK, window_);
+}
+
+SharedCounter::~SharedCounter() {
+  if (window_ == MPI_WIN_NULL) return;
+  MPI_Win_unlock_all(window_);
+  MPI_Win_free(&window_);
+}
+
+long SharedCounter::take() {
+  if (window_ == MPI_WIN_NULL) return local_++;
+  const long one = 1;
+  long before = 0;
+  HPC_VERIFY(MPI_Fetch_and_op(&one, &before, MPI_LONG, 0, 0, MPI_SUM, window_) == MPI_SUCCESS,
+             "MPI_Fetch_and_op failed");
+  MPI_Win_flush(0, window_);
+  return before;
+}
+
+void SharedCounter::exhaust(long end) {
+  if (window_ == MPI_WIN_NULL) {
+    local_ = end;
+    return;
+  }
+  long before = 0;
+  MPI_Fetch_and_op(&end, &before, MPI_LONG, 0, 0, MPI_REPLACE, window_);
+  MPI_Win_flush(0, window_);
+}
+
+}  // namespace hpcontact
