@@ -132,13 +132,13 @@ TEST(SharedCounter, HandsEveryValueToExactlyOneRankAndStopsWhenExhausted) {
     EXPECT_EQ(number_after(run.output, "taken"), 400) << where << "\n" << run.output;
     EXPECT_EQ(number_after(run.output, "distinct"), 400) << where << "\n" << run.output;
     EXPECT_EQ(number_after(run.output, "outside"), 0) << where << "\n" << run.output;
-    // Value 3 exhausts the counter: the values taken before, and at most one more per other
-    // rank (taken while the exhausting rank worked), each once.
+    // Value 3 exhausts the counter: exactly the values handed out before (0 .. 3 and any other
+    // rank's meanwhile) are taken, each once, and none after.
     const auto stopped = run_command(mpirun_command(ranks, HPCONTACT_COUNTER_CHECK, "400 3"));
     ASSERT_EQ(stopped.exit_code, 0) << where << "\n" << stopped.output;
     const double taken = number_after(stopped.output, "taken");
     EXPECT_GE(taken, 4) << where << "\n" << stopped.output;
-    EXPECT_LE(taken, 4 + 2 * (ranks - 1)) << where << "\n" << stopped.output;
+    EXPECT_EQ(number_after(stopped.output, "handed_out"), taken) << where << "\n" << stopped.output;
     EXPECT_EQ(number_after(stopped.output, "distinct"), taken) << where << "\n" << stopped.output;
   }
 }

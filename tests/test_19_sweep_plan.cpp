@@ -118,8 +118,8 @@ TEST(SweepPlan, ScheduleBalancesTheRanks) {
 }
 
 // The units idle ranks take under mpirun: whole levels when the schedule keeps levels together,
-// single groups otherwise, each group to do in exactly one unit, longest first (shared work
-// counted), groups in order within a unit; groups already stored are in none.
+// single groups otherwise, each group to do in exactly one unit, longest first on several ranks
+// (shared work counted), groups in order within a unit; groups already stored are in none.
 TEST(SweepPlan, WorkUnitsFollowTheScheduleLongestFirst) {
   SweepPlan shared{{{0, 1, 0, true, true, 1.0},
                     {1, 2, 0, true, true, 1.0},
@@ -129,10 +129,13 @@ TEST(SweepPlan, WorkUnitsFollowTheScheduleLongestFirst) {
                    {40.0, 50.0}};
   studies::schedule_sweep_groups(shared, 2);
   ASSERT_TRUE(shared.whole_levels);
-  const auto levels = studies::sweep_work_units(shared);
+  const auto levels = studies::sweep_work_units(shared, 2);
   ASSERT_EQ(levels.size(), 2u);
   EXPECT_EQ(levels[0], (std::vector<std::size_t>{2, 3}));  // level 1: 52 before level 0: 42
   EXPECT_EQ(levels[1], (std::vector<std::size_t>{0, 1}));
+  // One rank: the plan's order.
+  studies::schedule_sweep_groups(shared, 1);
+  EXPECT_EQ(studies::sweep_work_units(shared, 1), (std::vector<std::vector<std::size_t>>{{0, 1}, {2, 3}}));
 
   SweepPlan one_level{{{0, 1, 0, true, false, 2.0},
                        {1, 2, 0, true, false, 4.0},
@@ -141,7 +144,7 @@ TEST(SweepPlan, WorkUnitsFollowTheScheduleLongestFirst) {
                       {0.0}};
   studies::schedule_sweep_groups(one_level, 2);
   ASSERT_FALSE(one_level.whole_levels);
-  const auto groups = studies::sweep_work_units(one_level);
+  const auto groups = studies::sweep_work_units(one_level, 2);
   ASSERT_EQ(groups.size(), 3u);
   EXPECT_EQ(groups[0], (std::vector<std::size_t>{1}));
   EXPECT_EQ(groups[1], (std::vector<std::size_t>{3}));

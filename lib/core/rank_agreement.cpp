@@ -58,6 +58,9 @@ void run_on_all_ranks_agreeing(const std::function<void()>& work) {
   } catch (const std::exception& error) {
     code = exit_code_of(error);
     message = error.what();
+  } catch (...) {  // leaving one rank alone would hang the others in the reduction below
+    code = 1;
+    message = "an exception that is not a std::exception";
   }
   int worst = 0;
   MPI_Allreduce(&code, &worst, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);

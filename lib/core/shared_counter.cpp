@@ -13,10 +13,14 @@ SharedCounter::SharedCounter() {
   const MPI_Aint bytes = rank == 0 ? static_cast<MPI_Aint>(sizeof(long)) : 0;
   HPC_VERIFY(MPI_Win_allocate(bytes, sizeof(long), MPI_INFO_NULL, MPI_COMM_WORLD, &value_, &window_) == MPI_SUCCESS,
              "MPI_Win_allocate failed");
-  if (rank == 0) *value_ = 0;
-  // Rank 0's initial value must be in place before any rank's first fetch-and-add.
-  MPI_Barrier(MPI_COMM_WORLD);
   MPI_Win_lock_all(MPI_MODE_NOCHECK, window_);
+  // Rank 0's initial value must be in the window (synced into its public copy) before any rank's
+  // first fetch-and-add.
+  if (rank == 0) {
+    *value_ = 0;
+    MPI_Win_sync(window_);
+  }
+  MPI_Barrier(MPI_COMM_WORLD);
 }
 
 SharedCounter::~SharedCounter() {
@@ -35,14 +39,19 @@ long SharedCounter::take() {
   return before;
 }
 
-void SharedCounter::exhaust(long end) {
+long SharedCounter::exhaust(long end) {
   if (window_ == MPI_WIN_NULL) {
-    local_ = end;
-    return;
+    const long before = local_;
+    local_ += end;
+    return before;
   }
+  // An addition, like take(): concurrent accumulates on one location are atomic only with the
+  // same operation (the window's default accumulate_ops = same_op_no_op).
   long before = 0;
-  MPI_Fetch_and_op(&end, &before, MPI_LONG, 0, 0, MPI_REPLACE, window_);
+  HPC_VERIFY(MPI_Fetch_and_op(&end, &before, MPI_LONG, 0, 0, MPI_SUM, window_) == MPI_SUCCESS,
+             "MPI_Fetch_and_op failed");
   MPI_Win_flush(0, window_);
+  return before;
 }
 
 }  // namespace hpcontact

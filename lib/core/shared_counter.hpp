@@ -22,9 +22,10 @@ class SharedCounter {
   /// The counter's value before this call adds one: 0, 1, 2, ... over all ranks, each value
   /// handed to exactly one caller.
   long take();
-  /// Sets the counter past every unit (`end`), so that the other ranks take no new work: a failing
-  /// rank calls it so the run ends after the units in progress.
-  void exhaust(long end);
+  /// Adds `end` (the number of units) to the counter, so that no rank takes new work: a failing
+  /// rank calls it so the run ends after the units in progress. Returns the counter before, i.e.
+  /// how many values below `end` were handed out.
+  long exhaust(long end);
 
  private:
   MPI_Win window_ = MPI_WIN_NULL;

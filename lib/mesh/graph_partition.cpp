@@ -6,8 +6,6 @@
 #include <petscmat.h>
 
 #include <cstdio>  // ptscotch.h needs FILE (and MPI) declared first
-#include <stdexcept>
-#include <string>
 // (the reset below reaches the generator PT-Scotch runs on because libptscotch, linked here, and
 // the copy PETSc loads are one library in the process)
 #include <ptscotch.h>
@@ -30,17 +28,18 @@ std::vector<int> partition_cells_by_graph(const Mesh& mesh) {
   // The MPIAdj matrix takes ownership of its arrays, which must come from PetscMalloc. A rank
   // whose allocation fails must not leave the others waiting in MatCreateMPIAdj: all agree first.
   PetscInt *offsets = nullptr, *neighbours = nullptr, *weights = nullptr;
-  run_on_all_ranks_agreeing([&] {
-    const bool allocated = PetscMalloc1(n_local + 1, &offsets) == 0 &&
-                           PetscMalloc1(4 * static_cast<std::size_t>(n_local) + 1, &neighbours) == 0 &&
-                           PetscMalloc1(n_local + 1, &weights) == 0;
-    if (!allocated) {
-      PetscFree(offsets);
-      PetscFree(neighbours);
-      PetscFree(weights);
-      throw std::runtime_error("out of memory for the cells' dual graph (" + std::to_string(n_local) + " cells)");
-    }
-  });
+  try {
+    run_on_all_ranks_agreeing([&] {
+      HPC_PETSC_CALL(PetscMalloc1(n_local + 1, &offsets));
+      HPC_PETSC_CALL(PetscMalloc1(4 * static_cast<std::size_t>(n_local) + 1, &neighbours));
+      HPC_PETSC_CALL(PetscMalloc1(n_local + 1, &weights));
+    });
+  } catch (...) {  // every rank: those whose allocations succeeded free them too
+    PetscFree(offsets);
+    PetscFree(neighbours);
+    PetscFree(weights);
+    throw;
+  }
   offsets[0] = 0;
   for (int c = begin; c < end; ++c) {
     PetscInt count = offsets[c - begin];

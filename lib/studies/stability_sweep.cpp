@@ -173,8 +173,7 @@ std::vector<std::pair<int, std::string>> gather_rows_on_rank_zero(
 
 namespace {
 
-// What the points of one level share (kept for every level a rank has run, since a rank may take
-// a level's groups in several turns; trace-sized): per (norm, ratio) the Gram ladder of the envelope
+// What the points of one level share: per (norm, ratio) the Gram ladder of the envelope
 // multiplier space, whose degree on each segment is the largest of the sweep's p_C there: every
 // point's G is a principal submatrix of it (norms::restrict_gram), so one Gram matrix per
 // reference level serves all p_C (and, for the extension norm, one reference at the sweep's
@@ -395,9 +394,16 @@ bool run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
   // rank (bad data at a level, a full disk) lets no rank take new work and ends the run on every
   // rank.
   std::vector<std::pair<int, std::string>> new_rows;  // (point index, CSV line) under mpirun
-  const auto units = sweep_work_units(plan);
+  const auto units = sweep_work_units(plan, size);
   SharedCounter next_unit;
+  // A level's Gram ladders are kept until no unit left to take holds the level (units are taken
+  // in order), so a rank that takes a level's groups in several turns builds them once.
   std::map<std::size_t, LevelGrams> grams_of_level;
+  std::map<std::size_t, long> last_unit_of_level;
+  for (std::size_t u = 0; u < units.size(); ++u)
+    for (std::size_t g : units[u]) last_unit_of_level[plan.groups[g].level] = static_cast<long>(u);
+  // The progress count: points stored before and points this rank computed.
+  int done = static_cast<int>(std::ranges::count_if(run.points, [&](const SweepPoint& p) { return rows.has(p.key()); }));
   auto run_group = [&](const SweepGroup& g) {
     LevelGrams& grams = grams_of_level[g.level];
     const GroupMesh group(point_scene(sweep.levels[g.level].scene, run.points[g.first].p, -1, std::nullopt));
@@ -407,7 +413,7 @@ bool run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
       if (rows.has(point.key())) continue;
       const auto& ratio = run.ratios[point.ratio];
       if (progress)
-        progress(static_cast<int>(k + 1), static_cast<int>(run.points.size()),
+        progress(++done, static_cast<int>(run.points.size()),
                  fmt::format("{} {} p={} pC={} {}{}", point.problem, point.norm, point.reported_p, point.reported_pc,
                              level_name(sweep, g.level), ratio ? " h/H=" + ratio->text : ""));
       const std::string line = compute_point(run, point, group, grams);
@@ -422,8 +428,10 @@ bool run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
   };
   run_on_all_ranks_agreeing([&] {
     try {
-      for (long unit = next_unit.take(); unit < static_cast<long>(units.size()); unit = next_unit.take())
+      for (long unit = next_unit.take(); unit < static_cast<long>(units.size()); unit = next_unit.take()) {
+        std::erase_if(grams_of_level, [&](const auto& held) { return last_unit_of_level[held.first] < unit; });
         for (std::size_t g : units[static_cast<std::size_t>(unit)]) run_group(plan.groups[g]);
+      }
     } catch (...) {
       next_unit.exhaust(static_cast<long>(units.size()));
       throw;

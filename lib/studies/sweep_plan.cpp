@@ -134,7 +134,7 @@ double schedule_sweep_groups(SweepPlan& plan, int ranks) {
   return std::min(by_levels, by_groups);
 }
 
-std::vector<std::vector<std::size_t>> sweep_work_units(const SweepPlan& plan) {
+std::vector<std::vector<std::size_t>> sweep_work_units(const SweepPlan& plan, int ranks) {
   std::vector<std::vector<std::size_t>> units;
   std::vector<double> cost;
   std::map<std::size_t, std::size_t> unit_of_level;
@@ -153,6 +153,7 @@ std::vector<std::vector<std::size_t>> sweep_work_units(const SweepPlan& plan) {
     units[unit].push_back(i);
     cost[unit] += group.cost;
   }
+  if (ranks == 1) return units;
   std::vector<std::size_t> order(units.size());
   for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
   std::vector<std::vector<std::size_t>> sorted;

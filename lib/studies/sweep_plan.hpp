@@ -49,7 +49,7 @@ struct SweepGroup {
   bool todo = false;       ///< some point is not stored yet
   bool extension = false;  ///< some point to do uses the extension norm
   double cost = 0.0;       ///< estimated work of the points to do
-  int owner = 0;           ///< the slice (--shard) that computes it, by schedule_sweep_groups
+  int owner = 0;           ///< the process (a --shard slice) schedule_sweep_groups gives it
 };
 
 struct SweepPlan {
@@ -78,7 +78,9 @@ double schedule_sweep_groups(SweepPlan& plan, int ranks);
 /// The units of work that idle ranks take in turn under mpirun (a dynamic queue, so a group that
 /// takes longer than its estimate delays no other rank's work): whole levels when the plan's
 /// schedule keeps levels together (their shared work then done once), single groups otherwise;
-/// longest first by the estimates, shared work included. Each unit lists its groups in order.
-std::vector<std::vector<std::size_t>> sweep_work_units(const SweepPlan& plan);
+/// on several ranks longest first by the estimates, shared work included; on one rank in the
+/// plan's order (coarse levels first, as the rows are written). Each unit lists its groups in
+/// order.
+std::vector<std::vector<std::size_t>> sweep_work_units(const SweepPlan& plan, int ranks);
 
 }  // namespace hpcontact::studies
