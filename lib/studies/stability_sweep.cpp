@@ -403,7 +403,8 @@ bool run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
   for (std::size_t u = 0; u < units.size(); ++u)
     for (std::size_t g : units[u]) last_unit_of_level[plan.groups[g].level] = static_cast<long>(u);
   // The progress count: points stored before and points this rank computed.
-  int done = static_cast<int>(std::ranges::count_if(run.points, [&](const SweepPoint& p) { return rows.has(p.key()); }));
+  int done =
+      static_cast<int>(std::ranges::count_if(run.points, [&](const SweepPoint& p) { return rows.has(p.key()); }));
   auto run_group = [&](const SweepGroup& g) {
     LevelGrams& grams = grams_of_level[g.level];
     const GroupMesh group(point_scene(sweep.levels[g.level].scene, run.points[g.first].p, -1, std::nullopt));
