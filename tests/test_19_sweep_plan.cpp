@@ -42,9 +42,9 @@ double load_of(const SweepPlan& plan, int rank) {
   for (const auto& group : plan.groups)
     if (group.todo && group.owner == rank) {
       load += group.cost;
-      levels.insert(group.level);
+      levels.insert(group.share);
     }
-  for (std::size_t level : levels) load += plan.level_shared_cost[level];
+  for (std::size_t level : levels) load += plan.shared_cost[level];
   return load;
 }
 
@@ -72,7 +72,7 @@ TEST(SweepPlan, PointsAndGroups) {
       EXPECT_EQ(points[k].p, points[group.first].p);
     }
   }
-  EXPECT_GT(plan.level_shared_cost[1], plan.level_shared_cost[0]);
+  EXPECT_GT(plan.shared_cost[1], plan.shared_cost[0]);
   // Stored points are not planned again; a group with nothing left is not to do.
   std::set<std::string> done;
   for (std::size_t k = plan.groups[0].first; k < plan.groups[0].last; ++k) done.insert(points[k].key());
@@ -81,13 +81,44 @@ TEST(SweepPlan, PointsAndGroups) {
   EXPECT_TRUE(resumed.groups[1].todo);
 }
 
+// Split by ratio (several processes): per (level, p) one group per ratio, every point in exactly one
+// group, of its ratio; the shares are (level, ratio), each needing one extension reference (the
+// unsplit share of a level needs two, one per ratio); a stored ratio's group is not to do.
+TEST(SweepPlan, GroupsSplitByRatioShareOneReferenceEach) {
+  const auto sweep = two_level_sweep();
+  const auto points = studies::list_sweep_points(sweep);
+  const auto whole = studies::plan_sweep(sweep, points, {});
+  const auto plan = studies::plan_sweep(sweep, points, {}, true);
+  ASSERT_EQ(plan.groups.size(), 12u);
+  ASSERT_EQ(plan.shared_cost.size(), 4u);
+  std::vector<int> groups_of_point(points.size(), 0);
+  for (const auto& group : plan.groups) {
+    EXPECT_EQ(group.share, group.level * 2 + group.ratio);
+    for (std::size_t k = group.first; k < group.last; ++k)
+      if (group.holds(points[k])) {
+        ++groups_of_point[k];
+        EXPECT_EQ(points[k].ratio, group.ratio);
+        EXPECT_EQ(points[k].level, group.level);
+      }
+  }
+  EXPECT_TRUE(std::ranges::all_of(groups_of_point, [](int n) { return n == 1; }));
+  EXPECT_DOUBLE_EQ(plan.shared_cost[0], plan.shared_cost[1]);
+  EXPECT_DOUBLE_EQ(whole.shared_cost[0], 2 * plan.shared_cost[0]);
+  std::set<std::string> done;
+  for (std::size_t k = plan.groups[1].first; k < plan.groups[1].last; ++k)
+    if (plan.groups[1].holds(points[k])) done.insert(points[k].key());
+  const auto resumed = studies::plan_sweep(sweep, points, done, true);
+  EXPECT_TRUE(resumed.groups[0].todo);
+  EXPECT_FALSE(resumed.groups[1].todo);
+}
+
 // The schedule: one rank gets everything; two ranks split two equal levels one each, and split one
 // level's equal groups when nothing is shared; the estimate returned is the largest load.
 TEST(SweepPlan, ScheduleBalancesTheRanks) {
-  SweepPlan equal_levels{{{0, 1, 0, true, false, 5.0},
-                          {1, 2, 0, true, false, 5.0},
-                          {2, 3, 1, true, false, 5.0},
-                          {3, 4, 1, true, false, 5.0}},
+  SweepPlan equal_levels{{{0, 1, 0, 0, true, false, 5.0},
+                          {1, 2, 0, 0, true, false, 5.0},
+                          {2, 3, 1, 1, true, false, 5.0},
+                          {3, 4, 1, 1, true, false, 5.0}},
                          {0.0, 0.0}};
   SweepPlan serial = equal_levels;
   EXPECT_DOUBLE_EQ(studies::schedule_sweep_groups(serial, 1), 20.0);
@@ -96,11 +127,11 @@ TEST(SweepPlan, ScheduleBalancesTheRanks) {
   EXPECT_DOUBLE_EQ(load_of(equal_levels, 0), 10.0);
   EXPECT_DOUBLE_EQ(load_of(equal_levels, 1), 10.0);
 
-  SweepPlan one_level{{{0, 1, 0, true, false, 4.0},
-                       {1, 2, 0, true, false, 4.0},
-                       {2, 3, 0, true, false, 4.0},
-                       {3, 4, 0, true, false, 4.0},
-                       {4, 5, 0, false, false, 100.0}},
+  SweepPlan one_level{{{0, 1, 0, 0, true, false, 4.0},
+                       {1, 2, 0, 0, true, false, 4.0},
+                       {2, 3, 0, 0, true, false, 4.0},
+                       {3, 4, 0, 0, true, false, 4.0},
+                       {4, 5, 0, 0, false, false, 100.0}},
                       {0.0}};
   EXPECT_DOUBLE_EQ(studies::schedule_sweep_groups(one_level, 2), 8.0);
   EXPECT_DOUBLE_EQ(load_of(one_level, 0), 8.0);
@@ -108,9 +139,11 @@ TEST(SweepPlan, ScheduleBalancesTheRanks) {
 
   // Two levels whose shared work dominates: splitting a level would repeat it, so each level
   // stays whole on its own rank (52 each, where splitting groups would take 102).
-  SweepPlan shared{
-      {{0, 1, 0, true, true, 1.0}, {1, 2, 0, true, true, 1.0}, {2, 3, 1, true, true, 1.0}, {3, 4, 1, true, true, 1.0}},
-      {50.0, 50.0}};
+  SweepPlan shared{{{0, 1, 0, 0, true, true, 1.0},
+                    {1, 2, 0, 0, true, true, 1.0},
+                    {2, 3, 1, 1, true, true, 1.0},
+                    {3, 4, 1, 1, true, true, 1.0}},
+                   {50.0, 50.0}};
   EXPECT_DOUBLE_EQ(studies::schedule_sweep_groups(shared, 2), 52.0);
   EXPECT_EQ(shared.groups[0].owner, shared.groups[1].owner);
   EXPECT_EQ(shared.groups[2].owner, shared.groups[3].owner);
@@ -121,14 +154,14 @@ TEST(SweepPlan, ScheduleBalancesTheRanks) {
 // single groups otherwise, each group to do in exactly one unit, longest first on several ranks
 // (shared work counted), groups in order within a unit; groups already stored are in none.
 TEST(SweepPlan, WorkUnitsFollowTheScheduleLongestFirst) {
-  SweepPlan shared{{{0, 1, 0, true, true, 1.0},
-                    {1, 2, 0, true, true, 1.0},
-                    {2, 3, 1, true, true, 1.0},
-                    {3, 4, 1, true, true, 1.0},
-                    {4, 5, 1, false, true, 9.0}},
+  SweepPlan shared{{{0, 1, 0, 0, true, true, 1.0},
+                    {1, 2, 0, 0, true, true, 1.0},
+                    {2, 3, 1, 1, true, true, 1.0},
+                    {3, 4, 1, 1, true, true, 1.0},
+                    {4, 5, 1, 1, false, true, 9.0}},
                    {40.0, 50.0}};
   studies::schedule_sweep_groups(shared, 2);
-  ASSERT_TRUE(shared.whole_levels);
+  ASSERT_TRUE(shared.whole_shares);
   const auto levels = studies::sweep_work_units(shared, 2);
   ASSERT_EQ(levels.size(), 2u);
   EXPECT_EQ(levels[0], (std::vector<std::size_t>{2, 3}));  // level 1: 52 before level 0: 42
@@ -137,13 +170,13 @@ TEST(SweepPlan, WorkUnitsFollowTheScheduleLongestFirst) {
   studies::schedule_sweep_groups(shared, 1);
   EXPECT_EQ(studies::sweep_work_units(shared, 1), (std::vector<std::vector<std::size_t>>{{0, 1}, {2, 3}}));
 
-  SweepPlan one_level{{{0, 1, 0, true, false, 2.0},
-                       {1, 2, 0, true, false, 4.0},
-                       {2, 3, 0, false, false, 100.0},
-                       {3, 4, 0, true, false, 3.0}},
+  SweepPlan one_level{{{0, 1, 0, 0, true, false, 2.0},
+                       {1, 2, 0, 0, true, false, 4.0},
+                       {2, 3, 0, 0, false, false, 100.0},
+                       {3, 4, 0, 0, true, false, 3.0}},
                       {0.0}};
   studies::schedule_sweep_groups(one_level, 2);
-  ASSERT_FALSE(one_level.whole_levels);
+  ASSERT_FALSE(one_level.whole_shares);
   const auto groups = studies::sweep_work_units(one_level, 2);
   ASSERT_EQ(groups.size(), 3u);
   EXPECT_EQ(groups[0], (std::vector<std::size_t>{1}));

@@ -284,7 +284,8 @@ TEST(Cli, WorkPrecisionFitsTheReferenceAndEstimatesItsAccuracy) {
   EXPECT_FALSE(std::filesystem::exists(dir / "bad"));
 }
 
-// `mpirun -n 2 hpcontact sweep` distributes the (n, p) groups over the ranks and writes the same
+// `mpirun -n 4 hpcontact sweep` hands the groups (split by ratio: more ranks than levels) to the
+// ranks and writes the same
 // alpha.csv and verdicts.csv as a serial run (compared without the timing column). Both runs use
 // one BLAS thread per process, so that every floating-point operation is the same.
 TEST(Cli, SweepUnderMpirunWritesTheSerialCsv) {
@@ -298,10 +299,11 @@ TEST(Cli, SweepUnderMpirunWritesTheSerialCsv) {
   const auto serial = run_command(env + HPCONTACT_CLI " sweep " + (dir / "sweep.toml").string() + " --out " +
                                   (dir / "serial").string());
   ASSERT_EQ(serial.exit_code, 0) << serial.output;
-  const auto parallel = run_command(env + "mpirun -n 2 --oversubscribe " HPCONTACT_CLI " sweep " +
+  // 4 ranks on 3 levels: the groups are split by ratio (more processes than levels).
+  const auto parallel = run_command(env + "mpirun -n 4 --oversubscribe " HPCONTACT_CLI " sweep " +
                                     (dir / "sweep.toml").string() + " --out " + (dir / "parallel").string());
   ASSERT_EQ(parallel.exit_code, 0) << parallel.output;
-  EXPECT_NE(parallel.output.find("on 2 ranks"), std::string::npos) << parallel.output;
+  EXPECT_NE(parallel.output.find("on 4 ranks"), std::string::npos) << parallel.output;
   const std::string serial_alpha = without_seconds(dir / "serial" / "alpha.csv");
   EXPECT_EQ(std::count(serial_alpha.begin(), serial_alpha.end(), '\n'), 1 + 2 * 2 * 6 * 3 * 2);
   EXPECT_EQ(serial_alpha, without_seconds(dir / "parallel" / "alpha.csv"));
@@ -309,7 +311,8 @@ TEST(Cli, SweepUnderMpirunWritesTheSerialCsv) {
   EXPECT_EQ(std::string(std::istreambuf_iterator<char>(a), {}), std::string(std::istreambuf_iterator<char>(b), {}));
 }
 
-// `hpcontact sweep --shard i/N` on three independent processes (a batch job array) and `--merge`
+// `hpcontact sweep --shard i/N` on four independent processes (a batch job array; more than the
+// study's three levels, so the groups are split by ratio) and `--merge`
 // of their folders give the serial alpha.csv and verdicts.csv; a slice resumed after another
 // slice's rows are stored still owns the same groups; a missing slice is refused by name.
 TEST(Cli, ShardedSweepMergesIntoTheSerialCsv) {
@@ -320,10 +323,10 @@ TEST(Cli, ShardedSweepMergesIntoTheSerialCsv) {
   ASSERT_EQ(serial.exit_code, 0) << serial.output;
   std::string merge_dirs;
   int rows = 0;
-  for (int i = 0; i < 3; ++i) {
+  for (int i = 0; i < 4; ++i) {
     const auto out = dir / ("shard" + std::to_string(i));
     const auto slice = run_command(env + HPCONTACT_CLI " sweep " + study + " --shard " + std::to_string(i) +
-                                   "/3 --out " + out.string());
+                                   "/4 --out " + out.string());
     ASSERT_EQ(slice.exit_code, 0) << slice.output;
     EXPECT_FALSE(std::filesystem::exists(out / "verdicts.csv"));
     std::ifstream in(out / "alpha.csv");
@@ -343,7 +346,7 @@ TEST(Cli, ShardedSweepMergesIntoTheSerialCsv) {
   };
   const std::string slice1 = text_of(dir / "shard1" / "alpha.csv");
   const auto again =
-      run_command(env + HPCONTACT_CLI " sweep " + study + " --shard 1/3 --out " + (dir / "shard1").string());
+      run_command(env + HPCONTACT_CLI " sweep " + study + " --shard 1/4 --out " + (dir / "shard1").string());
   ASSERT_EQ(again.exit_code, 0) << again.output;
   EXPECT_EQ(text_of(dir / "shard1" / "alpha.csv"), slice1);
   const auto missing = run(" sweep " + study + " --merge " + (dir / "shard0").string() + " " +

@@ -49,30 +49,41 @@ std::map<std::pair<std::size_t, std::size_t>, std::set<int>> multiplier_degrees_
 }
 
 SweepPlan plan_sweep(const StabilitySweep& sweep, const std::vector<SweepPoint>& points,
-                     const std::set<std::string>& done) {
+                     const std::set<std::string>& done, bool split_ratios) {
   SweepPlan plan;
-  plan.level_shared_cost.assign(sweep.levels.size(), 0.0);
+  const std::size_t ratios = ratio_choices(sweep).size();
+  const bool split = split_ratios && ratios > 1;
+  plan.shared_cost.assign(sweep.levels.size() * (split ? ratios : 1), 0.0);
   const double largest_p = sweep.degrees.empty() ? 0.0 : *std::max_element(sweep.degrees.begin(), sweep.degrees.end());
   for (std::size_t first = 0; first < points.size();) {
-    SweepGroup group{first, first, points[first].level};
-    int todo_points = 0;
-    for (; group.last < points.size() && points[group.last].level == group.level &&
-           points[group.last].p == points[first].p;
-         ++group.last) {
-      if (done.contains(points[group.last].key())) continue;
-      group.todo = true;
-      ++todo_points;
-      group.extension = group.extension || points[group.last].gram == infsup::GramNorm::extension;
+    std::size_t last = first;
+    while (last < points.size() && points[last].level == points[first].level && points[last].p == points[first].p)
+      ++last;
+    const std::size_t level = points[first].level;
+    for (std::size_t r = 0; r < (split ? ratios : 1); ++r) {
+      SweepGroup group{first, last, level, split ? level * ratios + r : level};
+      if (split) group.ratio = r;
+      int todo_points = 0;
+      std::set<std::size_t> extension_ratios;
+      for (std::size_t k = first; k < last; ++k) {
+        if (!group.holds(points[k]) || done.contains(points[k].key())) continue;
+        group.todo = true;
+        ++todo_points;
+        if (points[k].gram == infsup::GramNorm::extension) extension_ratios.insert(points[k].ratio);
+      }
+      group.extension = !extension_ratios.empty();
+      const double cells = sweep.level_facts[level].cells, p = points[first].reported_p;
+      const double dofs = cells * p * p;
+      group.cost = std::pow(dofs, 1.2) + 0.05 * todo_points * dofs;
+      if (group.extension) {
+        const double largest = largest_p > 0 ? largest_p : p;
+        const double reference = std::pow(4.0 * cells * (largest + 2) * (largest + 2), 1.2);
+        auto& shared = plan.shared_cost[group.share];
+        shared = std::max(shared, reference * static_cast<double>(extension_ratios.size()));
+      }
+      plan.groups.push_back(group);
     }
-    const double cells = sweep.level_facts[group.level].cells, p = points[first].reported_p;
-    const double dofs = cells * p * p;
-    group.cost = std::pow(dofs, 1.2) + 0.05 * todo_points * dofs;
-    if (group.extension) {
-      const double largest = largest_p > 0 ? largest_p : p;
-      plan.level_shared_cost[group.level] = std::pow(4.0 * cells * (largest + 2) * (largest + 2), 1.2);
-    }
-    plan.groups.push_back(group);
-    first = group.last;
+    first = last;
   }
   return plan;
 }
@@ -88,67 +99,67 @@ std::vector<std::size_t> longest_first(std::vector<std::size_t> order, const std
 
 double schedule_sweep_groups(SweepPlan& plan, int ranks) {
   auto& groups = plan.groups;
-  const std::size_t levels = plan.level_shared_cost.size();
+  const std::size_t shares = plan.shared_cost.size();
   std::vector<std::size_t> todo;
-  std::vector<double> level_cost(levels, 0.0), group_cost;
+  std::vector<double> share_cost(shares, 0.0), group_cost;
   for (const auto& group : groups) group_cost.push_back(group.cost);
   for (std::size_t i = 0; i < groups.size(); ++i) {
     if (!groups[i].todo) continue;
     todo.push_back(i);
-    level_cost[groups[i].level] += groups[i].cost;
+    share_cost[groups[i].share] += groups[i].cost;
   }
-  std::vector<std::size_t> busy_levels;
-  for (std::size_t level = 0; level < levels; ++level)
-    if (level_cost[level] > 0) {
-      level_cost[level] += plan.level_shared_cost[level];
-      busy_levels.push_back(level);
+  std::vector<std::size_t> busy_shares;
+  for (std::size_t share = 0; share < shares; ++share)
+    if (share_cost[share] > 0) {
+      share_cost[share] += plan.shared_cost[share];
+      busy_shares.push_back(share);
     }
-  // (a) Whole levels.
+  // (a) Whole shares.
   std::vector<double> load(static_cast<std::size_t>(ranks), 0.0);
-  std::vector<int> level_owner(levels, 0);
-  for (std::size_t level : longest_first(busy_levels, level_cost)) {
-    level_owner[level] = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
-    load[static_cast<std::size_t>(level_owner[level])] += level_cost[level];
+  std::vector<int> share_owner(shares, 0);
+  for (std::size_t share : longest_first(busy_shares, share_cost)) {
+    share_owner[share] = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
+    load[static_cast<std::size_t>(share_owner[share])] += share_cost[share];
   }
-  const double by_levels = *std::max_element(load.begin(), load.end());
+  const double by_shares = *std::max_element(load.begin(), load.end());
   // (b) Single groups.
   std::fill(load.begin(), load.end(), 0.0);
   std::vector<int> group_owner(groups.size(), 0);
-  std::set<std::pair<int, std::size_t>> has_level;  // (rank, level)
+  std::set<std::pair<int, std::size_t>> has_share;  // (rank, share)
   for (std::size_t i : longest_first(todo, group_cost)) {
-    const std::size_t level = groups[i].level;
+    const std::size_t share = groups[i].share;
     auto finish = [&](int r) {
       return load[static_cast<std::size_t>(r)] + groups[i].cost +
-             (has_level.contains({r, level}) ? 0.0 : plan.level_shared_cost[level]);
+             (has_share.contains({r, share}) ? 0.0 : plan.shared_cost[share]);
     };
     int owner = 0;
     for (int r = 1; r < ranks; ++r)
       if (finish(r) < finish(owner)) owner = r;
     load[static_cast<std::size_t>(owner)] = finish(owner);
-    has_level.insert({owner, level});
+    has_share.insert({owner, share});
     group_owner[i] = owner;
   }
   const double by_groups = *std::max_element(load.begin(), load.end());
-  plan.whole_levels = by_levels <= by_groups;
-  for (std::size_t i : todo) groups[i].owner = plan.whole_levels ? level_owner[groups[i].level] : group_owner[i];
-  return std::min(by_levels, by_groups);
+  plan.whole_shares = by_shares <= by_groups;
+  for (std::size_t i : todo) groups[i].owner = plan.whole_shares ? share_owner[groups[i].share] : group_owner[i];
+  return std::min(by_shares, by_groups);
 }
 
 std::vector<std::vector<std::size_t>> sweep_work_units(const SweepPlan& plan, int ranks) {
   std::vector<std::vector<std::size_t>> units;
   std::vector<double> cost;
-  std::map<std::size_t, std::size_t> unit_of_level;
+  std::map<std::size_t, std::size_t> unit_of_share;
   for (std::size_t i = 0; i < plan.groups.size(); ++i) {
     const SweepGroup& group = plan.groups[i];
     if (!group.todo) continue;
-    const auto level_unit = unit_of_level.find(group.level);
+    const auto share_unit = unit_of_share.find(group.share);
     std::size_t unit = units.size();
-    if (plan.whole_levels && level_unit != unit_of_level.end()) {
-      unit = level_unit->second;
+    if (plan.whole_shares && share_unit != unit_of_share.end()) {
+      unit = share_unit->second;
     } else {
       units.emplace_back();
-      cost.push_back(plan.level_shared_cost[group.level]);
-      unit_of_level[group.level] = unit;
+      cost.push_back(plan.shared_cost[group.share]);
+      unit_of_share[group.share] = unit;
     }
     units[unit].push_back(i);
     cost[unit] += group.cost;

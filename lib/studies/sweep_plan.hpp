@@ -1,7 +1,8 @@
 // Planning a stability sweep, without building anything: the points it computes (level × p ×
 // problem × norm × p_C × ratio), grouped by (level, p) because the points of a group share T_h
-// and one factorization of A_G, a cost estimate per group, the groups scheduled on the slices of
-// a sharded sweep, and the units of work the MPI ranks take in turn.
+// and one factorization of A_G (and by ratio too on many processes), a cost estimate per group,
+// the groups scheduled on the slices of a sharded sweep, and the units of work the MPI ranks
+// take in turn.
 #pragma once
 
 #include <map>
@@ -42,42 +43,52 @@ std::vector<SweepPoint> list_sweep_points(const StabilitySweep& sweep);
 std::map<std::pair<std::size_t, std::size_t>, std::set<int>> multiplier_degrees_used(
     const std::vector<SweepPoint>& points);
 
-/// Consecutive points sharing (level, p).
+/// Points sharing (level, p), consecutive in alpha.csv; split by ratio (only the points of one
+/// ratio) when more processes than levels run the sweep, so that the extension norm's references,
+/// which depend on the level and the ratio, are built once each.
 struct SweepGroup {
   std::size_t first = 0, last = 0;  ///< points [first, last)
   std::size_t level = 0;
+  std::size_t share = 0;   ///< the shared work it needs: index into SweepPlan::shared_cost
   bool todo = false;       ///< some point is not stored yet
   bool extension = false;  ///< some point to do uses the extension norm
   double cost = 0.0;       ///< estimated work of the points to do
   int owner = 0;           ///< the process (a --shard slice) schedule_sweep_groups gives it
+  /// The ratio index of its points, or every_ratio.
+  std::size_t ratio = every_ratio;
+  static constexpr std::size_t every_ratio = static_cast<std::size_t>(-1);
+  /// Whether point k (of [first, last)) belongs to the group.
+  bool holds(const SweepPoint& point) const { return ratio == every_ratio || point.ratio == ratio; }
 };
 
 struct SweepPlan {
   std::vector<SweepGroup> groups;
-  /// Per level: the estimated work every rank that runs a group of the level repeats (the
-  /// extension norm's reference); 0 when no group of the level needs it.
-  std::vector<double> level_shared_cost;
-  /// Set by schedule_sweep_groups: whether its schedule keeps every level on one rank.
-  bool whole_levels = false;
+  /// Per share (a level, or a (level, ratio) when the groups are split by ratio): the estimated
+  /// work every rank that runs a group of the share repeats (the extension norm's references); 0
+  /// when no group of it needs them.
+  std::vector<double> shared_cost;
+  /// Set by schedule_sweep_groups: whether its schedule keeps every share on one rank.
+  bool whole_shares = false;
 };
 
-/// Groups the points, skipping those whose key is in `done`, with cost estimates: the
-/// factorizations grow like (dofs)^1.2 (dofs ~ cells p²), each point adds a little, the extension
-/// norm's reference (~ 4 cells (p + 2)² dofs at the sweep's largest p) is shared by a level.
+/// Groups the points, skipping those whose key is in `done`, split by ratio if `split_ratios`,
+/// with cost estimates: the factorizations grow like (dofs)^1.2 (dofs ~ cells p²), each point
+/// adds a little, the extension norm's references (~ 4 cells (p + 2)² dofs at the sweep's
+/// largest p, one per ratio) are shared by a level's groups of the ratio.
 SweepPlan plan_sweep(const StabilitySweep& sweep, const std::vector<SweepPoint>& points,
-                     const std::set<std::string>& done);
+                     const std::set<std::string>& done, bool split_ratios = false);
 
 /// Sets the owner of every group to do on `ranks` processes (the slices of --shard; under mpirun
-/// only whether levels stay whole is used, see sweep_work_units), by whichever of two schedules finishes
-/// first by the estimates: whole levels longest first, each to the least loaded rank (no shared
-/// work repeated), or single groups longest first, each to the rank that would finish it first
-/// counting the level's shared work on a rank without a group of that level yet (better when
-/// there are fewer levels than ranks). Returns the estimated finishing time (the largest load).
+/// only whether shares stay whole is used, see sweep_work_units), by whichever of two schedules finishes
+/// first by the estimates: whole shares (levels, or (level, ratio)) longest first, each to the least loaded rank (no
+/// shared work repeated), or single groups longest first, each to the rank that would finish it first counting the
+/// share's work on a rank without a group of that share yet (better when there are fewer shares than ranks). Returns
+/// the estimated finishing time (the largest load).
 double schedule_sweep_groups(SweepPlan& plan, int ranks);
 
 /// The units of work that idle ranks take in turn under mpirun (a dynamic queue, so a group that
-/// takes longer than its estimate delays no other rank's work): whole levels when the plan's
-/// schedule keeps levels together (their shared work then done once), single groups otherwise;
+/// takes longer than its estimate delays no other rank's work): whole shares when the plan's
+/// schedule keeps them together (their shared work then done once), single groups otherwise;
 /// on several ranks longest first by the estimates, shared work included; on one rank in the
 /// plan's order (coarse levels first, as the rows are written). Each unit lists its groups in
 /// order.
