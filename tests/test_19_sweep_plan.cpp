@@ -102,14 +102,30 @@ TEST(SweepPlan, GroupsSplitByRatioShareOneReferenceEach) {
       }
   }
   EXPECT_TRUE(std::ranges::all_of(groups_of_point, [](int n) { return n == 1; }));
-  EXPECT_DOUBLE_EQ(plan.shared_cost[0], plan.shared_cost[1]);
   EXPECT_DOUBLE_EQ(whole.shared_cost[0], 2 * plan.shared_cost[0]);
+  EXPECT_GT(plan.shared_cost[2], plan.shared_cost[0]);
+  // Resuming: the same groups (a slice maps them by index), a stored ratio's group not to do; the
+  // unsplit level still needs the references of every ratio some point to do uses.
   std::set<std::string> done;
   for (std::size_t k = plan.groups[1].first; k < plan.groups[1].last; ++k)
     if (plan.groups[1].holds(points[k])) done.insert(points[k].key());
   const auto resumed = studies::plan_sweep(sweep, points, done, true);
+  ASSERT_EQ(resumed.groups.size(), plan.groups.size());
+  for (std::size_t g = 0; g < plan.groups.size(); ++g) {
+    EXPECT_EQ(resumed.groups[g].first, plan.groups[g].first);
+    EXPECT_EQ(resumed.groups[g].ratio, plan.groups[g].ratio);
+  }
   EXPECT_TRUE(resumed.groups[0].todo);
   EXPECT_FALSE(resumed.groups[1].todo);
+  // Level 0 with p = 1's ratio-0 points, p = 2's ratio-1 points and all of p = 3 stored: p = 1
+  // still needs ratio 1's reference and p = 2 ratio 0's, so the level needs both.
+  std::set<std::string> mixed;
+  for (const auto& point : points)
+    if (point.level == 0 && ((point.reported_p == 1 && point.ratio == 0) ||
+                             (point.reported_p == 2 && point.ratio == 1) || point.reported_p == 3))
+      mixed.insert(point.key());
+  const auto mixed_whole = studies::plan_sweep(sweep, points, mixed);
+  EXPECT_DOUBLE_EQ(mixed_whole.shared_cost[0], whole.shared_cost[0]);
 }
 
 // The schedule: one rank gets everything; two ranks split two equal levels one each, and split one

@@ -312,7 +312,7 @@ TEST(Cli, SweepUnderMpirunWritesTheSerialCsv) {
 }
 
 // `hpcontact sweep --shard i/N` on four independent processes (a batch job array; more than the
-// study's three levels, so the groups are split by ratio) and `--merge`
+// study's three levels, so the groups are split by ratio) and on three (whole groups), and `--merge`
 // of their folders give the serial alpha.csv and verdicts.csv; a slice resumed after another
 // slice's rows are stored still owns the same groups; a missing slice is refused by name.
 TEST(Cli, ShardedSweepMergesIntoTheSerialCsv) {
@@ -359,6 +359,18 @@ TEST(Cli, ShardedSweepMergesIntoTheSerialCsv) {
   EXPECT_EQ(serial_alpha, without_seconds(dir / "merged" / "alpha.csv"));
   std::ifstream a(dir / "serial" / "verdicts.csv"), b(dir / "merged" / "verdicts.csv");
   EXPECT_EQ(std::string(std::istreambuf_iterator<char>(a), {}), std::string(std::istreambuf_iterator<char>(b), {}));
+  // Three slices (no more than the levels: whole (n, p) groups) merge into the serial file too.
+  std::string whole_dirs;
+  for (int i = 0; i < 3; ++i) {
+    const auto out = dir / ("whole" + std::to_string(i));
+    const auto slice = run_command(env + HPCONTACT_CLI " sweep " + study + " --shard " + std::to_string(i) +
+                                   "/3 --out " + out.string());
+    ASSERT_EQ(slice.exit_code, 0) << slice.output;
+    whole_dirs += " " + out.string();
+  }
+  const auto whole = run(" sweep " + study + " --merge" + whole_dirs + " --out " + (dir / "merged_whole").string());
+  ASSERT_EQ(whole.exit_code, 0) << whole.output;
+  EXPECT_EQ(serial_alpha, without_seconds(dir / "merged_whole" / "alpha.csv"));
   // A folder repeating slice 0's points with other numbers: the first folder's rows are kept, with a
   // warning naming one such point.
   std::filesystem::create_directories(dir / "conflict");

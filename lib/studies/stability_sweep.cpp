@@ -388,6 +388,7 @@ bool run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
     // The shard's groups come from the plan of the whole sweep, so they do not move when this
     // shard (or another) resumes with part of its rows stored.
     SweepPlan whole = plan_sweep(sweep, run.points, {}, split_ratios);
+    HPC_VERIFY(whole.groups.size() == plan.groups.size(), "a sweep's groups must not depend on its stored rows");
     schedule_sweep_groups(whole, shard.count);
     for (std::size_t g = 0; g < plan.groups.size(); ++g)
       if (whole.groups[g].owner != shard.index) plan.groups[g].todo = false;
@@ -396,7 +397,7 @@ bool run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
   schedule_sweep_groups(plan, size);
 
   // 2. Units of groups, taken in turn by whichever rank is idle; every group saved durably when it
-  // is finished: an interrupted sweep resumes from the last finished (level, p). A failure on one
+  // is finished: an interrupted sweep resumes from the last finished group. A failure on one
   // rank (bad data at a level, a full disk) lets no rank take new work and ends the run on every
   // rank.
   std::vector<std::pair<int, std::string>> new_rows;  // (point index, CSV line) under mpirun
@@ -408,9 +409,14 @@ bool run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
   std::map<std::size_t, long> last_unit_of_level;
   for (std::size_t u = 0; u < units.size(); ++u)
     for (std::size_t g : units[u]) last_unit_of_level[plan.groups[g].level] = static_cast<long>(u);
-  // The progress count: points stored before and points this rank computed.
+  // The progress count: points stored before and points this process computed, of those stored and
+  // those to do in this run (a slice's own; under mpirun all, of which rank 0 computes a share).
   int done =
       static_cast<int>(std::ranges::count_if(run.points, [&](const SweepPoint& p) { return rows.has(p.key()); }));
+  int total = done;
+  for (const SweepGroup& g : plan.groups)
+    for (std::size_t k = g.first; g.todo && k < g.last; ++k)
+      total += g.holds(run.points[k]) && !rows.has(run.points[k].key());
   auto run_group = [&](const SweepGroup& g) {
     LevelGrams& grams = grams_of_level[g.level];
     const GroupMesh group(point_scene(sweep.levels[g.level].scene, run.points[g.first].p, -1, std::nullopt));
@@ -420,7 +426,7 @@ bool run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
       if (!g.holds(point) || rows.has(point.key())) continue;
       const auto& ratio = run.ratios[point.ratio];
       if (progress)
-        progress(++done, static_cast<int>(run.points.size()),
+        progress(++done, total,
                  fmt::format("{} {} p={} pC={} {}{}", point.problem, point.norm, point.reported_p, point.reported_pc,
                              level_name(sweep, g.level), ratio ? " h/H=" + ratio->text : ""));
       const std::string line = compute_point(run, point, group, grams);

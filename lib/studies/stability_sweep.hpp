@@ -69,7 +69,8 @@ SweepShard parse_sweep_shard(const std::string& text, const std::string& origin)
 /// Runs every point (of `shard`) not already in `alpha_csv` (resumable), rewriting the file
 /// atomically after each group of points sharing (level, p). `progress(done, total, label)` is
 /// called before each point (`done`: the points stored before and those this process computed,
-/// this one included). Under mpirun the ranks of MPI_COMM_WORLD
+/// this one included; `total`: those stored and those to do in this run, a slice's own; under
+/// mpirun rank 0 computes only a share of them). Under mpirun the ranks of MPI_COMM_WORLD
 /// take units of groups (whole levels or single groups, longest first: sweep_work_units) as they
 /// become idle, and rank 0 writes the rows in the serial order (the file is then written once,
 /// at the end). Returns whether alpha_csv holds every point of the sweep.

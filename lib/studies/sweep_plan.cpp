@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 
 #include "studies/stability_sweep.hpp"
 #include "studies/sweep_rows.hpp"
@@ -55,6 +56,8 @@ SweepPlan plan_sweep(const StabilitySweep& sweep, const std::vector<SweepPoint>&
   const bool split = split_ratios && ratios > 1;
   plan.shared_cost.assign(sweep.levels.size() * (split ? ratios : 1), 0.0);
   const double largest_p = sweep.degrees.empty() ? 0.0 : *std::max_element(sweep.degrees.begin(), sweep.degrees.end());
+  // Per share: the ratios whose extension references some point to do needs (one each).
+  std::vector<std::set<std::size_t>> extension_ratios(plan.shared_cost.size());
   for (std::size_t first = 0; first < points.size();) {
     std::size_t last = first;
     while (last < points.size() && points[last].level == points[first].level && points[last].p == points[first].p)
@@ -64,22 +67,22 @@ SweepPlan plan_sweep(const StabilitySweep& sweep, const std::vector<SweepPoint>&
       SweepGroup group{first, last, level, split ? level * ratios + r : level};
       if (split) group.ratio = r;
       int todo_points = 0;
-      std::set<std::size_t> extension_ratios;
       for (std::size_t k = first; k < last; ++k) {
         if (!group.holds(points[k]) || done.contains(points[k].key())) continue;
         group.todo = true;
         ++todo_points;
-        if (points[k].gram == infsup::GramNorm::extension) extension_ratios.insert(points[k].ratio);
+        if (points[k].gram == infsup::GramNorm::extension) {
+          group.extension = true;
+          extension_ratios[group.share].insert(points[k].ratio);
+        }
       }
-      group.extension = !extension_ratios.empty();
       const double cells = sweep.level_facts[level].cells, p = points[first].reported_p;
       const double dofs = cells * p * p;
       group.cost = std::pow(dofs, 1.2) + 0.05 * todo_points * dofs;
       if (group.extension) {
         const double largest = largest_p > 0 ? largest_p : p;
         const double reference = std::pow(4.0 * cells * (largest + 2) * (largest + 2), 1.2);
-        auto& shared = plan.shared_cost[group.share];
-        shared = std::max(shared, reference * static_cast<double>(extension_ratios.size()));
+        plan.shared_cost[group.share] = reference * static_cast<double>(extension_ratios[group.share].size());
       }
       plan.groups.push_back(group);
     }
