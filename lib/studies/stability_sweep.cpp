@@ -270,57 +270,6 @@ std::string compute_point(const SweepRun& run, const SweepPoint& point, const Gr
   return text.substr(text.find('\n') + 1);
 }
 
-// A row of alpha.csv without its last column (the seconds, which differ between runs).
-std::string without_seconds(const std::string& line) { return line.substr(0, line.rfind(',')); }
-
-// The rows of alpha.csv: those stored by an earlier run (validated: bad or foreign rows are
-// computed again) and the new ones, always written in the order of the points.
-class AlphaRows {
- public:
-  explicit AlphaRows(const std::vector<SweepPoint>& points) {
-    for (std::size_t k = 0; k < points.size(); ++k) {
-      index_of_key_[points[k].key()] = k;
-      keys_.insert(points[k].key());
-    }
-  }
-  /// Adds the valid rows stored in alpha_csv and the per-rank shards beside it; a point already
-  /// held keeps its row.
-  void read(const std::filesystem::path& alpha_csv, bool warn) {
-    rows_.merge(read_stored_rows(alpha_csv, keys_, warn));
-  }
-  /// Adds the rows of one slice's folder; returns the keys it holds that an earlier folder already
-  /// gave with other numbers (all columns but the seconds), which keep the earlier row.
-  std::vector<std::string> merge_slice(const std::filesystem::path& alpha_csv) {
-    std::vector<std::string> conflicts;
-    for (auto& [key, line] : read_stored_rows(alpha_csv, keys_, true, StoredRowsUse::merge)) {
-      const auto [held, inserted] = rows_.emplace(key, line);
-      if (!inserted && without_seconds(held->second) != without_seconds(line)) conflicts.push_back(key);
-    }
-    return conflicts;
-  }
-  bool has(const std::string& key) const { return rows_.contains(key); }
-  std::set<std::string> keys() const {
-    std::set<std::string> keys;
-    for (const auto& [key, line] : rows_) keys.insert(key);
-    return keys;
-  }
-  void set(const std::string& key, const std::string& line) { rows_[key] = line; }
-  std::size_t index_of(const std::string& key) const { return index_of_key_.at(key); }
-  std::string content() const {
-    std::vector<std::pair<std::size_t, const std::string*>> lines;
-    for (const auto& [key, line] : rows_) lines.emplace_back(index_of_key_.at(key), &line);
-    std::sort(lines.begin(), lines.end());
-    std::string content = io::CsvTable(alpha_columns()).to_string();
-    for (const auto& [index, line] : lines) content += *line;
-    return content;
-  }
-
- private:
-  std::set<std::string> keys_;
-  std::map<std::string, std::size_t> index_of_key_;
-  std::map<std::string, std::string> rows_;
-};
-
 }  // namespace
 
 SweepShard parse_sweep_shard(const std::string& text, const std::string& origin) {

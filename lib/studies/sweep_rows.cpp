@@ -1,4 +1,4 @@
-// Stored sweep rows: validated reading, durable appending, the folder lock.
+// Stored sweep rows: validated reading, durable appending, the folder lock; the rows a run holds.
 #include "studies/sweep_rows.hpp"
 
 #include <fcntl.h>
@@ -6,12 +6,14 @@
 #include <sys/file.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <fstream>
 #include <sstream>
 
 #include "core/error.hpp"
+#include "io/csv_writer.hpp"
 #include "studies/stability_sweep.hpp"
 
 namespace hpcontact::studies {
@@ -174,6 +176,48 @@ FolderLock::FolderLock(const std::filesystem::path& folder) {
 
 FolderLock::~FolderLock() {
   if (fd_ >= 0) close(fd_);  // releases the lock
+}
+
+namespace {
+
+// A row of alpha.csv without its last column (the seconds, which differ between runs).
+std::string without_seconds(const std::string& line) { return line.substr(0, line.rfind(',')); }
+
+}  // namespace
+
+AlphaRows::AlphaRows(const std::vector<SweepPoint>& points) {
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    index_of_key_[points[k].key()] = k;
+    keys_.insert(points[k].key());
+  }
+}
+
+void AlphaRows::read(const std::filesystem::path& alpha_csv, bool warn) {
+  rows_.merge(read_stored_rows(alpha_csv, keys_, warn));
+}
+
+std::vector<std::string> AlphaRows::merge_slice(const std::filesystem::path& alpha_csv) {
+  std::vector<std::string> conflicts;
+  for (auto& [key, line] : read_stored_rows(alpha_csv, keys_, true, StoredRowsUse::merge)) {
+    const auto [held, inserted] = rows_.emplace(key, line);
+    if (!inserted && without_seconds(held->second) != without_seconds(line)) conflicts.push_back(key);
+  }
+  return conflicts;
+}
+
+std::set<std::string> AlphaRows::keys() const {
+  std::set<std::string> keys;
+  for (const auto& [key, line] : rows_) keys.insert(key);
+  return keys;
+}
+
+std::string AlphaRows::content() const {
+  std::vector<std::pair<std::size_t, const std::string*>> lines;
+  for (const auto& [key, line] : rows_) lines.emplace_back(index_of_key_.at(key), &line);
+  std::sort(lines.begin(), lines.end());
+  std::string content = io::CsvTable(alpha_columns()).to_string();
+  for (const auto& [index, line] : lines) content += *line;
+  return content;
 }
 
 }  // namespace hpcontact::studies

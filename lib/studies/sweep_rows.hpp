@@ -1,6 +1,7 @@
 // The rows of a sweep's alpha.csv as they are stored between runs: read back with validation when
 // a sweep resumes, and appended durably, group by group, to one shard per MPI rank
-// ("alpha.csv.rank<r>") so that an interrupted run keeps every finished group.
+// ("alpha.csv.rank<r>") so that an interrupted run keeps every finished group; and the rows a run
+// holds (AlphaRows), written in the order of the points.
 #pragma once
 
 #include <filesystem>
@@ -8,6 +9,8 @@
 #include <set>
 #include <string>
 #include <vector>
+
+#include "studies/sweep_plan.hpp"
 
 namespace hpcontact::studies {
 
@@ -45,6 +48,29 @@ class FolderLock {
 
  private:
   int fd_ = -1;
+};
+
+/// The rows of alpha.csv: those stored by an earlier run (validated: bad or foreign rows are
+/// computed again) and the new ones, always written in the order of the points.
+class AlphaRows {
+ public:
+  explicit AlphaRows(const std::vector<SweepPoint>& points);
+  /// Adds the valid rows stored in alpha_csv and the per-rank shards beside it; a point already
+  /// held keeps its row.
+  void read(const std::filesystem::path& alpha_csv, bool warn);
+  /// Adds the rows of one slice's folder; returns the keys it holds that an earlier folder already
+  /// gave with other numbers (all columns but the seconds), which keep the earlier row.
+  std::vector<std::string> merge_slice(const std::filesystem::path& alpha_csv);
+  bool has(const std::string& key) const { return rows_.contains(key); }
+  std::set<std::string> keys() const;
+  void set(const std::string& key, const std::string& line) { rows_[key] = line; }
+  /// The file's text: the header and the rows held, in the order of the points.
+  std::string content() const;
+
+ private:
+  std::set<std::string> keys_;
+  std::map<std::string, std::size_t> index_of_key_;
+  std::map<std::string, std::string> rows_;
 };
 
 }  // namespace hpcontact::studies
