@@ -80,16 +80,16 @@ int run(const std::string& solver, const std::string& split, bool indefinite) {
   Eigen::MatrixXd solution, schur, schur_out;
   int interface = 0;
   if (solver == "substructuring") {
-    const linalg::SubstructuredCholesky factor(n, mine, trailing);
+    const linalg::SubstructuredCholesky factor(MPI_COMM_WORLD, n, mine, trailing);
     solution = factor.solve(rhs), schur = factor.schur_complement(b), schur_out = factor.schur_complement(b_out);
     interface = factor.interface_size();
     if (rank == 0) fmt::print("factor_nonzeros_mean {}\n", factor.mean_factor_nonzeros());
   } else if (solver == "mumps") {
-    const linalg::DistributedCholesky factor(n, mine, trailing);
+    const linalg::DistributedCholesky factor(MPI_COMM_WORLD, n, mine, trailing);
     solution = factor.solve(rhs), schur = factor.schur_complement(b), schur_out = factor.schur_complement(b_out);
     interface = factor.trailing_size();  // the Schur complement MUMPS returned
   } else if (solver == "bddc") {
-    const linalg::BddcSolver factor(n, mine);
+    const linalg::BddcSolver factor(MPI_COMM_WORLD, n, mine);
     solution = factor.solve(rhs), schur = factor.schur_complement(b), schur_out = factor.schur_complement(b_out);
     if (rank == 0) fmt::print("iterations_largest {}\n", factor.iterations().largest);
   } else {

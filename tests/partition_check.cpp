@@ -68,9 +68,9 @@ void report(const std::string& name, const std::string& method, const mesh::Mesh
 void compare(const std::string& name, const mesh::Mesh& mesh) {
   report(name, "bisection", mesh, mesh::bisect_cells(mesh, mpi_rank_and_size().second), false);
   // Twice: a partition must be a function of the graph (K and A_G of one run share it).
-  const std::vector<int> parts = mesh::partition_cells_by_graph(mesh);
-  report(name, "graph", mesh, parts, mesh::partition_cells_by_graph(mesh) != parts);
-  report(name, "chosen", mesh, mesh::split_cells_over_ranks(mesh), false);
+  const std::vector<int> parts = mesh::partition_cells_by_graph(mesh, MPI_COMM_WORLD);
+  report(name, "graph", mesh, parts, mesh::partition_cells_by_graph(mesh, MPI_COMM_WORLD) != parts);
+  report(name, "chosen", mesh, mesh::split_cells_over_ranks(mesh, MPI_COMM_WORLD), false);
 }
 
 }  // namespace

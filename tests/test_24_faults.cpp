@@ -73,21 +73,27 @@ TEST(Faults, FullDiskIsAnIoFailure) {
 }
 
 // Under mpirun, rank 0 cannot write (a full disk): every rank ends with exit 4 and the message is
-// printed once, instead of the other ranks waiting forever in a collective call.
+// printed once, instead of the other ranks waiting forever in a collective call. Also with units
+// taken by groups of two ranks, where the failing leader's partner waits for the group's next
+// collective call and the other group computes on.
 TEST(Faults, FullDiskUnderMpirunEndsEveryRank) {
   SmallDisk disk("mpirun");
   if (!disk.mounted) GTEST_SKIP() << "cannot mount a tmpfs here (needs root)";
   const auto dir = scratch("faults_mpi_disk");
-  const auto start = std::chrono::steady_clock::now();
-  const auto result = run_command(kMpi + "timeout 120 mpirun -n 2 --oversubscribe " HPCONTACT_CLI " sweep " +
-                                  write_sweep(dir).string() + " --out " + (disk.path / "sweep").string());
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  EXPECT_EQ(result.exit_code, 4) << result.output;
-  EXPECT_LT(seconds, 60.0);
-  const auto first = result.output.find("hpcontact: I/O failure");
-  ASSERT_NE(first, std::string::npos) << result.output;
-  EXPECT_EQ(result.output.find("hpcontact: I/O failure", first + 1), std::string::npos) << result.output;
-  EXPECT_FALSE(has_temporary_files(disk.path));
+  for (const std::string launch : {"-n 2", "-n 4", "-n 4 --ranks-per-unit 2"}) {
+    const std::string ranks = launch.substr(0, 4), options = launch.substr(4);
+    std::filesystem::remove_all(disk.path / "sweep");
+    const auto start = std::chrono::steady_clock::now();
+    const auto result = run_command(kMpi + "timeout 120 mpirun " + ranks + " --oversubscribe " HPCONTACT_CLI " sweep " +
+                                    write_sweep(dir).string() + " --out " + (disk.path / "sweep").string() + options);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_EQ(result.exit_code, 4) << launch << "\n" << result.output;
+    EXPECT_LT(seconds, 60.0) << launch;
+    const auto first = result.output.find("hpcontact: I/O failure");
+    ASSERT_NE(first, std::string::npos) << launch << "\n" << result.output;
+    EXPECT_EQ(result.output.find("hpcontact: I/O failure", first + 1), std::string::npos) << result.output;
+    EXPECT_FALSE(has_temporary_files(disk.path)) << launch;
+  }
 }
 
 // Under mpirun, a failure every rank raises alike (bad input, a refusal, a bad command line) is

@@ -73,8 +73,8 @@ int run_infsup(const InfSupOptions& o) {
     elastic = driver::scene_elastic_operators(scene, d->mesh, d->cell_degrees);
     setup = driver::infsup_setup_of(scene, d->mesh, d->cell_degrees, *d->boundary_mesh, d->segment_degrees, *elastic);
   } else {
-    primal = std::make_unique<operators::PrimalOperators>(d->mesh, d->cell_degrees, nullptr,
-                                                          linalg::distribution_over(ranks, distributed_solver));
+    primal = std::make_unique<operators::PrimalOperators>(
+        d->mesh, d->cell_degrees, nullptr, linalg::distribution_over(MPI_COMM_WORLD, distributed_solver));
     setup = driver::infsup_setup_of(scene, d->mesh, d->cell_degrees, *d->boundary_mesh, d->segment_degrees, *primal);
   }
   const auto result = infsup::analyse_infsup(setup, backend);

@@ -74,7 +74,7 @@ int run_solve(const SolveOptions& o) {
   driver::SceneRunOptions options{o.out, [rank](const std::string& line) {
                                     if (rank == 0) fmt::print(stderr, "# {}\n", line);
                                   }};
-  options.distribution = linalg::distribution_over(ranks, distributed_solver);
+  options.distribution = linalg::distribution_over(MPI_COMM_WORLD, distributed_solver);
   const auto summary = driver::run_scene(scene, options);
   if (rank != 0) return 0;
 

@@ -41,12 +41,27 @@ void add_sweep_command(CLI::App& app, CommandAction& action) {
                    "the verdicts")
       ->excludes("--shard")
       ->excludes("--restart");
-  command->callback([&action, study_file, out_dir, restart, shard_text, merge_dirs] {
-    action = [study_file, out_dir, restart, shard_text, merge_dirs] {
+  auto ranks_per_unit = std::make_shared<int>(1);
+  command
+      ->add_option("--ranks-per-unit", *ranks_per_unit,
+                   "Under mpirun: groups of this many ranks take units together, each unit's factorizations (K + M "
+                   "and the extension norm's references) distributed over its group; it must divide the ranks")
+      ->capture_default_str();
+  auto solver_text = std::make_shared<std::string>("substructuring");
+  command
+      ->add_option("--distributed-solver", *solver_text,
+                   "With --ranks-per-unit > 1: substructuring (CHOLMOD per rank, dense interface) | mumps (MPIAIJ + "
+                   "MUMPS) | bddc (MATIS + CG with PCBDDC)")
+      ->capture_default_str();
+  command->callback([&action, study_file, out_dir, restart, shard_text, merge_dirs, ranks_per_unit, solver_text] {
+    action = [study_file, out_dir, restart, shard_text, merge_dirs, ranks_per_unit, solver_text] {
       // 1. Read and check the whole sweep before computing anything.
       const auto sweep = studies::read_stability_sweep(*study_file);
       const studies::SweepShard shard =
           shard_text->empty() ? studies::SweepShard{} : studies::parse_sweep_shard(*shard_text, "command line");
+      const studies::SweepRanks sweep_ranks{
+          *ranks_per_unit, linalg::parse_distributed_solver(*solver_text, "command line", "--distributed-solver")};
+      studies::check_sweep_ranks(sweep, sweep_ranks, mpi_rank_and_size().second);
       io::ensure_writable_directory(*out_dir);
       const auto alpha_csv = std::filesystem::path(*out_dir) / "alpha.csv";
       const auto verdicts_csv = std::filesystem::path(*out_dir) / "verdicts.csv";
@@ -82,7 +97,7 @@ void add_sweep_command(CLI::App& app, CommandAction& action) {
           [&](int done, int total, const std::string& label) {
             if (bar) bar(done - 1, total, label);
           },
-          shard);
+          shard, sweep_ranks);
       finish_progress_bar(bar);
       // 3. Fit rates and write verdicts (rank 0; alpha.csv is complete on every rank here); a
       // shard's rows wait for --merge.

@@ -69,41 +69,45 @@ CondensedFactor::CondensedFactor(const space::H1Space& space, double stiffness_w
 
 CondensedFactor::CondensedFactor(std::unique_ptr<const CellSystem> system, const std::vector<int>& trailing,
                                  linalg::Distribution distribution)
-    : system_(std::move(system)), size_(system_->n_dofs()), n_trailing_(static_cast<int>(trailing.size())) {
+    : system_(std::move(system)),
+      size_(system_->n_dofs()),
+      n_trailing_(static_cast<int>(trailing.size())),
+      distribution_(distribution) {
   for (int index : trailing)
     HPC_VERIFY(index >= 0 && index < system_->n_skeleton_dofs(), "trailing set outside the skeleton dofs");
   const int n_cells = system_->mesh().n_cells(), n_skeleton = system_->n_skeleton_dofs();
   std::vector<char> contributes(n_cells, 1);
-  distributed_ = distribution != linalg::Distribution::serial;
-  if (distributed_) {
-    const int rank = mpi_rank_and_size().first;
-    const std::vector<int> part_of_cell = mesh::split_cells_over_ranks(system_->mesh());
+  const bool distributed = distribution.distributed();
+  MPI_Comm ranks = distribution.ranks;
+  if (distributed) {
+    const int rank = rank_and_size(ranks).first;
+    const std::vector<int> part_of_cell = mesh::split_cells_over_ranks(system_->mesh(), ranks);
     for (int c = 0; c < n_cells; ++c) contributes[c] = part_of_cell[c] == rank;
   }
   // Distributed, a degenerate cell fails on the rank that owns it: every rank ends the same way.
   // (Serial factors may be built by one rank alone, e.g. a sweep's points: no collective then.)
   std::vector<Eigen::Triplet<double>> lower;
-  if (distributed_)
-    run_on_all_ranks_agreeing([&] { lower = eliminate_interiors(contributes); });
+  if (distributed)
+    run_on_all_ranks_agreeing([&] { lower = eliminate_interiors(contributes); }, ranks);
   else
     lower = eliminate_interiors(contributes);
-  switch (distribution) {
-    case linalg::Distribution::serial: {
+  switch (distribution.solver) {
+    case linalg::DistributedSolver::serial: {
       Eigen::SparseMatrix<double> schur(n_skeleton, n_skeleton);
       schur.setFromTriplets(lower.begin(), lower.end());
       lower = {};
       serial_ = std::make_unique<linalg::SparseCholesky>(schur, trailing);
       break;
     }
-    case linalg::Distribution::substructuring:
-      substructured_ = std::make_unique<linalg::SubstructuredCholesky>(n_skeleton, lower, trailing);
+    case linalg::DistributedSolver::substructuring:
+      substructured_ = std::make_unique<linalg::SubstructuredCholesky>(ranks, n_skeleton, lower, trailing);
       note_if_interface_dominates(*substructured_);
       break;
-    case linalg::Distribution::mumps:
-      mumps_ = std::make_unique<linalg::DistributedCholesky>(n_skeleton, lower, trailing);
+    case linalg::DistributedSolver::mumps:
+      mumps_ = std::make_unique<linalg::DistributedCholesky>(ranks, n_skeleton, lower, trailing);
       break;
-    case linalg::Distribution::bddc:
-      bddc_ = std::make_unique<linalg::BddcSolver>(n_skeleton, lower);
+    case linalg::DistributedSolver::bddc:
+      bddc_ = std::make_unique<linalg::BddcSolver>(ranks, n_skeleton, lower);
       break;
   }
 }
@@ -186,7 +190,7 @@ Eigen::MatrixXd CondensedFactor::condense(const Eigen::MatrixXd& rhs) const {
       if (dof.dof >= 0) out.row(dof.dof) -= dof.sign * correction.row(s);
     }
   }
-  if (distributed_) sum_over_ranks(out.data(), out.size());
+  if (distribution_.distributed()) sum_over_ranks(distribution_.ranks, out.data(), out.size());
   return out + rhs.topRows(n_skeleton());
 }
 
@@ -209,7 +213,7 @@ Eigen::MatrixXd CondensedFactor::solve(const Eigen::MatrixXd& rhs) const {
     for (std::size_t k = 0; k < block.interior.size(); ++k)
       interiors.row(dofs[block.interior[k]].dof - n_skeleton) = interior.row(k);
   }
-  if (distributed_) sum_over_ranks(interiors.data(), interiors.size());
+  if (distribution_.distributed()) sum_over_ranks(distribution_.ranks, interiors.data(), interiors.size());
   out.bottomRows(size_ - n_skeleton) = interiors;
   return out;
 }
@@ -248,7 +252,7 @@ double CondensedFactor::quadratic_form(const Eigen::VectorXd& u) const {
     const Eigen::VectorXd interior = interior_rows(dofs, block.interior, u) + block.interior_solve * skeleton;
     sum += (block.interior_factor.matrixU() * interior).squaredNorm();
   }
-  if (distributed_) sum_over_ranks(&sum, 1);
+  if (distribution_.distributed()) sum_over_ranks(distribution_.ranks, &sum, 1);
   return sum;
 }
 

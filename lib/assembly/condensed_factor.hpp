@@ -45,11 +45,10 @@ class CondensedFactor {
   /// `trailing`: dofs (skeleton dofs only) ordered last in the factorization of S.
   /// @throws NumericalError if A is not positive definite.
   CondensedFactor(const space::H1Space& space, double stiffness_weight, double mass_weight,
-                  const std::vector<int>& trailing = {},
-                  linalg::Distribution distribution = linalg::Distribution::serial);
+                  const std::vector<int>& trailing = {}, linalg::Distribution distribution = {});
   /// Any cell system (the factor keeps it).
   CondensedFactor(std::unique_ptr<const CellSystem> system, const std::vector<int>& trailing = {},
-                  linalg::Distribution distribution = linalg::Distribution::serial);
+                  linalg::Distribution distribution = {});
   ~CondensedFactor();
   CondensedFactor(CondensedFactor&&) noexcept;
   CondensedFactor& operator=(CondensedFactor&&) noexcept;
@@ -93,7 +92,8 @@ class CondensedFactor {
   std::unique_ptr<linalg::SubstructuredCholesky> substructured_;
   std::unique_ptr<linalg::DistributedCholesky> mumps_;
   std::unique_ptr<linalg::BddcSolver> bddc_;
-  bool distributed_ = false;  ///< cells split over the ranks: per-cell work is summed over them
+  /// Distributed: the cells are split over distribution_.ranks and per-cell work is summed over them.
+  linalg::Distribution distribution_;
 };
 
 }  // namespace hpcontact::assembly

@@ -100,26 +100,28 @@ int launcher_rank() {
   return 0;
 }
 
-std::pair<int, int> mpi_rank_and_size() {
+std::pair<int, int> mpi_rank_and_size() { return rank_and_size(MPI_COMM_WORLD); }
+
+std::pair<int, int> rank_and_size(MPI_Comm ranks) {
   int initialized = 0, finalized = 0;
   MPI_Initialized(&initialized);
   MPI_Finalized(&finalized);
   if (!initialized || finalized) return {0, 1};
   int rank = 0, size = 1;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  MPI_Comm_rank(ranks, &rank);
+  MPI_Comm_size(ranks, &size);
   return {rank, size};
 }
 
-void sum_over_ranks(double* data, std::size_t count) {
-  if (mpi_rank_and_size().second == 1) return;
+void sum_over_ranks(MPI_Comm ranks, double* data, std::size_t count) {
+  if (rank_and_size(ranks).second == 1) return;
   // In chunks of 8 MB: Open MPI's allreduce of large messages allocates a temporary copy of the
   // message, which for a dense interface matrix (75 MB at 1e6 dofs on 4 ranks) was the largest
   // allocation of a rank; an int count also caps a single call at 2^31 entries.
   constexpr std::size_t chunk = std::size_t{1} << 20;
   for (std::size_t first = 0; first < count; first += chunk)
     HPC_VERIFY(MPI_Allreduce(MPI_IN_PLACE, data + first, static_cast<int>(std::min(chunk, count - first)), MPI_DOUBLE,
-                             MPI_SUM, MPI_COMM_WORLD) == MPI_SUCCESS,
+                             MPI_SUM, ranks) == MPI_SUCCESS,
                "MPI_Allreduce failed");
 }
 

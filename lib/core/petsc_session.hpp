@@ -2,6 +2,8 @@
 // command line into hpcontact's own arguments and PETSc/SLEPc options (-eps_type arpack, ...).
 #pragma once
 
+#include <mpi.h>
+
 #include <cstddef>
 #include <string>
 #include <utility>
@@ -53,8 +55,11 @@ int launcher_rank();
 /// (rank, size) in MPI_COMM_WORLD; (0, 1) when MPI is not initialized (unit tests, libraries).
 std::pair<int, int> mpi_rank_and_size();
 
-/// Sums data[0 .. count) over the ranks of MPI_COMM_WORLD, in place, so that every rank holds the
-/// sum (in chunks: MPI counts are int). Collective; nothing to do on one rank.
-void sum_over_ranks(double* data, std::size_t count);
+/// (rank, size) in `ranks`; (0, 1) when MPI is not initialized.
+std::pair<int, int> rank_and_size(MPI_Comm ranks);
+
+/// Sums data[0 .. count) over `ranks`, in place, so that every one holds the sum (in chunks: MPI
+/// counts are int). Collective on `ranks`; nothing to do on one rank.
+void sum_over_ranks(MPI_Comm ranks, double* data, std::size_t count);
 
 }  // namespace hpcontact

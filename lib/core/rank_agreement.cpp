@@ -45,8 +45,8 @@ bool every_rank_fails_within(double seconds) {
   }
 }
 
-void run_on_all_ranks_agreeing(const std::function<void()>& work) {
-  const int rank = mpi_rank_and_size().first, size = mpi_rank_and_size().second;
+void run_on_all_ranks_agreeing(const std::function<void()>& work, MPI_Comm ranks) {
+  const int rank = rank_and_size(ranks).first, size = rank_and_size(ranks).second;
   if (size == 1) {
     work();
     return;
@@ -63,17 +63,19 @@ void run_on_all_ranks_agreeing(const std::function<void()>& work) {
     message = "an exception that is not a std::exception";
   }
   int worst = 0;
-  MPI_Allreduce(&code, &worst, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  MPI_Allreduce(&code, &worst, 1, MPI_INT, MPI_MAX, ranks);
   if (worst == 0) return;
   const int candidate = code != 0 ? rank : size;
   int first = size;
-  MPI_Allreduce(&candidate, &first, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
-  int shared_code = code, length = static_cast<int>(message.size());
-  MPI_Bcast(&shared_code, 1, MPI_INT, first, MPI_COMM_WORLD);
-  MPI_Bcast(&length, 1, MPI_INT, first, MPI_COMM_WORLD);
+  MPI_Allreduce(&candidate, &first, 1, MPI_INT, MPI_MIN, ranks);
+  int shared[3] = {code, static_cast<int>(message.size()), mpi_rank_and_size().first};
+  MPI_Bcast(shared, 3, MPI_INT, first, ranks);
+  const int shared_code = shared[0], length = shared[1], world_rank = shared[2];
   message.resize(static_cast<std::size_t>(length));
-  MPI_Bcast(message.data(), length, MPI_CHAR, first, MPI_COMM_WORLD);
-  if (first != 0) message = "on rank " + std::to_string(first) + ": " + message;
+  MPI_Bcast(message.data(), length, MPI_CHAR, first, ranks);
+  // A message agreed on before, within a group of ranks (a sweep's unit), names its rank already.
+  if (world_rank != 0 && !message.starts_with("on rank "))
+    message = "on rank " + std::to_string(world_rank) + ": " + message;
   agreed = true;
   switch (shared_code) {
     case 2:

@@ -2,15 +2,17 @@
 // call would hang the run. Work wrapped here ends the same way on every rank.
 #pragma once
 
+#include <mpi.h>
+
 #include <functional>
 
 namespace hpcontact {
 
-/// Runs `work`; if it throws on any rank, every rank throws an exception of the same type (input,
-/// numerical, I/O, or other) with the message of the lowest failing rank ("on rank r: ..." when
-/// that is not rank 0). Collective under mpirun: every rank must call it with its share of the
-/// work. On one rank it only runs `work`.
-void run_on_all_ranks_agreeing(const std::function<void()>& work);
+/// Runs `work`; if it throws on any rank of `ranks`, every rank of `ranks` throws an exception of
+/// the same type (input, numerical, I/O, or other) with the message of the lowest failing rank
+/// ("on rank r: ..." with r its rank in MPI_COMM_WORLD, when that is not 0). Collective on
+/// `ranks`: every one must call it with its share of the work. On one rank it only runs `work`.
+void run_on_all_ranks_agreeing(const std::function<void()>& work, MPI_Comm ranks = MPI_COMM_WORLD);
 
 /// Whether the last failure thrown by run_on_all_ranks_agreeing was agreed on by all ranks, so that
 /// rank 0 alone reports it.

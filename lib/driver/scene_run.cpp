@@ -287,7 +287,7 @@ nlohmann::json run_scene(const scene::Scene& given_scene, const SceneRunOptions&
   summary["seconds_total"] = clock.seconds();
   const int rank = mpi_rank_and_size().first, ranks = mpi_rank_and_size().second;
   summary["ranks"] = ranks;
-  summary["distributed_solver"] = linalg::to_string(options.distribution);
+  summary["distributed_solver"] = linalg::to_string(options.distribution.solver);
   std::vector<std::pair<std::string, const io::CsvTable*>> boundary;
   if (scene.wants_output(scene::Output::boundary))
     for (const auto& effect : contacts) boundary.emplace_back(effect.problem, &effect.samples.table);

@@ -27,7 +27,8 @@ std::unique_ptr<norms::GramLadder> own_ladder(const InfSupSetup& setup, const sp
   if (setup.norm == GramNorm::interpolation)
     return std::make_unique<norms::GramLadder>(norms::interpolation_gram_ladder(multipliers));
   return std::make_unique<norms::GramLadder>(
-      norms::extension_gram_ladder(*setup.mesh, setup.cell_degrees, multipliers));
+      norms::extension_gram_ladder(*setup.mesh, setup.cell_degrees, multipliers,
+                                   setup.primal ? setup.primal->distribution() : linalg::Distribution{}));
 }
 
 // α of each zone's multipliers alone: the pencil (S_G, G) restricted to the active dofs whose

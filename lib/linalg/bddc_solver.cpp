@@ -21,8 +21,9 @@ struct BddcSolver::Impl {
   mutable BddcIterations iterations;
 };
 
-BddcSolver::BddcSolver(int n, const std::vector<Eigen::Triplet<double>>& lower_entries, double relative_tolerance)
-    : impl_(std::make_unique<Impl>()), size_(n) {
+BddcSolver::BddcSolver(MPI_Comm ranks, int n, const std::vector<Eigen::Triplet<double>>& lower_entries,
+                       double relative_tolerance)
+    : impl_(std::make_unique<Impl>()), ranks_(ranks), size_(n) {
   // 1. The rank's subdomain: the unknowns its entries touch, numbered locally in global order.
   std::vector<PetscInt> global;
   global.reserve(2 * lower_entries.size());
@@ -38,11 +39,10 @@ BddcSolver::BddcSolver(int n, const std::vector<Eigen::Triplet<double>>& lower_e
   };
   const auto n_local = static_cast<PetscInt>(global.size());
   PetscHandle<ISLocalToGlobalMapping, ISLocalToGlobalMappingDestroy> map;
-  HPC_PETSC_CALL(
-      ISLocalToGlobalMappingCreate(PETSC_COMM_WORLD, 1, n_local, global.data(), PETSC_COPY_VALUES, map.out()));
+  HPC_PETSC_CALL(ISLocalToGlobalMappingCreate(ranks, 1, n_local, global.data(), PETSC_COPY_VALUES, map.out()));
   // 2. MATIS: the local matrix holds the rank's contributions (both triangles).
   Mat& a = *impl_->matrix.out();
-  HPC_PETSC_CALL(MatCreateIS(PETSC_COMM_WORLD, 1, PETSC_DECIDE, PETSC_DECIDE, n, n, map.get(), map.get(), &a));
+  HPC_PETSC_CALL(MatCreateIS(ranks, 1, PETSC_DECIDE, PETSC_DECIDE, n, n, map.get(), map.get(), &a));
   Mat local = nullptr;
   HPC_PETSC_CALL(MatISGetLocalMat(a, &local));
   std::vector<PetscInt> row_nonzeros(n_local, 0);
@@ -66,7 +66,7 @@ BddcSolver::BddcSolver(int n, const std::vector<Eigen::Triplet<double>>& lower_e
   // PETSc 3.18 with MUMPS 5.5 (INFOG(1) = -46 in PCBDDCSetUpCorrection); -bddc_pc_bddc_use_deluxe_scaling
   // turns it on where the stack allows.
   KSP& ksp = *impl_->ksp.out();
-  HPC_PETSC_CALL(KSPCreate(PETSC_COMM_WORLD, &ksp));
+  HPC_PETSC_CALL(KSPCreate(ranks, &ksp));
   HPC_PETSC_CALL(KSPSetOptionsPrefix(ksp, "bddc_"));
   HPC_PETSC_CALL(KSPSetOperators(ksp, a, a));
   HPC_PETSC_CALL(KSPSetType(ksp, KSPCG));
@@ -148,7 +148,7 @@ Eigen::MatrixXd BddcSolver::solve(const Eigen::MatrixXd& rhs) const {
   for (Eigen::Index k = 0; k < rhs.cols(); ++k)
     solve_column(impl_->ksp.get(), impl_->matrix.get(), rhs.col(k).data(), impl_->row_begin, impl_->row_end,
                  out.col(k).data() + impl_->row_begin, impl_->iterations);
-  sum_over_ranks(out.data(), out.size());  // each row is non-zero on its owner only
+  sum_over_ranks(ranks_, out.data(), out.size());  // each row is non-zero on its owner only
   return out;
 }
 
@@ -166,7 +166,7 @@ Eigen::MatrixXd BddcSolver::schur_complement(const Eigen::SparseMatrix<double>& 
                  owned_solution.data(), impl_->iterations);
     result.col(j) = b_owned * owned_solution;
   }
-  sum_over_ranks(result.data(), result.size());
+  sum_over_ranks(ranks_, result.data(), result.size());
   return 0.5 * (result + result.transpose());
 }
 

@@ -7,6 +7,8 @@
 // so the dense work on the trace runs unchanged.
 #pragma once
 
+#include <mpi.h>
+
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <memory>
@@ -29,8 +31,9 @@ class BddcSolver {
   /// 1e-12 the energies and α of the §7 runs equal the serial ones to about 1e-14, the solves
   /// CHOLMOD's to 1e-13; round-off stalls CG near 1e-14 on these systems, so do not ask for less).
   /// PETSc options with the prefix "bddc_" (e.g. -bddc_ksp_monitor, -bddc_ksp_rtol 1e-10)
-  /// adjust the solver. Collective on PETSC_COMM_WORLD.
-  BddcSolver(int n, const std::vector<Eigen::Triplet<double>>& lower_entries, double relative_tolerance = 1e-12);
+  /// adjust the solver. Collective on `ranks`, which must outlive the solver.
+  BddcSolver(MPI_Comm ranks, int n, const std::vector<Eigen::Triplet<double>>& lower_entries,
+             double relative_tolerance = 1e-12);
   ~BddcSolver();
   BddcSolver(BddcSolver&&) noexcept;
   BddcSolver& operator=(BddcSolver&&) noexcept;
@@ -47,6 +50,7 @@ class BddcSolver {
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
+  MPI_Comm ranks_ = MPI_COMM_NULL;  ///< the ranks sharing the matrix
   int size_ = 0;
 };
 

@@ -29,11 +29,11 @@ struct DistributedCholesky::Impl {
 
 namespace {
 
-// S_T as MUMPS returned it on rank 0 (one triangle or both) made whole and symmetric, then sent to
-// every rank.
-Eigen::MatrixXd replicated_trailing_schur(Mat factor, int size) {
+// S_T as MUMPS returned it on rank 0 of `ranks` (one triangle or both) made whole and symmetric,
+// then sent to every rank.
+Eigen::MatrixXd replicated_trailing_schur(MPI_Comm ranks, Mat factor, int size) {
   Eigen::MatrixXd schur = Eigen::MatrixXd::Zero(size, size);
-  if (mpi_rank_and_size().first == 0) {
+  if (rank_and_size(ranks).first == 0) {
     PetscHandle<Mat, MatDestroy> s;
     MatFactorSchurStatus status;
     HPC_PETSC_CALL(MatFactorCreateSchurComplement(factor, s.out(), &status));
@@ -53,17 +53,18 @@ Eigen::MatrixXd replicated_trailing_schur(Mat factor, int size) {
     else
       schur = 0.5 * (schur + schur.transpose());
   }
-  if (mpi_rank_and_size().second > 1)
-    HPC_VERIFY(MPI_Bcast(schur.data(), static_cast<int>(schur.size()), MPI_DOUBLE, 0, MPI_COMM_WORLD) == MPI_SUCCESS,
+  if (rank_and_size(ranks).second > 1)
+    HPC_VERIFY(MPI_Bcast(schur.data(), static_cast<int>(schur.size()), MPI_DOUBLE, 0, ranks) == MPI_SUCCESS,
                "MPI_Bcast failed");
   return schur;
 }
 
 }  // namespace
 
-DistributedCholesky::DistributedCholesky(int n, const std::vector<Eigen::Triplet<double>>& lower_entries,
+DistributedCholesky::DistributedCholesky(MPI_Comm ranks, int n,
+                                         const std::vector<Eigen::Triplet<double>>& lower_entries,
                                          const std::vector<int>& trailing)
-    : impl_(std::make_unique<Impl>()), size_(n) {
+    : impl_(std::make_unique<Impl>()), ranks_(ranks), size_(n) {
   std::vector<PetscInt> rows, cols;
   std::vector<PetscScalar> values;
   rows.reserve(2 * lower_entries.size());
@@ -91,7 +92,7 @@ DistributedCholesky::DistributedCholesky(int n, const std::vector<Eigen::Triplet
     impl_->contributions.setFromTriplets(both.begin(), both.end());
   }
   Mat& a = *impl_->matrix.out();
-  HPC_PETSC_CALL(MatCreate(PETSC_COMM_WORLD, &a));
+  HPC_PETSC_CALL(MatCreate(ranks, &a));
   HPC_PETSC_CALL(MatSetSizes(a, PETSC_DECIDE, PETSC_DECIDE, n, n));
   HPC_PETSC_CALL(MatSetType(a, MATAIJ));
   HPC_PETSC_CALL(MatSetPreallocationCOO(a, static_cast<PetscCount>(rows.size()), rows.data(), cols.data()));
@@ -108,7 +109,7 @@ DistributedCholesky::DistributedCholesky(int n, const std::vector<Eigen::Triplet
   if (!trailing.empty()) {
     // PETSc's MUMPS interface takes a parallel Schur set only when rank 0 holds all of it: S_T
     // comes back whole on rank 0.
-    const bool root = mpi_rank_and_size().first == 0;
+    const bool root = rank_and_size(ranks).first == 0;
     std::vector<PetscInt> indices =
         root ? std::vector<PetscInt>(trailing.begin(), trailing.end()) : std::vector<PetscInt>{};
     PetscHandle<IS, ISDestroy> schur_set;
@@ -133,7 +134,7 @@ DistributedCholesky::DistributedCholesky(int n, const std::vector<Eigen::Triplet
   if (!trailing.empty()) {
     // Solves on the interior problem A_II only (MUMPS's ICNTL(26) = 0); S_T is solved here.
     HPC_PETSC_CALL(MatMumpsSetIcntl(f, 26, 0));
-    impl_->trailing_schur.compute(replicated_trailing_schur(f, static_cast<int>(trailing.size())));
+    impl_->trailing_schur.compute(replicated_trailing_schur(ranks, f, static_cast<int>(trailing.size())));
     if (impl_->trailing_schur.info() != Eigen::Success)
       throw NumericalError("distributed Cholesky (MUMPS): the Schur complement on the " +
                            std::to_string(trailing.size()) + " trailing unknowns is not positive definite");
@@ -156,15 +157,15 @@ Eigen::MatrixXd DistributedCholesky::mumps_owned_rows(const Eigen::MatrixXd& rhs
     // solve column by column.
     for (PetscInt j = 0; j < k; ++j) {
       PetscHandle<Vec, VecDestroy> b, x;
-      HPC_PETSC_CALL(VecCreateMPIWithArray(PETSC_COMM_WORLD, 1, owned, size_, local_rhs.col(j).data(), b.out()));
-      HPC_PETSC_CALL(VecCreateMPIWithArray(PETSC_COMM_WORLD, 1, owned, size_, local_solution.col(j).data(), x.out()));
+      HPC_PETSC_CALL(VecCreateMPIWithArray(ranks_, 1, owned, size_, local_rhs.col(j).data(), b.out()));
+      HPC_PETSC_CALL(VecCreateMPIWithArray(ranks_, 1, owned, size_, local_solution.col(j).data(), x.out()));
       HPC_PETSC_CALL(MatSolve(impl_->factor.get(), b.get(), x.get()));
     }
     return local_solution;
   }
   PetscHandle<Mat, MatDestroy> b, x;
-  HPC_PETSC_CALL(MatCreateDense(PETSC_COMM_WORLD, owned, PETSC_DECIDE, size_, k, local_rhs.data(), b.out()));
-  HPC_PETSC_CALL(MatCreateDense(PETSC_COMM_WORLD, owned, PETSC_DECIDE, size_, k, local_solution.data(), x.out()));
+  HPC_PETSC_CALL(MatCreateDense(ranks_, owned, PETSC_DECIDE, size_, k, local_rhs.data(), b.out()));
+  HPC_PETSC_CALL(MatCreateDense(ranks_, owned, PETSC_DECIDE, size_, k, local_solution.data(), x.out()));
   HPC_PETSC_CALL(MatMatSolve(impl_->factor.get(), b.get(), x.get()));
   return local_solution;
 }
@@ -172,14 +173,14 @@ Eigen::MatrixXd DistributedCholesky::mumps_owned_rows(const Eigen::MatrixXd& rhs
 Eigen::MatrixXd DistributedCholesky::mumps_solve(const Eigen::MatrixXd& rhs) const {
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(size_, rhs.cols());
   out.middleRows(impl_->row_begin, impl_->row_end - impl_->row_begin) = mumps_owned_rows(rhs);
-  sum_over_ranks(out.data(), out.size());  // each row is non-zero on its owner only
+  sum_over_ranks(ranks_, out.data(), out.size());  // each row is non-zero on its owner only
   for (int t : impl_->trailing) out.row(t).setZero();
   return out;
 }
 
 Eigen::MatrixXd DistributedCholesky::multiply(const Eigen::MatrixXd& x) const {
   Eigen::MatrixXd out = impl_->contributions * x;
-  sum_over_ranks(out.data(), out.size());
+  sum_over_ranks(ranks_, out.data(), out.size());
   return out;
 }
 
@@ -215,7 +216,7 @@ Eigen::MatrixXd DistributedCholesky::schur_complement(const Eigen::SparseMatrix<
     const auto count = std::min<Eigen::Index>(block, m - first);
     result.middleCols(first, count) = b_owned * mumps_owned_rows(Eigen::MatrixXd(bt.middleCols(first, count)));
   }
-  sum_over_ranks(result.data(), result.size());
+  sum_over_ranks(ranks_, result.data(), result.size());
   return 0.5 * (result + result.transpose());
 }
 

@@ -5,6 +5,8 @@
 // the eigenproblem on the trace) runs unchanged on each.
 #pragma once
 
+#include <mpi.h>
+
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <memory>
@@ -19,11 +21,11 @@ class DistributedCholesky {
   /// same on every rank): unknowns T whose Schur complement S_T = A_TT − A_TI A_II⁻¹ A_IT MUMPS
   /// returns with the factorization of A_II (dense, |T|², replicated: T is trace-sized). Then
   /// B A⁻¹ Bᵀ = B_T S_T⁻¹ B_Tᵀ needs no solve when B lives on T, and a solve runs as interior
-  /// solve, dense S_T solve, interior solve. Collective on PETSC_COMM_WORLD.
+  /// solve, dense S_T solve, interior solve. Collective on `ranks`, which must outlive the solver.
   /// @throws NumericalError if MUMPS fails (not positive definite; with a trailing set MUMPS
   /// factorizes A_II by LU, which refuses a singular A_II but not an indefinite one: then only an
   /// indefinite S_T is refused, by its Cholesky factorization).
-  DistributedCholesky(int n, const std::vector<Eigen::Triplet<double>>& lower_entries,
+  DistributedCholesky(MPI_Comm ranks, int n, const std::vector<Eigen::Triplet<double>>& lower_entries,
                       const std::vector<int>& trailing = {});
   ~DistributedCholesky();
   DistributedCholesky(DistributedCholesky&&) noexcept;
@@ -49,6 +51,7 @@ class DistributedCholesky {
   /// (A x) on every rank from every rank's contributions, for x replicated (n, k).
   Eigen::MatrixXd multiply(const Eigen::MatrixXd& x) const;
   std::unique_ptr<Impl> impl_;
+  MPI_Comm ranks_ = MPI_COMM_NULL;  ///< the ranks sharing the matrix
   int size_ = 0;
 };
 

@@ -2,30 +2,33 @@
 #include "linalg/distribution.hpp"
 
 #include "core/error.hpp"
+#include "core/petsc_session.hpp"
 
 namespace hpcontact::linalg {
 
-Distribution parse_distributed_solver(const std::string& text, const std::string& origin, const std::string& key) {
-  if (text == "substructuring") return Distribution::substructuring;
-  if (text == "mumps") return Distribution::mumps;
-  if (text == "bddc") return Distribution::bddc;
+DistributedSolver parse_distributed_solver(const std::string& text, const std::string& origin, const std::string& key) {
+  if (text == "substructuring") return DistributedSolver::substructuring;
+  if (text == "mumps") return DistributedSolver::mumps;
+  if (text == "bddc") return DistributedSolver::bddc;
   throw_bad_input(origin, key, text, "must be one of: substructuring, mumps, bddc");
 }
 
-std::string to_string(Distribution distribution) {
-  switch (distribution) {
-    case Distribution::serial:
+std::string to_string(DistributedSolver solver) {
+  switch (solver) {
+    case DistributedSolver::serial:
       return "serial";
-    case Distribution::substructuring:
+    case DistributedSolver::substructuring:
       return "substructuring";
-    case Distribution::mumps:
+    case DistributedSolver::mumps:
       return "mumps";
-    case Distribution::bddc:
+    case DistributedSolver::bddc:
       return "bddc";
   }
   return "?";
 }
 
-Distribution distribution_over(int ranks, Distribution choice) { return ranks > 1 ? choice : Distribution::serial; }
+Distribution distribution_over(MPI_Comm ranks, DistributedSolver choice) {
+  return {rank_and_size(ranks).second > 1 ? choice : DistributedSolver::serial, ranks};
+}
 
 }  // namespace hpcontact::linalg

@@ -1,12 +1,15 @@
-// How one problem's factorizations are spread over the MPI ranks under mpirun (the option
-// --distributed-solver of `solve` and `infsup`).
+// How one problem's factorizations are spread over MPI ranks: the solver (the option
+// --distributed-solver of `solve`, `infsup` and `sweep`) and the ranks that share the problem
+// (all of mpirun's, or one group of a sweep's ranks).
 #pragma once
+
+#include <mpi.h>
 
 #include <string>
 
 namespace hpcontact::linalg {
 
-enum class Distribution {
+enum class DistributedSolver {
   serial,          ///< one process (CHOLMOD)
   substructuring,  ///< SubstructuredCholesky: CHOLMOD per rank, dense interface problem on every
                    ///< rank
@@ -14,10 +17,18 @@ enum class Distribution {
   bddc,            ///< BddcSolver: PETSc MATIS + conjugate gradients with PCBDDC
 };
 
+struct Distribution {
+  DistributedSolver solver = DistributedSolver::serial;
+  /// The ranks that share the problem: every collective call of its factorizations and solves
+  /// runs on this communicator only (unused when serial). The caller keeps it alive.
+  MPI_Comm ranks = MPI_COMM_WORLD;
+  bool distributed() const { return solver != DistributedSolver::serial; }
+};
+
 /// "substructuring" | "mumps" | "bddc". @throws InputError naming `origin` and `key` otherwise.
-Distribution parse_distributed_solver(const std::string& text, const std::string& origin, const std::string& key);
-std::string to_string(Distribution distribution);
-/// `choice` when more than one rank runs, serial otherwise.
-Distribution distribution_over(int ranks, Distribution choice);
+DistributedSolver parse_distributed_solver(const std::string& text, const std::string& origin, const std::string& key);
+std::string to_string(DistributedSolver solver);
+/// `choice` on the ranks of `ranks` when it has more than one, serial otherwise.
+Distribution distribution_over(MPI_Comm ranks, DistributedSolver choice);
 
 }  // namespace hpcontact::linalg

@@ -79,11 +79,12 @@ Eigen::VectorXd SubstructuredCholesky::Impl::factor_own_part(const std::vector<E
   return shift;
 }
 
-SubstructuredCholesky::SubstructuredCholesky(int n, const std::vector<Eigen::Triplet<double>>& lower_entries,
+SubstructuredCholesky::SubstructuredCholesky(MPI_Comm ranks, int n,
+                                             const std::vector<Eigen::Triplet<double>>& lower_entries,
                                              const std::vector<int>& trailing)
-    : impl_(std::make_unique<Impl>()), size_(n) {
+    : impl_(std::make_unique<Impl>()), ranks_(ranks), size_(n) {
   Impl& d = *impl_;
-  d.rank = mpi_rank_and_size().first;
+  d.rank = rank_and_size(ranks).first;
   // 1. Which ranks touch which unknowns (a count per unknown, summed over the ranks).
   std::vector<double> touching(n, 0.0);
   for (const auto& entry : lower_entries) {
@@ -92,7 +93,7 @@ SubstructuredCholesky::SubstructuredCholesky(int n, const std::vector<Eigen::Tri
     touching[entry.row()] = touching[entry.col()] = 1.0;
   }
   const std::vector<double> touched_here = touching;
-  sum_over_ranks(touching.data(), touching.size());
+  sum_over_ranks(ranks, touching.data(), touching.size());
   std::vector<char> is_trailing(n, 0);
   for (int index : trailing) {
     HPC_VERIFY(index >= 0 && index < n, "trailing index out of range");
@@ -132,7 +133,7 @@ SubstructuredCholesky::SubstructuredCholesky(int n, const std::vector<Eigen::Tri
     failure = std::current_exception();
   }
   double failed = failure ? 1.0 : 0.0;
-  sum_over_ranks(&failed, 1);
+  sum_over_ranks(ranks, &failed, 1);
   if (failure) std::rethrow_exception(failure);
   if (failed != 0.0) throw NumericalError("substructured Cholesky: the factorization failed on another rank");
   const int n_own = static_cast<int>(d.own_interface.size());
@@ -142,7 +143,7 @@ SubstructuredCholesky::SubstructuredCholesky(int n, const std::vector<Eigen::Tri
   for (int k = 0; k < n_own; ++k)
     for (int l = 0; l < n_own; ++l)
       d.interface_storage(d.own_interface[k], d.own_interface[l]) += d.shifted_schur(k, l) - (k == l ? shift(k) : 0.0);
-  sum_over_ranks(d.interface_storage.data(), d.interface_storage.size());
+  sum_over_ranks(ranks, d.interface_storage.data(), d.interface_storage.size());
   d.interface_factor.emplace(d.interface_storage);
   if (d.interface_factor->info() != Eigen::Success)
     throw NumericalError(
@@ -150,8 +151,8 @@ SubstructuredCholesky::SubstructuredCholesky(int n, const std::vector<Eigen::Tri
                     "not positive definite",
                     n_interface, n));
   mean_factor_nonzeros_ = d.local ? static_cast<double>(d.local->factor_nonzeros()) : 0.0;
-  sum_over_ranks(&mean_factor_nonzeros_, 1);
-  mean_factor_nonzeros_ /= mpi_rank_and_size().second;
+  sum_over_ranks(ranks, &mean_factor_nonzeros_, 1);
+  mean_factor_nonzeros_ /= rank_and_size(ranks).second;
 }
 
 bool interface_outweighs_factors(int interface_size, double mean_factor_nonzeros) {
@@ -180,7 +181,7 @@ Eigen::MatrixXd SubstructuredCholesky::solve(const Eigen::MatrixXd& rhs) const {
     condensed_here = d.shifted_schur * d.local->solve(local_rhs).bottomRows(n_own);
     interface_rhs(d.own_interface, Eigen::all) = condensed_here;
   }
-  sum_over_ranks(interface_rhs.data(), interface_rhs.size());
+  sum_over_ranks(ranks_, interface_rhs.data(), interface_rhs.size());
   interface_rhs += rhs(d.interface, Eigen::all);
   const Eigen::MatrixXd interface_solution = d.interface_factor->solve(interface_rhs);
   // Back-substitute: with the trailing right-hand side (S_r + D_r) u_G − g_r the local solve
@@ -192,7 +193,7 @@ Eigen::MatrixXd SubstructuredCholesky::solve(const Eigen::MatrixXd& rhs) const {
     out(d.interior, Eigen::all) = d.local->solve(local_rhs).topRows(n_interior);
   }
   if (d.rank == 0) out(d.interface, Eigen::all) = interface_solution;
-  sum_over_ranks(out.data(), out.size());  // every row is set by one rank only
+  sum_over_ranks(ranks_, out.data(), out.size());  // every row is set by one rank only
   return out;
 }
 

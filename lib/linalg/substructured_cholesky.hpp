@@ -4,6 +4,8 @@
 // every rank holds. Right-hand sides and results are replicated on every rank.
 #pragma once
 
+#include <mpi.h>
+
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <memory>
@@ -29,10 +31,10 @@ class SubstructuredCholesky {
  public:
   /// `lower_entries`: this rank's contributions (row ≥ col) to the lower triangle of the n × n
   /// matrix; contributions to one entry are summed. `trailing`: the same on every rank.
-  /// Collective on MPI_COMM_WORLD (or serial when MPI is not initialized).
+  /// Collective on `ranks` (or serial when MPI is not initialized), which must outlive the solver.
   /// @throws NumericalError if A (or an interior block) is not positive definite, or an unknown
   /// has no entries.
-  SubstructuredCholesky(int n, const std::vector<Eigen::Triplet<double>>& lower_entries,
+  SubstructuredCholesky(MPI_Comm ranks, int n, const std::vector<Eigen::Triplet<double>>& lower_entries,
                         const std::vector<int>& trailing);
   ~SubstructuredCholesky();
   SubstructuredCholesky(SubstructuredCholesky&&) noexcept;
@@ -53,6 +55,7 @@ class SubstructuredCholesky {
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
+  MPI_Comm ranks_ = MPI_COMM_NULL;  ///< the ranks sharing the matrix
   int size_ = 0;
   double mean_factor_nonzeros_ = 0.0;
 };

@@ -68,9 +68,9 @@ PartitionInterface partition_interface(const Mesh& mesh, const std::vector<int>&
   return interface;
 }
 
-std::vector<int> split_cells_over_ranks(const Mesh& mesh) {
-  std::vector<int> bisection = bisect_cells(mesh, mpi_rank_and_size().second);
-  std::vector<int> graph = partition_cells_by_graph(mesh);  // collective: every rank calls it
+std::vector<int> split_cells_over_ranks(const Mesh& mesh, MPI_Comm ranks) {
+  std::vector<int> bisection = bisect_cells(mesh, rank_and_size(ranks).second);
+  std::vector<int> graph = partition_cells_by_graph(mesh, ranks);  // collective: every rank calls it
   // Both partitions are the same on every rank, so every rank makes the same choice.
   return partition_interface(mesh, graph).edges < partition_interface(mesh, bisection).edges ? graph : bisection;
 }

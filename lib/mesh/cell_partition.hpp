@@ -5,6 +5,8 @@
 // graded meshes shorter (up to 46 % on an annulus).
 #pragma once
 
+#include <mpi.h>
+
 #include <vector>
 
 #include "mesh/mesh.hpp"
@@ -25,8 +27,8 @@ struct PartitionInterface {
 };
 PartitionInterface partition_interface(const Mesh& mesh, const std::vector<int>& part_of_cell);
 
-/// One part per rank of MPI_COMM_WORLD: coordinate bisection or PT-Scotch, whichever cuts fewer
-/// edges (bisection on a tie). Collective; every rank gets the same partition.
-std::vector<int> split_cells_over_ranks(const Mesh& mesh);
+/// One part per rank of `ranks`: coordinate bisection or PT-Scotch, whichever cuts fewer edges
+/// (bisection on a tie). Collective on `ranks`; every one gets the same partition.
+std::vector<int> split_cells_over_ranks(const Mesh& mesh, MPI_Comm ranks);
 
 }  // namespace hpcontact::mesh

@@ -18,9 +18,9 @@
 
 namespace hpcontact::mesh {
 
-std::vector<int> partition_cells_by_graph(const Mesh& mesh) {
+std::vector<int> partition_cells_by_graph(const Mesh& mesh, MPI_Comm ranks_sharing) {
   // (not a structured binding: clang 14 refuses to capture one in the lambda below)
-  const int rank = mpi_rank_and_size().first, ranks = mpi_rank_and_size().second;
+  const int rank = rank_and_size(ranks_sharing).first, ranks = rank_and_size(ranks_sharing).second;
   const int n_cells = mesh.n_cells();
   if (ranks == 1) return std::vector<int>(n_cells, 0);
   const auto slice_begin = [&](int r) { return static_cast<int>(static_cast<long long>(n_cells) * r / ranks); };
@@ -29,11 +29,13 @@ std::vector<int> partition_cells_by_graph(const Mesh& mesh) {
   // whose allocation fails must not leave the others waiting in MatCreateMPIAdj: all agree first.
   PetscInt *offsets = nullptr, *neighbours = nullptr, *weights = nullptr;
   try {
-    run_on_all_ranks_agreeing([&] {
-      HPC_PETSC_CALL(PetscMalloc1(n_local + 1, &offsets));
-      HPC_PETSC_CALL(PetscMalloc1(4 * static_cast<std::size_t>(n_local) + 1, &neighbours));
-      HPC_PETSC_CALL(PetscMalloc1(n_local + 1, &weights));
-    });
+    run_on_all_ranks_agreeing(
+        [&] {
+          HPC_PETSC_CALL(PetscMalloc1(n_local + 1, &offsets));
+          HPC_PETSC_CALL(PetscMalloc1(4 * static_cast<std::size_t>(n_local) + 1, &neighbours));
+          HPC_PETSC_CALL(PetscMalloc1(n_local + 1, &weights));
+        },
+        ranks_sharing);
   } catch (...) {  // every rank: those whose allocations succeeded free them too
     PetscFree(offsets);
     PetscFree(neighbours);
@@ -52,9 +54,9 @@ std::vector<int> partition_cells_by_graph(const Mesh& mesh) {
     weights[c - begin] = mesh.cell_size(c);
   }
   PetscHandle<Mat, MatDestroy> graph;
-  HPC_PETSC_CALL(MatCreateMPIAdj(PETSC_COMM_WORLD, n_local, n_cells, offsets, neighbours, nullptr, graph.out()));
+  HPC_PETSC_CALL(MatCreateMPIAdj(ranks_sharing, n_local, n_cells, offsets, neighbours, nullptr, graph.out()));
   PetscHandle<MatPartitioning, MatPartitioningDestroy> partitioning;
-  HPC_PETSC_CALL(MatPartitioningCreate(PETSC_COMM_WORLD, partitioning.out()));
+  HPC_PETSC_CALL(MatPartitioningCreate(ranks_sharing, partitioning.out()));
   HPC_PETSC_CALL(MatPartitioningSetAdjacency(partitioning.get(), graph.get()));
   HPC_PETSC_CALL(MatPartitioningSetType(partitioning.get(), MATPARTITIONINGPTSCOTCH));
   HPC_PETSC_CALL(MatPartitioningSetVertexWeights(partitioning.get(), weights));
@@ -74,7 +76,7 @@ std::vector<int> partition_cells_by_graph(const Mesh& mesh) {
   for (int r = 0; r < ranks; ++r) displacements[r] = slice_begin(r), counts[r] = slice_begin(r + 1) - slice_begin(r);
   std::vector<int> part_of_cell(n_cells);
   HPC_VERIFY(MPI_Allgatherv(local.data(), n_local, MPI_INT, part_of_cell.data(), counts.data(), displacements.data(),
-                            MPI_INT, PETSC_COMM_WORLD) == MPI_SUCCESS,
+                            MPI_INT, ranks_sharing) == MPI_SUCCESS,
              "gathering the cells' parts failed");
   return part_of_cell;
 }

@@ -3,18 +3,20 @@
 // graded (mesh/cell_partition.hpp compares it with coordinate bisection).
 #pragma once
 
+#include <mpi.h>
+
 #include <vector>
 
 #include "mesh/mesh.hpp"
 
 namespace hpcontact::mesh {
 
-/// The part (0 .. ranks-1, one per rank of MPI_COMM_WORLD) of every cell. The dual graph joins
+/// The part (0 .. ranks-1, one per rank of `ranks`) of every cell. The dual graph joins
 /// two cells through each shared edge; a cell weighs its number of vertices (3 or 4; the
 /// degree is not weighed: a mesh of mixed degrees is balanced by cells, as bisection balances it). Each rank hands
 /// PT-Scotch the graph rows of one contiguous slice of the cells, so the partition is computed once over the ranks,
-/// then gathered on every rank. Collective; on one rank every cell is in part 0.
+/// then gathered on every rank. Collective on `ranks`; on one rank every cell is in part 0.
 /// @throws NumericalError if PETSc's partitioner fails.
-std::vector<int> partition_cells_by_graph(const Mesh& mesh);
+std::vector<int> partition_cells_by_graph(const Mesh& mesh, MPI_Comm ranks);
 
 }  // namespace hpcontact::mesh

@@ -29,11 +29,12 @@ GramLadder interpolation_gram_ladder(const space::MultiplierSpace& multipliers) 
 }
 
 GramLadder extension_gram_ladder(const mesh::Mesh& mesh, std::vector<int> cell_degrees,
-                                 const space::MultiplierSpace& multipliers) {
+                                 const space::MultiplierSpace& multipliers, linalg::Distribution distribution) {
   return GramLadder(
-      [mesh, degrees = std::move(cell_degrees), &multipliers](int level, bool* geometric) {
+      [mesh, degrees = std::move(cell_degrees), &multipliers, distribution](int level, bool* geometric) {
         bool graded = false;
-        Eigen::MatrixXd gram = extension_norm_gram(mesh, degrees, multipliers, extension_reference_at(level), &graded);
+        Eigen::MatrixXd gram =
+            extension_norm_gram(mesh, degrees, multipliers, extension_reference_at(level), &graded, distribution);
         if (!graded) *geometric = false;
         return gram;
       },

@@ -13,6 +13,7 @@
 #include <memory>
 #include <vector>
 
+#include "linalg/distribution.hpp"
 #include "mesh/mesh.hpp"
 #include "space/multiplier_space.hpp"
 
@@ -47,9 +48,10 @@ class GramLadder {
 GramLadder interpolation_gram_ladder(const space::MultiplierSpace& multipliers);
 
 /// The extension norm on the references extension_reference_at(level), graded towards the
-/// breakpoints of `multipliers` (which must outlive the ladder; the ladder keeps a copy of `mesh`).
+/// breakpoints of `multipliers` (which must outlive the ladder; the ladder keeps a copy of `mesh`),
+/// each factorized by `distribution` (its ranks then build every level together, in one order).
 GramLadder extension_gram_ladder(const mesh::Mesh& mesh, std::vector<int> cell_degrees,
-                                 const space::MultiplierSpace& multipliers);
+                                 const space::MultiplierSpace& multipliers, linalg::Distribution distribution = {});
 
 /// The ladder of `sub` read off that of `envelope` (restrict_gram), which must outlive it.
 GramLadder restricted_ladder(const GramLadder& envelope, const space::MultiplierSpace& envelope_space,

@@ -146,7 +146,8 @@ std::optional<std::vector<int>> grading_vertices(const mesh::Mesh& mesh, const s
 
 ExtensionReferenceFactor::ExtensionReferenceFactor(const mesh::Mesh& mesh, const std::vector<int>& cell_degrees,
                                                    const ExtensionReference& reference,
-                                                   const std::vector<double>& grading_points) {
+                                                   const std::vector<double>& grading_points,
+                                                   linalg::Distribution distribution) {
   if (reference.refinements < 0 || reference.extra_degree < 0 || reference.layers < 0)
     throw InputError("extension norm: refinements, layers and extra_degree must be >= 0");
   fine_ = std::make_unique<mesh::Mesh>(mesh);
@@ -182,7 +183,7 @@ ExtensionReferenceFactor::ExtensionReferenceFactor(const mesh::Mesh& mesh, const
   }
   if (fine_->has_curved_cells()) graded_ = false;
   for (int& p : degrees) p += reference.extra_degree;
-  operators_ = std::make_unique<operators::PrimalOperators>(*fine_, std::move(degrees));
+  operators_ = std::make_unique<operators::PrimalOperators>(*fine_, std::move(degrees), nullptr, distribution);
   operators_->gram_factor();
 }
 
@@ -195,8 +196,9 @@ Eigen::MatrixXd extension_norm_gram(const ExtensionReferenceFactor& reference,
 
 Eigen::MatrixXd extension_norm_gram(const mesh::Mesh& mesh, const std::vector<int>& cell_degrees,
                                     const space::MultiplierSpace& multipliers, const ExtensionReference& reference,
-                                    bool* graded) {
-  const ExtensionReferenceFactor factor(mesh, cell_degrees, reference, multipliers.boundary_mesh().nodes());
+                                    bool* graded, linalg::Distribution distribution) {
+  const ExtensionReferenceFactor factor(mesh, cell_degrees, reference, multipliers.boundary_mesh().nodes(),
+                                        distribution);
   if (graded) *graded = factor.graded();
   return extension_norm_gram(factor, multipliers);
 }

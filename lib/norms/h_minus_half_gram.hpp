@@ -64,9 +64,11 @@ ExtensionReference extension_reference_at(int level);
 /// per (T_h, p, grading points), it serves every multiplier space on Γ_C with those breakpoints.
 class ExtensionReferenceFactor {
  public:
-  /// `grading_points`: arc lengths on Γ_C of `mesh`.
+  /// `grading_points`: arc lengths on Γ_C of `mesh`. `distribution`: K + M factorized over its
+  /// ranks (each of them builds S_ref whole, and all make the same calls), or serial.
   ExtensionReferenceFactor(const mesh::Mesh& mesh, const std::vector<int>& cell_degrees,
-                           const ExtensionReference& reference, const std::vector<double>& grading_points = {});
+                           const ExtensionReference& reference, const std::vector<double>& grading_points = {},
+                           linalg::Distribution distribution = {});
   const operators::PrimalOperators& operators() const { return *operators_; }
   /// Whether S_ref is graded towards every grading point (they are vertices of T_h refined at most
   /// twice more, with disjoint stars). Without it α converges algebraically, slowly, and the
@@ -88,6 +90,6 @@ Eigen::MatrixXd extension_norm_gram(const ExtensionReferenceFactor& reference,
 /// ExtensionReferenceFactor::graded().
 Eigen::MatrixXd extension_norm_gram(const mesh::Mesh& mesh, const std::vector<int>& cell_degrees,
                                     const space::MultiplierSpace& multipliers, const ExtensionReference& reference,
-                                    bool* graded = nullptr);
+                                    bool* graded = nullptr, linalg::Distribution distribution = {});
 
 }  // namespace hpcontact::norms

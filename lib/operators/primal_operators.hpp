@@ -24,10 +24,10 @@ namespace hpcontact::operators {
 class PrimalOperators {
  public:
   /// `mesh` (and `log`, when given) must outlive the object. Builds the space and Γ_C only.
-  /// `distribution` other than serial: the factors are factorized over the MPI ranks (every rank
-  /// must construct the object and make the same calls on it, in the same order).
+  /// `distribution` other than serial: the factors are factorized over its ranks (every one of
+  /// them must construct the object and make the same calls on it, in the same order).
   PrimalOperators(const mesh::Mesh& mesh, std::vector<int> cell_degrees, OperatorLog* log = nullptr,
-                  linalg::Distribution distribution = linalg::Distribution::serial);
+                  linalg::Distribution distribution = {});
   ~PrimalOperators();
 
   const mesh::Mesh& mesh() const { return *mesh_; }

@@ -12,12 +12,12 @@
 #include <memory>
 #include <optional>
 #include <set>
-#include <sstream>
 #include <tuple>
 
 #include "core/error.hpp"
 #include "core/petsc_session.hpp"
 #include "core/rank_agreement.hpp"
+#include "core/rank_groups.hpp"
 #include "core/shared_counter.hpp"
 #include "driver/elastic_run.hpp"
 #include "driver/scene_discretization.hpp"
@@ -146,33 +146,6 @@ std::vector<std::string> alpha_columns() {
 
 namespace {
 
-// Every rank's (index, line) pairs, on rank 0 sorted by index (empty elsewhere).
-std::vector<std::pair<int, std::string>> gather_rows_on_rank_zero(
-    const std::vector<std::pair<int, std::string>>& rows) {
-  const int rank = mpi_rank_and_size().first, size = mpi_rank_and_size().second;
-  std::string packed;
-  for (const auto& [index, line] : rows) packed += std::to_string(index) + '\t' + line;  // line ends in '\n'
-  int length = static_cast<int>(packed.size());
-  std::vector<int> lengths(size), offsets(size, 0);
-  MPI_Gather(&length, 1, MPI_INT, lengths.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
-  std::string all;
-  if (rank == 0) {
-    for (int r = 1; r < size; ++r) offsets[r] = offsets[r - 1] + lengths[r - 1];
-    all.resize(static_cast<std::size_t>(offsets[size - 1] + lengths[size - 1]));
-  }
-  MPI_Gatherv(packed.data(), length, MPI_CHAR, all.data(), lengths.data(), offsets.data(), MPI_CHAR, 0, MPI_COMM_WORLD);
-  std::vector<std::pair<int, std::string>> out;
-  std::stringstream stream(all);
-  for (std::string index, line; std::getline(stream, index, '\t') && std::getline(stream, line);)
-    out.emplace_back(std::stoi(index), line + '\n');
-  std::sort(out.begin(), out.end());
-  return out;
-}
-
-}  // namespace
-
-namespace {
-
 // What the points of one level share: per (norm, ratio) the Gram ladder of the envelope
 // multiplier space, whose degree on each segment is the largest of the sweep's p_C there: every
 // point's G is a principal submatrix of it (norms::restrict_gram), so one Gram matrix per
@@ -195,6 +168,8 @@ struct SweepRun {
   std::map<std::pair<std::size_t, std::size_t>, std::set<int>> degrees_used;
   infsup::EigenBackend backend;
   int largest_p;
+  /// The factorizations of a unit: serial, or over the ranks of this rank's group.
+  linalg::Distribution distribution;
 };
 
 // T_h of one group (level, p) and its operators, shared by the group's points.
@@ -207,12 +182,12 @@ struct GroupMesh {
   /// An elastic scene's operators (its α pairs [S^p(T_h)]² with the normal and tangential
   /// multipliers); null for the scalar model.
   std::unique_ptr<operators::ElasticOperators> elastic;
-  GroupMesh(const scene::Scene& level_scene)
+  GroupMesh(const scene::Scene& level_scene, linalg::Distribution distribution)
       : scene(level_scene),
         mesh(scene::build_scene_mesh(scene)),
         contact(mesh),
         cell_degrees(scene::scene_cell_degrees(scene, mesh)),
-        primal(mesh, cell_degrees) {
+        primal(mesh, cell_degrees, nullptr, distribution) {
     if (scene.is_elastic()) elastic = driver::scene_elastic_operators(scene, mesh, cell_degrees);
   }
 };
@@ -237,7 +212,7 @@ const EnvelopeGram& envelope_of(const SweepRun& run, const SweepPoint& point, co
           : norms::extension_gram_ladder(
                 group.mesh,
                 scene::scene_cell_degrees(point_scene(level_scene, run.largest_p, -1, std::nullopt), group.mesh),
-                *envelope.multipliers));
+                *envelope.multipliers, run.distribution));
   return envelope;
 }
 
@@ -312,17 +287,38 @@ void merge_sweep_shards(const StabilitySweep& sweep, const std::vector<std::file
   io::write_file_atomically(alpha_csv, merged.content());
 }
 
+void check_sweep_ranks(const StabilitySweep& sweep, const SweepRanks& sweep_ranks, int ranks) {
+  const std::string value = std::to_string(sweep_ranks.per_unit);
+  if (sweep_ranks.per_unit < 1 || ranks % sweep_ranks.per_unit != 0)
+    throw_bad_input("command line", "--ranks-per-unit", value,
+                    fmt::format("a divisor of the {} rank{} of this run (the ranks form groups of equal size)", ranks,
+                                ranks > 1 ? "s" : ""));
+  if (sweep_ranks.per_unit > 1)
+    for (std::size_t level = 0; level < sweep.levels.size(); ++level)
+      if (sweep.levels[level].scene.is_elastic())
+        throw_bad_input("command line", "--ranks-per-unit", value,
+                        fmt::format("1 for this sweep: {} is elastic, and elastic operators are built on one rank",
+                                    level_name(sweep, level)));
+}
+
 bool run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::path& alpha_csv,
-                         const std::function<void(int, int, const std::string&)>& progress, SweepShard shard) {
-  // 1. The points, the rows an earlier run stored, and the plan of what is left.
+                         const std::function<void(int, int, const std::string&)>& progress, SweepShard shard,
+                         SweepRanks sweep_ranks) {
+  // 1. The groups of ranks that take units, the points, the rows an earlier run stored, and the
+  // plan of what is left. A group's leader (its rank 0) takes the units and keeps their rows.
   const int rank = mpi_rank_and_size().first;
   const int size = mpi_rank_and_size().second;
+  check_sweep_ranks(sweep, sweep_ranks, size);
+  const RankGroups groups(sweep_ranks.per_unit);
+  const bool leader = groups.rank_in_group() == 0;
+  const int workers = groups.n_groups();
   SweepRun run{sweep,
                list_sweep_points(sweep),
                ratio_choices(sweep),
                {},
                infsup::parse_eigen_backend(sweep.eigensolver, sweep.file),
-               sweep.degrees.empty() ? 0 : *std::max_element(sweep.degrees.begin(), sweep.degrees.end())};
+               sweep.degrees.empty() ? 0 : *std::max_element(sweep.degrees.begin(), sweep.degrees.end()),
+               linalg::distribution_over(groups.group(), sweep_ranks.solver)};
   run.degrees_used = multiplier_degrees_used(run.points);
   AlphaRows rows(run.points);
   rows.read(alpha_csv, rank == 0);
@@ -331,7 +327,7 @@ bool run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
   // the full grid 83 -> 44 s. With fewer, whole levels keep the processes busy and a split only
   // repeats each (level, p)'s factorizations per ratio (2 ranks: 71-77 -> 84 s). Slices decide by
   // their count alone, so that a slice's groups do not depend on the ranks it runs on.
-  const bool split_ratios = (shard.count > 1 ? shard.count : size) > static_cast<int>(sweep.levels.size());
+  const bool split_ratios = (shard.count > 1 ? shard.count : workers) > static_cast<int>(sweep.levels.size());
   SweepPlan plan = plan_sweep(sweep, run.points, rows.keys(), split_ratios);
   if (shard.count > 1) {
     // The shard's groups come from the plan of the whole sweep, so they do not move when this
@@ -342,15 +338,16 @@ bool run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
     for (std::size_t g = 0; g < plan.groups.size(); ++g)
       if (whole.groups[g].owner != shard.index) plan.groups[g].todo = false;
   }
-  // The schedule on `size` ranks decides whether shares stay whole (sweep_work_units).
-  schedule_sweep_groups(plan, size);
+  // The schedule on the groups decides whether shares stay whole (sweep_work_units).
+  schedule_sweep_groups(plan, workers);
 
-  // 2. Units of groups, taken in turn by whichever rank is idle; every group saved durably when it
-  // is finished: an interrupted sweep resumes from the last finished group. A failure on one
-  // rank (bad data at a level, a full disk) lets no rank take new work and ends the run on every
-  // rank.
+  // 2. Units of groups, taken in turn by whichever group of ranks is idle; every group saved
+  // durably when it is finished: an interrupted sweep resumes from the last finished group. A
+  // failure on one rank (bad data at a level, a full disk) ends its group's unit on every rank of
+  // the group, lets no group take new work and ends the run on every rank.
   std::vector<std::pair<int, std::string>> new_rows;  // (point index, CSV line) under mpirun
-  const auto units = sweep_work_units(plan, size);
+  const auto units = sweep_work_units(plan, workers);
+  const long n_units = static_cast<long>(units.size());
   SharedCounter next_unit;
   // A level's Gram ladders are kept until no unit left to take holds the level (units are taken
   // in order), so a rank that takes a level's groups in several turns builds them once.
@@ -368,34 +365,47 @@ bool run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
       total += g.holds(run.points[k]) && !rows.has(run.points[k].key());
   auto run_group = [&](const SweepGroup& g) {
     LevelGrams& grams = grams_of_level[g.level];
-    const GroupMesh group(point_scene(sweep.levels[g.level].scene, run.points[g.first].p, -1, std::nullopt));
+    const GroupMesh group(point_scene(sweep.levels[g.level].scene, run.points[g.first].p, -1, std::nullopt),
+                          run.distribution);
     std::string group_lines;
     for (std::size_t k = g.first; k < g.last; ++k) {
       const SweepPoint& point = run.points[k];
       if (!g.holds(point) || rows.has(point.key())) continue;
       const auto& ratio = run.ratios[point.ratio];
-      if (progress)
+      if (progress && leader)
         progress(++done, total,
                  fmt::format("{} {} p={} pC={} {}{}", point.problem, point.norm, point.reported_p, point.reported_pc,
                              level_name(sweep, g.level), ratio ? " h/H=" + ratio->text : ""));
       const std::string line = compute_point(run, point, group, grams);
       rows.set(point.key(), line);
       group_lines += line;
-      if (size > 1) new_rows.emplace_back(static_cast<int>(k), line);
+      if (size > 1 && leader) new_rows.emplace_back(static_cast<int>(k), line);
     }
     if (size == 1)
       io::write_file_atomically(alpha_csv, rows.content());
-    else if (!group_lines.empty())
+    else if (leader && !group_lines.empty())
       append_durably(shard_path(alpha_csv, rank), group_lines);
+  };
+  // The leader takes the next unit and tells the rest of its group.
+  auto take_unit = [&] {
+    long unit = leader ? next_unit.take() : 0;
+    if (groups.group_size() > 1) MPI_Bcast(&unit, 1, MPI_LONG, 0, groups.group());
+    return unit;
   };
   run_on_all_ranks_agreeing([&] {
     try {
-      for (long unit = next_unit.take(); unit < static_cast<long>(units.size()); unit = next_unit.take()) {
+      for (long unit = take_unit(); unit < n_units; unit = take_unit()) {
         std::erase_if(grams_of_level, [&](const auto& held) { return last_unit_of_level[held.first] < unit; });
-        for (std::size_t g : units[static_cast<std::size_t>(unit)]) run_group(plan.groups[g]);
+        // A failure on one rank of the group reaches the others before they wait in the next
+        // collective call of the unit.
+        run_on_all_ranks_agreeing(
+            [&] {
+              for (std::size_t g : units[static_cast<std::size_t>(unit)]) run_group(plan.groups[g]);
+            },
+            groups.group());
       }
     } catch (...) {
-      next_unit.exhaust(static_cast<long>(units.size()));
+      if (leader) next_unit.exhaust(n_units);
       throw;
     }
   });

@@ -9,6 +9,7 @@
 
 #include "infsup/infsup_analysis.hpp"
 #include "io/csv_writer.hpp"
+#include "linalg/distribution.hpp"
 #include "scene/ratio.hpp"
 #include "scene/scene_variants.hpp"
 #include "studies/sweep_verdicts.hpp"
@@ -66,16 +67,30 @@ struct SweepShard {
 /// "i/N" with 0 ≤ i < N. @throws InputError naming `origin`, the option and the allowed form.
 SweepShard parse_sweep_shard(const std::string& text, const std::string& origin);
 
+/// How the ranks of mpirun share a sweep's units (`hpcontact sweep --ranks-per-unit k
+/// --distributed-solver S`): groups of k consecutive ranks take units together, and factorize each
+/// point's K + M and the extension norm's references over the group by S; with k = 1 each rank
+/// takes units alone.
+struct SweepRanks {
+  int per_unit = 1;
+  linalg::DistributedSolver solver = linalg::DistributedSolver::substructuring;
+};
+/// @throws InputError naming --ranks-per-unit unless it divides `ranks` (and is 1 for a sweep
+/// with elastic levels, which run on one rank).
+void check_sweep_ranks(const StabilitySweep& sweep, const SweepRanks& sweep_ranks, int ranks);
+
 /// Runs every point (of `shard`) not already in `alpha_csv` (resumable), rewriting the file
 /// atomically after each group of points sharing (level, p). `progress(done, total, label)` is
 /// called before each point (`done`: the points stored before and those this process computed,
 /// this one included; `total`: those stored and those to do in this run, a slice's own; under
-/// mpirun rank 0 computes only a share of them). Under mpirun the ranks of MPI_COMM_WORLD
-/// take units of groups (whole levels or single groups, longest first: sweep_work_units) as they
-/// become idle, and rank 0 writes the rows in the serial order (the file is then written once,
-/// at the end). Returns whether alpha_csv holds every point of the sweep.
+/// mpirun rank 0 computes only a share of them). Under mpirun the groups of `sweep_ranks` (single
+/// ranks by default) take units of groups (whole levels or single groups, longest first:
+/// sweep_work_units) as they become idle, and rank 0 writes the rows in the serial order (the
+/// file is then written once, at the end). Returns whether alpha_csv holds every point of the
+/// sweep.
 bool run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::path& alpha_csv,
-                         const std::function<void(int, int, const std::string&)>& progress = {}, SweepShard shard = {});
+                         const std::function<void(int, int, const std::string&)>& progress = {}, SweepShard shard = {},
+                         SweepRanks sweep_ranks = {});
 
 /// The alpha.csv of every folder in `shards` (and the per-rank shards beside each) into
 /// `alpha_csv`, in the serial order: equal to a serial run's file but for the seconds column. A

@@ -3,6 +3,7 @@
 
 #include <fcntl.h>
 #include <fmt/format.h>
+#include <mpi.h>
 #include <sys/file.h>
 #include <unistd.h>
 
@@ -13,6 +14,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/petsc_session.hpp"
 #include "io/csv_writer.hpp"
 #include "studies/stability_sweep.hpp"
 
@@ -218,6 +220,28 @@ std::string AlphaRows::content() const {
   std::string content = io::CsvTable(alpha_columns()).to_string();
   for (const auto& [index, line] : lines) content += *line;
   return content;
+}
+
+std::vector<std::pair<int, std::string>> gather_rows_on_rank_zero(
+    const std::vector<std::pair<int, std::string>>& rows) {
+  const int rank = mpi_rank_and_size().first, size = mpi_rank_and_size().second;
+  std::string packed;
+  for (const auto& [index, line] : rows) packed += std::to_string(index) + '\t' + line;  // line ends in '\n'
+  int length = static_cast<int>(packed.size());
+  std::vector<int> lengths(size), offsets(size, 0);
+  MPI_Gather(&length, 1, MPI_INT, lengths.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+  std::string all;
+  if (rank == 0) {
+    for (int r = 1; r < size; ++r) offsets[r] = offsets[r - 1] + lengths[r - 1];
+    all.resize(static_cast<std::size_t>(offsets[size - 1] + lengths[size - 1]));
+  }
+  MPI_Gatherv(packed.data(), length, MPI_CHAR, all.data(), lengths.data(), offsets.data(), MPI_CHAR, 0, MPI_COMM_WORLD);
+  std::vector<std::pair<int, std::string>> out;
+  std::stringstream stream(all);
+  for (std::string index, line; std::getline(stream, index, '\t') && std::getline(stream, line);)
+    out.emplace_back(std::stoi(index), line + '\n');
+  std::sort(out.begin(), out.end());
+  return out;
 }
 
 }  // namespace hpcontact::studies

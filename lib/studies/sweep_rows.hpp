@@ -8,6 +8,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "studies/sweep_plan.hpp"
@@ -36,6 +37,10 @@ std::vector<std::filesystem::path> existing_shards(const std::filesystem::path& 
 
 /// Appends `lines` to `file` and syncs it to disk. @throws IoError naming the file.
 void append_durably(const std::filesystem::path& file, const std::string& lines);
+
+/// Every rank's (point index, CSV line) pairs gathered on rank 0 of MPI_COMM_WORLD, sorted by
+/// index (empty on the other ranks). Collective.
+std::vector<std::pair<int, std::string>> gather_rows_on_rank_zero(const std::vector<std::pair<int, std::string>>& rows);
 
 /// Holds an exclusive lock on `folder`/.sweep.lock for the life of the object (released when the
 /// process ends, however it ends). @throws InputError naming the process that holds it.

@@ -1,0 +1,121 @@
+// A sweep's units taken by groups of ranks under mpirun (`hpcontact sweep --ranks-per-unit k`):
+// each unit's factorizations and extension references distributed over its group, the result
+// equal to the serial sweep's, and --ranks-per-unit checked against the ranks.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli_runner.hpp"
+
+namespace {
+
+using hpcontact::testing::run_command;
+using hpcontact::testing::scratch;
+
+const std::string kMpi = "env OPENBLAS_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ";
+
+// The sweep of test_20's mpirun test: 3 levels, p = 1..3, both norms, ratios and pairings.
+std::filesystem::path write_sweep(const std::filesystem::path& dir, const std::string& levels = "[4, 8, 16]",
+                                  const std::string& degrees = "p = \"1..3\"\npC = \"0..2\"\n") {
+  std::filesystem::copy_file(HPCONTACT_SOURCE_DIR "/studies/stability/square.toml", dir / "square.toml",
+                             std::filesystem::copy_options::overwrite_existing);
+  std::ofstream(dir / "sweep.toml") << "[sweep]\nscene = \"square.toml\"\n"
+                                    << degrees << "levels = { \"domain.n_x\" = " << levels
+                                    << ", \"domain.n_y\" = " << levels << " }\n"
+                                    << "ratio = [1, \"1/2\"]\nnorm = [\"interp\", \"extension\"]\n"
+                                    << "problem = [\"signorini\", \"friction\"]\n";
+  return dir / "sweep.toml";
+}
+
+// alpha.csv as rows of fields.
+std::vector<std::vector<std::string>> read_rows(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::vector<std::vector<std::string>> rows;
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> fields;
+    std::stringstream stream(line);
+    for (std::string field; std::getline(stream, field, ',');) fields.push_back(field);
+    rows.push_back(fields);
+  }
+  return rows;
+}
+
+// Every column of `b` equal to `a`'s, but alpha (to 1e-10 relative: the distributed factors sum
+// in another order), alpha_error (an estimate of round-off size at these levels) and seconds.
+void expect_equal_sweeps(const std::filesystem::path& a, const std::filesystem::path& b) {
+  const auto expected = read_rows(a), actual = read_rows(b);
+  ASSERT_EQ(expected.size(), actual.size()) << b;
+  ASSERT_GT(expected.size(), 1u);
+  const auto& header = expected.front();
+  for (std::size_t r = 1; r < expected.size(); ++r) {
+    ASSERT_EQ(expected[r].size(), actual[r].size());
+    for (std::size_t c = 0; c < header.size(); ++c) {
+      if (header[c] == "seconds" || header[c] == "alpha_error") continue;
+      if (header[c] == "alpha")
+        EXPECT_NEAR(std::stod(actual[r][c]), std::stod(expected[r][c]), 1e-10 * std::stod(expected[r][c]))
+            << b << " row " << r;
+      else
+        EXPECT_EQ(actual[r][c], expected[r][c]) << b << " row " << r << " column " << header[c];
+    }
+  }
+}
+
+}  // namespace
+
+// Two groups of two ranks, each unit over its group by substructuring and by BDDC: the serial α.
+TEST(SweepRankGroups, GroupsOfTwoRanksGiveTheSerialAlpha) {
+  const auto dir = scratch("sweep_groups");
+  const auto sweep = write_sweep(dir);
+  const auto serial =
+      run_command(kMpi + HPCONTACT_CLI " sweep " + sweep.string() + " --out " + (dir / "serial").string());
+  ASSERT_EQ(serial.exit_code, 0) << serial.output;
+  for (const std::string solver : {"substructuring", "bddc"}) {
+    const auto out = dir / solver;
+    const auto groups =
+        run_command(kMpi + "timeout 300 mpirun -n 4 --oversubscribe " HPCONTACT_CLI " sweep " + sweep.string() +
+                    " --out " + out.string() + " --ranks-per-unit 2 --distributed-solver " + solver);
+    ASSERT_EQ(groups.exit_code, 0) << groups.output;
+    EXPECT_NE(groups.output.find("on 4 ranks"), std::string::npos) << groups.output;
+    expect_equal_sweeps(dir / "serial" / "alpha.csv", out / "alpha.csv");
+    EXPECT_TRUE(std::filesystem::exists(out / "verdicts.csv"));
+  }
+}
+
+// The solves of a unit run on its group's two ranks, not on one rank or on all four (PETSc's
+// view of the BDDC solver names the size of its communicator).
+TEST(SweepRankGroups, UnitSolvesRunOnTheGroupsRanks) {
+  const auto dir = scratch("sweep_groups_view");
+  const auto sweep = write_sweep(dir, "[4]", "p = [2]\npC = [1]\n");
+  const auto result =
+      run_command(kMpi + "timeout 300 mpirun -n 4 --oversubscribe " HPCONTACT_CLI " sweep " + sweep.string() +
+                  " --out " + (dir / "out").string() + " --ranks-per-unit 2 --distributed-solver bddc -bddc_ksp_view");
+  ASSERT_EQ(result.exit_code, 0) << result.output.substr(0, 4000);
+  EXPECT_NE(result.output.find("KSP Object: (bddc_) 2 MPI processes"), std::string::npos);
+  EXPECT_EQ(result.output.find("KSP Object: (bddc_) 4 MPI processes"), std::string::npos);
+  EXPECT_EQ(result.output.find("KSP Object: (bddc_) 1 MPI process"), std::string::npos);
+}
+
+// Groups must divide the ranks; elastic levels run on one rank. Exit 2 naming the option, on
+// every rank alike, before anything is computed.
+TEST(SweepRankGroups, GroupSizesThatDoNotFitAreRefused) {
+  const auto dir = scratch("sweep_groups_bad");
+  const auto sweep = write_sweep(dir);
+  const auto uneven = run_command(kMpi + "timeout 120 mpirun -n 3 --oversubscribe " HPCONTACT_CLI " sweep " +
+                                  sweep.string() + " --out " + (dir / "a").string() + " --ranks-per-unit 2");
+  EXPECT_EQ(uneven.exit_code, 2) << uneven.output;
+  EXPECT_NE(uneven.output.find("key '--ranks-per-unit' = 2: a divisor of the 3 ranks"), std::string::npos)
+      << uneven.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "a" / "alpha.csv"));
+  std::ofstream(dir / "elastic.toml") << "[sweep]\nscene = \"" HPCONTACT_SOURCE_DIR
+                                         "/studies/elasticity/square.toml\"\np = [2]\npC = [1]\n";
+  const auto elastic =
+      run_command(kMpi + "timeout 120 mpirun -n 2 --oversubscribe " HPCONTACT_CLI " sweep " +
+                  (dir / "elastic.toml").string() + " --out " + (dir / "b").string() + " --ranks-per-unit 2");
+  EXPECT_EQ(elastic.exit_code, 2) << elastic.output;
+  EXPECT_NE(elastic.output.find("elastic operators are built on one rank"), std::string::npos) << elastic.output;
+}
