@@ -44,14 +44,14 @@ bool has_temporary_files(const std::filesystem::path& folder) {
 }
 
 // A sweep of the §7 square on three levels, small enough for a second, big enough for 16 KiB; or
-// a longer one (about ten seconds) to be stopped on the way.
+// a longer one (12 s on one rank, 6 s on two, 2026-11) to be stopped on the way.
 std::filesystem::path write_sweep(const std::filesystem::path& dir, bool long_running = false) {
   std::filesystem::copy_file(HPCONTACT_SOURCE_DIR "/studies/stability/square.toml", dir / "square.toml",
                              std::filesystem::copy_options::overwrite_existing);
   std::ofstream(dir / "sweep.toml")
       << "[sweep]\nscene = \"square.toml\"\n"
-      << (long_running ? "p = \"1..5\"\npC = \"0..4\"\nnorm = [\"interp\", \"extension\"]\n"
-                         "levels = { \"domain.n_x\" = [8, 16, 24, 32], \"domain.n_y\" = [8, 16, 24, 32] }\n"
+      << (long_running ? "p = \"1..6\"\npC = \"0..5\"\nnorm = [\"interp\", \"extension\"]\n"
+                         "levels = { \"domain.n_x\" = [8, 16, 24, 32, 40], \"domain.n_y\" = [8, 16, 24, 32, 40] }\n"
                        : "p = \"1..3\"\npC = \"0..2\"\n"
                          "levels = { \"domain.n_x\" = [4, 8, 16], \"domain.n_y\" = [4, 8, 16] }\n")
       << "ratio = [1, \"1/2\"]\nproblem = [\"signorini\", \"friction\"]\n";

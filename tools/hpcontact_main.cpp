@@ -26,8 +26,7 @@ int report(const std::exception& error) {
   using namespace hpcontact;
   const int code = exit_code_of(error);
   const auto [rank, ranks] = mpi_rank_and_size();
-  constexpr double kPatience = 10.0;  // seconds between the first and last rank failing alike
-  if (ranks > 1 && !failure_agreed()) every_rank_fails_within(kPatience);
+  if (ranks > 1 && !failure_agreed()) every_rank_fails_within(kFailurePatience);
   if (failure_agreed() && rank != 0) return code;
   const char* kind = code == 2   ? "error"
                      : code == 3 ? "numerical failure"

@@ -18,10 +18,33 @@
 namespace hpcontact {
 namespace {
 bool agreed = false;
+bool alone = false;
 MPI_Comm failure_channel = MPI_COMM_NULL;
+
+// Whether every rank of `channel` enters a non-blocking barrier on it within `seconds`.
+bool barrier_within(MPI_Comm channel, double seconds) {
+  MPI_Request request = MPI_REQUEST_NULL;
+  MPI_Ibarrier(channel, &request);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  int done = 0;
+  for (;;) {
+    MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+    if (done) return true;
+    if (std::chrono::steady_clock::now() > deadline) return false;  // the job is aborted next
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+}
+
 }  // namespace
 
 bool failure_agreed() { return agreed; }
+bool failed_alone() { return alone; }
+
+bool group_fails_within(MPI_Comm channel, double seconds) {
+  if (channel == MPI_COMM_NULL || barrier_within(channel, seconds)) return true;
+  alone = true;
+  return false;
+}
 
 void open_failure_channel() {
   if (failure_channel != MPI_COMM_NULL || mpi_rank_and_size().second == 1) return;
@@ -29,20 +52,9 @@ void open_failure_channel() {
 }
 
 bool every_rank_fails_within(double seconds) {
-  if (failure_channel == MPI_COMM_NULL) return false;
-  MPI_Request request = MPI_REQUEST_NULL;
-  MPI_Ibarrier(failure_channel, &request);
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-  int done = 0;
-  for (;;) {
-    MPI_Test(&request, &done, MPI_STATUS_IGNORE);
-    if (done) {
-      agreed = true;
-      return true;
-    }
-    if (std::chrono::steady_clock::now() > deadline) return false;  // the job is aborted next
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
+  if (failure_channel == MPI_COMM_NULL || alone || !barrier_within(failure_channel, seconds)) return false;
+  agreed = true;
+  return true;
 }
 
 void run_on_all_ranks_agreeing(const std::function<void()>& work, MPI_Comm ranks) {
@@ -56,9 +68,11 @@ void run_on_all_ranks_agreeing(const std::function<void()>& work, MPI_Comm ranks
   try {
     work();
   } catch (const std::exception& error) {
+    if (alone) throw;  // the others wait elsewhere: no reduction, the job is aborted
     code = exit_code_of(error);
     message = error.what();
   } catch (...) {  // leaving one rank alone would hang the others in the reduction below
+    if (alone) throw;
     code = 1;
     message = "an exception that is not a std::exception";
   }

@@ -22,6 +22,21 @@ bool failure_agreed();
 /// under a launcher; a no-op on one rank).
 void open_failure_channel();
 
+/// Seconds between the first and the last rank of a collective failure reaching the failure
+/// channel, beyond which a rank is taken to have failed alone.
+constexpr double kFailurePatience = 10.0;
+
+/// For a failure inside collective work on a group of ranks (`channel`: the group's own failure
+/// channel, RankGroups::failure_channel()): whether every rank of the group fails within `seconds`
+/// of this one. If not, this rank failed alone and the others may wait in a collective call of the
+/// work: from then on run_on_all_ranks_agreeing lets failures pass without a collective call and
+/// failed_alone() is true, so that the failure reaches the tool's report, which aborts the job.
+bool group_fails_within(MPI_Comm channel, double seconds);
+
+/// Whether group_fails_within found this rank failing alone (collective clean-up, e.g. freeing a
+/// communicator or an MPI window, must then be skipped: the other ranks never come).
+bool failed_alone();
+
 /// Whether every rank reports a failure within `seconds` of this rank's: a failure all ranks raise
 /// alike (bad input read by each, a collective solve that did not converge) is then reported once
 /// and ends every rank cleanly, while a failure of one rank alone (the others may wait in a

@@ -5,6 +5,7 @@
 
 #include "core/error.hpp"
 #include "core/petsc_session.hpp"
+#include "core/rank_agreement.hpp"
 
 namespace hpcontact {
 
@@ -18,12 +19,16 @@ RankGroups::RankGroups(int group_size) {
   // Keyed by world rank, so a group's rank 0 is its lowest world rank.
   HPC_VERIFY(MPI_Comm_split(MPI_COMM_WORLD, rank / group_size, rank, &group_) == MPI_SUCCESS, "MPI_Comm_split failed");
   MPI_Comm_rank(group_, &rank_in_group_);
+  MPI_Comm_dup(group_, &failure_channel_);
 }
 
 RankGroups::~RankGroups() {
   int finalized = 0;
   MPI_Finalized(&finalized);
-  if (group_ != MPI_COMM_SELF && !finalized) MPI_Comm_free(&group_);
+  // Freeing is collective (in the standard); a rank that failed alone leaves them to the abort.
+  if (group_ == MPI_COMM_SELF || finalized || failed_alone()) return;
+  MPI_Comm_free(&failure_channel_);
+  MPI_Comm_free(&group_);
 }
 
 }  // namespace hpcontact

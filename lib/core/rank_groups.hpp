@@ -20,6 +20,9 @@ class RankGroups {
 
   /// This rank's group; valid while the object lives.
   MPI_Comm group() const { return group_; }
+  /// A copy of the group's communicator on which its failing ranks meet (group_fails_within),
+  /// apart from the collective calls of the work; MPI_COMM_NULL for groups of one.
+  MPI_Comm failure_channel() const { return failure_channel_; }
   /// This rank's rank in its group (0: the group's leader).
   int rank_in_group() const { return rank_in_group_; }
   int group_size() const { return group_size_; }
@@ -28,6 +31,7 @@ class RankGroups {
 
  private:
   MPI_Comm group_ = MPI_COMM_SELF;
+  MPI_Comm failure_channel_ = MPI_COMM_NULL;
   int rank_in_group_ = 0, group_size_ = 1, n_groups_ = 1;
 };
 

@@ -4,6 +4,7 @@
 
 #include "core/error.hpp"
 #include "core/petsc_session.hpp"
+#include "core/rank_agreement.hpp"
 
 namespace hpcontact {
 
@@ -24,7 +25,8 @@ SharedCounter::SharedCounter() {
 }
 
 SharedCounter::~SharedCounter() {
-  if (window_ == MPI_WIN_NULL) return;
+  // Freeing the window waits for every rank, which a rank that failed alone would not see again.
+  if (window_ == MPI_WIN_NULL || failed_alone()) return;
   MPI_Win_unlock_all(window_);
   MPI_Win_free(&window_);
 }

@@ -2,6 +2,7 @@
 #include "infsup/infsup_analysis.hpp"
 
 #include <fmt/format.h>
+#include <mpi.h>
 
 #include <algorithm>
 #include <cmath>
@@ -72,6 +73,7 @@ InfSupResult analyse_infsup(const InfSupSetup& setup, EigenBackend backend) {
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
   const std::unique_ptr<norms::GramLadder> own = setup.grams ? nullptr : own_ladder(setup, multipliers);
   const norms::GramLadder& grams = setup.grams ? *setup.grams : *own;
+  const linalg::Distribution distribution = setup.primal ? setup.primal->distribution() : linalg::Distribution{};
   const double seconds_gram_before = grams.seconds();
   InfSupResult result;
   SmallestEigenpair pair;
@@ -91,7 +93,11 @@ InfSupResult analyse_infsup(const InfSupSetup& setup, EigenBackend backend) {
     result.alpha_error = result.alpha * std::abs(std::sqrt(fine_norm / coarse_norm) - 1.0);
     result.reference_level = level;
     result.alpha_converged = grams.geometric() && result.alpha_error <= setup.alpha_tolerance * result.alpha;
-    if (result.alpha_converged || !grams.geometric() || level == grams.top_level()) break;
+    int stop = result.alpha_converged || !grams.geometric() || level == grams.top_level();
+    // A distributed ladder builds its next level collectively, so every rank takes rank 0's
+    // decision: sums over the ranks agree to round-off, not necessarily to the bit.
+    if (distribution.distributed()) MPI_Bcast(&stop, 1, MPI_INT, 0, distribution.ranks);
+    if (stop) break;
   }
   result.zone_alpha = zone_alphas(operators, multipliers, fine);
   result.lambda_max = pair.largest_eigenvalue;

@@ -383,8 +383,12 @@ bool run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
     }
     if (size == 1)
       io::write_file_atomically(alpha_csv, rows.content());
-    else if (leader && !group_lines.empty())
-      append_durably(shard_path(alpha_csv, rank), group_lines);
+    else  // the leader writes; its failure (a full disk) ends the group's unit on all its ranks
+      run_on_all_ranks_agreeing(
+          [&] {
+            if (leader && !group_lines.empty()) append_durably(shard_path(alpha_csv, rank), group_lines);
+          },
+          groups.group());
   };
   // The leader takes the next unit and tells the rest of its group.
   auto take_unit = [&] {
@@ -396,13 +400,15 @@ bool run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
     try {
       for (long unit = take_unit(); unit < n_units; unit = take_unit()) {
         std::erase_if(grams_of_level, [&](const auto& held) { return last_unit_of_level[held.first] < unit; });
-        // A failure on one rank of the group reaches the others before they wait in the next
-        // collective call of the unit.
-        run_on_all_ranks_agreeing(
-            [&] {
-              for (std::size_t g : units[static_cast<std::size_t>(unit)]) run_group(plan.groups[g]);
-            },
-            groups.group());
+        try {
+          for (std::size_t g : units[static_cast<std::size_t>(unit)]) run_group(plan.groups[g]);
+        } catch (...) {
+          // A group's collective failure (a solve that failed, the leader's write) is raised on all
+          // its ranks; a rank failing alone would wait for the others forever in the agreement
+          // below, while they wait in the unit's collective calls: it ends the job instead.
+          group_fails_within(groups.failure_channel(), kFailurePatience);
+          throw;
+        }
       }
     } catch (...) {
       if (leader) next_unit.exhaust(n_units);
