@@ -56,4 +56,13 @@ long SharedCounter::exhaust(long end) {
   return before;
 }
 
+long SharedCounter::value() const {
+  if (window_ == MPI_WIN_NULL) return local_;
+  long now = 0;  // MPI_NO_OP: an atomic read beside the other ranks' MPI_SUM
+  HPC_VERIFY(MPI_Fetch_and_op(nullptr, &now, MPI_LONG, 0, 0, MPI_NO_OP, window_) == MPI_SUCCESS,
+             "MPI_Fetch_and_op failed");
+  MPI_Win_flush(0, window_);
+  return now;
+}
+
 }  // namespace hpcontact

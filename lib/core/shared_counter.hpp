@@ -26,6 +26,8 @@ class SharedCounter {
   /// rank calls it so the run ends after the units in progress. Returns the counter before, i.e.
   /// how many values below `end` were handed out.
   long exhaust(long end);
+  /// The counter now (another rank may advance it at any time).
+  long value() const;
 
  private:
   MPI_Win window_ = MPI_WIN_NULL;

@@ -355,11 +355,12 @@ bool run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
   std::map<std::size_t, long> last_unit_of_level;
   for (std::size_t u = 0; u < units.size(); ++u)
     for (std::size_t g : units[u]) last_unit_of_level[plan.groups[g].level] = static_cast<long>(u);
-  // The progress count: points stored before and points this process computed, of those stored and
-  // those to do in this run (a slice's own; under mpirun all, of which rank 0 computes a share).
-  int done =
+  // The progress count: points stored before and points computed by all ranks, of those stored and
+  // those to do in this run (a slice's own).
+  SharedCounter points_computed;
+  const int stored =
       static_cast<int>(std::ranges::count_if(run.points, [&](const SweepPoint& p) { return rows.has(p.key()); }));
-  int total = done;
+  int total = stored;
   for (const SweepGroup& g : plan.groups)
     for (std::size_t k = g.first; g.todo && k < g.last; ++k)
       total += g.holds(run.points[k]) && !rows.has(run.points[k].key());
@@ -373,10 +374,11 @@ bool run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
       if (!g.holds(point) || rows.has(point.key())) continue;
       const auto& ratio = run.ratios[point.ratio];
       if (progress && leader)
-        progress(++done, total,
+        progress(stored + static_cast<int>(points_computed.value()) + 1, total,
                  fmt::format("{} {} p={} pC={} {}{}", point.problem, point.norm, point.reported_p, point.reported_pc,
                              level_name(sweep, g.level), ratio ? " h/H=" + ratio->text : ""));
       const std::string line = compute_point(run, point, group, grams);
+      if (leader) points_computed.take();
       rows.set(point.key(), line);
       group_lines += line;
       if (size > 1 && leader) new_rows.emplace_back(static_cast<int>(k), line);

@@ -81,10 +81,9 @@ void check_sweep_ranks(const StabilitySweep& sweep, const SweepRanks& sweep_rank
 
 /// Runs every point (of `shard`) not already in `alpha_csv` (resumable), rewriting the file
 /// atomically after each group of points sharing (level, p). `progress(done, total, label)` is
-/// called before each point (`done`: the points stored before and those this process computed,
-/// this one included; `total`: those stored and those to do in this run, a slice's own; under
-/// mpirun rank 0 computes only a share of them). Under mpirun the groups of `sweep_ranks` (single
-/// ranks by default) take units of groups (whole levels or single groups, longest first:
+/// called before each point (`done`: the points stored before and those all ranks computed so far,
+/// this one included; `total`: those stored and those to do in this run, a slice's own). Under mpirun the groups of
+/// `sweep_ranks` (single ranks by default) take units of groups (whole levels or single groups, longest first:
 /// sweep_work_units) as they become idle, and rank 0 writes the rows in the serial order (the
 /// file is then written once, at the end). Returns whether alpha_csv holds every point of the
 /// sweep.
