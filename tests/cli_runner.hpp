@@ -5,11 +5,16 @@
 #include <sys/wait.h>
 
 #include <array>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 #include <string>
+#include <thread>
+
+#include "core/error.hpp"
+#include "studies/sweep_rows.hpp"
 
 namespace hpcontact::testing {
 
@@ -37,6 +42,20 @@ inline std::filesystem::path scratch(const std::string& name) {
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
+}
+
+// Waits (up to 30 s) until no process holds `folder`'s sweep lock: a stopped mpirun may return
+// before every rank of it has exited. Whether the lock came free.
+inline bool wait_for_sweep_lock(const std::filesystem::path& folder) {
+  for (int attempt = 0; attempt < 600; ++attempt) {
+    try {
+      const studies::FolderLock lock(folder);
+      return true;
+    } catch (const InputError&) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+  }
+  return false;
 }
 
 // A sweep's alpha.csv without its last column (seconds), for comparing runs.

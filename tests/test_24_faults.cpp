@@ -191,6 +191,7 @@ TEST(Faults, InterruptedMpirunSweepKeepsFinishedGroups) {
   }
   ASSERT_FALSE(std::filesystem::exists(out / "alpha.csv")) << "the run finished before it was stopped";
   EXPECT_GT(kept, 0u) << result.output;
+  ASSERT_TRUE(hpcontact::testing::wait_for_sweep_lock(out)) << "a rank of the stopped run still holds the folder";
   // One BLAS thread in every run, so that the floating-point operations are the same.
   const auto resumed = run_command(kMpi + HPCONTACT_CLI " sweep " + sweep.string() + " --out " + out.string());
   ASSERT_EQ(resumed.exit_code, 0) << resumed.output;

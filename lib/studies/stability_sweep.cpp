@@ -146,7 +146,8 @@ std::vector<std::string> alpha_columns() {
 
 namespace {
 
-// What the points of one level share: per (norm, ratio) the Gram ladder of the envelope
+// What the points of one share (a level, or a (level, ratio): SweepGroup::share) have in common:
+// per (norm, ratio) the Gram ladder of the envelope
 // multiplier space, whose degree on each segment is the largest of the sweep's p_C there: every
 // point's G is a principal submatrix of it (norms::restrict_gram), so one Gram matrix per
 // reference level serves all p_C (and, for the extension norm, one reference at the sweep's
@@ -156,7 +157,7 @@ struct EnvelopeGram {
   std::unique_ptr<space::MultiplierSpace> multipliers;
   std::unique_ptr<norms::GramLadder> ladder;
 };
-struct LevelGrams {
+struct ShareGrams {
   std::map<std::pair<infsup::GramNorm, std::size_t>, EnvelopeGram> envelopes;
 };
 
@@ -194,7 +195,7 @@ struct GroupMesh {
 
 /// The envelope Gram ladder of the point's (norm, ratio) on its level, built on first use.
 const EnvelopeGram& envelope_of(const SweepRun& run, const SweepPoint& point, const GroupMesh& group,
-                                const mesh::BoundaryMesh& boundary, LevelGrams& grams) {
+                                const mesh::BoundaryMesh& boundary, ShareGrams& grams) {
   auto& envelope = grams.envelopes[{point.gram, point.ratio}];
   if (envelope.multipliers) return envelope;
   const scene::Scene& level_scene = run.sweep.levels[point.level].scene;
@@ -217,7 +218,7 @@ const EnvelopeGram& envelope_of(const SweepRun& run, const SweepPoint& point, co
 }
 
 /// α of one point, as its line of alpha.csv.
-std::string compute_point(const SweepRun& run, const SweepPoint& point, const GroupMesh& group, LevelGrams& grams) {
+std::string compute_point(const SweepRun& run, const SweepPoint& point, const GroupMesh& group, ShareGrams& grams) {
   const auto& sweep = run.sweep;
   const auto& ratio = run.ratios[point.ratio];
   const scene::Scene scene = point_scene(group.scene, 0, point.pc, ratio, point.pairing, point.gram);
@@ -349,12 +350,13 @@ bool run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
   const auto units = sweep_work_units(plan, workers);
   const long n_units = static_cast<long>(units.size());
   SharedCounter next_unit;
-  // A level's Gram ladders are kept until no unit left to take holds the level (units are taken
-  // in order), so a rank that takes a level's groups in several turns builds them once.
-  std::map<std::size_t, LevelGrams> grams_of_level;
-  std::map<std::size_t, long> last_unit_of_level;
+  // A share's Gram ladders (a level's, or a (level, ratio)'s when groups are split by ratio) are
+  // kept until no unit left to take holds the share (units are taken in order), so a rank that
+  // takes a share's groups in several turns builds them once.
+  std::map<std::size_t, ShareGrams> grams_of_share;
+  std::map<std::size_t, long> last_unit_of_share;
   for (std::size_t u = 0; u < units.size(); ++u)
-    for (std::size_t g : units[u]) last_unit_of_level[plan.groups[g].level] = static_cast<long>(u);
+    for (std::size_t g : units[u]) last_unit_of_share[plan.groups[g].share] = static_cast<long>(u);
   // The progress count: points stored before and points computed by all ranks, of those stored and
   // those to do in this run (a slice's own).
   SharedCounter points_computed;
@@ -365,7 +367,7 @@ bool run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
     for (std::size_t k = g.first; g.todo && k < g.last; ++k)
       total += g.holds(run.points[k]) && !rows.has(run.points[k].key());
   auto run_group = [&](const SweepGroup& g) {
-    LevelGrams& grams = grams_of_level[g.level];
+    ShareGrams& grams = grams_of_share[g.share];
     const GroupMesh group(point_scene(sweep.levels[g.level].scene, run.points[g.first].p, -1, std::nullopt),
                           run.distribution);
     std::string group_lines;
@@ -401,7 +403,7 @@ bool run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
   run_on_all_ranks_agreeing([&] {
     try {
       for (long unit = take_unit(); unit < n_units; unit = take_unit()) {
-        std::erase_if(grams_of_level, [&](const auto& held) { return last_unit_of_level[held.first] < unit; });
+        std::erase_if(grams_of_share, [&](const auto& held) { return last_unit_of_share[held.first] < unit; });
         try {
           for (std::size_t g : units[static_cast<std::size_t>(unit)]) run_group(plan.groups[g]);
         } catch (...) {
