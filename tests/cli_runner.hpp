@@ -44,8 +44,8 @@ inline std::filesystem::path scratch(const std::string& name) {
   return dir;
 }
 
-// Waits (up to 30 s) until no process holds `folder`'s sweep lock: a stopped mpirun may return
-// before every rank of it has exited. Whether the lock came free.
+// Waits (up to 30 s) until no process holds `folder`'s sweep lock (rank 0 of a run holds it): a
+// stopped mpirun may return before its rank 0 has exited. Whether the lock came free.
 inline bool wait_for_sweep_lock(const std::filesystem::path& folder) {
   for (int attempt = 0; attempt < 600; ++attempt) {
     try {

@@ -74,8 +74,8 @@ TEST(Faults, FullDiskIsAnIoFailure) {
 
 // Under mpirun, rank 0 cannot write (a full disk): every rank ends with exit 4 and the message is
 // printed once, instead of the other ranks waiting forever in a collective call. Also with units
-// taken by groups of two ranks, where the failing leader's partner waits for the group's next
-// collective call and the other group computes on.
+// taken by groups of two ranks, where the failing leader's partner learns of the failure in the
+// group's agreement on the write and the other group stops after its unit.
 TEST(Faults, FullDiskUnderMpirunEndsEveryRank) {
   SmallDisk disk("mpirun");
   if (!disk.mounted) GTEST_SKIP() << "cannot mount a tmpfs here (needs root)";
@@ -184,6 +184,7 @@ TEST(Faults, InterruptedMpirunSweepKeepsFinishedGroups) {
       kMpi + "sh -c 'mpirun -n 2 --oversubscribe " HPCONTACT_CLI " sweep " + sweep.string() + " --out " + out.string() +
       " & for i in $(seq 600); do [ -s " + (out / "alpha.csv.rank0").string() + " ] || [ -s " +
       (out / "alpha.csv.rank1").string() + " ] && break; sleep 0.05; done; kill -TERM $!; wait $!'");
+  ASSERT_TRUE(hpcontact::testing::wait_for_sweep_lock(out)) << "rank 0 of the stopped run still holds the folder";
   std::size_t kept = 0;
   for (const auto& shard : hpcontact::studies::existing_shards(out / "alpha.csv")) {
     std::ifstream in(shard);
@@ -191,7 +192,6 @@ TEST(Faults, InterruptedMpirunSweepKeepsFinishedGroups) {
   }
   ASSERT_FALSE(std::filesystem::exists(out / "alpha.csv")) << "the run finished before it was stopped";
   EXPECT_GT(kept, 0u) << result.output;
-  ASSERT_TRUE(hpcontact::testing::wait_for_sweep_lock(out)) << "a rank of the stopped run still holds the folder";
   // One BLAS thread in every run, so that the floating-point operations are the same.
   const auto resumed = run_command(kMpi + HPCONTACT_CLI " sweep " + sweep.string() + " --out " + out.string());
   ASSERT_EQ(resumed.exit_code, 0) << resumed.output;

@@ -100,6 +100,7 @@ TEST(SweepRankGroups, InterruptedGroupRunKeepsFinishedGroups) {
       run_command(kMpi + "sh -c 'mpirun -n 4 --oversubscribe " HPCONTACT_CLI " sweep " + sweep.string() + " --out " +
                   out.string() + " --ranks-per-unit 2 & for i in $(seq 600); do [ -s " + shard(0) + " ] || [ -s " +
                   shard(2) + " ] && break; sleep 0.05; done; kill -TERM $!; wait $!'");
+  ASSERT_TRUE(hpcontact::testing::wait_for_sweep_lock(out)) << "rank 0 of the stopped run still holds the folder";
   ASSERT_FALSE(std::filesystem::exists(out / "alpha.csv")) << "the run finished before it was stopped";
   EXPECT_FALSE(std::filesystem::exists(shard(1)) || std::filesystem::exists(shard(3))) << "only leaders write";
   std::size_t kept = 0;
@@ -108,7 +109,6 @@ TEST(SweepRankGroups, InterruptedGroupRunKeepsFinishedGroups) {
     for (std::string line; std::getline(in, line);) ++kept;
   }
   EXPECT_GT(kept, 0u) << stopped.output;
-  ASSERT_TRUE(hpcontact::testing::wait_for_sweep_lock(out)) << "a rank of the stopped run still holds the folder";
   const auto resumed = run_command(kMpi + HPCONTACT_CLI " sweep " + sweep.string() + " --out " + out.string());
   ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
   const auto fresh =

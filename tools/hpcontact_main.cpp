@@ -27,14 +27,16 @@ int report(const std::exception& error) {
   const int code = exit_code_of(error);
   const auto [rank, ranks] = mpi_rank_and_size();
   if (ranks > 1 && !failure_agreed()) every_rank_fails_within(kFailurePatience);
-  if (failure_agreed() && rank != 0) return code;
+  // A rank that failed alone inside a group's collective work aborts, whatever was agreed before.
+  const bool agreed = failure_agreed() && !failed_alone();
+  if (agreed && rank != 0) return code;
   const char* kind = code == 2   ? "error"
                      : code == 3 ? "numerical failure"
                      : code == 4 ? "I/O failure"
                                  : "internal error";
-  fmt::print(stderr, "hpcontact: {}{}: {}\n", kind,
-             ranks > 1 && !failure_agreed() ? fmt::format(" on rank {}", rank) : "", error.what());
-  if (ranks > 1 && !failure_agreed()) {
+  fmt::print(stderr, "hpcontact: {}{}: {}\n", kind, ranks > 1 && !agreed ? fmt::format(" on rank {}", rank) : "",
+             error.what());
+  if (ranks > 1 && !agreed) {
     std::fflush(stderr);
     MPI_Abort(MPI_COMM_WORLD, code);
   }

@@ -58,8 +58,11 @@ long SharedCounter::exhaust(long end) {
 
 long SharedCounter::value() const {
   if (window_ == MPI_WIN_NULL) return local_;
-  long now = 0;  // MPI_NO_OP: an atomic read beside the other ranks' MPI_SUM
-  HPC_VERIFY(MPI_Fetch_and_op(nullptr, &now, MPI_LONG, 0, 0, MPI_NO_OP, window_) == MPI_SUCCESS,
+  // MPI_NO_OP: an atomic read beside the other ranks' MPI_SUM (its origin is ignored; Open MPI
+  // before 4.0.2 crashed on a null one).
+  const long ignored = 0;
+  long now = 0;
+  HPC_VERIFY(MPI_Fetch_and_op(&ignored, &now, MPI_LONG, 0, 0, MPI_NO_OP, window_) == MPI_SUCCESS,
              "MPI_Fetch_and_op failed");
   MPI_Win_flush(0, window_);
   return now;

@@ -6,6 +6,7 @@
 #include <petscksp.h>
 
 #include <algorithm>
+#include <exception>
 
 #include "core/error.hpp"
 #include "core/petsc_check.hpp"
@@ -83,7 +84,11 @@ BddcSolver::BddcSolver(MPI_Comm ranks, int n, const std::vector<Eigen::Triplet<d
   HPC_PETSC_CALL(KSPSetUp(ksp));
 }
 
-BddcSolver::~BddcSolver() = default;
+BddcSolver::~BddcSolver() {
+  // PCBDDC's coarse solver is destroyed collectively: as for DistributedCholesky, a rank unwinding
+  // from a failure of its own must not wait there for the others.
+  if (impl_ && std::uncaught_exceptions() > 0 && rank_and_size(ranks_).second > 1) (void)impl_.release();
+}
 BddcSolver::BddcSolver(BddcSolver&&) noexcept = default;
 BddcSolver& BddcSolver::operator=(BddcSolver&&) noexcept = default;
 

@@ -10,6 +10,7 @@
 
 #include <Eigen/Cholesky>
 #include <algorithm>
+#include <exception>
 
 #include "core/error.hpp"
 #include "core/petsc_check.hpp"
@@ -141,7 +142,12 @@ DistributedCholesky::DistributedCholesky(MPI_Comm ranks, int n,
   }
 }
 
-DistributedCholesky::~DistributedCholesky() = default;
+DistributedCholesky::~DistributedCholesky() {
+  // MUMPS's destruction (JOB = -2) is collective on the ranks: a rank unwinding from a failure of
+  // its own would wait there for ranks that never come, before the failure can end the job. While
+  // an exception unwinds, the factor is left to the end of the run (which the failure ends).
+  if (impl_ && std::uncaught_exceptions() > 0 && rank_and_size(ranks_).second > 1) (void)impl_.release();
+}
 DistributedCholesky::DistributedCholesky(DistributedCholesky&&) noexcept = default;
 DistributedCholesky& DistributedCholesky::operator=(DistributedCholesky&&) noexcept = default;
 

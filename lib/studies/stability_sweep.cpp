@@ -402,9 +402,11 @@ bool run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
   };
   run_on_all_ranks_agreeing([&] {
     try {
-      for (long unit = take_unit(); unit < n_units; unit = take_unit()) {
-        std::erase_if(grams_of_share, [&](const auto& held) { return last_unit_of_share[held.first] < unit; });
+      for (;;) {
         try {
+          const long unit = take_unit();
+          if (unit >= n_units) break;
+          std::erase_if(grams_of_share, [&](const auto& held) { return last_unit_of_share[held.first] < unit; });
           for (std::size_t g : units[static_cast<std::size_t>(unit)]) run_group(plan.groups[g]);
         } catch (...) {
           // A group's collective failure (a solve that failed, the leader's write) is raised on all
