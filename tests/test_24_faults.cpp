@@ -182,7 +182,7 @@ TEST(Faults, InterruptedMpirunSweepKeepsFinishedGroups) {
   const auto out = dir / "out";
   const auto result = run_command(
       kMpi + "sh -c 'mpirun -n 2 --oversubscribe " HPCONTACT_CLI " sweep " + sweep.string() + " --out " + out.string() +
-      " & for i in $(seq 600); do [ -s " + (out / "alpha.csv.rank0").string() + " ] || [ -s " +
+      " & for i in $(seq 6000); do [ -s " + (out / "alpha.csv.rank0").string() + " ] || [ -s " +
       (out / "alpha.csv.rank1").string() + " ] && break; sleep 0.05; done; kill -TERM $!; wait $!'");
   ASSERT_TRUE(hpcontact::testing::wait_for_sweep_lock(out)) << "rank 0 of the stopped run still holds the folder";
   std::size_t kept = 0;

@@ -98,7 +98,7 @@ TEST(SweepRankGroups, InterruptedGroupRunKeepsFinishedGroups) {
   const auto shard = [&](int rank) { return (out / ("alpha.csv.rank" + std::to_string(rank))).string(); };
   const auto stopped =
       run_command(kMpi + "sh -c 'mpirun -n 4 --oversubscribe " HPCONTACT_CLI " sweep " + sweep.string() + " --out " +
-                  out.string() + " --ranks-per-unit 2 & for i in $(seq 600); do [ -s " + shard(0) + " ] || [ -s " +
+                  out.string() + " --ranks-per-unit 2 & for i in $(seq 6000); do [ -s " + shard(0) + " ] || [ -s " +
                   shard(2) + " ] && break; sleep 0.05; done; kill -TERM $!; wait $!'");
   ASSERT_TRUE(hpcontact::testing::wait_for_sweep_lock(out)) << "rank 0 of the stopped run still holds the folder";
   ASSERT_FALSE(std::filesystem::exists(out / "alpha.csv")) << "the run finished before it was stopped";
