@@ -31,41 +31,33 @@ SharedCounter::~SharedCounter() {
   MPI_Win_free(&window_);
 }
 
-long SharedCounter::take() {
-  if (window_ == MPI_WIN_NULL) return local_++;
-  const long one = 1;
-  long before = 0;
-  HPC_VERIFY(MPI_Fetch_and_op(&one, &before, MPI_LONG, 0, 0, MPI_SUM, window_) == MPI_SUCCESS,
-             "MPI_Fetch_and_op failed");
-  MPI_Win_flush(0, window_);
-  return before;
-}
+long SharedCounter::take() { return add(1); }
 
-long SharedCounter::exhaust(long end) {
-  if (window_ == MPI_WIN_NULL) {
-    const long before = local_;
-    local_ += end;
-    return before;
-  }
-  // An addition, like take(): concurrent accumulates on one location are atomic only with the
-  // same operation (the window's default accumulate_ops = same_op_no_op).
-  long before = 0;
-  HPC_VERIFY(MPI_Fetch_and_op(&end, &before, MPI_LONG, 0, 0, MPI_SUM, window_) == MPI_SUCCESS,
-             "MPI_Fetch_and_op failed");
-  MPI_Win_flush(0, window_);
-  return before;
-}
+long SharedCounter::exhaust(long end) { return add(end); }
 
 long SharedCounter::value() const {
-  if (window_ == MPI_WIN_NULL) return local_;
   // MPI_NO_OP: an atomic read beside the other ranks' MPI_SUM (its origin is ignored; Open MPI
   // before 4.0.2 crashed on a null one).
-  const long ignored = 0;
-  long now = 0;
-  HPC_VERIFY(MPI_Fetch_and_op(&ignored, &now, MPI_LONG, 0, 0, MPI_NO_OP, window_) == MPI_SUCCESS,
+  return window_ == MPI_WIN_NULL ? local_ : fetch_and_op(0, MPI_NO_OP);
+}
+
+long SharedCounter::add(long amount) {
+  if (window_ == MPI_WIN_NULL) {
+    const long before = local_;
+    local_ += amount;
+    return before;
+  }
+  // Always an addition: concurrent accumulates on one location are atomic only with the same
+  // operation (the window's default accumulate_ops = same_op_no_op).
+  return fetch_and_op(amount, MPI_SUM);
+}
+
+long SharedCounter::fetch_and_op(long operand, MPI_Op op) const {
+  long before = 0;
+  HPC_VERIFY(MPI_Fetch_and_op(&operand, &before, MPI_LONG, 0, 0, op, window_) == MPI_SUCCESS,
              "MPI_Fetch_and_op failed");
   MPI_Win_flush(0, window_);
-  return now;
+  return before;
 }
 
 }  // namespace hpcontact

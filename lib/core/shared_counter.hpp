@@ -30,6 +30,11 @@ class SharedCounter {
   long value() const;
 
  private:
+  /// Adds `amount`; returns the counter before.
+  long add(long amount);
+  /// The counter on rank 0 before `op` with `operand`, atomically (window only).
+  long fetch_and_op(long operand, MPI_Op op) const;
+
   MPI_Win window_ = MPI_WIN_NULL;
   long* value_ = nullptr;  // rank 0's cell of the window
   long local_ = 0;         // the counter on one rank
