@@ -1,7 +1,8 @@
 // Helper of test_07_distributed_factor, run under mpirun: partitions test meshes over the ranks by
 // recursive coordinate bisection, by PT-Scotch on the dual graph (twice) and by the toolkit's
-// choice of the two, and rank 0 prints per mesh and method the cut (edges and vertices shared
-// between parts), the largest part's weight over the mean, the smallest part's cell count,
+// choice of the two, each cell weighted by its unknowns at a degree per cell (uniform, or graded
+// from 1 to 8 across the square "mixed_degrees"), and rank 0 prints per mesh and method the cut (edges
+// and vertices shared between parts), the largest part's weight over the mean, the smallest part's cell count,
 // whether every rank holds the same partition, whether a second call gave another one, and a hash
 // of the parts (to compare two runs).
 //
@@ -11,8 +12,10 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <string>
 
+#include "assembly/cell_system.hpp"
 #include "core/error.hpp"
 #include "core/petsc_session.hpp"
 #include "mesh/cell_partition.hpp"
@@ -21,6 +24,7 @@
 #include "mesh/point_grading.hpp"
 #include "mesh/rectangle_mesh.hpp"
 #include "mesh/refine.hpp"
+#include "space/h1_space.hpp"
 
 using namespace hpcontact;
 
@@ -35,7 +39,7 @@ std::uint64_t parts_hash(const std::vector<int>& part_of_cell) {
 }
 
 void report(const std::string& name, const std::string& method, const mesh::Mesh& mesh,
-            const std::vector<int>& part_of_cell, bool repeat_differs) {
+            const std::vector<int>& cell_weights, const std::vector<int>& part_of_cell, bool repeat_differs) {
   const int ranks = mpi_rank_and_size().second;
   std::vector<double> weight(ranks, 0.0);
   std::vector<int> cells(ranks, 0);
@@ -46,7 +50,7 @@ void report(const std::string& name, const std::string& method, const mesh::Mesh
       ++outside;
       continue;
     }
-    weight[part] += mesh.cell_size(c), ++cells[part];
+    weight[part] += cell_weights[c], ++cells[part];
   }
   double total = 0.0;
   for (double w : weight) total += w;
@@ -65,12 +69,22 @@ void report(const std::string& name, const std::string& method, const mesh::Mesh
         parts_hash(part_of_cell));
 }
 
-void compare(const std::string& name, const mesh::Mesh& mesh) {
-  report(name, "bisection", mesh, mesh::bisect_cells(mesh, mpi_rank_and_size().second), false);
+// Each cell's unknowns in S^p(T_h) with `degree_of(cell)`, as the factorizations weigh it.
+std::vector<int> unknowns_per_cell(const mesh::Mesh& mesh, const std::function<int(int)>& degree_of) {
+  std::vector<int> degrees(mesh.n_cells());
+  for (int c = 0; c < mesh.n_cells(); ++c) degrees[c] = degree_of(c);
+  const space::H1Space space(mesh, degrees);
+  return assembly::cell_work_weights(assembly::ScalarCellSystem(space, 1.0, 0.0));
+}
+
+void compare(
+    const std::string& name, const mesh::Mesh& mesh, const std::function<int(int)>& degree_of = [](int) { return 2; }) {
+  const std::vector<int> weights = unknowns_per_cell(mesh, degree_of);
+  report(name, "bisection", mesh, weights, mesh::bisect_cells(mesh, mpi_rank_and_size().second, weights), false);
   // Twice: a partition must be a function of the graph (K and A_G of one run share it).
-  const std::vector<int> parts = mesh::partition_cells_by_graph(mesh, MPI_COMM_WORLD);
-  report(name, "graph", mesh, parts, mesh::partition_cells_by_graph(mesh, MPI_COMM_WORLD) != parts);
-  report(name, "chosen", mesh, mesh::split_cells_over_ranks(mesh, MPI_COMM_WORLD), false);
+  const std::vector<int> parts = mesh::partition_cells_by_graph(mesh, weights, MPI_COMM_WORLD);
+  report(name, "graph", mesh, weights, parts, mesh::partition_cells_by_graph(mesh, weights, MPI_COMM_WORLD) != parts);
+  report(name, "chosen", mesh, weights, mesh::split_cells_over_ranks(mesh, weights, MPI_COMM_WORLD), false);
 }
 
 }  // namespace
@@ -79,7 +93,12 @@ int main(int argc, char** argv) {
   const PetscSession session({argv[0]});
   try {
     if (argc != 2) throw_bad_input("partition_check", "arguments", std::to_string(argc - 1), "MESH_DIR");
-    compare("square", mesh::make_paper_square_mesh(64));
+    const mesh::Mesh square = mesh::make_paper_square_mesh(64);
+    compare("square", square);
+    // Degrees 1 to 8 from left to right: cells of equal size, work rising 20-fold across.
+    compare("mixed_degrees", square, [&](int c) {
+      return 1 + std::min(7, static_cast<int>(4.0 * (square.vertex(square.cell(c)[0])(0) + 1.0)));
+    });
     // Graded towards two points of the bottom edge: small cells crowd where bisection cuts.
     const auto x = mesh::graded_nodes(-1.0, 1.0, 32, {-0.4, 0.3}, 0.3, 8, "partition_check");
     const auto y = mesh::graded_nodes(-1.0, 1.0, 32, {-1.0}, 0.3, 8, "partition_check");

@@ -24,6 +24,16 @@ std::optional<CongruenceKey> affine_key(const space::H1Space& space, int cell, b
   return key;
 }
 
+std::vector<int> cell_work_weights(const CellSystem& system) {
+  std::vector<int> weights(system.mesh().n_cells());
+  std::vector<CellDof> dofs;
+  for (int c = 0; c < system.mesh().n_cells(); ++c) {
+    system.cell_dofs(c, dofs);
+    weights[c] = static_cast<int>(dofs.size());
+  }
+  return weights;
+}
+
 ScalarCellSystem::ScalarCellSystem(const space::H1Space& space, double stiffness_weight, double mass_weight)
     : space_(&space), stiffness_weight_(stiffness_weight), mass_weight_(mass_weight), element_(space) {}
 

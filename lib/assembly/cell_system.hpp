@@ -43,6 +43,10 @@ class CellSystem {
   virtual std::optional<CongruenceKey> congruence_key(int cell) const = 0;
 };
 
+/// Each cell's unknowns (Dirichlet ones included): the weight by which the cells are split over
+/// ranks, so that parts of a mesh of mixed degrees eliminate and factorize about equal work.
+std::vector<int> cell_work_weights(const CellSystem& system);
+
 /// The key of an affine cell (parallelogram or straight triangle): its degree, vertex count and
 /// edge degrees and its Jacobian rounded to 1e-12 of the largest entry, with the cell's size (log
 /// of the largest entry, to 1e-11) because the mass matrix scales with the area. Empty for other

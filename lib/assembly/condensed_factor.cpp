@@ -63,12 +63,13 @@ Eigen::MatrixXd signed_skeleton_rows(const std::vector<CellDof>& dofs, const std
 }  // namespace
 
 CondensedFactor::CondensedFactor(const space::H1Space& space, double stiffness_weight, double mass_weight,
-                                 const std::vector<int>& trailing, linalg::Distribution distribution)
-    : CondensedFactor(std::make_unique<ScalarCellSystem>(space, stiffness_weight, mass_weight), trailing,
-                      distribution) {}
+                                 const std::vector<int>& trailing, linalg::Distribution distribution,
+                                 const std::vector<int>& part_of_cell)
+    : CondensedFactor(std::make_unique<ScalarCellSystem>(space, stiffness_weight, mass_weight), trailing, distribution,
+                      part_of_cell) {}
 
 CondensedFactor::CondensedFactor(std::unique_ptr<const CellSystem> system, const std::vector<int>& trailing,
-                                 linalg::Distribution distribution)
+                                 linalg::Distribution distribution, const std::vector<int>& part_of_cell)
     : system_(std::move(system)),
       size_(system_->n_dofs()),
       n_trailing_(static_cast<int>(trailing.size())),
@@ -81,8 +82,11 @@ CondensedFactor::CondensedFactor(std::unique_ptr<const CellSystem> system, const
   MPI_Comm ranks = distribution.ranks;
   if (distributed) {
     const int rank = rank_and_size(ranks).first;
-    const std::vector<int> part_of_cell = mesh::split_cells_over_ranks(system_->mesh(), ranks);
-    for (int c = 0; c < n_cells; ++c) contributes[c] = part_of_cell[c] == rank;
+    HPC_VERIFY(part_of_cell.empty() || static_cast<int>(part_of_cell.size()) == n_cells, "one part per cell");
+    const std::vector<int> parts =
+        part_of_cell.empty() ? mesh::split_cells_over_ranks(system_->mesh(), cell_work_weights(*system_), ranks)
+                             : part_of_cell;
+    for (int c = 0; c < n_cells; ++c) contributes[c] = parts[c] == rank;
   }
   // Distributed, a degenerate cell fails on the rank that owns it: every rank ends the same way.
   // (Serial factors may be built by one rank alone, e.g. a sweep's points: no collective then.)

@@ -30,7 +30,7 @@ namespace hpcontact::assembly {
 /// coupling B has no interior columns, B A⁻¹ Bᵀ = B_s S⁻¹ B_sᵀ: the Steklov–Poincaré condensation of SparseCholesky
 /// applies to S unchanged.
 ///
-/// Distributed (under mpirun): the cells are split into one part per rank by coordinate bisection or
+/// Distributed (under mpirun): the cells are split into one part per rank of equal work by coordinate bisection or
 /// PT-Scotch, whichever cuts fewer edges (mesh/cell_partition.hpp); each rank eliminates only its own part's cells and
 /// contributes their S_T to S; condensing a right-hand side, recovering the interior modes and the quadratic form add
 /// up the ranks' parts (vectors stay replicated). S is then factorized either by substructuring (default,
@@ -43,12 +43,15 @@ namespace hpcontact::assembly {
 class CondensedFactor {
  public:
   /// `trailing`: dofs (skeleton dofs only) ordered last in the factorization of S.
+  /// `part_of_cell` (distributed only): the rank of distribution.ranks that eliminates each cell,
+  /// shared by factors of one mesh; empty: split_cells_over_ranks weighted by cell_work_weights.
   /// @throws NumericalError if A is not positive definite.
   CondensedFactor(const space::H1Space& space, double stiffness_weight, double mass_weight,
-                  const std::vector<int>& trailing = {}, linalg::Distribution distribution = {});
+                  const std::vector<int>& trailing = {}, linalg::Distribution distribution = {},
+                  const std::vector<int>& part_of_cell = {});
   /// Any cell system (the factor keeps it).
   CondensedFactor(std::unique_ptr<const CellSystem> system, const std::vector<int>& trailing = {},
-                  linalg::Distribution distribution = {});
+                  linalg::Distribution distribution = {}, const std::vector<int>& part_of_cell = {});
   ~CondensedFactor();
   CondensedFactor(CondensedFactor&&) noexcept;
   CondensedFactor& operator=(CondensedFactor&&) noexcept;

@@ -14,8 +14,8 @@ namespace hpcontact::mesh {
 namespace {
 
 // Assigns parts [first_part, first_part + parts) to cells[begin, end).
-void bisect(const std::vector<Point>& centroids, std::vector<int>& cells, int begin, int end, int first_part, int parts,
-            std::vector<int>& part_of_cell) {
+void bisect(const std::vector<Point>& centroids, const std::vector<int>& weight, std::vector<int>& cells, int begin,
+            int end, int first_part, int parts, std::vector<int>& part_of_cell) {
   if (parts == 1 || end - begin <= 1) {
     for (int k = begin; k < end; ++k) part_of_cell[cells[k]] = first_part;
     return;
@@ -23,30 +23,39 @@ void bisect(const std::vector<Point>& centroids, std::vector<int>& cells, int be
   Point low = centroids[cells[begin]], high = low;
   for (int k = begin; k < end; ++k) low = low.cwiseMin(centroids[cells[k]]), high = high.cwiseMax(centroids[cells[k]]);
   const int axis = (high - low)(0) >= (high - low)(1) ? 0 : 1;
-  const int left_parts = parts / 2;
-  const int middle = begin + static_cast<int>(static_cast<long long>(end - begin) * left_parts / parts);
-  std::nth_element(cells.begin() + begin, cells.begin() + middle, cells.begin() + end, [&](int a, int b) {
+  std::sort(cells.begin() + begin, cells.begin() + end, [&](int a, int b) {
     const double xa = centroids[a](axis), xb = centroids[b](axis);
     return xa < xb || (xa == xb && a < b);
   });
-  bisect(centroids, cells, begin, middle, first_part, left_parts, part_of_cell);
-  bisect(centroids, cells, middle, end, first_part + left_parts, parts - left_parts, part_of_cell);
+  // The left side takes the run of cells whose weight comes nearest its parts' share, the shorter
+  // run on a tie (integer arithmetic: the same split on every process).
+  const int left_parts = parts / 2;
+  long long total = 0, left = 0;
+  for (int k = begin; k < end; ++k) total += weight[cells[k]];
+  const long long share = total * left_parts;  // the left side's weight, times parts
+  int middle = begin;
+  while (middle < end && (left + weight[cells[middle]]) * parts <= share) left += weight[cells[middle++]];
+  if (middle < end && (left + weight[cells[middle]]) * parts - share < share - left * parts) ++middle;
+  bisect(centroids, weight, cells, begin, middle, first_part, left_parts, part_of_cell);
+  bisect(centroids, weight, cells, middle, end, first_part + left_parts, parts - left_parts, part_of_cell);
 }
 
 }  // namespace
 
-std::vector<int> bisect_cells(const Mesh& mesh, int parts) {
+std::vector<int> bisect_cells(const Mesh& mesh, int parts, const std::vector<int>& cell_weights) {
   HPC_VERIFY(parts >= 1, "a partition needs at least one part");
+  HPC_VERIFY(static_cast<int>(cell_weights.size()) == mesh.n_cells(), "one weight per cell");
   std::vector<Point> centroids(mesh.n_cells());
   std::vector<int> cells(mesh.n_cells());
   for (int c = 0; c < mesh.n_cells(); ++c) {
+    HPC_VERIFY(cell_weights[c] > 0, "cell weights must be positive");
     Point sum = Point::Zero();
     for (int v : mesh.cell(c)) sum += mesh.vertex(v);
     centroids[c] = sum / mesh.cell_size(c);
     cells[c] = c;
   }
   std::vector<int> part_of_cell(mesh.n_cells(), 0);
-  bisect(centroids, cells, 0, mesh.n_cells(), 0, parts, part_of_cell);
+  bisect(centroids, cell_weights, cells, 0, mesh.n_cells(), 0, parts, part_of_cell);
   return part_of_cell;
 }
 
@@ -68,9 +77,9 @@ PartitionInterface partition_interface(const Mesh& mesh, const std::vector<int>&
   return interface;
 }
 
-std::vector<int> split_cells_over_ranks(const Mesh& mesh, MPI_Comm ranks) {
-  std::vector<int> bisection = bisect_cells(mesh, rank_and_size(ranks).second);
-  std::vector<int> graph = partition_cells_by_graph(mesh, ranks);  // collective: every rank calls it
+std::vector<int> split_cells_over_ranks(const Mesh& mesh, const std::vector<int>& cell_weights, MPI_Comm ranks) {
+  std::vector<int> bisection = bisect_cells(mesh, rank_and_size(ranks).second, cell_weights);
+  std::vector<int> graph = partition_cells_by_graph(mesh, cell_weights, ranks);  // collective: every rank calls it
   // Both partitions are the same on every rank, so every rank makes the same choice.
   return partition_interface(mesh, graph).edges < partition_interface(mesh, bisection).edges ? graph : bisection;
 }

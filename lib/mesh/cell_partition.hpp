@@ -13,11 +13,12 @@
 
 namespace hpcontact::mesh {
 
-/// The part (0 .. parts-1) of every cell, shape (n_cells). Each step splits a set of cells at the
-/// median centroid coordinate along the longer side of the centroids' bounding box, in sizes
-/// proportional to the parts on either side; ties break by cell index, so every process computes
-/// the same partition. Part sizes differ by at most one cell per bisection level.
-std::vector<int> bisect_cells(const Mesh& mesh, int parts);
+/// The part (0 .. parts-1) of every cell, shape (n_cells). Each step sorts a set of cells by
+/// centroid coordinate along the longer side of the centroids' bounding box and splits it where
+/// the cells' weights (`cell_weights[c]` > 0) reach the share of the parts on the left; ties break
+/// by cell index, so every process computes the same partition. Part weights differ by at most
+/// one cell's weight per bisection level (equal weights: the median split, sizes within one cell).
+std::vector<int> bisect_cells(const Mesh& mesh, int parts, const std::vector<int>& cell_weights);
 
 /// A partition's cut: the mesh edges and vertices that cells of two or more parts share (each cut
 /// edge carries p - 1 interface unknowns at degree p, each vertex one).
@@ -27,8 +28,8 @@ struct PartitionInterface {
 };
 PartitionInterface partition_interface(const Mesh& mesh, const std::vector<int>& part_of_cell);
 
-/// One part per rank of `ranks`: coordinate bisection or PT-Scotch, whichever cuts fewer edges
-/// (bisection on a tie). Collective on `ranks`; every one gets the same partition.
-std::vector<int> split_cells_over_ranks(const Mesh& mesh, MPI_Comm ranks);
+/// One part per rank of `ranks`, of equal weight: coordinate bisection or PT-Scotch, whichever
+/// cuts fewer edges (bisection on a tie). Collective on `ranks`; every one gets the same partition.
+std::vector<int> split_cells_over_ranks(const Mesh& mesh, const std::vector<int>& cell_weights, MPI_Comm ranks);
 
 }  // namespace hpcontact::mesh

@@ -18,10 +18,12 @@
 
 namespace hpcontact::mesh {
 
-std::vector<int> partition_cells_by_graph(const Mesh& mesh, MPI_Comm ranks_sharing) {
+std::vector<int> partition_cells_by_graph(const Mesh& mesh, const std::vector<int>& cell_weights,
+                                          MPI_Comm ranks_sharing) {
   // (not a structured binding: clang 14 refuses to capture one in the lambda below)
   const int rank = rank_and_size(ranks_sharing).first, ranks = rank_and_size(ranks_sharing).second;
   const int n_cells = mesh.n_cells();
+  HPC_VERIFY(static_cast<int>(cell_weights.size()) == n_cells, "one weight per cell");
   if (ranks == 1) return std::vector<int>(n_cells, 0);
   const auto slice_begin = [&](int r) { return static_cast<int>(static_cast<long long>(n_cells) * r / ranks); };
   const int begin = slice_begin(rank), end = slice_begin(rank + 1), n_local = end - begin;
@@ -51,7 +53,7 @@ std::vector<int> partition_cells_by_graph(const Mesh& mesh, MPI_Comm ranks_shari
       if (other >= 0) neighbours[count++] = other;
     }
     offsets[c - begin + 1] = count;
-    weights[c - begin] = mesh.cell_size(c);
+    weights[c - begin] = cell_weights[c];
   }
   PetscHandle<Mat, MatDestroy> graph;
   HPC_PETSC_CALL(MatCreateMPIAdj(ranks_sharing, n_local, n_cells, offsets, neighbours, nullptr, graph.out()));

@@ -12,11 +12,11 @@
 namespace hpcontact::mesh {
 
 /// The part (0 .. ranks-1, one per rank of `ranks`) of every cell. The dual graph joins
-/// two cells through each shared edge; a cell weighs its number of vertices (3 or 4; the
-/// degree is not weighed: a mesh of mixed degrees is balanced by cells, as bisection balances it). Each rank hands
+/// two cells through each shared edge; cell c weighs `cell_weights[c]` (> 0; the factorizations
+/// weigh a cell by its unknowns, so a mesh of mixed degrees is balanced by work, not by cells). Each rank hands
 /// PT-Scotch the graph rows of one contiguous slice of the cells, so the partition is computed once over the ranks,
 /// then gathered on every rank. Collective on `ranks`; on one rank every cell is in part 0.
 /// @throws NumericalError if PETSc's partitioner fails.
-std::vector<int> partition_cells_by_graph(const Mesh& mesh, MPI_Comm ranks);
+std::vector<int> partition_cells_by_graph(const Mesh& mesh, const std::vector<int>& cell_weights, MPI_Comm ranks);
 
 }  // namespace hpcontact::mesh

@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "core/timer.hpp"
 #include "mesh/boundary_mesh.hpp"
+#include "mesh/cell_partition.hpp"
 
 namespace hpcontact::operators {
 
@@ -35,17 +36,29 @@ const std::vector<int>& PrimalOperators::trace_dofs() const {
   return *trace_dofs_;
 }
 
+const std::vector<int>& PrimalOperators::cell_parts() const {
+  if (!cell_parts_) {
+    cell_parts_ = std::make_unique<std::vector<int>>();
+    if (distribution_.distributed())
+      *cell_parts_ = mesh::split_cells_over_ranks(
+          *mesh_, assembly::cell_work_weights(assembly::ScalarCellSystem(*space_, 1.0, 0.0)), distribution_.ranks);
+  }
+  return *cell_parts_;
+}
+
 namespace {
 
 // Factorizes stiffness_weight K + mass_weight M into `slot` on first use and logs it as `name`.
 const assembly::CondensedFactor& condensed_factor(const space::H1Space& space, double stiffness_weight,
                                                   double mass_weight, const std::vector<int>& trace,
                                                   linalg::Distribution distribution,
+                                                  const std::vector<int>& part_of_cell,
                                                   std::unique_ptr<assembly::CondensedFactor>& slot, const char* name,
                                                   OperatorLog* log) {
   if (!slot) {
     Stopwatch clock;
-    slot = std::make_unique<assembly::CondensedFactor>(space, stiffness_weight, mass_weight, trace, distribution);
+    slot = std::make_unique<assembly::CondensedFactor>(space, stiffness_weight, mass_weight, trace, distribution,
+                                                       part_of_cell);
     if (log) log->record(name, slot->size(), slot->size(), clock.seconds());
   }
   return *slot;
@@ -63,11 +76,13 @@ const assembly::CondensedFactor& PrimalOperators::stiffness_factor() const {
         "the body has no Dirichlet part (no boundary edge is in Γ_D: key 'boundary.dirichlet' or "
         "'boundary.dirichlet_groups'): K is singular, since u + c has the energy of u, and the contact "
         "problems (9), (13), (15) need u fixed somewhere (the inf-sup analysis, with K + M, does not)");
-  return condensed_factor(*space_, 1.0, 0.0, trace_dofs(), distribution_, stiffness_factor_, "factor(K)", log_);
+  return condensed_factor(*space_, 1.0, 0.0, trace_dofs(), distribution_, cell_parts(), stiffness_factor_, "factor(K)",
+                          log_);
 }
 
 const assembly::CondensedFactor& PrimalOperators::gram_factor() const {
-  return condensed_factor(*space_, 1.0, 1.0, trace_dofs(), distribution_, gram_factor_, "factor(K+M)", log_);
+  return condensed_factor(*space_, 1.0, 1.0, trace_dofs(), distribution_, cell_parts(), gram_factor_, "factor(K+M)",
+                          log_);
 }
 
 const Eigen::SparseMatrix<double>& PrimalOperators::coupling(const space::MultiplierSpace& multipliers,

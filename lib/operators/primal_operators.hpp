@@ -53,6 +53,9 @@ class PrimalOperators {
                                         const std::function<Eigen::MatrixXd()>& build) const;
   /// Every dof with a trace on Γ_C (the trailing set of both factorizations).
   const std::vector<int>& trace_dofs() const;
+  /// Distributed: the rank that eliminates each cell, computed once (collectively) for both
+  /// factorizations, weighted by the cells' unknowns; empty when serial.
+  const std::vector<int>& cell_parts() const;
   OperatorLog* log() const { return log_; }
   linalg::Distribution distribution() const { return distribution_; }
 
@@ -63,7 +66,7 @@ class PrimalOperators {
   OperatorLog* log_;
   linalg::Distribution distribution_;
   mutable std::unique_ptr<assembly::CondensedFactor> stiffness_factor_, gram_factor_;
-  mutable std::unique_ptr<std::vector<int>> trace_dofs_;
+  mutable std::unique_ptr<std::vector<int>> trace_dofs_, cell_parts_;
   mutable std::map<std::string, Eigen::SparseMatrix<double>> couplings_;
   mutable std::map<std::string, Eigen::VectorXd> derived_vectors_;
   mutable std::map<std::string, Eigen::MatrixXd> derived_matrices_;
