@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -149,4 +150,51 @@ TEST(SweepRankGroups, GroupSizesThatDoNotFitAreRefused) {
                   (dir / "elastic.toml").string() + " --out " + (dir / "b").string() + " --ranks-per-unit 2");
   EXPECT_EQ(elastic.exit_code, 2) << elastic.output;
   EXPECT_NE(elastic.output.find("elastic operators are built on one rank"), std::string::npos) << elastic.output;
+}
+
+// A PETSc error raised by every rank of a group (an unknown KSP type for the unit's BDDC solver)
+// is agreed on: one message without a rank, exit 3, on 2 and on 4 ranks. (PETSc's default error
+// handler made the ranks other than 0 sleep 10 s and exit with 0, and rank 0 abort as if alone.)
+TEST(SweepRankGroups, APetscErrorOfEveryRankIsReportedOnce) {
+  const auto dir = scratch("sweep_groups_petsc_error");
+  const auto sweep = write_sweep(dir, "[4]", "p = [2]\npC = [1]\n");
+  for (int ranks : {2, 4}) {
+    const auto out = dir / ("out" + std::to_string(ranks));
+    const auto result =
+        run_command(kMpi + "timeout 300 mpirun -n " + std::to_string(ranks) +
+                    " --oversubscribe " HPCONTACT_CLI " sweep " + sweep.string() + " --out " + out.string() +
+                    " --ranks-per-unit 2 --distributed-solver bddc " + "-bddc_ksp_type no_such_type");
+    EXPECT_EQ(result.exit_code, 3) << result.output;
+    const std::string message = "hpcontact: numerical failure: PETSc error";
+    const auto first = result.output.find(message);
+    ASSERT_NE(first, std::string::npos) << result.output;
+    EXPECT_EQ(result.output.find(message, first + 1), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("Unable to find requested KSP type no_such_type"), std::string::npos);
+    EXPECT_EQ(result.output.find("on rank"), std::string::npos) << result.output;
+    EXPECT_EQ(result.output.find("PETSC ERROR"), std::string::npos) << result.output;
+  }
+}
+
+// A rank failing alone inside its unit's collective work (here its own PETSc option makes its
+// BDDC setup fail while its partner waits in PETSc's collective setup) meets no partner on the
+// group's failure channel and ends the job within seconds, naming itself: 4 ranks in 2 groups,
+// the second rank of each group failing, so that whichever group takes a unit fails alone.
+TEST(SweepRankGroups, ARankFailingAloneInAUnitEndsTheJob) {
+  const auto dir = scratch("sweep_groups_alone");
+  const auto sweep = write_sweep(dir, "[4, 8]", "p = [2]\npC = [1]\n");
+  const std::string command = std::string(HPCONTACT_CLI) + " sweep " + sweep.string() + " --out " +
+                              (dir / "out").string() + " --ranks-per-unit 2 --distributed-solver bddc";
+  const std::string failing = command + " -bddc_ksp_type no_such_type";
+  const auto started = std::chrono::steady_clock::now();
+  const auto result = run_command(kMpi + "timeout 300 mpirun --oversubscribe -n 1 " + command + " : -n 1 " + failing +
+                                  " : -n 1 " + command + " : -n 1 " + failing);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  EXPECT_EQ(result.exit_code, 3) << result.output;
+  const bool names_a_failing_rank =
+      result.output.find("hpcontact: numerical failure on rank 1: PETSc error") != std::string::npos ||
+      result.output.find("hpcontact: numerical failure on rank 3: PETSc error") != std::string::npos;
+  EXPECT_TRUE(names_a_failing_rank) << result.output;
+  EXPECT_NE(result.output.find("no_such_type"), std::string::npos) << result.output;
+  EXPECT_LT(seconds, 200.0) << "the job should end after the 10 s patience, not at the timeout";
+  EXPECT_FALSE(std::filesystem::exists(dir / "out" / "alpha.csv"));
 }

@@ -36,7 +36,9 @@ namespace hpcontact {
 
 /// RAII: while alive, PETSc errors are returned as codes without printing a traceback to
 /// stderr (PetscReturnErrorHandler); HPC_PETSC_CALL turns them into exceptions whose message
-/// already holds PETSc's text. The previous handler is restored on destruction.
+/// already holds PETSc's text. The previous handler is restored on destruction. (PetscSession
+/// installs the same handler for the whole process; this keeps a caller that initialized PETSc
+/// itself from PETSc's default handler, which ends ranks other than 0 with exit status 0.)
 class ScopedPetscErrorsAsCodes {
  public:
   ScopedPetscErrorsAsCodes() { HPC_PETSC_CALL(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr)); }

@@ -70,6 +70,11 @@ void PetscSession::initialize() {
   char** argv = argv_.data();
   if (SlepcInitialize(&argc, &argv, nullptr, nullptr) != 0) throw std::runtime_error("SlepcInitialize failed");
   initialized_ = true;
+  // Every PETSc error comes back as a code that HPC_PETSC_CALL turns into an exception carrying
+  // PETSc's message, on every rank. PETSc's default handler prints a traceback and, on a rank
+  // other than 0, sleeps 10 s and then exits with status 0: a collective failure (every rank of a
+  // BDDC or MUMPS solve) then looked like rank 0 failing alone, and the other ranks ended silently.
+  PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
 }
 
 PetscSession::~PetscSession() {

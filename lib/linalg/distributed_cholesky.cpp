@@ -4,6 +4,7 @@
 // over the ranks.
 #include "linalg/distributed_cholesky.hpp"
 
+#include <fmt/format.h>
 #include <mpi.h>
 #include <petscmat.h>
 #include <petscvec.h>
@@ -129,9 +130,19 @@ DistributedCholesky::DistributedCholesky(MPI_Comm ranks, int n,
   }
   MatFactorError error = MAT_FACTOR_NOERROR;
   HPC_PETSC_CALL(MatFactorGetError(f, &error));
-  if (error != MAT_FACTOR_NOERROR)
-    throw NumericalError("distributed Cholesky (MUMPS) failed on a " + std::to_string(n) + "x" + std::to_string(n) +
-                         " matrix (not positive definite?)");
+  if (error != MAT_FACTOR_NOERROR) {
+    PetscInt infog1 = 0, infog2 = 0;
+    HPC_PETSC_CALL(MatMumpsGetInfog(f, 1, &infog1));
+    HPC_PETSC_CALL(MatMumpsGetInfog(f, 2, &infog2));
+    const char* meaning = infog1 == -10 || infog1 == -6 ? "the matrix is singular"
+                          : infog1 == -8 || infog1 == -9 || infog1 == -14 || infog1 == -15 || infog1 == -17
+                              ? "its workspace was too small: raise -mat_mumps_icntl_14 (percent of extra space)"
+                          : infog1 == -13 ? "out of memory"
+                                          : "see MUMPS's manual for INFOG(1)";
+    throw NumericalError(
+        fmt::format("MUMPS's factorization of a {0}x{0} matrix failed: INFOG(1) = {1}, INFOG(2) = {2} ({3})", n, infog1,
+                    infog2, meaning));
+  }
   if (!trailing.empty()) {
     // Solves on the interior problem A_II only (MUMPS's ICNTL(26) = 0); S_T is solved here.
     HPC_PETSC_CALL(MatMumpsSetIcntl(f, 26, 0));
