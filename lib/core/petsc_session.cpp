@@ -123,11 +123,20 @@ void sum_over_ranks(MPI_Comm ranks, double* data, std::size_t count) {
   // In chunks of 8 MB: Open MPI's allreduce of large messages allocates a temporary copy of the
   // message, which for a dense interface matrix (75 MB at 1e6 dofs on 4 ranks) was the largest
   // allocation of a rank; an int count also caps a single call at 2^31 entries.
+  // A reduction on the first rank, then a broadcast of its bits: every rank holds the same sum
+  // to the last bit (an allreduce may add in another order on each rank, and MPI does not
+  // promise otherwise), so the decisions taken on replicated data (the contact solvers' active
+  // sets, iteration counts, stopping tests) are the same on every rank.
   constexpr std::size_t chunk = std::size_t{1} << 20;
-  for (std::size_t first = 0; first < count; first += chunk)
-    HPC_VERIFY(MPI_Allreduce(MPI_IN_PLACE, data + first, static_cast<int>(std::min(chunk, count - first)), MPI_DOUBLE,
-                             MPI_SUM, ranks) == MPI_SUCCESS,
-               "MPI_Allreduce failed");
+  const bool root = rank_and_size(ranks).first == 0;
+  for (std::size_t first = 0; first < count; first += chunk) {
+    const int n = static_cast<int>(std::min(chunk, count - first));
+    double* piece = data + first;
+    HPC_VERIFY(MPI_Reduce(root ? MPI_IN_PLACE : piece, root ? piece : nullptr, n, MPI_DOUBLE, MPI_SUM, 0, ranks) ==
+                       MPI_SUCCESS &&
+                   MPI_Bcast(piece, n, MPI_DOUBLE, 0, ranks) == MPI_SUCCESS,
+               "summing over the ranks failed");
+  }
 }
 
 }  // namespace hpcontact

@@ -58,8 +58,8 @@ std::pair<int, int> mpi_rank_and_size();
 /// (rank, size) in `ranks`; (0, 1) when MPI is not initialized.
 std::pair<int, int> rank_and_size(MPI_Comm ranks);
 
-/// Sums data[0 .. count) over `ranks`, in place, so that every one holds the sum (in chunks: MPI
-/// counts are int). Collective on `ranks`; nothing to do on one rank.
+/// Sums data[0 .. count) over `ranks`, in place, so that every one holds the same sum, bit for bit
+/// (in chunks: MPI counts are int). Collective on `ranks`; nothing to do on one rank.
 void sum_over_ranks(MPI_Comm ranks, double* data, std::size_t count);
 
 }  // namespace hpcontact
