@@ -6,7 +6,9 @@
 //   distributed_factor_check SOLVER SPLIT [indefinite]
 //     SOLVER  substructuring | mumps | bddc
 //     SPLIT   strips (elements in strips of x, one per rank) | scattered (element e on rank e %
-//     ranks) indefinite: one Dirichlet diagonal is −50 and one on the trailing row too (the
+//             ranks) | wide (strips, the trailing set also the second row and the side columns:
+//             76 unknowns, more than twice what 2 strips share)
+//     indefinite: one Dirichlet diagonal is −50 and one on the trailing row too (the
 //     factorization must fail on every rank; exit 5 if the solver accepted the matrix)
 #include <fmt/format.h>
 
@@ -58,7 +60,7 @@ int run(const std::string& solver, const std::string& split, bool indefinite) {
           const int hi = std::max(nodes[a], nodes[b]), lo = std::min(nodes[a], nodes[b]);
           entries.emplace_back(hi, hi, w), entries.emplace_back(lo, lo, w), entries.emplace_back(hi, lo, -w);
         }
-      add_element(entries, split == "strips" ? i * ranks / (kNx - 1) : element % ranks);
+      add_element(entries, split != "scattered" ? i * ranks / (kNx - 1) : element % ranks);
     }
   // "Dirichlet" diagonal on the top row, all on rank 0 (it touches every strip's top nodes).
   for (int i = 0; i < kNx; ++i)
@@ -66,6 +68,10 @@ int run(const std::string& solver, const std::string& split, bool indefinite) {
   // The trailing set: the bottom row. B: 10 rows on it; B_out also reaches one interior node.
   std::vector<int> trailing;
   for (int i = 0; i < kNx; ++i) trailing.push_back(node(i, 0));
+  if (split == "wide") {
+    for (int i = 0; i < kNx; ++i) trailing.push_back(node(i, 1));
+    for (int j = 2; j < kNy; ++j) trailing.push_back(node(0, j)), trailing.push_back(node(kNx - 1, j));
+  }
   if (indefinite) add_element({{node(kNx / 2, 0), node(kNx / 2, 0), -50.0}}, 0);
   std::vector<Eigen::Triplet<double>> b_entries;
   for (int r = 0; r < 10; ++r)
@@ -107,6 +113,7 @@ int run(const std::string& solver, const std::string& split, bool indefinite) {
   fmt::print("schur_trailing {:.3e}\n", relative_difference(schur, reference.schur_complement(b)));
   fmt::print("schur_fallback {:.3e}\n", relative_difference(schur_out, reference.schur_complement(b_out)));
   fmt::print("interface {}\n", interface);
+  fmt::print("trailing_set {}\n", trailing.size());
   fmt::print("reference_factor_nonzeros {}\n", linalg::SparseCholesky(a, trailing).factor_nonzeros());
   return 0;
 }

@@ -44,6 +44,27 @@ double partition_number(const std::string& output, const std::string& mesh, cons
 
 }  // namespace
 
+// A trailing set more than twice the unknowns the ranks share stays out of substructuring's dense
+// interface problem (its unknowns interior to their ranks), and B A⁻¹ Bᵀ from solves equals
+// CHOLMOD's; on one rank it is the interface, as in the serial path.
+TEST(DistributedFactor, SubstructuringKeepsALargeTrailingSetOutOfTheInterface) {
+  for (int ranks : {1, 2}) {
+    const auto run = run_command(check_command(ranks, "substructuring wide"));
+    const std::string where = std::to_string(ranks) + " ranks";
+    ASSERT_EQ(run.exit_code, 0) << where << "\n" << run.output;
+    for (const char* key : {"solve", "schur_trailing", "schur_fallback"})
+      EXPECT_LT(number_after(run.output, key), 1e-11) << where << ": " << key << "\n" << run.output;
+    const double interface = number_after(run.output, "interface"), trailing = number_after(run.output, "trailing_set");
+    EXPECT_EQ(trailing, 76) << where;
+    if (ranks == 1) {
+      EXPECT_EQ(interface, trailing) << where;
+    } else {
+      EXPECT_GT(interface, 0) << where;
+      EXPECT_LT(2 * interface, trailing) << where << ": the trailing set joined the interface";
+    }
+  }
+}
+
 TEST(DistributedFactor, SubstructuringMumpsAndBddcEqualCholmodOnEverySplit) {
   for (const char* solver : {"substructuring", "mumps", "bddc"})
     for (const char* split : {"strips", "scattered"})

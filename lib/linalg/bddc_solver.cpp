@@ -96,15 +96,15 @@ BddcIterations BddcSolver::iterations() const { return impl_->iterations; }
 
 namespace {
 
-// One solve of the rank's rows of `rhs_column` (a replicated column); the rank's rows of the
-// solution into `owned_solution`.
-void solve_column(KSP ksp, Mat a, const double* rhs_column, PetscInt row_begin, PetscInt row_end,
-                  double* owned_solution, BddcIterations& count) {
+// One solve: the rank's rows of the right-hand side in, the rank's rows of the solution into
+// `owned_solution` (both `owned` long: the rows PETSc gives the rank).
+void solve_column(KSP ksp, Mat a, const double* owned_rhs, PetscInt owned, double* owned_solution,
+                  BddcIterations& count) {
   PetscHandle<Vec, VecDestroy> b, x;
   HPC_PETSC_CALL(MatCreateVecs(a, x.out(), b.out()));
   PetscScalar* array = nullptr;
   HPC_PETSC_CALL(VecGetArray(b.get(), &array));
-  std::copy(rhs_column + row_begin, rhs_column + row_end, array);
+  std::copy(owned_rhs, owned_rhs + owned, array);
   HPC_PETSC_CALL(VecRestoreArray(b.get(), &array));
   HPC_PETSC_CALL(KSPSolve(ksp, b.get(), x.get()));
   KSPConvergedReason reason;
@@ -141,7 +141,7 @@ void solve_column(KSP ksp, Mat a, const double* rhs_column, PetscInt row_begin, 
   count.largest = std::max(count.largest, static_cast<int>(iterations));
   const PetscScalar* solution = nullptr;
   HPC_PETSC_CALL(VecGetArrayRead(x.get(), &solution));
-  std::copy(solution, solution + (row_end - row_begin), owned_solution);
+  std::copy(solution, solution + owned, owned_solution);
   HPC_PETSC_CALL(VecRestoreArrayRead(x.get(), &solution));
 }
 
@@ -150,8 +150,9 @@ void solve_column(KSP ksp, Mat a, const double* rhs_column, PetscInt row_begin, 
 Eigen::MatrixXd BddcSolver::solve(const Eigen::MatrixXd& rhs) const {
   HPC_VERIFY(rhs.rows() == size_, "right-hand side of the wrong size");
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(size_, rhs.cols());
+  const PetscInt owned = impl_->row_end - impl_->row_begin;
   for (Eigen::Index k = 0; k < rhs.cols(); ++k)
-    solve_column(impl_->ksp.get(), impl_->matrix.get(), rhs.col(k).data(), impl_->row_begin, impl_->row_end,
+    solve_column(impl_->ksp.get(), impl_->matrix.get(), rhs.col(k).data() + impl_->row_begin, owned,
                  out.col(k).data() + impl_->row_begin, impl_->iterations);
   sum_over_ranks(ranks_, out.data(), out.size());  // each row is non-zero on its owner only
   return out;
@@ -161,14 +162,15 @@ Eigen::MatrixXd BddcSolver::schur_complement(const Eigen::SparseMatrix<double>& 
   HPC_VERIFY(b.cols() == size_, "B A⁻¹ Bᵀ: B has the wrong number of columns");
   const auto m = b.rows();
   const PetscInt owned = impl_->row_end - impl_->row_begin;
+  // Only the rank's rows of Bᵀ and of each solution: no vector of the global length.
   const Eigen::SparseMatrix<double> b_owned = b.middleCols(impl_->row_begin, owned);
-  const Eigen::SparseMatrix<double> bt = b.transpose();
+  const Eigen::SparseMatrix<double> bt_owned = b_owned.transpose();
   Eigen::MatrixXd result = Eigen::MatrixXd::Zero(m, m);
-  Eigen::VectorXd column(size_), owned_solution(owned);
+  Eigen::VectorXd owned_rhs(owned), owned_solution(owned);
   for (Eigen::Index j = 0; j < m; ++j) {
-    column = bt.col(j);
-    solve_column(impl_->ksp.get(), impl_->matrix.get(), column.data(), impl_->row_begin, impl_->row_end,
-                 owned_solution.data(), impl_->iterations);
+    owned_rhs = bt_owned.col(j);
+    solve_column(impl_->ksp.get(), impl_->matrix.get(), owned_rhs.data(), owned, owned_solution.data(),
+                 impl_->iterations);
     result.col(j) = b_owned * owned_solution;
   }
   sum_over_ranks(ranks_, result.data(), result.size());

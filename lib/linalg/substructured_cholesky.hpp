@@ -15,7 +15,9 @@ namespace hpcontact::linalg {
 
 /// A = Σ_r A_r, where A_r holds rank r's entries (e.g. the element matrices of its cells). An
 /// unknown touched by one rank only is that rank's interior (I_r); the others, and the trailing
-/// set C, are the interface G (ordered G \ C, then C). With A_r split accordingly,
+/// set C, are the interface G (ordered G \ C, then C). (C joins G only when it is at most twice
+/// the shared unknowns, or on one rank; otherwise its unknowns stay interior and B A⁻¹ Bᵀ comes
+/// from solves.) With A_r split accordingly,
 ///
 ///     A_r = [A_II   A_IG ]     S_r = A_GG,r − A_GI A_II⁻¹ A_IG   (rank r alone, CHOLMOD with
 ///           [A_GI   A_GG,r]                                        G ∩ r ordered last),
@@ -53,6 +55,10 @@ class SubstructuredCholesky {
   Eigen::MatrixXd schur_complement(const Eigen::SparseMatrix<double>& b) const;
 
  private:
+  /// B A⁻¹ Bᵀ by solves in blocks of 64 rows of B, each rank multiplying B's columns at its own
+  /// interior unknowns (rank 0 those at the interface), so that only m × m sums cross the ranks.
+  Eigen::MatrixXd schur_complement_by_solves(const Eigen::SparseMatrix<double>& b) const;
+
   struct Impl;
   std::unique_ptr<Impl> impl_;
   MPI_Comm ranks_ = MPI_COMM_NULL;  ///< the ranks sharing the matrix
