@@ -10,6 +10,8 @@
 //             76 unknowns, more than twice what 2 strips share)
 //     indefinite: one Dirichlet diagonal is −50 and one on the trailing row too (the
 //     factorization must fail on every rank; exit 5 if the solver accepted the matrix)
+//     untouched: the matrix has one more unknown than the grid, which no entry touches (the
+//     factorization must fail on every rank, exit 5 otherwise)
 #include <fmt/format.h>
 
 #include <random>
@@ -34,7 +36,7 @@ double relative_difference(const Eigen::MatrixXd& value, const Eigen::MatrixXd& 
   return (value - reference).cwiseAbs().maxCoeff() / reference.cwiseAbs().maxCoeff();
 }
 
-int run(const std::string& solver, const std::string& split, bool indefinite) {
+int run(const std::string& solver, const std::string& split, bool indefinite, bool untouched) {
   // (not a structured binding: clang 14 refuses to capture one in the lambda below)
   const int rank = mpi_rank_and_size().first, ranks = mpi_rank_and_size().second;
   const int n = kNx * kNy;
@@ -85,6 +87,11 @@ int run(const std::string& solver, const std::string& split, bool indefinite) {
 
   Eigen::MatrixXd solution, schur, schur_out;
   int interface = 0;
+  if (untouched) {
+    const linalg::SubstructuredCholesky factor(MPI_COMM_WORLD, n + 1, mine, trailing);
+    if (rank == 0) fmt::print("error: an unknown without entries was accepted\n");
+    return 5;
+  }
   if (solver == "substructuring") {
     const linalg::SubstructuredCholesky factor(MPI_COMM_WORLD, n, mine, trailing);
     solution = factor.solve(rhs), schur = factor.schur_complement(b), schur_out = factor.schur_complement(b_out);
@@ -125,7 +132,8 @@ int main(int argc, char** argv) {
   try {
     if (argc < 3)
       throw_bad_input("distributed_factor_check", "arguments", std::to_string(argc - 1), "SOLVER SPLIT [indefinite]");
-    return run(argv[1], argv[2], argc > 3 && std::string(argv[3]) == "indefinite");
+    const std::string mode = argc > 3 ? argv[3] : "";
+    return run(argv[1], argv[2], mode == "indefinite", mode == "untouched");
   } catch (const std::exception& error) {
     if (mpi_rank_and_size().first == 0) fmt::print("error: {}\n", error.what());
     return 3;

@@ -194,6 +194,16 @@ TEST(DistributedFactor, IndefiniteMatrixFailsOnEveryRankWithAClearMessage) {
     }
 }
 
+// An unknown that no rank's entries touch (found by the ranks' directory of shared unknowns, no
+// array of the global length): the same message on every rank, exit 3.
+TEST(DistributedFactor, SubstructuringRefusesAnUnknownWithoutEntriesOnEveryRank) {
+  for (int ranks : {1, 2, 3}) {
+    const auto run = run_command(check_command(ranks, "substructuring strips untouched"));
+    EXPECT_EQ(run.exit_code, 3) << ranks << " ranks\n" << run.output;
+    EXPECT_NE(run.output.find("unknown 384 of 385 has no entries"), std::string::npos) << run.output;
+  }
+}
+
 TEST(DistributedFactor, SubstructuringNotesAnInterfaceLargerThanTheFactorsAndThan64MB) {
   // 2000² entries are 32 MB: too small to matter whatever the factors; 3000² are 72 MB.
   EXPECT_FALSE(linalg::interface_outweighs_factors(2000, 0.0));

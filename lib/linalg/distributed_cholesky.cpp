@@ -18,6 +18,7 @@
 #include "core/petsc_handle.hpp"
 #include "core/petsc_session.hpp"
 #include "linalg/schur_complement.hpp"
+#include "linalg/sorted_index_map.hpp"
 
 namespace hpcontact::linalg {
 
@@ -25,7 +26,8 @@ struct DistributedCholesky::Impl {
   PetscHandle<Mat, MatDestroy> matrix, factor;
   PetscInt row_begin = 0, row_end = 0;
   Eigen::SparseMatrix<double> contributions;  ///< this rank's share of A, both triangles
-  std::vector<int> trailing, trailing_position;
+  std::vector<int> trailing;
+  SortedIndexMap trailing_position;            ///< unknown → its row in S_T
   Eigen::LLT<Eigen::MatrixXd> trailing_schur;  ///< S_T = L_T L_Tᵀ, replicated
 };
 
@@ -79,12 +81,12 @@ DistributedCholesky::DistributedCholesky(MPI_Comm ranks, int n,
       rows.push_back(entry.col()), cols.push_back(entry.row()), values.push_back(entry.value());
   }
   impl_->trailing = trailing;
-  impl_->trailing_position.assign(n, -1);
+  std::vector<std::pair<int, int>> positions;
   for (std::size_t k = 0; k < trailing.size(); ++k) {
-    HPC_VERIFY(trailing[k] >= 0 && trailing[k] < n && impl_->trailing_position[trailing[k]] < 0,
-               "distributed Cholesky: trailing set outside the unknowns or repeated");
-    impl_->trailing_position[trailing[k]] = static_cast<int>(k);
+    HPC_VERIFY(trailing[k] >= 0 && trailing[k] < n, "distributed Cholesky: trailing set outside the unknowns");
+    positions.emplace_back(trailing[k], static_cast<int>(k));
   }
+  impl_->trailing_position = SortedIndexMap(std::move(positions));  // (refuses a repeated index)
   if (!trailing.empty()) {
     // A x for the solves through S_T, from this rank's own contributions (summed over the ranks).
     std::vector<Eigen::Triplet<double>> both;
@@ -221,8 +223,9 @@ Eigen::MatrixXd DistributedCholesky::schur_complement(const Eigen::SparseMatrix<
   HPC_VERIFY(b.cols() == size_, "B A⁻¹ Bᵀ: B has the wrong number of columns");
   if (!impl_->trailing.empty())
     // matrixLLT() holds L_T in its lower triangle, the only part read: no dense copy of L_T.
-    return schur_complement_through_trailing(b, impl_->trailing_schur.matrixLLT(), impl_->trailing_position,
-                                             [this](const Eigen::MatrixXd& rhs) { return solve(rhs); });
+    return schur_complement_through_trailing(
+        b, impl_->trailing_schur.matrixLLT(), [this](int j) { return impl_->trailing_position.find(j); },
+        [this](const Eigen::MatrixXd& rhs) { return solve(rhs); });
   const auto m = b.rows();
   const PetscInt owned = impl_->row_end - impl_->row_begin;
   const Eigen::SparseMatrix<double> bt = b.transpose();

@@ -7,19 +7,19 @@ namespace hpcontact::linalg {
 
 Eigen::MatrixXd schur_complement_through_trailing(const Eigen::SparseMatrix<double>& b,
                                                   const Eigen::Ref<const Eigen::MatrixXd>& trailing_factor,
-                                                  const std::vector<int>& trailing_position,
+                                                  const std::function<int(int)>& trailing_position,
                                                   const std::function<Eigen::MatrixXd(const Eigen::MatrixXd&)>& solve) {
   const auto m = b.rows();
   bool inside = trailing_factor.rows() > 0;
   for (int col = 0; inside && col < b.outerSize(); ++col)
     for (Eigen::SparseMatrix<double>::InnerIterator it(b, col); it; ++it)
-      if (it.value() != 0.0 && trailing_position[it.col()] < 0) inside = false;
+      if (it.value() != 0.0 && trailing_position(it.col()) < 0) inside = false;
   Eigen::MatrixXd result(m, m);
   if (inside) {
     Eigen::MatrixXd bt = Eigen::MatrixXd::Zero(trailing_factor.rows(), m);  // (B P_tᵀ)ᵀ
     for (int col = 0; col < b.outerSize(); ++col)
       for (Eigen::SparseMatrix<double>::InnerIterator it(b, col); it; ++it)
-        bt(trailing_position[it.col()], it.row()) += it.value();
+        bt(trailing_position(it.col()), it.row()) += it.value();
     trailing_factor.triangularView<Eigen::Lower>().solveInPlace(bt);
     result.setZero();
     result.selfadjointView<Eigen::Lower>().rankUpdate(bt.transpose());

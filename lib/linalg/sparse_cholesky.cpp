@@ -227,8 +227,9 @@ Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& rhs) const { return
 
 Eigen::MatrixXd SparseCholesky::schur_complement(const Eigen::SparseMatrix<double>& b) const {
   HPC_VERIFY(b.cols() == size_, "B A⁻¹ Bᵀ: B has the wrong number of columns");
-  return schur_complement_through_trailing(b, impl_->trailing_factor, impl_->trailing_position,
-                                           [this](const Eigen::MatrixXd& rhs) { return solve(rhs); });
+  return schur_complement_through_trailing(
+      b, impl_->trailing_factor, [this](int j) { return impl_->trailing_position[j]; },
+      [this](const Eigen::MatrixXd& rhs) { return solve(rhs); });
 }
 
 std::vector<int> nonzero_columns(const Eigen::SparseMatrix<double>& b) {
