@@ -12,6 +12,7 @@
 //     factorization must fail on every rank; exit 5 if the solver accepted the matrix)
 //     untouched: the matrix has one more unknown than the grid, which no entry touches (the
 //     factorization must fail on every rank, exit 5 otherwise)
+//     indefinite_plain: as indefinite, factorized without a trailing set
 #include <fmt/format.h>
 
 #include <random>
@@ -36,7 +37,7 @@ double relative_difference(const Eigen::MatrixXd& value, const Eigen::MatrixXd& 
   return (value - reference).cwiseAbs().maxCoeff() / reference.cwiseAbs().maxCoeff();
 }
 
-int run(const std::string& solver, const std::string& split, bool indefinite, bool untouched) {
+int run(const std::string& solver, const std::string& split, bool indefinite, bool untouched, bool plain) {
   // (not a structured binding: clang 14 refuses to capture one in the lambda below)
   const int rank = mpi_rank_and_size().first, ranks = mpi_rank_and_size().second;
   const int n = kNx * kNy;
@@ -87,6 +88,15 @@ int run(const std::string& solver, const std::string& split, bool indefinite, bo
 
   Eigen::MatrixXd solution, schur, schur_out;
   int interface = 0;
+  if (plain) {  // only the factorization is under test
+    if (solver == "substructuring") {
+      const linalg::SubstructuredCholesky factor(MPI_COMM_WORLD, n, mine, {});
+    } else if (solver == "mumps") {
+      const linalg::DistributedCholesky factor(MPI_COMM_WORLD, n, mine, {});
+    }
+    if (rank == 0) fmt::print("error: {} accepted an indefinite matrix\n", solver);
+    return 5;
+  }
   if (untouched) {
     const linalg::SubstructuredCholesky factor(MPI_COMM_WORLD, n + 1, mine, trailing);
     if (rank == 0) fmt::print("error: an unknown without entries was accepted\n");
@@ -133,7 +143,8 @@ int main(int argc, char** argv) {
     if (argc < 3)
       throw_bad_input("distributed_factor_check", "arguments", std::to_string(argc - 1), "SOLVER SPLIT [indefinite]");
     const std::string mode = argc > 3 ? argv[3] : "";
-    return run(argv[1], argv[2], mode == "indefinite", mode == "untouched");
+    const bool plain = mode == "indefinite_plain";
+    return run(argv[1], argv[2], mode == "indefinite" || plain, mode == "untouched", plain);
   } catch (const std::exception& error) {
     if (mpi_rank_and_size().first == 0) fmt::print("error: {}\n", error.what());
     return 3;

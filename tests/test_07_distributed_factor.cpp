@@ -192,6 +192,13 @@ TEST(DistributedFactor, IndefiniteMatrixFailsOnEveryRankWithAClearMessage) {
       EXPECT_EQ(run.exit_code, 3) << solver << ", " << ranks << " ranks\n" << run.output;
       EXPECT_NE(run.output.find("not positive definite"), std::string::npos) << run.output;
     }
+  // Without a trailing set (MUMPS's Cholesky, which counts negative pivots instead of stopping).
+  for (const char* solver : {"substructuring", "mumps"})
+    for (int ranks : {1, 2}) {
+      const auto run = run_command(check_command(ranks, std::string(solver) + " strips indefinite_plain"));
+      EXPECT_EQ(run.exit_code, 3) << solver << ", " << ranks << " ranks\n" << run.output;
+      EXPECT_NE(run.output.find("not positive definite"), std::string::npos) << run.output;
+    }
 }
 
 // An unknown that no rank's entries touch (found by the ranks' directory of shared unknowns, no

@@ -36,7 +36,7 @@ void note_if_interface_dominates(const linalg::SubstructuredCholesky& factor) {
   noted = true;
   const double g = factor.interface_size();
   fmt::print(stderr,
-             "hpcontact: note: substructuring's dense interface problem ({} unknowns between the parts and on Γ_C, "
+             "hpcontact: note: substructuring's dense interface problem ({} unknowns between the parts (and Γ_C), "
              "{:.0f} MB on every rank) outweighs the ranks' sparse factors ({:.0f} MB on average): more ranks raise "
              "the memory per rank; --distributed-solver mumps or bddc hold no interface matrix\n",
              factor.interface_size(), g * g * 8e-6, factor.mean_factor_nonzeros() * 8e-6);

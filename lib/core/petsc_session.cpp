@@ -74,13 +74,19 @@ void PetscSession::initialize() {
   // PETSc's message, on every rank. PETSc's default handler prints a traceback and, on a rank
   // other than 0, sleeps 10 s and then exits with status 0: a collective failure (every rank of a
   // BDDC or MUMPS solve) then looked like rank 0 failing alone, and the other ranks ended silently.
-  PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
+  // A user's -on_error_abort or -on_error_attach_debugger (for debugging) keeps PETSc's handler.
+  PetscBool abort = PETSC_FALSE, debugger = PETSC_FALSE;
+  PetscOptionsHasName(nullptr, nullptr, "-on_error_abort", &abort);
+  PetscOptionsHasName(nullptr, nullptr, "-on_error_attach_debugger", &debugger);
+  if (!abort && !debugger) errors_as_codes_ = PetscPushErrorHandler(PetscReturnErrorHandler, nullptr) == 0;
 }
 
 PetscSession::~PetscSession() {
   const std::lock_guard lock(session_mutex);
   lazy_session = nullptr;
-  if (initialized_) SlepcFinalize();
+  if (!initialized_) return;
+  if (errors_as_codes_) PetscPopErrorHandler();  // (PETSc frees the handler's record)
+  SlepcFinalize();
 }
 
 bool ensure_petsc_initialized() {

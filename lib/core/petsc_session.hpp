@@ -39,6 +39,7 @@ class PetscSession {
   std::vector<std::string> storage_;
   std::vector<char*> argv_;
   bool initialized_ = false;
+  bool errors_as_codes_ = false;  ///< PetscReturnErrorHandler pushed (popped before finalizing)
 };
 
 /// Makes SLEPc usable: true if it already is (initialized by anyone), else initializes it through

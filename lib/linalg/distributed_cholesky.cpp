@@ -136,7 +136,8 @@ DistributedCholesky::DistributedCholesky(MPI_Comm ranks, int n,
     PetscInt infog1 = 0, infog2 = 0;
     HPC_PETSC_CALL(MatMumpsGetInfog(f, 1, &infog1));
     HPC_PETSC_CALL(MatMumpsGetInfog(f, 2, &infog2));
-    const char* meaning = infog1 == -10 || infog1 == -6 ? "the matrix is singular"
+    const char* meaning = infog1 == -10 || infog1 == -40 ? "the matrix is not positive definite, or singular"
+                          : infog1 == -6                 ? "the matrix is singular"
                           : infog1 == -8 || infog1 == -9 || infog1 == -14 || infog1 == -15 || infog1 == -17
                               ? "its workspace was too small: raise -mat_mumps_icntl_14 (percent of extra space)"
                           : infog1 == -13 ? "out of memory"
@@ -144,6 +145,17 @@ DistributedCholesky::DistributedCholesky(MPI_Comm ranks, int n,
     throw NumericalError(
         fmt::format("MUMPS's factorization of a {0}x{0} matrix failed: INFOG(1) = {1}, INFOG(2) = {2} ({3})", n, infog1,
                     infog2, meaning));
+  }
+  if (type == MAT_FACTOR_CHOLESKY) {
+    // MUMPS's LDLᵀ of a matrix declared positive definite runs to the end over negative pivots
+    // and only counts them (INFOG(12), the same on every rank).
+    PetscInt negative = 0;
+    HPC_PETSC_CALL(MatMumpsGetInfog(f, 12, &negative));
+    if (negative > 0)
+      throw NumericalError(
+          fmt::format("MUMPS's factorization of a {0}x{0} matrix met {1} negative pivot{2}: the "
+                      "matrix is not positive definite",
+                      n, negative, negative > 1 ? "s" : ""));
   }
   if (!trailing.empty()) {
     // Solves on the interior problem A_II only (MUMPS's ICNTL(26) = 0); S_T is solved here.

@@ -43,7 +43,8 @@ class SubstructuredCholesky {
   SubstructuredCholesky& operator=(SubstructuredCholesky&&) noexcept;
 
   int size() const { return size_; }
-  /// |G|: the size of the dense interface problem (unknowns shared by ranks, and the trailing set).
+  /// |G|: the size of the dense interface problem (unknowns shared by ranks, and the trailing set
+  /// when it joined them).
   int interface_size() const;
   /// Nonzeros of the ranks' sparse (CHOLMOD) factors, averaged over the ranks.
   double mean_factor_nonzeros() const { return mean_factor_nonzeros_; }
@@ -56,7 +57,8 @@ class SubstructuredCholesky {
 
  private:
   /// B A⁻¹ Bᵀ by solves in blocks of 64 rows of B, each rank multiplying B's columns at its own
-  /// interior unknowns (rank 0 those at the interface), so that only m × m sums cross the ranks.
+  /// interior unknowns (rank 0 those at the interface): the sums that cross the ranks are
+  /// |G| × 64 per block and the m × m result, none of the global length.
   Eigen::MatrixXd schur_complement_by_solves(const Eigen::SparseMatrix<double>& b) const;
 
   struct Impl;

@@ -36,6 +36,8 @@ void bisect(const std::vector<Point>& centroids, const std::vector<int>& weight,
   int middle = begin;
   while (middle < end && (left + weight[cells[middle]]) * parts <= share) left += weight[cells[middle++]];
   if (middle < end && (left + weight[cells[middle]]) * parts - share < share - left * parts) ++middle;
+  // Every part gets a cell while there are enough (a heavy cell must not leave a part empty).
+  if (end - begin >= parts) middle = std::clamp(middle, begin + left_parts, end - (parts - left_parts));
   bisect(centroids, weight, cells, begin, middle, first_part, left_parts, part_of_cell);
   bisect(centroids, weight, cells, middle, end, first_part + left_parts, parts - left_parts, part_of_cell);
 }
