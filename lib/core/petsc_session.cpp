@@ -76,7 +76,7 @@ void PetscSession::initialize() {
   // BDDC or MUMPS solve) then looked like rank 0 failing alone, and the other ranks ended silently.
   // A user's -on_error_abort or -on_error_attach_debugger (for debugging) keeps PETSc's handler.
   PetscBool abort = PETSC_FALSE, debugger = PETSC_FALSE;
-  PetscOptionsHasName(nullptr, nullptr, "-on_error_abort", &abort);
+  PetscOptionsGetBool(nullptr, nullptr, "-on_error_abort", &abort, nullptr);  // (takes "false" too)
   PetscOptionsHasName(nullptr, nullptr, "-on_error_attach_debugger", &debugger);
   if (!abort && !debugger) errors_as_codes_ = PetscPushErrorHandler(PetscReturnErrorHandler, nullptr) == 0;
 }

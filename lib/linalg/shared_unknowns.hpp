@@ -11,7 +11,8 @@ namespace hpcontact::linalg {
 
 /// Every unknown of [0, n) that the `touched` lists of two or more ranks of `ranks` hold,
 /// ascending, the same on every rank. `touched`: the unknowns this rank's entries touch,
-/// ascending and distinct. Rank r counts the reports of the block [⌈r n / P⌉, ⌈(r + 1) n / P⌉)
+/// ascending, distinct and in [0, n) (a precondition: a violation is the caller's bug and ends
+/// that rank alone, before the collective calls). Rank r counts the reports of the block [⌈r n / P⌉, ⌈(r + 1) n / P⌉)
 /// (one all-to-all), then the blocks' shared unknowns are gathered on every rank. Collective on
 /// `ranks`; on one rank nothing is shared.
 /// @throws NumericalError (on every rank) naming the first unknown that no rank touches.
