@@ -95,7 +95,8 @@ InfSupResult analyse_infsup(const InfSupSetup& setup, EigenBackend backend) {
     result.alpha_converged = grams.geometric() && result.alpha_error <= setup.alpha_tolerance * result.alpha;
     int stop = result.alpha_converged || !grams.geometric() || level == grams.top_level();
     // A distributed ladder builds its next level collectively, so every rank takes rank 0's
-    // decision: sums over the ranks agree to round-off, not necessarily to the bit.
+    // decision. The sums over the ranks agree to the bit (sum_over_ranks); this guards the
+    // ranks' own dense work, whose bits could still differ (e.g. another BLAS thread count).
     if (distribution.distributed()) MPI_Bcast(&stop, 1, MPI_INT, 0, distribution.ranks);
     if (stop) break;
   }

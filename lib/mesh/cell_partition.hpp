@@ -2,7 +2,7 @@
 // centroids, PT-Scotch on the dual graph (mesh/graph_partition.hpp), and the shorter of the two
 // cuts. Bisection cuts uniform meshes straight (PT-Scotch's jagged cut of a 256 × 256 square is
 // 14 % longer, and CHOLMOD's factors of the parts 19 % larger); PT-Scotch cuts unstructured and
-// graded meshes shorter (up to 46 % on an annulus).
+// graded meshes shorter (up to 42 % on an annulus).
 #pragma once
 
 #include <mpi.h>
