@@ -1,7 +1,8 @@
 // Helper of test_07_distributed_factor, run under mpirun: every rank contributes its share of the
 // element matrices of a random weighted graph Laplacian on a grid (semidefinite per element, so a
 // rank's part floats unless it holds some of the "Dirichlet" diagonal), factorizes their sum over
-// the ranks, and rank 0 prints the relative differences from CHOLMOD on the assembled matrix.
+// the ranks, and rank 0 prints the relative differences from CHOLMOD on the assembled matrix (and
+// of the solve from shares at each rank's unknowns from the solver's replicated solve).
 //
 //   distributed_factor_check SOLVER SPLIT [indefinite]
 //     SOLVER  substructuring | mumps | bddc
@@ -15,6 +16,7 @@
 //     indefinite_plain: as indefinite, factorized without a trailing set
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <random>
 #include <string>
 
@@ -44,11 +46,15 @@ int run(const std::string& solver, const std::string& split, bool indefinite, bo
   std::mt19937 random(7);  // the same numbers on every rank
   std::uniform_real_distribution<double> weight(0.5, 2.0), value(-1.0, 1.0);
   std::vector<Eigen::Triplet<double>> all, mine;
+  std::vector<std::vector<int>> touching(n + 1);  // the ranks whose entries touch each unknown
   int element = 0;
   auto add_element = [&](const std::vector<Eigen::Triplet<double>>& entries, int owner) {
     for (const auto& entry : entries) {
       all.push_back(entry);
       if (owner == rank) mine.push_back(entry);
+      for (int index : {entry.row(), entry.col()})
+        if (std::find(touching[index].begin(), touching[index].end(), owner) == touching[index].end())
+          touching[index].push_back(owner);
     }
     ++element;
   };
@@ -86,6 +92,33 @@ int run(const std::string& solver, const std::string& split, bool indefinite, bo
   Eigen::MatrixXd rhs(n, 3);
   for (Eigen::Index k = 0; k < rhs.size(); ++k) rhs.data()[k] = value(random);
 
+  // Each rank's share of rhs at the unknowns it touches: the first toucher holds rhs + 0.5, the
+  // last −0.5 (the same rank when one touches it alone).
+  auto share_of = [&](const std::vector<int>& local) {
+    Eigen::MatrixXd share = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(local.size()), rhs.cols());
+    for (std::size_t k = 0; k < local.size(); ++k) {
+      const auto& ranks_there = touching[local[k]];
+      if (ranks_there.front() == rank) share.row(k).array() += rhs.row(local[k]).array() + 0.5;
+      if (ranks_there.back() == rank) share.row(k).array() -= 0.5;
+    }
+    return share;
+  };
+  // solve_local against the same solver's replicated solve, at the rank's local unknowns; −1 when
+  // the local unknowns are not those its entries touch.
+  double local_difference = 0.0;
+  auto check_local = [&](const auto& factor, const Eigen::MatrixXd& replicated) {
+    const std::vector<int>& local = factor.local_unknowns();
+    std::vector<int> expected;
+    for (int i = 0; i < n; ++i)
+      if (std::find(touching[i].begin(), touching[i].end(), rank) != touching[i].end()) expected.push_back(i);
+    local_difference = local == expected
+                           ? relative_difference(factor.solve_local(share_of(local)), replicated(local, Eigen::all))
+                           : -1.0;
+    // The largest difference over the ranks, −1 if any rank's local unknowns were wrong.
+    double worst[2] = {local_difference, -local_difference};
+    MPI_Allreduce(MPI_IN_PLACE, worst, 2, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+    local_difference = worst[1] > 0.0 ? -1.0 : worst[0];
+  };
   Eigen::MatrixXd solution, schur, schur_out;
   int interface = 0;
   if (plain) {  // only the factorization is under test
@@ -106,14 +139,17 @@ int run(const std::string& solver, const std::string& split, bool indefinite, bo
     const linalg::SubstructuredCholesky factor(MPI_COMM_WORLD, n, mine, trailing);
     solution = factor.solve(rhs), schur = factor.schur_complement(b), schur_out = factor.schur_complement(b_out);
     interface = factor.interface_size();
+    check_local(factor, solution);
     if (rank == 0) fmt::print("factor_nonzeros_mean {}\n", factor.mean_factor_nonzeros());
   } else if (solver == "mumps") {
     const linalg::DistributedCholesky factor(MPI_COMM_WORLD, n, mine, trailing);
     solution = factor.solve(rhs), schur = factor.schur_complement(b), schur_out = factor.schur_complement(b_out);
     interface = factor.trailing_size();  // the Schur complement MUMPS returned
+    check_local(factor, solution);
   } else if (solver == "bddc") {
     const linalg::BddcSolver factor(MPI_COMM_WORLD, n, mine);
     solution = factor.solve(rhs), schur = factor.schur_complement(b), schur_out = factor.schur_complement(b_out);
+    check_local(factor, solution);
     if (rank == 0) fmt::print("iterations_largest {}\n", factor.iterations().largest);
   } else {
     throw_bad_input("distributed_factor_check", "SOLVER", solver, "substructuring | mumps | bddc");
@@ -130,6 +166,7 @@ int run(const std::string& solver, const std::string& split, bool indefinite, bo
   fmt::print("schur_trailing {:.3e}\n", relative_difference(schur, reference.schur_complement(b)));
   fmt::print("schur_fallback {:.3e}\n", relative_difference(schur_out, reference.schur_complement(b_out)));
   fmt::print("interface {}\n", interface);
+  fmt::print("solve_local {:.3e}\n", local_difference);
   fmt::print("trailing_set {}\n", trailing.size());
   fmt::print("reference_factor_nonzeros {}\n", linalg::SparseCholesky(a, trailing).factor_nonzeros());
   return 0;

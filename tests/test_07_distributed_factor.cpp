@@ -52,8 +52,9 @@ TEST(DistributedFactor, SubstructuringKeepsALargeTrailingSetOutOfTheInterface) {
     const auto run = run_command(check_command(ranks, "substructuring wide"));
     const std::string where = std::to_string(ranks) + " ranks";
     ASSERT_EQ(run.exit_code, 0) << where << "\n" << run.output;
-    for (const char* key : {"solve", "schur_trailing", "schur_fallback"})
+    for (const char* key : {"solve", "schur_trailing", "schur_fallback", "solve_local"})
       EXPECT_LT(number_after(run.output, key), 1e-11) << where << ": " << key << "\n" << run.output;
+    EXPECT_GE(number_after(run.output, "solve_local"), 0.0) << where << ": wrong local unknowns\n" << run.output;
     const double interface = number_after(run.output, "interface"), trailing = number_after(run.output, "trailing_set");
     EXPECT_EQ(trailing, 76) << where;
     if (ranks == 1) {
@@ -72,8 +73,10 @@ TEST(DistributedFactor, SubstructuringMumpsAndBddcEqualCholmodOnEverySplit) {
         const auto run = run_command(check_command(ranks, std::string(solver) + " " + split));
         const std::string where = std::string(solver) + ", " + split + ", " + std::to_string(ranks) + " ranks";
         ASSERT_EQ(run.exit_code, 0) << where << "\n" << run.output;
-        for (const char* key : {"solve", "schur_trailing", "schur_fallback"})
+        for (const char* key : {"solve", "schur_trailing", "schur_fallback", "solve_local"})
           EXPECT_LT(number_after(run.output, key), 1e-11) << where << ": " << key << "\n" << run.output;
+        // The solve from each rank's share at the unknowns it touches (−1: other local unknowns).
+        EXPECT_GE(number_after(run.output, "solve_local"), 0.0) << where << ": wrong local unknowns\n" << run.output;
         // BDDC: a handful of iterations with strips (one interface per neighbour); scattered
         // cells make every node an interface node, still well below the 384 unknowns.
         if (std::string(solver) == "bddc") {

@@ -436,22 +436,26 @@ TEST(Cli, SolveUnderMpirunGivesTheSerialSolutionAndAlpha) {
     }
     return rows;
   };
-  // (scenes under studies/; the annulus is a curved Gmsh mesh whose cells are all eliminated apart)
+  // (scenes under studies/; the annulus is a curved Gmsh mesh whose cells are all eliminated apart;
+  // elasticity: the square's parts touch its Dirichlet side, the ring's float, held by rollers)
   const std::vector<std::pair<std::string, std::string>> cases{{"paper/figure1_signorini", "signorini,infsup"},
                                                                {"paper/figure6_friction_s", "friction_s"},
-                                                               {"curved/annulus", "signorini,infsup"}};
-  for (const auto& [scene, effects] : cases)
-    for (const std::string launch : {"mpirun -n 2", "mpirun -n 3"}) {
-      const auto dir = scratch("solve_mpi_" + scene.substr(scene.find('/') + 1));
-      const std::string arguments = " solve " HPCONTACT_SOURCE_DIR "/studies/" + scene + ".toml --effects " + effects;
-      const auto serial = run_command(env + HPCONTACT_CLI + arguments + " --out " + (dir / "serial").string());
-      ASSERT_EQ(serial.exit_code, 0) << serial.output;
-      const std::string solver = launch == "mpirun -n 3" ? " --distributed-solver bddc" : "";
-      const auto parallel = run_command(env + launch + " --oversubscribe " HPCONTACT_CLI + arguments + solver +
-                                        " --out " + (dir / "parallel").string());
-      ASSERT_EQ(parallel.exit_code, 0) << parallel.output;
-      EXPECT_NE(parallel.output.find(launch == "mpirun -n 3" ? "on 3 ranks" : "on 2 ranks"), std::string::npos)
-          << parallel.output;
+                                                               {"curved/annulus", "signorini,infsup"},
+                                                               {"elasticity/square", "frictionless,infsup"},
+                                                               {"curved/ring", "frictionless"}};
+  const std::vector<std::pair<int, std::string>> launches{{2, "substructuring"}, {3, "bddc"}, {2, "mumps"}};
+  for (const auto& [scene, effects] : cases) {
+    const auto dir = scratch("solve_mpi_" + scene.substr(scene.find('/') + 1));
+    const std::string arguments = " solve " HPCONTACT_SOURCE_DIR "/studies/" + scene + ".toml --effects " + effects;
+    const auto serial = run_command(env + HPCONTACT_CLI + arguments + " --out " + (dir / "serial").string());
+    ASSERT_EQ(serial.exit_code, 0) << serial.output;
+    for (const auto& [ranks, solver] : launches) {
+      const std::string launch = "mpirun -n " + std::to_string(ranks) + " --distributed-solver " + solver;
+      const auto parallel =
+          run_command(env + "mpirun -n " + std::to_string(ranks) + " --oversubscribe " HPCONTACT_CLI + arguments +
+                      " --distributed-solver " + solver + " --out " + (dir / "parallel").string());
+      ASSERT_EQ(parallel.exit_code, 0) << scene << ", " << launch << "\n" << parallel.output;
+      EXPECT_NE(parallel.output.find("on " + std::to_string(ranks) + " ranks"), std::string::npos) << parallel.output;
       const double energy = number_after(serial.output, "energy = ");
       EXPECT_NEAR(number_after(parallel.output, "energy = "), energy, 1e-10 * std::abs(energy)) << parallel.output;
       if (effects.find("infsup") != std::string::npos) {
@@ -464,15 +468,21 @@ TEST(Cli, SolveUnderMpirunGivesTheSerialSolutionAndAlpha) {
       const auto b = table(dir / "parallel" / ("boundary_" + problem + ".csv"));
       ASSERT_EQ(a.size(), b.size());
       ASSERT_GT(a.size(), 100u);
+      // A column that vanishes up to round-off (the ring's tangential displacement and gap) is
+      // measured against the table's largest entry.
+      double table_scale = 0.0;
+      for (const auto& row : a)
+        for (double value : row) table_scale = std::max(table_scale, std::abs(value));
       for (std::size_t column = 0; column < a.front().size(); ++column) {
-        double scale = 0.0, difference = 0.0;
+        double scale = 1e-6 * table_scale, difference = 0.0;
         for (std::size_t row = 0; row < a.size(); ++row) {
           scale = std::max(scale, std::abs(a[row][column]));
           difference = std::max(difference, std::abs(a[row][column] - b[row][column]));
         }
-        EXPECT_LE(difference, 1e-8 * scale) << scene << " column " << column << " (" << launch << solver << ")";
+        EXPECT_LE(difference, 1e-8 * scale) << scene << " column " << column << " (" << launch << ")";
       }
     }
+  }
 }
 
 // A folder holding an alpha.csv of other columns (an older version's) is refused with a hint;

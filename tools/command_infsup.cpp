@@ -63,18 +63,17 @@ int run_infsup(const InfSupOptions& o) {
 
   // 2. Solve the eigenproblem. Under mpirun A_G is factorized over the ranks, and rank 0 reports
   // and writes.
-  const int rank = mpi_rank_and_size().first, ranks = mpi_rank_and_size().second;
-  // An elastic scene pairs the normal (and tangential) multipliers with [S^p(T_h)]² (serial).
+  const int rank = mpi_rank_and_size().first;
+  // An elastic scene pairs the normal (and tangential) multipliers with [S^p(T_h)]².
   std::unique_ptr<operators::PrimalOperators> primal;
   std::unique_ptr<operators::ElasticOperators> elastic;
   infsup::InfSupSetup setup;
+  const linalg::Distribution distribution = linalg::distribution_over(MPI_COMM_WORLD, distributed_solver);
   if (scene.is_elastic()) {
-    if (ranks > 1) throw InputError("the elastic inf-sup analysis runs on one process (not under mpirun)");
-    elastic = driver::scene_elastic_operators(scene, d->mesh, d->cell_degrees);
+    elastic = driver::scene_elastic_operators(scene, d->mesh, d->cell_degrees, nullptr, distribution);
     setup = driver::infsup_setup_of(scene, d->mesh, d->cell_degrees, *d->boundary_mesh, d->segment_degrees, *elastic);
   } else {
-    primal = std::make_unique<operators::PrimalOperators>(
-        d->mesh, d->cell_degrees, nullptr, linalg::distribution_over(MPI_COMM_WORLD, distributed_solver));
+    primal = std::make_unique<operators::PrimalOperators>(d->mesh, d->cell_degrees, nullptr, distribution);
     setup = driver::infsup_setup_of(scene, d->mesh, d->cell_degrees, *d->boundary_mesh, d->segment_degrees, *primal);
   }
   const auto result = infsup::analyse_infsup(setup, backend);

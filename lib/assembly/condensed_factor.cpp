@@ -5,12 +5,15 @@
 #include <fmt/format.h>
 
 #include <Eigen/Cholesky>
+#include <algorithm>
 #include <map>
+#include <numeric>
 #include <optional>
 
 #include "core/error.hpp"
 #include "core/petsc_session.hpp"
 #include "core/rank_agreement.hpp"
+#include "linalg/row_exchange.hpp"
 #include "mesh/cell_partition.hpp"
 
 namespace hpcontact::assembly {
@@ -42,21 +45,29 @@ void note_if_interface_dominates(const linalg::SubstructuredCholesky& factor) {
              factor.interface_size(), g * g * 8e-6, factor.mean_factor_nonzeros() * 8e-6);
 }
 
-// Rows of `values` (global dof order) at a cell's interior unknowns `local`.
+// The row of `dof` in a vector held at the dofs `rows` (ascending), or in global order when null.
+int row_in(const std::vector<int>* rows, int dof) {
+  if (!rows) return dof;
+  const auto it = std::lower_bound(rows->begin(), rows->end(), dof);
+  HPC_VERIFY(it != rows->end() && *it == dof, "a dof of the rank's own cells is missing from its local dofs");
+  return static_cast<int>(it - rows->begin());
+}
+
+// Rows of `values` (held at `rows`) at a cell's interior unknowns `local`.
 Eigen::MatrixXd interior_rows(const std::vector<CellDof>& dofs, const std::vector<int>& local,
-                              const Eigen::Ref<const Eigen::MatrixXd>& values) {
+                              const Eigen::Ref<const Eigen::MatrixXd>& values, const std::vector<int>* rows) {
   Eigen::MatrixXd out(local.size(), values.cols());
-  for (std::size_t k = 0; k < local.size(); ++k) out.row(k) = values.row(dofs[local[k]].dof);
+  for (std::size_t k = 0; k < local.size(); ++k) out.row(k) = values.row(row_in(rows, dofs[local[k]].dof));
   return out;
 }
 
-// Rows of `values` at a cell's skeleton unknowns `local`, times their signs (0 for Dirichlet
-// dofs): the coefficients of the cell's unsigned element block.
+// Rows of `values` (held at `rows`) at a cell's skeleton unknowns `local`, times their signs (0
+// for Dirichlet dofs): the coefficients of the cell's unsigned element block.
 Eigen::MatrixXd signed_skeleton_rows(const std::vector<CellDof>& dofs, const std::vector<int>& local,
-                                     const Eigen::Ref<const Eigen::MatrixXd>& values) {
+                                     const Eigen::Ref<const Eigen::MatrixXd>& values, const std::vector<int>* rows) {
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(local.size(), values.cols());
   for (std::size_t s = 0; s < local.size(); ++s)
-    if (const auto& dof = dofs[local[s]]; dof.dof >= 0) out.row(s) = dof.sign * values.row(dof.dof);
+    if (const auto& dof = dofs[local[s]]; dof.dof >= 0) out.row(s) = dof.sign * values.row(row_in(rows, dof.dof));
   return out;
 }
 
@@ -95,6 +106,7 @@ CondensedFactor::CondensedFactor(std::unique_ptr<const CellSystem> system, const
     run_on_all_ranks_agreeing([&] { lower = eliminate_interiors(contributes); }, ranks);
   else
     lower = eliminate_interiors(contributes);
+  find_local_dofs();
   switch (distribution.solver) {
     case linalg::DistributedSolver::serial: {
       Eigen::SparseMatrix<double> schur(n_skeleton, n_skeleton);
@@ -114,6 +126,98 @@ CondensedFactor::CondensedFactor(std::unique_ptr<const CellSystem> system, const
       bddc_ = std::make_unique<linalg::BddcSolver>(ranks, n_skeleton, lower);
       break;
   }
+  // The skeleton solver's local unknowns are the skeleton dofs of the rank's cells (each has its
+  // diagonal entry from S_T): solve_local passes rows between the two without a lookup.
+  if (distributed) {
+    const std::vector<int>& unknowns = substructured_ ? substructured_->local_unknowns()
+                                       : mumps_       ? mumps_->local_unknowns()
+                                                      : bddc_->local_unknowns();
+    HPC_VERIFY(
+        std::equal(unknowns.begin(), unknowns.end(), local_dofs_.begin(), local_dofs_.begin() + n_local_skeleton_) &&
+            static_cast<int>(unknowns.size()) == n_local_skeleton_,
+        "the skeleton solver's local unknowns differ from the skeleton dofs of the rank's cells");
+  }
+}
+
+void CondensedFactor::find_local_dofs() {
+  local_dofs_.clear();
+  if (!distribution_.distributed()) {
+    local_dofs_.resize(size_);
+    std::iota(local_dofs_.begin(), local_dofs_.end(), 0);
+  } else {
+    std::vector<CellDof> dofs;
+    for (int c = 0; c < static_cast<int>(block_of_cell_.size()); ++c) {
+      if (block_of_cell_[c] < 0) continue;
+      system_->cell_dofs(c, dofs);
+      for (const auto& dof : dofs)
+        if (dof.dof >= 0) local_dofs_.push_back(dof.dof);
+    }
+    std::sort(local_dofs_.begin(), local_dofs_.end());
+    local_dofs_.erase(std::unique(local_dofs_.begin(), local_dofs_.end()), local_dofs_.end());
+  }
+  n_local_skeleton_ = static_cast<int>(
+      std::lower_bound(local_dofs_.begin(), local_dofs_.end(), system_->n_skeleton_dofs()) - local_dofs_.begin());
+  if (distribution_.distributed()) {
+    // Which rank counts each shared dof, through PETSc's layout of the dofs in equal blocks.
+    const auto [rank, ranks] = rank_and_size(distribution_.ranks);
+    const auto block_start = [&, ranks = ranks](int r) {
+      return static_cast<int>(static_cast<long long>(size_) * r / ranks);
+    };
+    counts_dof_ = linalg::RowExchange(distribution_.ranks, size_, block_start(rank), block_start(rank + 1), local_dofs_)
+                      .lowest_rank_holds();
+  }
+}
+
+Eigen::MatrixXd CondensedFactor::share_of(const Eigen::MatrixXd& whole) const {
+  HPC_VERIFY(whole.rows() == size_, "a vector of the wrong size");
+  if (!distribution_.distributed()) return whole;
+  Eigen::MatrixXd share = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(local_dofs_.size()), whole.cols());
+  for (std::size_t k = 0; k < local_dofs_.size(); ++k)
+    if (counts_dof_[k]) share.row(static_cast<Eigen::Index>(k)) = whole.row(local_dofs_[k]);
+  return share;
+}
+
+Eigen::MatrixXd CondensedFactor::gather(const Eigen::MatrixXd& local) const {
+  HPC_VERIFY(local.rows() == static_cast<Eigen::Index>(local_dofs_.size()), "a local vector of the wrong size");
+  if (!distribution_.distributed()) return local;
+  Eigen::MatrixXd whole = Eigen::MatrixXd::Zero(size_, local.cols());
+  for (std::size_t k = 0; k < local_dofs_.size(); ++k)
+    if (counts_dof_[k]) whole.row(local_dofs_[k]) = local.row(static_cast<Eigen::Index>(k));
+  sum_over_ranks(distribution_.ranks, whole.data(), whole.size());  // one rank's row, zeros elsewhere: exact
+  return whole;
+}
+
+Eigen::MatrixXd CondensedFactor::multiply_local(const Eigen::SparseMatrix<double>& b,
+                                                const Eigen::MatrixXd& x_local) const {
+  HPC_VERIFY(b.cols() == size_ && x_local.rows() == static_cast<Eigen::Index>(local_dofs_.size()),
+             "B x: sizes do not match");
+  if (!distribution_.distributed()) return b * x_local;
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(b.rows(), x_local.cols());
+  for (std::size_t k = 0; k < local_dofs_.size(); ++k)
+    if (counts_dof_[k])
+      for (Eigen::SparseMatrix<double>::InnerIterator it(b, local_dofs_[k]); it; ++it)
+        out.row(it.row()) += it.value() * x_local.row(static_cast<Eigen::Index>(k));
+  sum_over_ranks(distribution_.ranks, out.data(), out.size());
+  return out;
+}
+
+Eigen::MatrixXd CondensedFactor::transpose_share(const Eigen::SparseMatrix<double>& b, const Eigen::MatrixXd& y) const {
+  HPC_VERIFY(b.cols() == size_ && y.rows() == b.rows(), "Bᵀ y: sizes do not match");
+  if (!distribution_.distributed()) return b.transpose() * y;
+  Eigen::MatrixXd share = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(local_dofs_.size()), y.cols());
+  for (std::size_t k = 0; k < local_dofs_.size(); ++k)
+    if (counts_dof_[k])
+      for (Eigen::SparseMatrix<double>::InnerIterator it(b, local_dofs_[k]); it; ++it)
+        share.row(static_cast<Eigen::Index>(k)) += it.value() * y.row(it.row());
+  return share;
+}
+
+double CondensedFactor::dot_local(const Eigen::VectorXd& share, const Eigen::VectorXd& x_local) const {
+  HPC_VERIFY(share.size() == x_local.size() && share.size() == static_cast<Eigen::Index>(local_dofs_.size()),
+             "a local vector of the wrong size");
+  double sum = share.dot(x_local);
+  if (distribution_.distributed()) sum_over_ranks(distribution_.ranks, &sum, 1);
+  return sum;
 }
 
 std::vector<Eigen::Triplet<double>> CondensedFactor::eliminate_interiors(const std::vector<char>& contributes) {
@@ -178,9 +282,15 @@ Eigen::MatrixXd CondensedFactor::skeleton_solve(const Eigen::MatrixXd& rhs) cons
   return substructured_ ? substructured_->solve(rhs) : mumps_->solve(rhs);
 }
 
-Eigen::MatrixXd CondensedFactor::condense(const Eigen::MatrixXd& rhs) const {
-  // Each rank subtracts its own cells' corrections; distributed, they are summed over the ranks.
-  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(n_skeleton(), rhs.cols());
+Eigen::MatrixXd CondensedFactor::skeleton_solve_local(const Eigen::MatrixXd& partial_rhs) const {
+  if (serial_) return serial_->solve(partial_rhs);
+  if (bddc_) return bddc_->solve_local(partial_rhs);
+  return substructured_ ? substructured_->solve_local(partial_rhs) : mumps_->solve_local(partial_rhs);
+}
+
+Eigen::MatrixXd CondensedFactor::interior_corrections(const Eigen::MatrixXd& rhs, const std::vector<int>* rows,
+                                                      Eigen::Index n_skeleton_rows) const {
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(n_skeleton_rows, rhs.cols());
   std::vector<CellDof> dofs;
   for (int c = 0; c < static_cast<int>(block_of_cell_.size()); ++c) {
     if (block_of_cell_[c] < 0) continue;
@@ -188,37 +298,62 @@ Eigen::MatrixXd CondensedFactor::condense(const Eigen::MatrixXd& rhs) const {
     if (block.interior.empty()) continue;
     system_->cell_dofs(c, dofs);
     // (A_ii⁻¹ A_is)ᵀ f_i
-    const Eigen::MatrixXd correction = block.interior_solve.transpose() * interior_rows(dofs, block.interior, rhs);
+    const Eigen::MatrixXd correction =
+        block.interior_solve.transpose() * interior_rows(dofs, block.interior, rhs, rows);
     for (std::size_t s = 0; s < block.skeleton.size(); ++s) {
       const auto& dof = dofs[block.skeleton[s]];
-      if (dof.dof >= 0) out.row(dof.dof) -= dof.sign * correction.row(s);
+      if (dof.dof >= 0) out.row(row_in(rows, dof.dof)) -= dof.sign * correction.row(s);
     }
   }
-  if (distribution_.distributed()) sum_over_ranks(distribution_.ranks, out.data(), out.size());
-  return out + rhs.topRows(n_skeleton());
+  return out;
 }
 
-Eigen::MatrixXd CondensedFactor::solve(const Eigen::MatrixXd& rhs) const {
-  HPC_VERIFY(rhs.rows() == size_, "right-hand side of the wrong size");
-  Eigen::MatrixXd out(size_, rhs.cols());
-  const int n_skeleton = this->n_skeleton();
-  out.topRows(n_skeleton) = skeleton_solve(condense(rhs));
-  // Each rank recovers its own cells' interior modes (the unknowns after the skeleton, each in one
-  // cell); distributed, the other ranks' are summed in.
-  Eigen::MatrixXd interiors = Eigen::MatrixXd::Zero(size_ - n_skeleton, rhs.cols());
+void CondensedFactor::recover_interiors(const Eigen::MatrixXd& rhs, const std::vector<int>* rows,
+                                        Eigen::MatrixXd& solution) const {
   std::vector<CellDof> dofs;
   for (int c = 0; c < static_cast<int>(block_of_cell_.size()); ++c) {
     if (block_of_cell_[c] < 0) continue;
     const CellBlock& block = *blocks_[block_of_cell_[c]];
     if (block.interior.empty()) continue;
     system_->cell_dofs(c, dofs);
-    const Eigen::MatrixXd interior = block.interior_factor.solve(interior_rows(dofs, block.interior, rhs)) -
-                                     block.interior_solve * signed_skeleton_rows(dofs, block.skeleton, out);
+    const Eigen::MatrixXd interior = block.interior_factor.solve(interior_rows(dofs, block.interior, rhs, rows)) -
+                                     block.interior_solve * signed_skeleton_rows(dofs, block.skeleton, solution, rows);
     for (std::size_t k = 0; k < block.interior.size(); ++k)
-      interiors.row(dofs[block.interior[k]].dof - n_skeleton) = interior.row(k);
+      solution.row(row_in(rows, dofs[block.interior[k]].dof)) = interior.row(k);
   }
-  if (distribution_.distributed()) sum_over_ranks(distribution_.ranks, interiors.data(), interiors.size());
-  out.bottomRows(size_ - n_skeleton) = interiors;
+}
+
+Eigen::MatrixXd CondensedFactor::solve(const Eigen::MatrixXd& rhs) const {
+  HPC_VERIFY(rhs.rows() == size_, "right-hand side of the wrong size");
+  const int n_skeleton = this->n_skeleton();
+  // f_s − A_si A_ii⁻¹ f_i: each rank subtracts its own cells' corrections, summed over the ranks.
+  Eigen::MatrixXd condensed = interior_corrections(rhs, nullptr, n_skeleton);
+  if (distribution_.distributed()) sum_over_ranks(distribution_.ranks, condensed.data(), condensed.size());
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(size_, rhs.cols());
+  out.topRows(n_skeleton) = skeleton_solve(condensed + rhs.topRows(n_skeleton));
+  // Each rank recovers its own cells' interior modes (the unknowns after the skeleton, each in one
+  // cell); distributed, the other ranks' (zero here) are summed in.
+  recover_interiors(rhs, nullptr, out);
+  if (distribution_.distributed()) {
+    auto interiors = out.bottomRows(size_ - n_skeleton);
+    Eigen::MatrixXd summed = interiors;
+    sum_over_ranks(distribution_.ranks, summed.data(), summed.size());
+    interiors = summed;
+  }
+  return out;
+}
+
+Eigen::MatrixXd CondensedFactor::solve_local(const Eigen::MatrixXd& partial_rhs) const {
+  HPC_VERIFY(partial_rhs.rows() == static_cast<Eigen::Index>(local_dofs_.size()),
+             "right-hand side share of the wrong size");
+  if (!distribution_.distributed()) return solve(partial_rhs);
+  // A cell's interior modes are its rank's alone, so their rows of the share are the whole
+  // right-hand side, and the condensation adds up within the rank: the skeleton solver sums the
+  // shares.
+  Eigen::MatrixXd out(partial_rhs.rows(), partial_rhs.cols());
+  out.topRows(n_local_skeleton_) = skeleton_solve_local(
+      interior_corrections(partial_rhs, &local_dofs_, n_local_skeleton_) + partial_rhs.topRows(n_local_skeleton_));
+  recover_interiors(partial_rhs, &local_dofs_, out);
   return out;
 }
 
@@ -243,6 +378,16 @@ Eigen::MatrixXd CondensedFactor::schur_complement(const Eigen::SparseMatrix<doub
 
 double CondensedFactor::quadratic_form(const Eigen::VectorXd& u) const {
   HPC_VERIFY(u.size() == size_, "quadratic form of a vector of the wrong size");
+  return cell_quadratic_forms(u, nullptr);
+}
+
+double CondensedFactor::quadratic_form_local(const Eigen::VectorXd& u_local) const {
+  HPC_VERIFY(u_local.size() == static_cast<Eigen::Index>(local_dofs_.size()),
+             "quadratic form of a vector of the wrong size");
+  return cell_quadratic_forms(u_local, distribution_.distributed() ? &local_dofs_ : nullptr);
+}
+
+double CondensedFactor::cell_quadratic_forms(const Eigen::VectorXd& u, const std::vector<int>* rows) const {
   // uᵀ A u = Σ_T u_sᵀ S_T u_s + ‖Lᵀ (u_i + A_ii⁻¹ A_is u_s)‖², per cell with its signs.
   double sum = 0.0;
   std::vector<CellDof> dofs;
@@ -250,10 +395,10 @@ double CondensedFactor::quadratic_form(const Eigen::VectorXd& u) const {
     if (block_of_cell_[c] < 0) continue;
     const CellBlock& block = *blocks_[block_of_cell_[c]];
     system_->cell_dofs(c, dofs);
-    const Eigen::VectorXd skeleton = signed_skeleton_rows(dofs, block.skeleton, u);
+    const Eigen::VectorXd skeleton = signed_skeleton_rows(dofs, block.skeleton, u, rows);
     sum += skeleton.dot(block.schur * skeleton);
     if (block.interior.empty()) continue;
-    const Eigen::VectorXd interior = interior_rows(dofs, block.interior, u) + block.interior_solve * skeleton;
+    const Eigen::VectorXd interior = interior_rows(dofs, block.interior, u, rows) + block.interior_solve * skeleton;
     sum += (block.interior_factor.matrixU() * interior).squaredNorm();
   }
   if (distribution_.distributed()) sum_over_ranks(distribution_.ranks, &sum, 1);

@@ -68,6 +68,27 @@ class CondensedFactor {
   /// A⁻¹ rhs, shape (n) or (n, k). Distributed: collective, rhs and result the same on every rank.
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const;
   Eigen::MatrixXd solve(const Eigen::MatrixXd& rhs) const;
+  /// The dofs of this rank's cells (ascending, so the skeleton dofs first): the rows of
+  /// solve_local and quadratic_form_local. Serial: every dof.
+  const std::vector<int>& local_dofs() const { return local_dofs_; }
+  /// A⁻¹ b for b = Σ_r b_r: each rank passes its share b_r at its local dofs (e.g. its own cells'
+  /// load; shape (local_dofs().size(), k), k the same on every rank) and receives A⁻¹ b there. No
+  /// vector of the global length: the skeleton solver sums the shares. Collective.
+  Eigen::MatrixXd solve_local(const Eigen::MatrixXd& partial_rhs) const;
+  /// This rank's share of a vector every rank holds whole (shape (n, k)), at its local dofs: the
+  /// rows of the dofs it counts (of the ranks holding a dof, the lowest), zero at the others, so
+  /// that the shares sum to the vector.
+  Eigen::MatrixXd share_of(const Eigen::MatrixXd& whole) const;
+  /// The whole vector on every rank, from each rank's rows at its local dofs (equal where ranks
+  /// share a dof, as solve_local's are). Collective.
+  Eigen::MatrixXd gather(const Eigen::MatrixXd& local) const;
+  /// B x for B (m, n) the same on every rank and x held at the local dofs: (m, k), the same on
+  /// every rank. Collective.
+  Eigen::MatrixXd multiply_local(const Eigen::SparseMatrix<double>& b, const Eigen::MatrixXd& x_local) const;
+  /// This rank's share of Bᵀ y at its local dofs, for B (m, n) and y (m, k) the same on every rank.
+  Eigen::MatrixXd transpose_share(const Eigen::SparseMatrix<double>& b, const Eigen::MatrixXd& y) const;
+  /// Σ_r share_r · x_r: F(u) for F given by the ranks' shares and u at the local dofs. Collective.
+  double dot_local(const Eigen::VectorXd& share, const Eigen::VectorXd& x_local) const;
   /// B A⁻¹ Bᵀ, dense symmetric (m, m), for B of shape (m, n): on the skeleton factor's trailing
   /// block when B has no interior columns (any trace coupling), otherwise by solves.
   /// Distributed: collective.
@@ -75,22 +96,38 @@ class CondensedFactor {
   /// uᵀ A u, cell by cell from the eliminated blocks (a sum of non-negative terms, so as accurate
   /// as u itself), without A. Distributed: collective.
   double quadratic_form(const Eigen::VectorXd& u) const;
+  /// uᵀ A u for u held at local_dofs() (each rank its own). Collective.
+  double quadratic_form_local(const Eigen::VectorXd& u_local) const;
 
  private:
   struct CellBlock;
   /// Fills blocks_ and block_of_cell_ for the cells c with contributes[c] (−1 for the others);
   /// returns the entries of the lower triangle of S that they add.
   std::vector<Eigen::Triplet<double>> eliminate_interiors(const std::vector<char>& contributes);
+  /// local_dofs_ and n_local_skeleton_ from the rank's cells.
+  void find_local_dofs();
   /// S⁻¹ rhs on the skeleton, shape (n_skeleton, k).
   Eigen::MatrixXd skeleton_solve(const Eigen::MatrixXd& rhs) const;
-  /// f_s − A_si A_ii⁻¹ f_i, shape (n_skeleton, k).
-  Eigen::MatrixXd condense(const Eigen::MatrixXd& rhs) const;
+  /// The same with each rank's share at its local skeleton dofs.
+  Eigen::MatrixXd skeleton_solve_local(const Eigen::MatrixXd& partial_rhs) const;
+  /// −Σ_T (A_ii⁻¹ A_is)ᵀ f_i over this rank's cells, on the skeleton rows (n_skeleton_rows of them);
+  /// rhs and the result held at `rows` (null: global order).
+  Eigen::MatrixXd interior_corrections(const Eigen::MatrixXd& rhs, const std::vector<int>* rows,
+                                       Eigen::Index n_skeleton_rows) const;
+  /// u_i = A_ii⁻¹ (f_i − A_is u_s) for this rank's cells into `solution`, whose skeleton rows
+  /// hold u_s; all held at `rows` (null: global order).
+  void recover_interiors(const Eigen::MatrixXd& rhs, const std::vector<int>* rows, Eigen::MatrixXd& solution) const;
+  /// Σ over this rank's cells (summed over the ranks) of uᵀ A_T u, u held at `rows` (null: global).
+  double cell_quadratic_forms(const Eigen::VectorXd& u, const std::vector<int>* rows) const;
 
   std::unique_ptr<const CellSystem> system_;
   int size_ = 0;
   std::vector<std::unique_ptr<CellBlock>> blocks_;
   std::vector<int> block_of_cell_;
   int n_trailing_ = 0;
+  std::vector<int> local_dofs_;                     ///< see local_dofs()
+  std::vector<char> counts_dof_;                    ///< per local dof: this rank is the lowest holding it (distributed)
+  int n_local_skeleton_ = 0;                        ///< local dofs in the skeleton (the first ones)
   std::unique_ptr<linalg::SparseCholesky> serial_;  ///< one of the four, by the distribution
   std::unique_ptr<linalg::SubstructuredCholesky> substructured_;
   std::unique_ptr<linalg::DistributedCholesky> mumps_;

@@ -142,11 +142,15 @@ ContactSolution solve_contact(const ContactSetup& setup) {
   const assembly::CondensedFactor& k_factor = primal.stiffness_factor();
   out.seconds.factorization = factorization_clock.seconds();
   Stopwatch condensation_clock;
-  const Eigen::VectorXd u_free = k_factor.solve(load);
+  // Distributed, the vectors of S^p(T_h) are held at each rank's own cells' dofs (the load as the
+  // ranks' shares): none of the global length until u is gathered for the output.
+  const Eigen::VectorXd load_share = k_factor.share_of(load).col(0);
+  const Eigen::VectorXd u_free = k_factor.solve_local(load_share).col(0);
   const Eigen::MatrixXd& s =
       primal.derived_matrix("S", operators::PrimalOperators::coupling_key(multipliers, coupling_name),
                             [&] { return Eigen::MatrixXd(k_factor.schur_complement(coupling)); });
-  const Eigen::VectorXd d = coupling * u_free - gap_offset;
+  const Eigen::VectorXd b_u_free = k_factor.multiply_local(coupling, u_free).col(0);
+  const Eigen::VectorXd d = b_u_free - gap_offset;
   out.seconds.condensation = condensation_clock.seconds();
   out.n_trace = k_factor.n_trailing();
 
@@ -163,14 +167,15 @@ ContactSolution solve_contact(const ContactSetup& setup) {
   //    never assembled).
   Stopwatch recovery_clock;
   out.lambda_legendre = constraints.to_nodal.transpose() * out.lambda;  // V⁻¹ c_nodal
-  const Eigen::VectorXd reduced_load = load - coupling.transpose() * out.lambda;
-  out.u = k_factor.solve(reduced_load);
-  out.gap = coupling * out.u - gap_offset;
+  const Eigen::VectorXd reduced_share = load_share - k_factor.transpose_share(coupling, out.lambda).col(0);
+  const Eigen::VectorXd u = k_factor.solve_local(reduced_share).col(0);
+  out.gap = k_factor.multiply_local(coupling, u).col(0) - gap_offset;
   // C = I: stationarity y = d − S λ = gap.
   if (out.qp.method != "interior-point") out.constraint_multiplier = out.gap;
-  out.gap_scale = (coupling * u_free).lpNorm<Eigen::Infinity>() + gap_offset.lpNorm<Eigen::Infinity>() +
+  out.gap_scale = b_u_free.lpNorm<Eigen::Infinity>() + gap_offset.lpNorm<Eigen::Infinity>() +
                   (s * out.lambda).lpNorm<Eigen::Infinity>();
-  out.energy = 0.5 * k_factor.quadratic_form(out.u) - load.dot(out.u) + energy_offset;
+  out.energy = 0.5 * k_factor.quadratic_form_local(u) - k_factor.dot_local(load_share, u) + energy_offset;
+  out.u = k_factor.gather(u).col(0);
   out.seconds.recovery = recovery_clock.seconds();
   out.constraint_matrix = std::move(constraints.matrix);
   out.lower = std::move(constraints.lower);

@@ -176,9 +176,13 @@ ElasticContactSolution solve_elastic_contact(const ElasticContactSetup& setup) {
   const assembly::CondensedFactor& factor = ops.stiffness_factor();
   out.seconds.factorization = factorization_clock.seconds();
   Stopwatch condensation_clock;
-  const Eigen::VectorXd u_free = factor.solve(load);
+  // Distributed, the vectors of the displacement space are held at each rank's own cells' dofs
+  // (the load as the ranks' shares): none of the global length until u is gathered for the output.
+  const Eigen::VectorXd load_share = factor.share_of(load).col(0);
+  const Eigen::VectorXd u_free = factor.solve_local(load_share).col(0);
   const Eigen::MatrixXd s = factor.schur_complement(problem.coupling);
-  const Eigen::VectorXd d = problem.coupling * u_free - problem.offset;
+  const Eigen::VectorXd b_u_free = factor.multiply_local(problem.coupling, u_free).col(0);
+  const Eigen::VectorXd d = b_u_free - problem.offset;
   out.seconds.condensation = condensation_clock.seconds();
   out.n_trace = factor.n_trailing();
 
@@ -192,15 +196,18 @@ ElasticContactSolution solve_elastic_contact(const ElasticContactSetup& setup) {
   Stopwatch recovery_clock;
   out.lambda = std::move(qp.x);
   out.qp = std::move(qp.report);
-  out.u = factor.solve(Eigen::VectorXd(load - problem.coupling.transpose() * out.lambda));
-  out.gap = problem.coupling * out.u - problem.offset;
-  out.gap_scale = (problem.coupling * u_free).lpNorm<Eigen::Infinity>() + problem.offset.lpNorm<Eigen::Infinity>() +
+  const Eigen::VectorXd u =
+      factor.solve_local(Eigen::VectorXd(load_share - factor.transpose_share(problem.coupling, out.lambda).col(0)))
+          .col(0);
+  out.gap = factor.multiply_local(problem.coupling, u).col(0) - problem.offset;
+  out.gap_scale = b_u_free.lpNorm<Eigen::Infinity>() + problem.offset.lpNorm<Eigen::Infinity>() +
                   (s * out.lambda).lpNorm<Eigen::Infinity>();
   const Eigen::VectorXd legendre = problem.constraints.to_nodal.transpose() * out.lambda;
   out.pressure = -legendre.head(problem.n_normal);
   out.shear = setup.problem == ElasticContactProblem::frictionless ? Eigen::VectorXd::Zero(problem.n_normal)
                                                                    : Eigen::VectorXd(-legendre.tail(problem.n_normal));
-  out.energy = 0.5 * factor.quadratic_form(out.u) - load.dot(out.u) + energy_offset;
+  out.energy = 0.5 * factor.quadratic_form_local(u) - factor.dot_local(load_share, u) + energy_offset;
+  out.u = factor.gather(u).col(0);
   out.n_normal = problem.n_normal;
   out.constraint_matrix = std::move(problem.constraints.matrix);
   out.lower = std::move(problem.constraints.lower);

@@ -7,6 +7,8 @@
 #include "core/error.hpp"
 #include "core/expression.hpp"
 #include "core/operator_log.hpp"
+#include "core/petsc_session.hpp"
+#include "core/rank_agreement.hpp"
 #include "core/timer.hpp"
 #include "io/atomic_file.hpp"
 #include "io/output_folder.hpp"
@@ -39,9 +41,10 @@ std::vector<assembly::Material> scene_materials(const scene::Scene& scene, const
 
 std::unique_ptr<operators::ElasticOperators> scene_elastic_operators(const scene::Scene& scene, const mesh::Mesh& mesh,
                                                                      const std::vector<int>& cell_degrees,
-                                                                     OperatorLog* log) {
+                                                                     OperatorLog* log,
+                                                                     linalg::Distribution distribution) {
   return std::make_unique<operators::ElasticOperators>(mesh, cell_degrees, scene_materials(scene, mesh), log,
-                                                       scene::scene_fixed_components(scene, mesh));
+                                                       scene::scene_fixed_components(scene, mesh), distribution);
 }
 
 namespace {
@@ -157,13 +160,17 @@ io::CsvTable elastic_convergence(const scene::Scene& scene, const SceneDiscretiz
     refined.refinements += k;
     Level level{discretize_scene(refined), nullptr, nullptr, {}};
     level.d = level.own.get();
-    level.operators = scene_elastic_operators(refined, level.d->mesh, level.d->cell_degrees);
+    level.operators =
+        scene_elastic_operators(refined, level.d->mesh, level.d->cell_degrees, nullptr, options.distribution);
     level.effects =
         solve_elastic_effects(refined, *level.d, *level.operators, options, fmt::format(" (convergence level {})", k));
     levels.push_back(std::move(level));
   }
   io::CsvTable table(refinement_columns());
   const Level& finest = levels.back();
+  // (rank 0 writes: no other rank builds the levels' VTU text)
+  const bool writes_files =
+      scene.wants_output(scene::Output::vtu) && options.write_files && mpi_rank_and_size().first == 0;
   for (std::size_t e = 0; e < base.size(); ++e)
     for (std::size_t k = 0; k < levels.size(); ++k) {
       const auto& d = *levels[k].d;
@@ -177,11 +184,11 @@ io::CsvTable elastic_convergence(const scene::Scene& scene, const SceneDiscretiz
            contact::multiplier_l2_distance(*d.multipliers, effect.solution.pressure, *finest.d->multipliers,
                                            reference.pressure),
            effect.seconds, scene.p.label(), scene.pc.label()});
-      if (scene.wants_output(scene::Output::vtu) && options.write_files)
+      if (writes_files)
         files.push_back({level_vtu_name(effect.name, static_cast<int>(k)),
                          elastic_solution_vtu(effect, k == 0 ? base_operators : *levels[k].operators)});
     }
-  if (scene.wants_output(scene::Output::vtu) && options.write_files)
+  if (writes_files)
     for (const auto& effect : base) files.push_back(level_collection(effect.name, scene.convergence_refinements));
   return table;
 }
@@ -253,7 +260,7 @@ nlohmann::json run_elastic_scene(const scene::Scene& scene, const SceneRunOption
   // 1. Meshes, degrees and materials; the operators are built on first use and shared.
   const auto d = discretize_scene(scene);
   OperatorLog log;
-  const auto owned = scene_elastic_operators(scene, d->mesh, d->cell_degrees, &log);
+  const auto owned = scene_elastic_operators(scene, d->mesh, d->cell_degrees, &log, options.distribution);
   const operators::ElasticOperators& operators = *owned;
   // 2. The contact problems.
   const std::vector<ElasticEffect> effects = solve_elastic_effects(scene, *d, operators, options, "");
@@ -289,12 +296,17 @@ nlohmann::json run_elastic_scene(const scene::Scene& scene, const SceneRunOption
   if (convergence)
     summary["convergence"] = {{"refinements", scene.convergence_refinements}, {"file", "convergence.csv"}};
   summary["seconds_total"] = clock.seconds();
+  summary["ranks"] = mpi_rank_and_size().second;
+  summary["distributed_solver"] = linalg::to_string(options.distribution.solver);
   std::vector<std::pair<std::string, const io::CsvTable*>> boundary;
   if (scene.wants_output(scene::Output::boundary))
     for (const auto& effect : effects) boundary.emplace_back(effect.name, &effect.samples.table);
   hand_over_tables(options, boundary, mode, convergence);
-  if (options.write_files)
-    write_outputs(scene, operators, effects, {mode, convergence, level_files}, summary, options.out);
+  // Rank 0 writes; a failure to write ends every rank the same way.
+  run_on_all_ranks_agreeing([&] {
+    if (options.write_files && mpi_rank_and_size().first == 0)
+      write_outputs(scene, operators, effects, {mode, convergence, level_files}, summary, options.out);
+  });
   return summary;
 }
 

@@ -18,10 +18,12 @@ namespace hpcontact::driver {
 /// @throws InputError naming the key, the value and the cell centre where E ≤ 0 or ν ∉ (−1, ½).
 std::vector<assembly::Material> scene_materials(const scene::Scene& scene, const mesh::Mesh& mesh);
 
-/// The elastic operators of the scene on T_h (`mesh`, `cell_degrees`): its materials and rollers.
+/// The elastic operators of the scene on T_h (`mesh`, `cell_degrees`): its materials and rollers,
+/// factorized over the ranks of `distribution`.
 std::unique_ptr<operators::ElasticOperators> scene_elastic_operators(const scene::Scene& scene, const mesh::Mesh& mesh,
                                                                      const std::vector<int>& cell_degrees,
-                                                                     OperatorLog* log = nullptr);
+                                                                     OperatorLog* log = nullptr,
+                                                                     linalg::Distribution distribution = {});
 
 /// The elastic contact problem `problem` of the scene on `d` (data from the scene's expressions,
 /// s ≥ 0 checked where evaluated); `operators` must belong to the discretization.

@@ -238,11 +238,7 @@ void hand_over_tables(const SceneRunOptions& options,
 }
 
 nlohmann::json run_scene(const scene::Scene& given_scene, const SceneRunOptions& options) {
-  if (given_scene.is_elastic()) {
-    if (mpi_rank_and_size().second > 1)
-      throw InputError("the elastic effects run on one process (not under mpirun with more than one rank)");
-    return run_elastic_scene(given_scene, options);
-  }
+  if (given_scene.is_elastic()) return run_elastic_scene(given_scene, options);
   Stopwatch clock;
   auto say = [&](const std::string& line) {
     if (options.progress) options.progress(line);

@@ -7,11 +7,13 @@
 
 #include <algorithm>
 #include <exception>
+#include <optional>
 
 #include "core/error.hpp"
 #include "core/petsc_check.hpp"
 #include "core/petsc_handle.hpp"
 #include "core/petsc_session.hpp"
+#include "linalg/row_exchange.hpp"
 
 namespace hpcontact::linalg {
 
@@ -19,6 +21,7 @@ struct BddcSolver::Impl {
   PetscHandle<Mat, MatDestroy> matrix;
   PetscHandle<KSP, KSPDestroy> ksp;
   PetscInt row_begin = 0, row_end = 0;
+  std::optional<RowExchange> exchange;  ///< between the subdomain's unknowns and the rank's rows
   mutable BddcIterations iterations;
 };
 
@@ -63,6 +66,8 @@ BddcSolver::BddcSolver(MPI_Comm ranks, int n, const std::vector<Eigen::Triplet<d
   HPC_PETSC_CALL(MatSetOption(a, MAT_SYMMETRIC, PETSC_TRUE));
   HPC_PETSC_CALL(MatSetOption(a, MAT_SPD, PETSC_TRUE));
   HPC_PETSC_CALL(MatGetOwnershipRange(a, &impl_->row_begin, &impl_->row_end));
+  impl_->exchange.emplace(ranks, n, static_cast<int>(impl_->row_begin), static_cast<int>(impl_->row_end),
+                          std::vector<int>(global.begin(), global.end()));
   // 3. CG + BDDC with PETSc's default (multiplicity) scaling: deluxe scaling fails in Debian 12's
   // PETSc 3.18 with MUMPS 5.5 (INFOG(1) = -46 in PCBDDCSetUpCorrection); -bddc_pc_bddc_use_deluxe_scaling
   // turns it on where the stack allows.
@@ -80,6 +85,16 @@ BddcSolver::BddcSolver(MPI_Comm ranks, int n, const std::vector<Eigen::Triplet<d
   // annulus) the preconditioned b is zero, so PETSc's default test reports DIVERGED_DTOL at
   // iteration 0.
   HPC_PETSC_CALL(KSPConvergedDefaultSetUIRNorm(ksp));
+  // A subdomain that touches no Dirichlet part floats: its Neumann problem is singular (constants,
+  // or elasticity's rigid motions, which BDDC's vertex and edge constraints remove only from the
+  // coarse problem), and PETSc's own LU stops on the zero pivot. MUMPS with null-pivot detection
+  // (ICNTL(24)) solves it; set unless the user chose otherwise.
+  for (const auto& [name, value] : {std::pair{"-bddc_pc_bddc_neumann_pc_factor_mat_solver_type", "mumps"},
+                                    std::pair{"-bddc_pc_bddc_neumann_mat_mumps_icntl_24", "1"}}) {
+    PetscBool set = PETSC_FALSE;
+    HPC_PETSC_CALL(PetscOptionsHasName(nullptr, nullptr, name, &set));
+    if (!set) HPC_PETSC_CALL(PetscOptionsSetValue(nullptr, name, value));
+  }
   HPC_PETSC_CALL(KSPSetFromOptions(ksp));
   HPC_PETSC_CALL(KSPSetUp(ksp));
 }
@@ -147,15 +162,29 @@ void solve_column(KSP ksp, Mat a, const double* owned_rhs, PetscInt owned, doubl
 
 }  // namespace
 
+Eigen::MatrixXd BddcSolver::solve_owned(const Eigen::MatrixXd& owned_rhs) const {
+  const PetscInt owned = impl_->row_end - impl_->row_begin;
+  HPC_VERIFY(owned_rhs.rows() == owned, "right-hand side of the wrong size");
+  Eigen::MatrixXd out(owned, owned_rhs.cols());
+  for (Eigen::Index k = 0; k < owned_rhs.cols(); ++k)
+    solve_column(impl_->ksp.get(), impl_->matrix.get(), owned_rhs.col(k).data(), owned, out.col(k).data(),
+                 impl_->iterations);
+  return out;
+}
+
 Eigen::MatrixXd BddcSolver::solve(const Eigen::MatrixXd& rhs) const {
   HPC_VERIFY(rhs.rows() == size_, "right-hand side of the wrong size");
-  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(size_, rhs.cols());
   const PetscInt owned = impl_->row_end - impl_->row_begin;
-  for (Eigen::Index k = 0; k < rhs.cols(); ++k)
-    solve_column(impl_->ksp.get(), impl_->matrix.get(), rhs.col(k).data() + impl_->row_begin, owned,
-                 out.col(k).data() + impl_->row_begin, impl_->iterations);
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(size_, rhs.cols());
+  out.middleRows(impl_->row_begin, owned) = solve_owned(rhs.middleRows(impl_->row_begin, owned));
   sum_over_ranks(ranks_, out.data(), out.size());  // each row is non-zero on its owner only
   return out;
+}
+
+const std::vector<int>& BddcSolver::local_unknowns() const { return impl_->exchange->local(); }
+
+Eigen::MatrixXd BddcSolver::solve_local(const Eigen::MatrixXd& partial_rhs) const {
+  return impl_->exchange->owned_to_local(solve_owned(impl_->exchange->sum_to_owned(partial_rhs)));
 }
 
 Eigen::MatrixXd BddcSolver::schur_complement(const Eigen::SparseMatrix<double>& b) const {

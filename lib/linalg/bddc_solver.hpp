@@ -3,8 +3,8 @@
 // subdomain's Neumann matrix, exactly what the static condensation of its cells produces), solved
 // by conjugate gradients preconditioned with BDDC (PCBDDC). No rank holds an
 // interface matrix: PETSc builds BDDC's small coarse problem from vertex and edge constraints.
-// Right-hand sides and results are replicated on every rank, like the other distributed solvers,
-// so the dense work on the trace runs unchanged.
+// Right-hand sides and results either replicated on every rank or held on the unknowns each rank
+// touches, like the other distributed solvers.
 #pragma once
 
 #include <mpi.h>
@@ -42,6 +42,11 @@ class BddcSolver {
   /// A⁻¹ rhs, shape (n, k), the same on every rank. Collective.
   /// @throws NumericalError (on every rank) if the iteration does not converge.
   Eigen::MatrixXd solve(const Eigen::MatrixXd& rhs) const;
+  /// The unknowns this rank's entries touch (its subdomain's, ascending): the rows of solve_local.
+  const std::vector<int>& local_unknowns() const;
+  /// A⁻¹ b for b = Σ_r b_r: each rank passes its share b_r at its local unknowns (shape
+  /// (local_unknowns().size(), k), k the same on every rank) and receives A⁻¹ b there. Collective.
+  Eigen::MatrixXd solve_local(const Eigen::MatrixXd& partial_rhs) const;
   /// B A⁻¹ Bᵀ, dense symmetric (m, m), the same on every rank, for B (m, n) replicated: one
   /// solve per row of B, each rank multiplying its own rows of the solution. Collective.
   Eigen::MatrixXd schur_complement(const Eigen::SparseMatrix<double>& b) const;
@@ -49,6 +54,8 @@ class BddcSolver {
 
  private:
   struct Impl;
+  /// A⁻¹ b on this rank's rows of PETSc's layout. Collective.
+  Eigen::MatrixXd solve_owned(const Eigen::MatrixXd& owned_rhs) const;
   std::unique_ptr<Impl> impl_;
   MPI_Comm ranks_ = MPI_COMM_NULL;  ///< the ranks sharing the matrix
   int size_ = 0;

@@ -1,7 +1,7 @@
 // DistributedCholesky: COO assembly into MPIAIJ (both triangles: MUMPS's Cholesky reads the upper
 // one of an AIJ matrix), MUMPS factorization (with a Schur set on rank 0 for the trailing set),
-// MatMatSolve on dense right-hand sides whose rows are split like the matrix's, results summed
-// over the ranks.
+// MatMatSolve on dense right-hand sides whose rows are split like the matrix's; replicated
+// results summed over the ranks, local ones scattered from the owned rows (RowExchange).
 #include "linalg/distributed_cholesky.hpp"
 
 #include <fmt/format.h>
@@ -12,11 +12,13 @@
 #include <Eigen/Cholesky>
 #include <algorithm>
 #include <exception>
+#include <optional>
 
 #include "core/error.hpp"
 #include "core/petsc_check.hpp"
 #include "core/petsc_handle.hpp"
 #include "core/petsc_session.hpp"
+#include "linalg/row_exchange.hpp"
 #include "linalg/schur_complement.hpp"
 #include "linalg/sorted_index_map.hpp"
 
@@ -25,7 +27,7 @@ namespace hpcontact::linalg {
 struct DistributedCholesky::Impl {
   PetscHandle<Mat, MatDestroy> matrix, factor;
   PetscInt row_begin = 0, row_end = 0;
-  Eigen::SparseMatrix<double> contributions;  ///< this rank's share of A, both triangles
+  std::optional<RowExchange> exchange;  ///< between the unknowns the rank's entries touch and its rows
   std::vector<int> trailing;
   SortedIndexMap trailing_position;            ///< unknown → its row in S_T
   Eigen::LLT<Eigen::MatrixXd> trailing_schur;  ///< S_T = L_T L_Tᵀ, replicated
@@ -87,14 +89,6 @@ DistributedCholesky::DistributedCholesky(MPI_Comm ranks, int n,
     positions.emplace_back(trailing[k], static_cast<int>(k));
   }
   impl_->trailing_position = SortedIndexMap(std::move(positions));  // (refuses a repeated index)
-  if (!trailing.empty()) {
-    // A x for the solves through S_T, from this rank's own contributions (summed over the ranks).
-    std::vector<Eigen::Triplet<double>> both;
-    both.reserve(rows.size());
-    for (std::size_t k = 0; k < rows.size(); ++k) both.emplace_back(rows[k], cols[k], values[k]);
-    impl_->contributions.resize(n, n);
-    impl_->contributions.setFromTriplets(both.begin(), both.end());
-  }
   Mat& a = *impl_->matrix.out();
   HPC_PETSC_CALL(MatCreate(ranks, &a));
   HPC_PETSC_CALL(MatSetSizes(a, PETSC_DECIDE, PETSC_DECIDE, n, n));
@@ -104,6 +98,10 @@ DistributedCholesky::DistributedCholesky(MPI_Comm ranks, int n,
   HPC_PETSC_CALL(MatSetOption(a, MAT_SYMMETRIC, PETSC_TRUE));
   HPC_PETSC_CALL(MatSetOption(a, MAT_SPD, PETSC_TRUE));
   HPC_PETSC_CALL(MatGetOwnershipRange(a, &impl_->row_begin, &impl_->row_end));
+  std::vector<int> touched(rows.begin(), rows.end());
+  std::sort(touched.begin(), touched.end());
+  touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+  impl_->exchange.emplace(ranks, n, impl_->row_begin, impl_->row_end, std::move(touched));
   Mat& f = *impl_->factor.out();
   // With a Schur set the factorization is MUMPS's LU: its symmetric Schur complement comes back
   // under mpirun with the off-diagonal entries zero (PETSc 3.18.5, MUMPS 5.5; tried: LU gives
@@ -178,11 +176,13 @@ DistributedCholesky& DistributedCholesky::operator=(DistributedCholesky&&) noexc
 
 int DistributedCholesky::trailing_size() const { return static_cast<int>(impl_->trailing.size()); }
 
-Eigen::MatrixXd DistributedCholesky::mumps_owned_rows(const Eigen::MatrixXd& rhs) const {
-  HPC_VERIFY(rhs.rows() == size_, "right-hand side of the wrong size");
-  const PetscInt owned = impl_->row_end - impl_->row_begin, k = static_cast<PetscInt>(rhs.cols());
+const std::vector<int>& DistributedCholesky::local_unknowns() const { return impl_->exchange->local(); }
+
+Eigen::MatrixXd DistributedCholesky::mumps_owned(const Eigen::MatrixXd& owned_rhs) const {
+  const PetscInt owned = impl_->row_end - impl_->row_begin, k = static_cast<PetscInt>(owned_rhs.cols());
+  HPC_VERIFY(owned_rhs.rows() == owned, "right-hand side of the wrong size");
   // Column-major local blocks: PETSc's dense layout (lda = owned rows).
-  Eigen::MatrixXd local_rhs = rhs.middleRows(impl_->row_begin, owned), local_solution(owned, k);
+  Eigen::MatrixXd local_rhs = owned_rhs, local_solution(owned, k);
   if (!impl_->trailing.empty()) {
     // PETSc's MatMatSolve refuses a parallel factor with a Schur set; MatSolve takes the interior
     // solve column by column.
@@ -192,6 +192,8 @@ Eigen::MatrixXd DistributedCholesky::mumps_owned_rows(const Eigen::MatrixXd& rhs
       HPC_PETSC_CALL(VecCreateMPIWithArray(ranks_, 1, owned, size_, local_solution.col(j).data(), x.out()));
       HPC_PETSC_CALL(MatSolve(impl_->factor.get(), b.get(), x.get()));
     }
+    for (int t : impl_->trailing)
+      if (t >= impl_->row_begin && t < impl_->row_end) local_solution.row(t - impl_->row_begin).setZero();
     return local_solution;
   }
   PetscHandle<Mat, MatDestroy> b, x;
@@ -201,34 +203,47 @@ Eigen::MatrixXd DistributedCholesky::mumps_owned_rows(const Eigen::MatrixXd& rhs
   return local_solution;
 }
 
-Eigen::MatrixXd DistributedCholesky::mumps_solve(const Eigen::MatrixXd& rhs) const {
-  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(size_, rhs.cols());
-  out.middleRows(impl_->row_begin, impl_->row_end - impl_->row_begin) = mumps_owned_rows(rhs);
-  sum_over_ranks(ranks_, out.data(), out.size());  // each row is non-zero on its owner only
-  for (int t : impl_->trailing) out.row(t).setZero();
+Eigen::MatrixXd DistributedCholesky::multiply_owned(const Eigen::MatrixXd& owned_x) const {
+  const PetscInt owned = impl_->row_end - impl_->row_begin;
+  Eigen::MatrixXd x = owned_x, out(owned, owned_x.cols());
+  for (Eigen::Index j = 0; j < x.cols(); ++j) {
+    PetscHandle<Vec, VecDestroy> in, result;
+    HPC_PETSC_CALL(VecCreateMPIWithArray(ranks_, 1, owned, size_, x.col(j).data(), in.out()));
+    HPC_PETSC_CALL(VecCreateMPIWithArray(ranks_, 1, owned, size_, out.col(j).data(), result.out()));
+    HPC_PETSC_CALL(MatMult(impl_->matrix.get(), in.get(), result.get()));
+  }
   return out;
 }
 
-Eigen::MatrixXd DistributedCholesky::multiply(const Eigen::MatrixXd& x) const {
-  Eigen::MatrixXd out = impl_->contributions * x;
-  sum_over_ranks(ranks_, out.data(), out.size());
-  return out;
+Eigen::MatrixXd DistributedCholesky::solve_owned(const Eigen::MatrixXd& owned_rhs) const {
+  if (owned_rhs.cols() == 0 || impl_->trailing.empty()) return mumps_owned(owned_rhs);
+  // [A_II A_IT; A_TI A_TT] x = b: y = A_II⁻¹ b_I, S_T x_T = b_T − A_TI y, x_I = A_II⁻¹ (b_I − A_IT x_T).
+  const auto& trailing = impl_->trailing;
+  const auto begin = impl_->row_begin, end = impl_->row_end;
+  const Eigen::MatrixXd residual = owned_rhs - multiply_owned(mumps_owned(owned_rhs));
+  // The trailing rows (trace-sized) gathered from their owners onto every rank.
+  Eigen::MatrixXd x_trailing = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(trailing.size()), owned_rhs.cols());
+  for (std::size_t k = 0; k < trailing.size(); ++k)
+    if (trailing[k] >= begin && trailing[k] < end) x_trailing.row(k) = residual.row(trailing[k] - begin);
+  sum_over_ranks(ranks_, x_trailing.data(), x_trailing.size());
+  x_trailing = impl_->trailing_schur.solve(x_trailing);
+  Eigen::MatrixXd x_hat = Eigen::MatrixXd::Zero(owned_rhs.rows(), owned_rhs.cols());
+  for (std::size_t k = 0; k < trailing.size(); ++k)
+    if (trailing[k] >= begin && trailing[k] < end) x_hat.row(trailing[k] - begin) = x_trailing.row(k);
+  return mumps_owned(owned_rhs - multiply_owned(x_hat)) + x_hat;
 }
 
 Eigen::MatrixXd DistributedCholesky::solve(const Eigen::MatrixXd& rhs) const {
-  if (rhs.cols() == 0) return Eigen::MatrixXd::Zero(size_, 0);
-  if (impl_->trailing.empty()) return mumps_solve(rhs);
-  // [A_II A_IT; A_TI A_TT] x = b: y = A_II⁻¹ b_I, S_T x_T = b_T − A_TI y, x_I = A_II⁻¹ (b_I − A_IT x_T).
-  const auto& trailing = impl_->trailing;
-  const Eigen::MatrixXd y = mumps_solve(rhs);
-  const Eigen::MatrixXd ay = multiply(y);
-  Eigen::MatrixXd x_trailing(trailing.size(), rhs.cols());
-  for (std::size_t k = 0; k < trailing.size(); ++k) x_trailing.row(k) = rhs.row(trailing[k]) - ay.row(trailing[k]);
-  x_trailing = impl_->trailing_schur.solve(x_trailing);
-  Eigen::MatrixXd x_hat = Eigen::MatrixXd::Zero(size_, rhs.cols());
-  for (std::size_t k = 0; k < trailing.size(); ++k) x_hat.row(trailing[k]) = x_trailing.row(k);
-  Eigen::MatrixXd out = mumps_solve(rhs - multiply(x_hat));
-  return out + x_hat;
+  HPC_VERIFY(rhs.rows() == size_, "right-hand side of the wrong size");
+  const auto owned = impl_->row_end - impl_->row_begin;
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(size_, rhs.cols());
+  out.middleRows(impl_->row_begin, owned) = solve_owned(rhs.middleRows(impl_->row_begin, owned));
+  sum_over_ranks(ranks_, out.data(), out.size());  // each row is non-zero on its owner only
+  return out;
+}
+
+Eigen::MatrixXd DistributedCholesky::solve_local(const Eigen::MatrixXd& partial_rhs) const {
+  return impl_->exchange->owned_to_local(solve_owned(impl_->exchange->sum_to_owned(partial_rhs)));
 }
 
 Eigen::MatrixXd DistributedCholesky::schur_complement(const Eigen::SparseMatrix<double>& b) const {
@@ -240,13 +255,13 @@ Eigen::MatrixXd DistributedCholesky::schur_complement(const Eigen::SparseMatrix<
         [this](const Eigen::MatrixXd& rhs) { return solve(rhs); });
   const auto m = b.rows();
   const PetscInt owned = impl_->row_end - impl_->row_begin;
-  const Eigen::SparseMatrix<double> bt = b.transpose();
   const Eigen::SparseMatrix<double> b_owned = b.middleCols(impl_->row_begin, owned);
+  const Eigen::SparseMatrix<double> bt_owned = b_owned.transpose();
   Eigen::MatrixXd result = Eigen::MatrixXd::Zero(m, m);
   constexpr Eigen::Index block = 64;
   for (Eigen::Index first = 0; first < m; first += block) {
     const auto count = std::min<Eigen::Index>(block, m - first);
-    result.middleCols(first, count) = b_owned * mumps_owned_rows(Eigen::MatrixXd(bt.middleCols(first, count)));
+    result.middleCols(first, count) = b_owned * mumps_owned(Eigen::MatrixXd(bt_owned.middleCols(first, count)));
   }
   sum_over_ranks(ranks_, result.data(), result.size());
   return 0.5 * (result + result.transpose());

@@ -1,8 +1,7 @@
 // Sparse symmetric positive definite direct solver over the MPI ranks: PETSc MPIAIJ (rows in
 // contiguous blocks, assembled from every rank's contributions) and MUMPS's Cholesky, with a
 // trailing set (the Γ_C trace) through MUMPS's Schur-complement interface. Right-hand sides and
-// results are replicated on every rank, so that the small dense work around it (the contact QP,
-// the eigenproblem on the trace) runs unchanged on each.
+// results either replicated on every rank or held on the unknowns each rank touches.
 #pragma once
 
 #include <mpi.h>
@@ -34,6 +33,12 @@ class DistributedCholesky {
   int size() const { return size_; }
   /// A⁻¹ rhs, shape (n, k), the same on every rank. Collective.
   Eigen::MatrixXd solve(const Eigen::MatrixXd& rhs) const;
+  /// The unknowns this rank's entries touch (ascending): the rows of solve_local.
+  const std::vector<int>& local_unknowns() const;
+  /// A⁻¹ b for b = Σ_r b_r: each rank passes its share b_r at its local unknowns (shape
+  /// (local_unknowns().size(), k), k the same on every rank) and receives A⁻¹ b there; PETSc moves
+  /// the rows to and from their owners. Collective.
+  Eigen::MatrixXd solve_local(const Eigen::MatrixXd& partial_rhs) const;
   /// B A⁻¹ Bᵀ, dense symmetric (m, m), the same on every rank; B (m, n) replicated. From S_T when
   /// B's nonzero columns lie in the trailing set, else by solves in blocks of 64 columns.
   /// Collective.
@@ -43,13 +48,13 @@ class DistributedCholesky {
 
  private:
   struct Impl;
-  /// This rank's rows [row_begin, row_end) of the MUMPS solve of replicated rhs (n, k): A⁻¹ rhs,
-  /// or with a trailing set A_II⁻¹ rhs_I (zero on T).
-  Eigen::MatrixXd mumps_owned_rows(const Eigen::MatrixXd& rhs) const;
-  /// The replicated result of mumps_owned_rows.
-  Eigen::MatrixXd mumps_solve(const Eigen::MatrixXd& rhs) const;
-  /// (A x) on every rank from every rank's contributions, for x replicated (n, k).
-  Eigen::MatrixXd multiply(const Eigen::MatrixXd& x) const;
+  /// MUMPS's solve on this rank's rows [row_begin, row_end): A⁻¹ b, or with a trailing set
+  /// A_II⁻¹ b_I (zero on T). Collective.
+  Eigen::MatrixXd mumps_owned(const Eigen::MatrixXd& owned_rhs) const;
+  /// A x on this rank's rows (PETSc's MatMult), for x given by its rows on every rank.
+  Eigen::MatrixXd multiply_owned(const Eigen::MatrixXd& owned_x) const;
+  /// A⁻¹ b on this rank's rows, through S_T when there is a trailing set.
+  Eigen::MatrixXd solve_owned(const Eigen::MatrixXd& owned_rhs) const;
   std::unique_ptr<Impl> impl_;
   MPI_Comm ranks_ = MPI_COMM_NULL;  ///< the ranks sharing the matrix
   int size_ = 0;

@@ -26,9 +26,11 @@ struct SubstructuredCholesky::Impl {
   std::vector<int> interface;         ///< global index of every interface position (G \ C, then C)
   SortedIndexMap interface_position;  ///< global index → its interface position
   int n_trailing = 0;
-  SortedIndexMap trailing_position;       ///< global index → its row in the trailing block of L_G
-  std::vector<int> interior;              ///< this rank's interior unknowns (global, ascending)
-  std::vector<int> own_interface;         ///< interface positions this rank touches (ascending)
+  SortedIndexMap trailing_position;                    ///< global index → its row in the trailing block of L_G
+  std::vector<int> interior;                           ///< this rank's interior unknowns (global, ascending)
+  std::vector<int> own_interface;                      ///< interface positions this rank touches (ascending)
+  std::vector<int> touched;                            ///< the unknowns this rank's entries touch (ascending)
+  std::vector<int> interior_slot, own_interface_slot;  ///< where interior / own_interface sit in touched
   std::unique_ptr<SparseCholesky> local;  ///< [interior; own interface] of A_r + D_r (null without interior)
   Eigen::MatrixXd shifted_schur;          ///< S_r + D_r on own_interface
   /// S_G, overwritten by its factor L_G (S_G = L_G L_Gᵀ): the factorization runs in place, since
@@ -37,13 +39,13 @@ struct SubstructuredCholesky::Impl {
   std::optional<Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>>> interface_factor;
 
   int n_local() const { return static_cast<int>(interior.size() + own_interface.size()); }
-  /// A solve by parts: the right-hand side's rows at this rank's interior unknowns and at the
-  /// interface (the latter the same on every rank) in; the solution's rows there out (the
-  /// interface rows the same on every rank). Collective on `ranks`.
+  /// A solve by parts: the right-hand side's rows at this rank's interior unknowns and the
+  /// rank's share of its interface rows (|G| × k, the shares summed over the ranks) in; the
+  /// solution's rows there out (the interface rows the same on every rank). Collective on `ranks`.
   struct Parts {
     Eigen::MatrixXd interior, interface;
   };
-  Parts solve_parts(MPI_Comm ranks, const Eigen::MatrixXd& interior_rhs, const Eigen::MatrixXd& interface_rhs) const;
+  Parts solve_parts(MPI_Comm ranks, const Eigen::MatrixXd& interior_rhs, const Eigen::MatrixXd& interface_share) const;
   /// Factorizes this rank's part A_r + D_r (interior unknowns first, own interface positions
   /// last) into `local` and keeps S_r + D_r in `shifted_schur`; returns D_r.
   Eigen::VectorXd factor_own_part(const std::vector<Eigen::Triplet<double>>& lower_entries,
@@ -144,6 +146,11 @@ SubstructuredCholesky::SubstructuredCholesky(MPI_Comm ranks, int n,
       positions.emplace_back(d.interface[g], n_interior + static_cast<int>(d.own_interface.size()));
       d.own_interface.push_back(g);
     }
+  for (int i : d.interior)
+    d.interior_slot.push_back(static_cast<int>(std::lower_bound(touched.begin(), touched.end(), i) - touched.begin()));
+  for (int g : d.own_interface)
+    d.own_interface_slot.push_back(
+        static_cast<int>(std::lower_bound(touched.begin(), touched.end(), d.interface[g]) - touched.begin()));
   // A hash map: factor_own_part looks up both ends of every entry.
   std::unordered_map<int, int> local_index(positions.size());
   for (const auto& [index, position] : positions) local_index.emplace(index, position);
@@ -175,6 +182,7 @@ SubstructuredCholesky::SubstructuredCholesky(MPI_Comm ranks, int n,
         fmt::format("substructured Cholesky: the {0}x{0} interface problem of a {1}x{1} matrix is "
                     "not positive definite",
                     n_interface, n));
+  d.touched = std::move(touched);
   mean_factor_nonzeros_ = d.local ? static_cast<double>(d.local->factor_nonzeros()) : 0.0;
   sum_over_ranks(ranks, &mean_factor_nonzeros_, 1);
   mean_factor_nonzeros_ /= rank_and_size(ranks).second;
@@ -193,20 +201,19 @@ SubstructuredCholesky& SubstructuredCholesky::operator=(SubstructuredCholesky&&)
 int SubstructuredCholesky::interface_size() const { return static_cast<int>(impl_->interface.size()); }
 
 SubstructuredCholesky::Impl::Parts SubstructuredCholesky::Impl::solve_parts(
-    MPI_Comm ranks, const Eigen::MatrixXd& interior_rhs, const Eigen::MatrixXd& interface_rhs) const {
-  const auto k = interface_rhs.cols();
+    MPI_Comm ranks, const Eigen::MatrixXd& interior_rhs, const Eigen::MatrixXd& interface_share) const {
+  const auto k = interface_share.cols();
   const int n_interior = static_cast<int>(interior.size()), n_own = static_cast<int>(own_interface.size());
   // Condense: g_r = −A_GI A_II⁻¹ f_I = (S_r + D_r) y, where [x; y] solves (A_r + D_r)[x; y] = [f_I;
   // 0].
   Eigen::MatrixXd local_rhs = Eigen::MatrixXd::Zero(n_local(), k), condensed_here;
   local_rhs.topRows(n_interior) = interior_rhs;
-  Eigen::MatrixXd condensed = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(interface.size()), k);
+  Eigen::MatrixXd condensed = interface_share;
   if (local && n_own > 0) {
     condensed_here = shifted_schur * local->solve(local_rhs).bottomRows(n_own);
-    condensed(own_interface, Eigen::all) = condensed_here;
+    condensed(own_interface, Eigen::all) += condensed_here;
   }
   sum_over_ranks(ranks, condensed.data(), condensed.size());
-  condensed += interface_rhs;
   Parts out;
   out.interface = interface_factor->solve(condensed);
   // Back-substitute: with the trailing right-hand side (S_r + D_r) u_G − g_r the local solve
@@ -223,11 +230,30 @@ SubstructuredCholesky::Impl::Parts SubstructuredCholesky::Impl::solve_parts(
 Eigen::MatrixXd SubstructuredCholesky::solve(const Eigen::MatrixXd& rhs) const {
   HPC_VERIFY(rhs.rows() == size_, "right-hand side of the wrong size");
   const Impl& d = *impl_;
-  const Impl::Parts parts = d.solve_parts(ranks_, rhs(d.interior, Eigen::all), rhs(d.interface, Eigen::all));
+  // The interface rows are every rank's: rank 0 passes them as its share.
+  const Eigen::MatrixXd interface_share = d.rank == 0 ? Eigen::MatrixXd(rhs(d.interface, Eigen::all))
+                                                      : Eigen::MatrixXd::Zero(d.interface.size(), rhs.cols());
+  const Impl::Parts parts = d.solve_parts(ranks_, rhs(d.interior, Eigen::all), interface_share);
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(size_, rhs.cols());
   out(d.interior, Eigen::all) = parts.interior;
   if (d.rank == 0) out(d.interface, Eigen::all) = parts.interface;
   sum_over_ranks(ranks_, out.data(), out.size());  // every row is set by one rank only
+  return out;
+}
+
+const std::vector<int>& SubstructuredCholesky::local_unknowns() const { return impl_->touched; }
+
+Eigen::MatrixXd SubstructuredCholesky::solve_local(const Eigen::MatrixXd& partial_rhs) const {
+  const Impl& d = *impl_;
+  HPC_VERIFY(partial_rhs.rows() == static_cast<Eigen::Index>(d.touched.size()),
+             "right-hand side share of the wrong size");
+  // An interior unknown is touched by this rank alone: its share is the whole right-hand side.
+  Eigen::MatrixXd interface_share = Eigen::MatrixXd::Zero(d.interface.size(), partial_rhs.cols());
+  interface_share(d.own_interface, Eigen::all) = partial_rhs(d.own_interface_slot, Eigen::all);
+  const Impl::Parts parts = d.solve_parts(ranks_, partial_rhs(d.interior_slot, Eigen::all), interface_share);
+  Eigen::MatrixXd out(partial_rhs.rows(), partial_rhs.cols());
+  out(d.interior_slot, Eigen::all) = parts.interior;
+  out(d.own_interface_slot, Eigen::all) = parts.interface(d.own_interface, Eigen::all);
   return out;
 }
 
@@ -264,8 +290,12 @@ Eigen::MatrixXd SubstructuredCholesky::schur_complement_by_solves(const Eigen::S
   constexpr Eigen::Index block = 64;
   for (Eigen::Index first = 0; first < m; first += block) {
     const auto count = std::min<Eigen::Index>(block, m - first);
-    const Impl::Parts parts = d.solve_parts(ranks_, Eigen::MatrixXd(b_interior.middleRows(first, count).transpose()),
-                                            Eigen::MatrixXd(b_interface.middleRows(first, count).transpose()));
+    // The interface rows are every rank's: rank 0 passes them as its share.
+    const Eigen::MatrixXd interface_share = d.rank == 0
+                                                ? Eigen::MatrixXd(b_interface.middleRows(first, count).transpose())
+                                                : Eigen::MatrixXd::Zero(d.interface.size(), count);
+    const Impl::Parts parts =
+        d.solve_parts(ranks_, Eigen::MatrixXd(b_interior.middleRows(first, count).transpose()), interface_share);
     result.middleCols(first, count) = b_interior * parts.interior;
     if (d.rank == 0) result.middleCols(first, count) += b_interface * parts.interface;
   }

@@ -50,6 +50,12 @@ class SubstructuredCholesky {
   double mean_factor_nonzeros() const { return mean_factor_nonzeros_; }
   /// A⁻¹ rhs, shape (n, k), the same on every rank. Collective.
   Eigen::MatrixXd solve(const Eigen::MatrixXd& rhs) const;
+  /// The unknowns this rank's entries touch (ascending): the rows of solve_local.
+  const std::vector<int>& local_unknowns() const;
+  /// A⁻¹ b for b = Σ_r b_r: each rank passes its share b_r at its local unknowns (shape
+  /// (local_unknowns().size(), k), k the same on every rank) and receives A⁻¹ b there. Only the
+  /// interface rows (|G| × k) are summed over the ranks. Collective.
+  Eigen::MatrixXd solve_local(const Eigen::MatrixXd& partial_rhs) const;
   /// B A⁻¹ Bᵀ, dense symmetric (m, m), the same on every rank, for B (m, n) replicated: from the
   /// trailing block of L_G when B's nonzero columns lie in the trailing set, otherwise by solves
   /// in blocks of 64 columns. Collective.

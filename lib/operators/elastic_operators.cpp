@@ -7,6 +7,7 @@
 #include "core/timer.hpp"
 #include "linalg/sparse_cholesky.hpp"
 #include "mesh/boundary_mesh.hpp"
+#include "mesh/cell_partition.hpp"
 #include "operators/primal_operators.hpp"
 
 namespace hpcontact::operators {
@@ -15,8 +16,9 @@ std::string to_string(PrimalNorm norm) { return norm == PrimalNorm::h1 ? "h1" : 
 
 ElasticOperators::ElasticOperators(const mesh::Mesh& mesh, std::vector<int> cell_degrees,
                                    std::vector<assembly::Material> materials, OperatorLog* log,
-                                   const std::array<std::vector<char>, space::kComponents>& fixed)
-    : mesh_(&mesh), materials_(std::move(materials)), log_(log) {
+                                   const std::array<std::vector<char>, space::kComponents>& fixed,
+                                   linalg::Distribution distribution)
+    : mesh_(&mesh), materials_(std::move(materials)), log_(log), distribution_(distribution) {
   Stopwatch clock;
   space_ = std::make_unique<space::H1Space>(mesh, std::move(cell_degrees));
   vector_space_ = std::make_unique<space::VectorSpace>(*space_, fixed);
@@ -44,6 +46,17 @@ const std::vector<int>& ElasticOperators::trace_dofs() const {
   return *trace_dofs_;
 }
 
+const std::vector<int>& ElasticOperators::cell_parts() const {
+  if (!cell_parts_) {
+    cell_parts_ = std::make_unique<std::vector<int>>();
+    if (distribution_.distributed())
+      *cell_parts_ = mesh::split_cells_over_ranks(
+          *mesh_, assembly::cell_work_weights(assembly::ComponentwiseCellSystem(*vector_space_, 1.0, 0.0)),
+          distribution_.ranks);
+  }
+  return *cell_parts_;
+}
+
 const assembly::CondensedFactor& ElasticOperators::stiffness_factor() const {
   if (!stiffness_factor_) {
     bool dirichlet = vector_space_->has_rollers();
@@ -56,7 +69,8 @@ const assembly::CondensedFactor& ElasticOperators::stiffness_factor() const {
           "somewhere");
     Stopwatch clock;
     stiffness_factor_ = std::make_unique<assembly::CondensedFactor>(
-        std::make_unique<assembly::ElasticCellSystem>(*vector_space_, materials_), trace_dofs());
+        std::make_unique<assembly::ElasticCellSystem>(*vector_space_, materials_), trace_dofs(), distribution_,
+        cell_parts());
     if (log_) log_->record("factor(A)", n_dofs(), n_dofs(), clock.seconds());
   }
   return *stiffness_factor_;
@@ -71,7 +85,7 @@ const assembly::CondensedFactor& ElasticOperators::gram_factor(PrimalNorm norm) 
       system = std::make_unique<assembly::ComponentwiseCellSystem>(*vector_space_, 1.0, 1.0);
     else
       system = std::make_unique<assembly::ElasticCellSystem>(*vector_space_, materials_, 1.0);
-    slot = std::make_unique<assembly::CondensedFactor>(std::move(system), trace_dofs());
+    slot = std::make_unique<assembly::CondensedFactor>(std::move(system), trace_dofs(), distribution_, cell_parts());
     if (log_)
       log_->record(norm == PrimalNorm::h1 ? "factor(K+M)^2" : "factor(A+M)", n_dofs(), n_dofs(), clock.seconds());
   }

@@ -31,8 +31,11 @@ class ElasticOperators {
   /// `mesh` (and `log`, when given) must outlive the object; `materials` one per cell.
   /// Γ_D clamps both components (u = 0 there); `fixed[c]` marks the boundary edges where
   /// component c alone vanishes (rollers; see space::VectorSpace).
+  /// `distribution` other than serial: the factors are factorized over its ranks (every one of
+  /// them must build the same operators in the same order), with one split of the cells.
   ElasticOperators(const mesh::Mesh& mesh, std::vector<int> cell_degrees, std::vector<assembly::Material> materials,
-                   OperatorLog* log = nullptr, const std::array<std::vector<char>, space::kComponents>& fixed = {});
+                   OperatorLog* log = nullptr, const std::array<std::vector<char>, space::kComponents>& fixed = {},
+                   linalg::Distribution distribution = {});
   ~ElasticOperators();
 
   const mesh::Mesh& mesh() const { return *mesh_; }
@@ -56,14 +59,21 @@ class ElasticOperators {
   /// Both components of every scalar dof with a trace on Γ_C (the trailing set of the factor).
   const std::vector<int>& trace_dofs() const;
   OperatorLog* log() const { return log_; }
+  linalg::Distribution distribution() const { return distribution_; }
 
  private:
+  /// Distributed: the rank that eliminates each cell, weighted by the cells' unknowns and shared
+  /// by the factors; empty when serial.
+  const std::vector<int>& cell_parts() const;
+
   const mesh::Mesh* mesh_;
   std::unique_ptr<space::H1Space> space_;
   std::unique_ptr<space::VectorSpace> vector_space_;
   std::unique_ptr<mesh::ContactBoundary> contact_;
   std::vector<assembly::Material> materials_;
   OperatorLog* log_;
+  linalg::Distribution distribution_;
+  mutable std::unique_ptr<std::vector<int>> cell_parts_;
   mutable std::unique_ptr<assembly::CondensedFactor> stiffness_factor_;
   mutable std::map<PrimalNorm, std::unique_ptr<assembly::CondensedFactor>> gram_factors_;
   mutable std::unique_ptr<std::vector<int>> trace_dofs_;

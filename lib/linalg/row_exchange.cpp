@@ -1,0 +1,98 @@
+// RowExchange: one VecScatter from the owned rows (an MPI Vec) to the local unknowns (a
+// sequential Vec); forward with INSERT reads values, reverse with ADD sums the ranks' shares.
+#include "linalg/row_exchange.hpp"
+
+#include <petscis.h>
+#include <petscvec.h>
+
+#include <algorithm>
+#include <limits>
+
+#include "core/error.hpp"
+#include "core/petsc_check.hpp"
+#include "core/petsc_handle.hpp"
+
+namespace hpcontact::linalg {
+
+struct RowExchange::Impl {
+  PetscHandle<Vec, VecDestroy> owned, local;  ///< layouts only: columns are placed in by VecPlaceArray
+  PetscHandle<VecScatter, VecScatterDestroy> scatter;
+};
+
+RowExchange::RowExchange(MPI_Comm ranks, int n, int row_begin, int row_end, std::vector<int> local)
+    : impl_(std::make_unique<Impl>()), local_(std::move(local)), row_begin_(row_begin), row_end_(row_end) {
+  HPC_VERIFY(0 <= row_begin && row_begin <= row_end && row_end <= n, "row exchange: owned rows outside the unknowns");
+  HPC_VERIFY(std::is_sorted(local_.begin(), local_.end()) &&
+                 std::adjacent_find(local_.begin(), local_.end()) == local_.end() &&
+                 (local_.empty() || (local_.front() >= 0 && local_.back() < n)),
+             "row exchange: local unknowns not ascending, repeated or outside the unknowns");
+  MPI_Comm_rank(ranks, &rank_);
+  const auto n_local = static_cast<PetscInt>(local_.size());
+  HPC_PETSC_CALL(VecCreateMPIWithArray(ranks, 1, row_end - row_begin, n, nullptr, impl_->owned.out()));
+  HPC_PETSC_CALL(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, n_local, nullptr, impl_->local.out()));
+  const std::vector<PetscInt> global(local_.begin(), local_.end());
+  PetscHandle<IS, ISDestroy> from, to;
+  HPC_PETSC_CALL(ISCreateGeneral(PETSC_COMM_SELF, n_local, global.data(), PETSC_COPY_VALUES, from.out()));
+  HPC_PETSC_CALL(ISCreateStride(PETSC_COMM_SELF, n_local, 0, 1, to.out()));
+  HPC_PETSC_CALL(VecScatterCreate(impl_->owned.get(), from.get(), impl_->local.get(), to.get(), impl_->scatter.out()));
+}
+
+RowExchange::~RowExchange() = default;
+RowExchange::RowExchange(RowExchange&&) noexcept = default;
+RowExchange& RowExchange::operator=(RowExchange&&) noexcept = default;
+
+Eigen::MatrixXd RowExchange::sum_to_owned(const Eigen::MatrixXd& partial) const {
+  HPC_VERIFY(partial.rows() == static_cast<Eigen::Index>(local_.size()), "row exchange: wrong number of local rows");
+  // Every rank loops over the same column count (the caller's k is the same on every rank).
+  Eigen::MatrixXd owned = Eigen::MatrixXd::Zero(owned_rows(), partial.cols());
+  Eigen::MatrixXd source = partial;  // VecPlaceArray takes a non-const array
+  for (Eigen::Index j = 0; j < partial.cols(); ++j) {
+    HPC_PETSC_CALL(VecPlaceArray(impl_->owned.get(), owned.col(j).data()));
+    HPC_PETSC_CALL(VecPlaceArray(impl_->local.get(), source.col(j).data()));
+    HPC_PETSC_CALL(
+        VecScatterBegin(impl_->scatter.get(), impl_->local.get(), impl_->owned.get(), ADD_VALUES, SCATTER_REVERSE));
+    HPC_PETSC_CALL(
+        VecScatterEnd(impl_->scatter.get(), impl_->local.get(), impl_->owned.get(), ADD_VALUES, SCATTER_REVERSE));
+    HPC_PETSC_CALL(VecResetArray(impl_->owned.get()));
+    HPC_PETSC_CALL(VecResetArray(impl_->local.get()));
+  }
+  return owned;
+}
+
+Eigen::MatrixXd RowExchange::owned_to_local(const Eigen::MatrixXd& owned) const {
+  HPC_VERIFY(owned.rows() == owned_rows(), "row exchange: wrong number of owned rows");
+  Eigen::MatrixXd local(static_cast<Eigen::Index>(local_.size()), owned.cols());
+  Eigen::MatrixXd source = owned;
+  for (Eigen::Index j = 0; j < owned.cols(); ++j) {
+    HPC_PETSC_CALL(VecPlaceArray(impl_->owned.get(), source.col(j).data()));
+    HPC_PETSC_CALL(VecPlaceArray(impl_->local.get(), local.col(j).data()));
+    HPC_PETSC_CALL(
+        VecScatterBegin(impl_->scatter.get(), impl_->owned.get(), impl_->local.get(), INSERT_VALUES, SCATTER_FORWARD));
+    HPC_PETSC_CALL(
+        VecScatterEnd(impl_->scatter.get(), impl_->owned.get(), impl_->local.get(), INSERT_VALUES, SCATTER_FORWARD));
+    HPC_PETSC_CALL(VecResetArray(impl_->owned.get()));
+    HPC_PETSC_CALL(VecResetArray(impl_->local.get()));
+  }
+  return local;
+}
+
+std::vector<char> RowExchange::lowest_rank_holds() const {
+  const int rank = rank_;
+  // The largest −rank over the holders of each owned row is −(the lowest holder).
+  Eigen::MatrixXd minus_rank = Eigen::MatrixXd::Constant(static_cast<Eigen::Index>(local_.size()), 1, -rank);
+  Eigen::MatrixXd owned = Eigen::MatrixXd::Constant(owned_rows(), 1, -std::numeric_limits<double>::infinity());
+  HPC_PETSC_CALL(VecPlaceArray(impl_->owned.get(), owned.data()));
+  HPC_PETSC_CALL(VecPlaceArray(impl_->local.get(), minus_rank.data()));
+  HPC_PETSC_CALL(
+      VecScatterBegin(impl_->scatter.get(), impl_->local.get(), impl_->owned.get(), MAX_VALUES, SCATTER_REVERSE));
+  HPC_PETSC_CALL(
+      VecScatterEnd(impl_->scatter.get(), impl_->local.get(), impl_->owned.get(), MAX_VALUES, SCATTER_REVERSE));
+  HPC_PETSC_CALL(VecResetArray(impl_->owned.get()));
+  HPC_PETSC_CALL(VecResetArray(impl_->local.get()));
+  const Eigen::MatrixXd lowest = owned_to_local(owned);
+  std::vector<char> holds(local_.size());
+  for (std::size_t k = 0; k < local_.size(); ++k) holds[k] = lowest(static_cast<Eigen::Index>(k), 0) == -rank;
+  return holds;
+}
+
+}  // namespace hpcontact::linalg
