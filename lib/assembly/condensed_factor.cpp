@@ -106,6 +106,7 @@ CondensedFactor::CondensedFactor(std::unique_ptr<const CellSystem> system, const
     run_on_all_ranks_agreeing([&] { lower = eliminate_interiors(contributes); }, ranks);
   else
     lower = eliminate_interiors(contributes);
+  if (distributed) own_cells_ = std::move(contributes);
   find_local_dofs();
   switch (distribution.solver) {
     case linalg::DistributedSolver::serial: {

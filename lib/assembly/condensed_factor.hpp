@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "assembly/cell_system.hpp"
+#include "assembly/load_target.hpp"
 #include "linalg/bddc_solver.hpp"
 #include "linalg/distributed_cholesky.hpp"
 #include "linalg/distribution.hpp"
@@ -75,6 +76,11 @@ class CondensedFactor {
   /// load; shape (local_dofs().size(), k), k the same on every rank) and receives A⁻¹ b there. No
   /// vector of the global length: the skeleton solver sums the shares. Collective.
   Eigen::MatrixXd solve_local(const Eigen::MatrixXd& partial_rhs) const;
+  /// Where this rank assembles its share of a load for solve_local: distributed, its own cells
+  /// into its local dofs; serial, the whole load. Valid while the factor lives.
+  LoadTarget load_target() const {
+    return distribution_.distributed() ? LoadTarget(own_cells_, local_dofs_) : LoadTarget();
+  }
   /// This rank's share of a vector every rank holds whole (shape (n, k)), at its local dofs: the
   /// rows of the dofs it counts (of the ranks holding a dof, the lowest), zero at the others, so
   /// that the shares sum to the vector.
@@ -126,6 +132,7 @@ class CondensedFactor {
   std::vector<int> block_of_cell_;
   int n_trailing_ = 0;
   std::vector<int> local_dofs_;                     ///< see local_dofs()
+  std::vector<char> own_cells_;                     ///< per cell: eliminated here (distributed)
   std::vector<char> counts_dof_;                    ///< per local dof: this rank is the lowest holding it (distributed)
   int n_local_skeleton_ = 0;                        ///< local dofs in the skeleton (the first ones)
   std::unique_ptr<linalg::SparseCholesky> serial_;  ///< one of the four, by the distribution

@@ -5,6 +5,7 @@
 #include <functional>
 #include <set>
 
+#include "assembly/load_target.hpp"
 #include "mesh/mesh.hpp"
 #include "space/vector_space.hpp"
 
@@ -14,9 +15,11 @@ using VectorFunction = std::function<Eigen::Vector2d(const mesh::Point&)>;
 /// A traction t(x, n), n the outward unit normal.
 using TractionFunction = std::function<Eigen::Vector2d(const mesh::Point& x, const mesh::Point& normal)>;
 
-/// F_(j,c) = (f_c, φ_j) + ∫_{edges in `parts`} t_c φ_j ds, shape (space.n_dofs()), numbered by
-/// space::VectorSpace::dof (a fixed component takes no load). Either function may be empty.
+/// F_(j,c) = (f_c, φ_j) + ∫_{edges in `parts`} t_c φ_j ds, shape (target.size(space.n_dofs())),
+/// numbered by space::VectorSpace::dof (a fixed component takes no load): the whole load or a
+/// rank's share. Either function may be empty.
 Eigen::VectorXd assemble_elastic_load(const space::VectorSpace& space, const VectorFunction& body_force,
-                                      const std::set<mesh::BoundaryPart>& parts, const TractionFunction& traction);
+                                      const std::set<mesh::BoundaryPart>& parts, const TractionFunction& traction,
+                                      const LoadTarget& target = {});
 
 }  // namespace hpcontact::assembly

@@ -48,9 +48,10 @@ VolumeMatrices assemble_volume_matrices(const space::H1Space& space, const Volum
   return out;
 }
 
-Eigen::VectorXd assemble_volume_load(const space::H1Space& space, const std::function<double(const mesh::Point&)>& f) {
-  Eigen::VectorXd load = Eigen::VectorXd::Zero(space.n_dofs());
+void visit_volume_load(const space::H1Space& space, const std::function<double(const mesh::Point&)>& f,
+                       const LoadTarget& target, const DofContribution& add) {
   for (int c = 0; c < space.mesh().n_cells(); ++c) {
+    if (!target.assembles(c)) continue;
     // Two extra points beyond the matrices: f is general data, not a polynomial.
     const CellQuadrature rule = cell_rule(space, c, 2);
     const CellValues cell = tabulate_cell(space, c, rule.points);
@@ -60,19 +61,18 @@ Eigen::VectorXd assemble_volume_load(const space::H1Space& space, const std::fun
     const Eigen::VectorXd local = cell.values.transpose() * weighted_f;
     const auto& shapes = space.cell_shapes(c);
     for (std::size_t s = 0; s < shapes.size(); ++s)
-      if (shapes[s].dof >= 0) load(shapes[s].dof) += local(s);
+      if (shapes[s].dof >= 0) add(shapes[s].dof, local(s));
   }
-  return load;
 }
 
-Eigen::VectorXd assemble_boundary_load(
-    const space::H1Space& space, const std::set<mesh::BoundaryPart>& parts,
-    const std::function<double(const mesh::Point& x, const mesh::Point& normal)>& g) {
+void visit_boundary_load(const space::H1Space& space, const std::set<mesh::BoundaryPart>& parts,
+                         const std::function<double(const mesh::Point& x, const mesh::Point& normal)>& g,
+                         const LoadTarget& target, const DofContribution& add) {
   const auto& mesh = space.mesh();
-  Eigen::VectorXd load = Eigen::VectorXd::Zero(space.n_dofs());
   for (int e : mesh.boundary_edges()) {
     if (!parts.contains(mesh.edge_part(e))) continue;
     const int c = mesh.edge_cells(e)[0];
+    if (!target.assembles(c)) continue;
     const int local_edge = mesh.local_edge_of(e, 0);
     // Curved edges: the speed |dΨ/dt| and the normal vary along the edge and are not polynomial.
     const bool curved = mesh.cell_geometry(c) != nullptr;
@@ -89,8 +89,22 @@ Eigen::VectorXd assemble_boundary_load(
     const Eigen::VectorXd local = values.values.transpose() * weighted_g;
     const auto& shapes = space.cell_shapes(c);
     for (std::size_t s = 0; s < shapes.size(); ++s)
-      if (shapes[s].dof >= 0) load(shapes[s].dof) += local(s);
+      if (shapes[s].dof >= 0) add(shapes[s].dof, local(s));
   }
+}
+
+Eigen::VectorXd assemble_volume_load(const space::H1Space& space, const std::function<double(const mesh::Point&)>& f,
+                                     const LoadTarget& target) {
+  Eigen::VectorXd load = Eigen::VectorXd::Zero(target.size(space.n_dofs()));
+  visit_volume_load(space, f, target, [&](int dof, double value) { load(target.row(dof)) += value; });
+  return load;
+}
+
+Eigen::VectorXd assemble_boundary_load(const space::H1Space& space, const std::set<mesh::BoundaryPart>& parts,
+                                       const std::function<double(const mesh::Point& x, const mesh::Point& normal)>& g,
+                                       const LoadTarget& target) {
+  Eigen::VectorXd load = Eigen::VectorXd::Zero(target.size(space.n_dofs()));
+  visit_boundary_load(space, parts, g, target, [&](int dof, double value) { load(target.row(dof)) += value; });
   return load;
 }
 

@@ -67,15 +67,16 @@ void check_data(const ContactSetup& setup) {
     throw InputError("friction problem: the friction bound s is missing");
 }
 
-// F, shared with the other problems on `primal` when the setup names its data (load_key), else
-// assembled into `own`.
+// F on `space` as `target` asks (whole, or this rank's share), shared with the other problems on
+// `primal` when the setup names its data (load_key), else assembled into `own`.
 const Eigen::VectorXd& load_vector(const ContactSetup& setup, const operators::PrimalOperators& primal,
-                                   const space::H1Space& space, Eigen::VectorXd& own) {
+                                   const space::H1Space& space, const assembly::LoadTarget& target,
+                                   Eigen::VectorXd& own) {
   auto assemble = [&] {
-    Eigen::VectorXd load = assembly::assemble_volume_load(space, setup.f);
+    Eigen::VectorXd load = assembly::assemble_volume_load(space, setup.f, target);
     if (setup.traction)
       load += assembly::assemble_boundary_load(space, {mesh::BoundaryPart::neumann, mesh::BoundaryPart::contact},
-                                               setup.traction);
+                                               setup.traction, target);
     return load;
   };
   if (!setup.load_key.empty() && &space == &primal.space()) return primal.derived_vector("F", setup.load_key, assemble);
@@ -85,14 +86,19 @@ const Eigen::VectorXd& load_vector(const ContactSetup& setup, const operators::P
   return own;
 }
 
-// The load of u, and the energy's constant: with Dirichlet data u = u_0 + w, F is assembled with
-// Γ_D kept and moved to u_0's unknowns (assembly::DirichletLift).
-assembly::DirichletLift::LiftedLoad problem_load(const ContactSetup& setup, const operators::PrimalOperators& primal,
-                                                 const assembly::DirichletLift* lift) {
+// This rank's share of the load of u (for k_factor.solve_local), and the energy's constant: F
+// assembled over the rank's own cells; with Dirichlet data u = u_0 + w, F is assembled whole with
+// Γ_D kept, moved to u_0's unknowns (assembly::DirichletLift), then shared out.
+assembly::DirichletLift::LiftedLoad problem_load_share(const ContactSetup& setup,
+                                                       const operators::PrimalOperators& primal,
+                                                       const assembly::DirichletLift* lift,
+                                                       const assembly::CondensedFactor& k_factor) {
   Eigen::VectorXd own;
-  if (!lift) return {load_vector(setup, primal, primal.space(), own), 0.0};
-  const Eigen::VectorXd& extended = load_vector(setup, primal, lift->extended_scalar(), own);
-  return lift->lifted_load(assembly::ScalarCellSystem(primal.space(), 1.0, 0.0), extended);
+  if (!lift) return {load_vector(setup, primal, primal.space(), k_factor.load_target(), own), 0.0};
+  const Eigen::VectorXd& extended = load_vector(setup, primal, lift->extended_scalar(), {}, own);
+  auto lifted = lift->lifted_load(assembly::ScalarCellSystem(primal.space(), 1.0, 0.0), extended);
+  lifted.load = k_factor.share_of(lifted.load).col(0);
+  return lifted;
 }
 
 }  // namespace
@@ -111,7 +117,6 @@ ContactSolution solve_contact(const ContactSetup& setup) {
   OperatorLog* log = primal.log();
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
   if (setup.dirichlet) out.lift = std::make_shared<assembly::DirichletLift>(primal.space(), setup.dirichlet);
-  const auto [load, energy_offset] = problem_load(setup, primal, out.lift.get());
   const bool weighted = setup.problem == ContactProblem::friction;
   const std::string coupling_name = weighted ? "B^s" : "B";
   const Eigen::SparseMatrix<double>& coupling_legendre =
@@ -141,10 +146,13 @@ ContactSolution solve_contact(const ContactSetup& setup) {
   Stopwatch factorization_clock;
   const assembly::CondensedFactor& k_factor = primal.stiffness_factor();
   out.seconds.factorization = factorization_clock.seconds();
+  // Distributed, the vectors of S^p(T_h) are held at each rank's own cells' dofs, the load as the
+  // ranks' shares: none of the global length (without Dirichlet data) until u is gathered for
+  // the output.
+  Stopwatch load_clock;
+  const auto [load_share, energy_offset] = problem_load_share(setup, primal, out.lift.get(), k_factor);
+  out.seconds.assembly += load_clock.seconds();
   Stopwatch condensation_clock;
-  // Distributed, the vectors of S^p(T_h) are held at each rank's own cells' dofs (the load as the
-  // ranks' shares): none of the global length until u is gathered for the output.
-  const Eigen::VectorXd load_share = k_factor.share_of(load).col(0);
   const Eigen::VectorXd u_free = k_factor.solve_local(load_share).col(0);
   const Eigen::MatrixXd& s =
       primal.derived_matrix("S", operators::PrimalOperators::coupling_key(multipliers, coupling_name),

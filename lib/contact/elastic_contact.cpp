@@ -106,15 +106,22 @@ CondensedProblem condensed_problem(const ElasticContactSetup& setup, const space
   return out;
 }
 
-// The load of u_0, and the energy's constant (assembly::DirichletLift).
-assembly::DirichletLift::LiftedLoad problem_load(const ElasticContactSetup& setup,
-                                                 const assembly::DirichletLift* lift) {
+// This rank's share of the load of u_0 (for factor.solve_local), and the energy's constant
+// (assembly::DirichletLift).
+assembly::DirichletLift::LiftedLoad problem_load_share(const ElasticContactSetup& setup,
+                                                       const assembly::DirichletLift* lift,
+                                                       const assembly::CondensedFactor& factor) {
   const auto& ops = *setup.operators;
-  const space::VectorSpace& space = lift ? *lift->extended_vector() : ops.vector_space();
-  Eigen::VectorXd load =
-      assembly::assemble_elastic_load(space, setup.body_force, {mesh::BoundaryPart::neumann}, setup.traction);
-  if (!lift) return {std::move(load), 0.0};
-  return lift->lifted_load(assembly::ElasticCellSystem(ops.vector_space(), ops.materials()), load);
+  const std::set<mesh::BoundaryPart> neumann{mesh::BoundaryPart::neumann};
+  if (!lift)
+    return {assembly::assemble_elastic_load(ops.vector_space(), setup.body_force, neumann, setup.traction,
+                                            factor.load_target()),
+            0.0};
+  const Eigen::VectorXd load =
+      assembly::assemble_elastic_load(*lift->extended_vector(), setup.body_force, neumann, setup.traction);
+  auto lifted = lift->lifted_load(assembly::ElasticCellSystem(ops.vector_space(), ops.materials()), load);
+  lifted.load = factor.share_of(lifted.load).col(0);
+  return lifted;
 }
 
 // Coulomb: the tangential bounds ±F p at the tangential constraint points, p = −σ_nn there (the
@@ -167,7 +174,6 @@ ElasticContactSolution solve_elastic_contact(const ElasticContactSetup& setup) {
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
   if (setup.dirichlet[0] || setup.dirichlet[1])
     out.lift = std::make_shared<assembly::DirichletLift>(ops.vector_space(), setup.dirichlet);
-  const auto [load, energy_offset] = problem_load(setup, out.lift.get());
   CondensedProblem problem = condensed_problem(setup, multipliers, out.lift.get());
   out.seconds.assembly = assembly_clock.seconds();
 
@@ -175,10 +181,13 @@ ElasticContactSolution solve_elastic_contact(const ElasticContactSetup& setup) {
   Stopwatch factorization_clock;
   const assembly::CondensedFactor& factor = ops.stiffness_factor();
   out.seconds.factorization = factorization_clock.seconds();
+  // Distributed, the vectors of the displacement space are held at each rank's own cells' dofs,
+  // the load as the ranks' shares (this rank's own cells; with Dirichlet data assembled whole,
+  // lifted and shared out): none of the global length until u is gathered for the output.
+  Stopwatch load_clock;
+  const auto [load_share, energy_offset] = problem_load_share(setup, out.lift.get(), factor);
+  out.seconds.assembly += load_clock.seconds();
   Stopwatch condensation_clock;
-  // Distributed, the vectors of the displacement space are held at each rank's own cells' dofs
-  // (the load as the ranks' shares): none of the global length until u is gathered for the output.
-  const Eigen::VectorXd load_share = factor.share_of(load).col(0);
   const Eigen::VectorXd u_free = factor.solve_local(load_share).col(0);
   const Eigen::MatrixXd s = factor.schur_complement(problem.coupling);
   const Eigen::VectorXd b_u_free = factor.multiply_local(problem.coupling, u_free).col(0);
