@@ -104,7 +104,7 @@ int run(const std::string& solver, const std::string& split, bool indefinite, bo
     return share;
   };
   // solve_local against the same solver's replicated solve, at the rank's local unknowns; −1 when
-  // the local unknowns are not those its entries touch.
+  // the local unknowns are not those its entries touch, or a solve of no columns fails.
   double local_difference = 0.0;
   auto check_local = [&](const auto& factor, const Eigen::MatrixXd& replicated) {
     const std::vector<int>& local = factor.local_unknowns();
@@ -114,6 +114,12 @@ int run(const std::string& solver, const std::string& split, bool indefinite, bo
     local_difference = local == expected
                            ? relative_difference(factor.solve_local(share_of(local)), replicated(local, Eigen::all))
                            : -1.0;
+    // No columns: no columns back, on both paths.
+    const Eigen::MatrixXd none_local = factor.solve_local(Eigen::MatrixXd(local.size(), 0));
+    const Eigen::MatrixXd none = factor.solve(Eigen::MatrixXd(n, 0));
+    if (none_local.rows() != static_cast<Eigen::Index>(local.size()) || none_local.cols() != 0 || none.rows() != n ||
+        none.cols() != 0)
+      local_difference = -1.0;
     // The largest difference over the ranks, −1 if any rank's local unknowns were wrong.
     double worst[2] = {local_difference, -local_difference};
     MPI_Allreduce(MPI_IN_PLACE, worst, 2, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
@@ -146,6 +152,11 @@ int run(const std::string& solver, const std::string& split, bool indefinite, bo
     solution = factor.solve(rhs), schur = factor.schur_complement(b), schur_out = factor.schur_complement(b_out);
     interface = factor.trailing_size();  // the Schur complement MUMPS returned
     check_local(factor, solution);
+    // Without a trailing set MUMPS runs its Cholesky and MatMatSolve: the local solves again.
+    const double with_trailing = local_difference;
+    const linalg::DistributedCholesky cholesky(MPI_COMM_WORLD, n, mine, {});
+    check_local(cholesky, solution);
+    local_difference = std::min(with_trailing, local_difference) < 0 ? -1.0 : std::max(with_trailing, local_difference);
   } else if (solver == "bddc") {
     const linalg::BddcSolver factor(MPI_COMM_WORLD, n, mine);
     solution = factor.solve(rhs), schur = factor.schur_complement(b), schur_out = factor.schur_complement(b_out);

@@ -45,29 +45,28 @@ void note_if_interface_dominates(const linalg::SubstructuredCholesky& factor) {
              factor.interface_size(), g * g * 8e-6, factor.mean_factor_nonzeros() * 8e-6);
 }
 
-// The row of `dof` in a vector held at the dofs `rows` (ascending), or in global order when null.
-int row_in(const std::vector<int>* rows, int dof) {
-  if (!rows) return dof;
-  const auto it = std::lower_bound(rows->begin(), rows->end(), dof);
-  HPC_VERIFY(it != rows->end() && *it == dof, "a dof of the rank's own cells is missing from its local dofs");
-  return static_cast<int>(it - rows->begin());
+// The row of a cell's shape s: its dof in global order, or its entry of `cell_rows` (the rows of
+// the cell's shapes in a vector held at the rank's local dofs) when given.
+int row_of(const std::vector<CellDof>& dofs, const int* cell_rows, int s) {
+  return cell_rows ? cell_rows[s] : dofs[s].dof;
 }
 
-// Rows of `values` (held at `rows`) at a cell's interior unknowns `local`.
+// Rows of `values` at a cell's interior unknowns `local`.
 Eigen::MatrixXd interior_rows(const std::vector<CellDof>& dofs, const std::vector<int>& local,
-                              const Eigen::Ref<const Eigen::MatrixXd>& values, const std::vector<int>* rows) {
+                              const Eigen::Ref<const Eigen::MatrixXd>& values, const int* cell_rows) {
   Eigen::MatrixXd out(local.size(), values.cols());
-  for (std::size_t k = 0; k < local.size(); ++k) out.row(k) = values.row(row_in(rows, dofs[local[k]].dof));
+  for (std::size_t k = 0; k < local.size(); ++k) out.row(k) = values.row(row_of(dofs, cell_rows, local[k]));
   return out;
 }
 
-// Rows of `values` (held at `rows`) at a cell's skeleton unknowns `local`, times their signs (0
-// for Dirichlet dofs): the coefficients of the cell's unsigned element block.
+// Rows of `values` at a cell's skeleton unknowns `local`, times their signs (0 for Dirichlet
+// dofs): the coefficients of the cell's unsigned element block.
 Eigen::MatrixXd signed_skeleton_rows(const std::vector<CellDof>& dofs, const std::vector<int>& local,
-                                     const Eigen::Ref<const Eigen::MatrixXd>& values, const std::vector<int>* rows) {
+                                     const Eigen::Ref<const Eigen::MatrixXd>& values, const int* cell_rows) {
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(local.size(), values.cols());
   for (std::size_t s = 0; s < local.size(); ++s)
-    if (const auto& dof = dofs[local[s]]; dof.dof >= 0) out.row(s) = dof.sign * values.row(row_in(rows, dof.dof));
+    if (const auto& dof = dofs[local[s]]; dof.dof >= 0)
+      out.row(s) = dof.sign * values.row(row_of(dofs, cell_rows, local[s]));
   return out;
 }
 
@@ -128,16 +127,19 @@ CondensedFactor::CondensedFactor(std::unique_ptr<const CellSystem> system, const
       break;
   }
   // The skeleton solver's local unknowns are the skeleton dofs of the rank's cells (each has its
-  // diagonal entry from S_T): solve_local passes rows between the two without a lookup.
-  if (distributed) {
-    const std::vector<int>& unknowns = substructured_ ? substructured_->local_unknowns()
-                                       : mumps_       ? mumps_->local_unknowns()
-                                                      : bddc_->local_unknowns();
-    HPC_VERIFY(
-        std::equal(unknowns.begin(), unknowns.end(), local_dofs_.begin(), local_dofs_.begin() + n_local_skeleton_) &&
-            static_cast<int>(unknowns.size()) == n_local_skeleton_,
-        "the skeleton solver's local unknowns differ from the skeleton dofs of the rank's cells");
-  }
+  // diagonal entry from S_T): solve_local passes rows between the two without a lookup. (Agreed
+  // over the ranks: a rank failing alone would leave the others waiting in a collective call.)
+  if (distributed)
+    run_on_all_ranks_agreeing(
+        [&] {
+          const std::vector<int>& unknowns = substructured_ ? substructured_->local_unknowns()
+                                             : mumps_       ? mumps_->local_unknowns()
+                                                            : bddc_->local_unknowns();
+          HPC_VERIFY(std::equal(unknowns.begin(), unknowns.end(), local_dofs_.begin(),
+                                local_dofs_.begin() + n_local_skeleton_),
+                     "the skeleton solver's local unknowns differ from the skeleton dofs of the rank's cells");
+        },
+        ranks);
 }
 
 void CondensedFactor::find_local_dofs() {
@@ -155,6 +157,19 @@ void CondensedFactor::find_local_dofs() {
     }
     std::sort(local_dofs_.begin(), local_dofs_.end());
     local_dofs_.erase(std::unique(local_dofs_.begin(), local_dofs_.end()), local_dofs_.end());
+    // The local rows of every own cell's shapes, found once (the local solves would search them
+    // in every pass over the cells).
+    cell_row_start_.assign(block_of_cell_.size(), -1);
+    for (int c = 0; c < static_cast<int>(block_of_cell_.size()); ++c) {
+      if (block_of_cell_[c] < 0) continue;
+      system_->cell_dofs(c, dofs);
+      cell_row_start_[c] = static_cast<long>(cell_rows_.size());
+      for (const auto& dof : dofs)
+        cell_rows_.push_back(dof.dof < 0
+                                 ? -1
+                                 : static_cast<int>(std::lower_bound(local_dofs_.begin(), local_dofs_.end(), dof.dof) -
+                                                    local_dofs_.begin()));
+    }
   }
   n_local_skeleton_ = static_cast<int>(
       std::lower_bound(local_dofs_.begin(), local_dofs_.end(), system_->n_skeleton_dofs()) - local_dofs_.begin());
@@ -289,7 +304,7 @@ Eigen::MatrixXd CondensedFactor::skeleton_solve_local(const Eigen::MatrixXd& par
   return substructured_ ? substructured_->solve_local(partial_rhs) : mumps_->solve_local(partial_rhs);
 }
 
-Eigen::MatrixXd CondensedFactor::interior_corrections(const Eigen::MatrixXd& rhs, const std::vector<int>* rows,
+Eigen::MatrixXd CondensedFactor::interior_corrections(const Eigen::MatrixXd& rhs, bool local,
                                                       Eigen::Index n_skeleton_rows) const {
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(n_skeleton_rows, rhs.cols());
   std::vector<CellDof> dofs;
@@ -298,29 +313,30 @@ Eigen::MatrixXd CondensedFactor::interior_corrections(const Eigen::MatrixXd& rhs
     const CellBlock& block = *blocks_[block_of_cell_[c]];
     if (block.interior.empty()) continue;
     system_->cell_dofs(c, dofs);
+    const int* rows = local ? cell_rows_.data() + cell_row_start_[c] : nullptr;
     // (A_ii⁻¹ A_is)ᵀ f_i
     const Eigen::MatrixXd correction =
         block.interior_solve.transpose() * interior_rows(dofs, block.interior, rhs, rows);
     for (std::size_t s = 0; s < block.skeleton.size(); ++s) {
       const auto& dof = dofs[block.skeleton[s]];
-      if (dof.dof >= 0) out.row(row_in(rows, dof.dof)) -= dof.sign * correction.row(s);
+      if (dof.dof >= 0) out.row(row_of(dofs, rows, block.skeleton[s])) -= dof.sign * correction.row(s);
     }
   }
   return out;
 }
 
-void CondensedFactor::recover_interiors(const Eigen::MatrixXd& rhs, const std::vector<int>* rows,
-                                        Eigen::MatrixXd& solution) const {
+void CondensedFactor::recover_interiors(const Eigen::MatrixXd& rhs, bool local, Eigen::MatrixXd& solution) const {
   std::vector<CellDof> dofs;
   for (int c = 0; c < static_cast<int>(block_of_cell_.size()); ++c) {
     if (block_of_cell_[c] < 0) continue;
     const CellBlock& block = *blocks_[block_of_cell_[c]];
     if (block.interior.empty()) continue;
     system_->cell_dofs(c, dofs);
+    const int* rows = local ? cell_rows_.data() + cell_row_start_[c] : nullptr;
     const Eigen::MatrixXd interior = block.interior_factor.solve(interior_rows(dofs, block.interior, rhs, rows)) -
                                      block.interior_solve * signed_skeleton_rows(dofs, block.skeleton, solution, rows);
     for (std::size_t k = 0; k < block.interior.size(); ++k)
-      solution.row(row_in(rows, dofs[block.interior[k]].dof)) = interior.row(k);
+      solution.row(row_of(dofs, rows, block.interior[k])) = interior.row(k);
   }
 }
 
@@ -328,13 +344,13 @@ Eigen::MatrixXd CondensedFactor::solve(const Eigen::MatrixXd& rhs) const {
   HPC_VERIFY(rhs.rows() == size_, "right-hand side of the wrong size");
   const int n_skeleton = this->n_skeleton();
   // f_s − A_si A_ii⁻¹ f_i: each rank subtracts its own cells' corrections, summed over the ranks.
-  Eigen::MatrixXd condensed = interior_corrections(rhs, nullptr, n_skeleton);
+  Eigen::MatrixXd condensed = interior_corrections(rhs, false, n_skeleton);
   if (distribution_.distributed()) sum_over_ranks(distribution_.ranks, condensed.data(), condensed.size());
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(size_, rhs.cols());
   out.topRows(n_skeleton) = skeleton_solve(condensed + rhs.topRows(n_skeleton));
   // Each rank recovers its own cells' interior modes (the unknowns after the skeleton, each in one
   // cell); distributed, the other ranks' (zero here) are summed in.
-  recover_interiors(rhs, nullptr, out);
+  recover_interiors(rhs, false, out);
   if (distribution_.distributed()) {
     auto interiors = out.bottomRows(size_ - n_skeleton);
     Eigen::MatrixXd summed = interiors;
@@ -352,9 +368,9 @@ Eigen::MatrixXd CondensedFactor::solve_local(const Eigen::MatrixXd& partial_rhs)
   // right-hand side, and the condensation adds up within the rank: the skeleton solver sums the
   // shares.
   Eigen::MatrixXd out(partial_rhs.rows(), partial_rhs.cols());
-  out.topRows(n_local_skeleton_) = skeleton_solve_local(
-      interior_corrections(partial_rhs, &local_dofs_, n_local_skeleton_) + partial_rhs.topRows(n_local_skeleton_));
-  recover_interiors(partial_rhs, &local_dofs_, out);
+  out.topRows(n_local_skeleton_) = skeleton_solve_local(interior_corrections(partial_rhs, true, n_local_skeleton_) +
+                                                        partial_rhs.topRows(n_local_skeleton_));
+  recover_interiors(partial_rhs, true, out);
   return out;
 }
 
@@ -379,16 +395,16 @@ Eigen::MatrixXd CondensedFactor::schur_complement(const Eigen::SparseMatrix<doub
 
 double CondensedFactor::quadratic_form(const Eigen::VectorXd& u) const {
   HPC_VERIFY(u.size() == size_, "quadratic form of a vector of the wrong size");
-  return cell_quadratic_forms(u, nullptr);
+  return cell_quadratic_forms(u, false);
 }
 
 double CondensedFactor::quadratic_form_local(const Eigen::VectorXd& u_local) const {
   HPC_VERIFY(u_local.size() == static_cast<Eigen::Index>(local_dofs_.size()),
              "quadratic form of a vector of the wrong size");
-  return cell_quadratic_forms(u_local, distribution_.distributed() ? &local_dofs_ : nullptr);
+  return cell_quadratic_forms(u_local, distribution_.distributed());
 }
 
-double CondensedFactor::cell_quadratic_forms(const Eigen::VectorXd& u, const std::vector<int>* rows) const {
+double CondensedFactor::cell_quadratic_forms(const Eigen::VectorXd& u, bool local) const {
   // uᵀ A u = Σ_T u_sᵀ S_T u_s + ‖Lᵀ (u_i + A_ii⁻¹ A_is u_s)‖², per cell with its signs.
   double sum = 0.0;
   std::vector<CellDof> dofs;
@@ -396,6 +412,7 @@ double CondensedFactor::cell_quadratic_forms(const Eigen::VectorXd& u, const std
     if (block_of_cell_[c] < 0) continue;
     const CellBlock& block = *blocks_[block_of_cell_[c]];
     system_->cell_dofs(c, dofs);
+    const int* rows = local ? cell_rows_.data() + cell_row_start_[c] : nullptr;
     const Eigen::VectorXd skeleton = signed_skeleton_rows(dofs, block.skeleton, u, rows);
     sum += skeleton.dot(block.schur * skeleton);
     if (block.interior.empty()) continue;

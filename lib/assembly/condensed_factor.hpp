@@ -34,13 +34,13 @@ namespace hpcontact::assembly {
 /// Distributed (under mpirun): the cells are split into one part per rank of equal work by coordinate bisection or
 /// PT-Scotch, whichever cuts fewer edges (mesh/cell_partition.hpp); each rank eliminates only its own part's cells and
 /// contributes their S_T to S; condensing a right-hand side, recovering the interior modes and the quadratic form add
-/// up the ranks' parts (vectors stay replicated). S is then factorized either by substructuring (default,
-/// SubstructuredCholesky): each rank factorizes the skeleton dofs only its part touches, and the
-/// dofs between parts and the trailing set form a small dense interface problem whose trailing
-/// block gives B A⁻¹ Bᵀ; or by MUMPS on an MPIAIJ matrix (DistributedCholesky), whose
-/// Schur complement on the trailing set gives B A⁻¹ Bᵀ the same way; or kept unassembled as MATIS,
-/// each rank's part its subdomain, and
-/// solved by CG + BDDC (BddcSolver), B A⁻¹ Bᵀ again by solves.
+/// up the ranks' parts. Vectors are either replicated (solve, quadratic_form) or held at each rank's own cells' dofs
+/// (solve_local and the other *_local members, with right-hand sides as the ranks' shares). S is then factorized either
+/// by substructuring (default, SubstructuredCholesky): each rank factorizes the skeleton dofs only its part touches,
+/// and the dofs between parts and the trailing set form a small dense interface problem whose trailing block gives B
+/// A⁻¹ Bᵀ; or by MUMPS on an MPIAIJ matrix (DistributedCholesky), whose Schur complement on the trailing set gives B
+/// A⁻¹ Bᵀ the same way; or kept unassembled as MATIS, each rank's part its subdomain, and solved by CG + BDDC
+/// (BddcSolver), B A⁻¹ Bᵀ again by solves.
 class CondensedFactor {
  public:
   /// `trailing`: dofs (skeleton dofs only) ordered last in the factorization of S.
@@ -117,14 +117,13 @@ class CondensedFactor {
   /// The same with each rank's share at its local skeleton dofs.
   Eigen::MatrixXd skeleton_solve_local(const Eigen::MatrixXd& partial_rhs) const;
   /// −Σ_T (A_ii⁻¹ A_is)ᵀ f_i over this rank's cells, on the skeleton rows (n_skeleton_rows of them);
-  /// rhs and the result held at `rows` (null: global order).
-  Eigen::MatrixXd interior_corrections(const Eigen::MatrixXd& rhs, const std::vector<int>* rows,
-                                       Eigen::Index n_skeleton_rows) const;
+  /// rhs and the result held at the local dofs when `local`, else in global order.
+  Eigen::MatrixXd interior_corrections(const Eigen::MatrixXd& rhs, bool local, Eigen::Index n_skeleton_rows) const;
   /// u_i = A_ii⁻¹ (f_i − A_is u_s) for this rank's cells into `solution`, whose skeleton rows
-  /// hold u_s; all held at `rows` (null: global order).
-  void recover_interiors(const Eigen::MatrixXd& rhs, const std::vector<int>* rows, Eigen::MatrixXd& solution) const;
-  /// Σ over this rank's cells (summed over the ranks) of uᵀ A_T u, u held at `rows` (null: global).
-  double cell_quadratic_forms(const Eigen::VectorXd& u, const std::vector<int>* rows) const;
+  /// hold u_s; all held at the local dofs when `local`, else in global order.
+  void recover_interiors(const Eigen::MatrixXd& rhs, bool local, Eigen::MatrixXd& solution) const;
+  /// Σ over this rank's cells (summed over the ranks) of uᵀ A_T u, u held at the local dofs when `local`.
+  double cell_quadratic_forms(const Eigen::VectorXd& u, bool local) const;
 
   std::unique_ptr<const CellSystem> system_;
   int size_ = 0;
@@ -132,6 +131,8 @@ class CondensedFactor {
   std::vector<int> block_of_cell_;
   int n_trailing_ = 0;
   std::vector<int> local_dofs_;                     ///< see local_dofs()
+  std::vector<long> cell_row_start_;                ///< per own cell: its first entry of cell_rows_ (distributed)
+  std::vector<int> cell_rows_;                      ///< the local rows of the own cells' shapes (−1: Dirichlet)
   std::vector<char> own_cells_;                     ///< per cell: eliminated here (distributed)
   std::vector<char> counts_dof_;                    ///< per local dof: this rank is the lowest holding it (distributed)
   int n_local_skeleton_ = 0;                        ///< local dofs in the skeleton (the first ones)

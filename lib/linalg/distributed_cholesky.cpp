@@ -216,7 +216,8 @@ Eigen::MatrixXd DistributedCholesky::multiply_owned(const Eigen::MatrixXd& owned
 }
 
 Eigen::MatrixXd DistributedCholesky::solve_owned(const Eigen::MatrixXd& owned_rhs) const {
-  if (owned_rhs.cols() == 0 || impl_->trailing.empty()) return mumps_owned(owned_rhs);
+  if (owned_rhs.cols() == 0) return Eigen::MatrixXd(owned_rhs.rows(), 0);  // (MUMPS refuses no columns)
+  if (impl_->trailing.empty()) return mumps_owned(owned_rhs);
   // [A_II A_IT; A_TI A_TT] x = b: y = A_II⁻¹ b_I, S_T x_T = b_T − A_TI y, x_I = A_II⁻¹ (b_I − A_IT x_T).
   const auto& trailing = impl_->trailing;
   const auto begin = impl_->row_begin, end = impl_->row_end;

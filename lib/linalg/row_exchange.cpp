@@ -41,21 +41,38 @@ RowExchange::~RowExchange() = default;
 RowExchange::RowExchange(RowExchange&&) noexcept = default;
 RowExchange& RowExchange::operator=(RowExchange&&) noexcept = default;
 
+namespace {
+
+// An array placed into a layout Vec for one scatter, taken out again also when the scatter throws
+// (a Vec left holding a placed array refuses the next VecPlaceArray).
+class PlacedArray {
+ public:
+  PlacedArray(Vec vector, double* array) : vector_(vector) { HPC_PETSC_CALL(VecPlaceArray(vector, array)); }
+  ~PlacedArray() { VecResetArray(vector_); }
+  PlacedArray(const PlacedArray&) = delete;
+  PlacedArray& operator=(const PlacedArray&) = delete;
+
+ private:
+  Vec vector_;
+};
+
+}  // namespace
+
+void RowExchange::scatter(double* owned, double* local, InsertMode mode, ScatterMode direction) const {
+  const PlacedArray owned_column(impl_->owned.get(), owned), local_column(impl_->local.get(), local);
+  Vec from = impl_->owned.get(), to = impl_->local.get();
+  if (direction == SCATTER_REVERSE) std::swap(from, to);
+  HPC_PETSC_CALL(VecScatterBegin(impl_->scatter.get(), from, to, mode, direction));
+  HPC_PETSC_CALL(VecScatterEnd(impl_->scatter.get(), from, to, mode, direction));
+}
+
 Eigen::MatrixXd RowExchange::sum_to_owned(const Eigen::MatrixXd& partial) const {
   HPC_VERIFY(partial.rows() == static_cast<Eigen::Index>(local_.size()), "row exchange: wrong number of local rows");
   // Every rank loops over the same column count (the caller's k is the same on every rank).
   Eigen::MatrixXd owned = Eigen::MatrixXd::Zero(owned_rows(), partial.cols());
   Eigen::MatrixXd source = partial;  // VecPlaceArray takes a non-const array
-  for (Eigen::Index j = 0; j < partial.cols(); ++j) {
-    HPC_PETSC_CALL(VecPlaceArray(impl_->owned.get(), owned.col(j).data()));
-    HPC_PETSC_CALL(VecPlaceArray(impl_->local.get(), source.col(j).data()));
-    HPC_PETSC_CALL(
-        VecScatterBegin(impl_->scatter.get(), impl_->local.get(), impl_->owned.get(), ADD_VALUES, SCATTER_REVERSE));
-    HPC_PETSC_CALL(
-        VecScatterEnd(impl_->scatter.get(), impl_->local.get(), impl_->owned.get(), ADD_VALUES, SCATTER_REVERSE));
-    HPC_PETSC_CALL(VecResetArray(impl_->owned.get()));
-    HPC_PETSC_CALL(VecResetArray(impl_->local.get()));
-  }
+  for (Eigen::Index j = 0; j < partial.cols(); ++j)
+    scatter(owned.col(j).data(), source.col(j).data(), ADD_VALUES, SCATTER_REVERSE);
   return owned;
 }
 
@@ -63,35 +80,19 @@ Eigen::MatrixXd RowExchange::owned_to_local(const Eigen::MatrixXd& owned) const 
   HPC_VERIFY(owned.rows() == owned_rows(), "row exchange: wrong number of owned rows");
   Eigen::MatrixXd local(static_cast<Eigen::Index>(local_.size()), owned.cols());
   Eigen::MatrixXd source = owned;
-  for (Eigen::Index j = 0; j < owned.cols(); ++j) {
-    HPC_PETSC_CALL(VecPlaceArray(impl_->owned.get(), source.col(j).data()));
-    HPC_PETSC_CALL(VecPlaceArray(impl_->local.get(), local.col(j).data()));
-    HPC_PETSC_CALL(
-        VecScatterBegin(impl_->scatter.get(), impl_->owned.get(), impl_->local.get(), INSERT_VALUES, SCATTER_FORWARD));
-    HPC_PETSC_CALL(
-        VecScatterEnd(impl_->scatter.get(), impl_->owned.get(), impl_->local.get(), INSERT_VALUES, SCATTER_FORWARD));
-    HPC_PETSC_CALL(VecResetArray(impl_->owned.get()));
-    HPC_PETSC_CALL(VecResetArray(impl_->local.get()));
-  }
+  for (Eigen::Index j = 0; j < owned.cols(); ++j)
+    scatter(source.col(j).data(), local.col(j).data(), INSERT_VALUES, SCATTER_FORWARD);
   return local;
 }
 
 std::vector<char> RowExchange::lowest_rank_holds() const {
-  const int rank = rank_;
   // The largest −rank over the holders of each owned row is −(the lowest holder).
-  Eigen::MatrixXd minus_rank = Eigen::MatrixXd::Constant(static_cast<Eigen::Index>(local_.size()), 1, -rank);
-  Eigen::MatrixXd owned = Eigen::MatrixXd::Constant(owned_rows(), 1, -std::numeric_limits<double>::infinity());
-  HPC_PETSC_CALL(VecPlaceArray(impl_->owned.get(), owned.data()));
-  HPC_PETSC_CALL(VecPlaceArray(impl_->local.get(), minus_rank.data()));
-  HPC_PETSC_CALL(
-      VecScatterBegin(impl_->scatter.get(), impl_->local.get(), impl_->owned.get(), MAX_VALUES, SCATTER_REVERSE));
-  HPC_PETSC_CALL(
-      VecScatterEnd(impl_->scatter.get(), impl_->local.get(), impl_->owned.get(), MAX_VALUES, SCATTER_REVERSE));
-  HPC_PETSC_CALL(VecResetArray(impl_->owned.get()));
-  HPC_PETSC_CALL(VecResetArray(impl_->local.get()));
+  Eigen::VectorXd minus_rank = Eigen::VectorXd::Constant(static_cast<Eigen::Index>(local_.size()), -rank_);
+  Eigen::VectorXd owned = Eigen::VectorXd::Constant(owned_rows(), -std::numeric_limits<double>::infinity());
+  scatter(owned.data(), minus_rank.data(), MAX_VALUES, SCATTER_REVERSE);
   const Eigen::MatrixXd lowest = owned_to_local(owned);
   std::vector<char> holds(local_.size());
-  for (std::size_t k = 0; k < local_.size(); ++k) holds[k] = lowest(static_cast<Eigen::Index>(k), 0) == -rank;
+  for (std::size_t k = 0; k < local_.size(); ++k) holds[k] = lowest(static_cast<Eigen::Index>(k), 0) == -rank_;
   return holds;
 }
 

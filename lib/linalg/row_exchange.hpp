@@ -5,6 +5,7 @@
 #pragma once
 
 #include <mpi.h>
+#include <petscvec.h>
 
 #include <Eigen/Core>
 #include <memory>
@@ -34,6 +35,10 @@ class RowExchange {
   std::vector<char> lowest_rank_holds() const;
 
  private:
+  /// One column between the owned rows and the local unknowns (both arrays of the caller's),
+  /// forward (owned → local) or reverse (local → owned, combined by `mode`). Collective.
+  void scatter(double* owned, double* local, InsertMode mode, ScatterMode direction) const;
+
   struct Impl;
   std::unique_ptr<Impl> impl_;
   std::vector<int> local_;

@@ -1,7 +1,8 @@
 // Sparse symmetric positive definite direct solver over the MPI ranks by substructuring: every
 // rank factorizes (CHOLMOD) the unknowns only its own entries touch, and the unknowns shared
 // between ranks plus a trailing set (the Γ_C trace) form a small dense interface problem that
-// every rank holds. Right-hand sides and results are replicated on every rank.
+// every rank holds. Right-hand sides and results either replicated on every rank or held on the
+// unknowns each rank touches (solve_local).
 #pragma once
 
 #include <mpi.h>
