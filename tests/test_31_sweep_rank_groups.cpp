@@ -132,8 +132,8 @@ TEST(SweepRankGroups, UnitSolvesRunOnTheGroupsRanks) {
   EXPECT_EQ(result.output.find("KSP Object: (bddc_) 1 MPI process"), std::string::npos);
 }
 
-// Groups must divide the ranks; elastic levels run on one rank. Exit 2 naming the option, on
-// every rank alike, before anything is computed.
+// Groups must divide the ranks. Exit 2 naming the option, on every rank alike, before anything is
+// computed.
 TEST(SweepRankGroups, GroupSizesThatDoNotFitAreRefused) {
   const auto dir = scratch("sweep_groups_bad");
   const auto sweep = write_sweep(dir);
@@ -143,13 +143,21 @@ TEST(SweepRankGroups, GroupSizesThatDoNotFitAreRefused) {
   EXPECT_NE(uneven.output.find("key '--ranks-per-unit' = 2: a divisor of the 3 ranks"), std::string::npos)
       << uneven.output;
   EXPECT_FALSE(std::filesystem::exists(dir / "a" / "alpha.csv"));
+}
+
+// An elastic scene's units over a group of two ranks (its factors distributed like the scalar
+// model's): the serial α.
+TEST(SweepRankGroups, ElasticUnitsOnGroupsGiveTheSerialAlpha) {
+  const auto dir = scratch("sweep_groups_elastic");
   std::ofstream(dir / "elastic.toml") << "[sweep]\nscene = \"" HPCONTACT_SOURCE_DIR
-                                         "/studies/elasticity/square.toml\"\np = [2]\npC = [1]\n";
-  const auto elastic =
-      run_command(kMpi + "timeout 120 mpirun -n 2 --oversubscribe " HPCONTACT_CLI " sweep " +
-                  (dir / "elastic.toml").string() + " --out " + (dir / "b").string() + " --ranks-per-unit 2");
-  EXPECT_EQ(elastic.exit_code, 2) << elastic.output;
-  EXPECT_NE(elastic.output.find("elastic operators are built on one rank"), std::string::npos) << elastic.output;
+                                         "/studies/elasticity/square.toml\"\np = [1, 2]\npC = [0, 1]\n";
+  const std::string sweep = (dir / "elastic.toml").string();
+  const auto serial = run_command(kMpi + HPCONTACT_CLI " sweep " + sweep + " --out " + (dir / "serial").string());
+  ASSERT_EQ(serial.exit_code, 0) << serial.output;
+  const auto groups = run_command(kMpi + "timeout 300 mpirun -n 2 --oversubscribe " HPCONTACT_CLI " sweep " + sweep +
+                                  " --out " + (dir / "groups").string() + " --ranks-per-unit 2");
+  ASSERT_EQ(groups.exit_code, 0) << groups.output;
+  expect_equal_sweeps(dir / "serial" / "alpha.csv", dir / "groups" / "alpha.csv");
 }
 
 // A PETSc error raised by every rank of a group (an unknown KSP type for the unit's BDDC solver)

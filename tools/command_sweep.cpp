@@ -61,7 +61,7 @@ void add_sweep_command(CLI::App& app, CommandAction& action) {
           shard_text->empty() ? studies::SweepShard{} : studies::parse_sweep_shard(*shard_text, "command line");
       const studies::SweepRanks sweep_ranks{
           *ranks_per_unit, linalg::parse_distributed_solver(*solver_text, "command line", "--distributed-solver")};
-      studies::check_sweep_ranks(sweep, sweep_ranks, mpi_rank_and_size().second);
+      studies::check_sweep_ranks(sweep_ranks, mpi_rank_and_size().second);
       io::ensure_writable_directory(*out_dir);
       const auto alpha_csv = std::filesystem::path(*out_dir) / "alpha.csv";
       const auto verdicts_csv = std::filesystem::path(*out_dir) / "verdicts.csv";

@@ -41,6 +41,11 @@ class CellSystem {
   /// one type with equal Jacobian, degrees and coefficients); empty where the cell has no
   /// congruent partner to look for.
   virtual std::optional<CongruenceKey> congruence_key(int cell) const = 0;
+  /// The motions without energy of the operator's continuous form (elasticity's rigid motions),
+  /// interpolated on the cell: shape (n, k), rows as cell_dofs(cell), coefficients of the cell's
+  /// (unsigned) local shapes. A near null space for solvers that build coarse spaces (BDDC); k = 0 (the
+  /// default) where the form has none to tell.
+  virtual Eigen::MatrixXd null_motions(int /*cell*/) const { return Eigen::MatrixXd(0, 0); }
 };
 
 /// Each cell's unknowns (Dirichlet ones included): the weight by which the cells are split over

@@ -123,7 +123,7 @@ CondensedFactor::CondensedFactor(std::unique_ptr<const CellSystem> system, const
       mumps_ = std::make_unique<linalg::DistributedCholesky>(ranks, n_skeleton, lower, trailing);
       break;
     case linalg::DistributedSolver::bddc:
-      bddc_ = std::make_unique<linalg::BddcSolver>(ranks, n_skeleton, lower);
+      bddc_ = std::make_unique<linalg::BddcSolver>(ranks, n_skeleton, lower, 1e-12, local_null_motions());
       break;
   }
   // The skeleton solver's local unknowns are the skeleton dofs of the rank's cells (each has its
@@ -182,6 +182,24 @@ void CondensedFactor::find_local_dofs() {
     counts_dof_ = linalg::RowExchange(distribution_.ranks, size_, block_start(rank), block_start(rank + 1), local_dofs_)
                       .lowest_rank_holds();
   }
+}
+
+Eigen::MatrixXd CondensedFactor::local_null_motions() const {
+  // The count from cell 0, which every rank's mesh has (a rank may own no cell).
+  const auto k = system_->mesh().n_cells() > 0 ? system_->null_motions(0).cols() : 0;
+  Eigen::MatrixXd motions = Eigen::MatrixXd::Zero(n_local_skeleton_, k);
+  if (k == 0) return motions;
+  std::vector<CellDof> dofs;
+  for (int c = 0; c < static_cast<int>(block_of_cell_.size()); ++c) {
+    if (block_of_cell_[c] < 0) continue;
+    system_->cell_dofs(c, dofs);
+    const Eigen::MatrixXd cell = system_->null_motions(c);
+    const int* rows = cell_rows_.data() + cell_row_start_[c];
+    // (a shared vertex gets the same values from each of its cells)
+    for (std::size_t s = 0; s < dofs.size(); ++s)
+      if (dofs[s].dof >= 0 && !dofs[s].interior) motions.row(rows[s]) = dofs[s].sign * cell.row(s);
+  }
+  return motions;
 }
 
 Eigen::MatrixXd CondensedFactor::share_of(const Eigen::MatrixXd& whole) const {

@@ -112,6 +112,8 @@ class CondensedFactor {
   std::vector<Eigen::Triplet<double>> eliminate_interiors(const std::vector<char>& contributes);
   /// local_dofs_ and n_local_skeleton_ from the rank's cells.
   void find_local_dofs();
+  /// The system's null motions at the local skeleton dofs (distributed; BDDC's near null space).
+  Eigen::MatrixXd local_null_motions() const;
   /// S⁻¹ rhs on the skeleton, shape (n_skeleton, k).
   Eigen::MatrixXd skeleton_solve(const Eigen::MatrixXd& rhs) const;
   /// The same with each rank's share at its local skeleton dofs.

@@ -77,6 +77,20 @@ Eigen::MatrixXd ElasticCellSystem::element_matrix(int cell) const {
   return a;
 }
 
+Eigen::MatrixXd ElasticCellSystem::null_motions(int cell) const {
+  const auto& shapes = space_->scalar().cell_shapes(cell);
+  const auto vertices = mesh().cell(cell);
+  Eigen::MatrixXd motions = Eigen::MatrixXd::Zero(space::kComponents * shapes.size(), 3);
+  for (std::size_t s = 0; s < shapes.size(); ++s) {
+    if (shapes[s].role != space::ShapeRole::vertex) continue;
+    const mesh::Point& x = mesh().vertex(vertices[shapes[s].entity]);
+    const auto row = static_cast<Eigen::Index>(space::kComponents * s);
+    motions(row, 0) = 1.0, motions(row + 1, 1) = 1.0;
+    motions(row, 2) = -x.y(), motions(row + 1, 2) = x.x();
+  }
+  return motions;
+}
+
 std::optional<CongruenceKey> ElasticCellSystem::congruence_key(int cell) const {
   auto key = affine_key(space_->scalar(), cell, true);
   if (key) {  // equal geometry and degrees give equal matrices only with equal coefficients

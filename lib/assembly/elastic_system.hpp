@@ -48,6 +48,9 @@ class ElasticCellSystem final : public CellSystem {
   void cell_dofs(int cell, std::vector<CellDof>& out) const override;
   Eigen::MatrixXd element_matrix(int cell) const override;
   std::optional<CongruenceKey> congruence_key(int cell) const override;
+  /// The rigid motions (1, 0), (0, 1), (−y, x) at the cell's vertex shapes, zero elsewhere: exact
+  /// on affine cells (the vertex shapes reproduce linear functions), near elsewhere.
+  Eigen::MatrixXd null_motions(int cell) const override;
 
  private:
   const space::VectorSpace* space_;

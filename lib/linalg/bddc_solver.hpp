@@ -32,8 +32,12 @@ class BddcSolver {
   /// CHOLMOD's to 1e-13; round-off stalls CG near 1e-14 on these systems, so do not ask for less).
   /// PETSc options with the prefix "bddc_" (e.g. -bddc_ksp_monitor, -bddc_ksp_rtol 1e-10)
   /// adjust the solver. Collective on `ranks`, which must outlive the solver.
+  /// `near_null_space`: motions of (almost) zero energy at the unknowns this rank's entries touch
+  /// (ascending; equal where ranks share an unknown; the same number of columns on every rank),
+  /// e.g. elasticity's rigid motions, attached to the matrix; BDDC adds them to its coarse space
+  /// under -bddc_pc_bddc_use_nnsp 1 (off by default: see the constructor). Empty: none.
   BddcSolver(MPI_Comm ranks, int n, const std::vector<Eigen::Triplet<double>>& lower_entries,
-             double relative_tolerance = 1e-12);
+             double relative_tolerance = 1e-12, const Eigen::MatrixXd& near_null_space = {});
   ~BddcSolver();
   BddcSolver(BddcSolver&&) noexcept;
   BddcSolver& operator=(BddcSolver&&) noexcept;

@@ -76,6 +76,15 @@ Eigen::MatrixXd RowExchange::sum_to_owned(const Eigen::MatrixXd& partial) const 
   return owned;
 }
 
+Eigen::MatrixXd RowExchange::consistent_to_owned(const Eigen::MatrixXd& local) const {
+  HPC_VERIFY(local.rows() == static_cast<Eigen::Index>(local_.size()), "row exchange: wrong number of local rows");
+  Eigen::MatrixXd owned = Eigen::MatrixXd::Zero(owned_rows(), local.cols());
+  Eigen::MatrixXd source = local;
+  for (Eigen::Index j = 0; j < local.cols(); ++j)  // (any holder's value: they are equal)
+    scatter(owned.col(j).data(), source.col(j).data(), INSERT_VALUES, SCATTER_REVERSE);
+  return owned;
+}
+
 Eigen::MatrixXd RowExchange::owned_to_local(const Eigen::MatrixXd& owned) const {
   HPC_VERIFY(owned.rows() == owned_rows(), "row exchange: wrong number of owned rows");
   Eigen::MatrixXd local(static_cast<Eigen::Index>(local_.size()), owned.cols());

@@ -27,6 +27,9 @@ class RowExchange {
   /// b = Σ_r b_r: each rank's share on its local unknowns (local().size() × k) in, the rank's
   /// owned rows of the sum out. Collective.
   Eigen::MatrixXd sum_to_owned(const Eigen::MatrixXd& partial) const;
+  /// The owned rows of x, given x at every rank's local unknowns (equal where ranks share one).
+  /// Collective.
+  Eigen::MatrixXd consistent_to_owned(const Eigen::MatrixXd& local) const;
   /// The rows at the rank's local unknowns of x, given each rank's owned rows of x. Collective.
   Eigen::MatrixXd owned_to_local(const Eigen::MatrixXd& owned) const;
   /// For each local unknown, whether this rank is the lowest of the ranks holding it: the one rank

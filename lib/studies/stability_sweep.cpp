@@ -189,7 +189,7 @@ struct GroupMesh {
         contact(mesh),
         cell_degrees(scene::scene_cell_degrees(scene, mesh)),
         primal(mesh, cell_degrees, nullptr, distribution) {
-    if (scene.is_elastic()) elastic = driver::scene_elastic_operators(scene, mesh, cell_degrees);
+    if (scene.is_elastic()) elastic = driver::scene_elastic_operators(scene, mesh, cell_degrees, nullptr, distribution);
   }
 };
 
@@ -288,18 +288,12 @@ void merge_sweep_shards(const StabilitySweep& sweep, const std::vector<std::file
   io::write_file_atomically(alpha_csv, merged.content());
 }
 
-void check_sweep_ranks(const StabilitySweep& sweep, const SweepRanks& sweep_ranks, int ranks) {
+void check_sweep_ranks(const SweepRanks& sweep_ranks, int ranks) {
   const std::string value = std::to_string(sweep_ranks.per_unit);
   if (sweep_ranks.per_unit < 1 || ranks % sweep_ranks.per_unit != 0)
     throw_bad_input("command line", "--ranks-per-unit", value,
                     fmt::format("a divisor of the {} rank{} of this run (the ranks form groups of equal size)", ranks,
                                 ranks > 1 ? "s" : ""));
-  if (sweep_ranks.per_unit > 1)
-    for (std::size_t level = 0; level < sweep.levels.size(); ++level)
-      if (sweep.levels[level].scene.is_elastic())
-        throw_bad_input("command line", "--ranks-per-unit", value,
-                        fmt::format("1 for this sweep: {} is elastic, and elastic operators are built on one rank",
-                                    level_name(sweep, level)));
 }
 
 bool run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::path& alpha_csv,
@@ -309,7 +303,7 @@ bool run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::pat
   // plan of what is left. A group's leader (its rank 0) takes the units and keeps their rows.
   const int rank = mpi_rank_and_size().first;
   const int size = mpi_rank_and_size().second;
-  check_sweep_ranks(sweep, sweep_ranks, size);
+  check_sweep_ranks(sweep_ranks, size);
   const RankGroups groups(sweep_ranks.per_unit);
   const bool leader = groups.rank_in_group() == 0;
   const int workers = groups.n_groups();

@@ -75,9 +75,8 @@ struct SweepRanks {
   int per_unit = 1;
   linalg::DistributedSolver solver = linalg::DistributedSolver::substructuring;
 };
-/// @throws InputError naming --ranks-per-unit unless it divides `ranks` (and is 1 for a sweep
-/// with elastic levels, which run on one rank).
-void check_sweep_ranks(const StabilitySweep& sweep, const SweepRanks& sweep_ranks, int ranks);
+/// @throws InputError naming --ranks-per-unit unless it divides `ranks`.
+void check_sweep_ranks(const SweepRanks& sweep_ranks, int ranks);
 
 /// Runs every point (of `shard`) not already in `alpha_csv` (resumable), rewriting the file
 /// atomically after each group of points sharing (level, p). `progress(done, total, label)` is
