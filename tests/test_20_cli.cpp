@@ -451,13 +451,16 @@ TEST(Cli, SolveUnderMpirunGivesTheSerialSolutionAndAlpha) {
       {HPCONTACT_SOURCE_DIR "/studies/elasticity/square", "frictionless,infsup"},
       {HPCONTACT_SOURCE_DIR "/studies/curved/ring", "frictionless"},
       {(scenes / "dirichlet_data").string(), "signorini"}};
-  const std::vector<std::pair<int, std::string>> launches{{2, "substructuring"}, {3, "bddc"}, {2, "mumps"}};
+  // (the last: the ring's rigid motions in BDDC's coarse space, as PETSc's near null space)
+  const std::vector<std::pair<int, std::string>> launches{
+      {2, "substructuring"}, {3, "bddc"}, {2, "mumps"}, {3, "bddc -bddc_pc_bddc_use_nnsp 1"}};
   for (const auto& [scene, effects] : cases) {
     const auto dir = scratch("solve_mpi_" + scene.substr(scene.rfind('/') + 1));
     const std::string arguments = " solve " + scene + ".toml --effects " + effects;
     const auto serial = run_command(env + HPCONTACT_CLI + arguments + " --out " + (dir / "serial").string());
     ASSERT_EQ(serial.exit_code, 0) << serial.output;
     for (const auto& [ranks, solver] : launches) {
+      if (solver.find("nnsp") != std::string::npos && scene.find("ring") == std::string::npos) continue;
       const std::string launch = "mpirun -n " + std::to_string(ranks) + " --distributed-solver " + solver;
       const auto parallel =
           run_command(env + "mpirun -n " + std::to_string(ranks) + " --oversubscribe " HPCONTACT_CLI + arguments +

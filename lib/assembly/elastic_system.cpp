@@ -28,6 +28,7 @@ ElasticCellSystem::ElasticCellSystem(const space::VectorSpace& space, std::vecto
     : space_(&space), materials_(std::move(materials)), mass_weight_(mass_weight), element_(space.scalar()) {
   if (static_cast<int>(materials_.size()) != mesh().n_cells())
     throw InputError(fmt::format("{} materials given for {} cells", materials_.size(), mesh().n_cells()));
+  for (const auto& x : mesh().vertices()) centre_ += x / static_cast<double>(mesh().n_vertices());
 }
 
 int ElasticCellSystem::n_dofs() const { return space_->n_dofs(); }
@@ -86,7 +87,8 @@ Eigen::MatrixXd ElasticCellSystem::null_motions(int cell) const {
     const mesh::Point& x = mesh().vertex(vertices[shapes[s].entity]);
     const auto row = static_cast<Eigen::Index>(space::kComponents * s);
     motions(row, 0) = 1.0, motions(row + 1, 1) = 1.0;
-    motions(row, 2) = -x.y(), motions(row + 1, 2) = x.x();
+    // (about the vertices' centroid: about a far-away point the rotation is nearly a translation)
+    motions(row, 2) = -(x.y() - centre_.y()), motions(row + 1, 2) = x.x() - centre_.x();
   }
   return motions;
 }

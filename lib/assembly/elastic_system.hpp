@@ -48,7 +48,8 @@ class ElasticCellSystem final : public CellSystem {
   void cell_dofs(int cell, std::vector<CellDof>& out) const override;
   Eigen::MatrixXd element_matrix(int cell) const override;
   std::optional<CongruenceKey> congruence_key(int cell) const override;
-  /// The rigid motions (1, 0), (0, 1), (−y, x) at the cell's vertex shapes, zero elsewhere: exact
+  /// The rigid motions (1, 0), (0, 1), (−y, x) (about the vertices' centroid) at the cell's vertex
+  /// shapes, zero elsewhere: exact
   /// on affine cells (the vertex shapes reproduce linear functions), near elsewhere.
   Eigen::MatrixXd null_motions(int cell) const override;
 
@@ -56,6 +57,7 @@ class ElasticCellSystem final : public CellSystem {
   const space::VectorSpace* space_;
   std::vector<Material> materials_;
   double mass_weight_;
+  mesh::Point centre_ = mesh::Point(0.0, 0.0);  ///< the vertices' centroid, the rotation's centre
   mutable ElementMatrices element_;
 };
 

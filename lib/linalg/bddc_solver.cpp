@@ -28,30 +28,35 @@ struct BddcSolver::Impl {
 namespace {
 
 // The columns of `owned_rows` (this rank's rows of k vectors) orthonormalized (modified
-// Gram–Schmidt, as MatNullSpaceCreate asks) and attached to `a` as its near null space.
+// Gram–Schmidt, as MatNullSpaceCreate asks) and attached to `a` as its near null space. A column
+// that the others (nearly) span, or that vanishes (its component fixed at every free vertex), is
+// dropped: the norms are global, so every rank drops the same ones.
 void set_near_null_space(Mat a, const Eigen::MatrixXd& owned_rows) {
-  const auto k = static_cast<PetscInt>(owned_rows.cols());
-  std::vector<PetscHandle<Vec, VecDestroy>> handles(k);
-  std::vector<Vec> vectors(k);
-  for (PetscInt j = 0; j < k; ++j) {
-    HPC_PETSC_CALL(MatCreateVecs(a, handles[j].out(), nullptr));
-    vectors[j] = handles[j].get();
+  std::vector<PetscHandle<Vec, VecDestroy>> handles;
+  std::vector<Vec> vectors;
+  for (Eigen::Index j = 0; j < owned_rows.cols(); ++j) {
+    PetscHandle<Vec, VecDestroy> column;
+    HPC_PETSC_CALL(MatCreateVecs(a, column.out(), nullptr));
     PetscScalar* array = nullptr;
-    HPC_PETSC_CALL(VecGetArray(vectors[j], &array));
+    HPC_PETSC_CALL(VecGetArray(column.get(), &array));
     std::copy(owned_rows.col(j).data(), owned_rows.col(j).data() + owned_rows.rows(), array);
-    HPC_PETSC_CALL(VecRestoreArray(vectors[j], &array));
-    for (PetscInt i = 0; i < j; ++i) {
+    HPC_PETSC_CALL(VecRestoreArray(column.get(), &array));
+    PetscReal before = 0.0, after = 0.0;
+    HPC_PETSC_CALL(VecNorm(column.get(), NORM_2, &before));
+    for (Vec kept : vectors) {
       PetscScalar dot = 0.0;
-      HPC_PETSC_CALL(VecDot(vectors[j], vectors[i], &dot));
-      HPC_PETSC_CALL(VecAXPY(vectors[j], -dot, vectors[i]));
+      HPC_PETSC_CALL(VecDot(column.get(), kept, &dot));
+      HPC_PETSC_CALL(VecAXPY(column.get(), -dot, kept));
     }
-    PetscReal norm = 0.0;
-    HPC_PETSC_CALL(VecNormalize(vectors[j], &norm));
-    HPC_VERIFY(norm > 0.0, "BDDC: the near null space's motions are linearly dependent");
+    HPC_PETSC_CALL(VecNormalize(column.get(), &after));
+    if (!(after > 1e-10 * before)) continue;
+    vectors.push_back(column.get());
+    handles.push_back(std::move(column));
   }
+  if (vectors.empty()) return;
   PetscHandle<MatNullSpace, MatNullSpaceDestroy> space;
-  HPC_PETSC_CALL(MatNullSpaceCreate(PetscObjectComm(reinterpret_cast<PetscObject>(a)), PETSC_FALSE, k, vectors.data(),
-                                    space.out()));
+  HPC_PETSC_CALL(MatNullSpaceCreate(PetscObjectComm(reinterpret_cast<PetscObject>(a)), PETSC_FALSE,
+                                    static_cast<PetscInt>(vectors.size()), vectors.data(), space.out()));
   HPC_PETSC_CALL(MatSetNearNullSpace(a, space.get()));
 }
 
@@ -100,8 +105,27 @@ BddcSolver::BddcSolver(MPI_Comm ranks, int n, const std::vector<Eigen::Triplet<d
   HPC_PETSC_CALL(MatGetOwnershipRange(a, &impl_->row_begin, &impl_->row_end));
   impl_->exchange.emplace(ranks, n, static_cast<int>(impl_->row_begin), static_cast<int>(impl_->row_end),
                           std::vector<int>(global.begin(), global.end()));
-  if (near_null_space.cols() > 0) {
-    HPC_VERIFY(near_null_space.rows() == n_local, "BDDC: near null space not at the rank's unknowns");
+  // A subdomain that touches no Dirichlet part floats: its Neumann problem is singular (constants,
+  // or elasticity's rigid motions, which BDDC's vertex and edge constraints remove only from the
+  // coarse problem), and PETSc's own LU stops on the zero pivot. MUMPS with null-pivot detection
+  // (ICNTL(24)) solves it; set unless the user chose otherwise. The near null space (elasticity's
+  // rigid motions) joins the coarse space only under -bddc_pc_bddc_use_nnsp 1: it made CG converge on a 526k-dof
+  // elastic square on 2 ranks (2000 iterations without), but its preconditioner indefinite on the 8 × 8 elastic square
+  // on 3 ranks (PETSc 3.18).
+  for (const auto& [name, value] :
+       {std::pair{"-bddc_pc_bddc_neumann_pc_factor_mat_solver_type", "mumps"},
+        std::pair{"-bddc_pc_bddc_neumann_mat_mumps_icntl_24", "1"}, std::pair{"-bddc_pc_bddc_use_nnsp", "0"}}) {
+    PetscBool set = PETSC_FALSE;
+    HPC_PETSC_CALL(PetscOptionsHasName(nullptr, nullptr, name, &set));
+    if (!set) HPC_PETSC_CALL(PetscOptionsSetValue(nullptr, name, value));
+  }
+  PetscBool use_motions = PETSC_FALSE;
+  HPC_PETSC_CALL(PetscOptionsGetBool(nullptr, nullptr, "-bddc_pc_bddc_use_nnsp", &use_motions, nullptr));
+  if (use_motions && near_null_space.cols() > 0) {
+    // (agreed over the ranks: one rank failing alone would leave the others in the scatter below)
+    int fits = near_null_space.rows() == n_local ? 1 : 0;
+    MPI_Allreduce(MPI_IN_PLACE, &fits, 1, MPI_INT, MPI_LAND, ranks);
+    HPC_VERIFY(fits, "BDDC: near null space not at the ranks' unknowns");
     set_near_null_space(a, impl_->exchange->consistent_to_owned(near_null_space));
   }
   // 3. CG + BDDC with PETSc's default (multiplicity) scaling: deluxe scaling fails in Debian 12's
@@ -121,20 +145,6 @@ BddcSolver::BddcSolver(MPI_Comm ranks, int n, const std::vector<Eigen::Triplet<d
   // annulus) the preconditioned b is zero, so PETSc's default test reports DIVERGED_DTOL at
   // iteration 0.
   HPC_PETSC_CALL(KSPConvergedDefaultSetUIRNorm(ksp));
-  // A subdomain that touches no Dirichlet part floats: its Neumann problem is singular (constants,
-  // or elasticity's rigid motions, which BDDC's vertex and edge constraints remove only from the
-  // coarse problem), and PETSc's own LU stops on the zero pivot. MUMPS with null-pivot detection
-  // (ICNTL(24)) solves it; set unless the user chose otherwise. The near null space (elasticity's
-  // rigid motions) is attached but left out of the coarse space unless -bddc_pc_bddc_use_nnsp 1
-  // asks: it made CG converge on a 526k-dof elastic square on 2 ranks (2000 iterations without),
-  // but its preconditioner indefinite on the 8 × 8 elastic square on 3 ranks (PETSc 3.18).
-  for (const auto& [name, value] :
-       {std::pair{"-bddc_pc_bddc_neumann_pc_factor_mat_solver_type", "mumps"},
-        std::pair{"-bddc_pc_bddc_neumann_mat_mumps_icntl_24", "1"}, std::pair{"-bddc_pc_bddc_use_nnsp", "0"}}) {
-    PetscBool set = PETSC_FALSE;
-    HPC_PETSC_CALL(PetscOptionsHasName(nullptr, nullptr, name, &set));
-    if (!set) HPC_PETSC_CALL(PetscOptionsSetValue(nullptr, name, value));
-  }
   HPC_PETSC_CALL(KSPSetFromOptions(ksp));
   HPC_PETSC_CALL(KSPSetUp(ksp));
 }
