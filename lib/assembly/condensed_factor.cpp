@@ -360,6 +360,7 @@ void CondensedFactor::recover_interiors(const Eigen::MatrixXd& rhs, bool local, 
 
 Eigen::MatrixXd CondensedFactor::solve(const Eigen::MatrixXd& rhs) const {
   HPC_VERIFY(rhs.rows() == size_, "right-hand side of the wrong size");
+  if (rhs.cols() == 0) return Eigen::MatrixXd(size_, 0);  // (blocks of an empty matrix have no data)
   const int n_skeleton = this->n_skeleton();
   // f_s − A_si A_ii⁻¹ f_i: each rank subtracts its own cells' corrections, summed over the ranks.
   Eigen::MatrixXd condensed = interior_corrections(rhs, false, n_skeleton);
@@ -382,6 +383,7 @@ Eigen::MatrixXd CondensedFactor::solve_local(const Eigen::MatrixXd& partial_rhs)
   HPC_VERIFY(partial_rhs.rows() == static_cast<Eigen::Index>(local_dofs_.size()),
              "right-hand side share of the wrong size");
   if (!distribution_.distributed()) return solve(partial_rhs);
+  if (partial_rhs.cols() == 0) return Eigen::MatrixXd(partial_rhs.rows(), 0);
   // A cell's interior modes are its rank's alone, so their rows of the share are the whole
   // right-hand side, and the condensation adds up within the rank: the skeleton solver sums the
   // shares.

@@ -229,6 +229,7 @@ SubstructuredCholesky::Impl::Parts SubstructuredCholesky::Impl::solve_parts(
 
 Eigen::MatrixXd SubstructuredCholesky::solve(const Eigen::MatrixXd& rhs) const {
   HPC_VERIFY(rhs.rows() == size_, "right-hand side of the wrong size");
+  if (rhs.cols() == 0) return Eigen::MatrixXd(size_, 0);  // (blocks of an empty matrix have no data)
   const Impl& d = *impl_;
   // The interface rows are every rank's: rank 0 passes them as its share.
   const Eigen::MatrixXd interface_share = d.rank == 0 ? Eigen::MatrixXd(rhs(d.interface, Eigen::all))
@@ -247,6 +248,7 @@ Eigen::MatrixXd SubstructuredCholesky::solve_local(const Eigen::MatrixXd& partia
   const Impl& d = *impl_;
   HPC_VERIFY(partial_rhs.rows() == static_cast<Eigen::Index>(d.touched.size()),
              "right-hand side share of the wrong size");
+  if (partial_rhs.cols() == 0) return Eigen::MatrixXd(partial_rhs.rows(), 0);
   // An interior unknown is touched by this rank alone: its share is the whole right-hand side.
   Eigen::MatrixXd interface_share = Eigen::MatrixXd::Zero(d.interface.size(), partial_rhs.cols());
   interface_share(d.own_interface, Eigen::all) = partial_rhs(d.own_interface_slot, Eigen::all);
