@@ -224,12 +224,8 @@ Eigen::MatrixXd BddcSolver::solve_owned(const Eigen::MatrixXd& owned_rhs) const 
 
 Eigen::MatrixXd BddcSolver::solve(const Eigen::MatrixXd& rhs) const {
   HPC_VERIFY(rhs.rows() == size_, "right-hand side of the wrong size");
-  if (rhs.cols() == 0) return Eigen::MatrixXd(size_, 0);  // (blocks of an empty matrix have no data)
-  const PetscInt owned = impl_->row_end - impl_->row_begin;
-  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(size_, rhs.cols());
-  out.middleRows(impl_->row_begin, owned) = solve_owned(rhs.middleRows(impl_->row_begin, owned));
-  sum_over_ranks(ranks_, out.data(), out.size());  // each row is non-zero on its owner only
-  return out;
+  return solve_replicated(ranks_, static_cast<int>(impl_->row_begin), static_cast<int>(impl_->row_end), rhs,
+                          [this](const Eigen::MatrixXd& owned) { return solve_owned(owned); });
 }
 
 const std::vector<int>& BddcSolver::local_unknowns() const { return impl_->exchange->local(); }

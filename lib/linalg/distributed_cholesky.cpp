@@ -236,12 +236,8 @@ Eigen::MatrixXd DistributedCholesky::solve_owned(const Eigen::MatrixXd& owned_rh
 
 Eigen::MatrixXd DistributedCholesky::solve(const Eigen::MatrixXd& rhs) const {
   HPC_VERIFY(rhs.rows() == size_, "right-hand side of the wrong size");
-  if (rhs.cols() == 0) return Eigen::MatrixXd(size_, 0);  // (blocks of an empty matrix have no data)
-  const auto owned = impl_->row_end - impl_->row_begin;
-  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(size_, rhs.cols());
-  out.middleRows(impl_->row_begin, owned) = solve_owned(rhs.middleRows(impl_->row_begin, owned));
-  sum_over_ranks(ranks_, out.data(), out.size());  // each row is non-zero on its owner only
-  return out;
+  return solve_replicated(ranks_, static_cast<int>(impl_->row_begin), static_cast<int>(impl_->row_end), rhs,
+                          [this](const Eigen::MatrixXd& owned) { return solve_owned(owned); });
 }
 
 Eigen::MatrixXd DistributedCholesky::solve_local(const Eigen::MatrixXd& partial_rhs) const {

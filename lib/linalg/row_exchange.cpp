@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "core/petsc_check.hpp"
 #include "core/petsc_handle.hpp"
+#include "core/petsc_session.hpp"
 
 namespace hpcontact::linalg {
 
@@ -103,6 +104,16 @@ std::vector<char> RowExchange::lowest_rank_holds() const {
   std::vector<char> holds(local_.size());
   for (std::size_t k = 0; k < local_.size(); ++k) holds[k] = lowest(static_cast<Eigen::Index>(k), 0) == -rank_;
   return holds;
+}
+
+Eigen::MatrixXd solve_replicated(MPI_Comm ranks, int row_begin, int row_end, const Eigen::MatrixXd& rhs,
+                                 const std::function<Eigen::MatrixXd(const Eigen::MatrixXd&)>& solve_owned) {
+  const auto n = rhs.rows();
+  if (rhs.cols() == 0) return Eigen::MatrixXd(n, 0);  // (blocks of an empty matrix have no data)
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(n, rhs.cols());
+  out.middleRows(row_begin, row_end - row_begin) = solve_owned(rhs.middleRows(row_begin, row_end - row_begin));
+  sum_over_ranks(ranks, out.data(), out.size());  // each row is non-zero on its owner only
+  return out;
 }
 
 }  // namespace hpcontact::linalg

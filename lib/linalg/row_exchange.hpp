@@ -8,6 +8,7 @@
 #include <petscvec.h>
 
 #include <Eigen/Core>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -48,5 +49,11 @@ class RowExchange {
   int row_begin_ = 0, row_end_ = 0;
   int rank_ = 0;
 };
+
+/// A solver that works on PETSc's owned rows [row_begin, row_end) applied to a right-hand side
+/// replicated on every rank (n × k): each rank solves its owned rows, and the result, non-zero
+/// on each row's owner only, is summed over the ranks. Collective.
+Eigen::MatrixXd solve_replicated(MPI_Comm ranks, int row_begin, int row_end, const Eigen::MatrixXd& rhs,
+                                 const std::function<Eigen::MatrixXd(const Eigen::MatrixXd&)>& solve_owned);
 
 }  // namespace hpcontact::linalg
