@@ -3,7 +3,7 @@
 u on Γ_C with the obstacle g (or the bound s) against arc length, the multiplier λ on its own
 axis, next to a colour view of u on Ω; the title names the scene (summary.json).
 
-Reads DIR/boundary_<problem>.csv and DIR/solution_<problem>.vtu for every contact problem a run
+Reads DIR/boundary_<problem>.csv and DIR/solution_<problem>.vtu (or .pvtu) for every contact problem a run
 wrote into each DIR given; writes DIR/figure_<problem>.png.
 Usage: plot_paper.py DIR [DIR ...]
 """
@@ -18,7 +18,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.tri as mtri  # noqa: E402
 from figure_file import save_figure  # noqa: E402
-from vtk_lagrange import read_lagrange_vtu  # noqa: E402
+from vtk_lagrange import read_lagrange_vtu, solution_file  # noqa: E402
 
 
 def scene_title(folder, problem):
@@ -62,7 +62,7 @@ def plot(folder, problem):
     handles = left.get_legend_handles_labels()
     extra = multiplier_axis.get_legend_handles_labels()
     left.legend(handles[0] + extra[0], handles[1] + extra[1], fontsize=8, loc="best")
-    px, py, triangles, fields = read_lagrange_vtu(folder / f"solution_{problem}.vtu")
+    px, py, triangles, fields = read_lagrange_vtu(solution_file(folder, f"solution_{problem}"))
     picture = right.tripcolor(mtri.Triangulation(px, py, triangles), fields["u"], shading="gouraud", cmap="viridis")
     figure.colorbar(picture, ax=right, label=r"$u_h$")
     right.set_aspect("equal")

@@ -5,6 +5,8 @@ VTK's node order (the same as lib/io/vtk_lagrange_nodes.hpp): quadrilateral vert
 edges 0→1, 1→2, 3→2, 0→3, then interior nodes row by row; triangle vertices, edge nodes of 0→1,
 1→2, 2→0, then the interior nodes as the order k − 3 triangle one step inside, recursively."""
 import math
+import pathlib
+import xml.etree.ElementTree as ET
 
 import meshio
 import numpy as np
@@ -52,7 +54,11 @@ def _lattice_triangles(cell_type, n_nodes):
 
 
 def read_lagrange_vtu(path):
-    """(x, y, triangles, point_data) of a VTU of Lagrange cells; triangles index the points."""
+    """(x, y, triangles, point_data) of a VTU of Lagrange cells; triangles index the points. A PVTU
+    (an mpirun run's: one piece per rank) is read piece by piece and joined."""
+    if str(path).endswith(".pvtu"):
+        return _join(read_lagrange_vtu(pathlib.Path(path).parent / piece.get("Source"))
+                     for piece in ET.parse(path).getroot().iter("Piece"))
     mesh = meshio.read(path)
     triangles = []
     for block in mesh.cells:
@@ -62,3 +68,22 @@ def read_lagrange_vtu(path):
     fields = {name: values[:, 0] if values.ndim == 2 and values.shape[1] == 1 else values
               for name, values in mesh.point_data.items()}
     return mesh.points[:, 0], mesh.points[:, 1], np.concatenate(triangles), fields
+
+
+def _join(pieces):
+    xs, ys, triangles, fields, offset = [], [], [], {}, 0
+    for x, y, piece_triangles, piece_fields in pieces:
+        xs.append(x)
+        ys.append(y)
+        triangles.append(piece_triangles + offset)
+        for name, values in piece_fields.items():
+            fields.setdefault(name, []).append(values)
+        offset += len(x)
+    return (np.concatenate(xs), np.concatenate(ys), np.concatenate(triangles),
+            {name: np.concatenate(values) for name, values in fields.items()})
+
+
+def solution_file(folder, name):
+    """folder/name.vtu, or the PVTU an mpirun run writes in its place."""
+    serial = pathlib.Path(folder) / f"{name}.vtu"
+    return serial if serial.exists() else pathlib.Path(folder) / f"{name}.pvtu"

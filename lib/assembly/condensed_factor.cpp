@@ -105,8 +105,7 @@ CondensedFactor::CondensedFactor(std::unique_ptr<const CellSystem> system, const
     run_on_all_ranks_agreeing([&] { lower = eliminate_interiors(contributes); }, ranks);
   else
     lower = eliminate_interiors(contributes);
-  if (distributed) own_cells_ = std::move(contributes);
-  find_local_dofs();
+  find_local_dofs(std::move(contributes));
   switch (distribution.solver) {
     case linalg::DistributedSolver::serial: {
       Eigen::SparseMatrix<double> schur(n_skeleton, n_skeleton);
@@ -135,28 +134,28 @@ CondensedFactor::CondensedFactor(std::unique_ptr<const CellSystem> system, const
           const std::vector<int>& unknowns = substructured_ ? substructured_->local_unknowns()
                                              : mumps_       ? mumps_->local_unknowns()
                                                             : bddc_->local_unknowns();
-          HPC_VERIFY(std::equal(unknowns.begin(), unknowns.end(), local_dofs_.begin(),
-                                local_dofs_.begin() + n_local_skeleton_),
+          HPC_VERIFY(std::equal(unknowns.begin(), unknowns.end(), local_dofs().begin(),
+                                local_dofs().begin() + n_local_skeleton_),
                      "the skeleton solver's local unknowns differ from the skeleton dofs of the rank's cells");
         },
         ranks);
 }
 
-void CondensedFactor::find_local_dofs() {
-  local_dofs_.clear();
+void CondensedFactor::find_local_dofs(std::vector<char> own_cells) {
   if (!distribution_.distributed()) {
-    local_dofs_.resize(size_);
-    std::iota(local_dofs_.begin(), local_dofs_.end(), 0);
+    rows_ = LocalRows(size_);
   } else {
     std::vector<CellDof> dofs;
+    std::vector<int> local;
     for (int c = 0; c < static_cast<int>(block_of_cell_.size()); ++c) {
       if (block_of_cell_[c] < 0) continue;
       system_->cell_dofs(c, dofs);
       for (const auto& dof : dofs)
-        if (dof.dof >= 0) local_dofs_.push_back(dof.dof);
+        if (dof.dof >= 0) local.push_back(dof.dof);
     }
-    std::sort(local_dofs_.begin(), local_dofs_.end());
-    local_dofs_.erase(std::unique(local_dofs_.begin(), local_dofs_.end()), local_dofs_.end());
+    std::sort(local.begin(), local.end());
+    local.erase(std::unique(local.begin(), local.end()), local.end());
+    rows_ = LocalRows(std::move(own_cells), std::move(local));
     // The local rows of every own cell's shapes, found once (the local solves would search them
     // in every pass over the cells).
     cell_row_start_.assign(block_of_cell_.size(), -1);
@@ -164,22 +163,19 @@ void CondensedFactor::find_local_dofs() {
       if (block_of_cell_[c] < 0) continue;
       system_->cell_dofs(c, dofs);
       cell_row_start_[c] = static_cast<long>(cell_rows_.size());
-      for (const auto& dof : dofs)
-        cell_rows_.push_back(dof.dof < 0
-                                 ? -1
-                                 : static_cast<int>(std::lower_bound(local_dofs_.begin(), local_dofs_.end(), dof.dof) -
-                                                    local_dofs_.begin()));
+      for (const auto& dof : dofs) cell_rows_.push_back(dof.dof < 0 ? -1 : rows_.row(dof.dof));
     }
   }
+  const std::vector<int>& local_dofs = rows_.dofs();
   n_local_skeleton_ = static_cast<int>(
-      std::lower_bound(local_dofs_.begin(), local_dofs_.end(), system_->n_skeleton_dofs()) - local_dofs_.begin());
+      std::lower_bound(local_dofs.begin(), local_dofs.end(), system_->n_skeleton_dofs()) - local_dofs.begin());
   if (distribution_.distributed()) {
     // Which rank counts each shared dof, through PETSc's layout of the dofs in equal blocks.
     const auto [rank, ranks] = rank_and_size(distribution_.ranks);
     const auto block_start = [&, ranks = ranks](int r) {
       return static_cast<int>(static_cast<long long>(size_) * r / ranks);
     };
-    counts_dof_ = linalg::RowExchange(distribution_.ranks, size_, block_start(rank), block_start(rank + 1), local_dofs_)
+    counts_dof_ = linalg::RowExchange(distribution_.ranks, size_, block_start(rank), block_start(rank + 1), local_dofs)
                       .lowest_rank_holds();
   }
 }
@@ -205,31 +201,31 @@ Eigen::MatrixXd CondensedFactor::local_null_motions() const {
 Eigen::MatrixXd CondensedFactor::share_of(const Eigen::MatrixXd& whole) const {
   HPC_VERIFY(whole.rows() == size_, "a vector of the wrong size");
   if (!distribution_.distributed()) return whole;
-  Eigen::MatrixXd share = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(local_dofs_.size()), whole.cols());
-  for (std::size_t k = 0; k < local_dofs_.size(); ++k)
-    if (counts_dof_[k]) share.row(static_cast<Eigen::Index>(k)) = whole.row(local_dofs_[k]);
+  Eigen::MatrixXd share = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(local_dofs().size()), whole.cols());
+  for (std::size_t k = 0; k < local_dofs().size(); ++k)
+    if (counts_dof_[k]) share.row(static_cast<Eigen::Index>(k)) = whole.row(local_dofs()[k]);
   return share;
 }
 
 Eigen::MatrixXd CondensedFactor::gather(const Eigen::MatrixXd& local) const {
-  HPC_VERIFY(local.rows() == static_cast<Eigen::Index>(local_dofs_.size()), "a local vector of the wrong size");
+  HPC_VERIFY(local.rows() == static_cast<Eigen::Index>(local_dofs().size()), "a local vector of the wrong size");
   if (!distribution_.distributed()) return local;
   Eigen::MatrixXd whole = Eigen::MatrixXd::Zero(size_, local.cols());
-  for (std::size_t k = 0; k < local_dofs_.size(); ++k)
-    if (counts_dof_[k]) whole.row(local_dofs_[k]) = local.row(static_cast<Eigen::Index>(k));
+  for (std::size_t k = 0; k < local_dofs().size(); ++k)
+    if (counts_dof_[k]) whole.row(local_dofs()[k]) = local.row(static_cast<Eigen::Index>(k));
   sum_over_ranks(distribution_.ranks, whole.data(), whole.size());  // one rank's row, zeros elsewhere: exact
   return whole;
 }
 
 Eigen::MatrixXd CondensedFactor::multiply_local(const Eigen::SparseMatrix<double>& b,
                                                 const Eigen::MatrixXd& x_local) const {
-  HPC_VERIFY(b.cols() == size_ && x_local.rows() == static_cast<Eigen::Index>(local_dofs_.size()),
+  HPC_VERIFY(b.cols() == size_ && x_local.rows() == static_cast<Eigen::Index>(local_dofs().size()),
              "B x: sizes do not match");
   if (!distribution_.distributed()) return b * x_local;
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(b.rows(), x_local.cols());
-  for (std::size_t k = 0; k < local_dofs_.size(); ++k)
+  for (std::size_t k = 0; k < local_dofs().size(); ++k)
     if (counts_dof_[k])
-      for (Eigen::SparseMatrix<double>::InnerIterator it(b, local_dofs_[k]); it; ++it)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(b, local_dofs()[k]); it; ++it)
         out.row(it.row()) += it.value() * x_local.row(static_cast<Eigen::Index>(k));
   sum_over_ranks(distribution_.ranks, out.data(), out.size());
   return out;
@@ -238,16 +234,16 @@ Eigen::MatrixXd CondensedFactor::multiply_local(const Eigen::SparseMatrix<double
 Eigen::MatrixXd CondensedFactor::transpose_share(const Eigen::SparseMatrix<double>& b, const Eigen::MatrixXd& y) const {
   HPC_VERIFY(b.cols() == size_ && y.rows() == b.rows(), "Bᵀ y: sizes do not match");
   if (!distribution_.distributed()) return b.transpose() * y;
-  Eigen::MatrixXd share = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(local_dofs_.size()), y.cols());
-  for (std::size_t k = 0; k < local_dofs_.size(); ++k)
+  Eigen::MatrixXd share = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(local_dofs().size()), y.cols());
+  for (std::size_t k = 0; k < local_dofs().size(); ++k)
     if (counts_dof_[k])
-      for (Eigen::SparseMatrix<double>::InnerIterator it(b, local_dofs_[k]); it; ++it)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(b, local_dofs()[k]); it; ++it)
         share.row(static_cast<Eigen::Index>(k)) += it.value() * y.row(it.row());
   return share;
 }
 
 double CondensedFactor::dot_local(const Eigen::VectorXd& share, const Eigen::VectorXd& x_local) const {
-  HPC_VERIFY(share.size() == x_local.size() && share.size() == static_cast<Eigen::Index>(local_dofs_.size()),
+  HPC_VERIFY(share.size() == x_local.size() && share.size() == static_cast<Eigen::Index>(local_dofs().size()),
              "a local vector of the wrong size");
   double sum = share.dot(x_local);
   if (distribution_.distributed()) sum_over_ranks(distribution_.ranks, &sum, 1);
@@ -380,7 +376,7 @@ Eigen::MatrixXd CondensedFactor::solve(const Eigen::MatrixXd& rhs) const {
 }
 
 Eigen::MatrixXd CondensedFactor::solve_local(const Eigen::MatrixXd& partial_rhs) const {
-  HPC_VERIFY(partial_rhs.rows() == static_cast<Eigen::Index>(local_dofs_.size()),
+  HPC_VERIFY(partial_rhs.rows() == static_cast<Eigen::Index>(local_dofs().size()),
              "right-hand side share of the wrong size");
   if (!distribution_.distributed()) return solve(partial_rhs);
   if (partial_rhs.cols() == 0) return Eigen::MatrixXd(partial_rhs.rows(), 0);
@@ -419,7 +415,7 @@ double CondensedFactor::quadratic_form(const Eigen::VectorXd& u) const {
 }
 
 double CondensedFactor::quadratic_form_local(const Eigen::VectorXd& u_local) const {
-  HPC_VERIFY(u_local.size() == static_cast<Eigen::Index>(local_dofs_.size()),
+  HPC_VERIFY(u_local.size() == static_cast<Eigen::Index>(local_dofs().size()),
              "quadratic form of a vector of the wrong size");
   return cell_quadratic_forms(u_local, distribution_.distributed());
 }

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "assembly/cell_system.hpp"
-#include "assembly/load_target.hpp"
+#include "assembly/local_rows.hpp"
 #include "linalg/bddc_solver.hpp"
 #include "linalg/distributed_cholesky.hpp"
 #include "linalg/distribution.hpp"
@@ -71,16 +71,14 @@ class CondensedFactor {
   Eigen::MatrixXd solve(const Eigen::MatrixXd& rhs) const;
   /// The dofs of this rank's cells (ascending, so the skeleton dofs first): the rows of
   /// solve_local and quadratic_form_local. Serial: every dof.
-  const std::vector<int>& local_dofs() const { return local_dofs_; }
+  const std::vector<int>& local_dofs() const { return rows_.dofs(); }
   /// A⁻¹ b for b = Σ_r b_r: each rank passes its share b_r at its local dofs (e.g. its own cells'
   /// load; shape (local_dofs().size(), k), k the same on every rank) and receives A⁻¹ b there. No
   /// vector of the global length: the skeleton solver sums the shares. Collective.
   Eigen::MatrixXd solve_local(const Eigen::MatrixXd& partial_rhs) const;
   /// Where this rank assembles its share of a load for solve_local: distributed, its own cells
   /// into its local dofs; serial, the whole load. Valid while the factor lives.
-  LoadTarget load_target() const {
-    return distribution_.distributed() ? LoadTarget(own_cells_, local_dofs_) : LoadTarget();
-  }
+  const LocalRows& local_rows() const { return rows_; }
   /// This rank's share of a vector every rank holds whole (shape (n, k)), at its local dofs: the
   /// rows of the dofs it counts (of the ranks holding a dof, the lowest), zero at the others, so
   /// that the shares sum to the vector.
@@ -110,8 +108,8 @@ class CondensedFactor {
   /// Fills blocks_ and block_of_cell_ for the cells c with contributes[c] (−1 for the others);
   /// returns the entries of the lower triangle of S that they add.
   std::vector<Eigen::Triplet<double>> eliminate_interiors(const std::vector<char>& contributes);
-  /// local_dofs_ and n_local_skeleton_ from the rank's cells.
-  void find_local_dofs();
+  /// rows_ and n_local_skeleton_ from the rank's cells (`own_cells` when distributed).
+  void find_local_dofs(std::vector<char> own_cells);
   /// The system's null motions at the local skeleton dofs (distributed; BDDC's near null space).
   Eigen::MatrixXd local_null_motions() const;
   /// S⁻¹ rhs on the skeleton, shape (n_skeleton, k).
@@ -132,10 +130,9 @@ class CondensedFactor {
   std::vector<std::unique_ptr<CellBlock>> blocks_;
   std::vector<int> block_of_cell_;
   int n_trailing_ = 0;
-  std::vector<int> local_dofs_;                     ///< see local_dofs()
+  LocalRows rows_;                                  ///< see local_rows(), local_dofs()
   std::vector<long> cell_row_start_;                ///< per own cell: its first entry of cell_rows_ (distributed)
   std::vector<int> cell_rows_;                      ///< the local rows of the own cells' shapes (−1: Dirichlet)
-  std::vector<char> own_cells_;                     ///< per cell: eliminated here (distributed)
   std::vector<char> counts_dof_;                    ///< per local dof: this rank is the lowest holding it (distributed)
   int n_local_skeleton_ = 0;                        ///< local dofs in the skeleton (the first ones)
   std::unique_ptr<linalg::SparseCholesky> serial_;  ///< one of the four, by the distribution

@@ -7,7 +7,7 @@ namespace hpcontact::assembly {
 
 Eigen::VectorXd assemble_elastic_load(const space::VectorSpace& vector_space, const VectorFunction& body_force,
                                       const std::set<mesh::BoundaryPart>& parts, const TractionFunction& traction,
-                                      const LoadTarget& target) {
+                                      const LocalRows& target) {
   const space::H1Space& space = vector_space.scalar();
   Eigen::VectorXd load = Eigen::VectorXd::Zero(target.size(vector_space.n_dofs()));
   for (int c = 0; c < space::kComponents; ++c) {

@@ -5,7 +5,7 @@
 #include <functional>
 #include <set>
 
-#include "assembly/load_target.hpp"
+#include "assembly/local_rows.hpp"
 #include "mesh/mesh.hpp"
 #include "space/vector_space.hpp"
 
@@ -20,6 +20,6 @@ using TractionFunction = std::function<Eigen::Vector2d(const mesh::Point& x, con
 /// rank's share. Either function may be empty.
 Eigen::VectorXd assemble_elastic_load(const space::VectorSpace& space, const VectorFunction& body_force,
                                       const std::set<mesh::BoundaryPart>& parts, const TractionFunction& traction,
-                                      const LoadTarget& target = {});
+                                      const LocalRows& target = {});
 
 }  // namespace hpcontact::assembly

@@ -49,9 +49,9 @@ VolumeMatrices assemble_volume_matrices(const space::H1Space& space, const Volum
 }
 
 void visit_volume_load(const space::H1Space& space, const std::function<double(const mesh::Point&)>& f,
-                       const LoadTarget& target, const DofContribution& add) {
+                       const LocalRows& target, const DofContribution& add) {
   for (int c = 0; c < space.mesh().n_cells(); ++c) {
-    if (!target.assembles(c)) continue;
+    if (!target.holds(c)) continue;
     // Two extra points beyond the matrices: f is general data, not a polynomial.
     const CellQuadrature rule = cell_rule(space, c, 2);
     const CellValues cell = tabulate_cell(space, c, rule.points);
@@ -67,12 +67,12 @@ void visit_volume_load(const space::H1Space& space, const std::function<double(c
 
 void visit_boundary_load(const space::H1Space& space, const std::set<mesh::BoundaryPart>& parts,
                          const std::function<double(const mesh::Point& x, const mesh::Point& normal)>& g,
-                         const LoadTarget& target, const DofContribution& add) {
+                         const LocalRows& target, const DofContribution& add) {
   const auto& mesh = space.mesh();
   for (int e : mesh.boundary_edges()) {
     if (!parts.contains(mesh.edge_part(e))) continue;
     const int c = mesh.edge_cells(e)[0];
-    if (!target.assembles(c)) continue;
+    if (!target.holds(c)) continue;
     const int local_edge = mesh.local_edge_of(e, 0);
     // Curved edges: the speed |dΨ/dt| and the normal vary along the edge and are not polynomial.
     const bool curved = mesh.cell_geometry(c) != nullptr;
@@ -94,7 +94,7 @@ void visit_boundary_load(const space::H1Space& space, const std::set<mesh::Bound
 }
 
 Eigen::VectorXd assemble_volume_load(const space::H1Space& space, const std::function<double(const mesh::Point&)>& f,
-                                     const LoadTarget& target) {
+                                     const LocalRows& target) {
   Eigen::VectorXd load = Eigen::VectorXd::Zero(target.size(space.n_dofs()));
   visit_volume_load(space, f, target, [&](int dof, double value) { load(target.row(dof)) += value; });
   return load;
@@ -102,7 +102,7 @@ Eigen::VectorXd assemble_volume_load(const space::H1Space& space, const std::fun
 
 Eigen::VectorXd assemble_boundary_load(const space::H1Space& space, const std::set<mesh::BoundaryPart>& parts,
                                        const std::function<double(const mesh::Point& x, const mesh::Point& normal)>& g,
-                                       const LoadTarget& target) {
+                                       const LocalRows& target) {
   Eigen::VectorXd load = Eigen::VectorXd::Zero(target.size(space.n_dofs()));
   visit_boundary_load(space, parts, g, target, [&](int dof, double value) { load(target.row(dof)) += value; });
   return load;

@@ -6,7 +6,7 @@
 #include <functional>
 #include <set>
 
-#include "assembly/load_target.hpp"
+#include "assembly/local_rows.hpp"
 #include "mesh/mesh.hpp"
 #include "space/h1_space.hpp"
 
@@ -35,22 +35,22 @@ using DofContribution = std::function<void(int dof, double value)>;
 /// add(k, (f, φ_k)_T) for every shape of every cell T that `target` assembles (Dirichlet shapes
 /// excluded): the volume load cell by cell, for any layout of the result.
 void visit_volume_load(const space::H1Space& space, const std::function<double(const mesh::Point&)>& f,
-                       const LoadTarget& target, const DofContribution& add);
+                       const LocalRows& target, const DofContribution& add);
 
 /// add(k, ∫_e g(x, n) φ_k ds) for every boundary edge e in `parts` whose cell `target` assembles,
 /// n the outward unit normal.
 void visit_boundary_load(const space::H1Space& space, const std::set<mesh::BoundaryPart>& parts,
                          const std::function<double(const mesh::Point& x, const mesh::Point& normal)>& g,
-                         const LoadTarget& target, const DofContribution& add);
+                         const LocalRows& target, const DofContribution& add);
 
 /// F_k = (f, φ_k), shape (target.size(n_dofs)): the whole load or a rank's share.
 Eigen::VectorXd assemble_volume_load(const space::H1Space& space, const std::function<double(const mesh::Point&)>& f,
-                                     const LoadTarget& target = {});
+                                     const LocalRows& target = {});
 
 /// G_k = ∫_{edges in `parts`} g(x, n) φ_k ds with n the outward unit normal, shape
 /// (target.size(n_dofs)). Used for Neumann data ∂_n u = g on Γ_N.
 Eigen::VectorXd assemble_boundary_load(const space::H1Space& space, const std::set<mesh::BoundaryPart>& parts,
                                        const std::function<double(const mesh::Point& x, const mesh::Point& normal)>& g,
-                                       const LoadTarget& target = {});
+                                       const LocalRows& target = {});
 
 }  // namespace hpcontact::assembly

@@ -70,7 +70,7 @@ void check_data(const ContactSetup& setup) {
 // F on `space` as `target` asks (whole, or this rank's share), shared with the other problems on
 // `primal` when the setup names its data (load_key), else assembled into `own`.
 const Eigen::VectorXd& load_vector(const ContactSetup& setup, const operators::PrimalOperators& primal,
-                                   const space::H1Space& space, const assembly::LoadTarget& target,
+                                   const space::H1Space& space, const assembly::LocalRows& target,
                                    Eigen::VectorXd& own) {
   auto assemble = [&] {
     Eigen::VectorXd load = assembly::assemble_volume_load(space, setup.f, target);
@@ -94,7 +94,7 @@ assembly::DirichletLift::LiftedLoad problem_load_share(const ContactSetup& setup
                                                        const assembly::DirichletLift* lift,
                                                        const assembly::CondensedFactor& k_factor) {
   Eigen::VectorXd own;
-  if (!lift) return {load_vector(setup, primal, primal.space(), k_factor.load_target(), own), 0.0};
+  if (!lift) return {load_vector(setup, primal, primal.space(), k_factor.local_rows(), own), 0.0};
   const Eigen::VectorXd& extended = load_vector(setup, primal, lift->extended_scalar(), {}, own);
   auto lifted = lift->lifted_load(assembly::ScalarCellSystem(primal.space(), 1.0, 0.0), extended);
   lifted.load = k_factor.share_of(lifted.load).col(0);
@@ -147,8 +147,8 @@ ContactSolution solve_contact(const ContactSetup& setup) {
   const assembly::CondensedFactor& k_factor = primal.stiffness_factor();
   out.seconds.factorization = factorization_clock.seconds();
   // Distributed, the vectors of S^p(T_h) are held at each rank's own cells' dofs, the load as the
-  // ranks' shares: none of the global length (without Dirichlet data) until u is gathered for
-  // the output.
+  // ranks' shares: none of the global length (without Dirichlet data) (u stays at the rank's own cells'
+  // dofs, where the outputs read it).
   Stopwatch load_clock;
   const auto [load_share, energy_offset] = problem_load_share(setup, primal, out.lift.get(), k_factor);
   out.seconds.assembly += load_clock.seconds();
@@ -183,7 +183,9 @@ ContactSolution solve_contact(const ContactSetup& setup) {
   out.gap_scale = b_u_free.lpNorm<Eigen::Infinity>() + gap_offset.lpNorm<Eigen::Infinity>() +
                   (s * out.lambda).lpNorm<Eigen::Infinity>();
   out.energy = 0.5 * k_factor.quadratic_form_local(u) - k_factor.dot_local(load_share, u) + energy_offset;
-  out.u = k_factor.gather(u).col(0);
+  out.u = u;
+  out.u_rows = k_factor.local_rows();
+  out.n_dofs = k_factor.size();
   out.seconds.recovery = recovery_clock.seconds();
   out.constraint_matrix = std::move(constraints.matrix);
   out.lower = std::move(constraints.lower);

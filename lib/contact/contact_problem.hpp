@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "assembly/dirichlet_lift.hpp"
+#include "assembly/local_rows.hpp"
 #include "contact/box_qp.hpp"
 #include "contact/inequality_qp.hpp"
 #include "contact/qp_report.hpp"
@@ -77,8 +78,12 @@ struct ContactSetup {
 };
 
 struct ContactSolution {
-  /// Coefficients on S^p(T_h): u itself, or with Dirichlet data u_0, where u = u_0 + w.
+  /// Coefficients on S^p(T_h): u itself, or with Dirichlet data u_0, where u = u_0 + w; at the
+  /// rows of u_rows (serial: every dof in the global numbering; distributed: this rank's own cells'
+  /// dofs, so postprocess::scalar_field reads it on those cells).
   Eigen::VectorXd u;
+  assembly::LocalRows u_rows;
+  int n_dofs = 0;  ///< unknowns of u in all (of the global numbering)
   /// The lift w of the Dirichlet data (null without them); assembly::total_field gives u.
   std::shared_ptr<const assembly::DirichletLift> lift;
   /// λ in the Lagrange basis: its values at the constraint points, segment by segment.

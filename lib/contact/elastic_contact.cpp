@@ -115,7 +115,7 @@ assembly::DirichletLift::LiftedLoad problem_load_share(const ElasticContactSetup
   const std::set<mesh::BoundaryPart> neumann{mesh::BoundaryPart::neumann};
   if (!lift)
     return {assembly::assemble_elastic_load(ops.vector_space(), setup.body_force, neumann, setup.traction,
-                                            factor.load_target()),
+                                            factor.local_rows()),
             0.0};
   const Eigen::VectorXd load =
       assembly::assemble_elastic_load(*lift->extended_vector(), setup.body_force, neumann, setup.traction);
@@ -183,7 +183,7 @@ ElasticContactSolution solve_elastic_contact(const ElasticContactSetup& setup) {
   out.seconds.factorization = factorization_clock.seconds();
   // Distributed, the vectors of the displacement space are held at each rank's own cells' dofs,
   // the load as the ranks' shares (this rank's own cells; with Dirichlet data assembled whole,
-  // lifted and shared out): none of the global length until u is gathered for the output.
+  // lifted and shared out): none of the global length (u stays at the rank's dofs).
   Stopwatch load_clock;
   const auto [load_share, energy_offset] = problem_load_share(setup, out.lift.get(), factor);
   out.seconds.assembly += load_clock.seconds();
@@ -216,7 +216,9 @@ ElasticContactSolution solve_elastic_contact(const ElasticContactSetup& setup) {
   out.shear = setup.problem == ElasticContactProblem::frictionless ? Eigen::VectorXd::Zero(problem.n_normal)
                                                                    : Eigen::VectorXd(-legendre.tail(problem.n_normal));
   out.energy = 0.5 * factor.quadratic_form_local(u) - factor.dot_local(load_share, u) + energy_offset;
-  out.u = factor.gather(u).col(0);
+  out.u = u;
+  out.u_rows = factor.local_rows();
+  out.n_dofs = factor.size();
   out.n_normal = problem.n_normal;
   out.constraint_matrix = std::move(problem.constraints.matrix);
   out.lower = std::move(problem.constraints.lower);

@@ -53,8 +53,10 @@ struct ElasticContactSetup {
 
 struct ElasticContactSolution {
   /// Displacement numbered by space::VectorSpace::dof: u itself, or with Dirichlet data u_0, where
-  /// u = u_0 + w.
+  /// u = u_0 + w. At the rows of u_rows, as ContactSolution::u.
   Eigen::VectorXd u;
+  assembly::LocalRows u_rows;
+  int n_dofs = 0;  ///< unknowns of u in all (of the global numbering)
   /// The lift w of the Dirichlet data (null without them); assembly::total_field gives u.
   std::shared_ptr<const assembly::DirichletLift> lift;
   /// Contact pressure p = −σ_nn ≥ 0 and tangential traction σ_nt on the body (along the tangent

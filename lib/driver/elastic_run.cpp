@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include "assembly/cell_field.hpp"
 #include "contact/multiplier_distance.hpp"
 #include "core/error.hpp"
 #include "core/expression.hpp"
@@ -10,8 +11,8 @@
 #include "core/petsc_session.hpp"
 #include "core/rank_agreement.hpp"
 #include "core/timer.hpp"
+#include "driver/run_outputs.hpp"
 #include "io/atomic_file.hpp"
-#include "io/output_folder.hpp"
 #include "io/vtp_writer.hpp"
 #include "io/vtu_writer.hpp"
 #include "mesh/cell_map.hpp"
@@ -133,10 +134,15 @@ std::vector<ElasticEffect> solve_elastic_effects(const scene::Scene& scene, cons
   return effects;
 }
 
-// solution_<effect>.vtu: the displacement u0 + the Dirichlet lift and its von Mises stress.
-std::string elastic_solution_vtu(const ElasticEffect& effect, const operators::ElasticOperators& operators) {
-  const auto u = assembly::total_field(effect.solution.lift.get(), operators.vector_space(), effect.solution.u);
-  return io::elastic_vtu_text(u.space, operators.materials(), u.coefficients);
+// solution_<effect>(_level<k>): the displacement u0 + the Dirichlet lift and its von Mises stress,
+// on this rank's cells.
+SolutionFile elastic_solution_file(const std::string& name, const ElasticEffect& effect,
+                                   const operators::ElasticOperators& operators) {
+  const auto& solution = effect.solution;
+  return {
+      name, io::elastic_vtu_fields(),
+      io::elastic_vtu_text(assembly::vector_field(operators.vector_space(), solution.u, solution.u_rows, solution.lift),
+                           operators.materials())};
 }
 
 // The convergence effect: the scene's elastic problems on `convergence_refinements` uniform
@@ -146,7 +152,7 @@ std::string elastic_solution_vtu(const ElasticEffect& effect, const operators::E
 io::CsvTable elastic_convergence(const scene::Scene& scene, const SceneDiscretization& base_mesh,
                                  const operators::ElasticOperators& base_operators,
                                  const std::vector<ElasticEffect>& base, const SceneRunOptions& options,
-                                 std::vector<OutputText>& files) {
+                                 std::vector<SolutionFile>& level_solutions, std::vector<OutputText>& files) {
   struct Level {
     std::unique_ptr<SceneDiscretization> own;
     const SceneDiscretization* d;
@@ -168,9 +174,8 @@ io::CsvTable elastic_convergence(const scene::Scene& scene, const SceneDiscretiz
   }
   io::CsvTable table(refinement_columns());
   const Level& finest = levels.back();
-  // (rank 0 writes: no other rank builds the levels' VTU text)
-  const bool writes_files =
-      scene.wants_output(scene::Output::vtu) && options.write_files && mpi_rank_and_size().first == 0;
+  // (every rank builds its piece when distributed)
+  const bool writes_files = scene.wants_output(scene::Output::vtu) && options.write_files;
   for (std::size_t e = 0; e < base.size(); ++e)
     for (std::size_t k = 0; k < levels.size(); ++k) {
       const auto& d = *levels[k].d;
@@ -179,17 +184,20 @@ io::CsvTable elastic_convergence(const scene::Scene& scene, const SceneDiscretiz
       table.add_row(
           {effect.name, static_cast<long long>(k), largest_degree(d.cell_degrees), largest_degree(d.segment_degrees),
            static_cast<long long>(d.contact->edges().size()), static_cast<long long>(d.boundary_mesh->n_segments()),
-           static_cast<long long>(effect.solution.u.size()), static_cast<long long>(effect.solution.lambda.size()),
+           static_cast<long long>(effect.solution.n_dofs), static_cast<long long>(effect.solution.lambda.size()),
            effect.solution.energy, std::abs(effect.solution.energy - reference.energy),
            contact::multiplier_l2_distance(*d.multipliers, effect.solution.pressure, *finest.d->multipliers,
                                            reference.pressure),
            effect.seconds, scene.p.label(), scene.pc.label()});
       if (writes_files)
-        files.push_back({level_vtu_name(effect.name, static_cast<int>(k)),
-                         elastic_solution_vtu(effect, k == 0 ? base_operators : *levels[k].operators)});
+        run_on_all_ranks_agreeing([&] {
+          level_solutions.push_back(elastic_solution_file(level_file_name(effect.name, static_cast<int>(k)), effect,
+                                                          k == 0 ? base_operators : *levels[k].operators));
+        });
     }
   if (writes_files)
-    for (const auto& effect : base) files.push_back(level_collection(effect.name, scene.convergence_refinements));
+    for (const auto& effect : base)
+      files.push_back(level_collection(effect.name, scene.convergence_refinements, options.distribution.distributed()));
   return table;
 }
 
@@ -229,28 +237,23 @@ nlohmann::json effect_summary(const ElasticEffect& effect) {
 struct ExtraTables {
   const std::optional<io::CsvTable>& mode;         ///< mode.csv (effect infsup, output mode)
   const std::optional<io::CsvTable>& convergence;  ///< convergence.csv (effect convergence)
-  const std::vector<OutputText>& level_files;      ///< the convergence levels' VTU and PVD files
+  const std::vector<OutputText>& level_files;      ///< the convergence levels' PVD files
 };
 
-void write_outputs(const scene::Scene& scene, const operators::ElasticOperators& operators,
-                   const std::vector<ElasticEffect>& effects, const ExtraTables& extra, const nlohmann::json& summary,
-                   const std::filesystem::path& where) {
-  io::OutputFolder folder(where);
-  const auto& out = folder.path();
+// Every file but the solutions' ParaView files, into the staging folder `out` (rank 0).
+void write_tables(const scene::Scene& scene, const std::vector<ElasticEffect>& effects, const ExtraTables& extra,
+                  const nlohmann::json& summary, const std::filesystem::path& out) {
   for (const auto& effect : effects) {
     if (scene.wants_output(scene::Output::boundary))
       effect.samples.table.write(out / ("boundary_" + effect.name + ".csv"));
-    if (scene.wants_output(scene::Output::vtu)) {
-      io::write_file_atomically(out / ("solution_" + effect.name + ".vtu"), elastic_solution_vtu(effect, operators));
+    if (scene.wants_output(scene::Output::vtu))
       io::write_file_atomically(out / ("contact_" + effect.name + ".vtp"), io::polyline_vtp_text(effect.samples.table));
-    }
   }
   if (extra.mode) extra.mode->write(out / "mode.csv");
   if (extra.convergence) extra.convergence->write(out / "convergence.csv");
   for (const auto& file : extra.level_files) io::write_file_atomically(out / file.name, file.text);
   if (scene.wants_output(scene::Output::summary))
     io::write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
-  folder.commit();
 }
 
 }  // namespace
@@ -266,9 +269,10 @@ nlohmann::json run_elastic_scene(const scene::Scene& scene, const SceneRunOption
   const std::vector<ElasticEffect> effects = solve_elastic_effects(scene, *d, operators, options, "");
   // 3. Convergence under uniform refinement, then the inf-sup constant of the elastic pairing.
   std::optional<io::CsvTable> convergence;
+  std::vector<SolutionFile> solutions;
   std::vector<OutputText> level_files;
   if (scene.has_effect(scene::Effect::convergence))
-    convergence = elastic_convergence(scene, *d, operators, effects, options, level_files);
+    convergence = elastic_convergence(scene, *d, operators, effects, options, solutions, level_files);
   std::optional<io::CsvTable> mode;
   nlohmann::json infsup;
   if (scene.has_effect(scene::Effect::infsup)) {
@@ -302,10 +306,16 @@ nlohmann::json run_elastic_scene(const scene::Scene& scene, const SceneRunOption
   if (scene.wants_output(scene::Output::boundary))
     for (const auto& effect : effects) boundary.emplace_back(effect.name, &effect.samples.table);
   hand_over_tables(options, boundary, mode, convergence);
-  // Rank 0 writes; a failure to write ends every rank the same way.
-  run_on_all_ranks_agreeing([&] {
-    if (options.write_files && mpi_rank_and_size().first == 0)
-      write_outputs(scene, operators, effects, {mode, convergence, level_files}, summary, options.out);
+  // The outputs as one set (rank 0 writes all but the pieces of the solutions' ParaView files; a
+  // failure to write ends every rank the same way).
+  if (!options.write_files) return summary;
+  if (scene.wants_output(scene::Output::vtu))
+    run_on_all_ranks_agreeing([&] {
+      for (const auto& effect : effects)
+        solutions.push_back(elastic_solution_file("solution_" + effect.name, effect, operators));
+    });
+  write_run_outputs(options.out, options.distribution.distributed(), solutions, [&](const std::filesystem::path& out) {
+    write_tables(scene, effects, {mode, convergence, level_files}, summary, out);
   });
   return summary;
 }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "assembly/cell_field.hpp"
 #include "contact/multiplier_distance.hpp"
 #include "core/error.hpp"
 #include "core/operator_log.hpp"
@@ -14,10 +15,10 @@
 #include "core/timer.hpp"
 #include "driver/elastic_run.hpp"
 #include "driver/free_boundary_fit.hpp"
+#include "driver/run_outputs.hpp"
 #include "infsup/infsup_analysis.hpp"
 #include "io/atomic_file.hpp"
 #include "io/csv_writer.hpp"
-#include "io/output_folder.hpp"
 #include "io/vtk_xml_document.hpp"
 #include "io/vtp_writer.hpp"
 #include "io/vtu_writer.hpp"
@@ -87,26 +88,30 @@ std::vector<ContactEffect> solve_contact_effects(const scene::Scene& scene, cons
   return effects;
 }
 
-// solution_<problem>.vtu: u = u0 + the Dirichlet lift on Ω.
-std::string solution_vtu(const ContactEffect& effect, const operators::PrimalOperators& primal) {
-  const auto u = assembly::total_field(effect.solution.lift.get(), primal.space(), effect.solution.u);
-  return io::solution_vtu_text(u.space, u.coefficients);
+// solution_<problem>(_level<k>): u = u0 + the Dirichlet lift on Ω, on this rank's cells.
+SolutionFile solution_file(const std::string& name, const ContactEffect& effect,
+                           const operators::PrimalOperators& primal) {
+  const auto& solution = effect.solution;
+  return {name, io::solution_vtu_fields(),
+          io::solution_vtu_text(assembly::scalar_field(primal.space(), solution.u, solution.u_rows, solution.lift))};
 }
 
-// Whether this process writes the convergence levels' VTU files: output "vtu", files wanted, rank 0
-// (the text of a fine level is large; no other rank builds it).
+// Whether the run writes the convergence levels' VTU files: output "vtu" and files wanted (every
+// rank builds its piece when distributed).
 bool writes_level_files(const scene::Scene& scene, const SceneRunOptions& options) {
-  return scene.wants_output(scene::Output::vtu) && options.write_files && mpi_rank_and_size().first == 0;
+  return scene.wants_output(scene::Output::vtu) && options.write_files;
 }
 
-// With output "vtu": every level's u as solution_<problem>_level<k>.vtu and one PVD per problem
+// With output "vtu": every level's u as solution_<problem>_level<k> and one PVD per problem
 // (the level as ParaView's time), so the refinement sequence plays as an animation.
 void add_level_solutions(const scene::Scene& scene, const std::vector<ContactEffect>& effects,
                          const operators::PrimalOperators& primal, const SceneRunOptions& options, int level,
-                         std::vector<OutputText>& files) {
+                         std::vector<SolutionFile>& files) {
   if (!writes_level_files(scene, options)) return;
-  for (const auto& effect : effects)
-    files.push_back({level_vtu_name(effect.problem, level), solution_vtu(effect, primal)});
+  run_on_all_ranks_agreeing([&] {
+    for (const auto& effect : effects)
+      files.push_back(solution_file(level_file_name(effect.problem, level), effect, primal));
+  });
 }
 
 // The convergence effect: the scene's contact problems on `convergence_refinements` uniform
@@ -115,7 +120,7 @@ void add_level_solutions(const scene::Scene& scene, const std::vector<ContactEff
 void add_convergence_rows(const scene::Scene& scene, const std::vector<ContactEffect>& base,
                           const SceneDiscretization& base_mesh, const operators::PrimalOperators& base_primal,
                           const SceneRunOptions& options, OperatorLog& log, io::CsvTable& table,
-                          std::vector<OutputText>& files) {
+                          std::vector<SolutionFile>& level_solutions, std::vector<OutputText>& files) {
   struct Level {
     const SceneDiscretization* discretization;
     const std::vector<ContactEffect>* effects;
@@ -123,7 +128,7 @@ void add_convergence_rows(const scene::Scene& scene, const std::vector<ContactEf
   std::vector<Level> levels{{&base_mesh, &base}};
   std::vector<std::unique_ptr<SceneDiscretization>> refined_meshes;
   std::vector<std::unique_ptr<std::vector<ContactEffect>>> refined_effects;
-  add_level_solutions(scene, base, base_primal, options, 0, files);
+  add_level_solutions(scene, base, base_primal, options, 0, level_solutions);
   for (int k = 1; k <= scene.convergence_refinements; ++k) {
     scene::Scene refined = scene;
     refined.refinements += k;
@@ -132,7 +137,7 @@ void add_convergence_rows(const scene::Scene& scene, const std::vector<ContactEf
     const operators::PrimalOperators primal(d->mesh, d->cell_degrees, &level_log, options.distribution);
     refined_effects.push_back(std::make_unique<std::vector<ContactEffect>>(
         solve_contact_effects(refined, *d, primal, options, fmt::format(" (convergence level {})", k))));
-    add_level_solutions(scene, *refined_effects.back(), primal, options, k, files);
+    add_level_solutions(scene, *refined_effects.back(), primal, options, k, level_solutions);
     for (const auto& record : level_log.records())
       log.record(fmt::format("{} (convergence level {})", record.name, k), record.rows, record.cols, record.seconds);
     levels.push_back({d.get(), refined_effects.back().get()});
@@ -147,7 +152,7 @@ void add_convergence_rows(const scene::Scene& scene, const std::vector<ContactEf
       table.add_row(
           {effect.problem, static_cast<long long>(k), largest_degree(d.cell_degrees), largest_degree(d.segment_degrees),
            static_cast<long long>(d.contact->edges().size()), static_cast<long long>(d.boundary_mesh->n_segments()),
-           static_cast<long long>(effect.solution.u.size()), static_cast<long long>(effect.solution.lambda.size()),
+           static_cast<long long>(effect.solution.n_dofs), static_cast<long long>(effect.solution.lambda.size()),
            effect.solution.energy, std::abs(effect.solution.energy - reference.energy),
            contact::multiplier_l2_distance(*d.multipliers, effect.solution.lambda_legendre,
                                            *finest.discretization->multipliers, reference.lambda_legendre,
@@ -155,7 +160,9 @@ void add_convergence_rows(const scene::Scene& scene, const std::vector<ContactEf
            effect.seconds, scene.p.label(), scene.pc.label()});
     }
   if (writes_level_files(scene, options))
-    for (const auto& effect : base) files.push_back(level_collection(effect.problem, scene.convergence_refinements));
+    for (const auto& effect : base)
+      files.push_back(
+          level_collection(effect.problem, scene.convergence_refinements, options.distribution.distributed()));
 }
 
 // The scene with its mesh graded towards the free boundary of its contact problems; what the fit
@@ -213,13 +220,14 @@ nlohmann::json infsup_effect(const scene::Scene& scene, const SceneDiscretizatio
 
 long long largest_degree(const std::vector<int>& degrees) { return *std::max_element(degrees.begin(), degrees.end()); }
 
-std::string level_vtu_name(const std::string& problem, int level) {
-  return fmt::format("solution_{}_level{}.vtu", problem, level);
+std::string level_file_name(const std::string& problem, int level) {
+  return fmt::format("solution_{}_level{}", problem, level);
 }
 
-OutputText level_collection(const std::string& problem, int finest) {
+OutputText level_collection(const std::string& problem, int finest, bool distributed) {
   std::vector<io::PvdEntry> entries;
-  for (int k = 0; k <= finest; ++k) entries.push_back({static_cast<double>(k), level_vtu_name(problem, k)});
+  for (int k = 0; k <= finest; ++k)
+    entries.push_back({static_cast<double>(k), solution_file_name(level_file_name(problem, k), distributed)});
   return {"solution_" + problem + ".pvd", io::pvd_text(entries)};
 }
 
@@ -268,10 +276,11 @@ nlohmann::json run_scene(const scene::Scene& given_scene, const SceneRunOptions&
 
   // 4. Convergence under uniform refinement of every contact problem of the scene.
   std::optional<io::CsvTable> convergence;
+  std::vector<SolutionFile> solutions;
   std::vector<OutputText> level_files;
   if (scene.has_effect(scene::Effect::convergence)) {
     convergence.emplace(refinement_columns());
-    add_convergence_rows(scene, contacts, *d, primal, options, log, *convergence, level_files);
+    add_convergence_rows(scene, contacts, *d, primal, options, log, *convergence, solutions, level_files);
   }
 
   // 5. The summary, then every file at once.
@@ -281,33 +290,33 @@ nlohmann::json run_scene(const scene::Scene& given_scene, const SceneRunOptions&
   if (convergence)
     summary["convergence"] = {{"refinements", scene.convergence_refinements}, {"file", "convergence.csv"}};
   summary["seconds_total"] = clock.seconds();
-  const int rank = mpi_rank_and_size().first, ranks = mpi_rank_and_size().second;
-  summary["ranks"] = ranks;
+  summary["ranks"] = mpi_rank_and_size().second;
   summary["distributed_solver"] = linalg::to_string(options.distribution.solver);
   std::vector<std::pair<std::string, const io::CsvTable*>> boundary;
   if (scene.wants_output(scene::Output::boundary))
     for (const auto& effect : contacts) boundary.emplace_back(effect.problem, &effect.samples.table);
   hand_over_tables(options, boundary, mode, convergence);
-  // 5. The outputs as one set (rank 0 writes; a failure to write ends every rank the same way).
-  run_on_all_ranks_agreeing([&] {
-    if (rank != 0 || !options.write_files) return;
-    io::OutputFolder folder(options.out);
-    const auto& out = folder.path();
+  // 5. The outputs as one set (rank 0 writes all but the pieces of the solutions' ParaView files;
+  //    a failure to write ends every rank the same way).
+  if (!options.write_files) return summary;
+  if (scene.wants_output(scene::Output::vtu))
+    run_on_all_ranks_agreeing([&] {
+      for (const auto& effect : contacts)
+        solutions.push_back(solution_file("solution_" + effect.problem, effect, primal));
+    });
+  write_run_outputs(options.out, options.distribution.distributed(), solutions, [&](const std::filesystem::path& out) {
     for (const auto& effect : contacts) {
       if (scene.wants_output(scene::Output::boundary))
         effect.samples.table.write(out / ("boundary_" + effect.problem + ".csv"));
-      if (scene.wants_output(scene::Output::vtu)) {
-        io::write_file_atomically(out / ("solution_" + effect.problem + ".vtu"), solution_vtu(effect, primal));
+      if (scene.wants_output(scene::Output::vtu))
         io::write_file_atomically(out / ("contact_" + effect.problem + ".vtp"),
                                   io::polyline_vtp_text(effect.samples.table));
-      }
     }
     for (const auto& file : level_files) io::write_file_atomically(out / file.name, file.text);
     if (mode) mode->write(out / "mode.csv");
     if (convergence) convergence->write(out / "convergence.csv");
     if (scene.wants_output(scene::Output::summary))
       io::write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
-    folder.commit();
   });
   return summary;
 }

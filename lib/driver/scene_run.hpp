@@ -37,9 +37,11 @@ struct SceneRunOptions {
 ///   summary.json              (output "summary") every effect's results, the operators built with
 ///                              their sizes and seconds, and timings
 ///   boundary_<problem>.csv    (output "boundary") u, obstacle or bound, λ sampled on Γ_C
-///   solution_<problem>.vtu    (output "vtu") u and ∇u on Ω, VTK Lagrange cells of the largest p
+///   solution_<problem>.vtu    (output "vtu") u and ∇u on Ω, VTK Lagrange cells of the largest p;
+///                             under mpirun solution_<problem>.pvtu naming one piece per rank,
+///                             solution_<problem>/rank_<r>.vtu (that rank's cells)
 ///   contact_<problem>.vtp     (output "vtu") the boundary samples on Γ_C, one polyline per zone
-///   solution_<problem>_level<k>.vtu, solution_<problem>.pvd
+///   solution_<problem>_level<k>.vtu (.pvtu), solution_<problem>.pvd
 ///                             (output "vtu", effect convergence) u on every level, as a series
 ///   mode.csv                  (output "mode", effect infsup) the eigenvector of α
 ///   convergence.csv           (effect convergence) problem,level,p,pC,n,m,ndofs,nmult,energy,
@@ -64,10 +66,11 @@ void hand_over_tables(const SceneRunOptions& options,
 struct OutputText {
   std::string name, text;
 };
-/// The VTU of level k of the convergence effect: solution_<problem>_level<k>.vtu.
-std::string level_vtu_name(const std::string& problem, int level);
+/// The solution file of level k of the convergence effect: solution_<problem>_level<k> (.vtu, or
+/// .pvtu when distributed: driver::solution_file_name).
+std::string level_file_name(const std::string& problem, int level);
 /// solution_<problem>.pvd: the levels 0 … `finest` of a problem with the level as ParaView's time.
-OutputText level_collection(const std::string& problem, int finest);
+OutputText level_collection(const std::string& problem, int finest, bool distributed);
 
 /// The columns of convergence.csv and of the work–precision study's rows.
 std::vector<std::string> refinement_columns();

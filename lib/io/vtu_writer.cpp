@@ -66,21 +66,10 @@ class SharedPoints {
   std::map<std::array<long long, 3>, int> keyed_;
 };
 
-// The coefficients of u on one cell's shapes, shape (n_shapes, components); 0 where eliminated.
-// `dof(scalar dof, component)` numbers u.
-Eigen::MatrixXd cell_coefficients(const space::H1Space& space, int cell, const Eigen::VectorXd& u, int components,
-                                  const std::function<int(int, int)>& dof) {
-  const auto& shapes = space.cell_shapes(cell);
-  Eigen::MatrixXd local = Eigen::MatrixXd::Zero(shapes.size(), components);
-  for (std::size_t s = 0; s < shapes.size(); ++s)
-    for (int k = 0; k < components; ++k)
-      if (const int index = dof(shapes[s].dof, k); index >= 0) local(s, k) = u(index);
-  return local;
-}
-
 }  // namespace
 
-std::string vtu_text(const space::H1Space& space, const std::vector<VtuField>& fields, int order) {
+std::string vtu_text(const space::H1Space& space, const std::vector<VtuField>& fields, int order,
+                     const assembly::LocalRows& cells) {
   const auto& mesh = space.mesh();
   int k = order;
   if (k <= 0) {
@@ -95,6 +84,7 @@ std::string vtu_text(const space::H1Space& space, const std::vector<VtuField>& f
   std::vector<std::uint8_t> types;
   std::vector<std::int32_t> degrees;
   for (int c = 0; c < mesh.n_cells(); ++c) {
+    if (!cells.holds(c)) continue;
     const mesh::CellType type = mesh.cell_type(c);
     auto& pattern = patterns[static_cast<int>(type)];
     if (!pattern) pattern = node_pattern(type, k);
@@ -138,32 +128,31 @@ std::string vtu_text(const space::H1Space& space, const std::vector<VtuField>& f
   return document.text(piece);
 }
 
-std::string solution_vtu_text(const space::H1Space& space, const Eigen::VectorXd& u) {
-  auto coefficients = [&](int cell) { return cell_coefficients(space, cell, u, 1, [](int d, int) { return d; }); };
-  return vtu_text(space, {{"u", 1,
-                           [&](int cell, const assembly::CellValues& values) {
-                             return Eigen::MatrixXd(values.values * coefficients(cell));
-                           }},
-                          {"grad_u", 3, [&](int cell, const assembly::CellValues& values) {
-                             const Eigen::MatrixXd local = coefficients(cell);
-                             Eigen::MatrixXd out = Eigen::MatrixXd::Zero(values.values.rows(), 3);
-                             out.col(0) = values.grad_x * local;
-                             out.col(1) = values.grad_y * local;
-                             return out;
-                           }}});
+std::string solution_vtu_text(const assembly::CellField& u) {
+  return vtu_text(*u.space,
+                  {{"u", 1,
+                    [&](int cell, const assembly::CellValues& values) {
+                      return Eigen::MatrixXd(values.values * u.coefficients(cell));
+                    }},
+                   {"grad_u", 3,
+                    [&](int cell, const assembly::CellValues& values) {
+                      const Eigen::MatrixXd local = u.coefficients(cell);
+                      Eigen::MatrixXd out = Eigen::MatrixXd::Zero(values.values.rows(), 3);
+                      out.col(0) = values.grad_x * local;
+                      out.col(1) = values.grad_y * local;
+                      return out;
+                    }}},
+                  0, u.rows);
 }
 
-std::string elastic_vtu_text(const space::VectorSpace& vector_space, const std::vector<assembly::Material>& materials,
-                             const Eigen::VectorXd& u) {
-  const space::H1Space& space = vector_space.scalar();
-  const auto dof = [&](int d, int c) { return vector_space.dof(d, c); };
+std::string elastic_vtu_text(const assembly::CellField& u, const std::vector<assembly::Material>& materials) {
   auto displacement = [&](int cell, const assembly::CellValues& values) {
     Eigen::MatrixXd out = Eigen::MatrixXd::Zero(values.values.rows(), 3);
-    out.leftCols(2) = values.values * cell_coefficients(space, cell, u, 2, dof);
+    out.leftCols(2) = values.values * u.coefficients(cell);
     return out;
   };
   auto von_mises = [&](int cell, const assembly::CellValues& values) {
-    const Eigen::MatrixXd local = cell_coefficients(space, cell, u, 2, dof);
+    const Eigen::MatrixXd local = u.coefficients(cell);
     const Eigen::MatrixXd dx = values.grad_x * local, dy = values.grad_y * local;  // columns: components
     const auto& m = materials[cell];
     Eigen::MatrixXd out(values.values.rows(), 1);
@@ -176,7 +165,24 @@ std::string elastic_vtu_text(const space::VectorSpace& vector_space, const std::
     }
     return out;
   };
-  return vtu_text(space, {{"displacement", 3, displacement}, {"von_mises", 1, von_mises}});
+  return vtu_text(*u.space, {{"displacement", 3, displacement}, {"von_mises", 1, von_mises}}, 0, u.rows);
+}
+
+std::vector<std::pair<std::string, int>> solution_vtu_fields() { return {{"u", 1}, {"grad_u", 3}}; }
+std::vector<std::pair<std::string, int>> elastic_vtu_fields() { return {{"displacement", 3}, {"von_mises", 1}}; }
+
+std::string pvtu_text(const std::vector<std::string>& pieces, const std::vector<std::pair<std::string, int>>& fields) {
+  std::string out =
+      "<?xml version=\"1.0\"?>\n"
+      "<VTKFile type=\"PUnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
+      "<PUnstructuredGrid GhostLevel=\"0\">\n<PPointData>\n";
+  for (const auto& [name, components] : fields)
+    out += fmt::format("<PDataArray type=\"Float64\" Name=\"{}\" NumberOfComponents=\"{}\"/>\n", name, components);
+  out +=
+      "</PPointData>\n<PCellData>\n<PDataArray type=\"Int32\" Name=\"p\" NumberOfComponents=\"1\"/>\n</PCellData>\n"
+      "<PPoints>\n<PDataArray type=\"Float64\" Name=\"Points\" NumberOfComponents=\"3\"/>\n</PPoints>\n";
+  for (const auto& piece : pieces) out += fmt::format("<Piece Source=\"{}\"/>\n", piece);
+  return out + "</PUnstructuredGrid>\n</VTKFile>\n";
 }
 
 }  // namespace hpcontact::io

@@ -9,8 +9,10 @@
 #include <string>
 #include <vector>
 
+#include "assembly/cell_field.hpp"
 #include "assembly/cell_values.hpp"
 #include "assembly/elastic_system.hpp"
+#include "assembly/local_rows.hpp"
 #include "space/h1_space.hpp"
 #include "space/vector_space.hpp"
 
@@ -24,16 +26,25 @@ struct VtuField {
   std::function<Eigen::MatrixXd(int cell, const assembly::CellValues& values)> evaluate;
 };
 
-/// The VTU file's text: `fields` as point data, the cell degree p_T as cell data "p".
-/// @param order k of the Lagrange cells; 0 means the largest p_T.
-std::string vtu_text(const space::H1Space& space, const std::vector<VtuField>& fields, int order = 0);
+/// The VTU file's text: `fields` as point data, the cell degree p_T as cell data "p", on the
+/// cells `cells` holds (a distributed run's piece: the rank's own cells; fields with jumps are then
+/// averaged over the piece's cells at a point).
+/// @param order k of the Lagrange cells; 0 means the largest p_T of the mesh (the same in every piece).
+std::string vtu_text(const space::H1Space& space, const std::vector<VtuField>& fields, int order = 0,
+                     const assembly::LocalRows& cells = {});
 
-/// u_h ∈ S^p(T_h) as the point fields "u" and "grad_u".
-std::string solution_vtu_text(const space::H1Space& space, const Eigen::VectorXd& u);
-
+/// u_h ∈ S^p(T_h) as the point fields "u" and "grad_u", on the cells u is known on.
+std::string solution_vtu_text(const assembly::CellField& u);
 /// A displacement of [S^p(T_h)]² as the vector field "displacement" and the von Mises stress
-/// "von_mises" (with σ_zz of the plane model; averaged over the cells meeting at a point).
-std::string elastic_vtu_text(const space::VectorSpace& space, const std::vector<assembly::Material>& materials,
-                             const Eigen::VectorXd& u);
+/// "von_mises" (with σ_zz of the plane model; averaged over the cells meeting at a point), on the
+/// cells u is known on.
+std::string elastic_vtu_text(const assembly::CellField& u, const std::vector<assembly::Material>& materials);
+
+/// The point fields of the two texts above, as (name, components).
+std::vector<std::pair<std::string, int>> solution_vtu_fields();
+std::vector<std::pair<std::string, int>> elastic_vtu_fields();
+/// A parallel VTU (PUnstructuredGrid) naming the pieces (paths relative to it) with these point
+/// fields and the cell data "p".
+std::string pvtu_text(const std::vector<std::string>& pieces, const std::vector<std::pair<std::string, int>>& fields);
 
 }  // namespace hpcontact::io

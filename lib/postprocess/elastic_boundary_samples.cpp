@@ -3,7 +3,7 @@
 
 #include "assembly/cell_values.hpp"
 #include "assembly/coupling.hpp"
-#include "postprocess/fe_function.hpp"
+#include "postprocess/boundary_samples.hpp"
 #include "space/multiplier_space.hpp"
 
 namespace hpcontact::postprocess {
@@ -22,9 +22,12 @@ ElasticBoundarySamples sample_elastic_boundary(const contact::ElasticContactSetu
   const auto& ops = *setup.operators;
   const auto& contact = ops.contact();
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
-  const auto u_field = assembly::total_field(solution.lift.get(), ops.vector_space(), solution.u);
-  const std::array<Eigen::VectorXd, 2> components{u_field.space.component(u_field.coefficients, 0),
-                                                  u_field.space.component(u_field.coefficients, 1)};
+  const auto intervals = assembly::common_intervals(contact, *setup.boundary_mesh);
+  const auto points = sample_points(contact, intervals, per_interval);
+  // u at the points from the ranks holding their cells (trace-sized, then the same on every rank)
+  const Eigen::MatrixXd u_at =
+      values_at(assembly::vector_field(ops.vector_space(), solution.u, solution.u_rows, solution.lift), points,
+                ops.distribution());
   ElasticBoundarySamples out{
       io::CsvTable({"x", "y", "s_arc", "u_n", "u_t", "gap", "pressure", "traction_t", "zone"}), 0.0, 0.0, {}, {}};
   out.total_force = total_force(multipliers, solution.pressure);
@@ -32,17 +35,14 @@ ElasticBoundarySamples sample_elastic_boundary(const contact::ElasticContactSetu
   for (std::size_t z = 0; z < contact.zones().size(); ++z)
     out.zone_total_force.push_back(total_force(multipliers, solution.pressure, static_cast<int>(z)));
   const double pressure_scale = solution.pressure.cwiseAbs().maxCoeff();
-  for (const auto& interval : assembly::common_intervals(contact, *setup.boundary_mesh)) {
+  Eigen::Index point = 0;
+  for (const auto& interval : intervals) {
     const auto& trace = contact.edges()[interval.trace_edge];
     const int k = interval.segment, first = multipliers.first_dof(k), n_modes = multipliers.segment_degree(k) + 1;
     int in_contact = 0;
-    for (int j = 0; j < per_interval; ++j) {
-      const double s = interval.s_begin + (interval.s_end - interval.s_begin) * j / (per_interval - 1);
-      const Eigen::Vector2d ref =
-          mesh::local_edge_point(contact.mesh().cell_type(trace.cell), trace.local_edge, trace.local_parameter(s));
-      const CellPoint where{trace.cell, ref.x(), ref.y()};
-      const Eigen::Vector2d u(evaluate(u_field.space.scalar(), components[0], where).value,
-                              evaluate(u_field.space.scalar(), components[1], where).value);
+    for (int j = 0; j < per_interval; ++j, ++point) {
+      const double s = sample_arc(interval, j, per_interval);
+      const Eigen::Vector2d u = u_at.row(point).transpose();
       const mesh::Point x = contact.point_at(s);
       const mesh::Point normal = assembly::trace_direction(contact, s, assembly::TraceDirection::normal);
       const mesh::Point tangent = assembly::trace_direction(contact, s, assembly::TraceDirection::tangent);

@@ -167,7 +167,7 @@ Reference solve_reference(const WorkPrecisionStudy::Reference& reference, const 
       contact::multiplier_l2_distance(*coarse.discretization->multipliers, coarse.solution.lambda_legendre,
                                       *fine.discretization->multipliers, fine.solution.lambda_legendre, out.weight);
   references.add_row({problem, fine.solution.energy, coarse.solution.energy, out.accuracy_energy, accuracy_lambda,
-                      static_cast<long long>(fine.solution.u.size()), fine.seconds, free_boundary,
+                      static_cast<long long>(fine.solution.n_dofs), fine.seconds, free_boundary,
                       free_boundary_moved});
   return out;
 }
@@ -232,7 +232,7 @@ void run_work_precision_study(const WorkPrecisionStudy& study, const std::filesy
                                                                     fine.solution.lambda_legendre, reference.weight);
         const auto p = scene.p.label(), pc = scene.pc.label();
         const auto n = static_cast<long long>(d.contact->edges().size());
-        const auto ndofs = static_cast<long long>(run.solution.u.size());
+        const auto ndofs = static_cast<long long>(run.solution.n_dofs);
         rows.add_row({problem, p, pc, n, static_cast<long long>(d.boundary_mesh->n_segments()), ndofs,
                       static_cast<long long>(run.solution.lambda.size()), error_energy, error_lambda, run.seconds,
                       family.name, run.solution.energy});

@@ -3,6 +3,7 @@ and VTK itself (python3-vtk9), whose own Lagrange-cell interpolation must give u
 samples the library evaluates on its own, to round-off. Run by CTest (Python.Module)."""
 
 import os
+import subprocess
 import xml.etree.ElementTree as ET
 
 import meshio
@@ -31,8 +32,8 @@ def nodes_of(cell_type, k):
 
 
 def probe(vtu_path, points, array):
-    """VTK's own interpolation of `array` of the VTU at 2D points."""
-    reader = vtk.vtkXMLUnstructuredGridReader()
+    """VTK's own interpolation of `array` of the VTU (or PVTU) at 2D points."""
+    reader = vtk.vtkXMLPUnstructuredGridReader() if str(vtu_path).endswith(".pvtu") else vtk.vtkXMLUnstructuredGridReader()
     reader.SetFileName(str(vtu_path))
     polydata = vtk.vtkPolyData()
     xyz = np.column_stack([points, np.zeros(len(points))])
@@ -140,3 +141,59 @@ def test_elastic_vtu_carries_the_displacement_and_von_mises_per_level(tmp_path):
     collection = ET.parse(out / "solution_frictionless.pvd").getroot()
     levels = [meshio.read(out / d.get("file")) for d in collection.iter("DataSet")]
     assert [sum(len(b.data) for b in m.cells) for m in levels][1] == 4 * len(mesh.cells[0].data)
+
+
+def mpirun_solve(out, ranks, scene, arguments):
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    command = ["mpirun", "-n", str(ranks), "--oversubscribe", os.environ["HPCONTACT_CLI"], "solve", scene, *arguments,
+               "--out", str(out)]
+    result = subprocess.run(command, env=env, capture_output=True, text=True)
+    assert result.returncode == 0, result.stdout + result.stderr
+
+
+def read_grid(path):
+    reader = vtk.vtkXMLPUnstructuredGridReader() if str(path).endswith(".pvtu") else vtk.vtkXMLUnstructuredGridReader()
+    reader.SetFileName(str(path))
+    reader.Update()
+    return reader.GetOutput()
+
+
+@pytest.mark.parametrize("scene, problem, array", [(FIGURE1, "signorini", "u"), (ELASTIC, "frictionless", "displacement")])
+def test_under_mpirun_each_rank_writes_its_cells_as_a_piece_of_a_pvtu(tmp_path, scene, problem, array):
+    """Under mpirun no rank gathers u: each writes its own cells; the PVTU's pieces together are the
+    serial file's cells, and VTK's interpolation of them gives the serial u at the boundary samples
+    and at points inside."""
+    with open(scene) as original:  # the scene with the convergence effect, one refinement, every output
+        text = original.read().split("[run]")[0]
+    scene = tmp_path / "scene.toml"
+    scene.write_text(text + f'[run]\neffects = ["{problem}", "convergence"]\noutputs = ["summary", "boundary", "vtu"]\n'
+                     "[convergence]\nrefinements = 1\n")
+    arguments = ["--p", "3"]
+    subprocess.run([os.environ["HPCONTACT_CLI"], "solve", str(scene), *arguments, "--out", str(tmp_path / "serial")],
+                   check=True, capture_output=True)
+    mpirun_solve(tmp_path / "parallel", 3, str(scene), arguments)
+    serial, parallel = tmp_path / "serial", tmp_path / "parallel"
+    assert not (parallel / f"solution_{problem}.vtu").exists()
+    collection = ET.parse(parallel / f"solution_{problem}.pvd").getroot()
+    assert [d.get("file") for d in collection.iter("DataSet")] == [f"solution_{problem}_level0.pvtu",
+                                                                   f"solution_{problem}_level1.pvtu"]
+    for name in (f"solution_{problem}", f"solution_{problem}_level1"):
+        pieces = [p.get("Source") for p in ET.parse(parallel / f"{name}.pvtu").getroot().iter("Piece")]
+        assert pieces == [f"{name}/rank_{r:04d}.vtu" for r in range(3)]
+        cells = [read_grid(parallel / piece).GetNumberOfCells() for piece in pieces]
+        assert min(cells) > 0 and sum(cells) == read_grid(serial / f"{name}.vtu").GetNumberOfCells()
+    samples = np.genfromtxt(serial / f"boundary_{problem}.csv", delimiter=",", names=True)
+    rng = np.random.default_rng(3)
+    inside = rng.uniform(-0.9, 0.9, (50, 2)) if problem == "signorini" else None
+    points = np.column_stack([samples["x"], samples["y"]])
+    if inside is not None:
+        points = np.vstack([points, inside])
+    values = {}
+    for label, path in (("serial", serial / f"solution_{problem}.vtu"),
+                        ("parallel", parallel / f"solution_{problem}.pvtu")):
+        value, found = probe(path, points, array)
+        assert found.all(), label
+        values[label] = value
+    scale = np.abs(values["serial"]).max()
+    assert scale > 0
+    np.testing.assert_allclose(values["parallel"], values["serial"], rtol=0, atol=1e-10 * scale)

@@ -1,0 +1,71 @@
+// write_run_outputs: the staging folder made by rank 0, its path broadcast, pieces written by
+// every rank, then rank 0's files and the commit — each step agreed over the ranks.
+#include "driver/run_outputs.hpp"
+
+#include <fmt/format.h>
+#include <mpi.h>
+
+#include <optional>
+
+#include "core/petsc_session.hpp"
+#include "core/rank_agreement.hpp"
+#include "io/atomic_file.hpp"
+#include "io/output_folder.hpp"
+#include "io/vtu_writer.hpp"
+
+namespace hpcontact::driver {
+
+namespace {
+
+std::string piece_name(const std::string& name, int rank) { return fmt::format("{}/rank_{:04d}.vtu", name, rank); }
+
+// The staging folder's path from rank 0 to every rank (one rank: MPI may not be running).
+std::filesystem::path broadcast_path(const std::filesystem::path& path) {
+  if (mpi_rank_and_size().second == 1) return path;
+  std::string text = path.string();
+  long length = static_cast<long>(text.size());
+  MPI_Bcast(&length, 1, MPI_LONG, 0, MPI_COMM_WORLD);
+  text.resize(static_cast<std::size_t>(length));
+  MPI_Bcast(text.data(), static_cast<int>(length), MPI_CHAR, 0, MPI_COMM_WORLD);
+  return text;
+}
+
+}  // namespace
+
+std::string solution_file_name(const std::string& name, bool distributed) {
+  return name + (distributed ? ".pvtu" : ".vtu");
+}
+
+void write_run_outputs(const std::filesystem::path& out, bool distributed, const std::vector<SolutionFile>& solutions,
+                       const std::function<void(const std::filesystem::path& folder)>& write_rest) {
+  const auto [rank, ranks] = mpi_rank_and_size();
+  std::optional<io::OutputFolder> folder;
+  run_on_all_ranks_agreeing([&, rank = rank] {
+    if (rank == 0) folder.emplace(out);
+  });
+  const std::filesystem::path staging = broadcast_path(folder ? folder->path() : std::filesystem::path());
+  if (distributed)
+    run_on_all_ranks_agreeing([&, rank = rank] {
+      for (const auto& solution : solutions) {
+        std::filesystem::create_directories(staging / solution.name);
+        io::write_file_atomically(staging / piece_name(solution.name, rank), solution.text);
+      }
+    });
+  run_on_all_ranks_agreeing([&, rank = rank, ranks = ranks] {
+    if (rank != 0) return;
+    for (const auto& solution : solutions) {
+      const auto file = staging / solution_file_name(solution.name, distributed);
+      if (!distributed) {
+        io::write_file_atomically(file, solution.text);
+        continue;
+      }
+      std::vector<std::string> pieces;
+      for (int r = 0; r < ranks; ++r) pieces.push_back(piece_name(solution.name, r));
+      io::write_file_atomically(file, io::pvtu_text(pieces, solution.fields));
+    }
+    write_rest(staging);
+    folder->commit();
+  });
+}
+
+}  // namespace hpcontact::driver
