@@ -34,15 +34,14 @@ namespace {
 void note_if_interface_dominates(const linalg::SubstructuredCholesky& factor) {
   static bool noted = false;
   if (noted || mpi_rank_and_size().first != 0 ||
-      !linalg::interface_outweighs_factors(factor.interface_size(), factor.mean_factor_nonzeros()))
+      !linalg::interface_outweighs_factors(factor.interface_entries(), factor.mean_factor_nonzeros()))
     return;
   noted = true;
-  const double g = factor.interface_size();
   fmt::print(stderr,
              "hpcontact: note: substructuring's dense interface problem ({} unknowns between the parts (and Γ_C), "
-             "{:.0f} MB on every rank) outweighs the ranks' sparse factors ({:.0f} MB on average): more ranks raise "
-             "the memory per rank; --distributed-solver mumps or bddc hold no interface matrix\n",
-             factor.interface_size(), g * g * 8e-6, factor.mean_factor_nonzeros() * 8e-6);
+             "{:.0f} MB per rank) outweighs the ranks' sparse factors ({:.0f} MB on average): more ranks gain "
+             "little memory per rank; --distributed-solver mumps or bddc hold no interface matrix\n",
+             factor.interface_size(), factor.interface_entries() * 8e-6, factor.mean_factor_nonzeros() * 8e-6);
 }
 
 // The row of a cell's shape s: its dof in global order, or its entry of `cell_rows` (the rows of
@@ -205,16 +204,6 @@ Eigen::MatrixXd CondensedFactor::share_of(const Eigen::MatrixXd& whole) const {
   for (std::size_t k = 0; k < local_dofs().size(); ++k)
     if (counts_dof_[k]) share.row(static_cast<Eigen::Index>(k)) = whole.row(local_dofs()[k]);
   return share;
-}
-
-Eigen::MatrixXd CondensedFactor::gather(const Eigen::MatrixXd& local) const {
-  HPC_VERIFY(local.rows() == static_cast<Eigen::Index>(local_dofs().size()), "a local vector of the wrong size");
-  if (!distribution_.distributed()) return local;
-  Eigen::MatrixXd whole = Eigen::MatrixXd::Zero(size_, local.cols());
-  for (std::size_t k = 0; k < local_dofs().size(); ++k)
-    if (counts_dof_[k]) whole.row(local_dofs()[k]) = local.row(static_cast<Eigen::Index>(k));
-  sum_over_ranks(distribution_.ranks, whole.data(), whole.size());  // one rank's row, zeros elsewhere: exact
-  return whole;
 }
 
 Eigen::MatrixXd CondensedFactor::multiply_local(const Eigen::SparseMatrix<double>& b,

@@ -83,9 +83,6 @@ class CondensedFactor {
   /// rows of the dofs it counts (of the ranks holding a dof, the lowest), zero at the others, so
   /// that the shares sum to the vector.
   Eigen::MatrixXd share_of(const Eigen::MatrixXd& whole) const;
-  /// The whole vector on every rank, from each rank's rows at its local dofs (equal where ranks
-  /// share a dof, as solve_local's are). Collective.
-  Eigen::MatrixXd gather(const Eigen::MatrixXd& local) const;
   /// B x for B (m, n) the same on every rank and x held at the local dofs: (m, k), the same on
   /// every rank. Collective.
   Eigen::MatrixXd multiply_local(const Eigen::SparseMatrix<double>& b, const Eigen::MatrixXd& x_local) const;

@@ -84,7 +84,7 @@ struct ContactSolution {
   Eigen::VectorXd u;
   assembly::LocalRows u_rows;
   int n_dofs = 0;  ///< unknowns of u in all (of the global numbering)
-  /// The lift w of the Dirichlet data (null without them); assembly::total_field gives u.
+  /// The lift w of the Dirichlet data (null without them); assembly::scalar_field / vector_field read u.
   std::shared_ptr<const assembly::DirichletLift> lift;
   /// λ in the Lagrange basis: its values at the constraint points, segment by segment.
   Eigen::VectorXd lambda;

@@ -57,7 +57,7 @@ struct ElasticContactSolution {
   Eigen::VectorXd u;
   assembly::LocalRows u_rows;
   int n_dofs = 0;  ///< unknowns of u in all (of the global numbering)
-  /// The lift w of the Dirichlet data (null without them); assembly::total_field gives u.
+  /// The lift w of the Dirichlet data (null without them); assembly::scalar_field / vector_field read u.
   std::shared_ptr<const assembly::DirichletLift> lift;
   /// Contact pressure p = −σ_nn ≥ 0 and tangential traction σ_nt on the body (along the tangent
   /// of increasing arc length), Legendre coefficients in M^{p_C}(T_{C,H}); σ_nt = 0 without friction.

@@ -1,11 +1,10 @@
 // SubstructuredCholesky: the interface found from which ranks contribute to which unknowns, each
-// rank's CHOLMOD factor with its interface unknowns last, the dense interface problem summed over
-// the ranks and factorized on each.
+// rank's CHOLMOD factor with its interface unknowns last, the dense interface problem assembled
+// from the ranks' blocks and factorized over them.
 #include "linalg/substructured_cholesky.hpp"
 
 #include <fmt/format.h>
 
-#include <Eigen/Cholesky>
 #include <algorithm>
 #include <exception>
 #include <optional>
@@ -14,6 +13,7 @@
 
 #include "core/error.hpp"
 #include "core/petsc_session.hpp"
+#include "linalg/interface_cholesky.hpp"
 #include "linalg/schur_complement.hpp"
 #include "linalg/shared_unknowns.hpp"
 #include "linalg/sorted_index_map.hpp"
@@ -33,10 +33,8 @@ struct SubstructuredCholesky::Impl {
   std::vector<int> interior_slot, own_interface_slot;  ///< where interior / own_interface sit in touched
   std::unique_ptr<SparseCholesky> local;  ///< [interior; own interface] of A_r + D_r (null without interior)
   Eigen::MatrixXd shifted_schur;          ///< S_r + D_r on own_interface
-  /// S_G, overwritten by its factor L_G (S_G = L_G L_Gᵀ): the factorization runs in place, since
-  /// this dense |G| × |G| matrix is the largest item of a rank beyond a few ranks.
-  Eigen::MatrixXd interface_storage;
-  std::optional<Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>>> interface_factor;
+  /// S_G over the ranks (ScaLAPACK between the parts, the trailing block replicated).
+  std::optional<InterfaceCholesky> interface_factor;
 
   int n_local() const { return static_cast<int>(interior.size() + own_interface.size()); }
   /// A solve by parts: the right-hand side's rows at this rank's interior unknowns and the
@@ -169,27 +167,19 @@ SubstructuredCholesky::SubstructuredCholesky(MPI_Comm ranks, int n,
   if (failure) std::rethrow_exception(failure);
   if (failed != 0.0) throw NumericalError("substructured Cholesky: the factorization failed on another rank");
   const int n_own = static_cast<int>(d.own_interface.size());
-  // 5. S_G = Σ_r (S_r + D_r − D_r), every rank factorizes it.
-  const int n_interface = static_cast<int>(d.interface.size());
-  d.interface_storage = Eigen::MatrixXd::Zero(n_interface, n_interface);
-  for (int k = 0; k < n_own; ++k)
-    for (int l = 0; l < n_own; ++l)
-      d.interface_storage(d.own_interface[k], d.own_interface[l]) += d.shifted_schur(k, l) - (k == l ? shift(k) : 0.0);
-  sum_over_ranks(ranks, d.interface_storage.data(), d.interface_storage.size());
-  d.interface_factor.emplace(d.interface_storage);
-  if (d.interface_factor->info() != Eigen::Success)
-    throw NumericalError(
-        fmt::format("substructured Cholesky: the {0}x{0} interface problem of a {1}x{1} matrix is "
-                    "not positive definite",
-                    n_interface, n));
+  // 5. S_G = Σ_r (S_r + D_r − D_r), held and factorized over the ranks.
+  for (int k = 0; k < n_own; ++k) d.shifted_schur(k, k) -= shift(k);
+  d.interface_factor.emplace(ranks, static_cast<int>(d.interface.size()), d.n_trailing, d.own_interface,
+                             d.shifted_schur);
+  for (int k = 0; k < n_own; ++k) d.shifted_schur(k, k) += shift(k);
   d.touched = std::move(touched);
   mean_factor_nonzeros_ = d.local ? static_cast<double>(d.local->factor_nonzeros()) : 0.0;
   sum_over_ranks(ranks, &mean_factor_nonzeros_, 1);
   mean_factor_nonzeros_ /= rank_and_size(ranks).second;
 }
 
-bool interface_outweighs_factors(int interface_size, double mean_factor_nonzeros) {
-  const double entries = static_cast<double>(interface_size) * interface_size;
+bool interface_outweighs_factors(double interface_entries, double mean_factor_nonzeros) {
+  const double entries = interface_entries;
   constexpr double large = 64e6 / sizeof(double);
   return entries > large && entries > mean_factor_nonzeros;
 }
@@ -199,6 +189,8 @@ SubstructuredCholesky::SubstructuredCholesky(SubstructuredCholesky&&) noexcept =
 SubstructuredCholesky& SubstructuredCholesky::operator=(SubstructuredCholesky&&) noexcept = default;
 
 int SubstructuredCholesky::interface_size() const { return static_cast<int>(impl_->interface.size()); }
+
+double SubstructuredCholesky::interface_entries() const { return impl_->interface_factor->stored_entries(); }
 
 SubstructuredCholesky::Impl::Parts SubstructuredCholesky::Impl::solve_parts(
     MPI_Comm ranks, const Eigen::MatrixXd& interior_rhs, const Eigen::MatrixXd& interface_share) const {
@@ -264,8 +256,8 @@ Eigen::MatrixXd SubstructuredCholesky::schur_complement(const Eigen::SparseMatri
   const Impl& d = *impl_;
   if (d.n_trailing == 0) return schur_complement_by_solves(b);
   return schur_complement_through_trailing(
-      b, d.interface_factor->matrixLLT().bottomRightCorner(d.n_trailing, d.n_trailing),
-      [&d](int j) { return d.trailing_position.find(j); }, [this](const Eigen::MatrixXd& rhs) { return solve(rhs); });
+      b, d.interface_factor->trailing_factor(), [&d](int j) { return d.trailing_position.find(j); },
+      [this](const Eigen::MatrixXd& rhs) { return solve(rhs); });
 }
 
 Eigen::MatrixXd SubstructuredCholesky::schur_complement_by_solves(const Eigen::SparseMatrix<double>& b) const {

@@ -1,8 +1,8 @@
 // Sparse symmetric positive definite direct solver over the MPI ranks by substructuring: every
 // rank factorizes (CHOLMOD) the unknowns only its own entries touch, and the unknowns shared
-// between ranks plus a trailing set (the Γ_C trace) form a small dense interface problem that
-// every rank holds. Right-hand sides and results either replicated on every rank or held on the
-// unknowns each rank touches (solve_local).
+// between ranks plus a trailing set (the Γ_C trace) form a dense interface problem held and
+// factorized over the ranks by ScaLAPACK (InterfaceCholesky). Right-hand sides and results either replicated on every
+// rank or held on the unknowns each rank touches (solve_local).
 #pragma once
 
 #include <mpi.h>
@@ -23,10 +23,11 @@ namespace hpcontact::linalg {
 ///     A_r = [A_II   A_IG ]     S_r = A_GG,r − A_GI A_II⁻¹ A_IG   (rank r alone, CHOLMOD with
 ///           [A_GI   A_GG,r]                                        G ∩ r ordered last),
 ///
-/// the interface problem S_G = Σ_r S_r (dense, |G| × |G|, summed over the ranks) is factorized
-/// by every rank: S_G = L_G L_Gᵀ. A solve condenses each rank's interior right-hand side onto G,
-/// solves with L_G, and back-substitutes on each rank; B A⁻¹ Bᵀ for B supported on C is Wᵀ W
-/// with W = L_CC⁻¹ B_Cᵀ, from the trailing block of L_G. Rank r's A_GG,r alone is only semi-
+/// the interface problem S_G = Σ_r S_r (dense, |G| × |G|) is assembled from the ranks' S_r into
+/// ScaLAPACK's distributed layout and factorized there (InterfaceCholesky: no rank holds more
+/// than |G|²/P of it plus trace-sized blocks). A solve condenses each rank's interior right-hand
+/// side onto G, solves with S_G, and back-substitutes on each rank; B A⁻¹ Bᵀ for B supported on C
+/// is Wᵀ W with W = L_CC⁻¹ B_Cᵀ, L_CC the trailing block of chol(S_G). Rank r's A_GG,r alone is only semi-
 /// definite where its part of the domain floats, so it factorizes A_r + D_r (D_r its own diagonal
 /// on G ∩ r) and subtracts D_r from the trailing block again. On one rank G = C: the serial
 /// trailing-block factorization.
@@ -47,6 +48,8 @@ class SubstructuredCholesky {
   /// |G|: the size of the dense interface problem (unknowns shared by ranks, and the trailing set
   /// when it joined them).
   int interface_size() const;
+  /// Entries of the interface problem this rank stores (about |G|²/P plus trace-sized blocks).
+  double interface_entries() const;
   /// Nonzeros of the ranks' sparse (CHOLMOD) factors, averaged over the ranks.
   double mean_factor_nonzeros() const { return mean_factor_nonzeros_; }
   /// A⁻¹ rhs, shape (n, k), the same on every rank. Collective.
@@ -75,10 +78,9 @@ class SubstructuredCholesky {
   double mean_factor_nonzeros_ = 0.0;
 };
 
-/// Whether the dense interface problem (|G|² entries on every rank) holds more than the ranks'
-/// sparse factors on average and more than 64 MB: from there on more ranks raise the memory per
-/// rank (the factors shrink like 1/P, |G|² grows with P), so another distributed solver scales
-/// further.
-bool interface_outweighs_factors(int interface_size, double mean_factor_nonzeros);
+/// Whether a rank's share of the dense interface problem (`interface_entries`) holds more than the
+/// ranks' sparse factors on average and more than 64 MB: the factors shrink like 1/P, |G|²/P
+/// does not (|G| grows with P), so another distributed solver scales further.
+bool interface_outweighs_factors(double interface_entries, double mean_factor_nonzeros);
 
 }  // namespace hpcontact::linalg
