@@ -14,8 +14,15 @@
 //     untouched: the matrix has one more unknown than the grid, which no entry touches (the
 //     factorization must fail on every rank, exit 5 otherwise)
 //     indefinite_plain: as indefinite, factorized without a trailing set
+//
+//   distributed_factor_check interface N M [indefinite]
+//     substructuring's interface problem alone (InterfaceCholesky): an N × N matrix, its last M
+//     unknowns the trailing set, summed from random positive definite blocks each rank holds on
+//     overlapping positions; prints the relative differences of its solve and of L_CC L_CCᵀ from
+//     dense Cholesky of the sum (indefinite: one block negative, the factorization must fail)
 #include <fmt/format.h>
 
+#include <Eigen/Cholesky>
 #include <algorithm>
 #include <random>
 #include <string>
@@ -24,6 +31,7 @@
 #include "core/petsc_session.hpp"
 #include "linalg/bddc_solver.hpp"
 #include "linalg/distributed_cholesky.hpp"
+#include "linalg/interface_cholesky.hpp"
 #include "linalg/sparse_cholesky.hpp"
 #include "linalg/substructured_cholesky.hpp"
 
@@ -185,12 +193,65 @@ int run(const std::string& solver, const std::string& split, bool indefinite, bo
 
 }  // namespace
 
+// Rank r's positions: those ≡ r or r + 1 (mod the ranks), so that neighbours overlap; its block
+// X Xᵀ + I there (−(X Xᵀ + 10 I) on rank 0 when `indefinite`).
+std::pair<std::vector<int>, Eigen::MatrixXd> interface_block(int r, int ranks, int n, bool indefinite) {
+  std::vector<int> positions;
+  for (int i = 0; i < n; ++i)
+    if (i % ranks == r || i % ranks == (r + 1) % ranks) positions.push_back(i);
+  std::mt19937 random(11 + r);
+  std::uniform_real_distribution<double> value(-1.0, 1.0);
+  const auto size = static_cast<Eigen::Index>(positions.size());
+  Eigen::MatrixXd x(size, size + 1);
+  for (Eigen::Index i = 0; i < x.size(); ++i) x(i) = value(random);
+  Eigen::MatrixXd block = x * x.transpose() + Eigen::MatrixXd::Identity(size, size);
+  if (indefinite && r == 0) block = -(block + 10.0 * Eigen::MatrixXd::Identity(size, size));
+  return {positions, block};
+}
+
+int run_interface(int n, int m, bool indefinite) {
+  const auto [rank, ranks] = mpi_rank_and_size();
+  Eigen::MatrixXd whole = Eigen::MatrixXd::Zero(n, n);
+  for (int r = 0; r < ranks; ++r) {
+    const auto [positions, block] = interface_block(r, ranks, n, indefinite);
+    for (std::size_t i = 0; i < positions.size(); ++i)
+      for (std::size_t j = 0; j < positions.size(); ++j) whole(positions[i], positions[j]) += block(i, j);
+  }
+  const auto [positions, block] = interface_block(rank, ranks, n, indefinite);
+  const linalg::InterfaceCholesky factor(MPI_COMM_WORLD, n, m, positions, block);
+  if (indefinite) return 5;
+  std::mt19937 random(3);  // the same right-hand side on every rank
+  std::uniform_real_distribution<double> value(-1.0, 1.0);
+  Eigen::MatrixXd rhs(n, 2);
+  for (Eigen::Index i = 0; i < rhs.size(); ++i) rhs(i) = value(random);
+  const Eigen::MatrixXd reference = whole.llt().solve(rhs);
+  double trailing = 0.0;
+  if (m > 0) {
+    const int h = n - m;
+    const Eigen::MatrixXd schur =
+        whole.bottomRightCorner(m, m) -
+        whole.bottomLeftCorner(m, h) * whole.topLeftCorner(h, h).llt().solve(whole.topRightCorner(h, m));
+    const Eigen::MatrixXd& l = factor.trailing_factor();
+    trailing = relative_difference(l * l.transpose(), schur);
+  }
+  if (rank == 0)
+    fmt::print("interface_solve {:.3e}\ninterface_trailing {:.3e}\n", relative_difference(factor.solve(rhs), reference),
+               trailing);
+  else
+    (void)factor.solve(rhs);
+  return 0;
+}
+
 int main(int argc, char** argv) {
   const PetscSession session({argv[0]});
   try {
     if (argc < 3)
       throw_bad_input("distributed_factor_check", "arguments", std::to_string(argc - 1), "SOLVER SPLIT [indefinite]");
     const std::string mode = argc > 3 ? argv[3] : "";
+    if (std::string(argv[1]) == "interface" && argc < 4)
+      throw_bad_input("distributed_factor_check", "arguments", std::to_string(argc - 1), "interface N M [indefinite]");
+    if (std::string(argv[1]) == "interface")
+      return run_interface(std::stoi(argv[2]), std::stoi(argv[3]), argc > 4 && std::string(argv[4]) == "indefinite");
     const bool plain = mode == "indefinite_plain";
     return run(argv[1], argv[2], mode == "indefinite" || plain, mode == "untouched", plain);
   } catch (const std::exception& error) {

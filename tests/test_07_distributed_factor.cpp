@@ -1,6 +1,7 @@
 // Stage 7, the distributed solvers over MPI ranks (run under mpirun through a helper program):
 // substructuring, MUMPS and MATIS + BDDC must give CHOLMOD's solves and Schur complements B A⁻¹ Bᵀ (through the
-// trailing set, and by solves when B reaches outside it) on 1, 2 and 3 ranks, with the elements
+// trailing set, and by solves when B reaches outside it) on 1, 2 and 3 ranks (substructuring also
+// on 4), with the elements
 // split in strips or scattered (every unknown shared, ranks without interior, floating parts);
 // an indefinite matrix must fail on every rank with a clear message, not hang; the split of the
 // cells over the ranks must be balanced and take the shorter cut of bisection and PT-Scotch.
@@ -213,6 +214,27 @@ TEST(DistributedFactor, SubstructuringRefusesAnUnknownWithoutEntriesOnEveryRank)
     const auto run = run_command(check_command(ranks, "substructuring strips untouched"));
     EXPECT_EQ(run.exit_code, 3) << ranks << " ranks\n" << run.output;
     EXPECT_NE(run.output.find("unknown 384 of 385 has no entries"), std::string::npos) << run.output;
+  }
+}
+
+// Substructuring's interface problem alone (ScaLAPACK between the parts, the trailing block
+// replicated), against dense Cholesky of the summed blocks: with both parts, without a trailing
+// set, with the trailing set alone, and with fewer unknowns between the parts than ranks (the
+// padding); a negative block fails on every rank.
+TEST(DistributedFactor, InterfaceProblemOverTheRanksEqualsDenseCholesky) {
+  for (int ranks : {1, 2, 3, 4})
+    for (const auto& [n, m] : std::vector<std::pair<int, int>>{{37, 5}, {37, 0}, {5, 5}, {3, 1}}) {
+      const std::string where =
+          std::to_string(ranks) + " ranks, n = " + std::to_string(n) + ", m = " + std::to_string(m);
+      const auto run = run_command(check_command(ranks, "interface " + std::to_string(n) + " " + std::to_string(m)));
+      ASSERT_EQ(run.exit_code, 0) << where << "\n" << run.output;
+      EXPECT_LT(number_after(run.output, "interface_solve"), 1e-11) << where << "\n" << run.output;
+      EXPECT_LT(number_after(run.output, "interface_trailing"), 1e-11) << where << "\n" << run.output;
+    }
+  for (int ranks : {1, 3}) {
+    const auto run = run_command(check_command(ranks, "interface 37 5 indefinite"));
+    EXPECT_EQ(run.exit_code, 3) << ranks << " ranks\n" << run.output;
+    EXPECT_NE(run.output.find("not positive definite"), std::string::npos) << run.output;
   }
 }
 

@@ -80,7 +80,7 @@ struct ContactSetup {
 struct ContactSolution {
   /// Coefficients on S^p(T_h): u itself, or with Dirichlet data u_0, where u = u_0 + w; at the
   /// rows of u_rows (serial: every dof in the global numbering; distributed: this rank's own cells'
-  /// dofs, so postprocess::scalar_field reads it on those cells).
+  /// dofs, so assembly::scalar_field reads it on those cells).
   Eigen::VectorXd u;
   assembly::LocalRows u_rows;
   int n_dofs = 0;  ///< unknowns of u in all (of the global numbering)

@@ -135,20 +135,21 @@ std::vector<ElasticEffect> solve_elastic_effects(const scene::Scene& scene, cons
 }
 
 // solution_<effect>(_level<k>): the displacement u0 + the Dirichlet lift and its von Mises stress,
-// on this rank's cells.
+// on this rank's cells; its text built when written (effect and operators must live until then).
 SolutionFile elastic_solution_file(const std::string& name, const ElasticEffect& effect,
                                    const operators::ElasticOperators& operators) {
-  const auto& solution = effect.solution;
-  return {
-      name, io::elastic_vtu_fields(),
-      io::elastic_vtu_text(assembly::vector_field(operators.vector_space(), solution.u, solution.u_rows, solution.lift),
-                           operators.materials())};
+  return {name, io::elastic_vtu_fields(), [&effect, &operators] {
+            const auto& solution = effect.solution;
+            return io::elastic_vtu_text(
+                assembly::vector_field(operators.vector_space(), solution.u, solution.u_rows, solution.lift),
+                operators.materials());
+          }};
 }
 
 // The convergence effect: the scene's elastic problems on `convergence_refinements` uniform
 // refinements beyond its own mesh, each level with its own operators; errors of the energy and
 // of the pressure (L²(Γ_C)) against the finest level. With output "vtu" every level's
-// displacement goes into `files` with one PVD per problem.
+// displacement goes into `level_solutions`, with one PVD per problem into `files`.
 io::CsvTable elastic_convergence(const scene::Scene& scene, const SceneDiscretization& base_mesh,
                                  const operators::ElasticOperators& base_operators,
                                  const std::vector<ElasticEffect>& base, const SceneRunOptions& options,
@@ -191,8 +192,9 @@ io::CsvTable elastic_convergence(const scene::Scene& scene, const SceneDiscretiz
            effect.seconds, scene.p.label(), scene.pc.label()});
       if (writes_files)
         run_on_all_ranks_agreeing([&] {
-          level_solutions.push_back(elastic_solution_file(level_file_name(effect.name, static_cast<int>(k)), effect,
-                                                          k == 0 ? base_operators : *levels[k].operators));
+          level_solutions.push_back(
+              built_now(elastic_solution_file(level_file_name(effect.name, static_cast<int>(k)), effect,
+                                              k == 0 ? base_operators : *levels[k].operators)));
         });
     }
   if (writes_files)
@@ -281,7 +283,8 @@ nlohmann::json run_elastic_scene(const scene::Scene& scene, const SceneRunOption
         scene, *d, infsup_setup_of(scene, d->mesh, d->cell_degrees, *d->boundary_mesh, d->segment_degrees, operators),
         mode);
   }
-  // 4. The summary, then every file at once.
+  // 4. The summary, then every file at once (the factorizations freed first, as in run_scene).
+  operators.release_factors();
   nlohmann::json summary{
       {"scene", scene.file},
       {"p", scene.p.label()},
@@ -310,11 +313,9 @@ nlohmann::json run_elastic_scene(const scene::Scene& scene, const SceneRunOption
   // failure to write ends every rank the same way).
   if (!options.write_files) return summary;
   if (scene.wants_output(scene::Output::vtu))
-    run_on_all_ranks_agreeing([&] {
-      for (const auto& effect : effects)
-        solutions.push_back(elastic_solution_file("solution_" + effect.name, effect, operators));
-    });
-  write_run_outputs(options.out, options.distribution.distributed(), solutions, [&](const std::filesystem::path& out) {
+    for (const auto& effect : effects)
+      solutions.push_back(elastic_solution_file("solution_" + effect.name, effect, operators));
+  write_run_outputs(options.out, options.distribution, solutions, [&](const std::filesystem::path& out) {
     write_tables(scene, effects, {mode, convergence, level_files}, summary, out);
   });
   return summary;

@@ -35,9 +35,10 @@ contact::ElasticContactSetup elastic_setup_of(const scene::Scene& scene, const S
 ///   summary.json              (output "summary") every effect's results, the operators, timings
 ///   boundary_<effect>.csv     (output "boundary") x,y,s_arc,u_n,u_t,gap,pressure,traction_t,zone on Γ_C
 ///   solution_<effect>.vtu     (output "vtu") the displacement and the von Mises stress, VTK
-///                              Lagrange cells of the largest p
+///                              Lagrange cells of the largest p (under mpirun a .pvtu naming
+///                              one piece per rank, as run_scene)
 ///   contact_<effect>.vtp      (output "vtu") the boundary samples on Γ_C, one polyline per zone
-/// Nothing is written unless every effect succeeded. Returns the summary. Serial only.
+/// Nothing is written unless every effect succeeded. Returns the summary.
 nlohmann::json run_elastic_scene(const scene::Scene& scene, const SceneRunOptions& options);
 
 }  // namespace hpcontact::driver

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <mpi.h>
 
+#include <memory>
 #include <optional>
 
 #include "core/petsc_session.hpp"
@@ -19,53 +20,68 @@ namespace {
 
 std::string piece_name(const std::string& name, int rank) { return fmt::format("{}/rank_{:04d}.vtu", name, rank); }
 
-// The staging folder's path from rank 0 to every rank (one rank: MPI may not be running).
-std::filesystem::path broadcast_path(const std::filesystem::path& path) {
-  if (mpi_rank_and_size().second == 1) return path;
+// The staging folder's path from rank 0 to every rank of `ranks` (one rank: MPI may not be running).
+std::filesystem::path broadcast_path(const std::filesystem::path& path, MPI_Comm ranks, int size) {
+  if (size == 1) return path;
   std::string text = path.string();
   long length = static_cast<long>(text.size());
-  MPI_Bcast(&length, 1, MPI_LONG, 0, MPI_COMM_WORLD);
+  MPI_Bcast(&length, 1, MPI_LONG, 0, ranks);
   text.resize(static_cast<std::size_t>(length));
-  MPI_Bcast(text.data(), static_cast<int>(length), MPI_CHAR, 0, MPI_COMM_WORLD);
+  MPI_Bcast(text.data(), static_cast<int>(length), MPI_CHAR, 0, ranks);
   return text;
 }
 
 }  // namespace
 
+SolutionFile built_now(SolutionFile file) {
+  auto text = std::make_shared<std::string>(file.text());
+  file.text = [text] { return std::move(*text); };
+  return file;
+}
+
 std::string solution_file_name(const std::string& name, bool distributed) {
   return name + (distributed ? ".pvtu" : ".vtu");
 }
 
-void write_run_outputs(const std::filesystem::path& out, bool distributed, const std::vector<SolutionFile>& solutions,
+void write_run_outputs(const std::filesystem::path& out, const linalg::Distribution& distribution,
+                       const std::vector<SolutionFile>& solutions,
                        const std::function<void(const std::filesystem::path& folder)>& write_rest) {
-  const auto [rank, ranks] = mpi_rank_and_size();
+  const bool distributed = distribution.distributed();
+  const MPI_Comm ranks = distributed ? distribution.ranks : MPI_COMM_WORLD;
+  const auto [rank, size] = distributed ? rank_and_size(ranks) : mpi_rank_and_size();
   std::optional<io::OutputFolder> folder;
-  run_on_all_ranks_agreeing([&, rank = rank] {
-    if (rank == 0) folder.emplace(out);
-  });
-  const std::filesystem::path staging = broadcast_path(folder ? folder->path() : std::filesystem::path());
+  run_on_all_ranks_agreeing(
+      [&, rank = rank] {
+        if (rank == 0) folder.emplace(out);
+      },
+      ranks);
+  const std::filesystem::path staging = broadcast_path(folder ? folder->path() : std::filesystem::path(), ranks, size);
   if (distributed)
-    run_on_all_ranks_agreeing([&, rank = rank] {
-      for (const auto& solution : solutions) {
-        std::filesystem::create_directories(staging / solution.name);
-        io::write_file_atomically(staging / piece_name(solution.name, rank), solution.text);
-      }
-    });
-  run_on_all_ranks_agreeing([&, rank = rank, ranks = ranks] {
-    if (rank != 0) return;
-    for (const auto& solution : solutions) {
-      const auto file = staging / solution_file_name(solution.name, distributed);
-      if (!distributed) {
-        io::write_file_atomically(file, solution.text);
-        continue;
-      }
-      std::vector<std::string> pieces;
-      for (int r = 0; r < ranks; ++r) pieces.push_back(piece_name(solution.name, r));
-      io::write_file_atomically(file, io::pvtu_text(pieces, solution.fields));
-    }
-    write_rest(staging);
-    folder->commit();
-  });
+    run_on_all_ranks_agreeing(
+        [&, rank = rank] {
+          for (const auto& solution : solutions) {
+            std::filesystem::create_directories(staging / solution.name);
+            io::write_file_atomically(staging / piece_name(solution.name, rank), solution.text());
+          }
+        },
+        ranks);
+  run_on_all_ranks_agreeing(
+      [&, rank = rank, size = size] {
+        if (rank != 0) return;
+        for (const auto& solution : solutions) {
+          const auto file = staging / solution_file_name(solution.name, distributed);
+          if (!distributed) {
+            io::write_file_atomically(file, solution.text());
+            continue;
+          }
+          std::vector<std::string> pieces;
+          for (int r = 0; r < size; ++r) pieces.push_back(piece_name(solution.name, r));
+          io::write_file_atomically(file, io::pvtu_text(pieces, solution.fields));
+        }
+        write_rest(staging);
+        folder->commit();
+      },
+      ranks);
 }
 
 }  // namespace hpcontact::driver

@@ -10,24 +10,34 @@
 #include <utility>
 #include <vector>
 
+#include "linalg/distribution.hpp"
+
 namespace hpcontact::driver {
 
 /// One solution's ParaView file.
 struct SolutionFile {
   std::string name;                                 ///< without extension: solution_file_name gives the file
   std::vector<std::pair<std::string, int>> fields;  ///< its point fields (name, components)
-  std::string text;  ///< this rank's VTU: the whole mesh when serial, the rank's cells when distributed
+  /// This rank's VTU text (the whole mesh when serial, the rank's cells when distributed), built
+  /// when the file is written (called once), so that one text at a time is held.
+  std::function<std::string()> text;
 };
 
+/// `file` with its text built now, for a solution whose operators end before the files are
+/// written (a convergence level's).
+SolutionFile built_now(SolutionFile file);
+
 /// The file a solution file `name` becomes: name.vtu serial, name.pvtu distributed (its pieces
-/// name/rank_<r>.vtu beside it).
+/// name/rank_<r>.vtu beside it, r the rank in the distribution's communicator).
 std::string solution_file_name(const std::string& name, bool distributed);
 
 /// Writes the outputs into a staging folder and moves it into place at `out` (io::OutputFolder):
-/// `write_rest(folder)` on rank 0, then `solutions` (pieces by every rank when distributed).
-/// Collective on MPI_COMM_WORLD: a failure on any rank ends every rank with the same error, and
-/// `out` keeps what it held.
-void write_run_outputs(const std::filesystem::path& out, bool distributed, const std::vector<SolutionFile>& solutions,
+/// when distributed, every rank writes its pieces of `solutions`; then rank 0 writes their VTU
+/// (serial) or PVTU files, calls `write_rest(folder)` and commits. Collective on the
+/// distribution's ranks (serial: on MPI_COMM_WORLD, rank 0 writing): a failure on any rank ends
+/// every rank with the same error, and `out` keeps what it held.
+void write_run_outputs(const std::filesystem::path& out, const linalg::Distribution& distribution,
+                       const std::vector<SolutionFile>& solutions,
                        const std::function<void(const std::filesystem::path& folder)>& write_rest);
 
 }  // namespace hpcontact::driver

@@ -88,12 +88,15 @@ std::vector<ContactEffect> solve_contact_effects(const scene::Scene& scene, cons
   return effects;
 }
 
-// solution_<problem>(_level<k>): u = u0 + the Dirichlet lift on Ω, on this rank's cells.
+// solution_<problem>(_level<k>): u = u0 + the Dirichlet lift on Ω, on this rank's cells; its text
+// built when written (effect and primal must live until then).
 SolutionFile solution_file(const std::string& name, const ContactEffect& effect,
                            const operators::PrimalOperators& primal) {
-  const auto& solution = effect.solution;
-  return {name, io::solution_vtu_fields(),
-          io::solution_vtu_text(assembly::scalar_field(primal.space(), solution.u, solution.u_rows, solution.lift))};
+  return {name, io::solution_vtu_fields(), [&effect, &primal] {
+            const auto& solution = effect.solution;
+            return io::solution_vtu_text(
+                assembly::scalar_field(primal.space(), solution.u, solution.u_rows, solution.lift));
+          }};
 }
 
 // Whether the run writes the convergence levels' VTU files: output "vtu" and files wanted (every
@@ -110,7 +113,7 @@ void add_level_solutions(const scene::Scene& scene, const std::vector<ContactEff
   if (!writes_level_files(scene, options)) return;
   run_on_all_ranks_agreeing([&] {
     for (const auto& effect : effects)
-      files.push_back(solution_file(level_file_name(effect.problem, level), effect, primal));
+      files.push_back(built_now(solution_file(level_file_name(effect.problem, level), effect, primal)));
   });
 }
 
@@ -283,7 +286,9 @@ nlohmann::json run_scene(const scene::Scene& given_scene, const SceneRunOptions&
     add_convergence_rows(scene, contacts, *d, primal, options, log, *convergence, solutions, level_files);
   }
 
-  // 5. The summary, then every file at once.
+  // 5. The summary, then every file at once (the factorizations freed first: the solutions'
+  //    ParaView text is built beside them otherwise).
+  primal.release_factors();
   add_run_summary(scene, *d, primal, log, summary);
   if (!free_boundary.is_null()) summary["free_boundary"] = free_boundary;
   for (const auto& effect : contacts) summary[effect.problem] = contact_summary(effect);
@@ -300,11 +305,9 @@ nlohmann::json run_scene(const scene::Scene& given_scene, const SceneRunOptions&
   //    a failure to write ends every rank the same way).
   if (!options.write_files) return summary;
   if (scene.wants_output(scene::Output::vtu))
-    run_on_all_ranks_agreeing([&] {
-      for (const auto& effect : contacts)
-        solutions.push_back(solution_file("solution_" + effect.problem, effect, primal));
-    });
-  write_run_outputs(options.out, options.distribution.distributed(), solutions, [&](const std::filesystem::path& out) {
+    for (const auto& effect : contacts)
+      solutions.push_back(solution_file("solution_" + effect.problem, effect, primal));
+  write_run_outputs(options.out, options.distribution, solutions, [&](const std::filesystem::path& out) {
     for (const auto& effect : contacts) {
       if (scene.wants_output(scene::Output::boundary))
         effect.samples.table.write(out / ("boundary_" + effect.problem + ".csv"));

@@ -24,7 +24,7 @@ struct SceneRunOptions {
   std::filesystem::path out;                         ///< output folder (created when everything is computed)
   std::function<void(const std::string&)> progress;  ///< one line per step, if given
   /// Under mpirun: every rank runs the scene with K and A_G factorized over the ranks by this
-  /// solver, and rank 0 alone writes the files.
+  /// solver; rank 0 writes the files, and each rank its piece of the ParaView files.
   linalg::Distribution distribution = {};  ///< serial
   /// If given, receives every table the run writes, by file stem ("boundary_signorini", "mode",
   /// "convergence"), so that callers (the Python module) get the data without files.

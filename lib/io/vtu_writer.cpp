@@ -129,12 +129,13 @@ std::string vtu_text(const space::H1Space& space, const std::vector<VtuField>& f
 }
 
 std::string solution_vtu_text(const assembly::CellField& u) {
+  const auto names = solution_vtu_fields();  // (the PVTU names the same)
   return vtu_text(*u.space,
-                  {{"u", 1,
+                  {{names[0].first, names[0].second,
                     [&](int cell, const assembly::CellValues& values) {
                       return Eigen::MatrixXd(values.values * u.coefficients(cell));
                     }},
-                   {"grad_u", 3,
+                   {names[1].first, names[1].second,
                     [&](int cell, const assembly::CellValues& values) {
                       const Eigen::MatrixXd local = u.coefficients(cell);
                       Eigen::MatrixXd out = Eigen::MatrixXd::Zero(values.values.rows(), 3);
@@ -165,7 +166,10 @@ std::string elastic_vtu_text(const assembly::CellField& u, const std::vector<ass
     }
     return out;
   };
-  return vtu_text(*u.space, {{"displacement", 3, displacement}, {"von_mises", 1, von_mises}}, 0, u.rows);
+  const auto names = elastic_vtu_fields();  // (the PVTU names the same)
+  return vtu_text(*u.space,
+                  {{names[0].first, names[0].second, displacement}, {names[1].first, names[1].second, von_mises}}, 0,
+                  u.rows);
 }
 
 std::vector<std::pair<std::string, int>> solution_vtu_fields() { return {{"u", 1}, {"grad_u", 3}}; }

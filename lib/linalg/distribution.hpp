@@ -11,8 +11,8 @@ namespace hpcontact::linalg {
 
 enum class DistributedSolver {
   serial,          ///< one process (CHOLMOD)
-  substructuring,  ///< SubstructuredCholesky: CHOLMOD per rank, dense interface problem on every
-                   ///< rank
+  substructuring,  ///< SubstructuredCholesky: CHOLMOD per rank, the dense interface problem over the
+                   ///< ranks by ScaLAPACK
   mumps,           ///< DistributedCholesky: PETSc MPIAIJ + MUMPS, S_T by its Schur interface
   bddc,            ///< BddcSolver: PETSc MATIS + conjugate gradients with PCBDDC
 };

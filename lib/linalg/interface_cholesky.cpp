@@ -115,7 +115,7 @@ InterfaceCholesky::InterfaceCholesky(MPI_Comm ranks, int n, int n_trailing, cons
     for (std::size_t j = 0; j < in_c.size(); ++j) s_cc(rows_c[i], rows_c[j]) += block(in_c[i], in_c[j]);
   sum_over_ranks(ranks, s_cc.data(), s_cc.size());
   const int ranks_count = rank_and_size(ranks).second;
-  stored_entries_ = 2.0 * m * m;
+  stored_entries_ = static_cast<double>(m) * m;  // L_CC
   if (d.n_h > 0) {
     HPC_VERIFY(ensure_petsc_initialized(), "interface Cholesky: PETSc is not initialized");
     const int rank = rank_and_size(ranks).first;

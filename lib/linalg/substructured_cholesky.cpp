@@ -26,7 +26,7 @@ struct SubstructuredCholesky::Impl {
   std::vector<int> interface;         ///< global index of every interface position (G \ C, then C)
   SortedIndexMap interface_position;  ///< global index → its interface position
   int n_trailing = 0;
-  SortedIndexMap trailing_position;                    ///< global index → its row in the trailing block of L_G
+  SortedIndexMap trailing_position;                    ///< global index → its row of L_CC
   std::vector<int> interior;                           ///< this rank's interior unknowns (global, ascending)
   std::vector<int> own_interface;                      ///< interface positions this rank touches (ascending)
   std::vector<int> touched;                            ///< the unknowns this rank's entries touch (ascending)
@@ -118,8 +118,8 @@ SubstructuredCholesky::SubstructuredCholesky(MPI_Comm ranks, int n,
   const auto is_trailing = [&](int i) { return std::binary_search(trailing_sorted.begin(), trailing_sorted.end(), i); };
   // 2. The interface: shared unknowns, then the trailing set, each in index order. A trailing set
   // more than twice the shared unknowns (the graded trace of the extension norm's references:
-  // 4481 against 923 at n = 64 on 2 ranks) would make the dense problem, which every rank holds
-  // and factorizes, mostly trace: it stays out, each of its unknowns interior to the rank that
+  // 4481 against 923 at n = 64 on 2 ranks) would make the dense problem mostly trace, whose block
+  // S_CC and its factor every rank holds whole (m² each): it stays out, each of its unknowns interior to the rank that
   // touches it alone, and B A⁻¹ Bᵀ comes from solves (schur_complement_by_solves).
   std::size_t n_shared = 0;
   for (int i : shared) n_shared += !is_trailing(i);

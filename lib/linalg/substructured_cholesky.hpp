@@ -60,8 +60,8 @@ class SubstructuredCholesky {
   /// (local_unknowns().size(), k), k the same on every rank) and receives A⁻¹ b there. Only the
   /// interface rows (|G| × k) are summed over the ranks. Collective.
   Eigen::MatrixXd solve_local(const Eigen::MatrixXd& partial_rhs) const;
-  /// B A⁻¹ Bᵀ, dense symmetric (m, m), the same on every rank, for B (m, n) replicated: from the
-  /// trailing block of L_G when B's nonzero columns lie in the trailing set, otherwise by solves
+  /// B A⁻¹ Bᵀ, dense symmetric (m, m), the same on every rank, for B (m, n) replicated: from L_CC,
+  /// the trailing block of chol(S_G), when B's nonzero columns lie in the trailing set, otherwise by solves
   /// in blocks of 64 columns. Collective.
   Eigen::MatrixXd schur_complement(const Eigen::SparseMatrix<double>& b) const;
 

@@ -76,6 +76,11 @@ const assembly::CondensedFactor& ElasticOperators::stiffness_factor() const {
   return *stiffness_factor_;
 }
 
+void ElasticOperators::release_factors() const {
+  stiffness_factor_.reset();
+  gram_factors_.clear();
+}
+
 const assembly::CondensedFactor& ElasticOperators::gram_factor(PrimalNorm norm) const {
   auto& slot = gram_factors_[norm];
   if (!slot) {

@@ -53,6 +53,8 @@ class ElasticOperators {
   /// The Gram matrix of `norm` on [S^p(T_h)]² factorized with the trace last ("factor(K+M)^2" or
   /// "factor(A+M)").
   const assembly::CondensedFactor& gram_factor(PrimalNorm norm) const;
+  /// Frees every factorization (rebuilt on a later use), as PrimalOperators::release_factors.
+  void release_factors() const;
   /// B^n or B^t of a multiplier space on Γ_C ("B_n", "B_t"), kept per multiplier space layout.
   const Eigen::SparseMatrix<double>& coupling(const space::MultiplierSpace& multipliers,
                                               assembly::TraceDirection direction) const;

@@ -85,6 +85,11 @@ const assembly::CondensedFactor& PrimalOperators::gram_factor() const {
                           log_);
 }
 
+void PrimalOperators::release_factors() const {
+  stiffness_factor_.reset();
+  gram_factor_.reset();
+}
+
 const Eigen::SparseMatrix<double>& PrimalOperators::coupling(const space::MultiplierSpace& multipliers,
                                                              const assembly::BoundaryFunction& weight,
                                                              const std::string& name) const {

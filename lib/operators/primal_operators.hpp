@@ -38,6 +38,9 @@ class PrimalOperators {
   /// both by static condensation from the element matrices (neither needs K or M assembled).
   const assembly::CondensedFactor& stiffness_factor() const;
   const assembly::CondensedFactor& gram_factor() const;
+  /// Frees both factorizations (rebuilt on a later use): a run's output phase, which needs none,
+  /// then does not hold them beside its files' text.
+  void release_factors() const;
   /// B_ij = ∫ μ_i φ_j ("B"), or with the weight s ("B^s"), for a multiplier space on Γ_C; kept per
   /// (name, multiplier space layout), so that the contact solve and α share it.
   const Eigen::SparseMatrix<double>& coupling(const space::MultiplierSpace& multipliers,

@@ -33,7 +33,11 @@ Eigen::MatrixXd values_at(const assembly::CellField& field, const std::vector<Ce
     const auto& point = points[k];
     if (!field.rows.holds(point.cell)) continue;
     const auto values = assembly::tabulate_cell(*field.space, point.cell, {{point.xi}, {point.eta}});
-    out.row(static_cast<Eigen::Index>(k)) = (values.values * field.coefficients(point.cell)).row(0);
+    const Eigen::MatrixXd coefficients = field.coefficients(point.cell);
+    // (shape by shape, in order: the sums of postprocess::evaluate, so serial samples keep their bits)
+    for (Eigen::Index s = 0; s < coefficients.rows(); ++s)
+      for (int c = 0; c < field.components; ++c)
+        out(static_cast<Eigen::Index>(k), c) += coefficients(s, c) * values.values(0, s);
   }
   // (one rank holds each cell: the sum adds zeros to its value, exactly)
   if (distribution.distributed()) sum_over_ranks(distribution.ranks, out.data(), out.size());

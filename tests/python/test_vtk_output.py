@@ -147,7 +147,7 @@ def mpirun_solve(out, ranks, scene, arguments):
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     command = ["mpirun", "-n", str(ranks), "--oversubscribe", os.environ["HPCONTACT_CLI"], "solve", scene, *arguments,
                "--out", str(out)]
-    result = subprocess.run(command, env=env, capture_output=True, text=True)
+    result = subprocess.run(command, env=env, capture_output=True, text=True, timeout=600)
     assert result.returncode == 0, result.stdout + result.stderr
 
 
