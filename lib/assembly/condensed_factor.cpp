@@ -197,15 +197,6 @@ Eigen::MatrixXd CondensedFactor::local_null_motions() const {
   return motions;
 }
 
-Eigen::MatrixXd CondensedFactor::share_of(const Eigen::MatrixXd& whole) const {
-  HPC_VERIFY(whole.rows() == size_, "a vector of the wrong size");
-  if (!distribution_.distributed()) return whole;
-  Eigen::MatrixXd share = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(local_dofs().size()), whole.cols());
-  for (std::size_t k = 0; k < local_dofs().size(); ++k)
-    if (counts_dof_[k]) share.row(static_cast<Eigen::Index>(k)) = whole.row(local_dofs()[k]);
-  return share;
-}
-
 Eigen::MatrixXd CondensedFactor::multiply_local(const Eigen::SparseMatrix<double>& b,
                                                 const Eigen::MatrixXd& x_local) const {
   HPC_VERIFY(b.cols() == size_ && x_local.rows() == static_cast<Eigen::Index>(local_dofs().size()),

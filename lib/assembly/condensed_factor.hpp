@@ -79,10 +79,6 @@ class CondensedFactor {
   /// Where this rank assembles its share of a load for solve_local: distributed, its own cells
   /// into its local dofs; serial, the whole load. Valid while the factor lives.
   const LocalRows& local_rows() const { return rows_; }
-  /// This rank's share of a vector every rank holds whole (shape (n, k)), at its local dofs: the
-  /// rows of the dofs it counts (of the ranks holding a dof, the lowest), zero at the others, so
-  /// that the shares sum to the vector.
-  Eigen::MatrixXd share_of(const Eigen::MatrixXd& whole) const;
   /// B x for B (m, n) the same on every rank and x held at the local dofs: (m, k), the same on
   /// every rank. Collective.
   Eigen::MatrixXd multiply_local(const Eigen::SparseMatrix<double>& b, const Eigen::MatrixXd& x_local) const;

@@ -1,12 +1,14 @@
 // DirichletLift: the projection-based interpolant of u_D on the fixed edges, and its action.
 #include "assembly/dirichlet_lift.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "assembly/cell_values.hpp"
 #include "basis/lobatto.hpp"
 #include "basis/quadrature.hpp"
 #include "core/error.hpp"
+#include "core/petsc_session.hpp"
 #include "mesh/cell_map.hpp"
 
 namespace hpcontact::assembly {
@@ -110,12 +112,29 @@ Eigen::VectorXd DirichletLift::restrict(const Eigen::VectorXd& extended) const {
   return out;
 }
 
-DirichletLift::LiftedLoad DirichletLift::lifted_load(const CellSystem& system,
-                                                     const Eigen::VectorXd& extended_load) const {
+DirichletLift::LiftedLoad DirichletLift::lifted_load(const CellSystem& system, const Eigen::VectorXd& extended_load,
+                                                     const LocalRows& rows, const LocalRows& extended_rows,
+                                                     linalg::Distribution distribution) const {
   HPC_VERIFY(system.n_dofs() == static_cast<int>(embedding_.size()), "a cell system on the problem's space");
-  LiftedLoad out{restrict(extended_load), -extended_load.dot(values_)};
+  HPC_VERIFY(rows.global() == extended_rows.global(), "the lift's layouts of two kinds");
+  LiftedLoad out;
+  // F at the problem's unknowns, and −F(w) + ½ a(w, w) (the rank's share of both when distributed,
+  // summed in the serial order otherwise, so that serial energies keep their bits).
+  if (rows.global()) {
+    out.load = restrict(extended_load);
+    out.energy_offset = -extended_load.dot(values_);
+  } else {
+    const auto& dofs = rows.dofs();
+    out.load.resize(static_cast<Eigen::Index>(dofs.size()));
+    for (std::size_t k = 0; k < dofs.size(); ++k)
+      out.load(static_cast<Eigen::Index>(k)) = extended_load(extended_rows.row(embedding_[dofs[k]]));
+    const auto& extended_dofs = extended_rows.dofs();
+    for (std::size_t k = 0; k < extended_dofs.size(); ++k)
+      out.energy_offset -= extended_load(static_cast<Eigen::Index>(k)) * values_(extended_dofs[k]);
+  }
   std::vector<CellDof> dofs;
   for (const auto& [cell, local] : cells_) {
+    if (!rows.holds(cell)) continue;  // (another rank's cell)
     system.cell_dofs(cell, dofs);
     HPC_VERIFY(static_cast<Eigen::Index>(dofs.size()) == local.size(), "the lift's local layout is the system's");
     // The element matrix is in the basis of the global functions (signs included), as w's local
@@ -123,9 +142,30 @@ DirichletLift::LiftedLoad DirichletLift::lifted_load(const CellSystem& system,
     const Eigen::VectorXd a_w = system.element_matrix(cell) * local;
     out.energy_offset += 0.5 * local.dot(a_w);
     for (std::size_t i = 0; i < dofs.size(); ++i)
-      if (dofs[i].dof >= 0) out.load(dofs[i].dof) -= a_w(static_cast<Eigen::Index>(i));
+      if (dofs[i].dof >= 0) out.load(rows.row(dofs[i].dof)) -= a_w(static_cast<Eigen::Index>(i));
   }
+  if (distribution.distributed()) sum_over_ranks(distribution.ranks, &out.energy_offset, 1);
   return out;
+}
+
+LocalRows DirichletLift::extended_rows(const LocalRows& rows) const {
+  if (rows.global()) return {};
+  const auto& mesh = extended_scalar_->mesh();
+  std::vector<char> held(mesh.n_cells(), 0);
+  std::vector<int> unknowns;
+  for (int c = 0; c < mesh.n_cells(); ++c) {
+    if (!rows.holds(c)) continue;
+    held[c] = 1;
+    for (const auto& shape : extended_scalar_->cell_shapes(c))
+      if (extended_vector_)
+        for (int comp = 0; comp < space::kComponents; ++comp)
+          unknowns.push_back(extended_vector_->dof(shape.dof, comp));
+      else
+        unknowns.push_back(shape.dof);
+  }
+  std::sort(unknowns.begin(), unknowns.end());
+  unknowns.erase(std::unique(unknowns.begin(), unknowns.end()), unknowns.end());
+  return {std::move(held), std::move(unknowns)};
 }
 
 ScalarField total_field(const DirichletLift* lift, const space::H1Space& space, const Eigen::VectorXd& u0) {

@@ -16,6 +16,8 @@
 #include <vector>
 
 #include "assembly/cell_system.hpp"
+#include "assembly/local_rows.hpp"
+#include "linalg/distribution.hpp"
 #include "space/h1_space.hpp"
 #include "space/vector_space.hpp"
 
@@ -57,7 +59,14 @@ class DirichletLift {
   /// The problem's load for u_0, from F assembled on the extended space (so that F(w) is known)
   /// and the form of `system`, which must be built on the space with elimination in the lift's
   /// layout (a scalar system for a scalar lift, an elastic or componentwise one for a vector lift).
-  LiftedLoad lifted_load(const CellSystem& system, const Eigen::VectorXd& extended_load) const;
+  /// Distributed: `rows` is this rank's layout (its own cells' dofs), F its share assembled in
+  /// extended_rows(rows), and the load comes back as its share at `rows`, the energy's constant
+  /// summed over the distribution's ranks (collective) — no vector of the global length.
+  LiftedLoad lifted_load(const CellSystem& system, const Eigen::VectorXd& extended_load, const LocalRows& rows = {},
+                         const LocalRows& extended_rows = {}, linalg::Distribution distribution = {}) const;
+  /// The extended space's layout matching the problem's `rows`: the same cells, their unknowns of
+  /// the extended space (global when `rows` is).
+  LocalRows extended_rows(const LocalRows& rows) const;
 
  private:
   /// One cell's non-zero lifting coefficients, in the order of its local unknowns.

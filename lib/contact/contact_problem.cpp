@@ -87,18 +87,19 @@ const Eigen::VectorXd& load_vector(const ContactSetup& setup, const operators::P
 }
 
 // This rank's share of the load of u (for k_factor.solve_local), and the energy's constant: F
-// assembled over the rank's own cells; with Dirichlet data u = u_0 + w, F is assembled whole with
-// Γ_D kept, moved to u_0's unknowns (assembly::DirichletLift), then shared out.
+// assembled over the rank's own cells; with Dirichlet data u = u_0 + w, over the same cells on the
+// extended space (Γ_D kept), then moved to u_0's unknowns (assembly::DirichletLift).
 assembly::DirichletLift::LiftedLoad problem_load_share(const ContactSetup& setup,
                                                        const operators::PrimalOperators& primal,
                                                        const assembly::DirichletLift* lift,
                                                        const assembly::CondensedFactor& k_factor) {
   Eigen::VectorXd own;
   if (!lift) return {load_vector(setup, primal, primal.space(), k_factor.local_rows(), own), 0.0};
-  const Eigen::VectorXd& extended = load_vector(setup, primal, lift->extended_scalar(), {}, own);
-  auto lifted = lift->lifted_load(assembly::ScalarCellSystem(primal.space(), 1.0, 0.0), extended);
-  lifted.load = k_factor.share_of(lifted.load).col(0);
-  return lifted;
+  const assembly::LocalRows& rows = k_factor.local_rows();
+  const assembly::LocalRows extended_rows = lift->extended_rows(rows);
+  const Eigen::VectorXd& extended = load_vector(setup, primal, lift->extended_scalar(), extended_rows, own);
+  return lift->lifted_load(assembly::ScalarCellSystem(primal.space(), 1.0, 0.0), extended, rows, extended_rows,
+                           primal.distribution());
 }
 
 }  // namespace

@@ -117,11 +117,12 @@ assembly::DirichletLift::LiftedLoad problem_load_share(const ElasticContactSetup
     return {assembly::assemble_elastic_load(ops.vector_space(), setup.body_force, neumann, setup.traction,
                                             factor.local_rows()),
             0.0};
-  const Eigen::VectorXd load =
-      assembly::assemble_elastic_load(*lift->extended_vector(), setup.body_force, neumann, setup.traction);
-  auto lifted = lift->lifted_load(assembly::ElasticCellSystem(ops.vector_space(), ops.materials()), load);
-  lifted.load = factor.share_of(lifted.load).col(0);
-  return lifted;
+  const assembly::LocalRows& rows = factor.local_rows();
+  const assembly::LocalRows extended_rows = lift->extended_rows(rows);
+  const Eigen::VectorXd load = assembly::assemble_elastic_load(*lift->extended_vector(), setup.body_force, neumann,
+                                                               setup.traction, extended_rows);
+  return lift->lifted_load(assembly::ElasticCellSystem(ops.vector_space(), ops.materials()), load, rows, extended_rows,
+                           ops.distribution());
 }
 
 // Coulomb: the tangential bounds ±F p at the tangential constraint points, p = −σ_nn there (the
@@ -182,8 +183,8 @@ ElasticContactSolution solve_elastic_contact(const ElasticContactSetup& setup) {
   const assembly::CondensedFactor& factor = ops.stiffness_factor();
   out.seconds.factorization = factorization_clock.seconds();
   // Distributed, the vectors of the displacement space are held at each rank's own cells' dofs,
-  // the load as the ranks' shares (this rank's own cells; with Dirichlet data assembled whole,
-  // lifted and shared out): none of the global length (u stays at the rank's dofs).
+  // the load as the ranks' shares (this rank's own cells, on the lift's extended space with
+  // Dirichlet data): none of the global length (u stays at the rank's dofs).
   Stopwatch load_clock;
   const auto [load_share, energy_offset] = problem_load_share(setup, out.lift.get(), factor);
   out.seconds.assembly += load_clock.seconds();
