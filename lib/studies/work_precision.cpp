@@ -167,8 +167,7 @@ Reference solve_reference(const WorkPrecisionStudy::Reference& reference, const 
       contact::multiplier_l2_distance(*coarse.discretization->multipliers, coarse.solution.lambda_legendre,
                                       *fine.discretization->multipliers, fine.solution.lambda_legendre, out.weight);
   references.add_row({problem, fine.solution.energy, coarse.solution.energy, out.accuracy_energy, accuracy_lambda,
-                      static_cast<long long>(fine.solution.n_dofs), fine.seconds, free_boundary,
-                      free_boundary_moved});
+                      static_cast<long long>(fine.solution.n_dofs), fine.seconds, free_boundary, free_boundary_moved});
   return out;
 }
 
