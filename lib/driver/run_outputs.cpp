@@ -18,7 +18,9 @@ namespace hpcontact::driver {
 
 namespace {
 
-std::string piece_name(const std::string& name, int rank) { return fmt::format("{}/rank_{:04d}.vtu", name, rank); }
+// Beside the PVTU, not in a subfolder: the staging folder's clean-up on an interrupt and its sync
+// before the commit cover the files of one flat folder.
+std::string piece_name(const std::string& name, int rank) { return fmt::format("{}_rank{:04d}.vtu", name, rank); }
 
 // The staging folder's path from rank 0 to every rank of `ranks` (one rank: MPI may not be running).
 std::filesystem::path broadcast_path(const std::filesystem::path& path, MPI_Comm ranks, int size) {
@@ -59,10 +61,8 @@ void write_run_outputs(const std::filesystem::path& out, const linalg::Distribut
   if (distributed)
     run_on_all_ranks_agreeing(
         [&, rank = rank] {
-          for (const auto& solution : solutions) {
-            std::filesystem::create_directories(staging / solution.name);
+          for (const auto& solution : solutions)
             io::write_file_atomically(staging / piece_name(solution.name, rank), solution.text());
-          }
         },
         ranks);
   run_on_all_ranks_agreeing(

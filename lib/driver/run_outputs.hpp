@@ -28,7 +28,7 @@ struct SolutionFile {
 SolutionFile built_now(SolutionFile file);
 
 /// The file a solution file `name` becomes: name.vtu serial, name.pvtu distributed (its pieces
-/// name/rank_<r>.vtu beside it, r the rank in the distribution's communicator).
+/// name_rank<r>.vtu beside it, r (4 digits) the rank in the distribution's communicator).
 std::string solution_file_name(const std::string& name, bool distributed);
 
 /// Writes the outputs into a staging folder and moves it into place at `out` (io::OutputFolder):

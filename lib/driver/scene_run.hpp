@@ -39,7 +39,7 @@ struct SceneRunOptions {
 ///   boundary_<problem>.csv    (output "boundary") u, obstacle or bound, λ sampled on Γ_C
 ///   solution_<problem>.vtu    (output "vtu") u and ∇u on Ω, VTK Lagrange cells of the largest p;
 ///                             under mpirun solution_<problem>.pvtu naming one piece per rank,
-///                             solution_<problem>/rank_<r>.vtu (that rank's cells)
+///                             solution_<problem>_rank<r>.vtu (that rank's cells)
 ///   contact_<problem>.vtp     (output "vtu") the boundary samples on Γ_C, one polyline per zone
 ///   solution_<problem>_level<k>.vtu (.pvtu), solution_<problem>.pvd
 ///                             (output "vtu", effect convergence) u on every level, as a series

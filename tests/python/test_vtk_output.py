@@ -179,7 +179,7 @@ def test_under_mpirun_each_rank_writes_its_cells_as_a_piece_of_a_pvtu(tmp_path, 
                                                                    f"solution_{problem}_level1.pvtu"]
     for name in (f"solution_{problem}", f"solution_{problem}_level1"):
         pieces = [p.get("Source") for p in ET.parse(parallel / f"{name}.pvtu").getroot().iter("Piece")]
-        assert pieces == [f"{name}/rank_{r:04d}.vtu" for r in range(3)]
+        assert pieces == [f"{name}_rank{r:04d}.vtu" for r in range(3)]
         cells = [read_grid(parallel / piece).GetNumberOfCells() for piece in pieces]
         assert min(cells) > 0 and sum(cells) == read_grid(serial / f"{name}.vtu").GetNumberOfCells()
     samples = np.genfromtxt(serial / f"boundary_{problem}.csv", delimiter=",", names=True)
