@@ -245,12 +245,7 @@ struct ExtraTables {
 // Every file but the solutions' ParaView files, into the staging folder `out` (rank 0).
 void write_tables(const scene::Scene& scene, const std::vector<ElasticEffect>& effects, const ExtraTables& extra,
                   const nlohmann::json& summary, const std::filesystem::path& out) {
-  for (const auto& effect : effects) {
-    if (scene.wants_output(scene::Output::boundary))
-      effect.samples.table.write(out / ("boundary_" + effect.name + ".csv"));
-    if (scene.wants_output(scene::Output::vtu))
-      io::write_file_atomically(out / ("contact_" + effect.name + ".vtp"), io::polyline_vtp_text(effect.samples.table));
-  }
+  for (const auto& effect : effects) write_sample_files(scene, out, effect.name, effect.samples.table);
   if (extra.mode) extra.mode->write(out / "mode.csv");
   if (extra.convergence) extra.convergence->write(out / "convergence.csv");
   for (const auto& file : extra.level_files) io::write_file_atomically(out / file.name, file.text);

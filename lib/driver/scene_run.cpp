@@ -223,6 +223,13 @@ nlohmann::json infsup_effect(const scene::Scene& scene, const SceneDiscretizatio
 
 long long largest_degree(const std::vector<int>& degrees) { return *std::max_element(degrees.begin(), degrees.end()); }
 
+void write_sample_files(const scene::Scene& scene, const std::filesystem::path& folder, const std::string& name,
+                        const io::CsvTable& samples) {
+  if (scene.wants_output(scene::Output::boundary)) samples.write(folder / ("boundary_" + name + ".csv"));
+  if (scene.wants_output(scene::Output::vtu))
+    io::write_file_atomically(folder / ("contact_" + name + ".vtp"), io::polyline_vtp_text(samples));
+}
+
 std::string level_file_name(const std::string& problem, int level) {
   return fmt::format("solution_{}_level{}", problem, level);
 }
@@ -308,13 +315,7 @@ nlohmann::json run_scene(const scene::Scene& given_scene, const SceneRunOptions&
     for (const auto& effect : contacts)
       solutions.push_back(solution_file("solution_" + effect.problem, effect, primal));
   write_run_outputs(options.out, options.distribution, solutions, [&](const std::filesystem::path& out) {
-    for (const auto& effect : contacts) {
-      if (scene.wants_output(scene::Output::boundary))
-        effect.samples.table.write(out / ("boundary_" + effect.problem + ".csv"));
-      if (scene.wants_output(scene::Output::vtu))
-        io::write_file_atomically(out / ("contact_" + effect.problem + ".vtp"),
-                                  io::polyline_vtp_text(effect.samples.table));
-    }
+    for (const auto& effect : contacts) write_sample_files(scene, out, effect.problem, effect.samples.table);
     for (const auto& file : level_files) io::write_file_atomically(out / file.name, file.text);
     if (mode) mode->write(out / "mode.csv");
     if (convergence) convergence->write(out / "convergence.csv");

@@ -62,6 +62,11 @@ void hand_over_tables(const SceneRunOptions& options,
                       const std::vector<std::pair<std::string, const io::CsvTable*>>& boundary,
                       const std::optional<io::CsvTable>& mode, const std::optional<io::CsvTable>& convergence);
 
+/// A contact problem's sample files into `folder`: boundary_<name>.csv (output "boundary") and
+/// contact_<name>.vtp (output "vtu").
+void write_sample_files(const scene::Scene& scene, const std::filesystem::path& folder, const std::string& name,
+                        const io::CsvTable& samples);
+
 /// A file of the output folder made before the folder is written: its name and content.
 struct OutputText {
   std::string name, text;

@@ -89,6 +89,17 @@ struct InterfaceCholesky::Impl {
   int row_begin = 0;       ///< this rank's row block of the padded H: its first row
   int row_count = 0;       ///< and its length
   Eigen::MatrixXd y_rows;  ///< this rank's rows of Y = A_HH⁻¹ A_HC (zero in the padding)
+
+  /// A_HH⁻¹ x, x and the result as this rank's row block (row_count rows; the columns a multiple
+  /// of the ranks). Collective on `ranks`.
+  Eigen::MatrixXd solve_rows(MPI_Comm ranks, const Eigen::MatrixXd& rows) const {
+    MatHandle x = scalapack_from_rows(ranks, n_h_padded, rows);
+    MatHandle solution, solution_rows;
+    HPC_PETSC_CALL(MatDuplicate(x.get(), MAT_DO_NOT_COPY_VALUES, solution.out()));
+    HPC_PETSC_CALL(MatMatSolve(factor.get(), x.get(), solution.get()));
+    HPC_PETSC_CALL(MatConvert(solution.get(), MATDENSE, MAT_INITIAL_MATRIX, solution_rows.out()));
+    return owned_rows(solution_rows.get());
+  }
 };
 
 InterfaceCholesky::InterfaceCholesky(MPI_Comm ranks, int n, int n_trailing, const std::vector<int>& positions,
@@ -145,23 +156,17 @@ InterfaceCholesky::InterfaceCholesky(MPI_Comm ranks, int n, int n_trailing, cons
     stored_entries_ += static_cast<double>(d.n_h_padded) * d.n_h_padded / ranks_count;
     if (m > 0) {
       // A_HC in row blocks, Y = A_HH⁻¹ A_HC, and S_CC = A_CC − A_HCᵀ Y summed over the row blocks.
-      const int m_padded = padded(m, ranks_count);
-      Eigen::MatrixXd coupling_rows;
-      MatHandle rhs, solution, solution_rows;
+      Eigen::MatrixXd coupling_rows;  // the sum of the ranks' blocks, this rank's row block
       {
-        MatHandle coupling = row_blocks(ranks, d.n_h_padded, m_padded);
+        MatHandle coupling = row_blocks(ranks, d.n_h_padded, padded(m, ranks_count));
         add_block(coupling.get(), rows_h, rows_c, block(in_h, in_c));
         HPC_PETSC_CALL(MatAssemblyBegin(coupling.get(), MAT_FINAL_ASSEMBLY));
         HPC_PETSC_CALL(MatAssemblyEnd(coupling.get(), MAT_FINAL_ASSEMBLY));
-        coupling_rows = owned_rows(coupling.get()).leftCols(m);
-        HPC_PETSC_CALL(MatConvert(coupling.get(), MATSCALAPACK, MAT_INITIAL_MATRIX, rhs.out()));
+        coupling_rows = owned_rows(coupling.get());
       }
-      HPC_PETSC_CALL(MatDuplicate(rhs.get(), MAT_DO_NOT_COPY_VALUES, solution.out()));
-      HPC_PETSC_CALL(MatMatSolve(d.factor.get(), rhs.get(), solution.get()));
-      HPC_PETSC_CALL(MatConvert(solution.get(), MATDENSE, MAT_INITIAL_MATRIX, solution_rows.out()));
-      d.y_rows = owned_rows(solution_rows.get()).leftCols(m);
+      d.y_rows = d.solve_rows(ranks, coupling_rows).leftCols(m);
       HPC_VERIFY(d.y_rows.rows() == d.row_count, "interface Cholesky: rows of another layout");
-      Eigen::MatrixXd product = coupling_rows.transpose() * d.y_rows;
+      Eigen::MatrixXd product = coupling_rows.leftCols(m).transpose() * d.y_rows;
       sum_over_ranks(ranks, product.data(), product.size());
       s_cc -= product;
       stored_entries_ += static_cast<double>(d.y_rows.size());
@@ -195,12 +200,7 @@ Eigen::MatrixXd InterfaceCholesky::solve(const Eigen::MatrixXd& rhs) const {
     Eigen::MatrixXd g = Eigen::MatrixXd::Zero(d.row_count, padded(static_cast<int>(k), ranks_count));
     const int rows_here = std::clamp(d.n_h - d.row_begin, 0, d.row_count);
     g.topLeftCorner(rows_here, k) = rhs.middleRows(std::min(d.row_begin, d.n_h), rows_here);
-    MatHandle g_blocks = scalapack_from_rows(ranks_, d.n_h_padded, g);
-    MatHandle y, y_rows;
-    HPC_PETSC_CALL(MatDuplicate(g_blocks.get(), MAT_DO_NOT_COPY_VALUES, y.out()));
-    HPC_PETSC_CALL(MatMatSolve(d.factor.get(), g_blocks.get(), y.get()));
-    HPC_PETSC_CALL(MatConvert(y.get(), MATDENSE, MAT_INITIAL_MATRIX, y_rows.out()));
-    y_local = owned_rows(y_rows.get()).leftCols(k);
+    y_local = d.solve_rows(ranks_, g).leftCols(k);
     if (m > 0) {
       Eigen::MatrixXd product = d.y_rows.transpose() * g.leftCols(k);  // Yᵀ g over this rank's rows
       sum_over_ranks(ranks_, product.data(), product.size());
