@@ -11,6 +11,7 @@
 #include "operators/poisson_problem.hpp"
 #include "postprocess/fe_function.hpp"
 #include "space/h1_space.hpp"
+#include "space/vector_space.hpp"
 
 using namespace hpcontact;
 
@@ -79,4 +80,64 @@ TEST(H1Space, DiscreteFunctionsVanishOnDirichletBoundary) {
     EXPECT_NEAR(postprocess::evaluate_at(s, u, locator, {1.0, 0.5 * (t + 1)}).value, 0.0, 1e-14);
   }
   EXPECT_GT(std::abs(postprocess::evaluate_at(s, u, locator, {0.3, -1.0}).value), 0.1);
+}
+
+// A rank of a distributed run builds the space holding its cells' shapes only: the numbering must
+// be the whole space's, the counts and entity dofs known for every cell, and a read of a cell it
+// does not hold an error (not another cell's shapes). Also for rollers, whose fixed dofs
+// VectorSpace now finds from the entity dofs.
+TEST(H1Space, HoldingSomeCellsKeepsTheWholeNumbering) {
+  auto m = mesh::make_paper_square_mesh(6);
+  mesh::perturb_interior_vertices(m, 0.2, 5);
+  std::mt19937 generator(3);
+  std::vector<int> degrees(m.n_cells());
+  for (int& p : degrees) p = std::uniform_int_distribution<int>(1, 6)(generator);
+  const space::H1Space whole(m, degrees);
+  std::vector<char> held(m.n_cells(), 0);
+  for (int c = 0; c < m.n_cells(); ++c) held[c] = (c % 3 == 1);
+  const space::H1Space part(m, degrees, space::DirichletDofs::eliminated, held);
+  EXPECT_EQ(part.n_dofs(), whole.n_dofs());
+  EXPECT_EQ(part.n_skeleton_dofs(), whole.n_skeleton_dofs());
+  EXPECT_EQ(part.held_cells(), held);
+  EXPECT_TRUE(whole.held_cells().empty());
+  int compared = 0;
+  for (int c = 0; c < m.n_cells(); ++c) {
+    EXPECT_EQ(part.shape_count(c), static_cast<int>(whole.cell_shapes(c).size()));
+    ASSERT_EQ(part.holds(c), held[c] != 0);
+    if (!held[c]) {
+      EXPECT_THROW(static_cast<void>(part.cell_shapes(c)), std::logic_error);
+      continue;
+    }
+    const auto a = part.cell_shapes(c), b = whole.cell_shapes(c);
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t s = 0; s < a.size(); ++s) {
+      EXPECT_EQ(a[s].dof, b[s].dof);
+      EXPECT_EQ(a[s].sign, b[s].sign);
+      EXPECT_EQ(a[s].i, b[s].i);
+      EXPECT_EQ(a[s].j, b[s].j);
+      ++compared;
+    }
+    // The entity dofs agree with the shapes: vertex shapes first, then the edge modes in order.
+    const auto vertices = m.cell(c);
+    for (std::size_t k = 0; k < vertices.size(); ++k) EXPECT_EQ(part.vertex_dof(vertices[k]), b[k].dof);
+    for (const auto& shape : b) {
+      if (shape.role != space::ShapeRole::edge) continue;
+      EXPECT_EQ(part.edge_mode_dof(m.cell_edge(c, shape.entity), space::edge_mode_degree(shape)), shape.dof);
+    }
+  }
+  EXPECT_GT(compared, 100);
+
+  // Rollers: u_x fixed on the left edge, u_y on the bottom edge.
+  std::array<std::vector<char>, space::kComponents> fixed{std::vector<char>(m.n_edges(), 0),
+                                                          std::vector<char>(m.n_edges(), 0)};
+  for (int e : m.boundary_edges()) {
+    const mesh::Point mid = m.edge_midpoint(e);
+    if (std::abs(mid.x() + 1.0) < 1e-12) fixed[0][e] = 1;
+    if (std::abs(mid.y() + 1.0) < 1e-12) fixed[1][e] = 1;
+  }
+  const space::VectorSpace whole_vector(whole, fixed), part_vector(part, fixed);
+  ASSERT_TRUE(whole_vector.has_rollers());
+  EXPECT_EQ(part_vector.n_dofs(), whole_vector.n_dofs());
+  for (int d = 0; d < whole.n_dofs(); ++d)
+    for (int k = 0; k < space::kComponents; ++k) ASSERT_EQ(part_vector.dof(d, k), whole_vector.dof(d, k));
 }

@@ -26,11 +26,7 @@ std::optional<CongruenceKey> affine_key(const space::H1Space& space, int cell, b
 
 std::vector<int> cell_work_weights(const CellSystem& system) {
   std::vector<int> weights(system.mesh().n_cells());
-  std::vector<CellDof> dofs;
-  for (int c = 0; c < system.mesh().n_cells(); ++c) {
-    system.cell_dofs(c, dofs);
-    weights[c] = static_cast<int>(dofs.size());
-  }
+  for (int c = 0; c < system.mesh().n_cells(); ++c) weights[c] = system.cell_size(c);
   return weights;
 }
 

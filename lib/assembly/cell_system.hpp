@@ -34,6 +34,9 @@ class CellSystem {
   virtual int n_skeleton_dofs() const = 0;
   /// The cell's unknowns in the order of its element matrix.
   virtual void cell_dofs(int cell, std::vector<CellDof>& out) const = 0;
+  /// The number of cell_dofs(cell), known for every cell (also one whose shapes this rank does
+  /// not hold).
+  virtual int cell_size(int cell) const = 0;
   /// The element matrix in the basis of the signed local shapes, shape (n, n) with n the size of
   /// cell_dofs(cell).
   virtual Eigen::MatrixXd element_matrix(int cell) const = 0;
@@ -46,6 +49,8 @@ class CellSystem {
   /// (unsigned) local shapes. A near null space for solvers that build coarse spaces (BDDC); k = 0 (the
   /// default) where the form has none to tell.
   virtual Eigen::MatrixXd null_motions(int /*cell*/) const { return Eigen::MatrixXd(0, 0); }
+  /// The number of columns of null_motions (the same for every cell).
+  virtual int null_motion_count() const { return 0; }
 };
 
 /// Each cell's unknowns (Dirichlet ones included): the weight by which the cells are split over
@@ -67,6 +72,7 @@ class ScalarCellSystem final : public CellSystem {
   int n_dofs() const override { return space_->n_dofs(); }
   int n_skeleton_dofs() const override { return space_->n_skeleton_dofs(); }
   void cell_dofs(int cell, std::vector<CellDof>& out) const override;
+  int cell_size(int cell) const override { return space_->shape_count(cell); }
   Eigen::MatrixXd element_matrix(int cell) const override;
   std::optional<CongruenceKey> congruence_key(int cell) const override;
 

@@ -180,8 +180,7 @@ void CondensedFactor::find_local_dofs(std::vector<char> own_cells) {
 }
 
 Eigen::MatrixXd CondensedFactor::local_null_motions() const {
-  // The count from cell 0, which every rank's mesh has (a rank may own no cell).
-  const auto k = system_->mesh().n_cells() > 0 ? system_->null_motions(0).cols() : 0;
+  const int k = system_->null_motion_count();  // (a rank may own no cell)
   Eigen::MatrixXd motions = Eigen::MatrixXd::Zero(n_local_skeleton_, k);
   if (k == 0) return motions;
   std::vector<CellDof> dofs;

@@ -40,7 +40,8 @@ Eigen::VectorXd edge_projection(const mesh::Mesh& mesh, int cell, int local_edge
 
 DirichletLift::DirichletLift(const space::H1Space& space, const PointFunction& u_d)
     : extended_scalar_(
-          std::make_unique<space::H1Space>(space.mesh(), space.cell_degrees(), space::DirichletDofs::kept)) {
+          std::make_unique<space::H1Space>(space.mesh(), space.cell_degrees(), space::DirichletDofs::kept,
+                                           space.held_cells())) {
   const space::H1Space& extended = *extended_scalar_;
   build(
       1, {u_d, {}}, [&](int c, int s, int) { return space.cell_shapes(c)[s].dof; },
@@ -49,7 +50,7 @@ DirichletLift::DirichletLift(const space::H1Space& space, const PointFunction& u
 
 DirichletLift::DirichletLift(const space::VectorSpace& space, const std::array<PointFunction, space::kComponents>& u_d)
     : extended_scalar_(std::make_unique<space::H1Space>(space.scalar().mesh(), space.scalar().cell_degrees(),
-                                                        space::DirichletDofs::kept)),
+                                                        space::DirichletDofs::kept, space.scalar().held_cells())),
       extended_vector_(std::make_unique<space::VectorSpace>(*extended_scalar_)) {
   const space::VectorSpace& extended = *extended_vector_;
   build(
@@ -66,7 +67,12 @@ void DirichletLift::build(int components, const std::array<PointFunction, space:
   const auto& mesh = extended_scalar_->mesh();
   embedding_.assign(n_unknowns, -1);
   values_ = Eigen::VectorXd::Zero(n_extended);
+  bool every_cell = true;
   for (int c = 0; c < mesh.n_cells(); ++c) {
+    if (!extended_scalar_->holds(c)) {  // another rank's cell (the problem's space holds the same ones)
+      every_cell = false;
+      continue;
+    }
     const auto& shapes = extended_scalar_->cell_shapes(c);  // (i, j, sign) as the problem's space's
     Eigen::VectorXd local = Eigen::VectorXd::Zero(components * static_cast<Eigen::Index>(shapes.size()));
     std::array<std::array<Eigen::VectorXd, space::kComponents>, 4> edge_coefficients;  // on first use, per edge
@@ -95,7 +101,8 @@ void DirichletLift::build(int components, const std::array<PointFunction, space:
       }
     if ((local.array() != 0.0).any()) cells_.push_back({c, std::move(local)});
   }
-  for (int i = 0; i < n_unknowns; ++i) HPC_VERIFY(embedding_[i] >= 0, "every unknown has an extended one");
+  if (every_cell)
+    for (int i = 0; i < n_unknowns; ++i) HPC_VERIFY(embedding_[i] >= 0, "every unknown has an extended one");
 }
 
 Eigen::VectorXd DirichletLift::total(const Eigen::VectorXd& u0) const {

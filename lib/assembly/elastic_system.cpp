@@ -81,7 +81,7 @@ Eigen::MatrixXd ElasticCellSystem::element_matrix(int cell) const {
 Eigen::MatrixXd ElasticCellSystem::null_motions(int cell) const {
   const auto& shapes = space_->scalar().cell_shapes(cell);
   const auto vertices = mesh().cell(cell);
-  Eigen::MatrixXd motions = Eigen::MatrixXd::Zero(space::kComponents * shapes.size(), 3);
+  Eigen::MatrixXd motions = Eigen::MatrixXd::Zero(space::kComponents * shapes.size(), null_motion_count());
   for (std::size_t s = 0; s < shapes.size(); ++s) {
     if (shapes[s].role != space::ShapeRole::vertex) continue;
     const mesh::Point& x = mesh().vertex(vertices[shapes[s].entity]);

@@ -46,12 +46,14 @@ class ElasticCellSystem final : public CellSystem {
   int n_dofs() const override;
   int n_skeleton_dofs() const override;
   void cell_dofs(int cell, std::vector<CellDof>& out) const override;
+  int cell_size(int cell) const override { return space::kComponents * space_->scalar().shape_count(cell); }
   Eigen::MatrixXd element_matrix(int cell) const override;
   std::optional<CongruenceKey> congruence_key(int cell) const override;
   /// The rigid motions (1, 0), (0, 1), (−y, x) (about the vertices' centroid) at the cell's vertex
   /// shapes, zero elsewhere: exact
   /// on affine cells (the vertex shapes reproduce linear functions), near elsewhere.
   Eigen::MatrixXd null_motions(int cell) const override;
+  int null_motion_count() const override { return 3; }
 
  private:
   const space::VectorSpace* space_;
@@ -70,6 +72,7 @@ class ComponentwiseCellSystem final : public CellSystem {
   int n_dofs() const override;
   int n_skeleton_dofs() const override;
   void cell_dofs(int cell, std::vector<CellDof>& out) const override;
+  int cell_size(int cell) const override { return space::kComponents * space_->scalar().shape_count(cell); }
   Eigen::MatrixXd element_matrix(int cell) const override;
   std::optional<CongruenceKey> congruence_key(int cell) const override { return scalar_.congruence_key(cell); }
 

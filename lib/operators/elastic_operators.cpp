@@ -7,8 +7,8 @@
 #include "core/timer.hpp"
 #include "linalg/sparse_cholesky.hpp"
 #include "mesh/boundary_mesh.hpp"
-#include "mesh/cell_partition.hpp"
 #include "operators/primal_operators.hpp"
+#include "operators/rank_space.hpp"
 
 namespace hpcontact::operators {
 
@@ -20,9 +20,11 @@ ElasticOperators::ElasticOperators(const mesh::Mesh& mesh, std::vector<int> cell
                                    linalg::Distribution distribution)
     : mesh_(&mesh), materials_(std::move(materials)), log_(log), distribution_(distribution) {
   Stopwatch clock;
-  space_ = std::make_unique<space::H1Space>(mesh, std::move(cell_degrees));
-  vector_space_ = std::make_unique<space::VectorSpace>(*space_, fixed);
   contact_ = std::make_unique<mesh::ContactBoundary>(mesh);
+  auto rank_space = build_rank_space(mesh, std::move(cell_degrees), *contact_, space::kComponents, distribution);
+  space_ = std::move(rank_space.space);
+  cell_parts_ = std::move(rank_space.cell_parts);
+  vector_space_ = std::make_unique<space::VectorSpace>(*space_, fixed);
   if (static_cast<int>(materials_.size()) != mesh.n_cells())
     throw InputError("elasticity: one material per cell is needed");
   if (log_) log_->record("[S^p(T_h)]^2", n_dofs(), 0, clock.seconds());
@@ -46,17 +48,6 @@ const std::vector<int>& ElasticOperators::trace_dofs() const {
   return *trace_dofs_;
 }
 
-const std::vector<int>& ElasticOperators::cell_parts() const {
-  if (!cell_parts_) {
-    cell_parts_ = std::make_unique<std::vector<int>>();
-    if (distribution_.distributed())
-      *cell_parts_ = mesh::split_cells_over_ranks(
-          *mesh_, assembly::cell_work_weights(assembly::ComponentwiseCellSystem(*vector_space_, 1.0, 0.0)),
-          distribution_.ranks);
-  }
-  return *cell_parts_;
-}
-
 const assembly::CondensedFactor& ElasticOperators::stiffness_factor() const {
   if (!stiffness_factor_) {
     bool dirichlet = vector_space_->has_rollers();
@@ -70,7 +61,7 @@ const assembly::CondensedFactor& ElasticOperators::stiffness_factor() const {
     Stopwatch clock;
     stiffness_factor_ = std::make_unique<assembly::CondensedFactor>(
         std::make_unique<assembly::ElasticCellSystem>(*vector_space_, materials_), trace_dofs(), distribution_,
-        cell_parts());
+        cell_parts_);
     if (log_) log_->record("factor(A)", n_dofs(), n_dofs(), clock.seconds());
   }
   return *stiffness_factor_;
@@ -90,7 +81,7 @@ const assembly::CondensedFactor& ElasticOperators::gram_factor(PrimalNorm norm) 
       system = std::make_unique<assembly::ComponentwiseCellSystem>(*vector_space_, 1.0, 1.0);
     else
       system = std::make_unique<assembly::ElasticCellSystem>(*vector_space_, materials_, 1.0);
-    slot = std::make_unique<assembly::CondensedFactor>(std::move(system), trace_dofs(), distribution_, cell_parts());
+    slot = std::make_unique<assembly::CondensedFactor>(std::move(system), trace_dofs(), distribution_, cell_parts_);
     if (log_)
       log_->record(norm == PrimalNorm::h1 ? "factor(K+M)^2" : "factor(A+M)", n_dofs(), n_dofs(), clock.seconds());
   }

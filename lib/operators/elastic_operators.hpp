@@ -64,10 +64,6 @@ class ElasticOperators {
   linalg::Distribution distribution() const { return distribution_; }
 
  private:
-  /// Distributed: the rank that eliminates each cell, weighted by the cells' unknowns and shared
-  /// by the factors; empty when serial.
-  const std::vector<int>& cell_parts() const;
-
   const mesh::Mesh* mesh_;
   std::unique_ptr<space::H1Space> space_;
   std::unique_ptr<space::VectorSpace> vector_space_;
@@ -75,7 +71,9 @@ class ElasticOperators {
   std::vector<assembly::Material> materials_;
   OperatorLog* log_;
   linalg::Distribution distribution_;
-  mutable std::unique_ptr<std::vector<int>> cell_parts_;
+  /// Distributed: the rank that eliminates each cell, weighted by the cells' unknowns and shared
+  /// by the factors (the space holds the shapes of these cells and Γ_C's); empty when serial.
+  std::vector<int> cell_parts_;
   mutable std::unique_ptr<assembly::CondensedFactor> stiffness_factor_;
   mutable std::map<PrimalNorm, std::unique_ptr<assembly::CondensedFactor>> gram_factors_;
   mutable std::unique_ptr<std::vector<int>> trace_dofs_;

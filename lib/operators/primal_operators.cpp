@@ -10,7 +10,7 @@
 #include "core/error.hpp"
 #include "core/timer.hpp"
 #include "mesh/boundary_mesh.hpp"
-#include "mesh/cell_partition.hpp"
+#include "operators/rank_space.hpp"
 
 namespace hpcontact::operators {
 
@@ -18,8 +18,10 @@ PrimalOperators::PrimalOperators(const mesh::Mesh& mesh, std::vector<int> cell_d
                                  linalg::Distribution distribution)
     : mesh_(&mesh), log_(log), distribution_(distribution) {
   Stopwatch clock;
-  space_ = std::make_unique<space::H1Space>(mesh, std::move(cell_degrees));
   contact_ = std::make_unique<mesh::ContactBoundary>(mesh);
+  auto rank_space = build_rank_space(mesh, std::move(cell_degrees), *contact_, 1, distribution);
+  space_ = std::move(rank_space.space);
+  cell_parts_ = std::move(rank_space.cell_parts);
   if (log_) log_->record("S^p(T_h)", space_->n_dofs(), 0, clock.seconds());
 }
 
@@ -34,16 +36,6 @@ const std::vector<int>& PrimalOperators::trace_dofs() const {
         linalg::nonzero_columns(assembly::assemble_coupling(*space_, *contact_, full_trace)));
   }
   return *trace_dofs_;
-}
-
-const std::vector<int>& PrimalOperators::cell_parts() const {
-  if (!cell_parts_) {
-    cell_parts_ = std::make_unique<std::vector<int>>();
-    if (distribution_.distributed())
-      *cell_parts_ = mesh::split_cells_over_ranks(
-          *mesh_, assembly::cell_work_weights(assembly::ScalarCellSystem(*space_, 1.0, 0.0)), distribution_.ranks);
-  }
-  return *cell_parts_;
 }
 
 namespace {
@@ -76,12 +68,12 @@ const assembly::CondensedFactor& PrimalOperators::stiffness_factor() const {
         "the body has no Dirichlet part (no boundary edge is in Γ_D: key 'boundary.dirichlet' or "
         "'boundary.dirichlet_groups'): K is singular, since u + c has the energy of u, and the contact "
         "problems (9), (13), (15) need u fixed somewhere (the inf-sup analysis, with K + M, does not)");
-  return condensed_factor(*space_, 1.0, 0.0, trace_dofs(), distribution_, cell_parts(), stiffness_factor_, "factor(K)",
+  return condensed_factor(*space_, 1.0, 0.0, trace_dofs(), distribution_, cell_parts_, stiffness_factor_, "factor(K)",
                           log_);
 }
 
 const assembly::CondensedFactor& PrimalOperators::gram_factor() const {
-  return condensed_factor(*space_, 1.0, 1.0, trace_dofs(), distribution_, cell_parts(), gram_factor_, "factor(K+M)",
+  return condensed_factor(*space_, 1.0, 1.0, trace_dofs(), distribution_, cell_parts_, gram_factor_, "factor(K+M)",
                           log_);
 }
 

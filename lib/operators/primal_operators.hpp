@@ -56,9 +56,10 @@ class PrimalOperators {
                                         const std::function<Eigen::MatrixXd()>& build) const;
   /// Every dof with a trace on Γ_C (the trailing set of both factorizations).
   const std::vector<int>& trace_dofs() const;
-  /// Distributed: the rank that eliminates each cell, computed once (collectively) for both
-  /// factorizations, weighted by the cells' unknowns; empty when serial.
-  const std::vector<int>& cell_parts() const;
+  /// Distributed: the rank that eliminates each cell, computed once (collectively, when the
+  /// object is built) for both factorizations, weighted by the cells' unknowns; empty when serial.
+  /// The space holds the shapes of the rank's own cells and of Γ_C's only (operators/rank_space.hpp).
+  const std::vector<int>& cell_parts() const { return cell_parts_; }
   OperatorLog* log() const { return log_; }
   linalg::Distribution distribution() const { return distribution_; }
 
@@ -69,7 +70,8 @@ class PrimalOperators {
   OperatorLog* log_;
   linalg::Distribution distribution_;
   mutable std::unique_ptr<assembly::CondensedFactor> stiffness_factor_, gram_factor_;
-  mutable std::unique_ptr<std::vector<int>> trace_dofs_, cell_parts_;
+  std::vector<int> cell_parts_;
+  mutable std::unique_ptr<std::vector<int>> trace_dofs_;
   mutable std::map<std::string, Eigen::SparseMatrix<double>> couplings_;
   mutable std::map<std::string, Eigen::VectorXd> derived_vectors_;
   mutable std::map<std::string, Eigen::MatrixXd> derived_matrices_;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <stdexcept>
 
 #include "core/error.hpp"
 #include "mesh/reference_cell.hpp"
@@ -47,7 +48,8 @@ int edge_mode_degree(const LocalShape& shape) {
 
 H1Space::H1Space(const mesh::Mesh& mesh, int degree) : H1Space(mesh, std::vector<int>(mesh.n_cells(), degree)) {}
 
-H1Space::H1Space(const mesh::Mesh& mesh, std::vector<int> cell_degrees, DirichletDofs dirichlet)
+H1Space::H1Space(const mesh::Mesh& mesh, std::vector<int> cell_degrees, DirichletDofs dirichlet,
+                 const std::vector<char>& held)
     : mesh_(&mesh), cell_degrees_(std::move(cell_degrees)) {
   if (static_cast<int>(cell_degrees_.size()) != mesh.n_cells())
     throw InputError("degree distribution has " + std::to_string(cell_degrees_.size()) + " entries but the mesh has " +
@@ -56,10 +58,34 @@ H1Space::H1Space(const mesh::Mesh& mesh, std::vector<int> cell_degrees, Dirichle
     if (cell_degrees_[c] < 1)
       throw_bad_input("degree distribution", "p", std::to_string(cell_degrees_[c]),
                       "must be >= 1 (cell " + std::to_string(c) + ")");
-  build(dirichlet);
+  HPC_VERIFY(held.empty() || static_cast<int>(held.size()) == mesh.n_cells(), "one held flag per cell");
+  build(dirichlet, held);
 }
 
-void H1Space::build(DirichletDofs dirichlet) {
+void H1Space::not_held(int cell) {
+  throw std::logic_error("the shapes of cell " + std::to_string(cell) +
+                         " were read on a rank that does not hold it");
+}
+
+std::vector<char> H1Space::held_cells() const {
+  std::vector<char> held(mesh_->n_cells());
+  bool all = true;
+  for (int c = 0; c < mesh_->n_cells(); ++c) all = (held[c] = holds(c)) && all;
+  if (all) held.clear();
+  return held;
+}
+
+int H1Space::shape_count(int cell) const {
+  const auto& mesh = *mesh_;
+  const int p = cell_degrees_[cell];
+  int count =
+      mesh.cell_size(cell) + (mesh.cell_type(cell) == mesh::CellType::triangle ? (p - 1) * (p - 2) / 2 : (p - 1) * (p - 1));
+  for (int local = 0; local < mesh.cell_size(cell); ++local)
+    count += std::max(edge_degrees_[mesh.cell_edge(cell, local)] - 1, 0);
+  return count;
+}
+
+void H1Space::build(DirichletDofs dirichlet, const std::vector<char>& held) {
   const auto& mesh = *mesh_;
   max_degree_ = *std::max_element(cell_degrees_.begin(), cell_degrees_.end());
   edge_degrees_.assign(mesh.n_edges(), 0);
@@ -79,42 +105,40 @@ void H1Space::build(DirichletDofs dirichlet) {
     }
 
   int next = 0;
-  std::vector<int> vertex_dof(mesh.n_vertices(), -1);
+  vertex_dofs_.assign(mesh.n_vertices(), -1);
   for (int v = 0; v < mesh.n_vertices(); ++v)
-    if (!vertex_fixed[v]) vertex_dof[v] = next++;
-  std::vector<int> edge_first_dof(mesh.n_edges(), -1);  // dof of mode 2; modes are contiguous
+    if (!vertex_fixed[v]) vertex_dofs_[v] = next++;
+  edge_first_dofs_.assign(mesh.n_edges(), -1);  // dof of mode 2; modes are contiguous
   for (int e = 0; e < mesh.n_edges(); ++e)
     if (!edge_fixed[e] && edge_degrees_[e] >= 2) {
-      edge_first_dof[e] = next;
+      edge_first_dofs_[e] = next;
       next += edge_degrees_[e] - 1;
     }
 
   n_skeleton_dofs_ = next;
-  // Sizes first, so the flat table is allocated once.
+  // Sizes first, so the flat table is allocated once; a cell not held has an empty range.
+  const auto is_held = [&](int c) { return held.empty() || held[c]; };
   first_shape_.assign(mesh.n_cells() + 1, 0);
-  for (int c = 0; c < mesh.n_cells(); ++c) {
-    const int p = cell_degrees_[c];
-    int count =
-        mesh.cell_size(c) + (mesh.cell_type(c) == mesh::CellType::triangle ? (p - 1) * (p - 2) / 2 : (p - 1) * (p - 1));
-    for (int local = 0; local < mesh.cell_size(c); ++local)
-      count += std::max(edge_degrees_[mesh.cell_edge(c, local)] - 1, 0);
-    first_shape_[c + 1] = first_shape_[c] + count;
-  }
+  for (int c = 0; c < mesh.n_cells(); ++c) first_shape_[c + 1] = first_shape_[c] + (is_held(c) ? shape_count(c) : 0);
   shapes_.clear();
   shapes_.reserve(first_shape_.back());
   for (int c = 0; c < mesh.n_cells(); ++c) {
     const int p = cell_degrees_[c];
+    if (!is_held(c)) {  // numbered all the same: its interior modes are the next dofs
+      next += mesh.cell_type(c) == mesh::CellType::triangle ? (p - 1) * (p - 2) / 2 : (p - 1) * (p - 1);
+      continue;
+    }
     const bool triangle = mesh.cell_type(c) == mesh::CellType::triangle;
     for (int k = 0; k < mesh.cell_size(c); ++k) {
       const auto [i, j] = triangle ? std::array<int, 2>{0, 0} : kVertexIndex[k];
-      shapes_.push_back(shape(i, j, vertex_dof[mesh.cell(c)[k]], 1.0, ShapeRole::vertex, k));
+      shapes_.push_back(shape(i, j, vertex_dofs_[mesh.cell(c)[k]], 1.0, ShapeRole::vertex, k));
     }
     for (int local = 0; local < mesh.cell_size(c); ++local) {
       const int e = mesh.cell_edge(c, local);
       const int sign = mesh.edge_sign(c, local);
       for (int k = 2; k <= edge_degrees_[e]; ++k) {
         const auto [i, j] = triangle ? std::array<int, 2>{k, 0} : edge_mode_index(local, k);
-        const int dof = edge_first_dof[e] < 0 ? -1 : edge_first_dof[e] + (k - 2);
+        const int dof = edge_mode_dof(e, k);
         // N_k(-t) = (-1)^k N_k(t): a reversed edge flips the odd modes.
         shapes_.push_back(shape(i, j, dof, (sign < 0 && k % 2 == 1) ? -1.0 : 1.0, ShapeRole::edge, local));
       }

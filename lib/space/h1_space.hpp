@@ -1,7 +1,7 @@
 // The H¹-conforming space S^p(T_h) (the paper's §5): per cell the tensor-product polynomials Q_{p_T}
 // on quadrilaterals and the polynomials P_{p_T} on triangles, hierarchical bases (Lobatto on the
 // square, basis/triangle_basis.hpp on the triangle) that share their edge traces; Dirichlet dofs
-// on Γ_D eliminated.
+// on Γ_D eliminated. A rank of a distributed run keeps the shapes of the cells it needs only.
 #pragma once
 
 #include <cstdint>
@@ -56,8 +56,12 @@ int edge_mode_degree(const LocalShape& shape);
 
 class H1Space {
  public:
+  /// `held` (empty: every cell; else one flag per cell): only the flagged cells keep their local
+  /// shapes, so that a rank of a distributed run stores the table for its own cells (and those its
+  /// trace operators need), not for the whole mesh. The numbering is the whole space's either way.
   /// @throws InputError if the distribution has the wrong size or a degree < 1.
-  H1Space(const mesh::Mesh& mesh, std::vector<int> cell_degrees, DirichletDofs dirichlet = DirichletDofs::eliminated);
+  H1Space(const mesh::Mesh& mesh, std::vector<int> cell_degrees, DirichletDofs dirichlet = DirichletDofs::eliminated,
+          const std::vector<char>& held = {});
   /// Uniform degree p.
   H1Space(const mesh::Mesh& mesh, int degree);
 
@@ -72,19 +76,33 @@ class H1Space {
   int edge_degree(int edge) const { return edge_degrees_[edge]; }
   int max_degree() const { return max_degree_; }
   /// Local shape functions of a cell, with their global dofs: the vertices, then the modes of
-  /// the local edges in order (see local_edge_of), then the interior modes.
+  /// the local edges in order (see local_edge_of), then the interior modes. Only for a held cell.
   std::span<const LocalShape> cell_shapes(int cell) const {
-    return {shapes_.data() + first_shape_[cell], shapes_.data() + first_shape_[cell + 1]};
+    const std::int64_t first = first_shape_[cell], end = first_shape_[cell + 1];
+    if (first == end) not_held(cell);  // every cell has at least three shapes
+    return {shapes_.data() + first, shapes_.data() + end};
   }
+  /// Whether the cell's shapes are kept (every cell unless the space was built with `held`).
+  bool holds(int cell) const { return first_shape_[cell + 1] > first_shape_[cell]; }
+  /// The `held` flags this space was built with: empty where it holds every cell.
+  std::vector<char> held_cells() const;
+  /// The number of local shapes of any cell (held or not): its unknowns, Dirichlet ones included.
+  int shape_count(int cell) const;
+  /// The dof of vertex v, or -1 where Γ_D eliminates it.
+  int vertex_dof(int v) const { return vertex_dofs_[v]; }
+  /// The dof of mode k (2 ≤ k ≤ edge_degree(e)) of edge e, or -1 where Γ_D eliminates it.
+  int edge_mode_dof(int e, int k) const { return edge_first_dofs_[e] < 0 ? -1 : edge_first_dofs_[e] + k - 2; }
 
  private:
-  void build(DirichletDofs dirichlet);
+  void build(DirichletDofs dirichlet, const std::vector<char>& held);
+  [[noreturn]] static void not_held(int cell);
 
   const mesh::Mesh* mesh_;
   std::vector<int> cell_degrees_;
   std::vector<int> edge_degrees_;
-  std::vector<LocalShape> shapes_;         ///< every cell's shapes, cell after cell
-  std::vector<std::int64_t> first_shape_;  ///< cell c's shapes: [first_shape_[c], first_shape_[c + 1])
+  std::vector<int> vertex_dofs_, edge_first_dofs_;  ///< see vertex_dof, edge_mode_dof
+  std::vector<LocalShape> shapes_;                  ///< every held cell's shapes, cell after cell
+  std::vector<std::int64_t> first_shape_;           ///< cell c's shapes: [first_shape_[c], first_shape_[c + 1])
   int n_dofs_ = 0;
   int n_skeleton_dofs_ = 0;
   int max_degree_ = 1;

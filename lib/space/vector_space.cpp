@@ -9,23 +9,6 @@
 
 namespace hpcontact::space {
 
-namespace {
-
-// The local edges a shape belongs to (none for interior modes): a vertex shape belongs to the two
-// local edges that meet at its vertex, an edge mode to its edge.
-std::array<int, 2> shape_edges(const mesh::Mesh& mesh, int cell, const LocalShape& shape) {
-  if (shape.role == ShapeRole::edge) return {shape.entity, -1};
-  if (shape.role == ShapeRole::interior) return {-1, -1};
-  std::array<int, 2> out{-1, -1};
-  int found = 0;
-  for (int local = 0; local < mesh.cell_size(cell); ++local) {
-    const auto ends = mesh::local_edge_vertices(mesh.cell_type(cell), local);
-    if (ends[0] == shape.entity || ends[1] == shape.entity) out[found++] = local;
-  }
-  return out;
-}
-
-}  // namespace
 
 VectorSpace::VectorSpace(const H1Space& scalar, const std::array<std::vector<char>, kComponents>& fixed)
     : scalar_(&scalar) {
@@ -38,12 +21,17 @@ VectorSpace::VectorSpace(const H1Space& scalar, const std::array<std::vector<cha
     for (int e = 0; e < mesh.n_edges(); ++e)
       if (fixed[c][e] && !mesh.is_boundary_edge(e))
         throw InputError(fmt::format("edge {} is interior: only boundary edges can fix a component", e));
-    for (int cell = 0; cell < mesh.n_cells(); ++cell)
-      for (const auto& shape : scalar.cell_shapes(cell)) {
-        if (shape.dof < 0) continue;
-        for (const int edge : shape_edges(mesh, cell, shape))
-          if (edge >= 0 && fixed[c][mesh.cell_edge(cell, edge)]) is_fixed[kComponents * shape.dof + c] = 1;
-      }
+    // A fixed (closed) edge holds the dofs of its end points and its modes; read from the
+    // numbering, not from the cells' shapes, which a rank of a distributed run holds for its
+    // cells only.
+    const auto fix = [&](int dof) {
+      if (dof >= 0) is_fixed[kComponents * dof + c] = 1;
+    };
+    for (int e = 0; e < mesh.n_edges(); ++e) {
+      if (!fixed[c][e]) continue;
+      for (const int v : mesh.edge(e)) fix(scalar.vertex_dof(v));
+      for (int k = 2; k <= scalar.edge_degree(e); ++k) fix(scalar.edge_mode_dof(e, k));
+    }
   }
   dofs_.assign(kComponents * scalar.n_dofs(), -1);
   for (int d = 0; d < scalar.n_dofs(); ++d) {
