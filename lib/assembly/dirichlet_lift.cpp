@@ -39,9 +39,8 @@ Eigen::VectorXd edge_projection(const mesh::Mesh& mesh, int cell, int local_edge
 }
 
 DirichletLift::DirichletLift(const space::H1Space& space, const PointFunction& u_d)
-    : extended_scalar_(
-          std::make_unique<space::H1Space>(space.mesh(), space.cell_degrees(), space::DirichletDofs::kept,
-                                           space.held_cells())) {
+    : extended_scalar_(std::make_unique<space::H1Space>(space.mesh(), space.cell_degrees(), space::DirichletDofs::kept,
+                                                        space.held_cells())) {
   const space::H1Space& extended = *extended_scalar_;
   build(
       1, {u_d, {}}, [&](int c, int s, int) { return space.cell_shapes(c)[s].dof; },

@@ -63,8 +63,7 @@ H1Space::H1Space(const mesh::Mesh& mesh, std::vector<int> cell_degrees, Dirichle
 }
 
 void H1Space::not_held(int cell) {
-  throw std::logic_error("the shapes of cell " + std::to_string(cell) +
-                         " were read on a rank that does not hold it");
+  throw std::logic_error("the shapes of cell " + std::to_string(cell) + " were read on a rank that does not hold it");
 }
 
 std::vector<char> H1Space::held_cells() const {
@@ -78,8 +77,8 @@ std::vector<char> H1Space::held_cells() const {
 int H1Space::shape_count(int cell) const {
   const auto& mesh = *mesh_;
   const int p = cell_degrees_[cell];
-  int count =
-      mesh.cell_size(cell) + (mesh.cell_type(cell) == mesh::CellType::triangle ? (p - 1) * (p - 2) / 2 : (p - 1) * (p - 1));
+  int count = mesh.cell_size(cell) +
+              (mesh.cell_type(cell) == mesh::CellType::triangle ? (p - 1) * (p - 2) / 2 : (p - 1) * (p - 1));
   for (int local = 0; local < mesh.cell_size(cell); ++local)
     count += std::max(edge_degrees_[mesh.cell_edge(cell, local)] - 1, 0);
   return count;

@@ -9,7 +9,6 @@
 
 namespace hpcontact::space {
 
-
 VectorSpace::VectorSpace(const H1Space& scalar, const std::array<std::vector<char>, kComponents>& fixed)
     : scalar_(&scalar) {
   const auto& mesh = scalar.mesh();
