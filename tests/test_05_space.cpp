@@ -138,6 +138,25 @@ TEST(H1Space, HoldingSomeCellsKeepsTheWholeNumbering) {
   const space::VectorSpace whole_vector(whole, fixed), part_vector(part, fixed);
   ASSERT_TRUE(whole_vector.has_rollers());
   EXPECT_EQ(part_vector.n_dofs(), whole_vector.n_dofs());
+  // Unknowns in slot order, 0 … n − 1 without gaps; a slot is fixed exactly when a roller edge of
+  // its component carries the scalar dof (read from the whole space's shapes).
+  std::vector<char> on_roller(space::kComponents * whole.n_dofs(), 0);
+  for (int e : m.boundary_edges()) {
+    const auto& cells = m.edge_cells(e);
+    for (const auto& shape : whole.cell_shapes(cells[0])) {
+      if (shape.dof < 0 || shape.role == space::ShapeRole::interior) continue;
+      const auto ends = mesh::local_edge_vertices(m.cell_type(cells[0]), m.local_edge_of(e, 0));
+      const bool on_edge = shape.role == space::ShapeRole::edge ? m.cell_edge(cells[0], shape.entity) == e
+                                                                : ends[0] == shape.entity || ends[1] == shape.entity;
+      for (int k = 0; k < space::kComponents; ++k)
+        if (on_edge && fixed[k][e]) on_roller[space::kComponents * shape.dof + k] = 1;
+    }
+  }
+  int next = 0;
   for (int d = 0; d < whole.n_dofs(); ++d)
-    for (int k = 0; k < space::kComponents; ++k) ASSERT_EQ(part_vector.dof(d, k), whole_vector.dof(d, k));
+    for (int k = 0; k < space::kComponents; ++k) {
+      ASSERT_EQ(part_vector.dof(d, k), whole_vector.dof(d, k));
+      ASSERT_EQ(whole_vector.dof(d, k), on_roller[space::kComponents * d + k] ? -1 : next++) << d << ", " << k;
+    }
+  EXPECT_EQ(next, whole_vector.n_dofs());
 }

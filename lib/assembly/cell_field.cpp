@@ -30,7 +30,7 @@ CellField cell_field(const space::H1Space& space, int components, int n_unknowns
               const auto& extended = lift->extended_scalar().cell_shapes(cell);
               HPC_VERIFY(extended.size() == shapes.size(), "the lift's space has other shapes");
               for (std::size_t s = 0; s < shapes.size(); ++s)
-                for (int k = 0; k < components; ++k) local(s, k) += lift->values()(lifted(extended[s].dof, k));
+                for (int k = 0; k < components; ++k) local(s, k) += lift->value(lifted(extended[s].dof, k));
             }
             return local;
           }};

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "assembly/cell_values.hpp"
 #include "basis/lobatto.hpp"
@@ -41,37 +42,56 @@ Eigen::VectorXd edge_projection(const mesh::Mesh& mesh, int cell, int local_edge
 DirichletLift::DirichletLift(const space::H1Space& space, const PointFunction& u_d)
     : extended_scalar_(std::make_unique<space::H1Space>(space.mesh(), space.cell_degrees(), space::DirichletDofs::kept,
                                                         space.held_cells())) {
-  const space::H1Space& extended = *extended_scalar_;
   build(
       1, {u_d, {}}, [&](int c, int s, int) { return space.cell_shapes(c)[s].dof; },
-      [&](int c, int s, int) { return extended.cell_shapes(c)[s].dof; }, space.n_dofs(), extended.n_dofs());
+      [&](int c, int s, int comp) { return extended_unknown(c, s, comp); }, space.n_dofs(), extended_scalar_->n_dofs());
 }
 
 DirichletLift::DirichletLift(const space::VectorSpace& space, const std::array<PointFunction, space::kComponents>& u_d)
     : extended_scalar_(std::make_unique<space::H1Space>(space.scalar().mesh(), space.scalar().cell_degrees(),
                                                         space::DirichletDofs::kept, space.scalar().held_cells())),
       extended_vector_(std::make_unique<space::VectorSpace>(*extended_scalar_)) {
-  const space::VectorSpace& extended = *extended_vector_;
   build(
       space::kComponents, u_d,
       [&](int c, int s, int comp) { return space.dof(space.scalar().cell_shapes(c)[s].dof, comp); },
-      [&](int c, int s, int comp) { return extended.dof(extended.scalar().cell_shapes(c)[s].dof, comp); },
-      space.n_dofs(), extended.n_dofs());
+      [&](int c, int s, int comp) { return extended_unknown(c, s, comp); }, space.n_dofs(), extended_vector_->n_dofs());
 }
 
 DirichletLift::~DirichletLift() = default;
 
+int DirichletLift::extended_unknown(int cell, int s, int comp) const {
+  const int scalar = extended_scalar_->cell_shapes(cell)[s].dof;
+  return extended_vector_ ? extended_vector_->dof(scalar, comp) : scalar;
+}
+
+double DirichletLift::value(int extended_unknown) const {
+  const auto it = std::lower_bound(fixed_unknowns_.begin(), fixed_unknowns_.end(), extended_unknown);
+  return it != fixed_unknowns_.end() && *it == extended_unknown ? fixed_values_[it - fixed_unknowns_.begin()] : 0.0;
+}
+
+Eigen::VectorXd DirichletLift::times(const Eigen::SparseMatrix<double>& columns) const {
+  Eigen::VectorXd out = Eigen::VectorXd::Zero(columns.rows());
+  for (std::size_t k = 0; k < fixed_unknowns_.size(); ++k)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(columns, fixed_unknowns_[k]); it; ++it)
+      out(it.row()) += it.value() * fixed_values_[k];
+  return out;
+}
+
+Eigen::VectorXd DirichletLift::values() const {
+  Eigen::VectorXd out = Eigen::VectorXd::Zero(n_extended_);
+  for (std::size_t k = 0; k < fixed_unknowns_.size(); ++k) out(fixed_unknowns_[k]) = fixed_values_[k];
+  return out;
+}
+
 void DirichletLift::build(int components, const std::array<PointFunction, space::kComponents>& u_d,
                           const UnknownOf& unknown, const UnknownOf& extended, int n_unknowns, int n_extended) {
   const auto& mesh = extended_scalar_->mesh();
-  embedding_.assign(n_unknowns, -1);
-  values_ = Eigen::VectorXd::Zero(n_extended);
-  bool every_cell = true;
+  const bool every_cell = extended_scalar_->held_cells().empty();
+  if (every_cell) embedding_.assign(n_unknowns, -1);
+  n_extended_ = n_extended;
+  std::map<int, double> fixed;  // w's non-zero unknowns (a shared vertex: the same value from each cell)
   for (int c = 0; c < mesh.n_cells(); ++c) {
-    if (!extended_scalar_->holds(c)) {  // another rank's cell (the problem's space holds the same ones)
-      every_cell = false;
-      continue;
-    }
+    if (!extended_scalar_->holds(c)) continue;  // another rank's cell (the problem's space holds the same ones)
     const auto& shapes = extended_scalar_->cell_shapes(c);  // (i, j, sign) as the problem's space's
     Eigen::VectorXd local = Eigen::VectorXd::Zero(components * static_cast<Eigen::Index>(shapes.size()));
     std::array<std::array<Eigen::VectorXd, space::kComponents>, 4> edge_coefficients;  // on first use, per edge
@@ -79,7 +99,7 @@ void DirichletLift::build(int components, const std::array<PointFunction, space:
       for (int comp = 0; comp < components; ++comp) {
         const int target = extended(c, s, comp);
         if (const int own = unknown(c, s, comp); own >= 0) {
-          embedding_[own] = target;
+          if (every_cell) embedding_[own] = target;
           continue;
         }
         if (!u_d[comp]) continue;
@@ -96,23 +116,27 @@ void DirichletLift::build(int components, const std::array<PointFunction, space:
           value = shapes[s].sign * a(space::edge_mode_degree(shapes[s]) - 2);
         }
         local(components * s + comp) = value;
-        values_(target) = value;
+        fixed[target] = value;
       }
     if ((local.array() != 0.0).any()) cells_.push_back({c, std::move(local)});
   }
-  if (every_cell)
-    for (int i = 0; i < n_unknowns; ++i) HPC_VERIFY(embedding_[i] >= 0, "every unknown has an extended one");
+  for (const auto& [target, value] : fixed) {
+    fixed_unknowns_.push_back(target);
+    fixed_values_.push_back(value);
+  }
+  for (int i = 0; i < static_cast<int>(embedding_.size()); ++i)
+    HPC_VERIFY(embedding_[i] >= 0, "every unknown has an extended one");
 }
 
 Eigen::VectorXd DirichletLift::total(const Eigen::VectorXd& u0) const {
   HPC_VERIFY(u0.size() == static_cast<Eigen::Index>(embedding_.size()), "u_0 on the problem's space");
-  Eigen::VectorXd out = values_;
+  Eigen::VectorXd out = values();
   for (std::size_t i = 0; i < embedding_.size(); ++i) out(embedding_[i]) += u0(static_cast<Eigen::Index>(i));
   return out;
 }
 
 Eigen::VectorXd DirichletLift::restrict(const Eigen::VectorXd& extended) const {
-  HPC_VERIFY(extended.size() == values_.size(), "a vector of the extended space");
+  HPC_VERIFY(extended.size() == n_extended_, "a vector of the extended space");
   Eigen::VectorXd out(embedding_.size());
   for (std::size_t i = 0; i < embedding_.size(); ++i) out(static_cast<Eigen::Index>(i)) = extended(embedding_[i]);
   return out;
@@ -121,24 +145,31 @@ Eigen::VectorXd DirichletLift::restrict(const Eigen::VectorXd& extended) const {
 DirichletLift::LiftedLoad DirichletLift::lifted_load(const CellSystem& system, const Eigen::VectorXd& extended_load,
                                                      const LocalRows& rows, const LocalRows& extended_rows,
                                                      linalg::Distribution distribution) const {
-  HPC_VERIFY(system.n_dofs() == static_cast<int>(embedding_.size()), "a cell system on the problem's space");
   HPC_VERIFY(rows.global() == extended_rows.global(), "the lift's layouts of two kinds");
   LiftedLoad out;
+  std::vector<CellDof> dofs;
   // F at the problem's unknowns, and −F(w) + ½ a(w, w) (the rank's share of both when distributed,
   // summed in the serial order otherwise, so that serial energies keep their bits).
   if (rows.global()) {
+    HPC_VERIFY(system.n_dofs() == static_cast<int>(embedding_.size()), "a cell system on the problem's space");
     out.load = restrict(extended_load);
-    out.energy_offset = -extended_load.dot(values_);
+    out.energy_offset = -extended_load.dot(values());
   } else {
-    const auto& dofs = rows.dofs();
-    out.load.resize(static_cast<Eigen::Index>(dofs.size()));
-    for (std::size_t k = 0; k < dofs.size(); ++k)
-      out.load(static_cast<Eigen::Index>(k)) = extended_load(extended_rows.row(embedding_[dofs[k]]));
+    // Cell by cell: the system's local unknowns are in the order of the lift's (shape, component).
+    const int components = extended_vector_ ? space::kComponents : 1;
+    out.load.resize(static_cast<Eigen::Index>(rows.dofs().size()));
+    for (int c = 0; c < extended_scalar_->mesh().n_cells(); ++c) {
+      if (!rows.holds(c)) continue;
+      system.cell_dofs(c, dofs);
+      for (int i = 0; i < static_cast<int>(dofs.size()); ++i)
+        if (dofs[i].dof >= 0)
+          out.load(rows.row(dofs[i].dof)) =
+              extended_load(extended_rows.row(extended_unknown(c, i / components, i % components)));
+    }
     const auto& extended_dofs = extended_rows.dofs();
     for (std::size_t k = 0; k < extended_dofs.size(); ++k)
-      out.energy_offset -= extended_load(static_cast<Eigen::Index>(k)) * values_(extended_dofs[k]);
+      out.energy_offset -= extended_load(static_cast<Eigen::Index>(k)) * value(extended_dofs[k]);
   }
-  std::vector<CellDof> dofs;
   for (const auto& [cell, local] : cells_) {
     if (!rows.holds(cell)) continue;  // (another rank's cell)
     system.cell_dofs(cell, dofs);

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 #include <array>
 #include <functional>
 #include <memory>
@@ -44,8 +45,14 @@ class DirichletLift {
   const space::H1Space& extended_scalar() const { return *extended_scalar_; }
   /// [S^p(T_h)]² on extended_scalar() with nothing fixed (a vector lift's space; null for a scalar one).
   const space::VectorSpace* extended_vector() const { return extended_vector_.get(); }
-  /// w, numbered on the extended space.
-  const Eigen::VectorXd& values() const { return values_; }
+  /// w, numbered on the extended space: a vector of the global length, for serial use (a rank
+  /// of a distributed run reads value() and times()).
+  Eigen::VectorXd values() const;
+  /// w at one unknown of the extended space (0 away from the fixed edges).
+  double value(int extended_unknown) const;
+  /// `columns` · w for a matrix over the extended space's unknowns (B w), summed as the dense
+  /// product sums, column after column.
+  Eigen::VectorXd times(const Eigen::SparseMatrix<double>& columns) const;
   /// u_0 + w on the extended space, for u_0 numbered on the space with elimination.
   Eigen::VectorXd total(const Eigen::VectorXd& u0) const;
   /// The entries of a vector of the extended space at the unknowns of the space with elimination
@@ -80,10 +87,19 @@ class DirichletLift {
   void build(int components, const std::array<PointFunction, space::kComponents>& u_d, const UnknownOf& unknown,
              const UnknownOf& extended, int n_unknowns, int n_extended);
 
+  /// The extended space's unknown of local shape s, component comp of a held cell.
+  int extended_unknown(int cell, int s, int comp) const;
+
   std::unique_ptr<space::H1Space> extended_scalar_;
   std::unique_ptr<space::VectorSpace> extended_vector_;
-  std::vector<int> embedding_;  ///< problem unknown → extended unknown
-  Eigen::VectorXd values_;
+  /// Problem unknown → extended unknown; only where the spaces hold every cell (serial), since a
+  /// rank of a distributed run reads the correspondence cell by cell and keeps no global-length table.
+  std::vector<int> embedding_;
+  /// w's non-zero unknowns of the extended space (ascending) and its values there: the fixed
+  /// edges' dofs only.
+  std::vector<int> fixed_unknowns_;
+  std::vector<double> fixed_values_;
+  int n_extended_ = 0;
   std::vector<CellLift> cells_;
 };
 

@@ -136,9 +136,9 @@ ContactSolution solve_contact(const ContactSetup& setup) {
   }
   // The constraints act on u_0 + w: B u_0 against (ℓ_i, g) − B w.
   if (out.lift)
-    gap_offset -= to_nodal * (assembly::assemble_coupling(out.lift->extended_scalar(), primal.contact(), multipliers,
-                                                          weighted ? setup.bound : assembly::BoundaryFunction{}) *
-                              out.lift->values());
+    gap_offset -= to_nodal * out.lift->times(
+                                 assembly::assemble_coupling(out.lift->extended_scalar(), primal.contact(), multipliers,
+                                                             weighted ? setup.bound : assembly::BoundaryFunction{}));
   out.seconds.assembly = assembly_clock.seconds();
 
   // 2. Condensation onto the Γ_C trace: the trace dofs ordered last in the factorization, so that

@@ -69,9 +69,8 @@ struct CondensedProblem {
 Eigen::VectorXd coupling_of_lift(const ElasticContactSetup& setup, const space::MultiplierSpace& multipliers,
                                  const Eigen::SparseMatrix<double>& to_nodal, const assembly::DirichletLift& lift) {
   auto part = [&](assembly::TraceDirection direction) -> Eigen::VectorXd {
-    return to_nodal * (assembly::assemble_directional_coupling(*lift.extended_vector(), setup.operators->contact(),
-                                                               multipliers, direction) *
-                       lift.values());
+    return to_nodal * lift.times(assembly::assemble_directional_coupling(
+                          *lift.extended_vector(), setup.operators->contact(), multipliers, direction));
   };
   Eigen::VectorXd out = -part(assembly::TraceDirection::normal);
   if (setup.problem == ElasticContactProblem::frictionless) return out;

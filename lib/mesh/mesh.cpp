@@ -85,7 +85,7 @@ void Mesh::build_topology(const std::string& origin) {
       cell_edge_signs_[c][k] = a < b ? 1 : -1;
     }
   }
-  edge_labels_.assign(edges_.size(), "");
+  edge_label_index_.assign(edges_.size(), 0);
   edge_parts_.assign(edges_.size(), BoundaryPart::interior);
   for (int e = 0; e < n_edges(); ++e)
     if (is_boundary_edge(e)) {
@@ -188,6 +188,17 @@ bool Mesh::has_triangles() const {
 
 bool Mesh::has_part(BoundaryPart part) const {
   return std::find(edge_parts_.begin(), edge_parts_.end(), part) != edge_parts_.end();
+}
+
+void Mesh::set_edge_label(int e, const std::string& label) {
+  auto found = std::find(labels_.begin(), labels_.end(), label);
+  if (found == labels_.end()) {
+    if (labels_.size() > UINT16_MAX)
+      throw InputError("the mesh carries more than 65 535 distinct edge labels; edge " + std::to_string(e) +
+                       " would get '" + label + "'");
+    found = labels_.insert(labels_.end(), label);
+  }
+  edge_label_index_[e] = static_cast<std::uint16_t>(found - labels_.begin());
 }
 
 void Mesh::set_edge_part(int e, BoundaryPart part) {

@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <span>
 #include <string>
@@ -84,8 +85,9 @@ class Mesh {
   void straighten();
 
   /// Label of a boundary edge ("bottom", a Gmsh physical name, ...); empty for interior edges.
-  const std::string& edge_label(int e) const { return edge_labels_[e]; }
-  void set_edge_label(int e, std::string label) { edge_labels_[e] = std::move(label); }
+  const std::string& edge_label(int e) const { return labels_[edge_label_index_[e]]; }
+  /// @throws InputError if the mesh would carry more than 65 535 distinct labels.
+  void set_edge_label(int e, const std::string& label);
   BoundaryPart edge_part(int e) const { return edge_parts_[e]; }
   void set_edge_part(int e, BoundaryPart part);
   /// Whether some boundary edge belongs to `part`.
@@ -106,10 +108,13 @@ class Mesh {
   std::vector<std::array<int, 4>> cells_;
   std::vector<std::array<int, 2>> edges_;
   std::vector<std::array<int, 4>> cell_edges_;
-  std::vector<std::array<int, 4>> cell_edge_signs_;
+  std::vector<std::array<std::int8_t, 4>> cell_edge_signs_;
   std::vector<std::array<int, 2>> edge_cells_;
   std::vector<int> boundary_edges_;
-  std::vector<std::string> edge_labels_;
+  // Each edge's label as an index into labels_ (labels_[0] is the empty one): an edge costs two
+  // bytes, not a string's 32, and a mesh has only a few labels.
+  std::vector<std::string> labels_{""};
+  std::vector<std::uint16_t> edge_label_index_;
   std::vector<BoundaryPart> edge_parts_;
   std::vector<std::shared_ptr<const BlendedGeometry>> cell_geometry_;  ///< empty while all cells are bilinear
 };

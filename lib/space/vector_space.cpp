@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 
 #include "core/error.hpp"
@@ -12,7 +13,6 @@ namespace hpcontact::space {
 VectorSpace::VectorSpace(const H1Space& scalar, const std::array<std::vector<char>, kComponents>& fixed)
     : scalar_(&scalar) {
   const auto& mesh = scalar.mesh();
-  std::vector<char> is_fixed(kComponents * scalar.n_dofs(), 0);
   for (int c = 0; c < kComponents; ++c) {
     if (fixed[c].empty()) continue;
     if (static_cast<int>(fixed[c].size()) != mesh.n_edges())
@@ -24,7 +24,7 @@ VectorSpace::VectorSpace(const H1Space& scalar, const std::array<std::vector<cha
     // numbering, not from the cells' shapes, which a rank of a distributed run holds for its
     // cells only.
     const auto fix = [&](int dof) {
-      if (dof >= 0) is_fixed[kComponents * dof + c] = 1;
+      if (dof >= 0) fixed_.push_back(kComponents * dof + c);
     };
     for (int e = 0; e < mesh.n_edges(); ++e) {
       if (!fixed[c][e]) continue;
@@ -32,13 +32,18 @@ VectorSpace::VectorSpace(const H1Space& scalar, const std::array<std::vector<cha
       for (int k = 2; k <= scalar.edge_degree(e); ++k) fix(scalar.edge_mode_dof(e, k));
     }
   }
-  dofs_.assign(kComponents * scalar.n_dofs(), -1);
-  for (int d = 0; d < scalar.n_dofs(); ++d) {
-    if (d == scalar.n_skeleton_dofs()) n_skeleton_dofs_ = n_dofs_;
-    for (int c = 0; c < kComponents; ++c)
-      if (!is_fixed[kComponents * d + c]) dofs_[kComponents * d + c] = n_dofs_++;
-  }
-  if (scalar.n_skeleton_dofs() == scalar.n_dofs()) n_skeleton_dofs_ = n_dofs_;
+  std::sort(fixed_.begin(), fixed_.end());
+  fixed_.erase(std::unique(fixed_.begin(), fixed_.end()), fixed_.end());
+  n_dofs_ = kComponents * scalar.n_dofs() - static_cast<int>(fixed_.size());
+  const int skeleton_slots = kComponents * scalar.n_skeleton_dofs();
+  n_skeleton_dofs_ = skeleton_slots -
+                     static_cast<int>(std::lower_bound(fixed_.begin(), fixed_.end(), skeleton_slots) - fixed_.begin());
+}
+
+int VectorSpace::dof_with_rollers(int slot) const {
+  const auto it = std::lower_bound(fixed_.begin(), fixed_.end(), slot);
+  if (it != fixed_.end() && *it == slot) return -1;
+  return slot - static_cast<int>(it - fixed_.begin());
 }
 
 Eigen::VectorXd VectorSpace::component(const Eigen::VectorXd& u, int component) const {

@@ -26,18 +26,25 @@ class VectorSpace {
   int n_skeleton_dofs() const { return n_skeleton_dofs_; }
   /// The unknown of component c of scalar dof d; -1 where it is eliminated (d < 0, or fixed).
   int dof(int scalar_dof, int component) const {
-    return scalar_dof < 0 ? -1 : dofs_[kComponents * scalar_dof + component];
+    if (scalar_dof < 0) return -1;
+    const int slot = kComponents * scalar_dof + component;
+    return fixed_.empty() ? slot : dof_with_rollers(slot);
   }
   /// Whether some edge fixes one component alone.
-  bool has_rollers() const { return n_dofs_ < kComponents * scalar_->n_dofs(); }
+  bool has_rollers() const { return !fixed_.empty(); }
   /// The coefficients of one component over the scalar dofs (0 where fixed), shape (scalar n_dofs).
   Eigen::VectorXd component(const Eigen::VectorXd& u, int component) const;
   /// The unknowns of the field with these component coefficients (each of scalar size).
   Eigen::VectorXd from_components(const Eigen::VectorXd& x, const Eigen::VectorXd& y) const;
 
  private:
+  int dof_with_rollers(int slot) const;
+
   const H1Space* scalar_;
-  std::vector<int> dofs_;  ///< (scalar dof, component) → unknown or -1
+  /// The slots kComponents · d + c that rollers fix, ascending: an unknown is its slot less the
+  /// fixed slots before it. Boundary-sized, where a table of every slot would be of the global
+  /// length on every rank.
+  std::vector<int> fixed_;
   int n_dofs_ = 0, n_skeleton_dofs_ = 0;
 };
 
