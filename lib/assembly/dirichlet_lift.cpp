@@ -70,6 +70,7 @@ double DirichletLift::value(int extended_unknown) const {
 }
 
 Eigen::VectorXd DirichletLift::times(const Eigen::SparseMatrix<double>& columns) const {
+  HPC_VERIFY(columns.cols() == n_extended_, "a matrix over the extended space's unknowns");
   Eigen::VectorXd out = Eigen::VectorXd::Zero(columns.rows());
   for (std::size_t k = 0; k < fixed_unknowns_.size(); ++k)
     for (Eigen::SparseMatrix<double>::InnerIterator it(columns, fixed_unknowns_[k]); it; ++it)
@@ -78,6 +79,7 @@ Eigen::VectorXd DirichletLift::times(const Eigen::SparseMatrix<double>& columns)
 }
 
 Eigen::VectorXd DirichletLift::values() const {
+  HPC_VERIFY(every_cell_, "w of the whole space on a rank holding some cells");
   Eigen::VectorXd out = Eigen::VectorXd::Zero(n_extended_);
   for (std::size_t k = 0; k < fixed_unknowns_.size(); ++k) out(fixed_unknowns_[k]) = fixed_values_[k];
   return out;
@@ -86,9 +88,10 @@ Eigen::VectorXd DirichletLift::values() const {
 void DirichletLift::build(int components, const std::array<PointFunction, space::kComponents>& u_d,
                           const UnknownOf& unknown, const UnknownOf& extended, int n_unknowns, int n_extended) {
   const auto& mesh = extended_scalar_->mesh();
-  const bool every_cell = extended_scalar_->held_cells().empty();
-  if (every_cell) embedding_.assign(n_unknowns, -1);
+  every_cell_ = extended_scalar_->held_cells().empty();
+  if (every_cell_) embedding_.assign(n_unknowns, -1);
   n_extended_ = n_extended;
+  n_unknowns_ = n_unknowns;
   std::map<int, double> fixed;  // w's non-zero unknowns (a shared vertex: the same value from each cell)
   for (int c = 0; c < mesh.n_cells(); ++c) {
     if (!extended_scalar_->holds(c)) continue;  // another rank's cell (the problem's space holds the same ones)
@@ -99,7 +102,7 @@ void DirichletLift::build(int components, const std::array<PointFunction, space:
       for (int comp = 0; comp < components; ++comp) {
         const int target = extended(c, s, comp);
         if (const int own = unknown(c, s, comp); own >= 0) {
-          if (every_cell) embedding_[own] = target;
+          if (every_cell_) embedding_[own] = target;
           continue;
         }
         if (!u_d[comp]) continue;
@@ -129,6 +132,7 @@ void DirichletLift::build(int components, const std::array<PointFunction, space:
 }
 
 Eigen::VectorXd DirichletLift::total(const Eigen::VectorXd& u0) const {
+  HPC_VERIFY(every_cell_, "u_0 + w of the whole space on a rank holding some cells");
   HPC_VERIFY(u0.size() == static_cast<Eigen::Index>(embedding_.size()), "u_0 on the problem's space");
   Eigen::VectorXd out = values();
   for (std::size_t i = 0; i < embedding_.size(); ++i) out(embedding_[i]) += u0(static_cast<Eigen::Index>(i));
@@ -136,6 +140,7 @@ Eigen::VectorXd DirichletLift::total(const Eigen::VectorXd& u0) const {
 }
 
 Eigen::VectorXd DirichletLift::restrict(const Eigen::VectorXd& extended) const {
+  HPC_VERIFY(every_cell_, "a restriction of the whole space on a rank holding some cells");
   HPC_VERIFY(extended.size() == n_extended_, "a vector of the extended space");
   Eigen::VectorXd out(embedding_.size());
   for (std::size_t i = 0; i < embedding_.size(); ++i) out(static_cast<Eigen::Index>(i)) = extended(embedding_[i]);
@@ -145,22 +150,24 @@ Eigen::VectorXd DirichletLift::restrict(const Eigen::VectorXd& extended) const {
 DirichletLift::LiftedLoad DirichletLift::lifted_load(const CellSystem& system, const Eigen::VectorXd& extended_load,
                                                      const LocalRows& rows, const LocalRows& extended_rows,
                                                      linalg::Distribution distribution) const {
+  HPC_VERIFY(system.n_dofs() == n_unknowns_, "a cell system on the problem's space");
   HPC_VERIFY(rows.global() == extended_rows.global(), "the lift's layouts of two kinds");
   LiftedLoad out;
   std::vector<CellDof> dofs;
   // F at the problem's unknowns, and −F(w) + ½ a(w, w) (the rank's share of both when distributed,
   // summed in the serial order otherwise, so that serial energies keep their bits).
   if (rows.global()) {
-    HPC_VERIFY(system.n_dofs() == static_cast<int>(embedding_.size()), "a cell system on the problem's space");
     out.load = restrict(extended_load);
     out.energy_offset = -extended_load.dot(values());
   } else {
     // Cell by cell: the system's local unknowns are in the order of the lift's (shape, component).
     const int components = extended_vector_ ? space::kComponents : 1;
-    out.load.resize(static_cast<Eigen::Index>(rows.dofs().size()));
+    out.load = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(rows.dofs().size()));
     for (int c = 0; c < extended_scalar_->mesh().n_cells(); ++c) {
       if (!rows.holds(c)) continue;
       system.cell_dofs(c, dofs);
+      HPC_VERIFY(static_cast<int>(dofs.size()) == components * extended_scalar_->shape_count(c),
+                 "the system's local unknowns are the lift's (shape, component) pairs");
       for (int i = 0; i < static_cast<int>(dofs.size()); ++i)
         if (dofs[i].dof >= 0)
           out.load(rows.row(dofs[i].dof)) =

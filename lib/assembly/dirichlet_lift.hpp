@@ -53,10 +53,11 @@ class DirichletLift {
   /// `columns` · w for a matrix over the extended space's unknowns (B w), summed as the dense
   /// product sums, column after column.
   Eigen::VectorXd times(const Eigen::SparseMatrix<double>& columns) const;
-  /// u_0 + w on the extended space, for u_0 numbered on the space with elimination.
+  /// u_0 + w on the extended space, for u_0 numbered on the space with elimination (serial: a
+  /// vector of the global length).
   Eigen::VectorXd total(const Eigen::VectorXd& u0) const;
   /// The entries of a vector of the extended space at the unknowns of the space with elimination
-  /// (a load assembled on the extended space, restricted to the problem's unknowns).
+  /// (a load assembled on the extended space, restricted to the problem's unknowns; serial).
   Eigen::VectorXd restrict(const Eigen::VectorXd& extended) const;
 
   struct LiftedLoad {
@@ -99,7 +100,8 @@ class DirichletLift {
   /// edges' dofs only.
   std::vector<int> fixed_unknowns_;
   std::vector<double> fixed_values_;
-  int n_extended_ = 0;
+  int n_extended_ = 0, n_unknowns_ = 0;
+  bool every_cell_ = true;  ///< whether the spaces hold every cell (serial)
   std::vector<CellLift> cells_;
 };
 

@@ -148,7 +148,7 @@ ContactSolution solve_contact(const ContactSetup& setup) {
   const assembly::CondensedFactor& k_factor = primal.stiffness_factor();
   out.seconds.factorization = factorization_clock.seconds();
   // Distributed, the vectors of S^p(T_h) are held at each rank's own cells' dofs, the load as the
-  // ranks' shares: none of the global length (without Dirichlet data) (u stays at the rank's own cells'
+  // ranks' shares: none of the global length, with Dirichlet data too (u stays at the rank's own cells'
   // dofs, where the outputs read it).
   Stopwatch load_clock;
   const auto [load_share, energy_offset] = problem_load_share(setup, primal, out.lift.get(), k_factor);

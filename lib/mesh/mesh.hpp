@@ -85,6 +85,7 @@ class Mesh {
   void straighten();
 
   /// Label of a boundary edge ("bottom", a Gmsh physical name, ...); empty for interior edges.
+  /// (Valid until a label new to the mesh is set: the labels live in one growing table.)
   const std::string& edge_label(int e) const { return labels_[edge_label_index_[e]]; }
   /// @throws InputError if the mesh would carry more than 65 535 distinct labels.
   void set_edge_label(int e, const std::string& label);

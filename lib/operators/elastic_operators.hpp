@@ -39,7 +39,8 @@ class ElasticOperators {
   ~ElasticOperators();
 
   const mesh::Mesh& mesh() const { return *mesh_; }
-  /// The scalar space S^p(T_h), and the displacement space [S^p(T_h)]² with its rollers.
+  /// The scalar space S^p(T_h), and the displacement space [S^p(T_h)]² with its rollers;
+  /// distributed, the space holds the shapes of the rank's own cells and Γ_C's only.
   const space::H1Space& space() const { return *space_; }
   const space::VectorSpace& vector_space() const { return *vector_space_; }
   int n_dofs() const { return vector_space_->n_dofs(); }

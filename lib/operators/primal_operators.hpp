@@ -23,7 +23,8 @@ namespace hpcontact::operators {
 
 class PrimalOperators {
  public:
-  /// `mesh` (and `log`, when given) must outlive the object. Builds the space and Γ_C only.
+  /// `mesh` (and `log`, when given) must outlive the object. Builds the space and Γ_C only, and,
+  /// distributed, splits the cells over the ranks first (collectively: operators/rank_space.hpp).
   /// `distribution` other than serial: the factors are factorized over its ranks (every one of
   /// them must construct the object and make the same calls on it, in the same order).
   PrimalOperators(const mesh::Mesh& mesh, std::vector<int> cell_degrees, OperatorLog* log = nullptr,
@@ -31,6 +32,7 @@ class PrimalOperators {
   ~PrimalOperators();
 
   const mesh::Mesh& mesh() const { return *mesh_; }
+  /// Distributed, it holds the shapes of the rank's own cells and Γ_C's only.
   const space::H1Space& space() const { return *space_; }
   const mesh::ContactBoundary& contact() const { return *contact_; }
 

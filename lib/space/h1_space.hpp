@@ -20,8 +20,8 @@ enum class ShapeRole : unsigned char { vertex, edge, interior };
 /// Triangle (basis/triangle_basis.hpp): vertex `entity`; mode k = i of edge `entity` (j = 0);
 /// bubble (n1, n2) = (i, j).
 /// `dof` is the global free dof, or -1 if the function is eliminated by the Dirichlet condition.
-/// 16 bytes: a space holds one per shape of every cell, the largest table of a run after the
-/// factorizations (25 per cell at p = 4).
+/// 16 bytes: a space holds one per shape of every cell it holds (a rank of a distributed run: its
+/// own cells and Γ_C's), the largest table of a run after the factorizations (25 per cell at p = 4).
 struct LocalShape {
   std::int16_t i = 0;
   std::int16_t j = 0;
@@ -31,7 +31,7 @@ struct LocalShape {
   std::int8_t entity = -1;  ///< local vertex (vertex shapes) or local edge (edge modes); -1 for interior
 };
 
-static_assert(sizeof(LocalShape) == 16, "LocalShape is stored once per shape of every cell");
+static_assert(sizeof(LocalShape) == 16, "LocalShape is stored once per shape of every held cell");
 
 /// Whether the dofs of Γ_D are dropped (the space of the problems, functions vanishing on Γ_D) or
 /// kept (the same space without the condition: where a lifting of non-zero Dirichlet data lives).
