@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 
+#include "core/interrupt.hpp"
 #include "core/petsc_session.hpp"
 #include "core/rank_agreement.hpp"
 #include "io/atomic_file.hpp"
@@ -58,6 +59,15 @@ void write_run_outputs(const std::filesystem::path& out, const linalg::Distribut
       },
       ranks);
   const std::filesystem::path staging = broadcast_path(folder ? folder->path() : std::filesystem::path(), ranks, size);
+  // On an interrupt every rank's handler empties the staging folder and removes it: rank 0's
+  // alone (OutputFolder registers it there) could meet another rank's temporary piece not yet
+  // removed, fail to remove the folder and leave it behind. Whichever handler runs last finds it
+  // empty. (After the commit the path no longer exists and the handler does nothing.)
+  struct InterruptCleanup {
+    int slot = -1;
+    ~InterruptCleanup() { release_file_in_progress(slot); }
+  } cleanup;
+  if (distributed && rank != 0) cleanup.slot = register_folder_in_progress(staging.string());
   if (distributed)
     run_on_all_ranks_agreeing(
         [&, rank = rank] {
