@@ -15,6 +15,18 @@
 
 using namespace hpcontact;
 
+namespace {
+
+// One degree in 1 … max_degree per cell, drawn with `seed`.
+std::vector<int> random_degrees(const mesh::Mesh& mesh, int max_degree, unsigned seed) {
+  std::mt19937 generator(seed);
+  std::vector<int> degrees(mesh.n_cells());
+  for (int& p : degrees) p = std::uniform_int_distribution<int>(1, max_degree)(generator);
+  return degrees;
+}
+
+}  // namespace
+
 TEST(H1Space, UniformDegreeDofCount) {
   auto m = mesh::make_rectangle_mesh({}, 4, 3);  // all Neumann: nothing eliminated
   for (int p = 1; p <= 8; ++p) {
@@ -38,9 +50,7 @@ TEST(H1Space, RejectsBadDegrees) {
 TEST(H1Space, MixedDegreesAreConforming) {
   auto m = mesh::make_paper_square_mesh(6);
   mesh::perturb_interior_vertices(m, 0.2, 3);
-  std::mt19937 generator(11);
-  std::vector<int> degrees(m.n_cells());
-  for (int& p : degrees) p = std::uniform_int_distribution<int>(1, 7)(generator);
+  const auto degrees = random_degrees(m, 7, 11);
   const space::H1Space s(m, degrees);
   operators::PoissonData data;
   data.f = [](const mesh::Point& x) { return std::exp(x.x()) * std::cos(3 * x.y()); };
@@ -89,9 +99,7 @@ TEST(H1Space, DiscreteFunctionsVanishOnDirichletBoundary) {
 TEST(H1Space, HoldingSomeCellsKeepsTheWholeNumbering) {
   auto m = mesh::make_paper_square_mesh(6);
   mesh::perturb_interior_vertices(m, 0.2, 5);
-  std::mt19937 generator(3);
-  std::vector<int> degrees(m.n_cells());
-  for (int& p : degrees) p = std::uniform_int_distribution<int>(1, 6)(generator);
+  const auto degrees = random_degrees(m, 6, 3);
   const space::H1Space whole(m, degrees);
   std::vector<char> held(m.n_cells(), 0);
   for (int c = 0; c < m.n_cells(); ++c) held[c] = (c % 3 == 1);

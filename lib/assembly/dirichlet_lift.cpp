@@ -43,8 +43,8 @@ DirichletLift::DirichletLift(const space::H1Space& space, const PointFunction& u
     : extended_scalar_(std::make_unique<space::H1Space>(space.mesh(), space.cell_degrees(), space::DirichletDofs::kept,
                                                         space.held_cells())) {
   build(
-      1, {u_d, {}}, [&](int c, int s, int) { return space.cell_shapes(c)[s].dof; },
-      [&](int c, int s, int comp) { return extended_unknown(c, s, comp); }, space.n_dofs(), extended_scalar_->n_dofs());
+      1, {u_d, {}}, [&](int c, int s, int) { return space.cell_shapes(c)[s].dof; }, space.n_dofs(),
+      extended_scalar_->n_dofs());
 }
 
 DirichletLift::DirichletLift(const space::VectorSpace& space, const std::array<PointFunction, space::kComponents>& u_d)
@@ -53,8 +53,8 @@ DirichletLift::DirichletLift(const space::VectorSpace& space, const std::array<P
       extended_vector_(std::make_unique<space::VectorSpace>(*extended_scalar_)) {
   build(
       space::kComponents, u_d,
-      [&](int c, int s, int comp) { return space.dof(space.scalar().cell_shapes(c)[s].dof, comp); },
-      [&](int c, int s, int comp) { return extended_unknown(c, s, comp); }, space.n_dofs(), extended_vector_->n_dofs());
+      [&](int c, int s, int comp) { return space.dof(space.scalar().cell_shapes(c)[s].dof, comp); }, space.n_dofs(),
+      extended_vector_->n_dofs());
 }
 
 DirichletLift::~DirichletLift() = default;
@@ -86,7 +86,7 @@ Eigen::VectorXd DirichletLift::values() const {
 }
 
 void DirichletLift::build(int components, const std::array<PointFunction, space::kComponents>& u_d,
-                          const UnknownOf& unknown, const UnknownOf& extended, int n_unknowns, int n_extended) {
+                          const UnknownOf& unknown, int n_unknowns, int n_extended) {
   const auto& mesh = extended_scalar_->mesh();
   every_cell_ = extended_scalar_->held_cells().empty();
   if (every_cell_) embedding_.assign(n_unknowns, -1);
@@ -100,7 +100,7 @@ void DirichletLift::build(int components, const std::array<PointFunction, space:
     std::array<std::array<Eigen::VectorXd, space::kComponents>, 4> edge_coefficients;  // on first use, per edge
     for (int s = 0; s < static_cast<int>(shapes.size()); ++s)
       for (int comp = 0; comp < components; ++comp) {
-        const int target = extended(c, s, comp);
+        const int target = extended_unknown(c, s, comp);
         if (const int own = unknown(c, s, comp); own >= 0) {
           if (every_cell_) embedding_[own] = target;
           continue;

@@ -84,9 +84,9 @@ class DirichletLift {
   };
   /// (cell, local shape, component) → an unknown.
   using UnknownOf = std::function<int(int, int, int)>;
-  /// `unknown` gives the problem's unknown (-1 where fixed), `extended` the extended space's.
+  /// `unknown` gives the problem's unknown (-1 where fixed); extended_unknown the extended space's.
   void build(int components, const std::array<PointFunction, space::kComponents>& u_d, const UnknownOf& unknown,
-             const UnknownOf& extended, int n_unknowns, int n_extended);
+             int n_unknowns, int n_extended);
 
   /// The extended space's unknown of local shape s, component comp of a held cell.
   int extended_unknown(int cell, int s, int comp) const;
