@@ -93,7 +93,7 @@ int run(const std::string& solver, const std::string& split, bool indefinite, bo
   std::vector<Eigen::Triplet<double>> b_entries;
   for (int r = 0; r < 10; ++r)
     for (int k = 0; k < 5; ++k) b_entries.emplace_back(r, trailing[(3 * r + 5 * k) % kNx], value(random));
-  Eigen::SparseMatrix<double> b(10, n), b_out(10, n);
+  linalg::Coupling b(10, n), b_out(10, n);
   b.setFromTriplets(b_entries.begin(), b_entries.end());
   b_entries.emplace_back(4, node(kNx / 2, kNy / 2), 1.0);
   b_out.setFromTriplets(b_entries.begin(), b_entries.end());

@@ -19,7 +19,8 @@ using namespace hpcontact;
 namespace {
 
 struct Operators {
-  Eigen::SparseMatrix<double> a, b;
+  Eigen::SparseMatrix<double> a;
+  linalg::Coupling b;
 };
 
 // A = K + M of S^p on the §7 square, B the coupling with M^{p_C} on m segments of Γ_C.

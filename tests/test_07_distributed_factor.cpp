@@ -45,6 +45,20 @@ double partition_number(const std::string& output, const std::string& mesh, cons
 
 }  // namespace
 
+// B x and Bᵀ y with x at each rank's own dofs and Bᵀ y as the ranks' shares (B stored by rows, its
+// columns found among the rank's dofs) equal the serial products, for every solver's split.
+TEST(DistributedFactor, CouplingProductsOverTheRanksEqualTheSerialOnes) {
+  for (const std::string solver : {"substructuring", "mumps", "bddc"})
+    for (int ranks : {1, 2, 3}) {
+      const auto run = run_command(mpirun_command(ranks, HPCONTACT_PRODUCTS_CHECK, solver));
+      const std::string where = solver + " on " + std::to_string(ranks) + " ranks";
+      ASSERT_EQ(run.exit_code, 0) << where << "\n" << run.output;
+      EXPECT_LT(number_after(run.output, "multiply"), 1e-14) << where << "\n" << run.output;
+      EXPECT_LT(number_after(run.output, "transpose"), 1e-14) << where << "\n" << run.output;
+      EXPECT_EQ(number_after(run.output, "held_dofs_ok"), 1.0) << where << "\n" << run.output;
+    }
+}
+
 // A trailing set more than twice the unknowns the ranks share stays out of substructuring's dense
 // interface problem (its unknowns interior to their ranks), and B A⁻¹ Bᵀ from solves equals
 // CHOLMOD's; on one rank it is the interface, as in the serial path.

@@ -85,7 +85,7 @@ TEST(CondensedFactor, EqualsTheFactorOfTheAssembledMatrix) {
     const mesh::ContactBoundary contact(mesh);
     const auto boundary = mesh::BoundaryMesh::uniform(contact.length(), 4);
     const space::MultiplierSpace multipliers(boundary, 2);
-    const Eigen::SparseMatrix<double> b = assembly::assemble_coupling(space, contact, multipliers);
+    const linalg::Coupling b = assembly::assemble_coupling(space, contact, multipliers);
     const auto trace = linalg::nonzero_columns(b);
     const auto volume = assembly::assemble_volume_matrices(space, {.stiffness = true, .mass = true});
     for (const double mass_weight : {0.0, 1.0}) {
@@ -104,7 +104,7 @@ TEST(CondensedFactor, EqualsTheFactorOfTheAssembledMatrix) {
       EXPECT_NEAR(factor.quadratic_form(u), u.dot(a * u), 1e-12 * u.dot(a * u));
 
       // A B reaching interior modes (the last dof is one) takes the path by solves.
-      Eigen::SparseMatrix<double> b_interior = b;
+      linalg::Coupling b_interior = b;
       b_interior.coeffRef(0, space.n_dofs() - 1) = 1.0;
       const Eigen::MatrixXd bit = Eigen::MatrixXd(b_interior.transpose());
       EXPECT_LT(
@@ -137,7 +137,7 @@ TEST(CondensedFactor, SimilarCellsOfDifferentSizesKeepTheirOwnMass) {
     const mesh::ContactBoundary contact(graded);
     const auto boundary = mesh::BoundaryMesh::uniform(contact.length(), 3);
     const space::MultiplierSpace multipliers(boundary, 1);
-    const Eigen::SparseMatrix<double> b = assembly::assemble_coupling(space, contact, multipliers);
+    const linalg::Coupling b = assembly::assemble_coupling(space, contact, multipliers);
     const auto volume = assembly::assemble_volume_matrices(space, {.stiffness = true, .mass = true});
     const Eigen::LLT<Eigen::MatrixXd> dense(Eigen::MatrixXd(volume.stiffness) + Eigen::MatrixXd(volume.mass));
     const assembly::CondensedFactor factor(space, 1.0, 1.0, linalg::nonzero_columns(b));

@@ -196,28 +196,35 @@ Eigen::MatrixXd CondensedFactor::local_null_motions() const {
   return motions;
 }
 
-Eigen::MatrixXd CondensedFactor::multiply_local(const Eigen::SparseMatrix<double>& b,
-                                                const Eigen::MatrixXd& x_local) const {
+Eigen::Index CondensedFactor::counted_local_row(int dof) const {
+  const auto& dofs = local_dofs();
+  const auto found = std::lower_bound(dofs.begin(), dofs.end(), dof);
+  if (found == dofs.end() || *found != dof) return -1;
+  const auto k = found - dofs.begin();
+  return counts_dof_[k] ? k : -1;
+}
+
+Eigen::MatrixXd CondensedFactor::multiply_local(const linalg::Coupling& b, const Eigen::MatrixXd& x_local) const {
   HPC_VERIFY(b.cols() == size_ && x_local.rows() == static_cast<Eigen::Index>(local_dofs().size()),
              "B x: sizes do not match");
   if (!distribution_.distributed()) return b * x_local;
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(b.rows(), x_local.cols());
-  for (std::size_t k = 0; k < local_dofs().size(); ++k)
-    if (counts_dof_[k])
-      for (Eigen::SparseMatrix<double>::InnerIterator it(b, local_dofs()[k]); it; ++it)
-        out.row(it.row()) += it.value() * x_local.row(static_cast<Eigen::Index>(k));
+  for (int row = 0; row < b.outerSize(); ++row)
+    for (linalg::Coupling::InnerIterator it(b, row); it; ++it)
+      if (const Eigen::Index k = counted_local_row(static_cast<int>(it.col())); k >= 0)
+        out.row(row) += it.value() * x_local.row(k);
   sum_over_ranks(distribution_.ranks, out.data(), out.size());
   return out;
 }
 
-Eigen::MatrixXd CondensedFactor::transpose_share(const Eigen::SparseMatrix<double>& b, const Eigen::MatrixXd& y) const {
+Eigen::MatrixXd CondensedFactor::transpose_share(const linalg::Coupling& b, const Eigen::MatrixXd& y) const {
   HPC_VERIFY(b.cols() == size_ && y.rows() == b.rows(), "Bᵀ y: sizes do not match");
   if (!distribution_.distributed()) return b.transpose() * y;
   Eigen::MatrixXd share = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(local_dofs().size()), y.cols());
-  for (std::size_t k = 0; k < local_dofs().size(); ++k)
-    if (counts_dof_[k])
-      for (Eigen::SparseMatrix<double>::InnerIterator it(b, local_dofs()[k]); it; ++it)
-        share.row(static_cast<Eigen::Index>(k)) += it.value() * y.row(it.row());
+  for (int row = 0; row < b.outerSize(); ++row)
+    for (linalg::Coupling::InnerIterator it(b, row); it; ++it)
+      if (const Eigen::Index k = counted_local_row(static_cast<int>(it.col())); k >= 0)
+        share.row(k) += it.value() * y.row(row);
   return share;
 }
 
@@ -371,15 +378,15 @@ Eigen::MatrixXd CondensedFactor::solve_local(const Eigen::MatrixXd& partial_rhs)
 
 Eigen::VectorXd CondensedFactor::solve(const Eigen::VectorXd& rhs) const { return solve(Eigen::MatrixXd(rhs)).col(0); }
 
-Eigen::MatrixXd CondensedFactor::schur_complement(const Eigen::SparseMatrix<double>& b) const {
+Eigen::MatrixXd CondensedFactor::schur_complement(const linalg::Coupling& b) const {
   HPC_VERIFY(b.cols() == size_, "B A⁻¹ Bᵀ: B has the wrong number of columns");
   const int n_skeleton = this->n_skeleton();
   bool skeleton_only = true;
-  for (int col = n_skeleton; skeleton_only && col < b.outerSize(); ++col)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(b, col); it; ++it)
-      if (it.value() != 0.0) skeleton_only = false;
+  for (int row = 0; skeleton_only && row < b.outerSize(); ++row)
+    for (linalg::Coupling::InnerIterator it(b, row); it; ++it)
+      if (it.col() >= n_skeleton && it.value() != 0.0) skeleton_only = false;
   if (skeleton_only) {
-    const Eigen::SparseMatrix<double> b_skeleton = b.leftCols(n_skeleton);
+    const linalg::Coupling b_skeleton = b.leftCols(n_skeleton);
     if (serial_) return serial_->schur_complement(b_skeleton);
     if (bddc_) return bddc_->schur_complement(b_skeleton);
     return substructured_ ? substructured_->schur_complement(b_skeleton) : mumps_->schur_complement(b_skeleton);

@@ -12,6 +12,7 @@
 #include "assembly/cell_system.hpp"
 #include "assembly/local_rows.hpp"
 #include "linalg/bddc_solver.hpp"
+#include "linalg/coupling_matrix.hpp"
 #include "linalg/distributed_cholesky.hpp"
 #include "linalg/distribution.hpp"
 #include "linalg/sparse_cholesky.hpp"
@@ -81,15 +82,15 @@ class CondensedFactor {
   const LocalRows& local_rows() const { return rows_; }
   /// B x for B (m, n) the same on every rank and x held at the local dofs: (m, k), the same on
   /// every rank. Collective.
-  Eigen::MatrixXd multiply_local(const Eigen::SparseMatrix<double>& b, const Eigen::MatrixXd& x_local) const;
+  Eigen::MatrixXd multiply_local(const linalg::Coupling& b, const Eigen::MatrixXd& x_local) const;
   /// This rank's share of Bᵀ y at its local dofs, for B (m, n) and y (m, k) the same on every rank.
-  Eigen::MatrixXd transpose_share(const Eigen::SparseMatrix<double>& b, const Eigen::MatrixXd& y) const;
+  Eigen::MatrixXd transpose_share(const linalg::Coupling& b, const Eigen::MatrixXd& y) const;
   /// Σ_r share_r · x_r: F(u) for F given by the ranks' shares and u at the local dofs. Collective.
   double dot_local(const Eigen::VectorXd& share, const Eigen::VectorXd& x_local) const;
   /// B A⁻¹ Bᵀ, dense symmetric (m, m), for B of shape (m, n): on the skeleton factor's trailing
   /// block when B has no interior columns (any trace coupling), otherwise by solves.
   /// Distributed: collective.
-  Eigen::MatrixXd schur_complement(const Eigen::SparseMatrix<double>& b) const;
+  Eigen::MatrixXd schur_complement(const linalg::Coupling& b) const;
   /// uᵀ A u, cell by cell from the eliminated blocks (a sum of non-negative terms, so as accurate
   /// as u itself), without A. Distributed: collective.
   double quadratic_form(const Eigen::VectorXd& u) const;
@@ -103,6 +104,9 @@ class CondensedFactor {
   std::vector<Eigen::Triplet<double>> eliminate_interiors(const std::vector<char>& contributes);
   /// rows_ and n_local_skeleton_ from the rank's cells (`own_cells` when distributed).
   void find_local_dofs(std::vector<char> own_cells);
+  /// The local row of `dof` if this rank holds it and is the lowest rank holding it, else −1: so
+  /// that a product with B adds each of B's entries on one rank only.
+  Eigen::Index counted_local_row(int dof) const;
   /// The system's null motions at the local skeleton dofs (distributed; BDDC's near null space).
   Eigen::MatrixXd local_null_motions() const;
   /// S⁻¹ rhs on the skeleton, shape (n_skeleton, k).

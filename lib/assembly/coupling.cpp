@@ -69,9 +69,8 @@ Eigen::MatrixXd interval_coupling(const space::H1Space& space, const mesh::Conta
 
 }  // namespace
 
-Eigen::SparseMatrix<double> assemble_coupling(const space::H1Space& space, const mesh::ContactBoundary& contact,
-                                              const space::MultiplierSpace& multipliers,
-                                              const BoundaryFunction& weight) {
+linalg::Coupling assemble_coupling(const space::H1Space& space, const mesh::ContactBoundary& contact,
+                                   const space::MultiplierSpace& multipliers, const BoundaryFunction& weight) {
   std::vector<Eigen::Triplet<double>> triplets;
   for (const auto& interval : common_intervals(contact, multipliers.boundary_mesh())) {
     const ArcWeight arc_weight =
@@ -85,7 +84,7 @@ Eigen::SparseMatrix<double> assemble_coupling(const space::H1Space& space, const
         if (local(i, j) != 0.0) triplets.emplace_back(first + i, shapes[j].dof, local(i, j));
     }
   }
-  Eigen::SparseMatrix<double> coupling(multipliers.n_dofs(), space.n_dofs());
+  linalg::Coupling coupling(multipliers.n_dofs(), space.n_dofs());
   coupling.setFromTriplets(triplets.begin(), triplets.end());
   return coupling;
 }
@@ -94,10 +93,8 @@ mesh::Point trace_direction(const mesh::ContactBoundary& contact, double s, Trac
   return direction == TraceDirection::normal ? contact.normal_at(s) : contact.tangent_at(s);
 }
 
-Eigen::SparseMatrix<double> assemble_directional_coupling(const space::VectorSpace& space,
-                                                          const mesh::ContactBoundary& contact,
-                                                          const space::MultiplierSpace& multipliers,
-                                                          TraceDirection direction) {
+linalg::Coupling assemble_directional_coupling(const space::VectorSpace& space, const mesh::ContactBoundary& contact,
+                                               const space::MultiplierSpace& multipliers, TraceDirection direction) {
   std::vector<Eigen::Triplet<double>> triplets;
   for (const auto& interval : common_intervals(contact, multipliers.boundary_mesh())) {
     // Straight edges: d is constant, one scalar coupling times d_c; curved: d_c weighs each point.
@@ -123,7 +120,7 @@ Eigen::SparseMatrix<double> assemble_directional_coupling(const space::VectorSpa
       }
     }
   }
-  Eigen::SparseMatrix<double> coupling(multipliers.n_dofs(), space.n_dofs());
+  linalg::Coupling coupling(multipliers.n_dofs(), space.n_dofs());
   coupling.setFromTriplets(triplets.begin(), triplets.end());
   return coupling;
 }

@@ -7,6 +7,7 @@
 #include <Eigen/SparseCore>
 #include <functional>
 
+#include "linalg/coupling_matrix.hpp"
 #include "mesh/contact_boundary.hpp"
 #include "space/h1_space.hpp"
 #include "space/multiplier_space.hpp"
@@ -19,9 +20,8 @@ using BoundaryFunction = std::function<double(const mesh::Point&)>;
 /// B (no weight) or B^s (weight s): shape (n_multiplier_dofs, n_primal_dofs). With a weight the
 /// rule gets 4 extra Gauss points (s is data, not a polynomial).
 /// @throws InputError if the boundary mesh does not span Γ_C.
-Eigen::SparseMatrix<double> assemble_coupling(const space::H1Space& space, const mesh::ContactBoundary& contact,
-                                              const space::MultiplierSpace& multipliers,
-                                              const BoundaryFunction& weight = {});
+linalg::Coupling assemble_coupling(const space::H1Space& space, const mesh::ContactBoundary& contact,
+                                   const space::MultiplierSpace& multipliers, const BoundaryFunction& weight = {});
 
 /// The normal of Γ_C (outward from Ω) or its unit tangent (along increasing arc length s).
 enum class TraceDirection { normal, tangent };
@@ -31,10 +31,8 @@ mesh::Point trace_direction(const mesh::ContactBoundary& contact, double s, Trac
 /// B^d_{i,(j,c)} = ∫_{Γ_C} μ_i φ_j d_c ds with d the normal or the tangent: the pairing of a
 /// multiplier with the normal (tangential) component of a field of [S^p(T_h)]², shape
 /// (n_multiplier_dofs, space.n_dofs()), columns numbered by space::VectorSpace::dof.
-Eigen::SparseMatrix<double> assemble_directional_coupling(const space::VectorSpace& space,
-                                                          const mesh::ContactBoundary& contact,
-                                                          const space::MultiplierSpace& multipliers,
-                                                          TraceDirection direction);
+linalg::Coupling assemble_directional_coupling(const space::VectorSpace& space, const mesh::ContactBoundary& contact,
+                                               const space::MultiplierSpace& multipliers, TraceDirection direction);
 
 /// g_i = ∫ g μ_i ds, shape (n_multiplier_dofs).
 Eigen::VectorXd assemble_multiplier_load(const mesh::ContactBoundary& contact,

@@ -69,12 +69,15 @@ double DirichletLift::value(int extended_unknown) const {
   return it != fixed_unknowns_.end() && *it == extended_unknown ? fixed_values_[it - fixed_unknowns_.begin()] : 0.0;
 }
 
-Eigen::VectorXd DirichletLift::times(const Eigen::SparseMatrix<double>& columns) const {
+Eigen::VectorXd DirichletLift::times(const linalg::Coupling& columns) const {
   HPC_VERIFY(columns.cols() == n_extended_, "a matrix over the extended space's unknowns");
   Eigen::VectorXd out = Eigen::VectorXd::Zero(columns.rows());
-  for (std::size_t k = 0; k < fixed_unknowns_.size(); ++k)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(columns, fixed_unknowns_[k]); it; ++it)
-      out(it.row()) += it.value() * fixed_values_[k];
+  for (int row = 0; row < columns.outerSize(); ++row)
+    for (linalg::Coupling::InnerIterator it(columns, row); it; ++it) {
+      const auto fixed = std::lower_bound(fixed_unknowns_.begin(), fixed_unknowns_.end(), it.col());
+      if (fixed != fixed_unknowns_.end() && *fixed == it.col())
+        out(row) += it.value() * fixed_values_[fixed - fixed_unknowns_.begin()];
+    }
   return out;
 }
 

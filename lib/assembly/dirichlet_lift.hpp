@@ -18,6 +18,7 @@
 
 #include "assembly/cell_system.hpp"
 #include "assembly/local_rows.hpp"
+#include "linalg/coupling_matrix.hpp"
 #include "linalg/distribution.hpp"
 #include "space/h1_space.hpp"
 #include "space/vector_space.hpp"
@@ -52,7 +53,7 @@ class DirichletLift {
   double value(int extended_unknown) const;
   /// `columns` · w for a matrix over the extended space's unknowns (B w), summed as the dense
   /// product sums, column after column.
-  Eigen::VectorXd times(const Eigen::SparseMatrix<double>& columns) const;
+  Eigen::VectorXd times(const linalg::Coupling& columns) const;
   /// u_0 + w on the extended space, for u_0 numbered on the space with elimination (serial: a
   /// vector of the global length).
   Eigen::VectorXd total(const Eigen::VectorXd& u0) const;

@@ -120,11 +120,11 @@ ContactSolution solve_contact(const ContactSetup& setup) {
   if (setup.dirichlet) out.lift = std::make_shared<assembly::DirichletLift>(primal.space(), setup.dirichlet);
   const bool weighted = setup.problem == ContactProblem::friction;
   const std::string coupling_name = weighted ? "B^s" : "B";
-  const Eigen::SparseMatrix<double>& coupling_legendre =
+  const linalg::Coupling& coupling_legendre =
       primal.coupling(multipliers, weighted ? setup.bound : assembly::BoundaryFunction{}, coupling_name);
   MultiplierConstraints constraints = build_multiplier_constraints(setup, multipliers, primal.contact());
-  const Eigen::SparseMatrix<double> to_nodal = constraints.to_nodal.sparseView();
-  Eigen::SparseMatrix<double> coupling = (to_nodal * coupling_legendre).pruned();
+  const linalg::Coupling to_nodal = constraints.to_nodal.sparseView();
+  linalg::Coupling coupling = (to_nodal * coupling_legendre).pruned();
   // pruned() leaves room for 2 max(m, n) entries: 25 MB at 1e6 dofs for a few thousand nonzeros.
   coupling.data().squeeze();
   Eigen::VectorXd gap_offset = Eigen::VectorXd::Zero(multipliers.n_dofs());

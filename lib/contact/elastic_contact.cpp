@@ -58,7 +58,7 @@ MultiplierConstraints part_constraints(const ElasticContactSetup& setup, const s
 
 // The condensed problem: B, its constraints and the obstacle offset, in the nodal basis.
 struct CondensedProblem {
-  Eigen::SparseMatrix<double> coupling;
+  linalg::Coupling coupling;
   MultiplierConstraints constraints;
   Eigen::VectorXd offset;
   int n_normal = 0;       ///< multiplier coefficients of the normal part
@@ -67,7 +67,7 @@ struct CondensedProblem {
 
 // B w: the rows of the coupling (−B_n; B_t) applied to the lift, with B of the extended space.
 Eigen::VectorXd coupling_of_lift(const ElasticContactSetup& setup, const space::MultiplierSpace& multipliers,
-                                 const Eigen::SparseMatrix<double>& to_nodal, const assembly::DirichletLift& lift) {
+                                 const linalg::Coupling& to_nodal, const assembly::DirichletLift& lift) {
   auto part = [&](assembly::TraceDirection direction) -> Eigen::VectorXd {
     return to_nodal * lift.times(assembly::assemble_directional_coupling(
                           *lift.extended_vector(), setup.operators->contact(), multipliers, direction));
@@ -84,7 +84,7 @@ CondensedProblem condensed_problem(const ElasticContactSetup& setup, const space
   const auto& ops = *setup.operators;
   CondensedProblem out;
   auto normal = part_constraints(setup, multipliers, true);
-  const Eigen::SparseMatrix<double> to_nodal = normal.to_nodal.sparseView();
+  const linalg::Coupling to_nodal = normal.to_nodal.sparseView();
   // λ_n = σ_nn ≤ 0 pairs with −u·n, so that the gap row (ℓ_i, g − u·n) is ≥ 0 as in (9).
   out.coupling = -(to_nodal * ops.coupling(multipliers, assembly::TraceDirection::normal));
   out.offset = -(normal.to_nodal * assembly::assemble_multiplier_load(ops.contact(), multipliers, setup.gap));

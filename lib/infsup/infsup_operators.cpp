@@ -83,7 +83,7 @@ InfSupOperators elastic_infsup_operators(const InfSupSetup& setup) {
   const bool friction = setup.problem == PairingProblem::friction;
   Stopwatch assembly_clock;
   const auto& normal = elastic.coupling(multipliers, assembly::TraceDirection::normal);
-  const Eigen::SparseMatrix<double> coupling =
+  const linalg::Coupling coupling =
       friction ? linalg::stack_rows(normal, elastic.coupling(multipliers, assembly::TraceDirection::tangent)) : normal;
   out.seconds_assembly = assembly_clock.seconds();
   Stopwatch primal_clock;

@@ -234,12 +234,12 @@ Eigen::MatrixXd BddcSolver::solve_local(const Eigen::MatrixXd& partial_rhs) cons
   return impl_->exchange->owned_to_local(solve_owned(impl_->exchange->sum_to_owned(partial_rhs)));
 }
 
-Eigen::MatrixXd BddcSolver::schur_complement(const Eigen::SparseMatrix<double>& b) const {
+Eigen::MatrixXd BddcSolver::schur_complement(const Coupling& b) const {
   HPC_VERIFY(b.cols() == size_, "B A⁻¹ Bᵀ: B has the wrong number of columns");
   const auto m = b.rows();
   const PetscInt owned = impl_->row_end - impl_->row_begin;
   // Only the rank's rows of Bᵀ and of each solution: no vector of the global length.
-  const Eigen::SparseMatrix<double> b_owned = b.middleCols(impl_->row_begin, owned);
+  const Coupling b_owned = b.middleCols(impl_->row_begin, owned);
   const Eigen::SparseMatrix<double> bt_owned = b_owned.transpose();
   Eigen::MatrixXd result = Eigen::MatrixXd::Zero(m, m);
   Eigen::VectorXd owned_rhs(owned), owned_solution(owned);

@@ -14,6 +14,8 @@
 #include <memory>
 #include <vector>
 
+#include "linalg/coupling_matrix.hpp"
+
 namespace hpcontact::linalg {
 
 /// Iterations of the conjugate gradients over all solves of one BddcSolver. `round_off_stops`:
@@ -53,7 +55,7 @@ class BddcSolver {
   Eigen::MatrixXd solve_local(const Eigen::MatrixXd& partial_rhs) const;
   /// B A⁻¹ Bᵀ, dense symmetric (m, m), the same on every rank, for B (m, n) replicated: one
   /// solve per row of B, each rank multiplying its own rows of the solution. Collective.
-  Eigen::MatrixXd schur_complement(const Eigen::SparseMatrix<double>& b) const;
+  Eigen::MatrixXd schur_complement(const Coupling& b) const;
   BddcIterations iterations() const;
 
  private:

@@ -244,7 +244,7 @@ Eigen::MatrixXd DistributedCholesky::solve_local(const Eigen::MatrixXd& partial_
   return impl_->exchange->owned_to_local(solve_owned(impl_->exchange->sum_to_owned(partial_rhs)));
 }
 
-Eigen::MatrixXd DistributedCholesky::schur_complement(const Eigen::SparseMatrix<double>& b) const {
+Eigen::MatrixXd DistributedCholesky::schur_complement(const Coupling& b) const {
   HPC_VERIFY(b.cols() == size_, "B A⁻¹ Bᵀ: B has the wrong number of columns");
   if (!impl_->trailing.empty())
     // matrixLLT() holds L_T in its lower triangle, the only part read: no dense copy of L_T.
@@ -253,7 +253,7 @@ Eigen::MatrixXd DistributedCholesky::schur_complement(const Eigen::SparseMatrix<
         [this](const Eigen::MatrixXd& rhs) { return solve(rhs); });
   const auto m = b.rows();
   const PetscInt owned = impl_->row_end - impl_->row_begin;
-  const Eigen::SparseMatrix<double> b_owned = b.middleCols(impl_->row_begin, owned);
+  const Coupling b_owned = b.middleCols(impl_->row_begin, owned);
   const Eigen::SparseMatrix<double> bt_owned = b_owned.transpose();
   Eigen::MatrixXd result = Eigen::MatrixXd::Zero(m, m);
   constexpr Eigen::Index block = 64;

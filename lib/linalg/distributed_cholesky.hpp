@@ -11,6 +11,8 @@
 #include <memory>
 #include <vector>
 
+#include "linalg/coupling_matrix.hpp"
+
 namespace hpcontact::linalg {
 
 class DistributedCholesky {
@@ -42,7 +44,7 @@ class DistributedCholesky {
   /// B A⁻¹ Bᵀ, dense symmetric (m, m), the same on every rank; B (m, n) replicated. From S_T when
   /// B's nonzero columns lie in the trailing set, else by solves in blocks of 64 columns.
   /// Collective.
-  Eigen::MatrixXd schur_complement(const Eigen::SparseMatrix<double>& b) const;
+  Eigen::MatrixXd schur_complement(const Coupling& b) const;
   /// |T|: the size of the dense Schur complement MUMPS returned (0 without a trailing set).
   int trailing_size() const;
 

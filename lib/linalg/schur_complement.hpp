@@ -7,6 +7,8 @@
 #include <functional>
 #include <vector>
 
+#include "linalg/coupling_matrix.hpp"
+
 namespace hpcontact::linalg {
 
 /// B A⁻¹ Bᵀ, dense symmetric (m, m), for B of shape (m, n). `trailing_factor` is L_tt, the lower
@@ -14,7 +16,7 @@ namespace hpcontact::linalg {
 /// set), `trailing_position(j)` the row of L_tt of unknown j (−1 outside the set). When every
 /// nonzero column of B lies in the set, B A⁻¹ Bᵀ = Wᵀ W with W = L_tt⁻¹ (B P_tᵀ)ᵀ; otherwise it
 /// comes from `solve` (A⁻¹ on shape (n, k)) in blocks of 64 columns of Bᵀ.
-Eigen::MatrixXd schur_complement_through_trailing(const Eigen::SparseMatrix<double>& b,
+Eigen::MatrixXd schur_complement_through_trailing(const Coupling& b,
                                                   const Eigen::Ref<const Eigen::MatrixXd>& trailing_factor,
                                                   const std::function<int(int)>& trailing_position,
                                                   const std::function<Eigen::MatrixXd(const Eigen::MatrixXd&)>& solve);

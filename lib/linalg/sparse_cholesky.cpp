@@ -225,17 +225,17 @@ Eigen::MatrixXd SparseCholesky::solve(const Eigen::MatrixXd& rhs) const {
 
 Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& rhs) const { return solve(Eigen::MatrixXd(rhs)).col(0); }
 
-Eigen::MatrixXd SparseCholesky::schur_complement(const Eigen::SparseMatrix<double>& b) const {
+Eigen::MatrixXd SparseCholesky::schur_complement(const Coupling& b) const {
   HPC_VERIFY(b.cols() == size_, "B A⁻¹ Bᵀ: B has the wrong number of columns");
   return schur_complement_through_trailing(
       b, impl_->trailing_factor, [this](int j) { return impl_->trailing_position[j]; },
       [this](const Eigen::MatrixXd& rhs) { return solve(rhs); });
 }
 
-std::vector<int> nonzero_columns(const Eigen::SparseMatrix<double>& b) {
+std::vector<int> nonzero_columns(const Coupling& b) {
   std::vector<char> used(b.cols(), 0);
-  for (int col = 0; col < b.outerSize(); ++col)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(b, col); it; ++it)
+  for (int row = 0; row < b.outerSize(); ++row)
+    for (Coupling::InnerIterator it(b, row); it; ++it)
       if (it.value() != 0.0) used[it.col()] = 1;
   std::vector<int> out;
   for (int j = 0; j < static_cast<int>(b.cols()); ++j)

@@ -8,6 +8,8 @@
 #include <memory>
 #include <vector>
 
+#include "linalg/coupling_matrix.hpp"
+
 namespace hpcontact::linalg {
 
 /// Factorizes once, solves many times. The matrix must be symmetric positive definite; only its
@@ -44,7 +46,7 @@ class SparseCholesky {
   /// B A⁻¹ Bᵀ, dense symmetric (m, m), for B of shape (m, n). Through the trailing block when
   /// every column of B with a nonzero lies in the trailing set, otherwise by solves in blocks of
   /// 64 columns.
-  Eigen::MatrixXd schur_complement(const Eigen::SparseMatrix<double>& b) const;
+  Eigen::MatrixXd schur_complement(const Coupling& b) const;
 
  private:
   struct Impl;
@@ -53,6 +55,6 @@ class SparseCholesky {
 };
 
 /// The columns of B that hold a nonzero: the trailing set that makes B A⁻¹ Bᵀ cheap.
-std::vector<int> nonzero_columns(const Eigen::SparseMatrix<double>& b);
+std::vector<int> nonzero_columns(const Coupling& b);
 
 }  // namespace hpcontact::linalg

@@ -251,7 +251,7 @@ Eigen::MatrixXd SubstructuredCholesky::solve_local(const Eigen::MatrixXd& partia
   return out;
 }
 
-Eigen::MatrixXd SubstructuredCholesky::schur_complement(const Eigen::SparseMatrix<double>& b) const {
+Eigen::MatrixXd SubstructuredCholesky::schur_complement(const Coupling& b) const {
   HPC_VERIFY(b.cols() == size_, "B A⁻¹ Bᵀ: B has the wrong number of columns");
   const Impl& d = *impl_;
   if (d.n_trailing == 0) return schur_complement_by_solves(b);
@@ -260,13 +260,14 @@ Eigen::MatrixXd SubstructuredCholesky::schur_complement(const Eigen::SparseMatri
       [this](const Eigen::MatrixXd& rhs) { return solve(rhs); });
 }
 
-Eigen::MatrixXd SubstructuredCholesky::schur_complement_by_solves(const Eigen::SparseMatrix<double>& b) const {
+Eigen::MatrixXd SubstructuredCholesky::schur_complement_by_solves(const Coupling& b) const {
   const Impl& d = *impl_;
   // B's columns at this rank's interior unknowns and at the interface positions (each unknown is
   // one rank's interior or on the interface): no block of the global length.
   std::vector<Eigen::Triplet<double>> interior_entries, interface_entries;
-  for (int col = 0; col < b.outerSize(); ++col)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(b, col); it; ++it) {
+  for (int row = 0; row < b.outerSize(); ++row)
+    for (Coupling::InnerIterator it(b, row); it; ++it) {
+      const int col = static_cast<int>(it.col());
       const auto interior = std::lower_bound(d.interior.begin(), d.interior.end(), col);
       if (interior != d.interior.end() && *interior == col) {
         interior_entries.emplace_back(it.row(), static_cast<int>(interior - d.interior.begin()), it.value());

@@ -12,6 +12,8 @@
 #include <memory>
 #include <vector>
 
+#include "linalg/coupling_matrix.hpp"
+
 namespace hpcontact::linalg {
 
 /// A = Σ_r A_r, where A_r holds rank r's entries (e.g. the element matrices of its cells). An
@@ -63,13 +65,13 @@ class SubstructuredCholesky {
   /// B A⁻¹ Bᵀ, dense symmetric (m, m), the same on every rank, for B (m, n) replicated: from L_CC,
   /// the trailing block of chol(S_G), when B's nonzero columns lie in the trailing set, otherwise by solves
   /// in blocks of 64 columns. Collective.
-  Eigen::MatrixXd schur_complement(const Eigen::SparseMatrix<double>& b) const;
+  Eigen::MatrixXd schur_complement(const Coupling& b) const;
 
  private:
   /// B A⁻¹ Bᵀ by solves in blocks of 64 rows of B, each rank multiplying B's columns at its own
   /// interior unknowns (rank 0 those at the interface): the sums that cross the ranks are
   /// |G| × 64 per block and the m × m result, none of the global length.
-  Eigen::MatrixXd schur_complement_by_solves(const Eigen::SparseMatrix<double>& b) const;
+  Eigen::MatrixXd schur_complement_by_solves(const Coupling& b) const;
 
   struct Impl;
   std::unique_ptr<Impl> impl_;

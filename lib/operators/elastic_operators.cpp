@@ -88,8 +88,8 @@ const assembly::CondensedFactor& ElasticOperators::gram_factor(PrimalNorm norm) 
   return *slot;
 }
 
-const Eigen::SparseMatrix<double>& ElasticOperators::coupling(const space::MultiplierSpace& multipliers,
-                                                              assembly::TraceDirection direction) const {
+const linalg::Coupling& ElasticOperators::coupling(const space::MultiplierSpace& multipliers,
+                                                   assembly::TraceDirection direction) const {
   const std::string name = direction == assembly::TraceDirection::normal ? "B_n" : "B_t";
   const std::string key = PrimalOperators::coupling_key(multipliers, name);
   auto found = couplings_.find(key);

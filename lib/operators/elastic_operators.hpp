@@ -57,8 +57,7 @@ class ElasticOperators {
   /// Frees every factorization (rebuilt on a later use), as PrimalOperators::release_factors.
   void release_factors() const;
   /// B^n or B^t of a multiplier space on Γ_C ("B_n", "B_t"), kept per multiplier space layout.
-  const Eigen::SparseMatrix<double>& coupling(const space::MultiplierSpace& multipliers,
-                                              assembly::TraceDirection direction) const;
+  const linalg::Coupling& coupling(const space::MultiplierSpace& multipliers, assembly::TraceDirection direction) const;
   /// Both components of every scalar dof with a trace on Γ_C (the trailing set of the factor).
   const std::vector<int>& trace_dofs() const;
   OperatorLog* log() const { return log_; }
@@ -78,7 +77,7 @@ class ElasticOperators {
   mutable std::unique_ptr<assembly::CondensedFactor> stiffness_factor_;
   mutable std::map<PrimalNorm, std::unique_ptr<assembly::CondensedFactor>> gram_factors_;
   mutable std::unique_ptr<std::vector<int>> trace_dofs_;
-  mutable std::map<std::string, Eigen::SparseMatrix<double>> couplings_;
+  mutable std::map<std::string, linalg::Coupling> couplings_;
 };
 
 }  // namespace hpcontact::operators

@@ -82,9 +82,9 @@ void PrimalOperators::release_factors() const {
   gram_factor_.reset();
 }
 
-const Eigen::SparseMatrix<double>& PrimalOperators::coupling(const space::MultiplierSpace& multipliers,
-                                                             const assembly::BoundaryFunction& weight,
-                                                             const std::string& name) const {
+const linalg::Coupling& PrimalOperators::coupling(const space::MultiplierSpace& multipliers,
+                                                  const assembly::BoundaryFunction& weight,
+                                                  const std::string& name) const {
   const std::string key = coupling_key(multipliers, name);
   auto found = couplings_.find(key);
   if (found == couplings_.end()) {

@@ -45,8 +45,8 @@ class PrimalOperators {
   void release_factors() const;
   /// B_ij = ∫ μ_i φ_j ("B"), or with the weight s ("B^s"), for a multiplier space on Γ_C; kept per
   /// (name, multiplier space layout), so that the contact solve and α share it.
-  const Eigen::SparseMatrix<double>& coupling(const space::MultiplierSpace& multipliers,
-                                              const assembly::BoundaryFunction& weight, const std::string& name) const;
+  const linalg::Coupling& coupling(const space::MultiplierSpace& multipliers, const assembly::BoundaryFunction& weight,
+                                   const std::string& name) const;
   /// The key under which `coupling` keeps B: `name` and the multiplier space's layout.
   static std::string coupling_key(const space::MultiplierSpace& multipliers, const std::string& name);
   /// A vector or dense matrix derived from the operators above (the load F of one f, the
@@ -74,7 +74,7 @@ class PrimalOperators {
   mutable std::unique_ptr<assembly::CondensedFactor> stiffness_factor_, gram_factor_;
   std::vector<int> cell_parts_;
   mutable std::unique_ptr<std::vector<int>> trace_dofs_;
-  mutable std::map<std::string, Eigen::SparseMatrix<double>> couplings_;
+  mutable std::map<std::string, linalg::Coupling> couplings_;
   mutable std::map<std::string, Eigen::VectorXd> derived_vectors_;
   mutable std::map<std::string, Eigen::MatrixXd> derived_matrices_;
 };
