@@ -179,17 +179,19 @@ struct GroupMesh {
   mesh::Mesh mesh;
   mesh::ContactBoundary contact;
   std::vector<int> cell_degrees;
-  operators::PrimalOperators primal;
-  /// An elastic scene's operators (its α pairs [S^p(T_h)]² with the normal and tangential
-  /// multipliers); null for the scalar model.
+  /// The operators of the scalar model, or of an elastic scene (its α pairs [S^p(T_h)]² with the
+  /// normal and tangential multipliers): one of the two, each split over the group's ranks once.
+  std::unique_ptr<operators::PrimalOperators> primal;
   std::unique_ptr<operators::ElasticOperators> elastic;
   GroupMesh(const scene::Scene& level_scene, linalg::Distribution distribution)
       : scene(level_scene),
         mesh(scene::build_scene_mesh(scene)),
         contact(mesh),
-        cell_degrees(scene::scene_cell_degrees(scene, mesh)),
-        primal(mesh, cell_degrees, nullptr, distribution) {
-    if (scene.is_elastic()) elastic = driver::scene_elastic_operators(scene, mesh, cell_degrees, nullptr, distribution);
+        cell_degrees(scene::scene_cell_degrees(scene, mesh)) {
+    if (scene.is_elastic())
+      elastic = driver::scene_elastic_operators(scene, mesh, cell_degrees, nullptr, distribution);
+    else
+      primal = std::make_unique<operators::PrimalOperators>(mesh, cell_degrees, nullptr, distribution);
   }
 };
 
@@ -227,7 +229,7 @@ std::string compute_point(const SweepRun& run, const SweepPoint& point, const Gr
   auto setup = group.elastic ? driver::infsup_setup_of(scene, group.mesh, group.cell_degrees, boundary,
                                                        std::move(segment_degrees), *group.elastic)
                              : driver::infsup_setup_of(scene, group.mesh, group.cell_degrees, boundary,
-                                                       std::move(segment_degrees), group.primal);
+                                                       std::move(segment_degrees), *group.primal);
   setup.alpha_tolerance = sweep.alpha_tolerance;
   const auto& envelope = envelope_of(run, point, group, boundary, grams);
   const norms::GramLadder ladder = norms::restricted_ladder(*envelope.ladder, *envelope.multipliers,
