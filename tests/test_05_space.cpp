@@ -7,7 +7,9 @@
 
 #include "core/error.hpp"
 #include "mesh/cell_map.hpp"
+#include "mesh/cell_partition.hpp"
 #include "mesh/rectangle_mesh.hpp"
+#include "mesh/refine.hpp"
 #include "operators/poisson_problem.hpp"
 #include "postprocess/fe_function.hpp"
 #include "space/h1_space.hpp"
@@ -90,6 +92,78 @@ TEST(H1Space, DiscreteFunctionsVanishOnDirichletBoundary) {
     EXPECT_NEAR(postprocess::evaluate_at(s, u, locator, {1.0, 0.5 * (t + 1)}).value, 0.0, 1e-14);
   }
   EXPECT_GT(std::abs(postprocess::evaluate_at(s, u, locator, {0.3, -1.0}).value), 0.1);
+}
+
+// A rank's part of the mesh (Mesh::extract) and of the space (restricted_to): on a perturbed mixed
+// mesh of random degrees split into three parts, every part's cell must carry the whole cell's
+// vertices, edge signs, degree and shapes with the same global dofs; the part's boundary edges must
+// be the whole mesh's boundary edges it holds (with their parts and labels), and the edges it
+// shares with another part cuts, not boundary.
+TEST(H1Space, RestrictedToAPartOfTheMeshKeepsTheWholeNumbering) {
+  auto m = mesh::split_into_triangles(mesh::make_paper_square_mesh(8), [](int c) { return c % 3 != 0; });
+  mesh::perturb_interior_vertices(m, 0.1, 9);
+  const auto degrees = random_degrees(m, 6, 4);
+  const space::H1Space whole(m, degrees);
+  const auto parts = mesh::bisect_cells(m, 3, std::vector<int>(m.n_cells(), 1));
+  int compared = 0, cuts = 0;
+  std::vector<int> times_held(m.n_cells(), 0);
+  for (int r = 0; r < 3; ++r) {
+    std::vector<int> cells;
+    for (int c = 0; c < m.n_cells(); ++c)
+      if (parts[c] == r) cells.push_back(c);
+    const mesh::Mesh part = m.extract(cells);
+    const space::H1Space space = whole.restricted_to(part);
+    ASSERT_TRUE(part.is_part());
+    ASSERT_EQ(part.n_cells(), static_cast<int>(cells.size()));
+    EXPECT_EQ(space.n_dofs(), whole.n_dofs());
+    EXPECT_EQ(space.n_skeleton_dofs(), whole.n_skeleton_dofs());
+    EXPECT_EQ(space.max_degree(), whole.max_degree());
+    for (int c = 0; c < part.n_cells(); ++c) {
+      const int g = part.global_cell(c);
+      ++times_held[g];
+      ASSERT_EQ(g, cells[c]);
+      ASSERT_EQ(part.cell_type(c), m.cell_type(g));
+      for (int k = 0; k < part.cell_size(c); ++k) {
+        EXPECT_EQ(part.global_vertex(part.cell(c)[k]), m.cell(g)[k]);
+        EXPECT_EQ(part.vertex(part.cell(c)[k]), m.vertex(m.cell(g)[k]));
+        EXPECT_EQ(part.global_edge(part.cell_edge(c, k)), m.cell_edge(g, k));
+        EXPECT_EQ(part.edge_sign(c, k), m.edge_sign(g, k));
+      }
+      EXPECT_EQ(space.cell_degree(c), whole.cell_degree(g));
+      const auto a = space.cell_shapes(c), b = whole.cell_shapes(g);
+      ASSERT_EQ(a.size(), b.size());
+      for (std::size_t s = 0; s < a.size(); ++s) {
+        EXPECT_EQ(a[s].dof, b[s].dof);
+        EXPECT_EQ(a[s].sign, b[s].sign);
+        EXPECT_EQ(a[s].i, b[s].i);
+        EXPECT_EQ(a[s].j, b[s].j);
+        EXPECT_EQ(a[s].role, b[s].role);
+        EXPECT_EQ(a[s].entity, b[s].entity);
+        ++compared;
+      }
+    }
+    std::vector<int> boundary;
+    for (int e = 0; e < part.n_edges(); ++e) {
+      const int g = part.global_edge(e);
+      EXPECT_EQ(part.edge(e)[0] < part.edge(e)[1], m.edge(g)[0] < m.edge(g)[1]);
+      EXPECT_EQ(part.edge_part(e), m.edge_part(g));
+      EXPECT_EQ(part.edge_label(e), m.edge_label(g));
+      EXPECT_EQ(part.is_boundary_edge(e), m.is_boundary_edge(g));
+      EXPECT_EQ(part.global_cell(part.edge_cells(e)[0]), parts[m.edge_cells(g)[0]] == r ? m.edge_cells(g)[0]
+                                                                                          : m.edge_cells(g)[1]);
+      if (part.edge_cells(e)[1] == mesh::Mesh::kCellElsewhere) {
+        ++cuts;
+        EXPECT_FALSE(m.is_boundary_edge(g));
+      }
+      if (m.is_boundary_edge(g)) boundary.push_back(e);
+    }
+    EXPECT_EQ(part.boundary_edges(), boundary);
+  }
+  EXPECT_EQ(std::count(times_held.begin(), times_held.end(), 1), m.n_cells());
+  EXPECT_GT(compared, 1000);
+  EXPECT_GT(cuts, 2 * 8);  // each of the three parts meets another along a cut
+  // A space numbered on a part alone would not be the whole one's: refused.
+  EXPECT_THROW(static_cast<void>(space::H1Space(m.extract({0, 1}), 2)), std::logic_error);
 }
 
 // A rank of a distributed run builds the space holding its cells' shapes only: the numbering must

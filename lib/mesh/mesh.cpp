@@ -3,6 +3,7 @@
 
 #include <Eigen/LU>
 #include <algorithm>
+#include <functional>
 #include <map>
 
 #include "basis/quadrature.hpp"
@@ -92,6 +93,58 @@ void Mesh::build_topology(const std::string& origin) {
       boundary_edges_.push_back(e);
       edge_parts_[e] = BoundaryPart::neumann;
     }
+}
+
+Mesh Mesh::extract(const std::vector<int>& cells) const {
+  HPC_VERIFY(!is_part(), "a part is extracted from a whole mesh");
+  HPC_VERIFY(!cells.empty() && std::adjacent_find(cells.begin(), cells.end(), std::greater_equal<>()) == cells.end() &&
+                 cells.front() >= 0 && cells.back() < n_cells(),
+             "a part's cells are distinct cells of the mesh, ascending");
+  Mesh part;
+  part.global_cells_ = cells;
+  auto& vertices = part.global_vertices_;
+  auto& edges = part.global_edges_;
+  for (int c : cells)
+    for (int k = 0; k < cell_size(c); ++k) {
+      vertices.push_back(cells_[c][k]);
+      edges.push_back(cell_edges_[c][k]);
+    }
+  for (auto* ids : {&vertices, &edges}) {
+    std::sort(ids->begin(), ids->end());
+    ids->erase(std::unique(ids->begin(), ids->end()), ids->end());
+  }
+  // The part's index of a whole mesh's cell, vertex or edge (−1: not in the part).
+  const auto local = [](const std::vector<int>& ids, int id) {
+    const auto found = std::lower_bound(ids.begin(), ids.end(), id);
+    return found != ids.end() && *found == id ? static_cast<int>(found - ids.begin()) : -1;
+  };
+  for (int v : vertices) part.vertices_.push_back(vertices_[v]);
+  for (int c : cells) {
+    std::array<int, 4> corners{-1, -1, -1, -1}, sides{-1, -1, -1, -1};
+    for (int k = 0; k < cell_size(c); ++k) {
+      corners[k] = local(vertices, cells_[c][k]);
+      sides[k] = local(edges, cell_edges_[c][k]);
+    }
+    part.cells_.push_back(corners);
+    part.cell_edges_.push_back(sides);
+    part.cell_edge_signs_.push_back(cell_edge_signs_[c]);
+    if (!cell_geometry_.empty()) part.cell_geometry_.push_back(cell_geometry_[c]);
+  }
+  part.labels_ = labels_;
+  for (int e : edges) {
+    part.edges_.push_back({local(vertices, edges_[e][0]), local(vertices, edges_[e][1])});
+    std::array<int, 2> neighbours{};
+    for (int k = 0; k < 2; ++k) {
+      const int c = edge_cells_[e][k];
+      neighbours[k] = c < 0 ? -1 : (local(cells, c) >= 0 ? local(cells, c) : kCellElsewhere);
+    }
+    if (neighbours[0] == kCellElsewhere) std::swap(neighbours[0], neighbours[1]);  // the part's cell first
+    part.edge_cells_.push_back(neighbours);
+    if (neighbours[1] == -1) part.boundary_edges_.push_back(part.n_edges() - 1);
+    part.edge_label_index_.push_back(edge_label_index_[e]);
+    part.edge_parts_.push_back(edge_parts_[e]);
+  }
+  return part;
 }
 
 int Mesh::local_edge_of(int e, int k) const {

@@ -54,11 +54,12 @@ class Mesh {
   int cell_edge(int c, int local_edge) const { return cell_edges_[c][local_edge]; }
   /// +1 if the local direction of local_edge of cell c agrees with the global edge direction.
   int edge_sign(int c, int local_edge) const { return cell_edge_signs_[c][local_edge]; }
-  /// The one or two cells adjacent to edge e (second entry -1 on the boundary).
+  /// The one or two cells adjacent to edge e (second entry -1 on the boundary; kCellElsewhere on a
+  /// part's cut, the first entry being the part's cell).
   const std::array<int, 2>& edge_cells(int e) const { return edge_cells_[e]; }
   /// Local edge index of edge e within cell edge_cells(e)[k].
   int local_edge_of(int e, int k) const;
-  bool is_boundary_edge(int e) const { return edge_cells_[e][1] < 0; }
+  bool is_boundary_edge(int e) const { return edge_cells_[e][1] == -1; }
   const std::vector<int>& boundary_edges() const { return boundary_edges_; }
 
   /// The point of edge e at parameter t ∈ [-1, 1] in the global direction (lower vertex first).
@@ -97,11 +98,27 @@ class Mesh {
   /// Mesh size h: the longest edge (2/n for the n × n paper square).
   double longest_edge() const;
 
+  /// The neighbour across a cut edge of a part (extract): a cell of the whole mesh the part does not hold.
+  static constexpr int kCellElsewhere = -2;
+  /// The part of this mesh made of `cells` (ascending, distinct): what a rank of a distributed run
+  /// needs of the mesh. Its cells, vertices and edges are numbered in the order of their indices in
+  /// this mesh, so edge directions and signs are the same; labels, boundary parts and curved cells are
+  /// carried over. An edge shared with a cell outside the part is a cut: not a boundary edge, its
+  /// second neighbour kCellElsewhere. @pre this mesh is not itself a part.
+  Mesh extract(const std::vector<int>& cells) const;
+  /// Whether this mesh is a part of another (extract).
+  bool is_part() const { return !global_cells_.empty(); }
+  /// A part's cell, vertex or edge as numbered in the whole mesh (the identity on a whole mesh).
+  int global_cell(int c) const { return global_cells_.empty() ? c : global_cells_[c]; }
+  int global_vertex(int v) const { return global_vertices_.empty() ? v : global_vertices_[v]; }
+  int global_edge(int e) const { return global_edges_.empty() ? e : global_edges_[e]; }
+
   /// Vertex positions may be moved (perturbation, grading) without changing topology.
   /// @throws InputError if a cell becomes invalid, or if the mesh has curved cells.
   void move_vertices(std::vector<Point> new_positions, const std::string& origin);
 
  private:
+  Mesh() = default;  // for extract
   void build_topology(const std::string& origin);
   void check_cells(const std::string& origin) const;
 
@@ -118,6 +135,8 @@ class Mesh {
   std::vector<std::uint16_t> edge_label_index_;
   std::vector<BoundaryPart> edge_parts_;
   std::vector<std::shared_ptr<const BlendedGeometry>> cell_geometry_;  ///< empty while all cells are bilinear
+  /// A part's indices in the whole mesh, each ascending; empty on a whole mesh.
+  std::vector<int> global_cells_, global_vertices_, global_edges_;
 };
 
 /// The smallest cell size, relative to the extent of the domain, that grading may create. Vertex

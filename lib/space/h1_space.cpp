@@ -59,6 +59,7 @@ H1Space::H1Space(const mesh::Mesh& mesh, std::vector<int> cell_degrees, Dirichle
       throw_bad_input("degree distribution", "p", std::to_string(cell_degrees_[c]),
                       "must be >= 1 (cell " + std::to_string(c) + ")");
   HPC_VERIFY(held.empty() || static_cast<int>(held.size()) == mesh.n_cells(), "one held flag per cell");
+  HPC_VERIFY(!mesh.is_part(), "a part's space keeps the whole space's numbering: restricted_to");
   build(dirichlet, held);
 }
 
@@ -74,14 +75,72 @@ std::vector<char> H1Space::held_cells() const {
   return held;
 }
 
+int H1Space::interior_count(int cell) const {
+  const int p = cell_degrees_[cell];
+  return mesh_->cell_type(cell) == mesh::CellType::triangle ? (p - 1) * (p - 2) / 2 : (p - 1) * (p - 1);
+}
+
 int H1Space::shape_count(int cell) const {
   const auto& mesh = *mesh_;
-  const int p = cell_degrees_[cell];
-  int count = mesh.cell_size(cell) +
-              (mesh.cell_type(cell) == mesh::CellType::triangle ? (p - 1) * (p - 2) / 2 : (p - 1) * (p - 1));
+  int count = mesh.cell_size(cell) + interior_count(cell);
   for (int local = 0; local < mesh.cell_size(cell); ++local)
     count += std::max(edge_degrees_[mesh.cell_edge(cell, local)] - 1, 0);
   return count;
+}
+
+H1Space H1Space::restricted_to(const mesh::Mesh& part) const {
+  const auto& mesh = *mesh_;
+  HPC_VERIFY(part.is_part() && !mesh.is_part(), "a space is restricted to a part of its whole mesh");
+  H1Space out;
+  out.mesh_ = &part;
+  out.n_dofs_ = n_dofs_;
+  out.n_skeleton_dofs_ = n_skeleton_dofs_;
+  out.max_degree_ = max_degree_;
+  for (int v = 0; v < part.n_vertices(); ++v) out.vertex_dofs_.push_back(vertex_dofs_[part.global_vertex(v)]);
+  for (int e = 0; e < part.n_edges(); ++e) {
+    out.edge_degrees_.push_back(edge_degrees_[part.global_edge(e)]);
+    out.edge_first_dofs_.push_back(edge_first_dofs_[part.global_edge(e)]);
+  }
+  for (int c = 0; c < part.n_cells(); ++c) out.cell_degrees_.push_back(cell_degrees_[part.global_cell(c)]);
+  // Interior modes are numbered cell after cell after the skeleton: a cell's first one counts
+  // those of every cell before it in the whole mesh.
+  out.first_shape_.assign(part.n_cells() + 1, 0);
+  for (int c = 0; c < part.n_cells(); ++c) out.first_shape_[c + 1] = out.first_shape_[c] + out.shape_count(c);
+  out.shapes_.reserve(out.first_shape_.back());
+  int first_interior = n_skeleton_dofs_;
+  for (int c = 0, whole = 0; c < part.n_cells(); ++c) {
+    for (; whole < part.global_cell(c); ++whole) first_interior += interior_count(whole);
+    out.append_shapes(c, first_interior);
+  }
+  return out;
+}
+
+void H1Space::append_shapes(int c, int first_interior) {
+  const auto& mesh = *mesh_;
+  const int p = cell_degrees_[c];
+  const bool triangle = mesh.cell_type(c) == mesh::CellType::triangle;
+  for (int k = 0; k < mesh.cell_size(c); ++k) {
+    const auto [i, j] = triangle ? std::array<int, 2>{0, 0} : kVertexIndex[k];
+    shapes_.push_back(shape(i, j, vertex_dofs_[mesh.cell(c)[k]], 1.0, ShapeRole::vertex, k));
+  }
+  for (int local = 0; local < mesh.cell_size(c); ++local) {
+    const int e = mesh.cell_edge(c, local);
+    const int sign = mesh.edge_sign(c, local);
+    for (int k = 2; k <= edge_degrees_[e]; ++k) {
+      const auto [i, j] = triangle ? std::array<int, 2>{k, 0} : edge_mode_index(local, k);
+      // N_k(-t) = (-1)^k N_k(t): a reversed edge flips the odd modes.
+      shapes_.push_back(shape(i, j, edge_mode_dof(e, k), (sign < 0 && k % 2 == 1) ? -1.0 : 1.0, ShapeRole::edge, local));
+    }
+  }
+  int next = first_interior;
+  if (triangle) {
+    for (int n1 = 0; n1 <= p - 3; ++n1)
+      for (int n2 = 0; n1 + n2 <= p - 3; ++n2) shapes_.push_back(shape(n1, n2, next++, 1.0, ShapeRole::interior, -1));
+  } else {
+    for (int j = 2; j <= p; ++j)
+      for (int i = 2; i <= p; ++i) shapes_.push_back(shape(i, j, next++, 1.0, ShapeRole::interior, -1));
+  }
+  HPC_VERIFY(static_cast<std::int64_t>(shapes_.size()) == first_shape_[c + 1], "shape count of a cell");
 }
 
 void H1Space::build(DirichletDofs dirichlet, const std::vector<char>& held) {
@@ -122,34 +181,8 @@ void H1Space::build(DirichletDofs dirichlet, const std::vector<char>& held) {
   shapes_.clear();
   shapes_.reserve(first_shape_.back());
   for (int c = 0; c < mesh.n_cells(); ++c) {
-    const int p = cell_degrees_[c];
-    if (!is_held(c)) {  // numbered all the same: its interior modes are the next dofs
-      next += mesh.cell_type(c) == mesh::CellType::triangle ? (p - 1) * (p - 2) / 2 : (p - 1) * (p - 1);
-      continue;
-    }
-    const bool triangle = mesh.cell_type(c) == mesh::CellType::triangle;
-    for (int k = 0; k < mesh.cell_size(c); ++k) {
-      const auto [i, j] = triangle ? std::array<int, 2>{0, 0} : kVertexIndex[k];
-      shapes_.push_back(shape(i, j, vertex_dofs_[mesh.cell(c)[k]], 1.0, ShapeRole::vertex, k));
-    }
-    for (int local = 0; local < mesh.cell_size(c); ++local) {
-      const int e = mesh.cell_edge(c, local);
-      const int sign = mesh.edge_sign(c, local);
-      for (int k = 2; k <= edge_degrees_[e]; ++k) {
-        const auto [i, j] = triangle ? std::array<int, 2>{k, 0} : edge_mode_index(local, k);
-        const int dof = edge_mode_dof(e, k);
-        // N_k(-t) = (-1)^k N_k(t): a reversed edge flips the odd modes.
-        shapes_.push_back(shape(i, j, dof, (sign < 0 && k % 2 == 1) ? -1.0 : 1.0, ShapeRole::edge, local));
-      }
-    }
-    if (triangle) {
-      for (int n1 = 0; n1 <= p - 3; ++n1)
-        for (int n2 = 0; n1 + n2 <= p - 3; ++n2) shapes_.push_back(shape(n1, n2, next++, 1.0, ShapeRole::interior, -1));
-    } else {
-      for (int j = 2; j <= p; ++j)
-        for (int i = 2; i <= p; ++i) shapes_.push_back(shape(i, j, next++, 1.0, ShapeRole::interior, -1));
-    }
-    HPC_VERIFY(static_cast<std::int64_t>(shapes_.size()) == first_shape_[c + 1], "shape count of a cell");
+    if (is_held(c)) append_shapes(c, next);  // a cell not held is numbered all the same
+    next += interior_count(c);
   }
   n_dofs_ = next;
 }

@@ -65,6 +65,12 @@ class H1Space {
   /// Uniform degree p.
   H1Space(const mesh::Mesh& mesh, int degree);
 
+  /// This space on `part`, a mesh extracted from mesh() (mesh::Mesh::extract): on each of the
+  /// part's cells the same degree and local shapes, with the same global dofs, as on its cell of
+  /// mesh(), and every table of the part's length; n_dofs(), n_skeleton_dofs() and max_degree() stay
+  /// this space's. So a rank can keep the space of its own cells only.
+  H1Space restricted_to(const mesh::Mesh& part) const;
+
   const mesh::Mesh& mesh() const { return *mesh_; }
   int n_dofs() const { return n_dofs_; }
   /// Vertex and edge dofs, numbered 0 … n_skeleton_dofs() − 1 before every interior mode: the
@@ -94,10 +100,15 @@ class H1Space {
   int edge_mode_dof(int e, int k) const { return edge_first_dofs_[e] < 0 ? -1 : edge_first_dofs_[e] + k - 2; }
 
  private:
+  H1Space() = default;  // for restricted_to
   void build(DirichletDofs dirichlet, const std::vector<char>& held);
+  /// The interior modes of a cell of degree p: (p − 1)² on a quadrilateral, (p − 1)(p − 2)/2 on a triangle.
+  int interior_count(int cell) const;
+  /// Appends cell c's local shapes to shapes_, its interior modes numbered from first_interior.
+  void append_shapes(int cell, int first_interior);
   [[noreturn]] static void not_held(int cell);
 
-  const mesh::Mesh* mesh_;
+  const mesh::Mesh* mesh_ = nullptr;
   std::vector<int> cell_degrees_;
   std::vector<int> edge_degrees_;
   std::vector<int> vertex_dofs_, edge_first_dofs_;  ///< see vertex_dof, edge_mode_dof
