@@ -39,9 +39,11 @@ Eigen::VectorXd edge_projection(const mesh::Mesh& mesh, int cell, int local_edge
   return a;
 }
 
-DirichletLift::DirichletLift(const space::H1Space& space, const PointFunction& u_d)
-    : extended_scalar_(std::make_unique<space::H1Space>(space.mesh(), space.cell_degrees(), space::DirichletDofs::kept,
-                                                        space.held_cells())) {
+DirichletLift::DirichletLift(const space::H1Space& space, const PointFunction& u_d, const space::H1Space* extended)
+    : extended_scalar_(extended ? std::make_unique<space::H1Space>(*extended)
+                                : std::make_unique<space::H1Space>(space.mesh(), space.cell_degrees(),
+                                                                   space::DirichletDofs::kept, space.held_cells())) {
+  HPC_VERIFY(&extended_scalar_->mesh() == &space.mesh(), "a lift's extended space on the space's cells");
   build(
       1, {u_d, {}}, [&](int c, int s, int) { return space.cell_shapes(c)[s].dof; }, space.n_dofs(),
       extended_scalar_->n_dofs());
@@ -91,7 +93,7 @@ Eigen::VectorXd DirichletLift::values() const {
 void DirichletLift::build(int components, const std::array<PointFunction, space::kComponents>& u_d,
                           const UnknownOf& unknown, int n_unknowns, int n_extended) {
   const auto& mesh = extended_scalar_->mesh();
-  every_cell_ = extended_scalar_->held_cells().empty();
+  every_cell_ = extended_scalar_->whole();
   if (every_cell_) embedding_.assign(n_unknowns, -1);
   n_extended_ = n_extended;
   n_unknowns_ = n_unknowns;

@@ -34,8 +34,10 @@ Eigen::VectorXd edge_projection(const mesh::Mesh& mesh, int cell, int local_edge
 
 class DirichletLift {
  public:
-  /// u_D on the dofs that `space` eliminates.
-  DirichletLift(const space::H1Space& space, const PointFunction& u_d);
+  /// u_D on the dofs that `space` eliminates. `extended`: the space on the same cells with nothing
+  /// eliminated, needed when `space` lives on a rank's part of the mesh (which cannot number it
+  /// alone: operators::PrimalOperators::lift_space); null: built here from `space`'s mesh.
+  DirichletLift(const space::H1Space& space, const PointFunction& u_d, const space::H1Space* extended = nullptr);
   /// u_D,c (an empty function: 0) on the unknowns that `space` fixes for component c.
   DirichletLift(const space::VectorSpace& space, const std::array<PointFunction, space::kComponents>& u_d);
   ~DirichletLift();

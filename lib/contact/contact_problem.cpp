@@ -117,7 +117,8 @@ ContactSolution solve_contact(const ContactSetup& setup) {
       operators::shared_or_own(setup.primal, *setup.mesh, setup.cell_degrees, own_primal);
   OperatorLog* log = primal.log();
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
-  if (setup.dirichlet) out.lift = std::make_shared<assembly::DirichletLift>(primal.space(), setup.dirichlet);
+  if (setup.dirichlet)
+    out.lift = std::make_shared<assembly::DirichletLift>(primal.space(), setup.dirichlet, primal.lift_space());
   const bool weighted = setup.problem == ContactProblem::friction;
   const std::string coupling_name = weighted ? "B^s" : "B";
   const linalg::Coupling& coupling_legendre =

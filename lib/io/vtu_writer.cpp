@@ -71,11 +71,8 @@ class SharedPoints {
 std::string vtu_text(const space::H1Space& space, const std::vector<VtuField>& fields, int order,
                      const assembly::LocalRows& cells) {
   const auto& mesh = space.mesh();
-  int k = order;
-  if (k <= 0) {
-    k = 1;
-    for (int c = 0; c < mesh.n_cells(); ++c) k = std::max(k, space.cell_degree(c));
-  }
+  // The whole space's largest degree, also on a rank's part: every piece at the same order.
+  const int k = order > 0 ? order : std::max(1, space.max_degree());
   std::optional<NodePattern> patterns[2];
   std::vector<int> components;
   for (const auto& field : fields) components.push_back(field.components);

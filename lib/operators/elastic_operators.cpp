@@ -21,7 +21,8 @@ ElasticOperators::ElasticOperators(const mesh::Mesh& mesh, std::vector<int> cell
     : mesh_(&mesh), materials_(std::move(materials)), log_(log), distribution_(distribution) {
   Stopwatch clock;
   contact_ = std::make_unique<mesh::ContactBoundary>(mesh);
-  auto rank_space = build_rank_space(mesh, std::move(cell_degrees), *contact_, space::kComponents, distribution);
+  auto rank_space = build_rank_space(mesh, std::move(cell_degrees), *contact_, space::kComponents, distribution,
+                                     RankLayout::whole_mesh);
   space_ = std::move(rank_space.space);
   cell_parts_ = std::move(rank_space.cell_parts);
   vector_space_ = std::make_unique<space::VectorSpace>(*space_, fixed);

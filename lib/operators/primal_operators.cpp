@@ -16,16 +16,31 @@ namespace hpcontact::operators {
 
 PrimalOperators::PrimalOperators(const mesh::Mesh& mesh, std::vector<int> cell_degrees, OperatorLog* log,
                                  linalg::Distribution distribution)
-    : mesh_(&mesh), log_(log), distribution_(distribution) {
+    : whole_(&mesh),
+      has_dirichlet_(mesh.has_part(mesh::BoundaryPart::dirichlet)),
+      log_(log),
+      distribution_(distribution) {
   Stopwatch clock;
   contact_ = std::make_unique<mesh::ContactBoundary>(mesh);
-  auto rank_space = build_rank_space(mesh, std::move(cell_degrees), *contact_, 1, distribution);
+  auto rank_space = build_rank_space(mesh, std::move(cell_degrees), *contact_, 1, distribution, RankLayout::part);
+  part_ = std::move(rank_space.part);
   space_ = std::move(rank_space.space);
+  kept_ = std::move(rank_space.kept);
   cell_parts_ = std::move(rank_space.cell_parts);
+  // Γ_C again on the part (which holds all of it), so that its trace edges name the part's cells.
+  if (part_) contact_ = std::make_unique<mesh::ContactBoundary>(*part_);
   if (log_) log_->record("S^p(T_h)", space_->n_dofs(), 0, clock.seconds());
 }
 
 PrimalOperators::~PrimalOperators() = default;
+
+bool PrimalOperators::built_on(const mesh::Mesh& mesh, const std::vector<int>& cell_degrees) const {
+  if (&mesh != whole_ || static_cast<int>(cell_degrees.size()) != mesh.n_cells()) return false;
+  const auto& space_mesh = space_->mesh();
+  for (int c = 0; c < space_mesh.n_cells(); ++c)
+    if (space_->cell_degree(c) != cell_degrees[space_mesh.global_cell(c)]) return false;
+  return true;
+}
 
 const std::vector<int>& PrimalOperators::trace_dofs() const {
   if (!trace_dofs_) {
@@ -61,9 +76,7 @@ const assembly::CondensedFactor& condensed_factor(const space::H1Space& space, d
 const assembly::CondensedFactor& PrimalOperators::stiffness_factor() const {
   // Without Dirichlet edges K has the constants in its kernel: refuse as input, not as a failed
   // factorization deep inside CHOLMOD.
-  bool dirichlet = false;
-  for (int e : mesh_->boundary_edges()) dirichlet = dirichlet || mesh_->edge_part(e) == mesh::BoundaryPart::dirichlet;
-  if (!dirichlet)
+  if (!has_dirichlet_)
     throw InputError(
         "the body has no Dirichlet part (no boundary edge is in Γ_D: key 'boundary.dirichlet' or "
         "'boundary.dirichlet_groups'): K is singular, since u + c has the energy of u, and the contact "
@@ -135,8 +148,7 @@ const PrimalOperators& shared_or_own(const PrimalOperators* shared, const mesh::
     own = std::make_unique<PrimalOperators>(mesh, cell_degrees);
     return *own;
   }
-  HPC_VERIFY(&shared->mesh() == &mesh && shared->space().cell_degrees() == cell_degrees,
-             "shared primal operators of another mesh or degree distribution");
+  HPC_VERIFY(shared->built_on(mesh, cell_degrees), "shared primal operators of another mesh or degree distribution");
   return *shared;
 }
 

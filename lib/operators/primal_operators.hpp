@@ -24,16 +24,26 @@ namespace hpcontact::operators {
 class PrimalOperators {
  public:
   /// `mesh` (and `log`, when given) must outlive the object. Builds the space and Γ_C only, and,
-  /// distributed, splits the cells over the ranks first (collectively: operators/rank_space.hpp).
+  /// distributed, splits the cells over the ranks first (collectively: operators/rank_space.hpp)
+  /// and builds everything on the rank's part of the mesh (its own cells and Γ_C's).
   /// `distribution` other than serial: the factors are factorized over its ranks (every one of
   /// them must construct the object and make the same calls on it, in the same order).
   PrimalOperators(const mesh::Mesh& mesh, std::vector<int> cell_degrees, OperatorLog* log = nullptr,
                   linalg::Distribution distribution = {});
   ~PrimalOperators();
 
-  const mesh::Mesh& mesh() const { return *mesh_; }
-  /// Distributed, it holds the shapes of the rank's own cells and Γ_C's only.
+  /// The mesh the space lives on: the whole one, or distributed the rank's part (global_cell etc.
+  /// give the whole mesh's indices), so that cell indices of space(), contact() and cell_parts()
+  /// agree.
+  const mesh::Mesh& mesh() const { return space_->mesh(); }
+  /// Whether the object was built on `mesh` (the whole mesh given to the constructor) with these
+  /// degrees (compared on the space's cells).
+  bool built_on(const mesh::Mesh& mesh, const std::vector<int>& cell_degrees) const;
+  /// Distributed, the rank's own cells and Γ_C's only, with the whole space's dofs.
   const space::H1Space& space() const { return *space_; }
+  /// Distributed: the space without elimination on the same cells (a Dirichlet lift's extended
+  /// space, which a part cannot number alone), null without Γ_D; serial: null (the lift builds it).
+  const space::H1Space* lift_space() const { return kept_.get(); }
   const mesh::ContactBoundary& contact() const { return *contact_; }
 
   /// K factorized with the trace last ("factor(K)"), and A_G = K + M likewise ("factor(K+M)"),
@@ -66,8 +76,10 @@ class PrimalOperators {
   linalg::Distribution distribution() const { return distribution_; }
 
  private:
-  const mesh::Mesh* mesh_;
-  std::unique_ptr<space::H1Space> space_;
+  const mesh::Mesh* whole_;           ///< the mesh given to the constructor
+  std::unique_ptr<mesh::Mesh> part_;  ///< distributed: the rank's part of it
+  std::unique_ptr<space::H1Space> space_, kept_;
+  bool has_dirichlet_ = false;  ///< whether some edge of the whole mesh is on Γ_D
   std::unique_ptr<mesh::ContactBoundary> contact_;
   OperatorLog* log_;
   linalg::Distribution distribution_;

@@ -51,7 +51,10 @@ BoundarySamples sample_boundary(const contact::ContactSetup& setup, const contac
   if (!setup.primal) own_space = std::make_unique<space::H1Space>(*setup.mesh, setup.cell_degrees);
   const space::H1Space& space = setup.primal ? setup.primal->space() : *own_space;
   const linalg::Distribution distribution = setup.primal ? setup.primal->distribution() : linalg::Distribution{};
-  const mesh::ContactBoundary contact(*setup.mesh);
+  // Γ_C of the space's mesh (a rank's part, distributed): its trace edges name the space's cells.
+  std::unique_ptr<mesh::ContactBoundary> own_contact;
+  if (!setup.primal) own_contact = std::make_unique<mesh::ContactBoundary>(*setup.mesh);
+  const mesh::ContactBoundary& contact = setup.primal ? setup.primal->contact() : *own_contact;
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
   const auto intervals = assembly::common_intervals(contact, *setup.boundary_mesh);
   const auto points = sample_points(contact, intervals, per_interval);

@@ -92,6 +92,8 @@ class H1Space {
   bool holds(int cell) const { return first_shape_[cell + 1] > first_shape_[cell]; }
   /// The `held` flags this space was built with: empty where it holds every cell.
   std::vector<char> held_cells() const;
+  /// Whether the space holds every cell of the whole mesh (not some cells, not a part).
+  bool whole() const { return !mesh_->is_part() && held_cells().empty(); }
   /// The number of local shapes of any cell (held or not): its unknowns, Dirichlet ones included.
   int shape_count(int cell) const;
   /// The dof of vertex v, or -1 where Γ_D eliminates it.
