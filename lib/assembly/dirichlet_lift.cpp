@@ -49,10 +49,14 @@ DirichletLift::DirichletLift(const space::H1Space& space, const PointFunction& u
       extended_scalar_->n_dofs());
 }
 
-DirichletLift::DirichletLift(const space::VectorSpace& space, const std::array<PointFunction, space::kComponents>& u_d)
-    : extended_scalar_(std::make_unique<space::H1Space>(space.scalar().mesh(), space.scalar().cell_degrees(),
-                                                        space::DirichletDofs::kept, space.scalar().held_cells())),
+DirichletLift::DirichletLift(const space::VectorSpace& space, const std::array<PointFunction, space::kComponents>& u_d,
+                             const space::H1Space* extended)
+    : extended_scalar_(extended
+                           ? std::make_unique<space::H1Space>(*extended)
+                           : std::make_unique<space::H1Space>(space.scalar().mesh(), space.scalar().cell_degrees(),
+                                                              space::DirichletDofs::kept, space.scalar().held_cells())),
       extended_vector_(std::make_unique<space::VectorSpace>(*extended_scalar_)) {
+  HPC_VERIFY(&extended_scalar_->mesh() == &space.scalar().mesh(), "a lift's extended space on the space's cells");
   build(
       space::kComponents, u_d,
       [&](int c, int s, int comp) { return space.dof(space.scalar().cell_shapes(c)[s].dof, comp); }, space.n_dofs(),

@@ -38,8 +38,9 @@ class DirichletLift {
   /// eliminated, needed when `space` lives on a rank's part of the mesh (which cannot number it
   /// alone: operators::PrimalOperators::lift_space); null: built here from `space`'s mesh.
   DirichletLift(const space::H1Space& space, const PointFunction& u_d, const space::H1Space* extended = nullptr);
-  /// u_D,c (an empty function: 0) on the unknowns that `space` fixes for component c.
-  DirichletLift(const space::VectorSpace& space, const std::array<PointFunction, space::kComponents>& u_d);
+  /// u_D,c (an empty function: 0) on the unknowns that `space` fixes for component c; `extended` as above.
+  DirichletLift(const space::VectorSpace& space, const std::array<PointFunction, space::kComponents>& u_d,
+                const space::H1Space* extended = nullptr);
   ~DirichletLift();
   DirichletLift(const DirichletLift&) = delete;
   DirichletLift& operator=(const DirichletLift&) = delete;

@@ -24,11 +24,14 @@ Material lame_parameters(double young, double poisson, PlaneModel model) {
 }
 
 ElasticCellSystem::ElasticCellSystem(const space::VectorSpace& space, std::vector<Material> materials,
-                                     double mass_weight)
+                                     double mass_weight, std::optional<mesh::Point> centre)
     : space_(&space), materials_(std::move(materials)), mass_weight_(mass_weight), element_(space.scalar()) {
   if (static_cast<int>(materials_.size()) != mesh().n_cells())
     throw InputError(fmt::format("{} materials given for {} cells", materials_.size(), mesh().n_cells()));
-  for (const auto& x : mesh().vertices()) centre_ += x / static_cast<double>(mesh().n_vertices());
+  if (centre)
+    centre_ = *centre;
+  else
+    for (const auto& x : mesh().vertices()) centre_ += x / static_cast<double>(mesh().n_vertices());
 }
 
 int ElasticCellSystem::n_dofs() const { return space_->n_dofs(); }

@@ -40,8 +40,11 @@ Material lame_parameters(double young, double poisson, PlaneModel model);
 /// analysis, definite without Γ_D).
 class ElasticCellSystem final : public CellSystem {
  public:
-  /// `materials`: one per cell. @throws InputError on a size mismatch.
-  ElasticCellSystem(const space::VectorSpace& space, std::vector<Material> materials, double mass_weight = 0.0);
+  /// `materials`: one per cell. `centre`: the rotation's centre for null_motions, which every rank
+  /// sharing a problem must use alike (default: the centroid of the mesh's vertices).
+  /// @throws InputError on a size mismatch.
+  ElasticCellSystem(const space::VectorSpace& space, std::vector<Material> materials, double mass_weight = 0.0,
+                    std::optional<mesh::Point> centre = {});
   const mesh::Mesh& mesh() const override { return space_->scalar().mesh(); }
   int n_dofs() const override;
   int n_skeleton_dofs() const override;
@@ -49,7 +52,7 @@ class ElasticCellSystem final : public CellSystem {
   int cell_size(int cell) const override { return space::kComponents * space_->scalar().shape_count(cell); }
   Eigen::MatrixXd element_matrix(int cell) const override;
   std::optional<CongruenceKey> congruence_key(int cell) const override;
-  /// The rigid motions (1, 0), (0, 1), (−y, x) (about the vertices' centroid) at the cell's vertex
+  /// The rigid motions (1, 0), (0, 1), (−y, x) (about the centre) at the cell's vertex
   /// shapes, zero elsewhere: exact
   /// on affine cells (the vertex shapes reproduce linear functions), near elsewhere.
   Eigen::MatrixXd null_motions(int cell) const override;
@@ -59,7 +62,7 @@ class ElasticCellSystem final : public CellSystem {
   const space::VectorSpace* space_;
   std::vector<Material> materials_;
   double mass_weight_;
-  mesh::Point centre_ = mesh::Point(0.0, 0.0);  ///< the vertices' centroid, the rotation's centre
+  mesh::Point centre_ = mesh::Point(0.0, 0.0);  ///< the rotation's centre
   mutable ElementMatrices element_;
 };
 

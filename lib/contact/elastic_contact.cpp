@@ -173,7 +173,7 @@ ElasticContactSolution solve_elastic_contact(const ElasticContactSetup& setup) {
   Stopwatch assembly_clock;
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
   if (setup.dirichlet[0] || setup.dirichlet[1])
-    out.lift = std::make_shared<assembly::DirichletLift>(ops.vector_space(), setup.dirichlet);
+    out.lift = std::make_shared<assembly::DirichletLift>(ops.vector_space(), setup.dirichlet, ops.lift_space());
   CondensedProblem problem = condensed_problem(setup, multipliers, out.lift.get());
   out.seconds.assembly = assembly_clock.seconds();
 

@@ -56,7 +56,7 @@ void check_dirichlet_data(const scene::Scene& scene, const operators::ElasticOpe
   const std::array<std::pair<const char*, const std::string*>, 2> data{
       {{"boundary.u_D_x", &scene.dirichlet_x}, {"boundary.u_D_y", &scene.dirichlet_y}}};
   for (int c = 0; c < space::kComponents; ++c) {
-    if (data[c].second->empty() || operators.mesh().has_part(mesh::BoundaryPart::dirichlet)) continue;
+    if (data[c].second->empty() || operators.has_dirichlet()) continue;
     bool fixed = false;
     for (int d = 0; d < space.scalar().n_dofs() && !fixed; ++d) fixed = space.dof(d, c) < 0;
     if (!fixed)

@@ -76,7 +76,7 @@ namespace {
 // norm on [S^p(T_h)]², every multiplier active.
 InfSupOperators elastic_infsup_operators(const InfSupSetup& setup) {
   const auto& elastic = *setup.elastic;
-  HPC_VERIFY(&elastic.mesh() == setup.mesh && elastic.space().cell_degrees() == setup.cell_degrees,
+  HPC_VERIFY(elastic.built_on(*setup.mesh, setup.cell_degrees),
              "elastic operators of another mesh or degree distribution");
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
   InfSupOperators out;

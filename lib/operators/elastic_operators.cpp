@@ -18,20 +18,40 @@ ElasticOperators::ElasticOperators(const mesh::Mesh& mesh, std::vector<int> cell
                                    std::vector<assembly::Material> materials, OperatorLog* log,
                                    const std::array<std::vector<char>, space::kComponents>& fixed,
                                    linalg::Distribution distribution)
-    : mesh_(&mesh), materials_(std::move(materials)), log_(log), distribution_(distribution) {
+    : whole_(&mesh),
+      has_dirichlet_(mesh.has_part(mesh::BoundaryPart::dirichlet)),
+      materials_(std::move(materials)),
+      log_(log),
+      distribution_(distribution) {
   Stopwatch clock;
-  contact_ = std::make_unique<mesh::ContactBoundary>(mesh);
-  auto rank_space = build_rank_space(mesh, std::move(cell_degrees), *contact_, space::kComponents, distribution,
-                                     RankLayout::whole_mesh);
-  space_ = std::move(rank_space.space);
-  cell_parts_ = std::move(rank_space.cell_parts);
-  vector_space_ = std::make_unique<space::VectorSpace>(*space_, fixed);
   if (static_cast<int>(materials_.size()) != mesh.n_cells())
     throw InputError("elasticity: one material per cell is needed");
+  for (const auto& x : mesh.vertices()) rotation_centre_ += x / static_cast<double>(mesh.n_vertices());
+  contact_ = std::make_unique<mesh::ContactBoundary>(mesh);
+  auto rank_space = build_rank_space(mesh, std::move(cell_degrees), *contact_, distribution, &fixed);
+  part_ = std::move(rank_space.part);
+  space_ = std::move(rank_space.space);
+  kept_ = std::move(rank_space.kept);
+  vector_space_ = std::move(rank_space.vector_space);
+  cell_parts_ = std::move(rank_space.cell_parts);
+  if (part_) {  // Γ_C and the materials of the part's cells
+    contact_ = std::make_unique<mesh::ContactBoundary>(*part_);
+    std::vector<assembly::Material> own;
+    for (int c = 0; c < part_->n_cells(); ++c) own.push_back(materials_[part_->global_cell(c)]);
+    materials_ = std::move(own);
+  }
   if (log_) log_->record("[S^p(T_h)]^2", n_dofs(), 0, clock.seconds());
 }
 
 ElasticOperators::~ElasticOperators() = default;
+
+bool ElasticOperators::built_on(const mesh::Mesh& mesh, const std::vector<int>& cell_degrees) const {
+  if (&mesh != whole_ || static_cast<int>(cell_degrees.size()) != mesh.n_cells()) return false;
+  const auto& space_mesh = space_->mesh();
+  for (int c = 0; c < space_mesh.n_cells(); ++c)
+    if (space_->cell_degree(c) != cell_degrees[space_mesh.global_cell(c)]) return false;
+  return true;
+}
 
 const std::vector<int>& ElasticOperators::trace_dofs() const {
   if (!trace_dofs_) {
@@ -51,9 +71,7 @@ const std::vector<int>& ElasticOperators::trace_dofs() const {
 
 const assembly::CondensedFactor& ElasticOperators::stiffness_factor() const {
   if (!stiffness_factor_) {
-    bool dirichlet = vector_space_->has_rollers();
-    for (int e : mesh_->boundary_edges()) dirichlet = dirichlet || mesh_->edge_part(e) == mesh::BoundaryPart::dirichlet;
-    if (!dirichlet)
+    if (!has_dirichlet_ && !vector_space_->has_rollers())
       throw InputError(
           "the body has no Dirichlet part (no boundary edge is in Γ_D: key 'boundary.dirichlet' or "
           "'boundary.dirichlet_groups', and no roller: 'boundary.fixed_x', 'boundary.fixed_y'): the elasticity "
@@ -61,8 +79,8 @@ const assembly::CondensedFactor& ElasticOperators::stiffness_factor() const {
           "somewhere");
     Stopwatch clock;
     stiffness_factor_ = std::make_unique<assembly::CondensedFactor>(
-        std::make_unique<assembly::ElasticCellSystem>(*vector_space_, materials_), trace_dofs(), distribution_,
-        cell_parts_);
+        std::make_unique<assembly::ElasticCellSystem>(*vector_space_, materials_, 0.0, rotation_centre_), trace_dofs(),
+        distribution_, cell_parts_);
     if (log_) log_->record("factor(A)", n_dofs(), n_dofs(), clock.seconds());
   }
   return *stiffness_factor_;
@@ -81,7 +99,7 @@ const assembly::CondensedFactor& ElasticOperators::gram_factor(PrimalNorm norm) 
     if (norm == PrimalNorm::h1)
       system = std::make_unique<assembly::ComponentwiseCellSystem>(*vector_space_, 1.0, 1.0);
     else
-      system = std::make_unique<assembly::ElasticCellSystem>(*vector_space_, materials_, 1.0);
+      system = std::make_unique<assembly::ElasticCellSystem>(*vector_space_, materials_, 1.0, rotation_centre_);
     slot = std::make_unique<assembly::CondensedFactor>(std::move(system), trace_dofs(), distribution_, cell_parts_);
     if (log_)
       log_->record(norm == PrimalNorm::h1 ? "factor(K+M)^2" : "factor(A+M)", n_dofs(), n_dofs(), clock.seconds());

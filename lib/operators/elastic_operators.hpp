@@ -32,20 +32,30 @@ class ElasticOperators {
   /// Γ_D clamps both components (u = 0 there); `fixed[c]` marks the boundary edges where
   /// component c alone vanishes (rollers; see space::VectorSpace).
   /// `distribution` other than serial: the factors are factorized over its ranks (every one of
-  /// them must build the same operators in the same order), with one split of the cells.
+  /// them must build the same operators in the same order), with one split of the cells, and
+  /// everything lives on the rank's part of the mesh (as PrimalOperators).
   ElasticOperators(const mesh::Mesh& mesh, std::vector<int> cell_degrees, std::vector<assembly::Material> materials,
                    OperatorLog* log = nullptr, const std::array<std::vector<char>, space::kComponents>& fixed = {},
                    linalg::Distribution distribution = {});
   ~ElasticOperators();
 
-  const mesh::Mesh& mesh() const { return *mesh_; }
+  /// The mesh the spaces live on: the whole one, or distributed the rank's part.
+  const mesh::Mesh& mesh() const { return space_->mesh(); }
+  /// Whether the object was built on `mesh` with these degrees (PrimalOperators::built_on).
+  bool built_on(const mesh::Mesh& mesh, const std::vector<int>& cell_degrees) const;
+  /// Whether some edge of the whole mesh is on Γ_D.
+  bool has_dirichlet() const { return has_dirichlet_; }
   /// The scalar space S^p(T_h), and the displacement space [S^p(T_h)]² with its rollers;
-  /// distributed, the space holds the shapes of the rank's own cells and Γ_C's only.
+  /// distributed, on the rank's own cells and Γ_C's only, with the whole spaces' dofs.
   const space::H1Space& space() const { return *space_; }
   const space::VectorSpace& vector_space() const { return *vector_space_; }
   int n_dofs() const { return vector_space_->n_dofs(); }
   const mesh::ContactBoundary& contact() const { return *contact_; }
+  /// One per cell of mesh().
   const std::vector<assembly::Material>& materials() const { return materials_; }
+  /// Distributed: the scalar space without elimination on the same cells (a lift's extended
+  /// space; PrimalOperators::lift_space); null otherwise.
+  const space::H1Space* lift_space() const { return kept_ ? kept_.get() : part_ ? space_.get() : nullptr; }
 
   /// A factorized with the trace last ("factor(A)").
   /// @throws InputError if the body has neither a Dirichlet part nor rollers (A would be singular:
@@ -64,9 +74,14 @@ class ElasticOperators {
   linalg::Distribution distribution() const { return distribution_; }
 
  private:
-  const mesh::Mesh* mesh_;
-  std::unique_ptr<space::H1Space> space_;
+  const mesh::Mesh* whole_;           ///< the mesh given to the constructor
+  std::unique_ptr<mesh::Mesh> part_;  ///< distributed: the rank's part of it
+  std::unique_ptr<space::H1Space> space_, kept_;
   std::unique_ptr<space::VectorSpace> vector_space_;
+  bool has_dirichlet_ = false;
+  /// The rigid rotation's centre for BDDC's near null space: the whole mesh's vertex centroid, the
+  /// same on every rank.
+  mesh::Point rotation_centre_ = mesh::Point(0.0, 0.0);
   std::unique_ptr<mesh::ContactBoundary> contact_;
   std::vector<assembly::Material> materials_;
   OperatorLog* log_;

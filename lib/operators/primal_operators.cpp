@@ -22,7 +22,7 @@ PrimalOperators::PrimalOperators(const mesh::Mesh& mesh, std::vector<int> cell_d
       distribution_(distribution) {
   Stopwatch clock;
   contact_ = std::make_unique<mesh::ContactBoundary>(mesh);
-  auto rank_space = build_rank_space(mesh, std::move(cell_degrees), *contact_, 1, distribution, RankLayout::part);
+  auto rank_space = build_rank_space(mesh, std::move(cell_degrees), *contact_, distribution);
   part_ = std::move(rank_space.part);
   space_ = std::move(rank_space.space);
   kept_ = std::move(rank_space.kept);

@@ -42,8 +42,9 @@ class PrimalOperators {
   /// Distributed, the rank's own cells and Γ_C's only, with the whole space's dofs.
   const space::H1Space& space() const { return *space_; }
   /// Distributed: the space without elimination on the same cells (a Dirichlet lift's extended
-  /// space, which a part cannot number alone), null without Γ_D; serial: null (the lift builds it).
-  const space::H1Space* lift_space() const { return kept_.get(); }
+  /// space, which a part cannot number alone; space() itself without Γ_D); serial: null (the lift
+  /// builds it).
+  const space::H1Space* lift_space() const { return kept_ ? kept_.get() : part_ ? space_.get() : nullptr; }
   const mesh::ContactBoundary& contact() const { return *contact_; }
 
   /// K factorized with the trace last ("factor(K)"), and A_G = K + M likewise ("factor(K+M)"),

@@ -1,5 +1,5 @@
 // build_rank_space: a numbering-only space weighs the cells, the split follows, then the space
-// with the rank's cells' shapes, on the whole mesh or restricted to the rank's part.
+// with the rank's cells' shapes, restricted to the rank's part.
 #include "operators/rank_space.hpp"
 
 #include <mpi.h>
@@ -9,12 +9,14 @@
 namespace hpcontact::operators {
 
 RankSpace build_rank_space(const mesh::Mesh& mesh, std::vector<int> cell_degrees, const mesh::ContactBoundary& contact,
-                           int components, linalg::Distribution distribution, RankLayout layout) {
+                           linalg::Distribution distribution, const RollerMasks* rollers) {
   RankSpace out;
   if (!distribution.distributed()) {
     out.space = std::make_unique<space::H1Space>(mesh, std::move(cell_degrees));
+    if (rollers) out.vector_space = std::make_unique<space::VectorSpace>(*out.space, *rollers);
     return out;
   }
+  const int components = rollers ? space::kComponents : 1;
   const int n_cells = mesh.n_cells();
   std::vector<char> held(n_cells, 0);
   // Holding no cell, the space still numbers every dof and counts every cell's shapes.
@@ -27,17 +29,15 @@ RankSpace build_rank_space(const mesh::Mesh& mesh, std::vector<int> cell_degrees
   MPI_Comm_rank(distribution.ranks, &rank);
   for (int c = 0; c < n_cells; ++c) held[c] = parts[c] == rank;
   for (const auto& edge : contact.edges()) held[edge.cell] = 1;
-  if (layout == RankLayout::whole_mesh) {
-    out.space = std::make_unique<space::H1Space>(mesh, std::move(cell_degrees), space::DirichletDofs::eliminated, held);
-    out.cell_parts = std::move(parts);
-    return out;
-  }
   std::vector<int> cells;
   for (int c = 0; c < n_cells; ++c)
     if (held[c]) cells.push_back(c);
   out.part = std::make_unique<mesh::Mesh>(mesh.extract(cells));
   out.space = std::make_unique<space::H1Space>(numbering.restricted_to(*out.part));
   for (int c : cells) out.cell_parts.push_back(parts[c]);
+  // The rollers' unknowns are numbered from the whole mesh's roller edges (boundary-sized).
+  if (rollers)
+    out.vector_space = std::make_unique<space::VectorSpace>(*out.space, space::VectorSpace(numbering, *rollers));
   if (mesh.has_part(mesh::BoundaryPart::dirichlet)) {
     const space::H1Space kept(mesh, std::move(cell_degrees), space::DirichletDofs::kept, std::vector<char>(n_cells, 0));
     out.kept = std::make_unique<space::H1Space>(kept.restricted_to(*out.part));

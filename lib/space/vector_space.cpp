@@ -40,6 +40,14 @@ VectorSpace::VectorSpace(const H1Space& scalar, const std::array<std::vector<cha
                      static_cast<int>(std::lower_bound(fixed_.begin(), fixed_.end(), skeleton_slots) - fixed_.begin());
 }
 
+VectorSpace::VectorSpace(const H1Space& scalar, const VectorSpace& numbering)
+    : scalar_(&scalar),
+      fixed_(numbering.fixed_),
+      n_dofs_(numbering.n_dofs_),
+      n_skeleton_dofs_(numbering.n_skeleton_dofs_) {
+  HPC_VERIFY(scalar.n_dofs() == numbering.scalar().n_dofs(), "a vector space on the same scalar numbering");
+}
+
 int VectorSpace::dof_with_rollers(int slot) const {
   const auto it = std::lower_bound(fixed_.begin(), fixed_.end(), slot);
   if (it != fixed_.end() && *it == slot) return -1;

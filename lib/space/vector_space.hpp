@@ -21,6 +21,10 @@ class VectorSpace {
   /// @throws InputError if a mask has the wrong size or marks an interior edge.
   explicit VectorSpace(const H1Space& scalar, const std::array<std::vector<char>, kComponents>& fixed = {});
 
+  /// `numbering`'s rollers and unknowns on `scalar`, the same scalar space restricted to a part of
+  /// the mesh (H1Space::restricted_to), whose edges cannot find the rollers alone.
+  VectorSpace(const H1Space& scalar, const VectorSpace& numbering);
+
   const H1Space& scalar() const { return *scalar_; }
   int n_dofs() const { return n_dofs_; }
   int n_skeleton_dofs() const { return n_skeleton_dofs_; }
