@@ -149,8 +149,8 @@ TEST(H1Space, RestrictedToAPartOfTheMeshKeepsTheWholeNumbering) {
       EXPECT_EQ(part.edge_part(e), m.edge_part(g));
       EXPECT_EQ(part.edge_label(e), m.edge_label(g));
       EXPECT_EQ(part.is_boundary_edge(e), m.is_boundary_edge(g));
-      EXPECT_EQ(part.global_cell(part.edge_cells(e)[0]), parts[m.edge_cells(g)[0]] == r ? m.edge_cells(g)[0]
-                                                                                          : m.edge_cells(g)[1]);
+      EXPECT_EQ(part.global_cell(part.edge_cells(e)[0]),
+                parts[m.edge_cells(g)[0]] == r ? m.edge_cells(g)[0] : m.edge_cells(g)[1]);
       if (part.edge_cells(e)[1] == mesh::Mesh::kCellElsewhere) {
         ++cuts;
         EXPECT_FALSE(m.is_boundary_edge(g));

@@ -129,7 +129,8 @@ void H1Space::append_shapes(int c, int first_interior) {
     for (int k = 2; k <= edge_degrees_[e]; ++k) {
       const auto [i, j] = triangle ? std::array<int, 2>{k, 0} : edge_mode_index(local, k);
       // N_k(-t) = (-1)^k N_k(t): a reversed edge flips the odd modes.
-      shapes_.push_back(shape(i, j, edge_mode_dof(e, k), (sign < 0 && k % 2 == 1) ? -1.0 : 1.0, ShapeRole::edge, local));
+      shapes_.push_back(
+          shape(i, j, edge_mode_dof(e, k), (sign < 0 && k % 2 == 1) ? -1.0 : 1.0, ShapeRole::edge, local));
     }
   }
   int next = first_interior;
