@@ -113,6 +113,15 @@ TEST(H1Space, RestrictedToAPartOfTheMeshKeepsTheWholeNumbering) {
       if (parts[c] == r) cells.push_back(c);
     const mesh::Mesh part = m.extract(cells);
     const space::H1Space space = whole.restricted_to(part);
+    // The numbering alone, shapes added later (a Dirichlet lift's extended space): the same shapes.
+    const space::H1Space numbering = whole.restricted_to(part, false);
+    EXPECT_FALSE(numbering.holds(0));
+    const space::H1Space later = numbering.with_shapes();
+    for (int c = 0; c < part.n_cells(); ++c) {
+      const auto a = later.cell_shapes(c), b = space.cell_shapes(c);
+      ASSERT_EQ(a.size(), b.size());
+      for (std::size_t s = 0; s < a.size(); ++s) EXPECT_EQ(a[s].dof, b[s].dof);
+    }
     ASSERT_TRUE(part.is_part());
     ASSERT_EQ(part.n_cells(), static_cast<int>(cells.size()));
     EXPECT_EQ(space.n_dofs(), whole.n_dofs());

@@ -39,8 +39,18 @@ Eigen::VectorXd edge_projection(const mesh::Mesh& mesh, int cell, int local_edge
   return a;
 }
 
+namespace {
+
+// A lift's extended space holds every cell of the problem's space: a restricted numbering gets
+// its shapes here (only runs with Dirichlet data pay for them).
+space::H1Space extended_with_shapes(const space::H1Space& extended) {
+  return extended.mesh().is_part() && !extended.holds(0) ? extended.with_shapes() : extended;
+}
+
+}  // namespace
+
 DirichletLift::DirichletLift(const space::H1Space& space, const PointFunction& u_d, const space::H1Space* extended)
-    : extended_scalar_(extended ? std::make_unique<space::H1Space>(*extended)
+    : extended_scalar_(extended ? std::make_unique<space::H1Space>(extended_with_shapes(*extended))
                                 : std::make_unique<space::H1Space>(space.mesh(), space.cell_degrees(),
                                                                    space::DirichletDofs::kept, space.held_cells())) {
   HPC_VERIFY(&extended_scalar_->mesh() == &space.mesh(), "a lift's extended space on the space's cells");
@@ -52,7 +62,7 @@ DirichletLift::DirichletLift(const space::H1Space& space, const PointFunction& u
 DirichletLift::DirichletLift(const space::VectorSpace& space, const std::array<PointFunction, space::kComponents>& u_d,
                              const space::H1Space* extended)
     : extended_scalar_(extended
-                           ? std::make_unique<space::H1Space>(*extended)
+                           ? std::make_unique<space::H1Space>(extended_with_shapes(*extended))
                            : std::make_unique<space::H1Space>(space.scalar().mesh(), space.scalar().cell_degrees(),
                                                               space::DirichletDofs::kept, space.scalar().held_cells())),
       extended_vector_(std::make_unique<space::VectorSpace>(*extended_scalar_)) {

@@ -112,13 +112,21 @@ Mesh Mesh::extract(const std::vector<int>& cells) const {
   for (auto* ids : {&vertices, &edges}) {
     std::sort(ids->begin(), ids->end());
     ids->erase(std::unique(ids->begin(), ids->end()), ids->end());
+    ids->shrink_to_fit();  // a part lives as long as the run: no slack from the duplicates
   }
   // The part's index of a whole mesh's cell, vertex or edge (−1: not in the part).
   const auto local = [](const std::vector<int>& ids, int id) {
     const auto found = std::lower_bound(ids.begin(), ids.end(), id);
     return found != ids.end() && *found == id ? static_cast<int>(found - ids.begin()) : -1;
   };
+  part.vertices_.reserve(vertices.size());
   for (int v : vertices) part.vertices_.push_back(vertices_[v]);
+  for (auto* table : {&part.cells_, &part.cell_edges_}) table->reserve(cells.size());
+  part.cell_edge_signs_.reserve(cells.size());
+  if (!cell_geometry_.empty()) part.cell_geometry_.reserve(cells.size());
+  for (auto* table : {&part.edges_, &part.edge_cells_}) table->reserve(edges.size());
+  part.edge_label_index_.reserve(edges.size());
+  part.edge_parts_.reserve(edges.size());
   for (int c : cells) {
     std::array<int, 4> corners{-1, -1, -1, -1}, sides{-1, -1, -1, -1};
     for (int k = 0; k < cell_size(c); ++k) {

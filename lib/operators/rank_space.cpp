@@ -40,7 +40,7 @@ RankSpace build_rank_space(const mesh::Mesh& mesh, std::vector<int> cell_degrees
     out.vector_space = std::make_unique<space::VectorSpace>(*out.space, space::VectorSpace(numbering, *rollers));
   if (mesh.has_part(mesh::BoundaryPart::dirichlet)) {
     const space::H1Space kept(mesh, std::move(cell_degrees), space::DirichletDofs::kept, std::vector<char>(n_cells, 0));
-    out.kept = std::make_unique<space::H1Space>(kept.restricted_to(*out.part));
+    out.kept = std::make_unique<space::H1Space>(kept.restricted_to(*out.part, false));
   }
   return out;
 }

@@ -23,8 +23,8 @@ struct RankSpace {
   /// Elasticity: [S^p(T_h)]² on `space` with the rollers asked for.
   std::unique_ptr<space::VectorSpace> vector_space;
   /// Distributed, with a Dirichlet part of the boundary: the space on the same cells with Γ_D's dofs
-  /// kept (where a Dirichlet lift lives; a part cannot number it alone). Null otherwise (without
-  /// Γ_D it would be `space`).
+  /// kept (where a Dirichlet lift lives; a part cannot number it alone), its numbering only (a lift
+  /// adds the shapes: H1Space::with_shapes). Null otherwise (without Γ_D it would be `space`).
   std::unique_ptr<space::H1Space> kept;
   /// The rank that eliminates each cell of the space's mesh; empty when serial.
   std::vector<int> cell_parts;

@@ -88,7 +88,7 @@ int H1Space::shape_count(int cell) const {
   return count;
 }
 
-H1Space H1Space::restricted_to(const mesh::Mesh& part) const {
+H1Space H1Space::restricted_to(const mesh::Mesh& part, bool with_shapes) const {
   const auto& mesh = *mesh_;
   HPC_VERIFY(part.is_part() && !mesh.is_part(), "a space is restricted to a part of its whole mesh");
   H1Space out;
@@ -104,14 +104,23 @@ H1Space H1Space::restricted_to(const mesh::Mesh& part) const {
   for (int c = 0; c < part.n_cells(); ++c) out.cell_degrees_.push_back(cell_degrees_[part.global_cell(c)]);
   // Interior modes are numbered cell after cell after the skeleton: a cell's first one counts
   // those of every cell before it in the whole mesh.
-  out.first_shape_.assign(part.n_cells() + 1, 0);
-  for (int c = 0; c < part.n_cells(); ++c) out.first_shape_[c + 1] = out.first_shape_[c] + out.shape_count(c);
-  out.shapes_.reserve(out.first_shape_.back());
   int first_interior = n_skeleton_dofs_;
   for (int c = 0, whole = 0; c < part.n_cells(); ++c) {
     for (; whole < part.global_cell(c); ++whole) first_interior += interior_count(whole);
-    out.append_shapes(c, first_interior);
+    out.first_interior_.push_back(first_interior);
   }
+  out.first_shape_.assign(part.n_cells() + 1, 0);
+  return with_shapes ? out.with_shapes() : out;
+}
+
+H1Space H1Space::with_shapes() const {
+  HPC_VERIFY(!first_interior_.empty(), "shapes are added to a space restricted to a part");
+  H1Space out = *this;
+  const int n_cells = mesh_->n_cells();
+  for (int c = 0; c < n_cells; ++c) out.first_shape_[c + 1] = out.first_shape_[c] + out.shape_count(c);
+  out.shapes_.clear();
+  out.shapes_.reserve(out.first_shape_.back());
+  for (int c = 0; c < n_cells; ++c) out.append_shapes(c, first_interior_[c]);
   return out;
 }
 

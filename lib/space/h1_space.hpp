@@ -68,8 +68,11 @@ class H1Space {
   /// This space on `part`, a mesh extracted from mesh() (mesh::Mesh::extract): on each of the
   /// part's cells the same degree and local shapes, with the same global dofs, as on its cell of
   /// mesh(), and every table of the part's length; n_dofs(), n_skeleton_dofs() and max_degree() stay
-  /// this space's. So a rank can keep the space of its own cells only.
-  H1Space restricted_to(const mesh::Mesh& part) const;
+  /// this space's. So a rank can keep the space of its own cells only. Without `with_shapes`, the
+  /// numbering alone (no cell held) until with_shapes().
+  H1Space restricted_to(const mesh::Mesh& part, bool with_shapes = true) const;
+  /// A space restricted to a part with every cell's shapes (restricted_to without them, later).
+  H1Space with_shapes() const;
 
   const mesh::Mesh& mesh() const { return *mesh_; }
   int n_dofs() const { return n_dofs_; }
@@ -114,6 +117,7 @@ class H1Space {
   std::vector<int> cell_degrees_;
   std::vector<int> edge_degrees_;
   std::vector<int> vertex_dofs_, edge_first_dofs_;  ///< see vertex_dof, edge_mode_dof
+  std::vector<int> first_interior_;                 ///< restricted: each cell's first interior dof
   std::vector<LocalShape> shapes_;                  ///< every held cell's shapes, cell after cell
   std::vector<std::int64_t> first_shape_;           ///< cell c's shapes: [first_shape_[c], first_shape_[c + 1])
   int n_dofs_ = 0;
