@@ -46,11 +46,7 @@ ElasticOperators::ElasticOperators(const mesh::Mesh& mesh, std::vector<int> cell
 ElasticOperators::~ElasticOperators() = default;
 
 bool ElasticOperators::built_on(const mesh::Mesh& mesh, const std::vector<int>& cell_degrees) const {
-  if (&mesh != whole_ || static_cast<int>(cell_degrees.size()) != mesh.n_cells()) return false;
-  const auto& space_mesh = space_->mesh();
-  for (int c = 0; c < space_mesh.n_cells(); ++c)
-    if (space_->cell_degree(c) != cell_degrees[space_mesh.global_cell(c)]) return false;
-  return true;
+  return space_built_on(*space_, *whole_, mesh, cell_degrees);
 }
 
 const std::vector<int>& ElasticOperators::trace_dofs() const {

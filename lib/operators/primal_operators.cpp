@@ -35,11 +35,7 @@ PrimalOperators::PrimalOperators(const mesh::Mesh& mesh, std::vector<int> cell_d
 PrimalOperators::~PrimalOperators() = default;
 
 bool PrimalOperators::built_on(const mesh::Mesh& mesh, const std::vector<int>& cell_degrees) const {
-  if (&mesh != whole_ || static_cast<int>(cell_degrees.size()) != mesh.n_cells()) return false;
-  const auto& space_mesh = space_->mesh();
-  for (int c = 0; c < space_mesh.n_cells(); ++c)
-    if (space_->cell_degree(c) != cell_degrees[space_mesh.global_cell(c)]) return false;
-  return true;
+  return space_built_on(*space_, *whole_, mesh, cell_degrees);
 }
 
 const std::vector<int>& PrimalOperators::trace_dofs() const {

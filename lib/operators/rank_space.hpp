@@ -38,4 +38,9 @@ using RollerMasks = std::array<std::vector<char>, space::kComponents>;
 RankSpace build_rank_space(const mesh::Mesh& mesh, std::vector<int> cell_degrees, const mesh::ContactBoundary& contact,
                            linalg::Distribution distribution, const RollerMasks* rollers = nullptr);
 
+/// Whether `space`, built from `built_from` (the whole mesh given to build_rank_space), is of
+/// `mesh` with these degrees (compared on the space's cells): a shared operator object's check.
+bool space_built_on(const space::H1Space& space, const mesh::Mesh& built_from, const mesh::Mesh& mesh,
+                    const std::vector<int>& cell_degrees);
+
 }  // namespace hpcontact::operators
