@@ -386,7 +386,7 @@ Eigen::MatrixXd CondensedFactor::schur_complement(const linalg::Coupling& b) con
     for (linalg::Coupling::InnerIterator it(b, row); it; ++it)
       if (it.col() >= n_skeleton && it.value() != 0.0) skeleton_only = false;
   if (skeleton_only) {
-    const linalg::Coupling b_skeleton = b.leftCols(n_skeleton);
+    const auto b_skeleton = linalg::squeezed<linalg::Coupling>(b.leftCols(n_skeleton));
     if (serial_) return serial_->schur_complement(b_skeleton);
     if (bddc_) return bddc_->schur_complement(b_skeleton);
     return substructured_ ? substructured_->schur_complement(b_skeleton) : mumps_->schur_complement(b_skeleton);

@@ -44,7 +44,7 @@ namespace {
 // A lift's extended space holds every cell of the problem's space: a restricted numbering gets
 // its shapes here (only runs with Dirichlet data pay for them).
 space::H1Space extended_with_shapes(const space::H1Space& extended) {
-  return extended.mesh().is_part() && !extended.holds(0) ? extended.with_shapes() : extended;
+  return extended.holds_shapes() ? extended : extended.with_shapes();
 }
 
 }  // namespace

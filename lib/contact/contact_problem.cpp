@@ -125,9 +125,7 @@ ContactSolution solve_contact(const ContactSetup& setup) {
       primal.coupling(multipliers, weighted ? setup.bound : assembly::BoundaryFunction{}, coupling_name);
   MultiplierConstraints constraints = build_multiplier_constraints(setup, multipliers, primal.contact());
   const linalg::Coupling to_nodal = constraints.to_nodal.sparseView();
-  linalg::Coupling coupling = (to_nodal * coupling_legendre).pruned();
-  // pruned() leaves room for 2 max(m, n) entries: 25 MB at 1e6 dofs for a few thousand nonzeros.
-  coupling.data().squeeze();
+  const auto coupling = linalg::squeezed<linalg::Coupling>((to_nodal * coupling_legendre).pruned());
   Eigen::VectorXd gap_offset = Eigen::VectorXd::Zero(multipliers.n_dofs());
   if (signorini) {
     Stopwatch obstacle_clock;

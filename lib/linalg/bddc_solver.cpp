@@ -239,8 +239,8 @@ Eigen::MatrixXd BddcSolver::schur_complement(const Coupling& b) const {
   const auto m = b.rows();
   const PetscInt owned = impl_->row_end - impl_->row_begin;
   // Only the rank's rows of Bᵀ and of each solution: no vector of the global length.
-  const Coupling b_owned = b.middleCols(impl_->row_begin, owned);
-  const Eigen::SparseMatrix<double> bt_owned = b_owned.transpose();
+  const auto b_owned = squeezed<Coupling>(b.middleCols(impl_->row_begin, owned));
+  const auto bt_owned = squeezed<Eigen::SparseMatrix<double>>(b_owned.transpose());
   Eigen::MatrixXd result = Eigen::MatrixXd::Zero(m, m);
   Eigen::VectorXd owned_rhs(owned), owned_solution(owned);
   for (Eigen::Index j = 0; j < m; ++j) {

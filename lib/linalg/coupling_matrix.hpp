@@ -10,4 +10,13 @@ namespace hpcontact::linalg {
 
 using Coupling = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 
+/// `matrix` (a block of B, or Bᵀ by columns) stored with its non-zeros only: Eigen's sparse
+/// assignments reserve up to 2 max(rows, cols) entries, 24 MB at 1e6 columns for a few thousand
+/// non-zeros.
+template <class Matrix>
+Matrix squeezed(Matrix matrix) {
+  matrix.data().squeeze();
+  return matrix;
+}
+
 }  // namespace hpcontact::linalg

@@ -253,8 +253,8 @@ Eigen::MatrixXd DistributedCholesky::schur_complement(const Coupling& b) const {
         [this](const Eigen::MatrixXd& rhs) { return solve(rhs); });
   const auto m = b.rows();
   const PetscInt owned = impl_->row_end - impl_->row_begin;
-  const Coupling b_owned = b.middleCols(impl_->row_begin, owned);
-  const Eigen::SparseMatrix<double> bt_owned = b_owned.transpose();
+  const auto b_owned = squeezed<Coupling>(b.middleCols(impl_->row_begin, owned));
+  const auto bt_owned = squeezed<Eigen::SparseMatrix<double>>(b_owned.transpose());
   Eigen::MatrixXd result = Eigen::MatrixXd::Zero(m, m);
   constexpr Eigen::Index block = 64;
   for (Eigen::Index first = 0; first < m; first += block) {

@@ -24,7 +24,7 @@ Eigen::MatrixXd schur_complement_through_trailing(const Coupling& b,
     result.selfadjointView<Eigen::Lower>().rankUpdate(bt.transpose());
     return result.selfadjointView<Eigen::Lower>();
   }
-  const Eigen::SparseMatrix<double> bt = b.transpose();  // by columns: m + 1 column pointers
+  const auto bt = squeezed<Eigen::SparseMatrix<double>>(b.transpose());  // by columns: m + 1 column pointers
   constexpr int block = 64;
   for (Eigen::Index first = 0; first < m; first += block) {
     const auto count = std::min<Eigen::Index>(block, m - first);

@@ -196,6 +196,7 @@ Point Mesh::boundary_normal(int e, double t) const {
 }
 
 void Mesh::set_edge_curve(int e, std::shared_ptr<const EdgeCurve> curve, const std::string& origin) {
+  HPC_VERIFY(!is_part(), "curves are set on the whole mesh, before its parts are extracted");
   const Point &a = vertices_[edges_[e][0]], &b = vertices_[edges_[e][1]];
   const double length = (b - a).norm();
   if ((curve->point(-1.0) - a).norm() > 1e-8 * length || (curve->point(1.0) - b).norm() > 1e-8 * length)
@@ -275,6 +276,7 @@ double Mesh::longest_edge() const {
 
 void Mesh::move_vertices(std::vector<Point> new_positions, const std::string& origin) {
   HPC_VERIFY(new_positions.size() == vertices_.size(), "vertex count changed");
+  HPC_VERIFY(!is_part(), "vertices move on the whole mesh, before its parts are extracted");
   if (has_curved_cells())
     throw InputError(origin +
                      ": a mesh with curved cells cannot be perturbed or graded (its curves would no "

@@ -41,7 +41,7 @@ class Mesh {
 
   const Point& vertex(int v) const { return vertices_[v]; }
   const std::vector<Point>& vertices() const { return vertices_; }
-  /// Global vertex indices of cell c, counterclockwise (three or four).
+  /// Vertex indices of cell c, counterclockwise (three or four).
   std::span<const int> cell(int c) const { return {cells_[c].data(), cells_[c][3] < 0 ? 3u : 4u}; }
   /// Every cell as given to the constructor (a triangle's fourth entry is -1).
   const std::vector<std::array<int, 4>>& cells() const { return cells_; }
@@ -104,7 +104,10 @@ class Mesh {
   /// needs of the mesh. Its cells, vertices and edges are numbered in the order of their indices in
   /// this mesh, so edge directions and signs are the same; labels, boundary parts and curved cells are
   /// carried over. An edge shared with a cell outside the part is a cut: not a boundary edge, its
-  /// second neighbour kCellElsewhere. @pre this mesh is not itself a part.
+  /// second neighbour kCellElsewhere. @pre this mesh is not itself a part. A part is not refined,
+  /// graded, moved or given curves (the whole mesh is, before): those refuse it. On a cut edge the
+  /// part's cell comes first, so a curved cut edge's points come from that cell's map (the same
+  /// curve as its neighbour's, to round-off).
   Mesh extract(const std::vector<int>& cells) const;
   /// Whether this mesh is a part of another (extract).
   bool is_part() const { return !global_cells_.empty(); }

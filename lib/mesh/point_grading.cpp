@@ -66,6 +66,7 @@ void check_layer_depth(const Mesh& mesh, const std::vector<int>& star_of, double
 
 Mesh grade_towards_vertices(const Mesh& mesh, const std::vector<int>& centres, double ratio, int layers,
                             const std::string& origin, std::vector<int>* parents) {
+  HPC_VERIFY(!mesh.is_part(), "a part of a mesh is not refined: its cut edges would become boundary");
   if (!(ratio > 0.0 && ratio < 1.0)) throw_bad_input(origin, "grading", fmt::format("{}", ratio), "must be in (0, 1)");
   if (layers < 0) throw_bad_input(origin, "grading_layers", std::to_string(layers), "must be >= 0");
   if (mesh.has_curved_cells())

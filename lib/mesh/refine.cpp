@@ -10,6 +10,7 @@
 namespace hpcontact::mesh {
 
 Mesh refine_uniformly(const Mesh& mesh) {
+  HPC_VERIFY(!mesh.is_part(), "a part of a mesh is not refined: its cut edges would become boundary");
   std::vector<Point> vertices = mesh.vertices();
   const int edge_base = static_cast<int>(vertices.size());
   for (int e = 0; e < mesh.n_edges(); ++e) vertices.push_back(mesh.edge_midpoint(e));
@@ -77,6 +78,7 @@ Mesh refine_uniformly(const Mesh& mesh) {
 }
 
 Mesh split_into_triangles(const Mesh& mesh, const std::function<bool(int cell)>& which, const std::string& origin) {
+  HPC_VERIFY(!mesh.is_part(), "a part of a mesh is not refined: its cut edges would become boundary");
   std::vector<std::array<int, 4>> cells;
   std::vector<std::pair<int, int>> kept;  // (new index, original) of cells kept whole
   for (int c = 0; c < mesh.n_cells(); ++c) {

@@ -53,7 +53,9 @@ const std::vector<int>& ElasticOperators::trace_dofs() const {
   if (!trace_dofs_) {
     // The scalar trace dofs (columns a full-degree multiplier space on the edges of T_h|Γ_C
     // touches), each with both components.
-    const int p_max = *std::max_element(space_->cell_degrees().begin(), space_->cell_degrees().end());
+    // The whole space's largest degree, on every rank alike (a part's own can be lower): every rank
+    // must find the same trailing set.
+    const int p_max = space_->max_degree();
     const mesh::BoundaryMesh edges = contact_->edge_mesh();  // full_trace keeps a pointer to it
     const space::MultiplierSpace full_trace(edges, p_max);
     const auto scalar = linalg::nonzero_columns(assembly::assemble_coupling(*space_, *contact_, full_trace));

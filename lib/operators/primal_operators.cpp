@@ -40,7 +40,9 @@ bool PrimalOperators::built_on(const mesh::Mesh& mesh, const std::vector<int>& c
 
 const std::vector<int>& PrimalOperators::trace_dofs() const {
   if (!trace_dofs_) {
-    const int p_max = *std::max_element(space_->cell_degrees().begin(), space_->cell_degrees().end());
+    // The whole space's largest degree, on every rank alike (a part's own can be lower): every rank
+    // must find the same trailing set.
+    const int p_max = space_->max_degree();
     const mesh::BoundaryMesh edges = contact_->edge_mesh();  // full_trace keeps a pointer to it
     const space::MultiplierSpace full_trace(edges, p_max);
     trace_dofs_ = std::make_unique<std::vector<int>>(

@@ -91,6 +91,11 @@ int H1Space::shape_count(int cell) const {
 H1Space H1Space::restricted_to(const mesh::Mesh& part, bool with_shapes) const {
   const auto& mesh = *mesh_;
   HPC_VERIFY(part.is_part() && !mesh.is_part(), "a space is restricted to a part of its whole mesh");
+  // (a part remembers its indices, not its whole mesh: at least they must be this mesh's)
+  HPC_VERIFY(part.global_cell(part.n_cells() - 1) < mesh.n_cells() &&
+                 part.global_vertex(part.n_vertices() - 1) < mesh.n_vertices() &&
+                 part.global_edge(part.n_edges() - 1) < mesh.n_edges(),
+             "a part of another mesh");
   H1Space out;
   out.mesh_ = &part;
   out.n_dofs_ = n_dofs_;

@@ -95,6 +95,8 @@ class H1Space {
   bool holds(int cell) const { return first_shape_[cell + 1] > first_shape_[cell]; }
   /// The `held` flags this space was built with: empty where it holds every cell.
   std::vector<char> held_cells() const;
+  /// Whether some cell's shapes are kept (not a numbering-only space).
+  bool holds_shapes() const { return first_shape_.back() > 0; }
   /// Whether the space holds every cell of the whole mesh (not some cells, not a part).
   bool whole() const { return !mesh_->is_part() && held_cells().empty(); }
   /// The number of local shapes of any cell (held or not): its unknowns, Dirichlet ones included.

@@ -45,7 +45,9 @@ VectorSpace::VectorSpace(const H1Space& scalar, const VectorSpace& numbering)
       fixed_(numbering.fixed_),
       n_dofs_(numbering.n_dofs_),
       n_skeleton_dofs_(numbering.n_skeleton_dofs_) {
-  HPC_VERIFY(scalar.n_dofs() == numbering.scalar().n_dofs(), "a vector space on the same scalar numbering");
+  HPC_VERIFY(scalar.n_dofs() == numbering.scalar().n_dofs() &&
+                 scalar.n_skeleton_dofs() == numbering.scalar().n_skeleton_dofs(),
+             "a vector space on the same scalar numbering");
 }
 
 int VectorSpace::dof_with_rollers(int slot) const {
