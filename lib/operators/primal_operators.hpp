@@ -69,9 +69,9 @@ class PrimalOperators {
                                         const std::function<Eigen::MatrixXd()>& build) const;
   /// Every dof with a trace on Γ_C (the trailing set of both factorizations).
   const std::vector<int>& trace_dofs() const;
-  /// Distributed: the rank that eliminates each cell, computed once (collectively, when the
-  /// object is built) for both factorizations, weighted by the cells' unknowns; empty when serial.
-  /// The space holds the shapes of the rank's own cells and of Γ_C's only (operators/rank_space.hpp).
+  /// Distributed: the rank that eliminates each cell of mesh() (the rank's part: its own cells and
+  /// Γ_C's), computed once (collectively, when the object is built) for both factorizations,
+  /// weighted by the cells' unknowns; empty when serial (operators/rank_space.hpp).
   const std::vector<int>& cell_parts() const { return cell_parts_; }
   OperatorLog* log() const { return log_; }
   linalg::Distribution distribution() const { return distribution_; }
