@@ -28,16 +28,11 @@ ElasticOperators::ElasticOperators(const mesh::Mesh& mesh, std::vector<int> cell
     throw InputError("elasticity: one material per cell is needed");
   for (const auto& x : mesh.vertices()) rotation_centre_ += x / static_cast<double>(mesh.n_vertices());
   contact_ = std::make_unique<mesh::ContactBoundary>(mesh);
-  auto rank_space = build_rank_space(mesh, std::move(cell_degrees), *contact_, distribution, &fixed);
-  part_ = std::move(rank_space.part);
-  space_ = std::move(rank_space.space);
-  kept_ = std::move(rank_space.kept);
-  vector_space_ = std::move(rank_space.vector_space);
-  cell_parts_ = std::move(rank_space.cell_parts);
-  if (part_) {  // Γ_C and the materials of the part's cells
-    contact_ = std::make_unique<mesh::ContactBoundary>(*part_);
+  rank_ = build_rank_space(mesh, std::move(cell_degrees), *contact_, distribution, &fixed);
+  if (rank_.part) {  // Γ_C and the materials of the part's cells
+    contact_ = std::make_unique<mesh::ContactBoundary>(*rank_.part);
     std::vector<assembly::Material> own;
-    for (int c = 0; c < part_->n_cells(); ++c) own.push_back(materials_[part_->global_cell(c)]);
+    for (int c = 0; c < rank_.part->n_cells(); ++c) own.push_back(materials_[rank_.part->global_cell(c)]);
     materials_ = std::move(own);
   }
   if (log_) log_->record("[S^p(T_h)]^2", n_dofs(), 0, clock.seconds());
@@ -46,7 +41,7 @@ ElasticOperators::ElasticOperators(const mesh::Mesh& mesh, std::vector<int> cell
 ElasticOperators::~ElasticOperators() = default;
 
 bool ElasticOperators::built_on(const mesh::Mesh& mesh, const std::vector<int>& cell_degrees) const {
-  return space_built_on(*space_, *whole_, mesh, cell_degrees);
+  return space_built_on(*rank_.space, *whole_, mesh, cell_degrees);
 }
 
 const std::vector<int>& ElasticOperators::trace_dofs() const {
@@ -55,21 +50,21 @@ const std::vector<int>& ElasticOperators::trace_dofs() const {
     // touches), each with both components.
     // The whole space's largest degree, on every rank alike (a part's own can be lower): every rank
     // must find the same trailing set.
-    const int p_max = space_->max_degree();
+    const int p_max = rank_.space->max_degree();
     const mesh::BoundaryMesh edges = contact_->edge_mesh();  // full_trace keeps a pointer to it
     const space::MultiplierSpace full_trace(edges, p_max);
-    const auto scalar = linalg::nonzero_columns(assembly::assemble_coupling(*space_, *contact_, full_trace));
+    const auto scalar = linalg::nonzero_columns(assembly::assemble_coupling(*rank_.space, *contact_, full_trace));
     trace_dofs_ = std::make_unique<std::vector<int>>();
     for (int dof : scalar)
       for (int c = 0; c < space::kComponents; ++c)
-        if (const int k = vector_space_->dof(dof, c); k >= 0) trace_dofs_->push_back(k);
+        if (const int k = rank_.vector_space->dof(dof, c); k >= 0) trace_dofs_->push_back(k);
   }
   return *trace_dofs_;
 }
 
 const assembly::CondensedFactor& ElasticOperators::stiffness_factor() const {
   if (!stiffness_factor_) {
-    if (!has_dirichlet_ && !vector_space_->has_rollers())
+    if (!has_dirichlet_ && !rank_.vector_space->has_rollers())
       throw InputError(
           "the body has no Dirichlet part (no boundary edge is in Γ_D: key 'boundary.dirichlet' or "
           "'boundary.dirichlet_groups', and no roller: 'boundary.fixed_x', 'boundary.fixed_y'): the elasticity "
@@ -77,8 +72,8 @@ const assembly::CondensedFactor& ElasticOperators::stiffness_factor() const {
           "somewhere");
     Stopwatch clock;
     stiffness_factor_ = std::make_unique<assembly::CondensedFactor>(
-        std::make_unique<assembly::ElasticCellSystem>(*vector_space_, materials_, 0.0, rotation_centre_), trace_dofs(),
-        distribution_, cell_parts_);
+        std::make_unique<assembly::ElasticCellSystem>(*rank_.vector_space, materials_, 0.0, rotation_centre_),
+        trace_dofs(), distribution_, rank_.cell_parts);
     if (log_) log_->record("factor(A)", n_dofs(), n_dofs(), clock.seconds());
   }
   return *stiffness_factor_;
@@ -95,10 +90,11 @@ const assembly::CondensedFactor& ElasticOperators::gram_factor(PrimalNorm norm) 
     Stopwatch clock;
     std::unique_ptr<const assembly::CellSystem> system;
     if (norm == PrimalNorm::h1)
-      system = std::make_unique<assembly::ComponentwiseCellSystem>(*vector_space_, 1.0, 1.0);
+      system = std::make_unique<assembly::ComponentwiseCellSystem>(*rank_.vector_space, 1.0, 1.0);
     else
-      system = std::make_unique<assembly::ElasticCellSystem>(*vector_space_, materials_, 1.0, rotation_centre_);
-    slot = std::make_unique<assembly::CondensedFactor>(std::move(system), trace_dofs(), distribution_, cell_parts_);
+      system = std::make_unique<assembly::ElasticCellSystem>(*rank_.vector_space, materials_, 1.0, rotation_centre_);
+    slot =
+        std::make_unique<assembly::CondensedFactor>(std::move(system), trace_dofs(), distribution_, rank_.cell_parts);
     if (log_)
       log_->record(norm == PrimalNorm::h1 ? "factor(K+M)^2" : "factor(A+M)", n_dofs(), n_dofs(), clock.seconds());
   }
@@ -112,10 +108,10 @@ const linalg::Coupling& ElasticOperators::coupling(const space::MultiplierSpace&
   auto found = couplings_.find(key);
   if (found == couplings_.end()) {
     Stopwatch clock;
-    found =
-        couplings_
-            .emplace(key, assembly::assemble_directional_coupling(*vector_space_, *contact_, multipliers, direction))
-            .first;
+    found = couplings_
+                .emplace(key, assembly::assemble_directional_coupling(*rank_.vector_space, *contact_, multipliers,
+                                                                      direction))
+                .first;
     if (log_) log_->record(name, found->second.rows(), found->second.cols(), clock.seconds());
   }
   return found->second;

@@ -14,6 +14,7 @@
 #include "assembly/elastic_system.hpp"
 #include "core/operator_log.hpp"
 #include "mesh/contact_boundary.hpp"
+#include "operators/rank_space.hpp"
 #include "space/h1_space.hpp"
 #include "space/multiplier_space.hpp"
 #include "space/vector_space.hpp"
@@ -40,22 +41,22 @@ class ElasticOperators {
   ~ElasticOperators();
 
   /// The mesh the spaces live on: the whole one, or distributed the rank's part.
-  const mesh::Mesh& mesh() const { return space_->mesh(); }
+  const mesh::Mesh& mesh() const { return rank_.space->mesh(); }
   /// Whether the object was built on `mesh` with these degrees (PrimalOperators::built_on).
   bool built_on(const mesh::Mesh& mesh, const std::vector<int>& cell_degrees) const;
   /// Whether some edge of the whole mesh is on Γ_D.
   bool has_dirichlet() const { return has_dirichlet_; }
   /// The scalar space S^p(T_h), and the displacement space [S^p(T_h)]² with its rollers;
   /// distributed, on the rank's own cells and Γ_C's only, with the whole spaces' dofs.
-  const space::H1Space& space() const { return *space_; }
-  const space::VectorSpace& vector_space() const { return *vector_space_; }
-  int n_dofs() const { return vector_space_->n_dofs(); }
+  const space::H1Space& space() const { return *rank_.space; }
+  const space::VectorSpace& vector_space() const { return *rank_.vector_space; }
+  int n_dofs() const { return rank_.vector_space->n_dofs(); }
   const mesh::ContactBoundary& contact() const { return *contact_; }
   /// One per cell of mesh().
   const std::vector<assembly::Material>& materials() const { return materials_; }
   /// Distributed: the scalar space without elimination on the same cells (a lift's extended
   /// space; PrimalOperators::lift_space); null otherwise.
-  const space::H1Space* lift_space() const { return kept_ ? kept_.get() : part_ ? space_.get() : nullptr; }
+  const space::H1Space* lift_space() const { return rank_.lift_space(); }
 
   /// A factorized with the trace last ("factor(A)").
   /// @throws InputError if the body has neither a Dirichlet part nor rollers (A would be singular:
@@ -74,10 +75,8 @@ class ElasticOperators {
   linalg::Distribution distribution() const { return distribution_; }
 
  private:
-  const mesh::Mesh* whole_;           ///< the mesh given to the constructor
-  std::unique_ptr<mesh::Mesh> part_;  ///< distributed: the rank's part of it
-  std::unique_ptr<space::H1Space> space_, kept_;
-  std::unique_ptr<space::VectorSpace> vector_space_;
+  const mesh::Mesh* whole_;  ///< the mesh given to the constructor
+  RankSpace rank_;           ///< the space (distributed: on the rank's part of the mesh) and its split
   bool has_dirichlet_ = false;
   /// The rigid rotation's centre for BDDC's near null space: the whole mesh's vertex centroid, the
   /// same on every rank.
@@ -86,9 +85,6 @@ class ElasticOperators {
   std::vector<assembly::Material> materials_;
   OperatorLog* log_;
   linalg::Distribution distribution_;
-  /// Distributed: the rank that eliminates each cell, weighted by the cells' unknowns and shared
-  /// by the factors (the space holds the shapes of these cells and Γ_C's); empty when serial.
-  std::vector<int> cell_parts_;
   mutable std::unique_ptr<assembly::CondensedFactor> stiffness_factor_;
   mutable std::map<PrimalNorm, std::unique_ptr<assembly::CondensedFactor>> gram_factors_;
   mutable std::unique_ptr<std::vector<int>> trace_dofs_;

@@ -22,31 +22,27 @@ PrimalOperators::PrimalOperators(const mesh::Mesh& mesh, std::vector<int> cell_d
       distribution_(distribution) {
   Stopwatch clock;
   contact_ = std::make_unique<mesh::ContactBoundary>(mesh);
-  auto rank_space = build_rank_space(mesh, std::move(cell_degrees), *contact_, distribution);
-  part_ = std::move(rank_space.part);
-  space_ = std::move(rank_space.space);
-  kept_ = std::move(rank_space.kept);
-  cell_parts_ = std::move(rank_space.cell_parts);
+  rank_ = build_rank_space(mesh, std::move(cell_degrees), *contact_, distribution);
   // Γ_C again on the part (which holds all of it), so that its trace edges name the part's cells.
-  if (part_) contact_ = std::make_unique<mesh::ContactBoundary>(*part_);
-  if (log_) log_->record("S^p(T_h)", space_->n_dofs(), 0, clock.seconds());
+  if (rank_.part) contact_ = std::make_unique<mesh::ContactBoundary>(*rank_.part);
+  if (log_) log_->record("S^p(T_h)", rank_.space->n_dofs(), 0, clock.seconds());
 }
 
 PrimalOperators::~PrimalOperators() = default;
 
 bool PrimalOperators::built_on(const mesh::Mesh& mesh, const std::vector<int>& cell_degrees) const {
-  return space_built_on(*space_, *whole_, mesh, cell_degrees);
+  return space_built_on(*rank_.space, *whole_, mesh, cell_degrees);
 }
 
 const std::vector<int>& PrimalOperators::trace_dofs() const {
   if (!trace_dofs_) {
     // The whole space's largest degree, on every rank alike (a part's own can be lower): every rank
     // must find the same trailing set.
-    const int p_max = space_->max_degree();
+    const int p_max = rank_.space->max_degree();
     const mesh::BoundaryMesh edges = contact_->edge_mesh();  // full_trace keeps a pointer to it
     const space::MultiplierSpace full_trace(edges, p_max);
     trace_dofs_ = std::make_unique<std::vector<int>>(
-        linalg::nonzero_columns(assembly::assemble_coupling(*space_, *contact_, full_trace)));
+        linalg::nonzero_columns(assembly::assemble_coupling(*rank_.space, *contact_, full_trace)));
   }
   return *trace_dofs_;
 }
@@ -79,13 +75,13 @@ const assembly::CondensedFactor& PrimalOperators::stiffness_factor() const {
         "the body has no Dirichlet part (no boundary edge is in Γ_D: key 'boundary.dirichlet' or "
         "'boundary.dirichlet_groups'): K is singular, since u + c has the energy of u, and the contact "
         "problems (9), (13), (15) need u fixed somewhere (the inf-sup analysis, with K + M, does not)");
-  return condensed_factor(*space_, 1.0, 0.0, trace_dofs(), distribution_, cell_parts_, stiffness_factor_, "factor(K)",
-                          log_);
+  return condensed_factor(*rank_.space, 1.0, 0.0, trace_dofs(), distribution_, rank_.cell_parts, stiffness_factor_,
+                          "factor(K)", log_);
 }
 
 const assembly::CondensedFactor& PrimalOperators::gram_factor() const {
-  return condensed_factor(*space_, 1.0, 1.0, trace_dofs(), distribution_, cell_parts_, gram_factor_, "factor(K+M)",
-                          log_);
+  return condensed_factor(*rank_.space, 1.0, 1.0, trace_dofs(), distribution_, rank_.cell_parts, gram_factor_,
+                          "factor(K+M)", log_);
 }
 
 void PrimalOperators::release_factors() const {
@@ -100,7 +96,7 @@ const linalg::Coupling& PrimalOperators::coupling(const space::MultiplierSpace& 
   auto found = couplings_.find(key);
   if (found == couplings_.end()) {
     Stopwatch clock;
-    found = couplings_.emplace(key, assembly::assemble_coupling(*space_, *contact_, multipliers, weight)).first;
+    found = couplings_.emplace(key, assembly::assemble_coupling(*rank_.space, *contact_, multipliers, weight)).first;
     if (log_) log_->record(name, found->second.rows(), found->second.cols(), clock.seconds());
   }
   return found->second;

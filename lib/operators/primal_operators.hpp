@@ -16,6 +16,7 @@
 #include "assembly/coupling.hpp"
 #include "core/operator_log.hpp"
 #include "mesh/contact_boundary.hpp"
+#include "operators/rank_space.hpp"
 #include "space/h1_space.hpp"
 #include "space/multiplier_space.hpp"
 
@@ -35,16 +36,16 @@ class PrimalOperators {
   /// The mesh the space lives on: the whole one, or distributed the rank's part (global_cell etc.
   /// give the whole mesh's indices), so that cell indices of space(), contact() and cell_parts()
   /// agree.
-  const mesh::Mesh& mesh() const { return space_->mesh(); }
+  const mesh::Mesh& mesh() const { return rank_.space->mesh(); }
   /// Whether the object was built on `mesh` (the whole mesh given to the constructor) with these
   /// degrees (compared on the space's cells).
   bool built_on(const mesh::Mesh& mesh, const std::vector<int>& cell_degrees) const;
   /// Distributed, the rank's own cells and Γ_C's only, with the whole space's dofs.
-  const space::H1Space& space() const { return *space_; }
+  const space::H1Space& space() const { return *rank_.space; }
   /// Distributed: the space without elimination on the same cells (a Dirichlet lift's extended
   /// space, which a part cannot number alone; space() itself without Γ_D); serial: null (the lift
   /// builds it).
-  const space::H1Space* lift_space() const { return kept_ ? kept_.get() : part_ ? space_.get() : nullptr; }
+  const space::H1Space* lift_space() const { return rank_.lift_space(); }
   const mesh::ContactBoundary& contact() const { return *contact_; }
 
   /// K factorized with the trace last ("factor(K)"), and A_G = K + M likewise ("factor(K+M)"),
@@ -72,20 +73,18 @@ class PrimalOperators {
   /// Distributed: the rank that eliminates each cell of mesh() (the rank's part: its own cells and
   /// Γ_C's), computed once (collectively, when the object is built) for both factorizations,
   /// weighted by the cells' unknowns; empty when serial (operators/rank_space.hpp).
-  const std::vector<int>& cell_parts() const { return cell_parts_; }
+  const std::vector<int>& cell_parts() const { return rank_.cell_parts; }
   OperatorLog* log() const { return log_; }
   linalg::Distribution distribution() const { return distribution_; }
 
  private:
-  const mesh::Mesh* whole_;           ///< the mesh given to the constructor
-  std::unique_ptr<mesh::Mesh> part_;  ///< distributed: the rank's part of it
-  std::unique_ptr<space::H1Space> space_, kept_;
+  const mesh::Mesh* whole_;     ///< the mesh given to the constructor
+  RankSpace rank_;              ///< the space (distributed: on the rank's part of the mesh) and its split
   bool has_dirichlet_ = false;  ///< whether some edge of the whole mesh is on Γ_D
   std::unique_ptr<mesh::ContactBoundary> contact_;
   OperatorLog* log_;
   linalg::Distribution distribution_;
   mutable std::unique_ptr<assembly::CondensedFactor> stiffness_factor_, gram_factor_;
-  std::vector<int> cell_parts_;
   mutable std::unique_ptr<std::vector<int>> trace_dofs_;
   mutable std::map<std::string, linalg::Coupling> couplings_;
   mutable std::map<std::string, Eigen::VectorXd> derived_vectors_;

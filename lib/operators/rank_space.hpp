@@ -28,6 +28,11 @@ struct RankSpace {
   std::unique_ptr<space::H1Space> kept;
   /// The rank that eliminates each cell of the space's mesh; empty when serial.
   std::vector<int> cell_parts;
+
+  /// Distributed: the space without elimination on the same cells (a Dirichlet lift's extended
+  /// space, which a part cannot number alone; `space` itself without Γ_D); serial: null (the lift
+  /// builds it from the whole mesh).
+  const space::H1Space* lift_space() const { return kept ? kept.get() : part ? space.get() : nullptr; }
 };
 
 using RollerMasks = std::array<std::vector<char>, space::kComponents>;
