@@ -1,9 +1,11 @@
 // Affine-cell congruence keys and the scalar cell system a K + b M.
 #include "assembly/cell_system.hpp"
 
+#include <array>
 #include <cmath>
 
 #include "mesh/cell_map.hpp"
+#include "mesh/reference_cell.hpp"
 
 namespace hpcontact::assembly {
 
@@ -28,6 +30,23 @@ std::vector<int> cell_work_weights(const CellSystem& system) {
   std::vector<int> weights(system.mesh().n_cells());
   for (int c = 0; c < system.mesh().n_cells(); ++c) weights[c] = system.cell_size(c);
   return weights;
+}
+
+std::vector<char> boundary_shapes(const space::H1Space& space, int cell) {
+  const auto& mesh = space.mesh();
+  const mesh::CellType type = mesh.cell_type(cell);
+  std::array<char, 4> edge_on{}, vertex_on{};
+  for (int e = 0; e < mesh.cell_size(cell); ++e) {
+    if (!mesh.is_boundary_edge(mesh.cell_edge(cell, e))) continue;
+    edge_on[e] = 1;
+    for (int v : mesh::local_edge_vertices(type, e)) vertex_on[v] = 1;
+  }
+  const auto& shapes = space.cell_shapes(cell);
+  std::vector<char> on(shapes.size(), 0);
+  for (std::size_t s = 0; s < shapes.size(); ++s)
+    if (shapes[s].role != space::ShapeRole::interior)
+      on[s] = (shapes[s].role == space::ShapeRole::vertex ? vertex_on : edge_on)[shapes[s].entity];
+  return on;
 }
 
 ScalarCellSystem::ScalarCellSystem(const space::H1Space& space, double stiffness_weight, double mass_weight)

@@ -29,6 +29,9 @@ class CellSystem {
  public:
   virtual ~CellSystem() = default;
   virtual const mesh::Mesh& mesh() const = 0;
+  /// The scalar space whose shapes carry the unknowns: the cell's unknown s is of its shape
+  /// s / field_count().
+  virtual const space::H1Space& scalar_space() const = 0;
   virtual int n_dofs() const = 0;
   /// Skeleton dofs are numbered 0 … n_skeleton_dofs() − 1, before every interior dof.
   virtual int n_skeleton_dofs() const = 0;
@@ -51,11 +54,19 @@ class CellSystem {
   virtual Eigen::MatrixXd null_motions(int /*cell*/) const { return Eigen::MatrixXd(0, 0); }
   /// The number of columns of null_motions (the same for every cell).
   virtual int null_motion_count() const { return 0; }
+  /// The fields of the unknowns (elasticity: the two displacement components), which a solver
+  /// that builds coarse constraints per field (BDDC's edge averages) must tell apart: the
+  /// cell's unknown s (in the order of cell_dofs) is of field s % field_count().
+  virtual int field_count() const { return 1; }
 };
 
 /// Each cell's unknowns (Dirichlet ones included): the weight by which the cells are split over
 /// ranks, so that parts of a mesh of mixed degrees eliminate and factorize about equal work.
 std::vector<int> cell_work_weights(const CellSystem& system);
+
+/// Which of the cell's shapes lie on the boundary of the space's mesh (vertex shapes of its
+/// vertices and edge modes of its edges there; a part's cut edges are not its boundary).
+std::vector<char> boundary_shapes(const space::H1Space& space, int cell);
 
 /// The key of an affine cell (parallelogram or straight triangle): its degree, vertex count and
 /// edge degrees and its Jacobian rounded to 1e-12 of the largest entry, with the cell's size (log
@@ -69,6 +80,7 @@ class ScalarCellSystem final : public CellSystem {
   ScalarCellSystem(const space::H1Space& space, double stiffness_weight, double mass_weight);
   const space::H1Space& space() const { return *space_; }
   const mesh::Mesh& mesh() const override { return space_->mesh(); }
+  const space::H1Space& scalar_space() const override { return *space_; }
   int n_dofs() const override { return space_->n_dofs(); }
   int n_skeleton_dofs() const override { return space_->n_skeleton_dofs(); }
   void cell_dofs(int cell, std::vector<CellDof>& out) const override;

@@ -121,7 +121,7 @@ CondensedFactor::CondensedFactor(std::unique_ptr<const CellSystem> system, const
       mumps_ = std::make_unique<linalg::DistributedCholesky>(ranks, n_skeleton, lower, trailing);
       break;
     case linalg::DistributedSolver::bddc:
-      bddc_ = std::make_unique<linalg::BddcSolver>(ranks, n_skeleton, lower, 1e-12, local_null_motions());
+      bddc_ = std::make_unique<linalg::BddcSolver>(ranks, n_skeleton, lower, 1e-12, local_bddc_hints());
       break;
   }
   // The skeleton solver's local unknowns are the skeleton dofs of the rank's cells (each has its
@@ -179,21 +179,30 @@ void CondensedFactor::find_local_dofs(std::vector<char> own_cells) {
   }
 }
 
-Eigen::MatrixXd CondensedFactor::local_null_motions() const {
-  const int k = system_->null_motion_count();  // (a rank may own no cell)
-  Eigen::MatrixXd motions = Eigen::MatrixXd::Zero(n_local_skeleton_, k);
-  if (k == 0) return motions;
+linalg::BddcHints CondensedFactor::local_bddc_hints() const {
+  linalg::BddcHints hints;
+  const int k = system_->null_motion_count(), fields = system_->field_count();
+  hints.near_null_space = Eigen::MatrixXd::Zero(n_local_skeleton_, k);  // (a rank may own no cell)
+  if (fields > 1) hints.fields.assign(n_local_skeleton_, 0);
+  std::vector<char> on_boundary(n_local_skeleton_, 0);
   std::vector<CellDof> dofs;
   for (int c = 0; c < static_cast<int>(block_of_cell_.size()); ++c) {
     if (block_of_cell_[c] < 0) continue;
     system_->cell_dofs(c, dofs);
-    const Eigen::MatrixXd cell = system_->null_motions(c);
+    const Eigen::MatrixXd motions = k > 0 ? system_->null_motions(c) : Eigen::MatrixXd();
+    const std::vector<char> boundary = boundary_shapes(system_->scalar_space(), c);
     const int* rows = cell_rows_.data() + cell_row_start_[c];
     // (a shared vertex gets the same values from each of its cells)
-    for (std::size_t s = 0; s < dofs.size(); ++s)
-      if (dofs[s].dof >= 0 && !dofs[s].interior) motions.row(rows[s]) = dofs[s].sign * cell.row(s);
+    for (std::size_t s = 0; s < dofs.size(); ++s) {
+      if (dofs[s].dof < 0 || dofs[s].interior) continue;
+      if (k > 0) hints.near_null_space.row(rows[s]) = dofs[s].sign * motions.row(s);
+      if (fields > 1) hints.fields[rows[s]] = static_cast<int>(s) % fields;
+      if (boundary[s / fields]) on_boundary[rows[s]] = 1;
+    }
   }
-  return motions;
+  for (int i = 0; i < n_local_skeleton_; ++i)
+    if (on_boundary[i]) hints.natural_boundary.push_back(i);
+  return hints;
 }
 
 Eigen::Index CondensedFactor::counted_local_row(int dof) const {
@@ -423,6 +432,17 @@ double CondensedFactor::cell_quadratic_forms(const Eigen::VectorXd& u, bool loca
   }
   if (distribution_.distributed()) sum_over_ranks(distribution_.ranks, &sum, 1);
   return sum;
+}
+
+std::optional<linalg::BddcIterations> CondensedFactor::iterations() const {
+  if (bddc_) return bddc_->iterations();
+  return std::nullopt;
+}
+
+void log_iterations(const CondensedFactor* factor, const std::string& name, OperatorLog* log) {
+  if (!factor || !log) return;
+  if (const auto counts = factor->iterations())
+    log->add_iterations(name, counts->solves, counts->total, counts->largest);
 }
 
 }  // namespace hpcontact::assembly

@@ -7,10 +7,13 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <memory>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "assembly/cell_system.hpp"
 #include "assembly/local_rows.hpp"
+#include "core/operator_log.hpp"
 #include "linalg/bddc_solver.hpp"
 #include "linalg/coupling_matrix.hpp"
 #include "linalg/distributed_cholesky.hpp"
@@ -96,6 +99,8 @@ class CondensedFactor {
   double quadratic_form(const Eigen::VectorXd& u) const;
   /// uᵀ A u for u held at local_dofs() (each rank its own). Collective.
   double quadratic_form_local(const Eigen::VectorXd& u_local) const;
+  /// The conjugate gradients' iterations so far (BDDC); empty for a direct solver.
+  std::optional<linalg::BddcIterations> iterations() const;
 
  private:
   struct CellBlock;
@@ -107,8 +112,9 @@ class CondensedFactor {
   /// The local row of `dof` if this rank holds it and is the lowest rank holding it, else −1: so
   /// that a product with B adds each of B's entries on one rank only.
   Eigen::Index counted_local_row(int dof) const;
-  /// The system's null motions at the local skeleton dofs (distributed; BDDC's near null space).
-  Eigen::MatrixXd local_null_motions() const;
+  /// The system's null motions, fields and boundary at the local skeleton dofs (distributed: what
+  /// BDDC learns of the rank's subdomain beyond its matrix).
+  linalg::BddcHints local_bddc_hints() const;
   /// S⁻¹ rhs on the skeleton, shape (n_skeleton, k).
   Eigen::MatrixXd skeleton_solve(const Eigen::MatrixXd& rhs) const;
   /// The same with each rank's share at its local skeleton dofs.
@@ -139,5 +145,9 @@ class CondensedFactor {
   /// Distributed: the cells are split over distribution_.ranks and per-cell work is summed over them.
   linalg::Distribution distribution_;
 };
+
+/// Adds the iterations of `factor`, recorded in `log` as `name`, to that record (a factor solved
+/// by iterations, once it is released: then its count is final). Nothing for a direct solver.
+void log_iterations(const CondensedFactor* factor, const std::string& name, OperatorLog* log);
 
 }  // namespace hpcontact::assembly

@@ -46,6 +46,7 @@ class ElasticCellSystem final : public CellSystem {
   ElasticCellSystem(const space::VectorSpace& space, std::vector<Material> materials, double mass_weight = 0.0,
                     std::optional<mesh::Point> centre = {});
   const mesh::Mesh& mesh() const override { return space_->scalar().mesh(); }
+  const space::H1Space& scalar_space() const override { return space_->scalar(); }
   int n_dofs() const override;
   int n_skeleton_dofs() const override;
   void cell_dofs(int cell, std::vector<CellDof>& out) const override;
@@ -57,6 +58,8 @@ class ElasticCellSystem final : public CellSystem {
   /// on affine cells (the vertex shapes reproduce linear functions), near elsewhere.
   Eigen::MatrixXd null_motions(int cell) const override;
   int null_motion_count() const override { return 3; }
+  /// The components x, y (cell_dofs interleaves them).
+  int field_count() const override { return space::kComponents; }
 
  private:
   const space::VectorSpace* space_;
@@ -72,6 +75,9 @@ class ComponentwiseCellSystem final : public CellSystem {
  public:
   ComponentwiseCellSystem(const space::VectorSpace& space, double stiffness_weight, double mass_weight);
   const mesh::Mesh& mesh() const override { return scalar_.mesh(); }
+  const space::H1Space& scalar_space() const override { return space_->scalar(); }
+  /// The components x, y (cell_dofs interleaves them).
+  int field_count() const override { return space::kComponents; }
   int n_dofs() const override;
   int n_skeleton_dofs() const override;
   void cell_dofs(int cell, std::vector<CellDof>& out) const override;

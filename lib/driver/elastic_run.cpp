@@ -290,9 +290,7 @@ nlohmann::json run_elastic_scene(const scene::Scene& scene, const SceneRunOption
       {"ndofs", operators.n_dofs()},
       {"nmult", d->multipliers->n_dofs()}};
   for (const auto effect : scene.effects) summary["effects"].push_back(scene::to_string(effect));
-  for (const auto& record : log.records())
-    summary["operators"].push_back(
-        {{"name", record.name}, {"rows", record.rows}, {"cols", record.cols}, {"seconds", record.seconds}});
+  summary["operators"] = operators_summary(log);
   for (const auto& effect : effects) summary[effect.name] = effect_summary(effect);
   if (!infsup.is_null()) summary["infsup"] = infsup;
   if (convergence)

@@ -141,8 +141,12 @@ void add_convergence_rows(const scene::Scene& scene, const std::vector<ContactEf
     refined_effects.push_back(std::make_unique<std::vector<ContactEffect>>(
         solve_contact_effects(refined, *d, primal, options, fmt::format(" (convergence level {})", k))));
     add_level_solutions(scene, *refined_effects.back(), primal, options, k, level_solutions);
-    for (const auto& record : level_log.records())
-      log.record(fmt::format("{} (convergence level {})", record.name, k), record.rows, record.cols, record.seconds);
+    primal.release_factors();  // (records their iterations)
+    for (const auto& record : level_log.records()) {
+      const std::string name = fmt::format("{} (convergence level {})", record.name, k);
+      log.record(name, record.rows, record.cols, record.seconds);
+      log.add_iterations(name, record.solves, record.iterations, record.most_iterations);
+    }
     levels.push_back({d.get(), refined_effects.back().get()});
     refined_meshes.push_back(std::move(d));
   }
@@ -192,9 +196,7 @@ void add_run_summary(const scene::Scene& scene, const SceneDiscretization& d, co
   summary["m"] = d.boundary_mesh->n_segments();
   summary["ndofs"] = primal.space().n_dofs();
   summary["nmult"] = d.multipliers->n_dofs();
-  for (const auto& record : log.records())
-    summary["operators"].push_back(
-        {{"name", record.name}, {"rows", record.rows}, {"cols", record.cols}, {"seconds", record.seconds}});
+  summary["operators"] = operators_summary(log);
 }
 
 }  // namespace
@@ -219,6 +221,18 @@ nlohmann::json infsup_effect(const scene::Scene& scene, const SceneDiscretizatio
   if (setup.elastic) j["primal_norm"] = operators::to_string(setup.primal_norm);
   if (!alpha.zone_alpha.empty()) j["zone_alpha"] = alpha.zone_alpha;
   return j;
+}
+
+nlohmann::json operators_summary(const OperatorLog& log) {
+  nlohmann::json operators = nlohmann::json::array();
+  for (const auto& record : log.records()) {
+    operators.push_back(
+        {{"name", record.name}, {"rows", record.rows}, {"cols", record.cols}, {"seconds", record.seconds}});
+    if (record.solves > 0)
+      operators.back()["iterations"] = {
+          {"solves", record.solves}, {"total", record.iterations}, {"most", record.most_iterations}};
+  }
+  return operators;
 }
 
 long long largest_degree(const std::vector<int>& degrees) { return *std::max_element(degrees.begin(), degrees.end()); }

@@ -77,6 +77,10 @@ std::string level_file_name(const std::string& problem, int level);
 /// solution_<problem>.pvd: the levels 0 … `finest` of a problem with the level as ParaView's time.
 OutputText level_collection(const std::string& problem, int finest, bool distributed);
 
+/// summary.json's "operators": each operator built, with its size and seconds, and for a
+/// factorization solved by iterations (BDDC) "iterations": {solves, total, most}.
+nlohmann::json operators_summary(const OperatorLog& log);
+
 /// The columns of convergence.csv and of the work–precision study's rows.
 std::vector<std::string> refinement_columns();
 /// The largest of a level's degrees: the numeric p and pC of a convergence row (a degree rule's

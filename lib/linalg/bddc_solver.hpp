@@ -26,6 +26,22 @@ struct BddcIterations {
   int largest = 0;
 };
 
+/// What a rank tells BDDC of the unknowns its entries touch (ascending, as local_unknowns()),
+/// beyond its matrix; each may be empty.
+struct BddcHints {
+  /// Motions of (almost) zero energy (elasticity's rigid motions): shape (local unknowns, k), equal
+  /// where ranks share an unknown, the same k on every rank. Attached to the matrix; BDDC adds them
+  /// to its coarse space under -bddc_pc_bddc_use_nnsp 1 (off by default: see the constructor).
+  Eigen::MatrixXd near_null_space;
+  /// The field (0, 1, …) of each local unknown (elasticity: the displacement component), so that
+  /// BDDC averages each field over an interface edge on its own. Empty: one field.
+  std::vector<int> fields;
+  /// The local unknowns (indices into local_unknowns(), ascending) on the boundary where the
+  /// problem imposes no Dirichlet condition: an interface edge that reaches it then ends in
+  /// primal vertices there.
+  std::vector<int> natural_boundary;
+};
+
 class BddcSolver {
  public:
   /// `lower_entries`: this rank's contributions (row ≥ col) to the lower triangle of the n × n
@@ -34,12 +50,9 @@ class BddcSolver {
   /// CHOLMOD's to 1e-13; round-off stalls CG near 1e-14 on these systems, so do not ask for less).
   /// PETSc options with the prefix "bddc_" (e.g. -bddc_ksp_monitor, -bddc_ksp_rtol 1e-10)
   /// adjust the solver. Collective on `ranks`, which must outlive the solver.
-  /// `near_null_space`: motions of (almost) zero energy at the unknowns this rank's entries touch
-  /// (ascending; equal where ranks share an unknown; the same number of columns on every rank),
-  /// e.g. elasticity's rigid motions, attached to the matrix; BDDC adds them to its coarse space
-  /// under -bddc_pc_bddc_use_nnsp 1 (off by default: see the constructor). Empty: none.
+  /// `hints`: what the rank knows of its subdomain's unknowns beyond the matrix (BddcHints).
   BddcSolver(MPI_Comm ranks, int n, const std::vector<Eigen::Triplet<double>>& lower_entries,
-             double relative_tolerance = 1e-12, const Eigen::MatrixXd& near_null_space = {});
+             double relative_tolerance = 1e-12, const BddcHints& hints = {});
   ~BddcSolver();
   BddcSolver(BddcSolver&&) noexcept;
   BddcSolver& operator=(BddcSolver&&) noexcept;

@@ -62,6 +62,12 @@ const std::vector<int>& ElasticOperators::trace_dofs() const {
   return *trace_dofs_;
 }
 
+namespace {
+
+std::string gram_factor_name(PrimalNorm norm) { return norm == PrimalNorm::h1 ? "factor(K+M)^2" : "factor(A+M)"; }
+
+}  // namespace
+
 const assembly::CondensedFactor& ElasticOperators::stiffness_factor() const {
   if (!stiffness_factor_) {
     if (!has_dirichlet_ && !rank_.vector_space->has_rollers())
@@ -80,6 +86,8 @@ const assembly::CondensedFactor& ElasticOperators::stiffness_factor() const {
 }
 
 void ElasticOperators::release_factors() const {
+  assembly::log_iterations(stiffness_factor_.get(), "factor(A)", log_);
+  for (const auto& [norm, factor] : gram_factors_) assembly::log_iterations(factor.get(), gram_factor_name(norm), log_);
   stiffness_factor_.reset();
   gram_factors_.clear();
 }
@@ -95,8 +103,7 @@ const assembly::CondensedFactor& ElasticOperators::gram_factor(PrimalNorm norm) 
       system = std::make_unique<assembly::ElasticCellSystem>(*rank_.vector_space, materials_, 1.0, rotation_centre_);
     slot =
         std::make_unique<assembly::CondensedFactor>(std::move(system), trace_dofs(), distribution_, rank_.cell_parts);
-    if (log_)
-      log_->record(norm == PrimalNorm::h1 ? "factor(K+M)^2" : "factor(A+M)", n_dofs(), n_dofs(), clock.seconds());
+    if (log_) log_->record(gram_factor_name(norm), n_dofs(), n_dofs(), clock.seconds());
   }
   return *slot;
 }

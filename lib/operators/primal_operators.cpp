@@ -85,6 +85,8 @@ const assembly::CondensedFactor& PrimalOperators::gram_factor() const {
 }
 
 void PrimalOperators::release_factors() const {
+  assembly::log_iterations(stiffness_factor_.get(), "factor(K)", log_);
+  assembly::log_iterations(gram_factor_.get(), "factor(K+M)", log_);
   stiffness_factor_.reset();
   gram_factor_.reset();
 }
