@@ -437,9 +437,9 @@ TEST(Cli, SolveUnderMpirunGivesTheSerialSolutionAndAlpha) {
     return rows;
   };
   // (scenes under studies/; the annulus is a curved Gmsh mesh whose cells are all eliminated apart;
-  // elasticity: the square clamped on one side (one of its 3 parts floats), the ring's parts all
-  // float, held by rollers; Dirichlet data lift the load, assembled whole and shared out, the
-  // others' by each rank's cells)
+  // elasticity: the square clamped on one side (one of its 3 parts floats), the ring held by
+  // rollers; Dirichlet data lift the load, assembled whole and shared out, the others' by each
+  // rank's cells)
   const auto scenes = scratch("solve_mpi_scenes");
   std::ofstream(scenes / "dirichlet_data.toml")
       << "[domain]\nn_x = 12\nn_y = 12\n[boundary]\ncontact = \"abs(y + 1) < 1e-9\"\n"
