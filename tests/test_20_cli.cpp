@@ -452,9 +452,10 @@ TEST(Cli, SolveUnderMpirunGivesTheSerialSolutionAndAlpha) {
       {HPCONTACT_SOURCE_DIR "/studies/elasticity/square", "frictionless,infsup"},
       {HPCONTACT_SOURCE_DIR "/studies/curved/ring", "frictionless"},
       {(scenes / "dirichlet_data").string(), "signorini"}};
-  // (the last: the ring's rigid motions in BDDC's coarse space, as PETSc's near null space)
+  // (the last: the ring without its rigid motions in BDDC's coarse space, which elastic scenes
+  // add by default as PETSc's near null space)
   const std::vector<std::pair<int, std::string>> launches{
-      {2, "substructuring"}, {3, "bddc"}, {2, "mumps"}, {3, "bddc -bddc_pc_bddc_use_nnsp 1"}};
+      {2, "substructuring"}, {3, "bddc"}, {2, "mumps"}, {3, "bddc -bddc_pc_bddc_use_nnsp 0"}};
   for (const auto& [scene, effects] : cases) {
     const auto dir = scratch("solve_mpi_" + scene.substr(scene.rfind('/') + 1));
     const std::string arguments = " solve " + scene + ".toml --effects " + effects;
@@ -476,7 +477,8 @@ TEST(Cli, SolveUnderMpirunGivesTheSerialSolutionAndAlpha) {
         EXPECT_NEAR(number_after(parallel.output, "alpha = "), alpha, 1e-10) << parallel.output;
       }
       // BDDC's iterations: told the fields and the natural boundary, CG on the elastic square
-      // needs at most 16 iterations per solve on 3 ranks (45 without: a part floats).
+      // needs at most 16 iterations per solve on 3 ranks without the near null space, 13 with it
+      // (45 without either hint: a part floats); the ring without the near null space 24.
       if (solver.starts_with("bddc")) {
         std::ifstream file(dir / "parallel" / "summary.json");
         const auto operators = nlohmann::json::parse(file)["operators"];
@@ -484,7 +486,7 @@ TEST(Cli, SolveUnderMpirunGivesTheSerialSolutionAndAlpha) {
         for (const auto& record : operators)
           if (record.contains("iterations")) {
             ++factors;
-            EXPECT_LE(record["iterations"]["most"].get<int>(), 25) << scene << ", " << record["name"];
+            EXPECT_LE(record["iterations"]["most"].get<int>(), 30) << scene << ", " << record["name"];
           }
         EXPECT_GE(factors, 1) << scene << ": no factor reported its iterations in " << operators.dump();
       }

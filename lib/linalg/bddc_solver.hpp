@@ -30,8 +30,8 @@ struct BddcIterations {
 /// beyond its matrix; each may be empty.
 struct BddcHints {
   /// Motions of (almost) zero energy (elasticity's rigid motions): shape (local unknowns, k), equal
-  /// where ranks share an unknown, the same k on every rank. Attached to the matrix; BDDC adds them
-  /// to its coarse space under -bddc_pc_bddc_use_nnsp 1 (off by default: see the constructor).
+  /// where ranks share an unknown, the same k on every rank (or none). Attached to the matrix as
+  /// PETSc's near null space, which BDDC adds to its coarse space (-bddc_pc_bddc_use_nnsp 0: not).
   Eigen::MatrixXd near_null_space;
   /// The field (0, 1, …) of each local unknown (elasticity: the displacement component), so that
   /// BDDC averages each field over an interface edge on its own. Empty: one field.
