@@ -173,10 +173,10 @@ BddcSolver::BddcSolver(MPI_Comm ranks, int n, const std::vector<Eigen::Triplet<d
   // nearly flat in the ranks (elastic square n = 32: 16.5 … 19.2 per solve, against 19.7 … 29
   // without). Before, it made the preconditioner indefinite on the 8 × 8 square on 3 ranks.
   const Eigen::MatrixXd& near_null_space = hints.near_null_space;
-  PetscBool use_motions = near_null_space.cols() > 0 ? PETSC_TRUE : PETSC_FALSE, user_chose = PETSC_FALSE;
-  HPC_PETSC_CALL(PetscOptionsGetBool(nullptr, nullptr, "-bddc_pc_bddc_use_nnsp", &use_motions, &user_chose));
   int motion_columns = static_cast<int>(near_null_space.cols());
   MPI_Allreduce(MPI_IN_PLACE, &motion_columns, 1, MPI_INT, MPI_MAX, ranks);
+  PetscBool use_motions = motion_columns > 0 ? PETSC_TRUE : PETSC_FALSE, user_chose = PETSC_FALSE;
+  HPC_PETSC_CALL(PetscOptionsGetBool(nullptr, nullptr, "-bddc_pc_bddc_use_nnsp", &use_motions, &user_chose));
   if (use_motions && motion_columns > 0) {
     // (agreed over the ranks: one rank failing alone would leave the others in the scatter below)
     int fits = near_null_space.rows() == n_local && near_null_space.cols() == motion_columns ? 1 : 0;
