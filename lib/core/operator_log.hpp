@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace hpcontact {
@@ -23,6 +24,8 @@ class OperatorLog {
   void record(std::string name, long long rows, long long cols, double seconds) {
     records_.push_back({std::move(name), rows, cols, seconds});
   }
+  /// A record made elsewhere (e.g. another log's, renamed).
+  void append(OperatorRecord record) { records_.push_back(std::move(record)); }
   /// Adds iteration counts to the latest record of `name` (none: nothing).
   void add_iterations(const std::string& name, long long solves, long long iterations, int most_iterations) {
     for (auto r = records_.rbegin(); r != records_.rend(); ++r)

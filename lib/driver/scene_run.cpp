@@ -142,10 +142,9 @@ void add_convergence_rows(const scene::Scene& scene, const std::vector<ContactEf
         solve_contact_effects(refined, *d, primal, options, fmt::format(" (convergence level {})", k))));
     add_level_solutions(scene, *refined_effects.back(), primal, options, k, level_solutions);
     primal.release_factors();  // (records their iterations)
-    for (const auto& record : level_log.records()) {
-      const std::string name = fmt::format("{} (convergence level {})", record.name, k);
-      log.record(name, record.rows, record.cols, record.seconds);
-      log.add_iterations(name, record.solves, record.iterations, record.most_iterations);
+    for (auto record : level_log.records()) {
+      record.name = fmt::format("{} (convergence level {})", record.name, k);
+      log.append(std::move(record));
     }
     levels.push_back({d.get(), refined_effects.back().get()});
     refined_meshes.push_back(std::move(d));
