@@ -96,18 +96,22 @@ DistributedCholesky::DistributedCholesky(MPI_Comm ranks, int n,
   HPC_PETSC_CALL(MatSetPreallocationCOO(a, static_cast<PetscCount>(rows.size()), rows.data(), cols.data()));
   HPC_PETSC_CALL(MatSetValuesCOO(a, values.data(), ADD_VALUES));
   HPC_PETSC_CALL(MatSetOption(a, MAT_SYMMETRIC, PETSC_TRUE));
-  HPC_PETSC_CALL(MatSetOption(a, MAT_SPD, PETSC_TRUE));
+  // Declared positive definite, MUMPS runs its SYM = 1 LDLᵀ, whose Schur complement comes back
+  // under mpirun with zero off-diagonal entries (PETSc 3.18.5, MUMPS 5.5: S_T off by 80 % in
+  // test_07 on 2 and 3 ranks, right on one). With a Schur set the matrix is therefore declared
+  // symmetric only: MUMPS's SYM = 2 LDLᵀ (with pivoting) returns S_T to 1e-14 on 1–3 ranks, in
+  // less memory and time than the LU used before (see docs/results.md). Without a Schur set it
+  // stays SYM = 1: ScaLAPACK then factorizes the root front, and only its Cholesky (SYM = 1)
+  // refuses an indefinite one there; SYM = 2 would count no negative pivots in it (PETSc asks
+  // for ICNTL(13) = 1 before it reports an inertia).
+  if (trailing.empty()) HPC_PETSC_CALL(MatSetOption(a, MAT_SPD, PETSC_TRUE));
   HPC_PETSC_CALL(MatGetOwnershipRange(a, &impl_->row_begin, &impl_->row_end));
   std::vector<int> touched(rows.begin(), rows.end());
   std::sort(touched.begin(), touched.end());
   touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
   impl_->exchange.emplace(ranks, n, impl_->row_begin, impl_->row_end, std::move(touched));
   Mat& f = *impl_->factor.out();
-  // With a Schur set the factorization is MUMPS's LU: its symmetric Schur complement comes back
-  // under mpirun with the off-diagonal entries zero (PETSc 3.18.5, MUMPS 5.5; tried: LU gives
-  // CHOLMOD's S_T to 1e-15 on 1-3 ranks, Cholesky only on one).
-  const MatFactorType type = trailing.empty() ? MAT_FACTOR_CHOLESKY : MAT_FACTOR_LU;
-  HPC_PETSC_CALL(MatGetFactor(a, MATSOLVERMUMPS, type, &f));
+  HPC_PETSC_CALL(MatGetFactor(a, MATSOLVERMUMPS, MAT_FACTOR_CHOLESKY, &f));
   if (!trailing.empty()) {
     // PETSc's MUMPS interface takes a parallel Schur set only when rank 0 holds all of it: S_T
     // comes back whole on rank 0.
@@ -121,13 +125,8 @@ DistributedCholesky::DistributedCholesky(MPI_Comm ranks, int n,
   }
   MatFactorInfo info;
   HPC_PETSC_CALL(MatFactorInfoInitialize(&info));
-  if (type == MAT_FACTOR_CHOLESKY) {
-    HPC_PETSC_CALL(MatCholeskyFactorSymbolic(f, a, nullptr, &info));
-    HPC_PETSC_CALL(MatCholeskyFactorNumeric(f, a, &info));
-  } else {
-    HPC_PETSC_CALL(MatLUFactorSymbolic(f, a, nullptr, nullptr, &info));
-    HPC_PETSC_CALL(MatLUFactorNumeric(f, a, &info));
-  }
+  HPC_PETSC_CALL(MatCholeskyFactorSymbolic(f, a, nullptr, &info));
+  HPC_PETSC_CALL(MatCholeskyFactorNumeric(f, a, &info));
   MatFactorError error = MAT_FACTOR_NOERROR;
   HPC_PETSC_CALL(MatFactorGetError(f, &error));
   if (error != MAT_FACTOR_NOERROR) {
@@ -144,9 +143,10 @@ DistributedCholesky::DistributedCholesky(MPI_Comm ranks, int n,
         fmt::format("MUMPS's factorization of a {0}x{0} matrix failed: INFOG(1) = {1}, INFOG(2) = {2} ({3})", n, infog1,
                     infog2, meaning));
   }
-  if (type == MAT_FACTOR_CHOLESKY) {
-    // MUMPS's LDLᵀ of a matrix declared positive definite runs to the end over negative pivots
-    // and only counts them (INFOG(12), the same on every rank).
+  {
+    // MUMPS's LDLᵀ runs to the end over negative pivots and only counts them (INFOG(12), the
+    // same on every rank). With a Schur set the root front is S_T itself, not factorized by
+    // ScaLAPACK, so the count covers all of A_II; S_T's own Cholesky below checks the rest.
     PetscInt negative = 0;
     HPC_PETSC_CALL(MatMumpsGetInfog(f, 12, &negative));
     if (negative > 0)
