@@ -138,6 +138,8 @@ DistributedCholesky::DistributedCholesky(MPI_Comm ranks, int n,
                           : infog1 == -8 || infog1 == -9 || infog1 == -14 || infog1 == -15 || infog1 == -17
                               ? "its workspace was too small: raise -mat_mumps_icntl_14 (percent of extra space)"
                           : infog1 == -13 ? "out of memory"
+                          : infog1 == -38 ? "parallel analysis (-mat_mumps_icntl_28 2) needs PT-Scotch or ParMETIS, "
+                                            "which this MUMPS lacks"
                                           : "see MUMPS's manual for INFOG(1)";
     throw NumericalError(
         fmt::format("MUMPS's factorization of a {0}x{0} matrix failed: INFOG(1) = {1}, INFOG(2) = {2} ({3})", n, infog1,
