@@ -597,6 +597,17 @@ TEST(ElasticScenes, ConvergenceEffectRefinesTheElasticProblems) {
   ASSERT_EQ(energies.size(), 4u);
   for (std::size_t k = 1; k < energies.size(); ++k) EXPECT_LT(energies[k], energies[k - 1]) << "level " << k;
   for (std::size_t k = 1; k + 1 < errors.size(); ++k) EXPECT_LT(errors[k], 0.5 * errors[k - 1]) << "level " << k;
+  // Each refined level's operators are in summary.json under its own name, its factor of A with
+  // them (factorized once per level).
+  std::ifstream file(dir / "out" / "summary.json");
+  const auto operators = nlohmann::json::parse(file)["operators"];
+  for (int level = 1; level <= 3; ++level) {
+    const std::string suffix = " (convergence level " + std::to_string(level) + ")";
+    int factors = 0;
+    for (const auto& record : operators)
+      if (record["name"].get<std::string>() == "factor(A)" + suffix) ++factors;
+    EXPECT_EQ(factors, 1) << "level " << level << " in " << operators.dump();
+  }
 }
 
 TEST(ElasticScenes, HalfModelWithASymmetryRollerGivesHalfTheFullModel) {

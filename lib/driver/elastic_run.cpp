@@ -149,28 +149,34 @@ SolutionFile elastic_solution_file(const std::string& name, const ElasticEffect&
 // The convergence effect: the scene's elastic problems on `convergence_refinements` uniform
 // refinements beyond its own mesh, each level with its own operators; errors of the energy and
 // of the pressure (L²(Γ_C)) against the finest level. With output "vtu" every level's
-// displacement goes into `level_solutions`, with one PVD per problem into `files`.
+// displacement goes into `level_solutions`, with one PVD per problem into `files`. Each level's
+// operators go into `log`, its factors freed once its problems are solved (its files need only its
+// space).
 io::CsvTable elastic_convergence(const scene::Scene& scene, const SceneDiscretization& base_mesh,
                                  const operators::ElasticOperators& base_operators,
                                  const std::vector<ElasticEffect>& base, const SceneRunOptions& options,
-                                 std::vector<SolutionFile>& level_solutions, std::vector<OutputText>& files) {
+                                 OperatorLog& log, std::vector<SolutionFile>& level_solutions,
+                                 std::vector<OutputText>& files) {
   struct Level {
     std::unique_ptr<SceneDiscretization> own;
     const SceneDiscretization* d;
+    std::unique_ptr<OperatorLog> log;  ///< (before `operators`, which refer to it)
     std::unique_ptr<operators::ElasticOperators> operators;
     std::vector<ElasticEffect> effects;
   };
   std::vector<Level> levels;
-  levels.push_back({nullptr, &base_mesh, nullptr, {}});
+  levels.push_back({nullptr, &base_mesh, nullptr, nullptr, {}});
   for (int k = 1; k <= scene.convergence_refinements; ++k) {
     scene::Scene refined = scene;
     refined.refinements += k;
-    Level level{discretize_scene(refined), nullptr, nullptr, {}};
+    Level level{discretize_scene(refined), nullptr, std::make_unique<OperatorLog>(), nullptr, {}};
     level.d = level.own.get();
     level.operators =
-        scene_elastic_operators(refined, level.d->mesh, level.d->cell_degrees, nullptr, options.distribution);
+        scene_elastic_operators(refined, level.d->mesh, level.d->cell_degrees, level.log.get(), options.distribution);
     level.effects =
         solve_elastic_effects(refined, *level.d, *level.operators, options, fmt::format(" (convergence level {})", k));
+    level.operators->release_factors();  // (records their iterations)
+    append_level_log(*level.log, k, log);
     levels.push_back(std::move(level));
   }
   io::CsvTable table(refinement_columns());
@@ -269,7 +275,7 @@ nlohmann::json run_elastic_scene(const scene::Scene& scene, const SceneRunOption
   std::vector<SolutionFile> solutions;
   std::vector<OutputText> level_files;
   if (scene.has_effect(scene::Effect::convergence))
-    convergence = elastic_convergence(scene, *d, operators, effects, options, solutions, level_files);
+    convergence = elastic_convergence(scene, *d, operators, effects, options, log, solutions, level_files);
   std::optional<io::CsvTable> mode;
   nlohmann::json infsup;
   if (scene.has_effect(scene::Effect::infsup)) {

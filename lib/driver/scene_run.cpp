@@ -142,10 +142,7 @@ void add_convergence_rows(const scene::Scene& scene, const std::vector<ContactEf
         solve_contact_effects(refined, *d, primal, options, fmt::format(" (convergence level {})", k))));
     add_level_solutions(scene, *refined_effects.back(), primal, options, k, level_solutions);
     primal.release_factors();  // (records their iterations)
-    for (auto record : level_log.records()) {
-      record.name = fmt::format("{} (convergence level {})", record.name, k);
-      log.append(std::move(record));
-    }
+    append_level_log(level_log, k, log);
     levels.push_back({d.get(), refined_effects.back().get()});
     refined_meshes.push_back(std::move(d));
   }
@@ -252,6 +249,13 @@ OutputText level_collection(const std::string& problem, int finest, bool distrib
   for (int k = 0; k <= finest; ++k)
     entries.push_back({static_cast<double>(k), solution_file_name(level_file_name(problem, k), distributed)});
   return {"solution_" + problem + ".pvd", io::pvd_text(entries)};
+}
+
+void append_level_log(const OperatorLog& level_log, int level, OperatorLog& log) {
+  for (auto record : level_log.records()) {
+    record.name = fmt::format("{} (convergence level {})", record.name, level);
+    log.append(std::move(record));
+  }
 }
 
 std::vector<std::string> refinement_columns() {

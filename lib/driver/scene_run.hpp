@@ -81,6 +81,10 @@ OutputText level_collection(const std::string& problem, int finest, bool distrib
 /// factorization solved by iterations (BDDC) "iterations": {solves, total, most}.
 nlohmann::json operators_summary(const OperatorLog& log);
 
+/// Appends the operator records of convergence level `level` to the run's `log`, each named
+/// "<name> (convergence level <level>)".
+void append_level_log(const OperatorLog& level_log, int level, OperatorLog& log);
+
 /// The columns of convergence.csv and of the work–precision study's rows.
 std::vector<std::string> refinement_columns();
 /// The largest of a level's degrees: the numeric p and pC of a convergence row (a degree rule's
