@@ -188,9 +188,11 @@ BddcSolver::BddcSolver(MPI_Comm ranks, int n, const std::vector<Eigen::Triplet<d
     HPC_VERIFY(fits, "BDDC: near null space not at the ranks' unknowns");
     set_near_null_space(a, impl_->exchange->consistent_to_owned(near_null_space));
   }
-  // 3. CG + BDDC with PETSc's default (multiplicity) scaling: deluxe scaling fails in Debian 12's
-  // PETSc 3.18 with MUMPS 5.5 (INFOG(1) = -46 in PCBDDCSetUpCorrection); -bddc_pc_bddc_use_deluxe_scaling
-  // turns it on where the stack allows.
+  // 3. CG + BDDC with PETSc's default (multiplicity) scaling. -bddc_pc_bddc_use_deluxe_scaling
+  // saves 0-28 % of the iterations on the scenes measured (docs/user_guide.md), but in Debian 12's
+  // PETSc 3.18 with MUMPS 5.5 it fails on some splits (INFOG(1) = -46, a solve with no right-hand
+  // side, in PCBDDCSetUpCorrection; -8 in the deluxe Schur complements; both on test_07's graph
+  // Laplacian): an option, not the default.
   KSP& ksp = *impl_->ksp.out();
   HPC_PETSC_CALL(KSPCreate(ranks, &ksp));
   HPC_PETSC_CALL(KSPSetOptionsPrefix(ksp, "bddc_"));
