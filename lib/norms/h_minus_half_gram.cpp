@@ -184,6 +184,9 @@ ExtensionReferenceFactor::ExtensionReferenceFactor(const mesh::Mesh& mesh, const
   if (fine_->has_curved_cells()) graded_ = false;
   for (int& p : degrees) p += reference.extra_degree;
   operators_ = std::make_unique<operators::PrimalOperators>(*fine_, std::move(degrees), nullptr, distribution);
+  // Distributed, the operators hold the rank's part of S_ref: the whole refined mesh goes before
+  // the factorization, the run's peak, instead of staying on every rank with it.
+  if (distribution.distributed()) fine_.reset();
   operators_->gram_factor();
 }
 

@@ -65,7 +65,8 @@ ExtensionReference extension_reference_at(int level);
 class ExtensionReferenceFactor {
  public:
   /// `grading_points`: arc lengths on Γ_C of `mesh`. `distribution`: K + M factorized over its
-  /// ranks (each of them builds S_ref whole, and all make the same calls), or serial.
+  /// ranks (each of them builds S_ref's mesh whole, keeps its part, and all make the same calls),
+  /// or serial.
   ExtensionReferenceFactor(const mesh::Mesh& mesh, const std::vector<int>& cell_degrees,
                            const ExtensionReference& reference, const std::vector<double>& grading_points = {},
                            linalg::Distribution distribution = {});
@@ -77,7 +78,7 @@ class ExtensionReferenceFactor {
 
  private:
   bool graded_ = false;
-  std::unique_ptr<mesh::Mesh> fine_;
+  std::unique_ptr<mesh::Mesh> fine_;  ///< S_ref's mesh, whole; distributed, freed once the operators hold their part
   std::unique_ptr<operators::PrimalOperators> operators_;
 };
 

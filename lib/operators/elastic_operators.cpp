@@ -18,7 +18,7 @@ ElasticOperators::ElasticOperators(const mesh::Mesh& mesh, std::vector<int> cell
                                    std::vector<assembly::Material> materials, OperatorLog* log,
                                    const std::array<std::vector<char>, space::kComponents>& fixed,
                                    linalg::Distribution distribution)
-    : whole_(&mesh),
+    : whole_(mesh),
       has_dirichlet_(mesh.has_part(mesh::BoundaryPart::dirichlet)),
       materials_(std::move(materials)),
       log_(log),
@@ -41,7 +41,7 @@ ElasticOperators::ElasticOperators(const mesh::Mesh& mesh, std::vector<int> cell
 ElasticOperators::~ElasticOperators() = default;
 
 bool ElasticOperators::built_on(const mesh::Mesh& mesh, const std::vector<int>& cell_degrees) const {
-  return space_built_on(*rank_.space, *whole_, mesh, cell_degrees);
+  return space_built_on(*rank_.space, whole_, mesh, cell_degrees);
 }
 
 const std::vector<int>& ElasticOperators::trace_dofs() const {

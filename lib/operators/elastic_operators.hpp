@@ -29,7 +29,8 @@ std::string to_string(PrimalNorm norm);
 
 class ElasticOperators {
  public:
-  /// `mesh` (and `log`, when given) must outlive the object; `materials` one per cell.
+  /// `mesh` and `log` as for PrimalOperators (distributed, `mesh` may be freed once the object is
+  /// built); `materials` one per cell.
   /// Γ_D clamps both components (u = 0 there); `fixed[c]` marks the boundary edges where
   /// component c alone vanishes (rollers; see space::VectorSpace).
   /// `distribution` other than serial: the factors are factorized over its ranks (every one of
@@ -75,8 +76,8 @@ class ElasticOperators {
   linalg::Distribution distribution() const { return distribution_; }
 
  private:
-  const mesh::Mesh* whole_;  ///< the mesh given to the constructor
-  RankSpace rank_;           ///< the space (distributed: on the rank's part of the mesh) and its split
+  MeshIdentity whole_;  ///< the mesh given to the constructor
+  RankSpace rank_;      ///< the space (distributed: on the rank's part of the mesh) and its split
   bool has_dirichlet_ = false;
   /// The rigid rotation's centre for BDDC's near null space: the whole mesh's vertex centroid, the
   /// same on every rank.

@@ -16,7 +16,7 @@ namespace hpcontact::operators {
 
 PrimalOperators::PrimalOperators(const mesh::Mesh& mesh, std::vector<int> cell_degrees, OperatorLog* log,
                                  linalg::Distribution distribution)
-    : whole_(&mesh),
+    : whole_(mesh),
       has_dirichlet_(mesh.has_part(mesh::BoundaryPart::dirichlet)),
       log_(log),
       distribution_(distribution) {
@@ -31,7 +31,7 @@ PrimalOperators::PrimalOperators(const mesh::Mesh& mesh, std::vector<int> cell_d
 PrimalOperators::~PrimalOperators() = default;
 
 bool PrimalOperators::built_on(const mesh::Mesh& mesh, const std::vector<int>& cell_degrees) const {
-  return space_built_on(*rank_.space, *whole_, mesh, cell_degrees);
+  return space_built_on(*rank_.space, whole_, mesh, cell_degrees);
 }
 
 const std::vector<int>& PrimalOperators::trace_dofs() const {

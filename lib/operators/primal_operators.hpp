@@ -24,7 +24,9 @@ namespace hpcontact::operators {
 
 class PrimalOperators {
  public:
-  /// `mesh` (and `log`, when given) must outlive the object. Builds the space and Γ_C only, and,
+  /// `log`, when given, must outlive the object, and so must `mesh` when serial (the space lives on
+  /// it); distributed, the object keeps only the rank's part, and `mesh` may be freed once it is
+  /// built (built_on then cannot be asked of it). Builds the space and Γ_C only, and,
   /// distributed, splits the cells over the ranks first (collectively: operators/rank_space.hpp)
   /// and builds everything on the rank's part of the mesh (its own cells and Γ_C's).
   /// `distribution` other than serial: the factors are factorized over its ranks (every one of
@@ -78,7 +80,7 @@ class PrimalOperators {
   linalg::Distribution distribution() const { return distribution_; }
 
  private:
-  const mesh::Mesh* whole_;     ///< the mesh given to the constructor
+  MeshIdentity whole_;          ///< the mesh given to the constructor
   RankSpace rank_;              ///< the space (distributed: on the rank's part of the mesh) and its split
   bool has_dirichlet_ = false;  ///< whether some edge of the whole mesh is on Γ_D
   std::unique_ptr<mesh::ContactBoundary> contact_;

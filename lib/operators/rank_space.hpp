@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -43,9 +44,23 @@ using RollerMasks = std::array<std::vector<char>, space::kComponents>;
 RankSpace build_rank_space(const mesh::Mesh& mesh, std::vector<int> cell_degrees, const mesh::ContactBoundary& contact,
                            linalg::Distribution distribution, const RollerMasks* rollers = nullptr);
 
-/// Whether `space`, built from `built_from` (the whole mesh given to build_rank_space), is of
-/// `mesh` with these degrees (compared on the space's cells): a shared operator object's check.
-bool space_built_on(const space::H1Space& space, const mesh::Mesh& built_from, const mesh::Mesh& mesh,
+/// What an operator object remembers of the whole mesh it was built from: its address and sizes,
+/// compared, never dereferenced, so that a distributed run may free the whole mesh once the
+/// object holds its part (the address alone could be reused by a later mesh).
+class MeshIdentity {
+ public:
+  explicit MeshIdentity(const mesh::Mesh& mesh);
+  /// Whether `mesh` is the mesh this identity was taken of (as far as address and sizes tell).
+  bool is(const mesh::Mesh& mesh) const;
+
+ private:
+  std::uintptr_t address_;
+  int cells_, vertices_, edges_;
+};
+
+/// Whether `space`, built from the whole mesh `built_from` identifies, is of `mesh` with these
+/// degrees (compared on the space's cells): a shared operator object's check.
+bool space_built_on(const space::H1Space& space, const MeshIdentity& built_from, const mesh::Mesh& mesh,
                     const std::vector<int>& cell_degrees);
 
 }  // namespace hpcontact::operators
