@@ -11,9 +11,12 @@
 //             76 unknowns, more than twice what 2 strips share)
 //     indefinite: one Dirichlet diagonal is −50 and one on the trailing row too (the
 //     factorization must fail on every rank; exit 5 if the solver accepted the matrix)
-//     untouched: the matrix has one more unknown than the grid, which no entry touches (the
-//     factorization must fail on every rank, exit 5 otherwise)
+//     untouched: the matrix has one more unknown than the grid, which no entry touches (outside
+//     the trailing set: the factorization must fail on every rank, exit 5 otherwise; mumps or
+//     substructuring)
 //     indefinite_plain: as indefinite, factorized without a trailing set
+//     indefinite_interior: the −50 on the Dirichlet row only, none on the trailing row (A_II is
+//     indefinite, S_T alone would not tell)
 //
 //   distributed_factor_check interface N M [indefinite]
 //     substructuring's interface problem alone (InterfaceCholesky): an N × N matrix, its last M
@@ -47,7 +50,8 @@ double relative_difference(const Eigen::MatrixXd& value, const Eigen::MatrixXd& 
   return (value - reference).cwiseAbs().maxCoeff() / reference.cwiseAbs().maxCoeff();
 }
 
-int run(const std::string& solver, const std::string& split, bool indefinite, bool untouched, bool plain) {
+int run(const std::string& solver, const std::string& split, bool indefinite, bool untouched, bool plain,
+        bool interior_only) {
   // (not a structured binding: clang 14 refuses to capture one in the lambda below)
   const int rank = mpi_rank_and_size().first, ranks = mpi_rank_and_size().second;
   const int n = kNx * kNy;
@@ -89,7 +93,7 @@ int run(const std::string& solver, const std::string& split, bool indefinite, bo
     for (int i = 0; i < kNx; ++i) trailing.push_back(node(i, 1));
     for (int j = 2; j < kNy; ++j) trailing.push_back(node(0, j)), trailing.push_back(node(kNx - 1, j));
   }
-  if (indefinite) add_element({{node(kNx / 2, 0), node(kNx / 2, 0), -50.0}}, 0);
+  if (indefinite && !interior_only) add_element({{node(kNx / 2, 0), node(kNx / 2, 0), -50.0}}, 0);
   std::vector<Eigen::Triplet<double>> b_entries;
   for (int r = 0; r < 10; ++r)
     for (int k = 0; k < 5; ++k) b_entries.emplace_back(r, trailing[(3 * r + 5 * k) % kNx], value(random));
@@ -144,8 +148,12 @@ int run(const std::string& solver, const std::string& split, bool indefinite, bo
     if (rank == 0) fmt::print("error: {} accepted an indefinite matrix\n", solver);
     return 5;
   }
-  if (untouched) {
-    const linalg::SubstructuredCholesky factor(MPI_COMM_WORLD, n + 1, mine, trailing);
+  if (untouched) {  // (an unknown outside the trailing set: A_II is singular)
+    if (solver == "mumps") {
+      const linalg::DistributedCholesky factor(MPI_COMM_WORLD, n + 1, mine, trailing);
+    } else {
+      const linalg::SubstructuredCholesky factor(MPI_COMM_WORLD, n + 1, mine, trailing);
+    }
     if (rank == 0) fmt::print("error: an unknown without entries was accepted\n");
     return 5;
   }
@@ -252,8 +260,9 @@ int main(int argc, char** argv) {
       throw_bad_input("distributed_factor_check", "arguments", std::to_string(argc - 1), "interface N M [indefinite]");
     if (std::string(argv[1]) == "interface")
       return run_interface(std::stoi(argv[2]), std::stoi(argv[3]), argc > 4 && std::string(argv[4]) == "indefinite");
-    const bool plain = mode == "indefinite_plain";
-    return run(argv[1], argv[2], mode == "indefinite" || plain, mode == "untouched", plain);
+    const bool plain = mode == "indefinite_plain", interior_only = mode == "indefinite_interior";
+    return run(argv[1], argv[2], mode == "indefinite" || plain || interior_only, mode == "untouched", plain,
+               interior_only);
   } catch (const std::exception& error) {
     if (mpi_rank_and_size().first == 0) fmt::print("error: {}\n", error.what());
     return 3;

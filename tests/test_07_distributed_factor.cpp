@@ -212,6 +212,14 @@ TEST(DistributedFactor, IndefiniteMatrixFailsOnEveryRankWithAClearMessage) {
       EXPECT_EQ(run.exit_code, 3) << solver << ", " << ranks << " ranks\n" << run.output;
       EXPECT_NE(run.output.find("not positive definite"), std::string::npos) << run.output;
     }
+  // Indefinite in A_II alone, S_T positive definite: LU with a Schur set accepted this (MUMPS's
+  // LDLᵀ counts the negative pivot).
+  for (const char* solver : {"substructuring", "mumps"})
+    for (int ranks : {1, 2, 3}) {
+      const auto run = run_command(check_command(ranks, std::string(solver) + " strips indefinite_interior"));
+      EXPECT_EQ(run.exit_code, 3) << solver << ", " << ranks << " ranks\n" << run.output;
+      EXPECT_NE(run.output.find("not positive definite"), std::string::npos) << run.output;
+    }
   // Without a trailing set (MUMPS's Cholesky, which counts negative pivots instead of stopping).
   for (const char* solver : {"substructuring", "mumps"})
     for (int ranks : {1, 2}) {
@@ -221,13 +229,18 @@ TEST(DistributedFactor, IndefiniteMatrixFailsOnEveryRankWithAClearMessage) {
     }
 }
 
-// An unknown that no rank's entries touch (found by the ranks' directory of shared unknowns, no
-// array of the global length): the same message on every rank, exit 3.
-TEST(DistributedFactor, SubstructuringRefusesAnUnknownWithoutEntriesOnEveryRank) {
+// An unknown that no rank's entries touch: substructuring finds it by the ranks' directory of
+// shared unknowns (no array of the global length), MUMPS as a null pivot (with a Schur set its
+// LDLᵀ would otherwise pivot past it and factorize a singular matrix); the same message on every
+// rank, exit 3.
+TEST(DistributedFactor, SubstructuringAndMumpsRefuseAnUnknownWithoutEntriesOnEveryRank) {
   for (int ranks : {1, 2, 3}) {
     const auto run = run_command(check_command(ranks, "substructuring strips untouched"));
     EXPECT_EQ(run.exit_code, 3) << ranks << " ranks\n" << run.output;
     EXPECT_NE(run.output.find("unknown 384 of 385 has no entries"), std::string::npos) << run.output;
+    const auto mumps = run_command(check_command(ranks, "mumps strips untouched"));
+    EXPECT_EQ(mumps.exit_code, 3) << ranks << " ranks\n" << mumps.output;
+    EXPECT_NE(mumps.output.find("null pivot: the matrix is singular"), std::string::npos) << mumps.output;
   }
 }
 

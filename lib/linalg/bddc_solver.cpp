@@ -189,7 +189,7 @@ BddcSolver::BddcSolver(MPI_Comm ranks, int n, const std::vector<Eigen::Triplet<d
     set_near_null_space(a, impl_->exchange->consistent_to_owned(near_null_space));
   }
   // 3. CG + BDDC with PETSc's default (multiplicity) scaling. -bddc_pc_bddc_use_deluxe_scaling
-  // saves 0-28 % of the iterations on the scenes measured (docs/user_guide.md), but in Debian 12's
+  // saves 0-27 % of the iterations on the scenes measured (docs/user_guide.md), but in Debian 12's
   // PETSc 3.18 with MUMPS 5.5 it fails on some splits (INFOG(1) = -46, a solve with no right-hand
   // side, in PCBDDCSetUpCorrection; -8 in the deluxe Schur complements; both on test_07's graph
   // Laplacian): an option, not the default.

@@ -123,6 +123,9 @@ DistributedCholesky::DistributedCholesky(MPI_Comm ranks, int n,
                                    PETSC_COPY_VALUES, schur_set.out()));
     HPC_PETSC_CALL(MatFactorSetSchurIS(f, schur_set.get()));
   }
+  // Null pivots counted (INFOG(28)), not passed over: SYM = 2 with a Schur set otherwise replaces
+  // a zero pivot of A_II by a static pivot and factorizes a singular matrix without complaint.
+  HPC_PETSC_CALL(MatMumpsSetIcntl(f, 24, 1));
   MatFactorInfo info;
   HPC_PETSC_CALL(MatFactorInfoInitialize(&info));
   HPC_PETSC_CALL(MatCholeskyFactorSymbolic(f, a, nullptr, &info));
@@ -140,6 +143,8 @@ DistributedCholesky::DistributedCholesky(MPI_Comm ranks, int n,
                           : infog1 == -13 ? "out of memory"
                           : infog1 == -38 ? "parallel analysis (-mat_mumps_icntl_28 2) needs PT-Scotch or ParMETIS, "
                                             "which this MUMPS lacks"
+                          : infog1 == -39 ? "options MUMPS cannot combine, e.g. parallel analysis "
+                                            "(-mat_mumps_icntl_28 2) with the Schur complement on Γ_C"
                                           : "see MUMPS's manual for INFOG(1)";
     throw NumericalError(
         fmt::format("MUMPS's factorization of a {0}x{0} matrix failed: INFOG(1) = {1}, INFOG(2) = {2} ({3})", n, infog1,
@@ -149,13 +154,19 @@ DistributedCholesky::DistributedCholesky(MPI_Comm ranks, int n,
     // MUMPS's LDLᵀ runs to the end over negative pivots and only counts them (INFOG(12), the
     // same on every rank). With a Schur set the root front is S_T itself, not factorized by
     // ScaLAPACK, so the count covers all of A_II; S_T's own Cholesky below checks the rest.
-    PetscInt negative = 0;
+    PetscInt negative = 0, null = 0;
     HPC_PETSC_CALL(MatMumpsGetInfog(f, 12, &negative));
+    HPC_PETSC_CALL(MatMumpsGetInfog(f, 28, &null));
     if (negative > 0)
       throw NumericalError(
           fmt::format("MUMPS's factorization of a {0}x{0} matrix met {1} negative pivot{2}: the "
                       "matrix is not positive definite",
                       n, negative, negative > 1 ? "s" : ""));
+    if (null > 0)
+      throw NumericalError(
+          fmt::format("MUMPS's factorization of a {0}x{0} matrix met {1} null pivot{2}: the "
+                      "matrix is singular, not positive definite",
+                      n, null, null > 1 ? "s" : ""));
   }
   if (!trailing.empty()) {
     // Solves on the interior problem A_II only (MUMPS's ICNTL(26) = 0); S_T is solved here.

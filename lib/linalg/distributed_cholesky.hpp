@@ -23,8 +23,8 @@ class DistributedCholesky {
   /// returns with the factorization of A_II (dense, |T|², replicated: T is trace-sized). Then
   /// B A⁻¹ Bᵀ = B_T S_T⁻¹ B_Tᵀ needs no solve when B lives on T, and a solve runs as interior
   /// solve, dense S_T solve, interior solve. Collective on `ranks`, which must outlive the solver.
-  /// @throws NumericalError if MUMPS fails or the matrix is not positive definite (a negative
-  /// pivot of MUMPS's LDLᵀ, or with a trailing set an S_T that is not positive definite).
+  /// @throws NumericalError if MUMPS fails or the matrix is not positive definite (a negative or
+  /// null pivot of MUMPS's LDLᵀ, or with a trailing set an S_T that is not positive definite).
   DistributedCholesky(MPI_Comm ranks, int n, const std::vector<Eigen::Triplet<double>>& lower_entries,
                       const std::vector<int>& trailing = {});
   ~DistributedCholesky();
