@@ -144,7 +144,7 @@ DistributedCholesky::DistributedCholesky(MPI_Comm ranks, int n,
                           : infog1 == -38 ? "parallel analysis (-mat_mumps_icntl_28 2) needs PT-Scotch or ParMETIS, "
                                             "which this MUMPS lacks"
                           : infog1 == -39 ? "options MUMPS cannot combine, e.g. parallel analysis "
-                                            "(-mat_mumps_icntl_28 2) with the Schur complement on Γ_C"
+                                            "(-mat_mumps_icntl_28 2) with a Schur complement"
                                           : "see MUMPS's manual for INFOG(1)";
     throw NumericalError(
         fmt::format("MUMPS's factorization of a {0}x{0} matrix failed: INFOG(1) = {1}, INFOG(2) = {2} ({3})", n, infog1,
