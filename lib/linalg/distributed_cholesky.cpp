@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <exception>
 #include <optional>
+#include <tuple>
 
 #include "core/error.hpp"
 #include "core/petsc_check.hpp"
@@ -150,23 +151,17 @@ DistributedCholesky::DistributedCholesky(MPI_Comm ranks, int n,
         fmt::format("MUMPS's factorization of a {0}x{0} matrix failed: INFOG(1) = {1}, INFOG(2) = {2} ({3})", n, infog1,
                     infog2, meaning));
   }
-  {
-    // MUMPS's LDLᵀ runs to the end over negative pivots and only counts them (INFOG(12), the
-    // same on every rank). With a Schur set the root front is S_T itself, not factorized by
-    // ScaLAPACK, so the count covers all of A_II; S_T's own Cholesky below checks the rest.
-    PetscInt negative = 0, null = 0;
-    HPC_PETSC_CALL(MatMumpsGetInfog(f, 12, &negative));
-    HPC_PETSC_CALL(MatMumpsGetInfog(f, 28, &null));
-    if (negative > 0)
+  // MUMPS's LDLᵀ runs to the end over negative and null pivots and only counts them (INFOG(12) and
+  // INFOG(28), the same on every rank). With a Schur set the root front is S_T itself, not
+  // factorized by ScaLAPACK, so the counts cover all of A_II; S_T's own Cholesky below checks the rest.
+  for (const auto& [infog, kind, meaning] : {std::tuple{12, "negative", "not positive definite"},
+                                             std::tuple{28, "null", "singular, not positive definite"}}) {
+    PetscInt count = 0;
+    HPC_PETSC_CALL(MatMumpsGetInfog(f, infog, &count));
+    if (count > 0)
       throw NumericalError(
-          fmt::format("MUMPS's factorization of a {0}x{0} matrix met {1} negative pivot{2}: the "
-                      "matrix is not positive definite",
-                      n, negative, negative > 1 ? "s" : ""));
-    if (null > 0)
-      throw NumericalError(
-          fmt::format("MUMPS's factorization of a {0}x{0} matrix met {1} null pivot{2}: the "
-                      "matrix is singular, not positive definite",
-                      n, null, null > 1 ? "s" : ""));
+          fmt::format("MUMPS's factorization of a {0}x{0} matrix met {1} {2} pivot{3}: the matrix is {4}", n, count,
+                      kind, count > 1 ? "s" : "", meaning));
   }
   if (!trailing.empty()) {
     // Solves on the interior problem A_II only (MUMPS's ICNTL(26) = 0); S_T is solved here.
