@@ -137,7 +137,7 @@ TEST(InfSup, ModeSamplesTwentyPointsPerSegment) {
   const space::MultiplierSpace multipliers(boundary, 1);
   Eigen::VectorXd mode = Eigen::VectorXd::Zero(6);
   mode(2) = 1.0;  // constant 1 on the middle segment
-  const auto table = postprocess::sample_mode(mesh, multipliers, mode);
+  const auto table = postprocess::sample_mode(mesh::ContactBoundary(mesh), multipliers, mode);
   EXPECT_EQ(table.n_rows(), 60u);
   EXPECT_EQ(table.columns().front(), "x");
   EXPECT_EQ(table.columns()[1], "mu");

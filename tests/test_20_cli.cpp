@@ -512,6 +512,68 @@ TEST(Cli, SolveUnderMpirunGivesTheSerialSolutionAndAlpha) {
   }
 }
 
+// Under mpirun a scene's whole mesh is freed once its operators hold each rank's part (kept only
+// for the extension norm's references): the effects read after that (α's mode, the convergence
+// levels, each freeing its own mesh) must still give the serial files, scalar and elastic.
+TEST(Cli, SolveUnderMpirunGivesEveryEffectOfTheSerialRunWithoutTheWholeMesh) {
+  const std::string env = "env OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ";
+  const auto dir = scratch("solve_mpi_effects");
+  const std::string scalar =
+      "[domain]\nn_x = 6\nn_y = 6\n[boundary]\ncontact = \"abs(y + 1) < 1e-9\"\n"
+      "dirichlet = \"abs(y - 1) < 1e-9\"\n[contact_mesh]\nratio = \"1/2\"\n[discretization]\np = 2\npC = 1\n"
+      "[data]\nf = \"-1\"\ng = \"-x^2\"\n[convergence]\nrefinements = 2\n"
+      "[run]\neffects = [\"signorini\", \"infsup\", \"convergence\"]\n";
+  std::ofstream(dir / "interp.toml") << scalar;
+  std::ofstream(dir / "extension.toml") << scalar << "[infsup]\nnorm = \"extension\"\n";
+  std::ofstream(dir / "elastic.toml")
+      << "[domain]\nn_x = 6\nn_y = 6\n[boundary]\ncontact = \"abs(y + 1) < 1e-9\"\n"
+         "dirichlet = \"abs(y - 1) < 1e-9\"\n[contact_mesh]\nratio = 1\n[discretization]\np = 2\npC = 1\n"
+         "[material]\nE = \"1\"\nnu = \"0.3\"\n[data]\nf_y = \"-1\"\ng = \"0.05 + 0.2 * x^2\"\n"
+         "[convergence]\nrefinements = 2\n[run]\neffects = [\"frictionless\", \"infsup\", \"convergence\"]\n";
+  // Every column of a CSV file but its seconds (wall times) and text, by name.
+  auto columns = [](const std::filesystem::path& path) {
+    std::ifstream in(path);
+    std::string line;
+    std::getline(in, line);
+    std::vector<std::string> names;
+    std::stringstream header(line);
+    for (std::string name; std::getline(header, name, ',');) names.push_back(name);
+    std::map<std::string, std::vector<double>> values;
+    while (std::getline(in, line)) {
+      std::stringstream cells(line);
+      std::size_t k = 0;
+      for (std::string cell; std::getline(cells, cell, ','); ++k) {
+        char* end = nullptr;
+        const double value = std::strtod(cell.c_str(), &end);
+        if (k < names.size() && names[k] != "seconds" && end != cell.c_str() && *end == '\0')
+          values[names[k]].push_back(value);
+      }
+    }
+    return values;
+  };
+  for (const char* name : {"interp", "extension", "elastic"}) {
+    const std::string arguments = std::string(" solve ") + (dir / name).string() + ".toml --out ";
+    const auto serial = run_command(env + HPCONTACT_CLI + arguments + (dir / name / "serial").string());
+    ASSERT_EQ(serial.exit_code, 0) << serial.output;
+    const auto parallel = run_command(env + "mpirun -n 2 --oversubscribe " HPCONTACT_CLI + arguments +
+                                      (dir / name / "parallel").string());
+    ASSERT_EQ(parallel.exit_code, 0) << name << "\n" << parallel.output;
+    for (const char* file : {"convergence.csv", "mode.csv"}) {
+      const auto a = columns(dir / name / "serial" / file), b = columns(dir / name / "parallel" / file);
+      ASSERT_GE(a.size(), 4u) << name << ", " << file;
+      for (const auto& [column, values] : a) {
+        ASSERT_EQ(b.count(column), 1u) << name << ", " << file << ", " << column;
+        const auto& other = b.at(column);
+        ASSERT_EQ(other.size(), values.size()) << name << ", " << file << ", " << column;
+        double scale = 0.0;
+        for (double value : values) scale = std::max(scale, std::abs(value));
+        for (std::size_t k = 0; k < values.size(); ++k)
+          EXPECT_NEAR(other[k], values[k], 1e-8 * scale) << name << ", " << file << ", " << column << " row " << k;
+      }
+    }
+  }
+}
+
 // A folder holding an alpha.csv of other columns (an older version's) is refused with a hint;
 // --restart replaces it.
 TEST(Cli, SweepRefusesAForeignAlphaCsvUnlessRestarted) {

@@ -67,15 +67,19 @@ int run_infsup(const InfSupOptions& o) {
   // An elastic scene pairs the normal (and tangential) multipliers with [S^p(T_h)]².
   std::unique_ptr<operators::PrimalOperators> primal;
   std::unique_ptr<operators::ElasticOperators> elastic;
-  infsup::InfSupSetup setup;
   const linalg::Distribution distribution = linalg::distribution_over(MPI_COMM_WORLD, distributed_solver);
-  if (scene.is_elastic()) {
-    elastic = driver::scene_elastic_operators(scene, d->mesh, d->cell_degrees, nullptr, distribution);
-    setup = driver::infsup_setup_of(scene, d->mesh, d->cell_degrees, *d->boundary_mesh, d->segment_degrees, *elastic);
-  } else {
-    primal = std::make_unique<operators::PrimalOperators>(d->mesh, d->cell_degrees, nullptr, distribution);
-    setup = driver::infsup_setup_of(scene, d->mesh, d->cell_degrees, *d->boundary_mesh, d->segment_degrees, *primal);
-  }
+  if (scene.is_elastic())
+    elastic = driver::scene_elastic_operators(scene, *d->mesh, d->cell_degrees, nullptr, distribution);
+  else
+    primal = std::make_unique<operators::PrimalOperators>(*d->mesh, d->cell_degrees, nullptr, distribution);
+  // Distributed, the operators hold the rank's part: the whole mesh is kept only for the extension
+  // norm's references, which refine it.
+  if (scene.norm != infsup::GramNorm::extension)
+    driver::release_whole_mesh(*d, elastic ? elastic->mesh() : primal->mesh());
+  const auto setup = elastic ? driver::infsup_setup_of(scene, d->mesh.get(), d->cell_degrees, *d->boundary_mesh,
+                                                       d->segment_degrees, *elastic)
+                             : driver::infsup_setup_of(scene, d->mesh.get(), d->cell_degrees, *d->boundary_mesh,
+                                                       d->segment_degrees, *primal);
   const auto result = infsup::analyse_infsup(setup, backend);
   if (rank != 0) return 0;
 
@@ -112,7 +116,7 @@ int run_infsup(const InfSupOptions& o) {
                  static_cast<long long>(result.n_multiplier_dofs), result.seconds});
     io::append_csv_rows(o.csv, row);
   }
-  if (!o.mode.empty()) postprocess::sample_mode(d->mesh, *d->multipliers, result.mode).write(o.mode);
+  if (!o.mode.empty()) postprocess::sample_mode(*d->contact, *d->multipliers, result.mode).write(o.mode);
   return 0;
 }
 

@@ -59,7 +59,7 @@ std::optional<int> requested_constraint_points(const std::vector<int>& per_zone,
 namespace {
 
 void check_data(const ContactSetup& setup) {
-  HPC_VERIFY(setup.mesh && setup.boundary_mesh, "contact setup without meshes");
+  HPC_VERIFY((setup.mesh || setup.primal) && setup.boundary_mesh, "contact setup without meshes");
   if (!setup.f) throw InputError("contact problem: the volume load f is missing");
   if (setup.problem == ContactProblem::signorini && !setup.obstacle)
     throw InputError("Signorini problem: the obstacle g is missing");
@@ -114,7 +114,7 @@ ContactSolution solve_contact(const ContactSetup& setup) {
   Stopwatch assembly_clock;
   std::unique_ptr<operators::PrimalOperators> own_primal;
   const operators::PrimalOperators& primal =
-      operators::shared_or_own(setup.primal, *setup.mesh, setup.cell_degrees, own_primal);
+      operators::shared_or_own(setup.primal, setup.mesh, setup.cell_degrees, own_primal);
   OperatorLog* log = primal.log();
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
   if (setup.dirichlet)

@@ -49,6 +49,8 @@ std::optional<int> requested_constraint_points(const std::vector<int>& per_zone,
 using PointFunction = std::function<double(const mesh::Point&)>;
 
 struct ContactSetup {
+  /// T_h whole: where `primal` is built when absent. May be null when `primal` is given (a
+  /// distributed run frees it once its operators hold the rank's part).
   const mesh::Mesh* mesh = nullptr;
   std::vector<int> cell_degrees;
   const mesh::BoundaryMesh* boundary_mesh = nullptr;
@@ -72,8 +74,8 @@ struct ContactSetup {
   BoxQpOptions qp;
   InequalityQpOptions interior_point;
   /// Optional: the operators of S^p(T_h) shared with other computations (α of the same pairing),
-  /// built here when absent. Must belong to (mesh, cell_degrees). Its log, if any, records what
-  /// this solve builds.
+  /// built here when absent. Must belong to (mesh, cell_degrees) (checked when `mesh` is given).
+  /// Its log, if any, records what this solve builds.
   const operators::PrimalOperators* primal = nullptr;
 };
 

@@ -56,7 +56,7 @@ void check_dirichlet_data(const scene::Scene& scene, const operators::ElasticOpe
   const std::array<std::pair<const char*, const std::string*>, 2> data{
       {{"boundary.u_D_x", &scene.dirichlet_x}, {"boundary.u_D_y", &scene.dirichlet_y}}};
   for (int c = 0; c < space::kComponents; ++c) {
-    if (data[c].second->empty() || operators.has_dirichlet()) continue;
+    if (data[c].second->empty() || operators.whole_mesh().has_dirichlet()) continue;
     bool fixed = false;
     for (int d = 0; d < space.scalar().n_dofs() && !fixed; ++d) fixed = space.dof(d, c) < 0;
     if (!fixed)
@@ -171,8 +171,9 @@ io::CsvTable elastic_convergence(const scene::Scene& scene, const SceneDiscretiz
     refined.refinements += k;
     Level level{discretize_scene(refined), nullptr, std::make_unique<OperatorLog>(), nullptr, {}};
     level.d = level.own.get();
-    level.operators =
-        scene_elastic_operators(refined, level.d->mesh, level.d->cell_degrees, level.log.get(), options.distribution);
+    level.operators = scene_elastic_operators(refined, *level.own->mesh, level.d->cell_degrees, level.log.get(),
+                                              options.distribution);
+    release_whole_mesh(*level.own, level.operators->mesh());
     level.effects =
         solve_elastic_effects(refined, *level.d, *level.operators, options, fmt::format(" (convergence level {})", k));
     level.operators->release_factors();  // (records their iterations)
@@ -266,8 +267,10 @@ nlohmann::json run_elastic_scene(const scene::Scene& scene, const SceneRunOption
   // 1. Meshes, degrees and materials; the operators are built on first use and shared.
   const auto d = discretize_scene(scene);
   OperatorLog log;
-  const auto owned = scene_elastic_operators(scene, d->mesh, d->cell_degrees, &log, options.distribution);
+  const auto owned = scene_elastic_operators(scene, *d->mesh, d->cell_degrees, &log, options.distribution);
   const operators::ElasticOperators& operators = *owned;
+  // (distributed, the operators now hold the rank's part)
+  if (!reads_whole_mesh_after_operators(scene)) release_whole_mesh(*d, operators.mesh());
   // 2. The contact problems.
   const std::vector<ElasticEffect> effects = solve_elastic_effects(scene, *d, operators, options, "");
   // 3. Convergence under uniform refinement, then the inf-sup constant of the elastic pairing.
@@ -281,8 +284,9 @@ nlohmann::json run_elastic_scene(const scene::Scene& scene, const SceneRunOption
   if (scene.has_effect(scene::Effect::infsup)) {
     if (options.progress) options.progress("inf-sup constant");
     infsup = infsup_effect(
-        scene, *d, infsup_setup_of(scene, d->mesh, d->cell_degrees, *d->boundary_mesh, d->segment_degrees, operators),
-        mode);
+        scene, *d,
+        infsup_setup_of(scene, d->mesh.get(), d->cell_degrees, *d->boundary_mesh, d->segment_degrees, operators), mode);
+    release_whole_mesh(*d, operators.mesh());
   }
   // 4. The summary, then every file at once (the factorizations freed first, as in run_scene).
   operators.release_factors();

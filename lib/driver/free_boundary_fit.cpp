@@ -47,12 +47,12 @@ FreeBoundaryFit fit_free_boundary(const scene::Scene& scene, const std::vector<c
     fit.scene.grading_layers = std::min(scene.grading_layers, fit.solves + 1);
     // One discretization per round, its operators (factor(K), F) shared by the problems.
     const auto d = discretize_scene(fit.scene);
-    const operators::PrimalOperators primal(d->mesh, d->cell_degrees);
+    const operators::PrimalOperators primal(*d->mesh, d->cell_degrees);
     const auto& contact = *d->contact;
     // Transitions within a coarse cell of a given grading point are left to its layers: they could
     // not be grading points of their own, and they arise where the data make λ undetermined (for
     // (13) at x = 1 of §7, where s vanishes).
-    const double coarse_cell = d->mesh.longest_edge();
+    const double coarse_cell = d->mesh->longest_edge();
     std::vector<double> located;
     for (const auto problem : problems) {
       const auto solution = contact::solve_contact(contact_setup_of(fit.scene, *d, problem, primal));

@@ -12,15 +12,38 @@
 
 namespace hpcontact::driver {
 
+namespace {
+
+// Γ_C's cells of `mesh` as a part of it (@throws InputError as mesh::ContactBoundary does).
+std::unique_ptr<mesh::Mesh> contact_cells_of(const mesh::Mesh& mesh) {
+  const mesh::ContactBoundary contact(mesh);
+  std::vector<int> cells;
+  for (const auto& edge : contact.edges()) cells.push_back(edge.cell);
+  std::sort(cells.begin(), cells.end());
+  cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+  return std::make_unique<mesh::Mesh>(mesh.extract(cells));
+}
+
+}  // namespace
+
 std::unique_ptr<SceneDiscretization> discretize_scene(const scene::Scene& scene) {
-  auto d =
-      std::make_unique<SceneDiscretization>(SceneDiscretization{scene::build_scene_mesh(scene), {}, {}, {}, {}, {}});
-  d->contact = std::make_unique<mesh::ContactBoundary>(d->mesh);
+  auto d = std::make_unique<SceneDiscretization>();
+  d->mesh = std::make_unique<mesh::Mesh>(scene::build_scene_mesh(scene));
+  d->contact_cells = contact_cells_of(*d->mesh);
+  d->contact = std::make_unique<mesh::ContactBoundary>(*d->contact_cells);
   d->boundary_mesh = std::make_unique<mesh::BoundaryMesh>(scene::build_scene_boundary_mesh(scene, *d->contact));
-  d->cell_degrees = scene::scene_cell_degrees(scene, d->mesh);
+  d->cell_degrees = scene::scene_cell_degrees(scene, *d->mesh);
   d->segment_degrees = scene::scene_segment_degrees(scene, *d->contact, *d->boundary_mesh);
   d->multipliers = std::make_unique<space::MultiplierSpace>(*d->boundary_mesh, d->segment_degrees);
   return d;
+}
+
+void release_whole_mesh(SceneDiscretization& d, const mesh::Mesh& operators_mesh) {
+  if (&operators_mesh != d.mesh.get()) d.mesh.reset();
+}
+
+bool reads_whole_mesh_after_operators(const scene::Scene& scene) {
+  return scene.has_effect(scene::Effect::infsup) && scene.norm == infsup::GramNorm::extension;
 }
 
 std::function<double(const mesh::Point&)> scene_function(const scene::Scene& scene, const std::string& key,
@@ -53,7 +76,7 @@ std::vector<int> checked_constraint_points(const scene::Scene& scene, const Scen
 contact::ContactSetup contact_setup_of(const scene::Scene& scene, const SceneDiscretization& d,
                                        contact::ContactProblem problem, const operators::PrimalOperators& primal) {
   contact::ContactSetup setup;
-  setup.mesh = &d.mesh;
+  setup.mesh = d.mesh.get();
   setup.cell_degrees = d.cell_degrees;
   setup.boundary_mesh = d.boundary_mesh.get();
   setup.segment_degrees = d.segment_degrees;
@@ -62,7 +85,7 @@ contact::ContactSetup contact_setup_of(const scene::Scene& scene, const SceneDis
   setup.f = scene_function(scene, "data.f", scene.load);
   setup.load_key = "f = " + scene.load;
   setup.dirichlet = scene_function(scene, "boundary.u_D", scene.dirichlet_value);
-  if (setup.dirichlet && !d.mesh.has_part(mesh::BoundaryPart::dirichlet))
+  if (setup.dirichlet && !primal.whole_mesh().has_dirichlet())
     throw_bad_input(scene.where("boundary.u_D"), "boundary.u_D", scene.dirichlet_value,
                     "absent: the scene has no Γ_D (boundary.dirichlet) for the data to act on");
   if (problem == contact::ContactProblem::signorini)
@@ -95,11 +118,11 @@ std::function<double(double)> multiplier_error_weight(const scene::Scene& scene,
 
 namespace {
 
-infsup::InfSupSetup common_infsup_setup(const scene::Scene& scene, const mesh::Mesh& mesh,
+infsup::InfSupSetup common_infsup_setup(const scene::Scene& scene, const mesh::Mesh* mesh,
                                         std::vector<int> cell_degrees, const mesh::BoundaryMesh& boundary_mesh,
                                         std::vector<int> segment_degrees) {
   infsup::InfSupSetup setup;
-  setup.mesh = &mesh;
+  setup.mesh = mesh;
   setup.cell_degrees = std::move(cell_degrees);
   setup.boundary_mesh = &boundary_mesh;
   setup.segment_degrees = std::move(segment_degrees);
@@ -111,7 +134,7 @@ infsup::InfSupSetup common_infsup_setup(const scene::Scene& scene, const mesh::M
 
 }  // namespace
 
-infsup::InfSupSetup infsup_setup_of(const scene::Scene& scene, const mesh::Mesh& mesh, std::vector<int> cell_degrees,
+infsup::InfSupSetup infsup_setup_of(const scene::Scene& scene, const mesh::Mesh* mesh, std::vector<int> cell_degrees,
                                     const mesh::BoundaryMesh& boundary_mesh, std::vector<int> segment_degrees,
                                     const operators::PrimalOperators& primal) {
   auto setup = common_infsup_setup(scene, mesh, std::move(cell_degrees), boundary_mesh, std::move(segment_degrees));
@@ -125,7 +148,7 @@ infsup::InfSupSetup infsup_setup_of(const scene::Scene& scene, const mesh::Mesh&
   return setup;
 }
 
-infsup::InfSupSetup infsup_setup_of(const scene::Scene& scene, const mesh::Mesh& mesh, std::vector<int> cell_degrees,
+infsup::InfSupSetup infsup_setup_of(const scene::Scene& scene, const mesh::Mesh* mesh, std::vector<int> cell_degrees,
                                     const mesh::BoundaryMesh& boundary_mesh, std::vector<int> segment_degrees,
                                     const operators::ElasticOperators& elastic) {
   auto setup = common_infsup_setup(scene, mesh, std::move(cell_degrees), boundary_mesh, std::move(segment_degrees));
@@ -138,7 +161,7 @@ SceneContactRun solve_scene_contact(const scene::Scene& scene, contact::ContactP
   Stopwatch clock;
   SceneContactRun run;
   run.discretization = discretize_scene(scene);
-  const operators::PrimalOperators primal(run.discretization->mesh, run.discretization->cell_degrees, log);
+  const operators::PrimalOperators primal(*run.discretization->mesh, run.discretization->cell_degrees, log);
   run.solution = contact::solve_contact(contact_setup_of(scene, *run.discretization, problem, primal));
   run.seconds = clock.seconds();
   return run;

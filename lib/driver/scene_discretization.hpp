@@ -22,8 +22,13 @@
 namespace hpcontact::driver {
 
 struct SceneDiscretization {
-  mesh::Mesh mesh;
-  std::unique_ptr<mesh::ContactBoundary> contact;  ///< refers to `mesh`
+  /// T_h whole; null once released (release_whole_mesh): a distributed run's operators hold the
+  /// rank's part, and nothing after them reads the whole mesh.
+  std::unique_ptr<mesh::Mesh> mesh;
+  /// Γ_C's cells of T_h as a part of it (mesh::Mesh::extract), where `contact` lives, so that Γ_C
+  /// (arc length, points, normals) outlives the whole mesh.
+  std::unique_ptr<mesh::Mesh> contact_cells;
+  std::unique_ptr<mesh::ContactBoundary> contact;  ///< refers to `contact_cells`
   std::unique_ptr<mesh::BoundaryMesh> boundary_mesh;
   std::vector<int> cell_degrees, segment_degrees;
   std::unique_ptr<space::MultiplierSpace> multipliers;  ///< M^{p_C}(T_{C,H}), refers to boundary_mesh
@@ -32,6 +37,15 @@ struct SceneDiscretization {
 /// Builds the meshes and degrees. Held by pointer: its parts refer to each other.
 /// @throws InputError as the scene's builders do.
 std::unique_ptr<SceneDiscretization> discretize_scene(const scene::Scene& scene);
+
+/// Frees the whole T_h of `discretization` when the operators built on it live on a part of it
+/// (`operators_mesh`, the space's mesh: a distributed run), so that no rank holds the whole mesh
+/// for the rest of the run; nothing when they live on the whole mesh (serial). Call it once
+/// nothing else of the run needs the whole mesh (the extension norm's references refine it).
+void release_whole_mesh(SceneDiscretization& discretization, const mesh::Mesh& operators_mesh);
+/// Whether a run of `scene` reads the whole mesh after its operators are built: the inf-sup effect
+/// in the extension norm, whose references refine it.
+bool reads_whole_mesh_after_operators(const scene::Scene& scene);
 
 /// The scene's expression `text` (the value of `key`) as a function of the point, its messages
 /// naming where the key came from; empty for empty text.
@@ -59,13 +73,14 @@ std::function<double(double)> multiplier_error_weight(const scene::Scene& scene,
 
 /// The inf-sup pairing of the scene ([infsup] problem: (11), or (22) with the scene's s) in its
 /// H^{-1/2} realization ([infsup] norm) on T_h (`mesh`, `cell_degrees`) and T_{C,H}
-/// (`boundary_mesh`, `segment_degrees`); `primal` must belong to T_h.
-infsup::InfSupSetup infsup_setup_of(const scene::Scene& scene, const mesh::Mesh& mesh, std::vector<int> cell_degrees,
+/// (`boundary_mesh`, `segment_degrees`); `primal` must belong to T_h. `mesh` may be null when it
+/// was released (release_whole_mesh) and the norm is the interpolation norm.
+infsup::InfSupSetup infsup_setup_of(const scene::Scene& scene, const mesh::Mesh* mesh, std::vector<int> cell_degrees,
                                     const mesh::BoundaryMesh& boundary_mesh, std::vector<int> segment_degrees,
                                     const operators::PrimalOperators& primal);
 /// The same for an elastic scene: the normal multiplier (problem friction: the normal and the
 /// tangential one) paired with [S^p(T_h)]² in [infsup] primal_norm; `elastic` built on T_h.
-infsup::InfSupSetup infsup_setup_of(const scene::Scene& scene, const mesh::Mesh& mesh, std::vector<int> cell_degrees,
+infsup::InfSupSetup infsup_setup_of(const scene::Scene& scene, const mesh::Mesh* mesh, std::vector<int> cell_degrees,
                                     const mesh::BoundaryMesh& boundary_mesh, std::vector<int> segment_degrees,
                                     const operators::ElasticOperators& elastic);
 

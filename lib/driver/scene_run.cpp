@@ -137,7 +137,8 @@ void add_convergence_rows(const scene::Scene& scene, const std::vector<ContactEf
     refined.refinements += k;
     auto d = discretize_scene(refined);
     OperatorLog level_log;
-    const operators::PrimalOperators primal(d->mesh, d->cell_degrees, &level_log, options.distribution);
+    const operators::PrimalOperators primal(*d->mesh, d->cell_degrees, &level_log, options.distribution);
+    release_whole_mesh(*d, primal.mesh());
     refined_effects.push_back(std::make_unique<std::vector<ContactEffect>>(
         solve_contact_effects(refined, *d, primal, options, fmt::format(" (convergence level {})", k))));
     add_level_solutions(scene, *refined_effects.back(), primal, options, k, level_solutions);
@@ -200,7 +201,7 @@ void add_run_summary(const scene::Scene& scene, const SceneDiscretization& d, co
 nlohmann::json infsup_effect(const scene::Scene& scene, const SceneDiscretization& d, const infsup::InfSupSetup& setup,
                              std::optional<io::CsvTable>& mode) {
   const auto alpha = infsup::analyse_infsup(setup, infsup::EigenBackend::slepc);
-  if (scene.wants_output(scene::Output::mode)) mode = postprocess::sample_mode(d.mesh, *d.multipliers, alpha.mode);
+  if (scene.wants_output(scene::Output::mode)) mode = postprocess::sample_mode(*d.contact, *d.multipliers, alpha.mode);
   nlohmann::json j{{"alpha", alpha.alpha},
                    {"alpha_error", alpha.alpha_error},
                    {"alpha_converged", alpha.alpha_converged},
@@ -286,7 +287,9 @@ nlohmann::json run_scene(const scene::Scene& given_scene, const SceneRunOptions&
   // 1. Meshes and degrees; the operators of S^p(T_h) are built on first use and shared.
   const auto d = discretize_scene(scene);
   OperatorLog log;
-  const operators::PrimalOperators primal(d->mesh, d->cell_degrees, &log, options.distribution);
+  const operators::PrimalOperators primal(*d->mesh, d->cell_degrees, &log, options.distribution);
+  // (distributed, the operators now hold the rank's part)
+  if (!reads_whole_mesh_after_operators(scene)) release_whole_mesh(*d, primal.mesh());
 
   // 2. The contact problems.
   const std::vector<ContactEffect> contacts = solve_contact_effects(scene, *d, primal, options, "");
@@ -297,8 +300,9 @@ nlohmann::json run_scene(const scene::Scene& given_scene, const SceneRunOptions&
   if (scene.has_effect(scene::Effect::infsup)) {
     say("inf-sup constant");
     summary["infsup"] = infsup_effect(
-        scene, *d, infsup_setup_of(scene, d->mesh, d->cell_degrees, *d->boundary_mesh, d->segment_degrees, primal),
-        mode);
+        scene, *d,
+        infsup_setup_of(scene, d->mesh.get(), d->cell_degrees, *d->boundary_mesh, d->segment_degrees, primal), mode);
+    release_whole_mesh(*d, primal.mesh());
   }
 
   // 4. Convergence under uniform refinement of every contact problem of the scene.

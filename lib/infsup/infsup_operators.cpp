@@ -76,7 +76,7 @@ namespace {
 // norm on [S^p(T_h)]², every multiplier active.
 InfSupOperators elastic_infsup_operators(const InfSupSetup& setup) {
   const auto& elastic = *setup.elastic;
-  HPC_VERIFY(elastic.built_on(*setup.mesh, setup.cell_degrees),
+  HPC_VERIFY(!setup.mesh || elastic.built_on(*setup.mesh, setup.cell_degrees),
              "elastic operators of another mesh or degree distribution");
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
   InfSupOperators out;
@@ -98,7 +98,7 @@ InfSupOperators elastic_infsup_operators(const InfSupSetup& setup) {
   for (int i = 0; i < out.n_multiplier_dofs; ++i) out.active_dofs[i] = i;
   out.log = elastic.log();
   out.n_primal_dofs = elastic.n_dofs();
-  out.h = setup.mesh->longest_edge();
+  out.h = elastic.whole_mesh().longest_edge();
   out.H = setup.boundary_mesh->mesh_size();
   return out;
 }
@@ -106,7 +106,7 @@ InfSupOperators elastic_infsup_operators(const InfSupSetup& setup) {
 }  // namespace
 
 InfSupOperators assemble_infsup_operators(const InfSupSetup& setup) {
-  HPC_VERIFY(setup.mesh && setup.boundary_mesh, "inf-sup setup without meshes");
+  HPC_VERIFY((setup.mesh || setup.primal || setup.elastic) && setup.boundary_mesh, "inf-sup setup without meshes");
   if (setup.elastic) return elastic_infsup_operators(setup);
   const bool friction = setup.problem == PairingProblem::friction;
   if (friction && !setup.friction_bound)
@@ -116,7 +116,7 @@ InfSupOperators assemble_infsup_operators(const InfSupSetup& setup) {
   // A_G factorized with the whole Γ_C trace last: S_G comes from the factor's trailing block.
   std::unique_ptr<operators::PrimalOperators> own_primal;
   const operators::PrimalOperators& primal =
-      operators::shared_or_own(setup.primal, *setup.mesh, setup.cell_degrees, own_primal);
+      operators::shared_or_own(setup.primal, setup.mesh, setup.cell_degrees, own_primal);
   const auto& space = primal.space();
   const auto& contact = primal.contact();
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
@@ -143,7 +143,7 @@ InfSupOperators assemble_infsup_operators(const InfSupSetup& setup) {
   out.log = primal.log();
   out.n_primal_dofs = space.n_dofs();
   out.n_multiplier_dofs = multipliers.n_dofs();
-  out.h = setup.mesh->longest_edge();
+  out.h = primal.whole_mesh().longest_edge();
   out.H = setup.boundary_mesh->mesh_size();
   return out;
 }

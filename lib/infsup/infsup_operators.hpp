@@ -26,6 +26,9 @@ std::string to_string(GramNorm norm);
 std::string to_string(PairingProblem problem);
 
 struct InfSupSetup {
+  /// T_h whole: where own operators are built and, for the extension norm, what its references
+  /// refine. May be null when `primal` or `elastic` is given and the norm is the interpolation norm
+  /// (a distributed run frees it once its operators hold the rank's part).
   const mesh::Mesh* mesh = nullptr;
   std::vector<int> cell_degrees;  ///< p_T
   const mesh::BoundaryMesh* boundary_mesh = nullptr;

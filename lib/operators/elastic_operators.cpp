@@ -18,11 +18,7 @@ ElasticOperators::ElasticOperators(const mesh::Mesh& mesh, std::vector<int> cell
                                    std::vector<assembly::Material> materials, OperatorLog* log,
                                    const std::array<std::vector<char>, space::kComponents>& fixed,
                                    linalg::Distribution distribution)
-    : whole_(mesh),
-      has_dirichlet_(mesh.has_part(mesh::BoundaryPart::dirichlet)),
-      materials_(std::move(materials)),
-      log_(log),
-      distribution_(distribution) {
+    : whole_(mesh), materials_(std::move(materials)), log_(log), distribution_(distribution) {
   Stopwatch clock;
   if (static_cast<int>(materials_.size()) != mesh.n_cells())
     throw InputError("elasticity: one material per cell is needed");
@@ -70,7 +66,7 @@ std::string gram_factor_name(PrimalNorm norm) { return norm == PrimalNorm::h1 ? 
 
 const assembly::CondensedFactor& ElasticOperators::stiffness_factor() const {
   if (!stiffness_factor_) {
-    if (!has_dirichlet_ && !rank_.vector_space->has_rollers())
+    if (!whole_.has_dirichlet() && !rank_.vector_space->has_rollers())
       throw InputError(
           "the body has no Dirichlet part (no boundary edge is in Γ_D: key 'boundary.dirichlet' or "
           "'boundary.dirichlet_groups', and no roller: 'boundary.fixed_x', 'boundary.fixed_y'): the elasticity "

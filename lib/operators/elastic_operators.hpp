@@ -45,8 +45,8 @@ class ElasticOperators {
   const mesh::Mesh& mesh() const { return rank_.space->mesh(); }
   /// Whether the object was built on `mesh` with these degrees (PrimalOperators::built_on).
   bool built_on(const mesh::Mesh& mesh, const std::vector<int>& cell_degrees) const;
-  /// Whether some edge of the whole mesh is on Γ_D.
-  bool has_dirichlet() const { return has_dirichlet_; }
+  /// What the object remembers of the whole mesh (h, Γ_D), which may be freed by now.
+  const WholeMeshFacts& whole_mesh() const { return whole_; }
   /// The scalar space S^p(T_h), and the displacement space [S^p(T_h)]² with its rollers;
   /// distributed, on the rank's own cells and Γ_C's only, with the whole spaces' dofs.
   const space::H1Space& space() const { return *rank_.space; }
@@ -76,9 +76,8 @@ class ElasticOperators {
   linalg::Distribution distribution() const { return distribution_; }
 
  private:
-  MeshIdentity whole_;  ///< the mesh given to the constructor
-  RankSpace rank_;      ///< the space (distributed: on the rank's part of the mesh) and its split
-  bool has_dirichlet_ = false;
+  WholeMeshFacts whole_;  ///< of the mesh given to the constructor
+  RankSpace rank_;        ///< the space (distributed: on the rank's part of the mesh) and its split
   /// The rigid rotation's centre for BDDC's near null space: the whole mesh's vertex centroid, the
   /// same on every rank.
   mesh::Point rotation_centre_ = mesh::Point(0.0, 0.0);

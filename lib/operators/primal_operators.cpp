@@ -16,10 +16,7 @@ namespace hpcontact::operators {
 
 PrimalOperators::PrimalOperators(const mesh::Mesh& mesh, std::vector<int> cell_degrees, OperatorLog* log,
                                  linalg::Distribution distribution)
-    : whole_(mesh),
-      has_dirichlet_(mesh.has_part(mesh::BoundaryPart::dirichlet)),
-      log_(log),
-      distribution_(distribution) {
+    : whole_(mesh), log_(log), distribution_(distribution) {
   Stopwatch clock;
   contact_ = std::make_unique<mesh::ContactBoundary>(mesh);
   rank_ = build_rank_space(mesh, std::move(cell_degrees), *contact_, distribution);
@@ -70,7 +67,7 @@ const assembly::CondensedFactor& condensed_factor(const space::H1Space& space, d
 const assembly::CondensedFactor& PrimalOperators::stiffness_factor() const {
   // Without Dirichlet edges K has the constants in its kernel: refuse as input, not as a failed
   // factorization deep inside CHOLMOD.
-  if (!has_dirichlet_)
+  if (!whole_.has_dirichlet())
     throw InputError(
         "the body has no Dirichlet part (no boundary edge is in Γ_D: key 'boundary.dirichlet' or "
         "'boundary.dirichlet_groups'): K is singular, since u + c has the energy of u, and the contact "
@@ -138,13 +135,15 @@ const Eigen::MatrixXd& PrimalOperators::derived_matrix(const std::string& name, 
   return memoized(derived_matrices_, name, name + "#" + key, build, log_);
 }
 
-const PrimalOperators& shared_or_own(const PrimalOperators* shared, const mesh::Mesh& mesh,
+const PrimalOperators& shared_or_own(const PrimalOperators* shared, const mesh::Mesh* mesh,
                                      const std::vector<int>& cell_degrees, std::unique_ptr<PrimalOperators>& own) {
+  HPC_VERIFY(shared || mesh, "neither shared primal operators nor a mesh to build them on");
   if (!shared) {
-    own = std::make_unique<PrimalOperators>(mesh, cell_degrees);
+    own = std::make_unique<PrimalOperators>(*mesh, cell_degrees);
     return *own;
   }
-  HPC_VERIFY(shared->built_on(mesh, cell_degrees), "shared primal operators of another mesh or degree distribution");
+  HPC_VERIFY(!mesh || shared->built_on(*mesh, cell_degrees),
+             "shared primal operators of another mesh or degree distribution");
   return *shared;
 }
 

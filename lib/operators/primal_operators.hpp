@@ -42,6 +42,8 @@ class PrimalOperators {
   /// Whether the object was built on `mesh` (the whole mesh given to the constructor) with these
   /// degrees (compared on the space's cells).
   bool built_on(const mesh::Mesh& mesh, const std::vector<int>& cell_degrees) const;
+  /// What the object remembers of the whole mesh (h, Γ_D), which may be freed by now.
+  const WholeMeshFacts& whole_mesh() const { return whole_; }
   /// Distributed, the rank's own cells and Γ_C's only, with the whole space's dofs.
   const space::H1Space& space() const { return *rank_.space; }
   /// Distributed: the space without elimination on the same cells (a Dirichlet lift's extended
@@ -80,9 +82,8 @@ class PrimalOperators {
   linalg::Distribution distribution() const { return distribution_; }
 
  private:
-  MeshIdentity whole_;          ///< the mesh given to the constructor
-  RankSpace rank_;              ///< the space (distributed: on the rank's part of the mesh) and its split
-  bool has_dirichlet_ = false;  ///< whether some edge of the whole mesh is on Γ_D
+  WholeMeshFacts whole_;  ///< of the mesh given to the constructor
+  RankSpace rank_;        ///< the space (distributed: on the rank's part of the mesh) and its split
   std::unique_ptr<mesh::ContactBoundary> contact_;
   OperatorLog* log_;
   linalg::Distribution distribution_;
@@ -93,8 +94,10 @@ class PrimalOperators {
   mutable std::map<std::string, Eigen::MatrixXd> derived_matrices_;
 };
 
-/// `shared` when given (checked to belong to mesh and degrees), else a new object kept in `own`.
-const PrimalOperators& shared_or_own(const PrimalOperators* shared, const mesh::Mesh& mesh,
+/// `shared` when given (checked to belong to `mesh` and the degrees when `mesh` is given: a
+/// distributed run may have freed it), else a new object on `mesh` kept in `own`.
+/// @pre `shared` or `mesh` is given.
+const PrimalOperators& shared_or_own(const PrimalOperators* shared, const mesh::Mesh* mesh,
                                      const std::vector<int>& cell_degrees, std::unique_ptr<PrimalOperators>& own);
 
 }  // namespace hpcontact::operators

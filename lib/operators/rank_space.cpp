@@ -45,18 +45,20 @@ RankSpace build_rank_space(const mesh::Mesh& mesh, std::vector<int> cell_degrees
   return out;
 }
 
-MeshIdentity::MeshIdentity(const mesh::Mesh& mesh)
+WholeMeshFacts::WholeMeshFacts(const mesh::Mesh& mesh)
     : address_(reinterpret_cast<std::uintptr_t>(&mesh)),
       cells_(mesh.n_cells()),
       vertices_(mesh.n_vertices()),
-      edges_(mesh.n_edges()) {}
+      edges_(mesh.n_edges()),
+      longest_edge_(mesh.longest_edge()),
+      has_dirichlet_(mesh.has_part(mesh::BoundaryPart::dirichlet)) {}
 
-bool MeshIdentity::is(const mesh::Mesh& mesh) const {
+bool WholeMeshFacts::is(const mesh::Mesh& mesh) const {
   return reinterpret_cast<std::uintptr_t>(&mesh) == address_ && mesh.n_cells() == cells_ &&
          mesh.n_vertices() == vertices_ && mesh.n_edges() == edges_;
 }
 
-bool space_built_on(const space::H1Space& space, const MeshIdentity& built_from, const mesh::Mesh& mesh,
+bool space_built_on(const space::H1Space& space, const WholeMeshFacts& built_from, const mesh::Mesh& mesh,
                     const std::vector<int>& cell_degrees) {
   if (!built_from.is(mesh) || static_cast<int>(cell_degrees.size()) != mesh.n_cells()) return false;
   const auto& space_mesh = space.mesh();

@@ -45,22 +45,29 @@ RankSpace build_rank_space(const mesh::Mesh& mesh, std::vector<int> cell_degrees
                            linalg::Distribution distribution, const RollerMasks* rollers = nullptr);
 
 /// What an operator object remembers of the whole mesh it was built from: its address and sizes,
-/// compared, never dereferenced, so that a distributed run may free the whole mesh once the
-/// object holds its part (the address alone could be reused by a later mesh).
-class MeshIdentity {
+/// compared, never dereferenced, and the facts of it that a run asks later (h, whether Γ_D
+/// exists), so that a distributed run may free the whole mesh once the object holds its part (the
+/// address alone could be reused by a later mesh).
+class WholeMeshFacts {
  public:
-  explicit MeshIdentity(const mesh::Mesh& mesh);
-  /// Whether `mesh` is the mesh this identity was taken of (as far as address and sizes tell).
+  explicit WholeMeshFacts(const mesh::Mesh& mesh);
+  /// Whether `mesh` is the mesh these facts were taken of (as far as address and sizes tell).
   bool is(const mesh::Mesh& mesh) const;
+  /// h: the whole mesh's longest edge (a part's would be its own cells').
+  double longest_edge() const { return longest_edge_; }
+  /// Whether some edge of the whole mesh is on Γ_D (a part may have none).
+  bool has_dirichlet() const { return has_dirichlet_; }
 
  private:
   std::uintptr_t address_;
   int cells_, vertices_, edges_;
+  double longest_edge_;
+  bool has_dirichlet_;
 };
 
 /// Whether `space`, built from the whole mesh `built_from` identifies, is of `mesh` with these
 /// degrees (compared on the space's cells): a shared operator object's check.
-bool space_built_on(const space::H1Space& space, const MeshIdentity& built_from, const mesh::Mesh& mesh,
+bool space_built_on(const space::H1Space& space, const WholeMeshFacts& built_from, const mesh::Mesh& mesh,
                     const std::vector<int>& cell_degrees);
 
 }  // namespace hpcontact::operators

@@ -7,9 +7,8 @@
 
 namespace hpcontact::postprocess {
 
-io::CsvTable sample_mode(const mesh::Mesh& mesh, const space::MultiplierSpace& multipliers, const Eigen::VectorXd& mode,
-                         int samples_per_segment) {
-  const mesh::ContactBoundary contact(mesh);
+io::CsvTable sample_mode(const mesh::ContactBoundary& contact, const space::MultiplierSpace& multipliers,
+                         const Eigen::VectorXd& mode, int samples_per_segment) {
   const bool two_parts = mode.size() == 2 * multipliers.n_dofs();
   io::CsvTable table(two_parts ? std::vector<std::string>{"x", "mu", "y", "s", "mu_t"}
                                : std::vector<std::string>{"x", "mu", "y", "s"});

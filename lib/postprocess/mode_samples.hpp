@@ -4,7 +4,7 @@
 #include <Eigen/Core>
 
 #include "io/csv_writer.hpp"
-#include "mesh/mesh.hpp"
+#include "mesh/contact_boundary.hpp"
 #include "space/multiplier_space.hpp"
 
 namespace hpcontact::postprocess {
@@ -12,7 +12,7 @@ namespace hpcontact::postprocess {
 /// The mode sampled at `samples_per_segment` equidistant points of every segment (both ends
 /// included, so jumps show): columns x, mu, y, s (x, y physical, s arc length along Γ_C), and
 /// mu_t when the mode has two parts (the elastic friction pairing: normal, then tangential).
-io::CsvTable sample_mode(const mesh::Mesh& mesh, const space::MultiplierSpace& multipliers, const Eigen::VectorXd& mode,
-                         int samples_per_segment = 20);
+io::CsvTable sample_mode(const mesh::ContactBoundary& contact, const space::MultiplierSpace& multipliers,
+                         const Eigen::VectorXd& mode, int samples_per_segment = 20);
 
 }  // namespace hpcontact::postprocess

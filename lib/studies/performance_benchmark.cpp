@@ -86,7 +86,7 @@ double time_linear_solve(const Eigen::VectorXd& rhs, const Arguments&... argumen
 // one linear solve with K. Its own operators, so that no row reuses another's factorization.
 BenchmarkRow contact_row(const std::string& kind, const scene::Scene& scene, const driver::SceneDiscretization& d,
                          const BenchmarkRow& base, const BenchmarkRow& linear_k) {
-  const operators::PrimalOperators primal(d.mesh, d.cell_degrees);
+  const operators::PrimalOperators primal(*d.mesh, d.cell_degrees);
   const auto problem = *scene::contact_problem_of(*scene::effect_named(kind));  // checked when read
   const auto solution = contact::solve_contact(driver::contact_setup_of(scene, d, problem, primal));
   BenchmarkRow row = base;
@@ -102,9 +102,9 @@ BenchmarkRow contact_row(const std::string& kind, const scene::Scene& scene, con
 // α of the scene's pairing (Signorini, interpolation norm), against one linear solve with A_G.
 BenchmarkRow alpha_row(const driver::SceneDiscretization& d, const scene::Scene& scene, const BenchmarkRow& base,
                        const BenchmarkRow& linear_ag) {
-  const operators::PrimalOperators primal(d.mesh, d.cell_degrees);
+  const operators::PrimalOperators primal(*d.mesh, d.cell_degrees);
   const auto result = infsup::analyse_infsup(
-      driver::infsup_setup_of(scene, d.mesh, d.cell_degrees, *d.boundary_mesh, d.segment_degrees, primal),
+      driver::infsup_setup_of(scene, d.mesh.get(), d.cell_degrees, *d.boundary_mesh, d.segment_degrees, primal),
       infsup::EigenBackend::slepc);
   BenchmarkRow row = base;
   row.kind = "alpha";
@@ -148,8 +148,8 @@ void add_elastic_rows(const PerformanceBenchmark& benchmark, const scene::Scene&
                                          {"data.g", std::string("0.05 + 0.2 * x^2"), origin},
                                          {"data.friction_coefficient", 0.3, origin}});
   const auto d = driver::discretize_scene(scene);
-  const auto materials = driver::scene_materials(scene, d->mesh);
-  const space::H1Space scalar_space(d->mesh, d->cell_degrees);
+  const auto materials = driver::scene_materials(scene, *d->mesh);
+  const space::H1Space scalar_space(*d->mesh, d->cell_degrees);
   const space::VectorSpace space(scalar_space);
   base.ndofs = space.n_dofs();
   const Eigen::VectorXd load =
@@ -164,7 +164,7 @@ void add_elastic_rows(const PerformanceBenchmark& benchmark, const scene::Scene&
   }
   add(linear_a);
   for (const auto problem : scene.elastic_effects()) {
-    const operators::ElasticOperators operators(d->mesh, d->cell_degrees, materials);
+    const operators::ElasticOperators operators(*d->mesh, d->cell_degrees, materials);
     const auto solution = contact::solve_elastic_contact(driver::elastic_setup_of(scene, *d, problem, operators));
     BenchmarkRow row = base;
     row.kind = "elastic_" + contact::to_string(problem);
@@ -211,7 +211,7 @@ std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& 
          {"discretization.pC", static_cast<long long>(benchmark.pc), benchmark.file + ": key 'benchmark.pC'"},
          {"data.g", std::string("-x^2"), "benchmark"}});
     const auto discretization = driver::discretize_scene(scene);
-    const auto& mesh = discretization->mesh;
+    const auto& mesh = *discretization->mesh;
     const auto& boundary = *discretization->boundary_mesh;
     const int m = boundary.n_segments();
     const space::H1Space space(mesh, benchmark.p);

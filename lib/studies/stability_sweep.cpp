@@ -226,9 +226,9 @@ std::string compute_point(const SweepRun& run, const SweepPoint& point, const Gr
   const scene::Scene scene = point_scene(group.scene, 0, point.pc, ratio, point.pairing, point.gram);
   const auto boundary = scene::build_scene_boundary_mesh(scene, group.contact);
   auto segment_degrees = scene::scene_segment_degrees(scene, group.contact, boundary);
-  auto setup = group.elastic ? driver::infsup_setup_of(scene, group.mesh, group.cell_degrees, boundary,
+  auto setup = group.elastic ? driver::infsup_setup_of(scene, &group.mesh, group.cell_degrees, boundary,
                                                        std::move(segment_degrees), *group.elastic)
-                             : driver::infsup_setup_of(scene, group.mesh, group.cell_degrees, boundary,
+                             : driver::infsup_setup_of(scene, &group.mesh, group.cell_degrees, boundary,
                                                        std::move(segment_degrees), *group.primal);
   setup.alpha_tolerance = sweep.alpha_tolerance;
   const auto& envelope = envelope_of(run, point, group, boundary, grams);
