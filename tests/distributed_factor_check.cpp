@@ -18,6 +18,10 @@
 //     indefinite_interior: the −50 on the Dirichlet row only, none on the trailing row (A_II is
 //     indefinite, S_T alone would not tell)
 //
+//   distributed_factor_check fail_alone
+//     rank 1 throws while rank 0 waits in a collective call: the helper must end the job (as the
+//     tool does, MPI_Abort with exit 3) instead of hanging
+//
 //   distributed_factor_check interface N M [indefinite]
 //     substructuring's interface problem alone (InterfaceCholesky): an N × N matrix, its last M
 //     unknowns the trailing set, summed from random positive definite blocks each rank holds on
@@ -27,11 +31,13 @@
 
 #include <Eigen/Cholesky>
 #include <algorithm>
+#include <cstdio>
 #include <random>
 #include <string>
 
 #include "core/error.hpp"
 #include "core/petsc_session.hpp"
+#include "core/rank_agreement.hpp"
 #include "linalg/bddc_solver.hpp"
 #include "linalg/distributed_cholesky.hpp"
 #include "linalg/interface_cholesky.hpp"
@@ -252,7 +258,13 @@ int run_interface(int n, int m, bool indefinite) {
 
 int main(int argc, char** argv) {
   const PetscSession session({argv[0]});
+  open_failure_channel();
   try {
+    if (argc == 2 && std::string(argv[1]) == "fail_alone") {
+      if (mpi_rank_and_size().first == 1) throw NumericalError("rank 1 failed alone");
+      MPI_Barrier(MPI_COMM_WORLD);  // (rank 0 waits here for good)
+      return 0;
+    }
     if (argc < 3)
       throw_bad_input("distributed_factor_check", "arguments", std::to_string(argc - 1), "SOLVER SPLIT [indefinite]");
     const std::string mode = argc > 3 ? argv[3] : "";
@@ -264,7 +276,13 @@ int main(int argc, char** argv) {
     return run(argv[1], argv[2], mode == "indefinite" || plain || interior_only, mode == "untouched", plain,
                interior_only);
   } catch (const std::exception& error) {
-    if (mpi_rank_and_size().first == 0) fmt::print("error: {}\n", error.what());
+    // A rank failing alone may leave the others in a collective call: it ends the job, as the tool.
+    const bool shared = failure_shared_by_every_rank();
+    if (!shared || mpi_rank_and_size().first == 0) fmt::print("error: {}\n", error.what());
+    if (!shared) {
+      std::fflush(stdout);
+      MPI_Abort(MPI_COMM_WORLD, 3);
+    }
     return 3;
   }
 }

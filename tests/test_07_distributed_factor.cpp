@@ -244,6 +244,14 @@ TEST(DistributedFactor, SubstructuringAndMumpsRefuseAnUnknownWithoutEntriesOnEve
   }
 }
 
+// A rank of the helper failing alone while the others wait in a collective call ends the job with
+// its message and exit 3 (after the failure channel's patience) instead of hanging.
+TEST(DistributedFactor, ARankFailingAloneEndsTheJobInsteadOfHanging) {
+  const auto run = run_command(check_command(2, "fail_alone"));
+  EXPECT_EQ(run.exit_code, 3) << run.output;
+  EXPECT_NE(run.output.find("rank 1 failed alone"), std::string::npos) << run.output;
+}
+
 // Substructuring's interface problem alone (ScaLAPACK between the parts, the trailing block
 // replicated), against dense Cholesky of the summed blocks: with both parts, without a trailing
 // set, with the trailing set alone, and with fewer unknowns between the parts than ranks (the

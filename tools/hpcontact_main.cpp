@@ -26,9 +26,7 @@ int report(const std::exception& error) {
   using namespace hpcontact;
   const int code = exit_code_of(error);
   const auto [rank, ranks] = mpi_rank_and_size();
-  if (ranks > 1 && !failure_agreed()) every_rank_fails_within(kFailurePatience);
-  // A rank that failed alone inside a group's collective work aborts, whatever was agreed before.
-  const bool agreed = failure_agreed() && !failed_alone();
+  const bool agreed = failure_shared_by_every_rank();
   if (agreed && rank != 0) return code;
   const char* kind = code == 2   ? "error"
                      : code == 3 ? "numerical failure"

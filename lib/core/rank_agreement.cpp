@@ -37,7 +37,6 @@ bool barrier_within(MPI_Comm channel, double seconds) {
 
 }  // namespace
 
-bool failure_agreed() { return agreed; }
 bool failed_alone() { return alone; }
 
 bool group_fails_within(MPI_Comm channel, double seconds) {
@@ -55,6 +54,13 @@ bool every_rank_fails_within(double seconds) {
   if (failure_channel == MPI_COMM_NULL || alone || !barrier_within(failure_channel, seconds)) return false;
   agreed = true;
   return true;
+}
+
+bool failure_shared_by_every_rank() {
+  if (mpi_rank_and_size().second == 1) return true;
+  if (!agreed) every_rank_fails_within(kFailurePatience);
+  // A rank that failed alone inside a group's collective work aborts, whatever was agreed before.
+  return agreed && !alone;
 }
 
 void run_on_all_ranks_agreeing(const std::function<void()>& work, MPI_Comm ranks) {

@@ -14,10 +14,6 @@ namespace hpcontact {
 /// `ranks`: every one must call it with its share of the work. On one rank it only runs `work`.
 void run_on_all_ranks_agreeing(const std::function<void()>& work, MPI_Comm ranks = MPI_COMM_WORLD);
 
-/// Whether the last failure thrown by run_on_all_ranks_agreeing was agreed on by all ranks, so that
-/// rank 0 alone reports it.
-bool failure_agreed();
-
 /// Opens the channel on which failing ranks look for each other (collective, once, after MPI is up
 /// under a launcher; a no-op on one rank).
 void open_failure_channel();
@@ -42,5 +38,12 @@ bool failed_alone();
 /// and ends every rank cleanly, while a failure of one rank alone (the others may wait in a
 /// collective call) is not. Called by failing ranks only; false without an open channel.
 bool every_rank_fails_within(double seconds);
+
+/// For a failure that reached a program's top level: whether every rank raised it (agreed inside
+/// the work, or met on the failure channel within kFailurePatience), so that rank 0 reports it
+/// once and every rank ends cleanly. False when this rank failed alone: the others may wait in a
+/// collective call, and the program must abort the job (MPI_Abort) rather than return. True on
+/// one rank.
+bool failure_shared_by_every_rank();
 
 }  // namespace hpcontact
