@@ -59,9 +59,10 @@ TEST(DistributedFactor, CouplingProductsOverTheRanksEqualTheSerialOnes) {
     }
 }
 
-// A trailing set more than twice the unknowns the ranks share stays out of substructuring's dense
-// interface problem (its unknowns interior to their ranks), and B A⁻¹ Bᵀ from solves equals
-// CHOLMOD's; on one rank it is the interface, as in the serial path.
+// A trailing set large against the unknowns the ranks share and the entries they hold (76 against
+// a cut of a few unknowns: its dense work would exceed solves through the ranks' factors) stays out
+// of substructuring's dense interface problem (its unknowns interior to their ranks), and
+// B A⁻¹ Bᵀ from solves equals CHOLMOD's; on one rank it is the interface, as in the serial path.
 TEST(DistributedFactor, SubstructuringKeepsALargeTrailingSetOutOfTheInterface) {
   for (int ranks : {1, 2}) {
     const auto run = run_command(check_command(ranks, "substructuring wide"));

@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "basis/quadrature.hpp"
+#include "core/byte_buffer.hpp"
 #include "core/error.hpp"
 #include "curved_convergence_check.hpp"
 #include "driver/scene_run.hpp"
@@ -22,6 +23,7 @@
 #include "mesh/contact_boundary.hpp"
 #include "mesh/edge_curve.hpp"
 #include "mesh/gmsh_reader.hpp"
+#include "mesh/rectangle_mesh.hpp"
 #include "mesh/refine.hpp"
 #include "scene/scene_mesh.hpp"
 #include "scene/scene_reader.hpp"
@@ -116,6 +118,51 @@ TEST(EdgeCurve, ThroughEquispacedNodesReproducesPolynomials) {
   for (double t : {-0.9, -0.31, 0.0, 0.42, 0.99}) EXPECT_LT((curve.point(t) - parabola(t)).norm(), 1e-15);
   const auto straight = mesh::EdgeCurve::through_equispaced({Point(0, 0), Point(0.5, 1), Point(1, 2)});
   EXPECT_LT(straight.relative_deviation_from_chord(), 1e-15);
+}
+
+// A mesh sent between ranks as bytes (a rank builds T_h and sends it, mesh/mesh_bytes.cpp) is the
+// sender's to the bit: curved and refined cells (children's maps), labels, boundary parts, and a
+// part's global indices; packing the received mesh gives the same bytes; cut bytes are refused.
+TEST(BlendedGeometry, MeshSentAsBytesIsTheSameToTheBit) {
+  auto whole = mesh::refine_uniformly(quarter_annulus(2, 3));
+  whole.set_edge_label(whole.boundary_edges().front(), "inner");
+  mesh::assign_boundary_part(whole, mesh::BoundaryPart::contact, [](const Point& x) { return x.norm() < 1.5; });
+  std::vector<int> cells;
+  for (int c = 0; c < whole.n_cells(); c += 3) cells.push_back(c);
+  const auto part = whole.extract(cells);
+  for (const mesh::Mesh* sent : {static_cast<const mesh::Mesh*>(&whole), &part}) {
+    ByteWriter out;
+    sent->pack(out);
+    const std::vector<char> bytes = out.take();
+    ByteReader in(bytes);
+    const mesh::Mesh received = mesh::Mesh::unpack(in);
+    EXPECT_TRUE(in.at_end());
+    ByteWriter again;
+    received.pack(again);
+    EXPECT_EQ(again.take(), bytes);
+    ASSERT_EQ(received.n_cells(), sent->n_cells());
+    ASSERT_EQ(received.n_edges(), sent->n_edges());
+    EXPECT_EQ(received.is_part(), sent->is_part());
+    EXPECT_TRUE(received.has_curved_cells());
+    for (int c = 0; c < sent->n_cells(); ++c) {
+      EXPECT_EQ(received.global_cell(c), sent->global_cell(c));
+      const mesh::CellMap a(*sent, c), b(received, c);
+      for (double xi : {-1.0, -0.3, 0.6})
+        for (double eta : {-0.8, 0.1, 1.0}) {
+          EXPECT_EQ(b.map(xi, eta), a.map(xi, eta)) << "cell " << c;
+          EXPECT_EQ(b.jacobian(xi, eta), a.jacobian(xi, eta)) << "cell " << c;
+        }
+    }
+    for (int e = 0; e < sent->n_edges(); ++e) {
+      EXPECT_EQ(received.edge_label(e), sent->edge_label(e));
+      EXPECT_EQ(received.edge_part(e), sent->edge_part(e));
+      EXPECT_EQ(received.edge_cells(e), sent->edge_cells(e));
+      EXPECT_EQ(received.global_edge(e), sent->global_edge(e));
+    }
+    const std::vector<char> cut(bytes.begin(), bytes.end() - 3);
+    ByteReader short_in(cut);
+    EXPECT_THROW(mesh::Mesh::unpack(short_in), std::logic_error);
+  }
 }
 
 TEST(BlendedGeometry, CoversTheCurvedDomainExactlyAndNestsUnderRefinement) {

@@ -52,22 +52,22 @@ scene::Scene resolve_scene(const InfSupOptions& o) {
 }
 
 int run_infsup(const InfSupOptions& o) {
-  // 1. Check the input and build T_h and T_{C,H}.
+  // 1. Check the input.
   const std::string where = "hpcontact infsup";
   const scene::Scene scene = resolve_scene(o);
   const auto backend = infsup::parse_eigen_backend(o.eigensolver, where);
   const auto distributed_solver = linalg::parse_distributed_solver(o.distributed_solver, where, "--distributed-solver");
   for (const auto& file : {o.csv, o.mode})
     if (!file.empty()) io::ensure_writable_directory(std::filesystem::absolute(file).parent_path());
-  const auto d = driver::discretize_scene(scene);
 
-  // 2. Solve the eigenproblem. Under mpirun A_G is factorized over the ranks, and rank 0 reports
-  // and writes.
+  // 2. Build T_h (under mpirun by rank 0, sent to the others) and T_{C,H}, and solve the
+  // eigenproblem. Under mpirun A_G is factorized over the ranks, and rank 0 reports and writes.
   const int rank = mpi_rank_and_size().first;
   // An elastic scene pairs the normal (and tangential) multipliers with [S^p(T_h)]².
   std::unique_ptr<operators::PrimalOperators> primal;
   std::unique_ptr<operators::ElasticOperators> elastic;
   const linalg::Distribution distribution = linalg::distribution_over(MPI_COMM_WORLD, distributed_solver);
+  const auto d = driver::discretize_scene(scene, distribution);
   if (scene.is_elastic())
     elastic = driver::scene_elastic_operators(scene, *d->mesh, d->cell_degrees, nullptr, distribution);
   else

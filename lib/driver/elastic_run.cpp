@@ -169,7 +169,7 @@ io::CsvTable elastic_convergence(const scene::Scene& scene, const SceneDiscretiz
   for (int k = 1; k <= scene.convergence_refinements; ++k) {
     scene::Scene refined = scene;
     refined.refinements += k;
-    Level level{discretize_scene(refined), nullptr, std::make_unique<OperatorLog>(), nullptr, {}};
+    Level level{discretize_scene(refined, options.distribution), nullptr, std::make_unique<OperatorLog>(), nullptr, {}};
     level.d = level.own.get();
     level.operators = scene_elastic_operators(refined, *level.own->mesh, level.d->cell_degrees, level.log.get(),
                                               options.distribution);
@@ -265,7 +265,7 @@ void write_tables(const scene::Scene& scene, const std::vector<ElasticEffect>& e
 nlohmann::json run_elastic_scene(const scene::Scene& scene, const SceneRunOptions& options) {
   Stopwatch clock;
   // 1. Meshes, degrees and materials; the operators are built on first use and shared.
-  const auto d = discretize_scene(scene);
+  const auto d = discretize_scene(scene, options.distribution);
   OperatorLog log;
   const auto owned = scene_elastic_operators(scene, *d->mesh, d->cell_degrees, &log, options.distribution);
   const operators::ElasticOperators& operators = *owned;

@@ -26,9 +26,12 @@ std::unique_ptr<mesh::Mesh> contact_cells_of(const mesh::Mesh& mesh) {
 
 }  // namespace
 
-std::unique_ptr<SceneDiscretization> discretize_scene(const scene::Scene& scene) {
+std::unique_ptr<SceneDiscretization> discretize_scene(const scene::Scene& scene,
+                                                      const linalg::Distribution& distribution) {
   auto d = std::make_unique<SceneDiscretization>();
-  d->mesh = std::make_unique<mesh::Mesh>(scene::build_scene_mesh(scene));
+  d->mesh =
+      std::make_unique<mesh::Mesh>(distribution.distributed() ? scene::build_scene_mesh_once(scene, distribution.ranks)
+                                                              : scene::build_scene_mesh(scene));
   d->contact_cells = contact_cells_of(*d->mesh);
   d->contact = std::make_unique<mesh::ContactBoundary>(*d->contact_cells);
   d->boundary_mesh = std::make_unique<mesh::BoundaryMesh>(scene::build_scene_boundary_mesh(scene, *d->contact));

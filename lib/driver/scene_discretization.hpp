@@ -11,6 +11,7 @@
 
 #include "contact/contact_problem.hpp"
 #include "infsup/infsup_operators.hpp"
+#include "linalg/distribution.hpp"
 #include "mesh/boundary_mesh.hpp"
 #include "mesh/contact_boundary.hpp"
 #include "mesh/mesh.hpp"
@@ -34,9 +35,11 @@ struct SceneDiscretization {
   std::unique_ptr<space::MultiplierSpace> multipliers;  ///< M^{p_C}(T_{C,H}), refers to boundary_mesh
 };
 
-/// Builds the meshes and degrees. Held by pointer: its parts refer to each other.
+/// Builds the meshes and degrees. Held by pointer: its parts refer to each other. Distributed, T_h
+/// is built by the first rank of `distribution` and sent to the others (collective on its ranks).
 /// @throws InputError as the scene's builders do.
-std::unique_ptr<SceneDiscretization> discretize_scene(const scene::Scene& scene);
+std::unique_ptr<SceneDiscretization> discretize_scene(const scene::Scene& scene,
+                                                      const linalg::Distribution& distribution = {});
 
 /// Frees the whole T_h of `discretization` when the operators built on it live on a part of it
 /// (`operators_mesh`, the space's mesh: a distributed run), so that no rank holds the whole mesh

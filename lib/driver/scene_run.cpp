@@ -135,7 +135,7 @@ void add_convergence_rows(const scene::Scene& scene, const std::vector<ContactEf
   for (int k = 1; k <= scene.convergence_refinements; ++k) {
     scene::Scene refined = scene;
     refined.refinements += k;
-    auto d = discretize_scene(refined);
+    auto d = discretize_scene(refined, options.distribution);
     OperatorLog level_log;
     const operators::PrimalOperators primal(*d->mesh, d->cell_degrees, &level_log, options.distribution);
     release_whole_mesh(*d, primal.mesh());
@@ -285,7 +285,7 @@ nlohmann::json run_scene(const scene::Scene& given_scene, const SceneRunOptions&
   const scene::Scene scene =
       given_scene.fit_free_boundary ? fitted_scene(given_scene, say, free_boundary) : given_scene;
   // 1. Meshes and degrees; the operators of S^p(T_h) are built on first use and shared.
-  const auto d = discretize_scene(scene);
+  const auto d = discretize_scene(scene, options.distribution);
   OperatorLog log;
   const operators::PrimalOperators primal(*d->mesh, d->cell_degrees, &log, options.distribution);
   // (distributed, the operators now hold the rank's part)

@@ -116,14 +116,25 @@ SubstructuredCholesky::SubstructuredCholesky(MPI_Comm ranks, int n,
   HPC_VERIFY(trailing_sorted.empty() || (trailing_sorted.front() >= 0 && trailing_sorted.back() < n),
              "trailing index out of range");
   const auto is_trailing = [&](int i) { return std::binary_search(trailing_sorted.begin(), trailing_sorted.end(), i); };
-  // 2. The interface: shared unknowns, then the trailing set, each in index order. A trailing set
-  // more than twice the shared unknowns (the graded trace of the extension norm's references:
-  // 4481 against 923 at n = 64 on 2 ranks) would make the dense problem mostly trace, whose block
-  // S_CC and its factor every rank holds whole (m² each): it stays out, each of its unknowns interior to the rank that
-  // touches it alone, and B A⁻¹ Bᵀ comes from solves (schur_complement_by_solves).
+  // 2. The interface: shared unknowns, then the trailing set, each in index order. The trailing
+  // set joins it where that is the cheaper way to B A⁻¹ Bᵀ, counted per rank and per multiplier
+  // (taking as many multipliers as trailing unknowns, the most a trace carries). In it: t²/3 + s·t
+  // of dense factorization shared by the ranks (t trailing, s shared unknowns), and t² to apply
+  // its factor, which every rank holds whole. Out of it (each trailing unknown interior to the
+  // rank that touches it alone): two sweeps through the rank's factor, at least twice the entries
+  // it holds, and through the interface's factor, 2·s² shared by the ranks
+  // (schur_complement_by_solves). So the graded trace of the extension norm's references stays out
+  // (t = 4481, s = 923 at n = 64 on 2 ranks: 2.5e7 against 7.9e6), and the annulus' trace on 2
+  // ranks joins (t = 1577, s = 747: 3.5e6 against 6.7e6; out of it, S took 20.8 s, not 0.4 s).
   std::size_t n_shared = 0;
   for (int i : shared) n_shared += !is_trailing(i);
-  const bool trailing_in_interface = rank_and_size(ranks).second == 1 || trailing_sorted.size() <= 2 * n_shared;
+  const int n_ranks = rank_and_size(ranks).second;
+  double entries_per_rank = static_cast<double>(lower_entries.size()) / n_ranks;
+  sum_over_ranks(ranks, &entries_per_rank, 1);  // (the same decision on every rank)
+  const double t = static_cast<double>(trailing_sorted.size()), s = static_cast<double>(n_shared);
+  const double in_interface = (t * t / 3 + s * t) / n_ranks + t * t;
+  const double by_solves = 2 * entries_per_rank + 2 * s * s / n_ranks;
+  const bool trailing_in_interface = n_ranks == 1 || in_interface <= by_solves;
   for (int i : shared)
     if (!trailing_in_interface || !is_trailing(i)) d.interface.push_back(i);
   std::vector<std::pair<int, int>> positions;

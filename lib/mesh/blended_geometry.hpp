@@ -16,6 +16,11 @@
 #include "mesh/edge_curve.hpp"
 #include "mesh/mesh.hpp"
 
+namespace hpcontact {
+class ByteReader;
+class ByteWriter;
+}  // namespace hpcontact
+
 namespace hpcontact::mesh {
 
 class BlendedGeometry {
@@ -36,6 +41,9 @@ class BlendedGeometry {
   BlendedGeometry restricted(const Eigen::Matrix2d& matrix, const Eigen::Vector2d& offset) const;
 
   Point map(double xi, double eta) const;
+  /// The map as bytes, and back (mesh/mesh_bytes.cpp): the same map to the bit.
+  void pack(ByteWriter& out) const;
+  static BlendedGeometry unpack(ByteReader& in);
   /// [[∂x/∂ξ, ∂x/∂η], [∂y/∂ξ, ∂y/∂η]].
   Eigen::Matrix2d jacobian(double xi, double eta) const;
 

@@ -25,6 +25,8 @@ class EdgeCurve {
   static EdgeCurve through_equispaced(const std::vector<Point>& nodes);
 
   int degree() const { return static_cast<int>(values_.size()) - 1; }
+  /// γ at the interpolation points (from_values of them gives this curve again).
+  const std::vector<Point>& values() const { return values_; }
   Point point(double t) const;
   /// dγ/dt.
   Point derivative(double t) const;

@@ -13,6 +13,11 @@
 
 #include "mesh/reference_cell.hpp"
 
+namespace hpcontact {
+class ByteReader;
+class ByteWriter;
+}  // namespace hpcontact
+
 namespace hpcontact::mesh {
 
 using Point = Eigen::Vector2d;
@@ -115,6 +120,11 @@ class Mesh {
   int global_cell(int c) const { return global_cells_.empty() ? c : global_cells_[c]; }
   int global_vertex(int v) const { return global_vertices_.empty() ? v : global_vertices_[v]; }
   int global_edge(int e) const { return global_edges_.empty() ? e : global_edges_[e]; }
+
+  /// The mesh (whole or a part, with its curves and labels) as bytes, and back: the same mesh to
+  /// the bit, so that one rank can build a mesh and send it to others (mesh/mesh_bytes.cpp).
+  void pack(ByteWriter& out) const;
+  static Mesh unpack(ByteReader& in);
 
   /// Vertex positions may be moved (perturbation, grading) without changing topology.
   /// @throws InputError if a cell becomes invalid, or if the mesh has curved cells.

@@ -12,8 +12,10 @@
 #include <optional>
 #include <set>
 
+#include "core/byte_buffer.hpp"
 #include "core/error.hpp"
 #include "core/expression.hpp"
+#include "core/rank_agreement.hpp"
 #include "mesh/cell_map.hpp"
 #include "mesh/contact_boundary.hpp"
 #include "mesh/gmsh_reader.hpp"
@@ -124,6 +126,26 @@ mesh::Mesh build_scene_mesh(const Scene& scene) {
                                  scene.contact_predicate.empty() ? "contact_groups" : "contact", error.what()));
   }
   return mesh;
+}
+
+mesh::Mesh build_scene_mesh_once(const Scene& scene, MPI_Comm ranks) {
+  int rank = 0;
+  MPI_Comm_rank(ranks, &rank);
+  std::optional<mesh::Mesh> built;
+  std::vector<char> bytes;
+  run_on_all_ranks_agreeing(
+      [&] {
+        if (rank != 0) return;
+        built.emplace(build_scene_mesh(scene));
+        ByteWriter out;
+        built->pack(out);
+        bytes = out.take();
+      },
+      ranks);
+  bytes = broadcast_bytes(std::move(bytes), 0, ranks);
+  if (built) return std::move(*built);
+  ByteReader in(bytes);
+  return mesh::Mesh::unpack(in);
 }
 
 namespace {

@@ -185,7 +185,8 @@ struct GroupMesh {
   std::unique_ptr<operators::ElasticOperators> elastic;
   GroupMesh(const scene::Scene& level_scene, linalg::Distribution distribution)
       : scene(level_scene),
-        mesh(scene::build_scene_mesh(scene)),
+        mesh(distribution.distributed() ? scene::build_scene_mesh_once(scene, distribution.ranks)
+                                        : scene::build_scene_mesh(scene)),
         contact(mesh),
         cell_degrees(scene::scene_cell_degrees(scene, mesh)) {
     if (scene.is_elastic())

@@ -1,0 +1,20 @@
+// broadcast_bytes: the length first, then the bytes in pieces of at most 1 GiB.
+#include "core/byte_buffer.hpp"
+
+#include <algorithm>
+
+namespace hpcontact {
+
+std::vector<char> broadcast_bytes(std::vector<char> bytes, int root, MPI_Comm ranks) {
+  std::uint64_t size = bytes.size();
+  HPC_VERIFY(MPI_Bcast(&size, 1, MPI_UINT64_T, root, ranks) == MPI_SUCCESS, "broadcast of a length");
+  bytes.resize(size);
+  constexpr std::uint64_t kPiece = std::uint64_t{1} << 30;
+  for (std::uint64_t at = 0; at < size; at += kPiece) {
+    const int count = static_cast<int>(std::min(kPiece, size - at));
+    HPC_VERIFY(MPI_Bcast(bytes.data() + at, count, MPI_CHAR, root, ranks) == MPI_SUCCESS, "broadcast of bytes");
+  }
+  return bytes;
+}
+
+}  // namespace hpcontact

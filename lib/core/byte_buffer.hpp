@@ -1,0 +1,86 @@
+// Objects as bytes, for sending them between ranks: a writer that appends values and arrays of
+// trivially copyable types (and strings), a reader that takes them back in the same order and
+// refuses to read past the end, and a broadcast of such bytes of any length.
+#pragma once
+
+#include <mpi.h>
+
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "core/error.hpp"
+
+namespace hpcontact {
+
+class ByteWriter {
+ public:
+  template <class T>
+  requires std::is_trivially_copyable_v<T>
+  void put(const T& value) { append(&value, sizeof(T)); }
+  template <class T>
+  requires std::is_trivially_copyable_v<T>
+  void put(const std::vector<T>& values) {
+    put(static_cast<std::uint64_t>(values.size()));
+    append(values.data(), values.size() * sizeof(T));
+  }
+  void put(const std::string& text) {
+    put(static_cast<std::uint64_t>(text.size()));
+    append(text.data(), text.size());
+  }
+  /// The bytes written, leaving the writer empty.
+  std::vector<char> take() { return std::move(bytes_); }
+
+ private:
+  void append(const void* data, std::size_t size) {
+    const auto* first = static_cast<const char*>(data);
+    bytes_.insert(bytes_.end(), first, first + size);
+  }
+  std::vector<char> bytes_;
+};
+
+class ByteReader {
+ public:
+  explicit ByteReader(const std::vector<char>& bytes) : bytes_(bytes) {}
+  template <class T>
+  requires std::is_trivially_copyable_v<T> T get() {
+    T value;
+    copy_out(&value, sizeof(T));
+    return value;
+  }
+  template <class T>
+  requires std::is_trivially_copyable_v<T> std::vector<T> get_vector() {
+    std::vector<T> values(checked_count(sizeof(T)));
+    copy_out(values.data(), values.size() * sizeof(T));
+    return values;
+  }
+  std::string get_string() {
+    std::string text(checked_count(1), '\0');
+    copy_out(text.data(), text.size());
+    return text;
+  }
+  bool at_end() const { return at_ == bytes_.size(); }
+
+ private:
+  // A length read from the bytes, checked against what is left (a corrupt length must not allocate).
+  std::size_t checked_count(std::size_t element_size) {
+    const auto count = get<std::uint64_t>();
+    HPC_VERIFY(element_size == 0 || count <= (bytes_.size() - at_) / element_size, "bytes of an object cut short");
+    return static_cast<std::size_t>(count);
+  }
+  void copy_out(void* data, std::size_t size) {
+    HPC_VERIFY(size <= bytes_.size() - at_, "bytes of an object cut short");
+    if (size > 0) std::memcpy(data, bytes_.data() + at_, size);
+    at_ += size;
+  }
+  const std::vector<char>& bytes_;
+  std::size_t at_ = 0;
+};
+
+/// `bytes` of rank `root` on every rank of `ranks` (collective), whatever their length (sent in
+/// pieces below MPI's int count limit).
+std::vector<char> broadcast_bytes(std::vector<char> bytes, int root, MPI_Comm ranks);
+
+}  // namespace hpcontact
