@@ -208,7 +208,8 @@ void Mesh::set_edge_curve(int e, std::shared_ptr<const EdgeCurve> curve, const s
     if (c < 0) continue;
     const int local = local_edge_of(e, k);
     HPC_VERIFY(!cell_geometry_[c] || cell_geometry_[c]->is_whole(), "edge curves are set before refinement");
-    std::array<Point, 4> corners{};
+    std::array<Point, 4> corners;
+    corners.fill(Point::Zero());  // (a triangle's fourth is unused, but packed and sent)
     for (int v = 0; v < cell_size(c); ++v) corners[v] = vertices_[cells_[c][v]];
     auto geometry = cell_geometry_[c] ? std::make_shared<BlendedGeometry>(*cell_geometry_[c])
                                       : std::make_shared<BlendedGeometry>(cell_type(c), corners);
