@@ -106,9 +106,14 @@ TEST(Faults, FailuresOfEveryRankAreReportedOnceUnderMpirun) {
       << "[domain]\nn_x = 8\nn_y = 8\n[boundary]\ncontact = \"abs(y + 1) < 1e-9\"\n"
          "dirichlet = \"y < 0\"\n[contact_mesh]\nratio = 1\n[discretization]\np = 2\npC = 1\n"
          "[data]\nf = \"-1\"\ng = \"-x^2\"\n[run]\neffects = [\"signorini\"]\n";
+  // (a sweep's levels are built by rank 0 alone too)
+  std::ofstream(dir / "overlap_sweep.toml")
+      << "[sweep]\nscene = \"overlap.toml\"\nlevels = { \"domain.n_x\" = [4, 8] }\np = [2]\npC = [1]\n";
   const std::vector<std::pair<std::string, std::string>> cases{
       {"solve " + (dir / "bad.toml").string(), "key 'domain.n_x' = -3"},
       {"solve " + (dir / "overlap.toml").string(), "Γ_C and Γ_D overlap"},
+      {"sweep " + (dir / "overlap_sweep.toml").string() + " --out " + (dir / "o").string(),
+       "level 1 (domain.n_x=4) of the scene"},
       {"sweep " HPCONTACT_SOURCE_DIR "/studies/stability/quick.toml --shard 5/3 --out " + (dir / "s").string(),
        "key '--shard' = 5/3"},
       {"solve " HPCONTACT_SOURCE_DIR "/studies/elasticity/square.toml --distributed-solver cholesky --out " +

@@ -11,6 +11,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <set>
 #include <sstream>
 
 #include "basis/quadrature.hpp"
@@ -120,11 +121,22 @@ TEST(EdgeCurve, ThroughEquispacedNodesReproducesPolynomials) {
   EXPECT_LT(straight.relative_deviation_from_chord(), 1e-15);
 }
 
+// The number of distinct curves the cells' maps follow (children and neighbours share them).
+std::size_t distinct_side_curves(const mesh::Mesh& mesh) {
+  std::set<const mesh::EdgeCurve*> curves;
+  for (int c = 0; c < mesh.n_cells(); ++c)
+    if (const auto* geometry = mesh.cell_geometry(c))
+      for (int side = 0; side < 4; ++side)
+        if (geometry->side_curve(side)) curves.insert(geometry->side_curve(side));
+  return curves.size();
+}
+
 // A mesh sent between ranks as bytes (a rank builds T_h and sends it, mesh/mesh_bytes.cpp) is the
-// sender's to the bit: curved and refined cells (children's maps), labels, boundary parts, and a
-// part's global indices; packing the received mesh gives the same bytes; cut bytes are refused.
+// sender's to the bit: curved and refined cells (children's maps, sharing their curves as the
+// sender's do), labels, boundary parts, and a part's global indices; packing the received mesh
+// gives the same bytes; cut bytes are refused.
 TEST(BlendedGeometry, MeshSentAsBytesIsTheSameToTheBit) {
-  auto whole = mesh::refine_uniformly(quarter_annulus(2, 3));
+  auto whole = mesh::refine_uniformly(mesh::refine_uniformly(quarter_annulus(2, 3)));
   whole.set_edge_label(whole.boundary_edges().front(), "inner");
   mesh::assign_boundary_part(whole, mesh::BoundaryPart::contact, [](const Point& x) { return x.norm() < 1.5; });
   std::vector<int> cells;
@@ -144,6 +156,8 @@ TEST(BlendedGeometry, MeshSentAsBytesIsTheSameToTheBit) {
     ASSERT_EQ(received.n_edges(), sent->n_edges());
     EXPECT_EQ(received.is_part(), sent->is_part());
     EXPECT_TRUE(received.has_curved_cells());
+    EXPECT_EQ(distinct_side_curves(received), distinct_side_curves(*sent));
+    EXPECT_LT(distinct_side_curves(received), static_cast<std::size_t>(received.n_cells()));
     for (int c = 0; c < sent->n_cells(); ++c) {
       EXPECT_EQ(received.global_cell(c), sent->global_cell(c));
       const mesh::CellMap a(*sent, c), b(received, c);

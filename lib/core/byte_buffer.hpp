@@ -52,24 +52,25 @@ class ByteReader {
   }
   template <class T>
   requires std::is_trivially_copyable_v<T> std::vector<T> get_vector() {
-    std::vector<T> values(checked_count(sizeof(T)));
+    std::vector<T> values(get_count(sizeof(T)));
     copy_out(values.data(), values.size() * sizeof(T));
     return values;
   }
   std::string get_string() {
-    std::string text(checked_count(1), '\0');
+    std::string text(get_count(1), '\0');
     copy_out(text.data(), text.size());
     return text;
+  }
+  /// A count of objects that follow, each of at least `least_bytes` bytes, refused if what is left
+  /// cannot hold them (a corrupt count must not allocate).
+  std::size_t get_count(std::size_t least_bytes) {
+    const auto count = get<std::uint64_t>();
+    HPC_VERIFY(least_bytes == 0 || count <= (bytes_.size() - at_) / least_bytes, "bytes of an object cut short");
+    return static_cast<std::size_t>(count);
   }
   bool at_end() const { return at_ == bytes_.size(); }
 
  private:
-  // A length read from the bytes, checked against what is left (a corrupt length must not allocate).
-  std::size_t checked_count(std::size_t element_size) {
-    const auto count = get<std::uint64_t>();
-    HPC_VERIFY(element_size == 0 || count <= (bytes_.size() - at_) / element_size, "bytes of an object cut short");
-    return static_cast<std::size_t>(count);
-  }
   void copy_out(void* data, std::size_t size) {
     HPC_VERIFY(size <= bytes_.size() - at_, "bytes of an object cut short");
     if (size > 0) std::memcpy(data, bytes_.data() + at_, size);

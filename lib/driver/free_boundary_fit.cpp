@@ -6,9 +6,13 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <optional>
 
 #include "contact/free_boundary.hpp"
+#include "core/byte_buffer.hpp"
 #include "core/error.hpp"
+#include "core/petsc_session.hpp"
+#include "core/rank_agreement.hpp"
 
 namespace hpcontact::driver {
 namespace {
@@ -92,6 +96,37 @@ FreeBoundaryFit fit_free_boundary(const scene::Scene& scene, const std::vector<c
       fmt::format("{}: the free boundary did not settle in {} solves (last move {:.3g} in arc length, "
                   "tolerance {:.3g} · |Γ_C|); more grading layers or a higher degree resolve it better",
                   scene.file, max_solves, fit.moved, tolerance));
+}
+
+FreeBoundaryFit fit_free_boundary_once(const scene::Scene& scene, const std::vector<contact::ContactProblem>& problems,
+                                       MPI_Comm ranks) {
+  const int rank = rank_and_size(ranks).first, size = rank_and_size(ranks).second;
+  if (size == 1) return fit_free_boundary(scene, problems);
+  std::optional<FreeBoundaryFit> fit;
+  std::vector<char> bytes;
+  run_on_all_ranks_agreeing(
+      [&] {
+        if (rank != 0) return;
+        fit.emplace(fit_free_boundary(scene, problems));
+        std::vector<double> coordinates;
+        for (const auto& x : fit->points) coordinates.insert(coordinates.end(), {x.x(), x.y()});
+        ByteWriter out;
+        out.put(coordinates), out.put(fit->moved), out.put(fit->solves);
+        bytes = out.take();
+      },
+      ranks);
+  bytes = broadcast_bytes(std::move(bytes), 0, ranks);
+  if (fit) return std::move(*fit);
+  // The fitted scene is the given one with the points added to its grading points (as returned).
+  ByteReader in(bytes);
+  FreeBoundaryFit received{scene, {}, 0.0, 0};
+  const auto coordinates = in.get_vector<double>();
+  for (std::size_t k = 0; k + 1 < coordinates.size(); k += 2)
+    received.points.emplace_back(coordinates[k], coordinates[k + 1]);
+  received.moved = in.get<double>(), received.solves = in.get<int>();
+  received.scene.grading_points.insert(received.scene.grading_points.end(), received.points.begin(),
+                                       received.points.end());
+  return received;
 }
 
 }  // namespace hpcontact::driver

@@ -5,6 +5,8 @@
 // how the work–precision study computes references accurate beyond 1e-9.
 #pragma once
 
+#include <mpi.h>
+
 #include <vector>
 
 #include "driver/scene_discretization.hpp"
@@ -30,5 +32,11 @@ struct FreeBoundaryFit {
 /// InputError if a point cannot be a grading point of the scene's mesh (too close to another).
 FreeBoundaryFit fit_free_boundary(const scene::Scene& scene, const std::vector<contact::ContactProblem>& problems,
                                   double tolerance = 1e-6, int max_solves = 12);
+
+/// The same fit under mpirun: the first rank of `ranks` fits (serially: the fit's meshes are
+/// small) and sends the points; every rank returns the same fit, or raises the same error.
+/// Collective on `ranks`.
+FreeBoundaryFit fit_free_boundary_once(const scene::Scene& scene, const std::vector<contact::ContactProblem>& problems,
+                                       MPI_Comm ranks);
 
 }  // namespace hpcontact::driver

@@ -78,9 +78,10 @@ std::vector<int> checked_constraint_points(const scene::Scene& scene, const Scen
 
 contact::ContactSetup contact_setup_of(const scene::Scene& scene, const SceneDiscretization& d,
                                        contact::ContactProblem problem, const operators::PrimalOperators& primal) {
+  // The setup takes T_h through `primal` alone: a stored setup then names no mesh that a
+  // distributed run frees, and holds no copy of the cells' degrees (a whole-mesh-length array).
+  HPC_VERIFY(!d.mesh || primal.built_on(*d.mesh, d.cell_degrees), "primal operators of another discretization");
   contact::ContactSetup setup;
-  setup.mesh = d.mesh.get();
-  setup.cell_degrees = d.cell_degrees;
   setup.boundary_mesh = d.boundary_mesh.get();
   setup.segment_degrees = d.segment_degrees;
   setup.problem = problem;

@@ -171,11 +171,13 @@ void add_convergence_rows(const scene::Scene& scene, const std::vector<ContactEf
 
 // The scene with its mesh graded towards the free boundary of its contact problems; what the fit
 // found goes into `free_boundary` for summary.json.
-scene::Scene fitted_scene(const scene::Scene& scene, const std::function<void(const std::string&)>& say,
-                          nlohmann::json& free_boundary) {
+scene::Scene fitted_scene(const scene::Scene& scene, const linalg::Distribution& distribution,
+                          const std::function<void(const std::string&)>& say, nlohmann::json& free_boundary) {
   say("fitting the mesh to the free boundary");
   Stopwatch clock;
-  const auto fit = fit_free_boundary(scene, scene.contact_effects());
+  const auto fit = distribution.distributed()
+                       ? fit_free_boundary_once(scene, scene.contact_effects(), distribution.ranks)
+                       : fit_free_boundary(scene, scene.contact_effects());
   free_boundary = {
       {"points", nlohmann::json::array()}, {"rounds", fit.solves}, {"moved", fit.moved}, {"seconds", clock.seconds()}};
   for (const auto& point : fit.points) free_boundary["points"].push_back({point.x(), point.y()});
@@ -283,7 +285,7 @@ nlohmann::json run_scene(const scene::Scene& given_scene, const SceneRunOptions&
   //    scene; the effects then run on that mesh.
   nlohmann::json free_boundary;
   const scene::Scene scene =
-      given_scene.fit_free_boundary ? fitted_scene(given_scene, say, free_boundary) : given_scene;
+      given_scene.fit_free_boundary ? fitted_scene(given_scene, options.distribution, say, free_boundary) : given_scene;
   // 1. Meshes and degrees; the operators of S^p(T_h) are built on first use and shared.
   const auto d = discretize_scene(scene, options.distribution);
   OperatorLog log;

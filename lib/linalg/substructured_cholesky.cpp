@@ -126,6 +126,9 @@ SubstructuredCholesky::SubstructuredCholesky(MPI_Comm ranks, int n,
   // (schur_complement_by_solves). So the graded trace of the extension norm's references stays out
   // (t = 4481, s = 923 at n = 64 on 2 ranks: 2.5e7 against 7.9e6), and the annulus' trace on 2
   // ranks joins (t = 1577, s = 747: 3.5e6 against 6.7e6; out of it, S took 20.8 s, not 0.4 s).
+  // Memory bounds it too: the t² of the trailing block held by every rank must not outweigh the
+  // rank's share of the entries (a lower bound on its factor's) beyond 64 MB, or more ranks would
+  // gain no memory (interface_outweighs_factors).
   std::size_t n_shared = 0;
   for (int i : shared) n_shared += !is_trailing(i);
   const int n_ranks = rank_and_size(ranks).second;
@@ -134,7 +137,8 @@ SubstructuredCholesky::SubstructuredCholesky(MPI_Comm ranks, int n,
   const double t = static_cast<double>(trailing_sorted.size()), s = static_cast<double>(n_shared);
   const double in_interface = (t * t / 3 + s * t) / n_ranks + t * t;
   const double by_solves = 2 * entries_per_rank + 2 * s * s / n_ranks;
-  const bool trailing_in_interface = n_ranks == 1 || in_interface <= by_solves;
+  const bool trailing_in_interface =
+      n_ranks == 1 || (in_interface <= by_solves && !interface_outweighs_factors(t * t, entries_per_rank));
   for (int i : shared)
     if (!trailing_in_interface || !is_trailing(i)) d.interface.push_back(i);
   std::vector<std::pair<int, int>> positions;

@@ -10,8 +10,11 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <optional>
+#include <unordered_map>
+#include <vector>
 
 #include "mesh/edge_curve.hpp"
 #include "mesh/mesh.hpp"
@@ -22,6 +25,16 @@ class ByteWriter;
 }  // namespace hpcontact
 
 namespace hpcontact::mesh {
+
+/// The distinct curves of maps packed together, each sent once: a refined cell's children share
+/// its curves, and the two cells of a side share that side's (copied per map, a twice-refined
+/// curved mesh took 2.4 times its memory on the receiving ranks).
+struct CurveTable {
+  std::unordered_map<const EdgeCurve*, std::int32_t> index;
+  std::vector<const EdgeCurve*> curves;  ///< in order of first use
+  /// The curve's number in the table (added on first use); -1 for none.
+  std::int32_t number_of(const EdgeCurve* curve);
+};
 
 class BlendedGeometry {
  public:
@@ -41,9 +54,13 @@ class BlendedGeometry {
   BlendedGeometry restricted(const Eigen::Matrix2d& matrix, const Eigen::Vector2d& offset) const;
 
   Point map(double xi, double eta) const;
-  /// The map as bytes, and back (mesh/mesh_bytes.cpp): the same map to the bit.
-  void pack(ByteWriter& out) const;
-  static BlendedGeometry unpack(ByteReader& in);
+  /// The curve side `local_edge` follows (null: a straight side); the same object for every map
+  /// that shares it.
+  const EdgeCurve* side_curve(int local_edge) const { return sides_[local_edge].curve.get(); }
+  /// The map as bytes, and back (mesh/mesh_bytes.cpp): the same map to the bit, its curves by
+  /// their numbers in `curves` (the sender's table; the receiver's list of it).
+  void pack(ByteWriter& out, CurveTable& curves) const;
+  static BlendedGeometry unpack(ByteReader& in, const std::vector<std::shared_ptr<const EdgeCurve>>& curves);
   /// [[∂x/∂ξ, ∂x/∂η], [∂y/∂ξ, ∂y/∂η]].
   Eigen::Matrix2d jacobian(double xi, double eta) const;
 

@@ -25,25 +25,30 @@ std::vector<Point> get_points(ByteReader& in) {
   return points;
 }
 
-void put_curve(ByteWriter& out, const std::shared_ptr<const EdgeCurve>& curve) {
-  out.put(static_cast<char>(curve != nullptr));
-  if (curve) put_points(out, curve->values());
-}
+using CurveList = std::vector<std::shared_ptr<const EdgeCurve>>;
 
-std::shared_ptr<const EdgeCurve> get_curve(ByteReader& in) {
-  if (!in.get<char>()) return nullptr;
-  return std::make_shared<EdgeCurve>(EdgeCurve::from_values(get_points(in)));
+std::shared_ptr<const EdgeCurve> get_curve(ByteReader& in, const CurveList& curves) {
+  const auto number = in.get<std::int32_t>();
+  HPC_VERIFY(number >= -1 && number < static_cast<std::int64_t>(curves.size()), "a curve number out of range");
+  return number < 0 ? nullptr : curves[static_cast<std::size_t>(number)];
 }
 
 }  // namespace
 
-void BlendedGeometry::pack(ByteWriter& out) const {
+std::int32_t CurveTable::number_of(const EdgeCurve* curve) {
+  if (!curve) return -1;
+  const auto [at, added] = index.emplace(curve, static_cast<std::int32_t>(curves.size()));
+  if (added) curves.push_back(curve);
+  return at->second;
+}
+
+void BlendedGeometry::pack(ByteWriter& out, CurveTable& curves) const {
   out.put(type_);
   put_points(out, {corners_.begin(), corners_.end()});
   for (const auto& side : sides_) {
-    put_curve(out, side.curve);
+    out.put(curves.number_of(side.curve.get()));
     out.put(static_cast<char>(side.reversed));
-    put_curve(out, side.quotient);
+    out.put(curves.number_of(side.quotient.get()));
   }
   out.put(static_cast<char>(part_.has_value()));
   if (part_)
@@ -51,15 +56,15 @@ void BlendedGeometry::pack(ByteWriter& out) const {
                                 part_->offset.x(), part_->offset.y()});
 }
 
-BlendedGeometry BlendedGeometry::unpack(ByteReader& in) {
+BlendedGeometry BlendedGeometry::unpack(ByteReader& in, const CurveList& curves) {
   const auto type = in.get<CellType>();
   const auto corners = get_points(in);
   HPC_VERIFY(corners.size() == 4, "a cell map without its four corners");
   BlendedGeometry geometry(type, {corners[0], corners[1], corners[2], corners[3]});
   for (auto& side : geometry.sides_) {
-    side.curve = get_curve(in);
+    side.curve = get_curve(in, curves);
     side.reversed = in.get<char>() != 0;
-    side.quotient = get_curve(in);
+    side.quotient = get_curve(in, curves);
   }
   if (in.get<char>()) {
     const auto numbers = in.get_vector<double>();
@@ -84,11 +89,18 @@ void Mesh::pack(ByteWriter& out) const {
   for (const auto& label : labels_) out.put(label);
   out.put(edge_label_index_);
   out.put(edge_parts_);
-  out.put(static_cast<std::uint64_t>(cell_geometry_.size()));
+  // The maps name their curves by number, so the table of distinct curves (known once every map
+  // is written) goes first and the maps after it, as one block of bytes.
+  CurveTable table;
+  ByteWriter maps;
+  maps.put(static_cast<std::uint64_t>(cell_geometry_.size()));
   for (const auto& geometry : cell_geometry_) {
-    out.put(static_cast<char>(geometry != nullptr));
-    if (geometry) geometry->pack(out);
+    maps.put(static_cast<char>(geometry != nullptr));
+    if (geometry) geometry->pack(maps, table);
   }
+  out.put(static_cast<std::uint64_t>(table.curves.size()));
+  for (const EdgeCurve* curve : table.curves) put_points(out, curve->values());
+  out.put(maps.take());
   out.put(global_cells_);
   out.put(global_vertices_);
   out.put(global_edges_);
@@ -103,13 +115,19 @@ Mesh Mesh::unpack(ByteReader& in) {
   mesh.cell_edge_signs_ = in.get_vector<std::array<std::int8_t, 4>>();
   mesh.edge_cells_ = in.get_vector<std::array<int, 2>>();
   mesh.boundary_edges_ = in.get_vector<int>();
-  mesh.labels_.resize(in.get<std::uint64_t>());
+  // (Each label, curve and map takes at least 8 bytes: counts beyond that are corrupt bytes.)
+  mesh.labels_.resize(in.get_count(8));
   for (auto& label : mesh.labels_) label = in.get_string();
   mesh.edge_label_index_ = in.get_vector<std::uint16_t>();
   mesh.edge_parts_ = in.get_vector<BoundaryPart>();
-  mesh.cell_geometry_.resize(in.get<std::uint64_t>());
+  CurveList curves(in.get_count(8));
+  for (auto& curve : curves) curve = std::make_shared<const EdgeCurve>(EdgeCurve::from_values(get_points(in)));
+  const auto map_bytes = in.get_vector<char>();
+  ByteReader maps(map_bytes);
+  mesh.cell_geometry_.resize(maps.get_count(1));
   for (auto& geometry : mesh.cell_geometry_)
-    if (in.get<char>()) geometry = std::make_shared<const BlendedGeometry>(BlendedGeometry::unpack(in));
+    if (maps.get<char>()) geometry = std::make_shared<const BlendedGeometry>(BlendedGeometry::unpack(maps, curves));
+  HPC_VERIFY(maps.at_end(), "bytes of a mesh's cell maps left over");
   mesh.global_cells_ = in.get_vector<int>();
   mesh.global_vertices_ = in.get_vector<int>();
   mesh.global_edges_ = in.get_vector<int>();

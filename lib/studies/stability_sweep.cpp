@@ -30,6 +30,7 @@
 #include "operators/primal_operators.hpp"
 #include "scene/scene_mesh.hpp"
 #include "space/multiplier_space.hpp"
+#include "studies/sweep_level_facts.hpp"
 #include "studies/sweep_plan.hpp"
 #include "studies/sweep_rows.hpp"
 
@@ -39,33 +40,9 @@ namespace {
 
 std::vector<int> to_int(const std::vector<long long>& values) { return {values.begin(), values.end()}; }
 
-/// The scene of one point: the level's scene with the sweep's p, p_C (replacing degree rules),
-/// ratio (replacing the scene's m, ratio or breakpoints) where the sweep gives them, and the
-/// point's pairing and norm.
-scene::Scene point_scene(scene::Scene scene, int p, int pc, const std::optional<scene::Ratio>& ratio,
-                         infsup::PairingProblem problem = infsup::PairingProblem::signorini,
-                         infsup::GramNorm norm = infsup::GramNorm::interpolation) {
-  if (p > 0) scene.p = scene::Degree{p, {}};
-  if (pc >= 0) scene.pc = scene::Degree{pc, {}};
-  if (ratio) {
-    scene.ratio = {*ratio};
-    scene.m.clear();
-    scene.breakpoints.clear();
-  }
-  scene.problem = problem;
-  scene.norm = norm;
-  return scene;
-}
-
-/// "level 2 (domain.n_x=24 domain.n_y=24)", for messages and progress.
-std::string level_name(const StabilitySweep& sweep, std::size_t level) {
-  const auto& label = sweep.levels[level].label;
-  return fmt::format("level {}{}", level + 1, label.empty() ? "" : " (" + label + ")");
-}
-
 }  // namespace
 
-StabilitySweep read_stability_sweep(const std::string& path) {
+StabilitySweep read_stability_sweep(const std::string& path, MPI_Comm ranks) {
   const io::TomlTable root = io::parse_toml_file(path);
   StabilitySweep sweep;
   sweep.file = path;
@@ -97,45 +74,7 @@ StabilitySweep read_stability_sweep(const std::string& path) {
   root.reject_unknown_keys();
 
   // Every level's meshes, degrees and data, checked now: a sweep does not stop half-way on input.
-  const bool friction =
-      std::find(sweep.problems.begin(), sweep.problems.end(), infsup::PairingProblem::friction) != sweep.problems.end();
-  const auto ratios = ratio_choices(sweep);
-  for (std::size_t level = 0; level < sweep.levels.size(); ++level) {
-    const scene::Scene& scene = sweep.levels[level].scene;
-    try {
-      if (friction && scene.friction_bound.empty() && !scene.is_elastic())
-        throw_bad_input(scene.file, "data.s", "(missing)",
-                        "the friction pairing (22) of sweep.problem needs the friction bound s");
-      const auto mesh = scene::build_scene_mesh(scene);
-      const mesh::ContactBoundary contact(mesh);
-      StabilitySweep::LevelFacts facts;
-      facts.cells = mesh.n_cells();
-      facts.contact_edges = static_cast<int>(contact.edges().size());
-      const auto nodes = contact.breakpoints();
-      facts.contact_h_min = nodes.back() - nodes.front();
-      for (std::size_t k = 0; k + 1 < nodes.size(); ++k)
-        facts.contact_h_min = std::min(facts.contact_h_min, nodes[k + 1] - nodes[k]);
-      const auto cell_degrees = scene::scene_cell_degrees(scene, mesh);
-      facts.scene_p = *std::min_element(cell_degrees.begin(), cell_degrees.end());
-      for (const auto& ratio : ratios) {
-        const auto at_point = point_scene(scene, 0, -1, ratio);
-        std::optional<mesh::BoundaryMesh> built;
-        try {
-          built.emplace(scene::build_scene_boundary_mesh(at_point, contact));
-        } catch (const InputError& error) {
-          if (!ratio) throw;
-          throw InputError(fmt::format("with sweep.ratio = {}: {}", ratio->text, error.what()));
-        }
-        const auto& boundary_mesh = *built;
-        const auto segment_degrees = scene::scene_segment_degrees(at_point, contact, boundary_mesh);
-        facts.segments.push_back(boundary_mesh.n_segments());
-        facts.scene_pc.push_back(*std::max_element(segment_degrees.begin(), segment_degrees.end()));
-      }
-      sweep.level_facts.push_back(std::move(facts));
-    } catch (const InputError& error) {
-      throw InputError(fmt::format("{}: {} of the scene {}: {}", path, level_name(sweep, level), base, error.what()));
-    }
-  }
+  sweep.level_facts = sweep_level_facts(sweep, base, ranks);
   return sweep;
 }
 

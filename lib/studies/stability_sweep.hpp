@@ -2,6 +2,8 @@
 // norms and problems, with a fitted rate α ≈ C h^r and a verdict per configuration.
 #pragma once
 
+#include <mpi.h>
+
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -48,9 +50,10 @@ struct StabilitySweep {
 };
 
 /// Reads the file and checks every level's scene, contact mesh (n_C · ratio whole for every
-/// ratio) and data (s for the friction problem) before anything is computed.
-/// @throws InputError naming file, key, value and the allowed range, and the level.
-StabilitySweep read_stability_sweep(const std::string& path);
+/// ratio) and data (s for the friction problem) before anything is computed. Collective on
+/// `ranks` (every rank reads the file; the first alone builds the levels' meshes).
+/// @throws InputError naming file, key, value and the allowed range, and the level (on every rank).
+StabilitySweep read_stability_sweep(const std::string& path, MPI_Comm ranks = MPI_COMM_WORLD);
 
 /// Columns of alpha.csv (one row per point). `level` counts the sweep's levels from 1, `n` is
 /// the number of edges of T_h on Γ_C, `m` the number of segments of T_{C,H}, h the longest edge

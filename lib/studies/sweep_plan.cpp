@@ -1,6 +1,8 @@
 // The sweep's points, groups, cost estimates and schedule.
 #include "studies/sweep_plan.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -18,6 +20,25 @@ std::string SweepPoint::key() const {
 std::vector<std::optional<scene::Ratio>> ratio_choices(const StabilitySweep& sweep) {
   if (sweep.ratios.empty()) return {std::nullopt};
   return {sweep.ratios.begin(), sweep.ratios.end()};
+}
+
+scene::Scene point_scene(scene::Scene scene, int p, int pc, const std::optional<scene::Ratio>& ratio,
+                         infsup::PairingProblem problem, infsup::GramNorm norm) {
+  if (p > 0) scene.p = scene::Degree{p, {}};
+  if (pc >= 0) scene.pc = scene::Degree{pc, {}};
+  if (ratio) {
+    scene.ratio = {*ratio};
+    scene.m.clear();
+    scene.breakpoints.clear();
+  }
+  scene.problem = problem;
+  scene.norm = norm;
+  return scene;
+}
+
+std::string level_name(const StabilitySweep& sweep, std::size_t level) {
+  const auto& label = sweep.levels[level].label;
+  return fmt::format("level {}{}", level + 1, label.empty() ? "" : " (" + label + ")");
 }
 
 std::vector<SweepPoint> list_sweep_points(const StabilitySweep& sweep) {

@@ -14,6 +14,7 @@
 
 #include "infsup/infsup_operators.hpp"
 #include "scene/ratio.hpp"
+#include "scene/scene.hpp"
 
 namespace hpcontact::studies {
 
@@ -33,6 +34,16 @@ struct SweepPoint {
 
 /// The sweep's ratios, or one empty choice: the scene's own contact mesh.
 std::vector<std::optional<scene::Ratio>> ratio_choices(const StabilitySweep& sweep);
+
+/// The scene of one point: the level's scene with the sweep's p, p_C (replacing degree rules),
+/// ratio (replacing the scene's m, ratio or breakpoints) where the sweep gives them, and the
+/// point's pairing and norm.
+scene::Scene point_scene(scene::Scene scene, int p, int pc, const std::optional<scene::Ratio>& ratio,
+                         infsup::PairingProblem problem = infsup::PairingProblem::signorini,
+                         infsup::GramNorm norm = infsup::GramNorm::interpolation);
+
+/// "level 2 (domain.n_x=24 domain.n_y=24)", for messages and progress.
+std::string level_name(const StabilitySweep& sweep, std::size_t level);
 
 /// Every point, in the order of alpha.csv: by level, p, problem, norm, p_C, ratio (p_C ≥ p skipped
 /// with pc_rule = "below_p").

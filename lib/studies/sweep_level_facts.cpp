@@ -1,0 +1,102 @@
+// sweep_level_facts: each level's meshes built and measured on the first rank, the facts sent to
+// the others as bytes.
+#include "studies/sweep_level_facts.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <optional>
+
+#include "core/byte_buffer.hpp"
+#include "core/error.hpp"
+#include "core/petsc_session.hpp"
+#include "core/rank_agreement.hpp"
+#include "mesh/boundary_mesh.hpp"
+#include "mesh/contact_boundary.hpp"
+#include "scene/scene_mesh.hpp"
+#include "studies/sweep_plan.hpp"
+
+namespace hpcontact::studies {
+namespace {
+
+using LevelFacts = StabilitySweep::LevelFacts;
+
+LevelFacts facts_of_level(const scene::Scene& scene, const std::vector<std::optional<scene::Ratio>>& ratios,
+                          bool friction) {
+  if (friction && scene.friction_bound.empty() && !scene.is_elastic())
+    throw_bad_input(scene.file, "data.s", "(missing)",
+                    "the friction pairing (22) of sweep.problem needs the friction bound s");
+  const auto mesh = scene::build_scene_mesh(scene);
+  const mesh::ContactBoundary contact(mesh);
+  LevelFacts facts;
+  facts.cells = mesh.n_cells();
+  facts.contact_edges = static_cast<int>(contact.edges().size());
+  const auto nodes = contact.breakpoints();
+  facts.contact_h_min = nodes.back() - nodes.front();
+  for (std::size_t k = 0; k + 1 < nodes.size(); ++k)
+    facts.contact_h_min = std::min(facts.contact_h_min, nodes[k + 1] - nodes[k]);
+  const auto cell_degrees = scene::scene_cell_degrees(scene, mesh);
+  facts.scene_p = *std::min_element(cell_degrees.begin(), cell_degrees.end());
+  for (const auto& ratio : ratios) {
+    const auto at_point = point_scene(scene, 0, -1, ratio);
+    std::optional<mesh::BoundaryMesh> built;
+    try {
+      built.emplace(scene::build_scene_boundary_mesh(at_point, contact));
+    } catch (const InputError& error) {
+      if (!ratio) throw;
+      throw InputError(fmt::format("with sweep.ratio = {}: {}", ratio->text, error.what()));
+    }
+    const auto segment_degrees = scene::scene_segment_degrees(at_point, contact, *built);
+    facts.segments.push_back(built->n_segments());
+    facts.scene_pc.push_back(*std::max_element(segment_degrees.begin(), segment_degrees.end()));
+  }
+  return facts;
+}
+
+std::vector<char> facts_as_bytes(const std::vector<LevelFacts>& levels) {
+  ByteWriter out;
+  out.put(static_cast<std::uint64_t>(levels.size()));
+  for (const auto& facts : levels) {
+    out.put(facts.cells), out.put(facts.contact_edges), out.put(facts.contact_h_min), out.put(facts.scene_p);
+    out.put(facts.segments), out.put(facts.scene_pc);
+  }
+  return out.take();
+}
+
+std::vector<LevelFacts> facts_from_bytes(const std::vector<char>& bytes) {
+  ByteReader in(bytes);
+  std::vector<LevelFacts> levels(in.get_count(1));
+  for (auto& facts : levels) {
+    facts.cells = in.get<int>(), facts.contact_edges = in.get<int>();
+    facts.contact_h_min = in.get<double>(), facts.scene_p = in.get<int>();
+    facts.segments = in.get_vector<int>(), facts.scene_pc = in.get_vector<int>();
+  }
+  HPC_VERIFY(in.at_end(), "bytes of a sweep's level facts left over");
+  return levels;
+}
+
+}  // namespace
+
+std::vector<LevelFacts> sweep_level_facts(const StabilitySweep& sweep, const std::string& base, MPI_Comm ranks) {
+  const bool friction =
+      std::find(sweep.problems.begin(), sweep.problems.end(), infsup::PairingProblem::friction) != sweep.problems.end();
+  const auto ratios = ratio_choices(sweep);
+  const int rank = rank_and_size(ranks).first, size = rank_and_size(ranks).second;
+  std::vector<LevelFacts> levels;
+  run_on_all_ranks_agreeing(
+      [&] {
+        if (rank != 0) return;
+        for (std::size_t level = 0; level < sweep.levels.size(); ++level) try {
+            levels.push_back(facts_of_level(sweep.levels[level].scene, ratios, friction));
+          } catch (const InputError& error) {
+            throw InputError(
+                fmt::format("{}: {} of the scene {}: {}", sweep.file, level_name(sweep, level), base, error.what()));
+          }
+      },
+      ranks);
+  if (size == 1) return levels;
+  const auto bytes = broadcast_bytes(rank == 0 ? facts_as_bytes(levels) : std::vector<char>{}, 0, ranks);
+  return rank == 0 ? levels : facts_from_bytes(bytes);
+}
+
+}  // namespace hpcontact::studies
