@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "csv_file.hpp"
 #include "infsup/infsup_analysis.hpp"
 #include "mesh/contact_boundary.hpp"
 #include "mesh/rectangle_mesh.hpp"
@@ -172,24 +173,6 @@ pC = 1
 s = "(1 - x)^2"
 )toml";
 
-std::vector<std::map<std::string, std::string>> read_rows(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::string> header;
-  std::stringstream head(line);
-  for (std::string cell; std::getline(head, cell, ',');) header.push_back(cell);
-  std::vector<std::map<std::string, std::string>> rows;
-  while (std::getline(in, line)) {
-    std::stringstream cells(line);
-    std::map<std::string, std::string> row;
-    for (std::size_t k = 0; k < header.size() && std::getline(cells, row[header[k]], ','); ++k) {
-    }
-    rows.push_back(row);
-  }
-  return rows;
-}
-
 std::string text_of(const std::filesystem::path& path) {
   std::ifstream in(path);
   return {std::istreambuf_iterator<char>(in), {}};
@@ -223,7 +206,7 @@ eigensolver = "dense"
   const auto sweep = studies::read_stability_sweep((dir / "sweep.toml").string());
   ASSERT_EQ(sweep.levels.size(), 2u);
   studies::run_stability_sweep(sweep, dir / "alpha.csv");
-  const auto rows = read_rows(dir / "alpha.csv");
+  const auto rows = hpcontact::testing::read_csv(dir / "alpha.csv").records();
   // Pairs with p_C < p: (1, 0), (3, 0), (3, 1), (3, 2); × 2 levels × 2 ratios × 2 norms × 2 problems.
   ASSERT_EQ(rows.size(), 4u * 2 * 2 * 2 * 2);
   for (const auto& row : rows) {
@@ -258,7 +241,7 @@ levels = { "domain.refinements" = "0..2" }
 )toml";
   const auto sweep = studies::read_stability_sweep((dir / "sweep.toml").string());
   studies::run_stability_sweep(sweep, dir / "alpha.csv");
-  const auto rows = read_rows(dir / "alpha.csv");
+  const auto rows = hpcontact::testing::read_csv(dir / "alpha.csv").records();
   ASSERT_EQ(rows.size(), 3u);
   for (int level = 0; level < 3; ++level) {
     const auto& row = rows[level];

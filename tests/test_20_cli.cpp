@@ -13,9 +13,11 @@
 #include <vector>
 
 #include "cli_runner.hpp"
+#include "csv_file.hpp"
 
 namespace {
 
+using hpcontact::testing::read_csv;
 using hpcontact::testing::run;
 using hpcontact::testing::run_command;
 using hpcontact::testing::scratch;
@@ -547,27 +549,6 @@ TEST(Cli, SolveUnderMpirunGivesEveryEffectOfTheSerialRunWithoutTheWholeMesh) {
          "dirichlet = \"abs(y - 1) < 1e-9\"\n[contact_mesh]\nratio = 1\n[discretization]\np = 2\npC = 1\n"
          "[material]\nE = \"1\"\nnu = \"0.3\"\n[data]\nf_y = \"-1\"\ng = \"0.05 + 0.2 * x^2\"\n"
          "[convergence]\nrefinements = 2\n[run]\neffects = [\"frictionless\", \"infsup\", \"convergence\"]\n";
-  // Every column of a CSV file but its seconds (wall times) and text, by name.
-  auto columns = [](const std::filesystem::path& path) {
-    std::ifstream in(path);
-    std::string line;
-    std::getline(in, line);
-    std::vector<std::string> names;
-    std::stringstream header(line);
-    for (std::string name; std::getline(header, name, ',');) names.push_back(name);
-    std::map<std::string, std::vector<double>> values;
-    while (std::getline(in, line)) {
-      std::stringstream cells(line);
-      std::size_t k = 0;
-      for (std::string cell; std::getline(cells, cell, ','); ++k) {
-        char* end = nullptr;
-        const double value = std::strtod(cell.c_str(), &end);
-        if (k < names.size() && names[k] != "seconds" && end != cell.c_str() && *end == '\0')
-          values[names[k]].push_back(value);
-      }
-    }
-    return values;
-  };
   for (const char* name : {"interp", "extension", "elastic"}) {
     const std::string arguments = std::string(" solve ") + (dir / name).string() + ".toml --out ";
     const auto serial = run_command(env + HPCONTACT_CLI + arguments + (dir / name / "serial").string());
@@ -576,7 +557,9 @@ TEST(Cli, SolveUnderMpirunGivesEveryEffectOfTheSerialRunWithoutTheWholeMesh) {
                                       (dir / name / "parallel").string());
     ASSERT_EQ(parallel.exit_code, 0) << name << "\n" << parallel.output;
     for (const char* file : {"convergence.csv", "mode.csv"}) {
-      const auto a = columns(dir / name / "serial" / file), b = columns(dir / name / "parallel" / file);
+      // every numeric column but the wall times
+      const auto a = read_csv(dir / name / "serial" / file).numeric_columns({"seconds"}),
+                 b = read_csv(dir / name / "parallel" / file).numeric_columns({"seconds"});
       ASSERT_GE(a.size(), 4u) << name << ", " << file;
       for (const auto& [column, values] : a) {
         ASSERT_EQ(b.count(column), 1u) << name << ", " << file << ", " << column;

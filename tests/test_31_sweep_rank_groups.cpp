@@ -13,9 +13,11 @@
 #include <vector>
 
 #include "cli_runner.hpp"
+#include "csv_file.hpp"
 
 namespace {
 
+using hpcontact::testing::read_csv;
 using hpcontact::testing::run_command;
 using hpcontact::testing::scratch;
 
@@ -34,28 +36,17 @@ std::filesystem::path write_sweep(const std::filesystem::path& dir, const std::s
   return dir / "sweep.toml";
 }
 
-// alpha.csv as rows of fields.
-std::vector<std::vector<std::string>> read_rows(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::vector<std::vector<std::string>> rows;
-  for (std::string line; std::getline(in, line);) {
-    std::vector<std::string> fields;
-    std::stringstream stream(line);
-    for (std::string field; std::getline(stream, field, ',');) fields.push_back(field);
-    rows.push_back(fields);
-  }
-  return rows;
-}
-
 // Every column of `b` equal to `a`'s, but alpha (to 1e-10 relative, 1e-13 absolute below 1e-3:
 // the distributed factors sum in another order, and the eigenvalue's round-off is relative to the
 // largest, 1), alpha_error (an estimate of round-off size at these levels) and seconds.
 void expect_equal_sweeps(const std::filesystem::path& a, const std::filesystem::path& b) {
-  const auto expected = read_rows(a), actual = read_rows(b);
+  const auto expected_file = read_csv(a), actual_file = read_csv(b);
+  const auto &expected = expected_file.rows, &actual = actual_file.rows;
   ASSERT_EQ(expected.size(), actual.size()) << b;
-  ASSERT_GT(expected.size(), 1u);
-  const auto& header = expected.front();
-  for (std::size_t r = 1; r < expected.size(); ++r) {
+  ASSERT_GT(expected.size(), 0u);
+  const auto& header = expected_file.header;
+  EXPECT_EQ(actual_file.header, header) << b;
+  for (std::size_t r = 0; r < expected.size(); ++r) {
     ASSERT_EQ(expected[r].size(), actual[r].size());
     for (std::size_t c = 0; c < header.size(); ++c) {
       if (header[c] == "seconds" || header[c] == "alpha_error") continue;
