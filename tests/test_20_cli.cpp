@@ -205,8 +205,8 @@ outputs = ["summary"]
   EXPECT_EQ(summary.at("edges_on_contact").get<int>(), 8 + 3 * 2 * 8);
   // Under mpirun rank 0 fits and sends the points: the same points and mesh, the same energies.
   const auto parallel = run_command(
-      "env OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun -n 2 "
-      "--oversubscribe " HPCONTACT_CLI " solve " +
+      "env OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun -n 2 --oversubscribe "
+      "-x OPENBLAS_NUM_THREADS=1 " HPCONTACT_CLI " solve " +
       (dir / "fit.toml").string() + " --out " + (dir / "parallel").string());
   ASSERT_EQ(parallel.exit_code, 0) << parallel.output;
   std::ifstream parallel_file(dir / "parallel" / "summary.json");

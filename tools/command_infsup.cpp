@@ -85,7 +85,7 @@ int run_infsup(const InfSupOptions& o) {
 
   // 3. Report and save. For degree rules p and p_C are the worst case, as in Π: the smallest p,
   // the largest p_C.
-  const int p = *std::min_element(d->cell_degrees.begin(), d->cell_degrees.end());
+  const int p = d->smallest_cell_degree;
   const int pc = *std::max_element(d->segment_degrees.begin(), d->segment_degrees.end());
   const int n = static_cast<int>(d->contact->edges().size()), m = d->boundary_mesh->n_segments();
   const double ratio = static_cast<double>(m) / n;

@@ -190,7 +190,7 @@ io::CsvTable elastic_convergence(const scene::Scene& scene, const SceneDiscretiz
       const auto& effect = k == 0 ? base[e] : levels[k].effects[e];
       const auto& reference = finest.effects.empty() ? base[e].solution : finest.effects[e].solution;
       table.add_row(
-          {effect.name, static_cast<long long>(k), largest_degree(d.cell_degrees), largest_degree(d.segment_degrees),
+          {effect.name, static_cast<long long>(k), d.largest_cell_degree, largest_degree(d.segment_degrees),
            static_cast<long long>(d.contact->edges().size()), static_cast<long long>(d.boundary_mesh->n_segments()),
            static_cast<long long>(effect.solution.n_dofs), static_cast<long long>(effect.solution.lambda.size()),
            effect.solution.energy, std::abs(effect.solution.energy - reference.energy),

@@ -108,24 +108,22 @@ FreeBoundaryFit fit_free_boundary_once(const scene::Scene& scene, const std::vec
       [&] {
         if (rank != 0) return;
         fit.emplace(fit_free_boundary(scene, problems));
-        std::vector<double> coordinates;
-        for (const auto& x : fit->points) coordinates.insert(coordinates.end(), {x.x(), x.y()});
+        // (the grading points and layers, all the fit changes of the scene, sent as they are
+        // rather than rebuilt from the points)
         ByteWriter out;
-        out.put(coordinates), out.put(fit->moved), out.put(fit->solves);
+        mesh::put_points(out, fit->points), mesh::put_points(out, fit->scene.grading_points);
+        out.put(fit->scene.grading_layers), out.put(fit->moved), out.put(fit->solves);
         bytes = out.take();
       },
       ranks);
   bytes = broadcast_bytes(std::move(bytes), 0, ranks);
   if (fit) return std::move(*fit);
-  // The fitted scene is the given one with the points added to its grading points (as returned).
   ByteReader in(bytes);
-  FreeBoundaryFit received{scene, {}, 0.0, 0};
-  const auto coordinates = in.get_vector<double>();
-  for (std::size_t k = 0; k + 1 < coordinates.size(); k += 2)
-    received.points.emplace_back(coordinates[k], coordinates[k + 1]);
+  FreeBoundaryFit received{scene, mesh::get_points(in), 0.0, 0};
+  received.scene.grading_points = mesh::get_points(in);
+  received.scene.grading_layers = in.get<int>();
   received.moved = in.get<double>(), received.solves = in.get<int>();
-  received.scene.grading_points.insert(received.scene.grading_points.end(), received.points.begin(),
-                                       received.points.end());
+  HPC_VERIFY(in.at_end(), "bytes of a free-boundary fit left over");
   return received;
 }
 

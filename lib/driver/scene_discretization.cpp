@@ -36,13 +36,17 @@ std::unique_ptr<SceneDiscretization> discretize_scene(const scene::Scene& scene,
   d->contact = std::make_unique<mesh::ContactBoundary>(*d->contact_cells);
   d->boundary_mesh = std::make_unique<mesh::BoundaryMesh>(scene::build_scene_boundary_mesh(scene, *d->contact));
   d->cell_degrees = scene::scene_cell_degrees(scene, *d->mesh);
+  const auto [smallest, largest] = std::minmax_element(d->cell_degrees.begin(), d->cell_degrees.end());
+  d->smallest_cell_degree = *smallest, d->largest_cell_degree = *largest;
   d->segment_degrees = scene::scene_segment_degrees(scene, *d->contact, *d->boundary_mesh);
   d->multipliers = std::make_unique<space::MultiplierSpace>(*d->boundary_mesh, d->segment_degrees);
   return d;
 }
 
 void release_whole_mesh(SceneDiscretization& d, const mesh::Mesh& operators_mesh) {
-  if (&operators_mesh != d.mesh.get()) d.mesh.reset();
+  if (&operators_mesh == d.mesh.get()) return;
+  d.mesh.reset();
+  d.cell_degrees = {};
 }
 
 bool reads_whole_mesh_after_operators(const scene::Scene& scene) {

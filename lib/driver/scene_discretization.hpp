@@ -31,7 +31,10 @@ struct SceneDiscretization {
   std::unique_ptr<mesh::Mesh> contact_cells;
   std::unique_ptr<mesh::ContactBoundary> contact;  ///< refers to `contact_cells`
   std::unique_ptr<mesh::BoundaryMesh> boundary_mesh;
-  std::vector<int> cell_degrees, segment_degrees;
+  /// p_T per cell of T_h: emptied with the whole mesh (release_whole_mesh), as long as it.
+  std::vector<int> cell_degrees;
+  int smallest_cell_degree = 0, largest_cell_degree = 0;  ///< of cell_degrees, kept after release
+  std::vector<int> segment_degrees;
   std::unique_ptr<space::MultiplierSpace> multipliers;  ///< M^{p_C}(T_{C,H}), refers to boundary_mesh
 };
 
@@ -41,10 +44,10 @@ struct SceneDiscretization {
 std::unique_ptr<SceneDiscretization> discretize_scene(const scene::Scene& scene,
                                                       const linalg::Distribution& distribution = {});
 
-/// Frees the whole T_h of `discretization` when the operators built on it live on a part of it
-/// (`operators_mesh`, the space's mesh: a distributed run), so that no rank holds the whole mesh
-/// for the rest of the run; nothing when they live on the whole mesh (serial). Call it once
-/// nothing else of the run needs the whole mesh (the extension norm's references refine it).
+/// Frees the whole T_h of `discretization` and its cells' degrees when the operators built on it
+/// live on a part of it (`operators_mesh`, the space's mesh: a distributed run), so that no rank
+/// holds an array of the whole mesh's length for the rest of the run; nothing when they live on the whole mesh
+/// (serial). Call it once nothing else of the run needs the whole mesh (the extension norm's references refine it).
 void release_whole_mesh(SceneDiscretization& discretization, const mesh::Mesh& operators_mesh);
 /// Whether a run of `scene` reads the whole mesh after its operators are built: the inf-sup effect
 /// in the extension norm, whose references refine it.

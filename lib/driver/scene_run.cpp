@@ -154,7 +154,7 @@ void add_convergence_rows(const scene::Scene& scene, const std::vector<ContactEf
       const auto& effect = (*levels[k].effects)[e];
       const auto& reference = (*finest.effects)[e].solution;
       table.add_row(
-          {effect.problem, static_cast<long long>(k), largest_degree(d.cell_degrees), largest_degree(d.segment_degrees),
+          {effect.problem, static_cast<long long>(k), d.largest_cell_degree, largest_degree(d.segment_degrees),
            static_cast<long long>(d.contact->edges().size()), static_cast<long long>(d.boundary_mesh->n_segments()),
            static_cast<long long>(effect.solution.n_dofs), static_cast<long long>(effect.solution.lambda.size()),
            effect.solution.energy, std::abs(effect.solution.energy - reference.energy),

@@ -107,7 +107,7 @@ InfSupResult analyse_infsup(const InfSupSetup& setup, EigenBackend backend) {
   result.mode = Eigen::VectorXd::Zero(operators.n_multiplier_dofs);
   for (std::size_t i = 0; i < operators.active_dofs.size(); ++i)
     result.mode(operators.active_dofs[i]) = pair.eigenvector(static_cast<Eigen::Index>(i));
-  const int min_p = *std::min_element(setup.cell_degrees.begin(), setup.cell_degrees.end());
+  const int min_p = operators.smallest_p;
   const int max_pc = *std::max_element(setup.segment_degrees.begin(), setup.segment_degrees.end());
   result.pi = stability_indicator(operators.h, operators.H, min_p, max_pc);
   result.h = operators.h;

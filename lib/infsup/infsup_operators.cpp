@@ -99,6 +99,7 @@ InfSupOperators elastic_infsup_operators(const InfSupSetup& setup) {
   out.log = elastic.log();
   out.n_primal_dofs = elastic.n_dofs();
   out.h = elastic.whole_mesh().longest_edge();
+  out.smallest_p = elastic.whole_mesh().smallest_degree();
   out.H = setup.boundary_mesh->mesh_size();
   return out;
 }
@@ -144,6 +145,7 @@ InfSupOperators assemble_infsup_operators(const InfSupSetup& setup) {
   out.n_primal_dofs = space.n_dofs();
   out.n_multiplier_dofs = multipliers.n_dofs();
   out.h = primal.whole_mesh().longest_edge();
+  out.smallest_p = primal.whole_mesh().smallest_degree();
   out.H = setup.boundary_mesh->mesh_size();
   return out;
 }

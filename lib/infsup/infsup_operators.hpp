@@ -60,6 +60,7 @@ struct InfSupOperators {
   int n_multiplier_dofs = 0;      ///< of the whole multiplier: gram_copies × dofs of M^{p_C}(T_{C,H})
   int gram_copies = 1;            ///< G of the pairing = diag(G, …) with this many copies
   double h = 0.0;                 ///< longest edge of T_h
+  int smallest_p = 0;             ///< smallest p_T of T_h
   double H = 0.0;                 ///< longest segment of T_{C,H}
   double seconds_assembly = 0.0;  ///< what this call assembled of S^p(T_h), K, M, B
   double seconds_primal = 0.0;    ///< what this call factorized of A_G (trace last), and S_G

@@ -127,8 +127,9 @@ SubstructuredCholesky::SubstructuredCholesky(MPI_Comm ranks, int n,
   // (t = 4481, s = 923 at n = 64 on 2 ranks: 2.5e7 against 7.9e6), and the annulus' trace on 2
   // ranks joins (t = 1577, s = 747: 3.5e6 against 6.7e6; out of it, S took 20.8 s, not 0.4 s).
   // Memory bounds it too: the t² of the trailing block held by every rank must not outweigh the
-  // rank's share of the entries (a lower bound on its factor's) beyond 64 MB, or more ranks would
-  // gain no memory (interface_outweighs_factors).
+  // rank's share of the matrix entries (the cells' entries, duplicates counted: a proxy for its
+  // factor, known before factorizing) beyond 64 MB, or more ranks would gain no memory
+  // (interface_outweighs_factors).
   std::size_t n_shared = 0;
   for (int i : shared) n_shared += !is_trailing(i);
   const int n_ranks = rank_and_size(ranks).second;

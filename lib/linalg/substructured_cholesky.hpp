@@ -81,7 +81,8 @@ class SubstructuredCholesky {
 };
 
 /// Whether a rank's share of the dense interface problem (`interface_entries`) holds more than the
-/// ranks' sparse factors on average and more than 64 MB: the factors shrink like 1/P, |G|²/P
+/// ranks' sparse factors on average (`mean_factor_nonzeros`, or before factorizing a proxy of it)
+/// and more than 64 MB: the factors shrink like 1/P, |G|²/P
 /// does not (|G| grows with P), so another distributed solver scales further.
 bool interface_outweighs_factors(double interface_entries, double mean_factor_nonzeros);
 

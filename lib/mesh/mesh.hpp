@@ -158,4 +158,9 @@ class Mesh {
 /// 6e-7, while down to 1e-10 they agree with shallower meshes to 1e-11.
 inline constexpr double kFinestRelativeCell = 1e-10;
 
+/// Points as bytes (by coordinates: Eigen's fixed-size types are not trivially copyable in the
+/// type system's sense), and back (mesh/mesh_bytes.cpp).
+void put_points(ByteWriter& out, const std::vector<Point>& points);
+std::vector<Point> get_points(ByteReader& in);
+
 }  // namespace hpcontact::mesh

@@ -6,9 +6,7 @@
 #include "mesh/mesh.hpp"
 
 namespace hpcontact::mesh {
-namespace {
 
-// (Eigen's fixed-size types are not trivially copyable in the type system's sense: by coordinates.)
 void put_points(ByteWriter& out, const std::vector<Point>& points) {
   std::vector<double> coordinates;
   coordinates.reserve(2 * points.size());
@@ -24,6 +22,8 @@ std::vector<Point> get_points(ByteReader& in) {
   for (std::size_t k = 0; k < coordinates.size(); k += 2) points.emplace_back(coordinates[k], coordinates[k + 1]);
   return points;
 }
+
+namespace {
 
 using CurveList = std::vector<std::shared_ptr<const EdgeCurve>>;
 
@@ -115,7 +115,7 @@ Mesh Mesh::unpack(ByteReader& in) {
   mesh.cell_edge_signs_ = in.get_vector<std::array<std::int8_t, 4>>();
   mesh.edge_cells_ = in.get_vector<std::array<int, 2>>();
   mesh.boundary_edges_ = in.get_vector<int>();
-  // (Each label, curve and map takes at least 8 bytes: counts beyond that are corrupt bytes.)
+  // (Each label and curve takes at least 8 bytes, each map at least 1: larger counts are corrupt.)
   mesh.labels_.resize(in.get_count(8));
   for (auto& label : mesh.labels_) label = in.get_string();
   mesh.edge_label_index_ = in.get_vector<std::uint16_t>();

@@ -18,7 +18,7 @@ ElasticOperators::ElasticOperators(const mesh::Mesh& mesh, std::vector<int> cell
                                    std::vector<assembly::Material> materials, OperatorLog* log,
                                    const std::array<std::vector<char>, space::kComponents>& fixed,
                                    linalg::Distribution distribution)
-    : whole_(mesh), materials_(std::move(materials)), log_(log), distribution_(distribution) {
+    : whole_(mesh, cell_degrees), materials_(std::move(materials)), log_(log), distribution_(distribution) {
   Stopwatch clock;
   if (static_cast<int>(materials_.size()) != mesh.n_cells())
     throw InputError("elasticity: one material per cell is needed");

@@ -16,7 +16,7 @@ namespace hpcontact::operators {
 
 PrimalOperators::PrimalOperators(const mesh::Mesh& mesh, std::vector<int> cell_degrees, OperatorLog* log,
                                  linalg::Distribution distribution)
-    : whole_(mesh), log_(log), distribution_(distribution) {
+    : whole_(mesh, cell_degrees), log_(log), distribution_(distribution) {
   Stopwatch clock;
   contact_ = std::make_unique<mesh::ContactBoundary>(mesh);
   rank_ = build_rank_space(mesh, std::move(cell_degrees), *contact_, distribution);

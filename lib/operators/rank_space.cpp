@@ -4,6 +4,8 @@
 
 #include <mpi.h>
 
+#include <algorithm>
+
 #include "mesh/cell_partition.hpp"
 
 namespace hpcontact::operators {
@@ -45,11 +47,12 @@ RankSpace build_rank_space(const mesh::Mesh& mesh, std::vector<int> cell_degrees
   return out;
 }
 
-WholeMeshFacts::WholeMeshFacts(const mesh::Mesh& mesh)
+WholeMeshFacts::WholeMeshFacts(const mesh::Mesh& mesh, const std::vector<int>& cell_degrees)
     : address_(reinterpret_cast<std::uintptr_t>(&mesh)),
       cells_(mesh.n_cells()),
       vertices_(mesh.n_vertices()),
       edges_(mesh.n_edges()),
+      smallest_degree_(cell_degrees.empty() ? 0 : *std::min_element(cell_degrees.begin(), cell_degrees.end())),
       longest_edge_(mesh.longest_edge()),
       has_dirichlet_(mesh.has_part(mesh::BoundaryPart::dirichlet)) {}
 

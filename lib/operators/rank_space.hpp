@@ -46,21 +46,23 @@ RankSpace build_rank_space(const mesh::Mesh& mesh, std::vector<int> cell_degrees
 
 /// What an operator object remembers of the whole mesh it was built from: its address and sizes,
 /// compared, never dereferenced, and the facts of it that a run asks later (h, whether Γ_D
-/// exists), so that a distributed run may free the whole mesh once the object holds its part (the
-/// address alone could be reused by a later mesh).
+/// exists, the smallest p_T), so that a distributed run may free the whole mesh and its cells'
+/// degrees once the object holds its part (the address alone could be reused by a later mesh).
 class WholeMeshFacts {
  public:
-  explicit WholeMeshFacts(const mesh::Mesh& mesh);
+  WholeMeshFacts(const mesh::Mesh& mesh, const std::vector<int>& cell_degrees);
   /// Whether `mesh` is the mesh these facts were taken of (as far as address and sizes tell).
   bool is(const mesh::Mesh& mesh) const;
   /// h: the whole mesh's longest edge (a part's would be its own cells').
   double longest_edge() const { return longest_edge_; }
   /// Whether some edge of the whole mesh is on Γ_D (a part may have none).
   bool has_dirichlet() const { return has_dirichlet_; }
+  /// The smallest p_T over the whole mesh (a part's own can be higher).
+  int smallest_degree() const { return smallest_degree_; }
 
  private:
   std::uintptr_t address_;
-  int cells_, vertices_, edges_;
+  int cells_, vertices_, edges_, smallest_degree_;
   double longest_edge_;
   bool has_dirichlet_;
 };
