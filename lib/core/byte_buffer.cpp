@@ -1,7 +1,11 @@
-// broadcast_bytes: the length first, then the bytes in pieces of at most 1 GiB.
+// broadcast_bytes: the length first, then the bytes in pieces of at most 1 GiB;
+// bytes_made_by_first_rank.
 #include "core/byte_buffer.hpp"
 
 #include <algorithm>
+
+#include "core/petsc_session.hpp"
+#include "core/rank_agreement.hpp"
 
 namespace hpcontact {
 
@@ -15,6 +19,18 @@ std::vector<char> broadcast_bytes(std::vector<char> bytes, int root, MPI_Comm ra
     HPC_VERIFY(MPI_Bcast(bytes.data() + at, count, MPI_CHAR, root, ranks) == MPI_SUCCESS, "broadcast of bytes");
   }
   return bytes;
+}
+
+std::vector<char> bytes_made_by_first_rank(const std::function<std::vector<char>()>& make, MPI_Comm ranks) {
+  if (rank_and_size(ranks).second == 1) return make();
+  const bool first = rank_and_size(ranks).first == 0;
+  std::vector<char> bytes;
+  run_on_all_ranks_agreeing(
+      [&] {
+        if (first) bytes = make();
+      },
+      ranks);
+  return broadcast_bytes(std::move(bytes), 0, ranks);
 }
 
 }  // namespace hpcontact

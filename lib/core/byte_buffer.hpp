@@ -1,12 +1,14 @@
 // Objects as bytes, for sending them between ranks: a writer that appends values and arrays of
 // trivially copyable types (and strings), a reader that takes them back in the same order and
-// refuses to read past the end, and a broadcast of such bytes of any length.
+// refuses to read past the end, a broadcast of such bytes of any length, and work one rank does
+// for the others, its result sent as bytes.
 #pragma once
 
 #include <mpi.h>
 
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -83,5 +85,10 @@ class ByteReader {
 /// `bytes` of rank `root` on every rank of `ranks` (collective), whatever their length (sent in
 /// pieces below MPI's int count limit).
 std::vector<char> broadcast_bytes(std::vector<char> bytes, int root, MPI_Comm ranks);
+
+/// Work that the first rank of `ranks` does alone for all of them: `make` runs there and returns
+/// its result as bytes, which every rank returns; a failure of `make` is raised on every rank alike
+/// (run_on_all_ranks_agreeing). Collective on `ranks`; on one rank it only runs `make`.
+std::vector<char> bytes_made_by_first_rank(const std::function<std::vector<char>()>& make, MPI_Comm ranks);
 
 }  // namespace hpcontact

@@ -11,8 +11,6 @@
 #include "contact/free_boundary.hpp"
 #include "core/byte_buffer.hpp"
 #include "core/error.hpp"
-#include "core/petsc_session.hpp"
-#include "core/rank_agreement.hpp"
 
 namespace hpcontact::driver {
 namespace {
@@ -100,23 +98,18 @@ FreeBoundaryFit fit_free_boundary(const scene::Scene& scene, const std::vector<c
 
 FreeBoundaryFit fit_free_boundary_once(const scene::Scene& scene, const std::vector<contact::ContactProblem>& problems,
                                        MPI_Comm ranks) {
-  const int rank = rank_and_size(ranks).first, size = rank_and_size(ranks).second;
-  if (size == 1) return fit_free_boundary(scene, problems);
   std::optional<FreeBoundaryFit> fit;
-  std::vector<char> bytes;
-  run_on_all_ranks_agreeing(
+  const auto bytes = bytes_made_by_first_rank(
       [&] {
-        if (rank != 0) return;
         fit.emplace(fit_free_boundary(scene, problems));
         // (the grading points and layers, all the fit changes of the scene, sent as they are
         // rather than rebuilt from the points)
         ByteWriter out;
         mesh::put_points(out, fit->points), mesh::put_points(out, fit->scene.grading_points);
         out.put(fit->scene.grading_layers), out.put(fit->moved), out.put(fit->solves);
-        bytes = out.take();
+        return out.take();
       },
       ranks);
-  bytes = broadcast_bytes(std::move(bytes), 0, ranks);
   if (fit) return std::move(*fit);
   ByteReader in(bytes);
   FreeBoundaryFit received{scene, mesh::get_points(in), 0.0, 0};

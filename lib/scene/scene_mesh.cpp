@@ -15,7 +15,6 @@
 #include "core/byte_buffer.hpp"
 #include "core/error.hpp"
 #include "core/expression.hpp"
-#include "core/rank_agreement.hpp"
 #include "mesh/cell_map.hpp"
 #include "mesh/contact_boundary.hpp"
 #include "mesh/gmsh_reader.hpp"
@@ -129,20 +128,15 @@ mesh::Mesh build_scene_mesh(const Scene& scene) {
 }
 
 mesh::Mesh build_scene_mesh_once(const Scene& scene, MPI_Comm ranks) {
-  int rank = 0;
-  MPI_Comm_rank(ranks, &rank);
   std::optional<mesh::Mesh> built;
-  std::vector<char> bytes;
-  run_on_all_ranks_agreeing(
+  const auto bytes = bytes_made_by_first_rank(
       [&] {
-        if (rank != 0) return;
         built.emplace(build_scene_mesh(scene));
         ByteWriter out;
         built->pack(out);
-        bytes = out.take();
+        return out.take();
       },
       ranks);
-  bytes = broadcast_bytes(std::move(bytes), 0, ranks);
   if (built) return std::move(*built);
   ByteReader in(bytes);
   return mesh::Mesh::unpack(in);

@@ -9,8 +9,6 @@
 
 #include "core/byte_buffer.hpp"
 #include "core/error.hpp"
-#include "core/petsc_session.hpp"
-#include "core/rank_agreement.hpp"
 #include "mesh/boundary_mesh.hpp"
 #include "mesh/contact_boundary.hpp"
 #include "scene/scene_mesh.hpp"
@@ -81,22 +79,20 @@ std::vector<LevelFacts> sweep_level_facts(const StabilitySweep& sweep, const std
   const bool friction =
       std::find(sweep.problems.begin(), sweep.problems.end(), infsup::PairingProblem::friction) != sweep.problems.end();
   const auto ratios = ratio_choices(sweep);
-  const int rank = rank_and_size(ranks).first, size = rank_and_size(ranks).second;
-  std::vector<LevelFacts> levels;
-  run_on_all_ranks_agreeing(
+  std::optional<std::vector<LevelFacts>> levels;  // the first rank's own
+  const auto bytes = bytes_made_by_first_rank(
       [&] {
-        if (rank != 0) return;
+        levels.emplace();
         for (std::size_t level = 0; level < sweep.levels.size(); ++level) try {
-            levels.push_back(facts_of_level(sweep.levels[level].scene, ratios, friction));
+            levels->push_back(facts_of_level(sweep.levels[level].scene, ratios, friction));
           } catch (const InputError& error) {
             throw InputError(
                 fmt::format("{}: {} of the scene {}: {}", sweep.file, level_name(sweep, level), base, error.what()));
           }
+        return facts_as_bytes(*levels);
       },
       ranks);
-  if (size == 1) return levels;
-  const auto bytes = broadcast_bytes(rank == 0 ? facts_as_bytes(levels) : std::vector<char>{}, 0, ranks);
-  return rank == 0 ? levels : facts_from_bytes(bytes);
+  return levels ? std::move(*levels) : facts_from_bytes(bytes);
 }
 
 }  // namespace hpcontact::studies
