@@ -285,7 +285,7 @@ const std::string kHertzScene = std::string(HPCONTACT_SOURCE_DIR) + "/studies/el
 postprocess::HertzComparison hertz_run(const std::vector<scene::SceneOverride>& overrides = {}) {
   const auto scene = scene::read_scene(kHertzScene, overrides);
   const auto d = driver::discretize_scene(scene);
-  const auto owned = driver::scene_elastic_operators(scene, *d->mesh, d->cell_degrees);
+  const auto owned = driver::scene_elastic_operators(scene, d->mesh.get(), d->cell_degrees);
   const operators::ElasticOperators& operators = *owned;
   const auto setup = driver::elastic_setup_of(scene, *d, contact::ElasticContactProblem::frictionless, operators);
   const auto solution = contact::solve_elastic_contact(setup);
@@ -617,7 +617,7 @@ TEST(ElasticScenes, HalfModelWithASymmetryRollerGivesHalfTheFullModel) {
   for (const char* name : {"hertz.toml", "hertz_half.toml"}) {
     const auto scene = scene::read_scene(std::string(HPCONTACT_SOURCE_DIR) + "/studies/elasticity/" + name);
     const auto d = driver::discretize_scene(scene);
-    const auto operators = driver::scene_elastic_operators(scene, *d->mesh, d->cell_degrees);
+    const auto operators = driver::scene_elastic_operators(scene, d->mesh.get(), d->cell_degrees);
     const auto setup = driver::elastic_setup_of(scene, *d, contact::ElasticContactProblem::frictionless, *operators);
     const auto solution = contact::solve_elastic_contact(setup);
     energy[k] = solution.energy;

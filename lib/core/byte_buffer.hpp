@@ -1,7 +1,7 @@
 // Objects as bytes, for sending them between ranks: a writer that appends values and arrays of
 // trivially copyable types (and strings), a reader that takes them back in the same order and
 // refuses to read past the end, a broadcast of such bytes of any length, and work one rank does
-// for the others, its result sent as bytes.
+// for the others, its result sent as bytes (the same to all, or each rank its own).
 #pragma once
 
 #include <mpi.h>
@@ -90,5 +90,12 @@ std::vector<char> broadcast_bytes(std::vector<char> bytes, int root, MPI_Comm ra
 /// its result as bytes, which every rank returns; a failure of `make` is raised on every rank alike
 /// (run_on_all_ranks_agreeing). Collective on `ranks`; on one rank it only runs `make`.
 std::vector<char> bytes_made_by_first_rank(const std::function<std::vector<char>()>& make, MPI_Comm ranks);
+
+/// Work that the first rank of `ranks` does alone for each of them: `make(r)` runs there for every
+/// rank r of `ranks`, one after another, and rank r returns the bytes made for it (the first rank
+/// holds one rank's bytes at a time). A failure of `make` is raised on every rank alike. Collective
+/// on `ranks`; on one rank it only runs `make(0)`.
+std::vector<char> bytes_made_by_first_rank_for_each(const std::function<std::vector<char>(int rank)>& make,
+                                                    MPI_Comm ranks);
 
 }  // namespace hpcontact

@@ -40,12 +40,25 @@ std::vector<assembly::Material> scene_materials(const scene::Scene& scene, const
   return materials;
 }
 
-std::unique_ptr<operators::ElasticOperators> scene_elastic_operators(const scene::Scene& scene, const mesh::Mesh& mesh,
+std::unique_ptr<operators::ElasticOperators> scene_elastic_operators(const scene::Scene& scene, const mesh::Mesh* mesh,
                                                                      const std::vector<int>& cell_degrees,
                                                                      OperatorLog* log,
                                                                      linalg::Distribution distribution) {
-  return std::make_unique<operators::ElasticOperators>(mesh, cell_degrees, scene_materials(scene, mesh), log,
-                                                       scene::scene_fixed_components(scene, mesh), distribution);
+  // Evaluated where the mesh is (distributed: on the first rank at least); a bad material there
+  // fails every rank alike.
+  std::vector<assembly::Material> materials;
+  std::array<std::vector<char>, space::kComponents> fixed;
+  const auto evaluate = [&] {
+    if (!mesh) return;
+    materials = scene_materials(scene, *mesh);
+    fixed = scene::scene_fixed_components(scene, *mesh);
+  };
+  if (distribution.distributed())
+    run_on_all_ranks_agreeing(evaluate, distribution.ranks);
+  else
+    evaluate();
+  return std::make_unique<operators::ElasticOperators>(mesh, cell_degrees, std::move(materials), log, fixed,
+                                                       distribution);
 }
 
 namespace {
@@ -171,7 +184,7 @@ io::CsvTable elastic_convergence(const scene::Scene& scene, const SceneDiscretiz
     refined.refinements += k;
     Level level{discretize_scene(refined, options.distribution), nullptr, std::make_unique<OperatorLog>(), nullptr, {}};
     level.d = level.own.get();
-    level.operators = scene_elastic_operators(refined, *level.own->mesh, level.d->cell_degrees, level.log.get(),
+    level.operators = scene_elastic_operators(refined, level.own->mesh.get(), level.d->cell_degrees, level.log.get(),
                                               options.distribution);
     release_whole_mesh(*level.own, level.operators->mesh());
     level.effects =
@@ -265,9 +278,9 @@ void write_tables(const scene::Scene& scene, const std::vector<ElasticEffect>& e
 nlohmann::json run_elastic_scene(const scene::Scene& scene, const SceneRunOptions& options) {
   Stopwatch clock;
   // 1. Meshes, degrees and materials; the operators are built on first use and shared.
-  const auto d = discretize_scene(scene, options.distribution);
+  const auto d = discretize_scene(scene, options.distribution, reads_whole_mesh_after_operators(scene));
   OperatorLog log;
-  const auto owned = scene_elastic_operators(scene, *d->mesh, d->cell_degrees, &log, options.distribution);
+  const auto owned = scene_elastic_operators(scene, d->mesh.get(), d->cell_degrees, &log, options.distribution);
   const operators::ElasticOperators& operators = *owned;
   // (distributed, the operators now hold the rank's part)
   if (!reads_whole_mesh_after_operators(scene)) release_whole_mesh(*d, operators.mesh());

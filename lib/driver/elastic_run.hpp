@@ -19,8 +19,9 @@ namespace hpcontact::driver {
 std::vector<assembly::Material> scene_materials(const scene::Scene& scene, const mesh::Mesh& mesh);
 
 /// The elastic operators of the scene on T_h (`mesh`, `cell_degrees`): its materials and rollers,
-/// factorized over the ranks of `distribution`.
-std::unique_ptr<operators::ElasticOperators> scene_elastic_operators(const scene::Scene& scene, const mesh::Mesh& mesh,
+/// factorized over the ranks of `distribution`. Distributed, `mesh` and the degrees are read on the
+/// first rank only (the others may pass null and nothing: operators::ElasticOperators).
+std::unique_ptr<operators::ElasticOperators> scene_elastic_operators(const scene::Scene& scene, const mesh::Mesh* mesh,
                                                                      const std::vector<int>& cell_degrees,
                                                                      OperatorLog* log = nullptr,
                                                                      linalg::Distribution distribution = {});

@@ -4,7 +4,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 
+#include "core/byte_buffer.hpp"
 #include "core/error.hpp"
 #include "core/expression.hpp"
 #include "core/timer.hpp"
@@ -26,18 +28,46 @@ std::unique_ptr<mesh::Mesh> contact_cells_of(const mesh::Mesh& mesh) {
 
 }  // namespace
 
-std::unique_ptr<SceneDiscretization> discretize_scene(const scene::Scene& scene,
-                                                      const linalg::Distribution& distribution) {
+std::unique_ptr<SceneDiscretization> discretize_scene(const scene::Scene& scene, const linalg::Distribution& distribution,
+                                                      bool whole_mesh_on_every_rank) {
   auto d = std::make_unique<SceneDiscretization>();
-  d->mesh =
-      std::make_unique<mesh::Mesh>(distribution.distributed() ? scene::build_scene_mesh_once(scene, distribution.ranks)
-                                                              : scene::build_scene_mesh(scene));
-  d->contact_cells = contact_cells_of(*d->mesh);
+  const auto build_whole = [&] {
+    d->mesh = std::make_unique<mesh::Mesh>(scene::build_scene_mesh(scene));
+    d->cell_degrees = scene::scene_cell_degrees(scene, *d->mesh);
+  };
+  if (!distribution.distributed()) {
+    build_whole();
+    d->contact_cells = contact_cells_of(*d->mesh);
+  } else {
+    // The first rank builds T_h and its degrees, and sends Γ_C's cells: the operators take their
+    // parts from it (operators/rank_space.hpp), so the others need T_h whole only where asked.
+    const std::vector<char> bytes = bytes_made_by_first_rank(
+        [&] {
+          build_whole();
+          ByteWriter out;
+          contact_cells_of(*d->mesh)->pack(out);
+          if (whole_mesh_on_every_rank) d->mesh->pack(out);
+          return out.take();
+        },
+        distribution.ranks);
+    ByteReader in(bytes);
+    d->contact_cells = std::make_unique<mesh::Mesh>(mesh::Mesh::unpack(in));
+    if (whole_mesh_on_every_rank && !d->mesh) {  // (the mesh sent is the first rank's to the bit)
+      d->mesh = std::make_unique<mesh::Mesh>(mesh::Mesh::unpack(in));
+      d->cell_degrees = scene::scene_cell_degrees(scene, *d->mesh);
+    }
+  }
   d->contact = std::make_unique<mesh::ContactBoundary>(*d->contact_cells);
   d->boundary_mesh = std::make_unique<mesh::BoundaryMesh>(scene::build_scene_boundary_mesh(scene, *d->contact));
-  d->cell_degrees = scene::scene_cell_degrees(scene, *d->mesh);
-  const auto [smallest, largest] = std::minmax_element(d->cell_degrees.begin(), d->cell_degrees.end());
-  d->smallest_cell_degree = *smallest, d->largest_cell_degree = *largest;
+  std::array<int, 2> extremes{};  // the smallest and largest degree, from the first rank
+  if (d->mesh) {
+    const auto [smallest, largest] = std::minmax_element(d->cell_degrees.begin(), d->cell_degrees.end());
+    extremes = {*smallest, *largest};
+  }
+  if (distribution.distributed())
+    HPC_VERIFY(MPI_Bcast(extremes.data(), 2, MPI_INT, 0, distribution.ranks) == MPI_SUCCESS,
+               "broadcast of the degrees' extremes");
+  d->smallest_cell_degree = extremes[0], d->largest_cell_degree = extremes[1];
   d->segment_degrees = scene::scene_segment_degrees(scene, *d->contact, *d->boundary_mesh);
   d->multipliers = std::make_unique<space::MultiplierSpace>(*d->boundary_mesh, d->segment_degrees);
   return d;

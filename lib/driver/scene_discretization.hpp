@@ -24,25 +24,30 @@ namespace hpcontact::driver {
 
 struct SceneDiscretization {
   /// T_h whole; null once released (release_whole_mesh): a distributed run's operators hold the
-  /// rank's part, and nothing after them reads the whole mesh.
+  /// rank's part, and nothing after them reads the whole mesh. Distributed, on the first rank only
+  /// unless asked for on every rank (discretize_scene).
   std::unique_ptr<mesh::Mesh> mesh;
   /// Γ_C's cells of T_h as a part of it (mesh::Mesh::extract), where `contact` lives, so that Γ_C
   /// (arc length, points, normals) outlives the whole mesh.
   std::unique_ptr<mesh::Mesh> contact_cells;
   std::unique_ptr<mesh::ContactBoundary> contact;  ///< refers to `contact_cells`
   std::unique_ptr<mesh::BoundaryMesh> boundary_mesh;
-  /// p_T per cell of T_h: emptied with the whole mesh (release_whole_mesh), as long as it.
+  /// p_T per cell of T_h: where `mesh` is, emptied with it (release_whole_mesh), as long as it.
   std::vector<int> cell_degrees;
-  int smallest_cell_degree = 0, largest_cell_degree = 0;  ///< of cell_degrees, kept after release
+  int smallest_cell_degree = 0, largest_cell_degree = 0;  ///< of cell_degrees, on every rank
   std::vector<int> segment_degrees;
   std::unique_ptr<space::MultiplierSpace> multipliers;  ///< M^{p_C}(T_{C,H}), refers to boundary_mesh
 };
 
 /// Builds the meshes and degrees. Held by pointer: its parts refer to each other. Distributed, T_h
-/// is built by the first rank of `distribution` and sent to the others (collective on its ranks).
-/// @throws InputError as the scene's builders do.
+/// and its degrees are built by the first rank of `distribution` (collective on its ranks), which
+/// alone holds them (the operators are built from it: PrimalOperators), unless
+/// `whole_mesh_on_every_rank` (the extension norm's references refine T_h on every rank); Γ_C's
+/// cells, T_{C,H} and the degree extremes are on every rank. @throws InputError as the scene's
+/// builders do, on every rank alike.
 std::unique_ptr<SceneDiscretization> discretize_scene(const scene::Scene& scene,
-                                                      const linalg::Distribution& distribution = {});
+                                                      const linalg::Distribution& distribution = {},
+                                                      bool whole_mesh_on_every_rank = false);
 
 /// Frees the whole T_h of `discretization` and its cells' degrees when the operators built on it
 /// live on a part of it (`operators_mesh`, the space's mesh: a distributed run), so that no rank

@@ -137,7 +137,7 @@ void add_convergence_rows(const scene::Scene& scene, const std::vector<ContactEf
     refined.refinements += k;
     auto d = discretize_scene(refined, options.distribution);
     OperatorLog level_log;
-    const operators::PrimalOperators primal(*d->mesh, d->cell_degrees, &level_log, options.distribution);
+    const operators::PrimalOperators primal(d->mesh.get(), d->cell_degrees, &level_log, options.distribution);
     release_whole_mesh(*d, primal.mesh());
     refined_effects.push_back(std::make_unique<std::vector<ContactEffect>>(
         solve_contact_effects(refined, *d, primal, options, fmt::format(" (convergence level {})", k))));
@@ -287,9 +287,9 @@ nlohmann::json run_scene(const scene::Scene& given_scene, const SceneRunOptions&
   const scene::Scene scene =
       given_scene.fit_free_boundary ? fitted_scene(given_scene, options.distribution, say, free_boundary) : given_scene;
   // 1. Meshes and degrees; the operators of S^p(T_h) are built on first use and shared.
-  const auto d = discretize_scene(scene, options.distribution);
+  const auto d = discretize_scene(scene, options.distribution, reads_whole_mesh_after_operators(scene));
   OperatorLog log;
-  const operators::PrimalOperators primal(*d->mesh, d->cell_degrees, &log, options.distribution);
+  const operators::PrimalOperators primal(d->mesh.get(), d->cell_degrees, &log, options.distribution);
   // (distributed, the operators now hold the rank's part)
   if (!reads_whole_mesh_after_operators(scene)) release_whole_mesh(*d, primal.mesh());
 

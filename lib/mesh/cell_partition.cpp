@@ -1,5 +1,5 @@
 // bisect_cells: recursive coordinate bisection on cell centroids; partition_interface: the edges
-// and vertices shared between parts; split_cells_over_ranks: the shorter cut of bisection and
+// and vertices shared between parts; split_cells_on_first_rank: the shorter cut of bisection and
 // PT-Scotch.
 #include "mesh/cell_partition.hpp"
 
@@ -79,11 +79,18 @@ PartitionInterface partition_interface(const Mesh& mesh, const std::vector<int>&
   return interface;
 }
 
-std::vector<int> split_cells_over_ranks(const Mesh& mesh, const std::vector<int>& cell_weights, MPI_Comm ranks) {
-  std::vector<int> bisection = bisect_cells(mesh, rank_and_size(ranks).second, cell_weights);
+std::vector<int> split_cells_on_first_rank(const Mesh* mesh, const std::vector<int>& cell_weights, MPI_Comm ranks) {
   std::vector<int> graph = partition_cells_by_graph(mesh, cell_weights, ranks);  // collective: every rank calls it
-  // Both partitions are the same on every rank, so every rank makes the same choice.
-  return partition_interface(mesh, graph).edges < partition_interface(mesh, bisection).edges ? graph : bisection;
+  if (rank_and_size(ranks).first != 0) return {};
+  std::vector<int> bisection = bisect_cells(*mesh, rank_and_size(ranks).second, cell_weights);
+  return partition_interface(*mesh, graph).edges < partition_interface(*mesh, bisection).edges ? graph : bisection;
+}
+
+std::vector<int> split_cells_over_ranks(const Mesh& mesh, const std::vector<int>& cell_weights, MPI_Comm ranks) {
+  std::vector<int> parts = split_cells_on_first_rank(&mesh, cell_weights, ranks);
+  parts.resize(mesh.n_cells());
+  HPC_VERIFY(MPI_Bcast(parts.data(), mesh.n_cells(), MPI_INT, 0, ranks) == MPI_SUCCESS, "broadcast of the parts");
+  return parts;
 }
 
 }  // namespace hpcontact::mesh

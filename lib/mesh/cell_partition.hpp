@@ -29,7 +29,11 @@ struct PartitionInterface {
 PartitionInterface partition_interface(const Mesh& mesh, const std::vector<int>& part_of_cell);
 
 /// One part per rank of `ranks`, of equal weight: coordinate bisection or PT-Scotch, whichever
-/// cuts fewer edges (bisection on a tie). Collective on `ranks`; every one gets the same partition.
+/// cuts fewer edges (bisection on a tie), on the first rank of `ranks` (empty on the others).
+/// `mesh` and `cell_weights` are read on the first rank only (the others may pass null and nothing).
+/// Collective on `ranks`.
+std::vector<int> split_cells_on_first_rank(const Mesh* mesh, const std::vector<int>& cell_weights, MPI_Comm ranks);
+/// The same partition on every rank, each of which holds the whole mesh. Collective on `ranks`.
 std::vector<int> split_cells_over_ranks(const Mesh& mesh, const std::vector<int>& cell_weights, MPI_Comm ranks);
 
 }  // namespace hpcontact::mesh

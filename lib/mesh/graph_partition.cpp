@@ -1,5 +1,6 @@
-// partition_cells_by_graph: the cells' dual graph as a PETSc MPIAdj matrix (one contiguous slice
-// of rows per rank), MatPartitioning with PT-Scotch, the parts gathered on every rank.
+// partition_cells_by_graph: the cells' dual graph, laid out by the first rank and scattered as a
+// PETSc MPIAdj matrix (one contiguous slice of rows per rank), MatPartitioning with PT-Scotch, the
+// parts gathered on the first rank.
 #include "mesh/graph_partition.hpp"
 
 #include <mpi.h>
@@ -18,15 +19,53 @@
 
 namespace hpcontact::mesh {
 
-std::vector<int> partition_cells_by_graph(const Mesh& mesh, const std::vector<int>& cell_weights,
+std::vector<int> partition_cells_by_graph(const Mesh* mesh, const std::vector<int>& cell_weights,
                                           MPI_Comm ranks_sharing) {
   // (not a structured binding: clang 14 refuses to capture one in the lambda below)
   const int rank = rank_and_size(ranks_sharing).first, ranks = rank_and_size(ranks_sharing).second;
-  const int n_cells = mesh.n_cells();
-  HPC_VERIFY(static_cast<int>(cell_weights.size()) == n_cells, "one weight per cell");
-  if (ranks == 1) return std::vector<int>(n_cells, 0);
+  const bool first = rank == 0;
+  if (ranks == 1) {
+    HPC_VERIFY(mesh, "partitioning without a mesh");
+    return std::vector<int>(mesh->n_cells(), 0);
+  }
+  // The first rank alone reads the mesh: it lays out every slice's graph rows, as one run of
+  // neighbour counts, one of neighbours and one of weights in cell order.
+  std::vector<int> row_sizes, all_neighbours, all_weights;
+  run_on_all_ranks_agreeing(
+      [&] {
+        if (!first) return;
+        HPC_VERIFY(mesh && static_cast<int>(cell_weights.size()) == mesh->n_cells(), "one weight per cell");
+        for (int c = 0; c < mesh->n_cells(); ++c) {
+          const auto before = all_neighbours.size();
+          for (int k = 0; k < mesh->cell_size(c); ++k) {
+            const auto& cells = mesh->edge_cells(mesh->cell_edge(c, k));
+            const int other = cells[0] == c ? cells[1] : cells[0];
+            if (other >= 0) all_neighbours.push_back(other);
+          }
+          row_sizes.push_back(static_cast<int>(all_neighbours.size() - before));
+        }
+        all_weights = cell_weights;
+      },
+      ranks_sharing);
+  int n_cells = static_cast<int>(row_sizes.size());
+  HPC_VERIFY(MPI_Bcast(&n_cells, 1, MPI_INT, 0, ranks_sharing) == MPI_SUCCESS, "broadcast of the cell count");
   const auto slice_begin = [&](int r) { return static_cast<int>(static_cast<long long>(n_cells) * r / ranks); };
   const int begin = slice_begin(rank), end = slice_begin(rank + 1), n_local = end - begin;
+  std::vector<int> cell_counts(ranks), cell_starts(ranks), neighbour_counts(ranks), neighbour_starts(ranks);
+  for (int r = 0, at = 0; r < ranks; ++r) {
+    cell_starts[r] = slice_begin(r), cell_counts[r] = slice_begin(r + 1) - slice_begin(r);
+    neighbour_starts[r] = at;
+    if (first)
+      for (int c = slice_begin(r); c < slice_begin(r + 1); ++c) at += row_sizes[c];
+    neighbour_counts[r] = at - neighbour_starts[r];
+  }
+  std::vector<int> local_sizes(n_local);
+  HPC_VERIFY(MPI_Scatterv(row_sizes.data(), cell_counts.data(), cell_starts.data(), MPI_INT, local_sizes.data(),
+                          n_local, MPI_INT, 0, ranks_sharing) == MPI_SUCCESS,
+             "scattering the graph's rows failed");
+  row_sizes = {};
+  int n_local_neighbours = 0;
+  for (int size : local_sizes) n_local_neighbours += size;
   // The MPIAdj matrix takes ownership of its arrays, which must come from PetscMalloc. A rank
   // whose allocation fails must not leave the others waiting in MatCreateMPIAdj: all agree first.
   PetscInt *offsets = nullptr, *neighbours = nullptr, *weights = nullptr;
@@ -34,7 +73,7 @@ std::vector<int> partition_cells_by_graph(const Mesh& mesh, const std::vector<in
     run_on_all_ranks_agreeing(
         [&] {
           HPC_PETSC_CALL(PetscMalloc1(n_local + 1, &offsets));
-          HPC_PETSC_CALL(PetscMalloc1(4 * static_cast<std::size_t>(n_local) + 1, &neighbours));
+          HPC_PETSC_CALL(PetscMalloc1(n_local_neighbours + 1, &neighbours));
           HPC_PETSC_CALL(PetscMalloc1(n_local + 1, &weights));
         },
         ranks_sharing);
@@ -44,17 +83,15 @@ std::vector<int> partition_cells_by_graph(const Mesh& mesh, const std::vector<in
     PetscFree(weights);
     throw;
   }
+  static_assert(sizeof(PetscInt) == sizeof(int), "the graph is scattered as MPI_INT");
+  HPC_VERIFY(MPI_Scatterv(all_neighbours.data(), neighbour_counts.data(), neighbour_starts.data(), MPI_INT,
+                          neighbours, n_local_neighbours, MPI_INT, 0, ranks_sharing) == MPI_SUCCESS &&
+                 MPI_Scatterv(all_weights.data(), cell_counts.data(), cell_starts.data(), MPI_INT, weights, n_local,
+                              MPI_INT, 0, ranks_sharing) == MPI_SUCCESS,
+             "scattering the graph's rows failed");
+  all_neighbours = {}, all_weights = {};
   offsets[0] = 0;
-  for (int c = begin; c < end; ++c) {
-    PetscInt count = offsets[c - begin];
-    for (int k = 0; k < mesh.cell_size(c); ++k) {
-      const auto& cells = mesh.edge_cells(mesh.cell_edge(c, k));
-      const int other = cells[0] == c ? cells[1] : cells[0];
-      if (other >= 0) neighbours[count++] = other;
-    }
-    offsets[c - begin + 1] = count;
-    weights[c - begin] = cell_weights[c];
-  }
+  for (int c = 0; c < n_local; ++c) offsets[c + 1] = offsets[c] + local_sizes[c];
   PetscHandle<Mat, MatDestroy> graph;
   HPC_PETSC_CALL(MatCreateMPIAdj(ranks_sharing, n_local, n_cells, offsets, neighbours, nullptr, graph.out()));
   PetscHandle<MatPartitioning, MatPartitioningDestroy> partitioning;
@@ -69,16 +106,13 @@ std::vector<int> partition_cells_by_graph(const Mesh& mesh, const std::vector<in
   SCOTCH_randomReset();
   PetscHandle<IS, ISDestroy> parts;
   HPC_PETSC_CALL(MatPartitioningApply(partitioning.get(), parts.out()));
-  // Every rank still holds the whole mesh, so every rank needs every cell's part.
   const PetscInt* mine = nullptr;
   HPC_PETSC_CALL(ISGetIndices(parts.get(), &mine));
   std::vector<int> local(mine, mine + n_local);
   HPC_PETSC_CALL(ISRestoreIndices(parts.get(), &mine));
-  std::vector<int> counts(ranks), displacements(ranks);
-  for (int r = 0; r < ranks; ++r) displacements[r] = slice_begin(r), counts[r] = slice_begin(r + 1) - slice_begin(r);
-  std::vector<int> part_of_cell(n_cells);
-  HPC_VERIFY(MPI_Allgatherv(local.data(), n_local, MPI_INT, part_of_cell.data(), counts.data(), displacements.data(),
-                            MPI_INT, ranks_sharing) == MPI_SUCCESS,
+  std::vector<int> part_of_cell(first ? n_cells : 0);
+  HPC_VERIFY(MPI_Gatherv(local.data(), n_local, MPI_INT, part_of_cell.data(), cell_counts.data(), cell_starts.data(),
+                         MPI_INT, 0, ranks_sharing) == MPI_SUCCESS,
              "gathering the cells' parts failed");
   return part_of_cell;
 }

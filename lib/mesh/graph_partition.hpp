@@ -11,12 +11,14 @@
 
 namespace hpcontact::mesh {
 
-/// The part (0 .. ranks-1, one per rank of `ranks`) of every cell. The dual graph joins
-/// two cells through each shared edge; cell c weighs `cell_weights[c]` (> 0; the factorizations
-/// weigh a cell by its unknowns, so a mesh of mixed degrees is balanced by work, not by cells). Each rank hands
-/// PT-Scotch the graph rows of one contiguous slice of the cells, so the partition is computed once over the ranks,
-/// then gathered on every rank. Collective on `ranks`; on one rank every cell is in part 0.
+/// The part (0 .. ranks-1, one per rank of `ranks`) of every cell, on the first rank of `ranks`
+/// (empty on the others). The dual graph joins two cells through each shared edge; cell c weighs
+/// `cell_weights[c]` (> 0; the factorizations weigh a cell by its unknowns, so a mesh of mixed
+/// degrees is balanced by work, not by cells). `mesh` and `cell_weights` are read on the first rank
+/// only (the others may pass null and nothing): it hands each rank the graph rows of one contiguous
+/// slice of the cells, so that the partition is computed over the ranks while no other rank holds
+/// the mesh. Collective on `ranks`; on one rank every cell is in part 0.
 /// @throws NumericalError if PETSc's partitioner fails.
-std::vector<int> partition_cells_by_graph(const Mesh& mesh, const std::vector<int>& cell_weights, MPI_Comm ranks);
+std::vector<int> partition_cells_by_graph(const Mesh* mesh, const std::vector<int>& cell_weights, MPI_Comm ranks);
 
 }  // namespace hpcontact::mesh

@@ -14,25 +14,31 @@ namespace hpcontact::operators {
 
 std::string to_string(PrimalNorm norm) { return norm == PrimalNorm::h1 ? "h1" : "energy"; }
 
+ElasticOperators::ElasticOperators(const mesh::Mesh* mesh, std::vector<int> cell_degrees,
+                                   std::vector<assembly::Material> materials, OperatorLog* log,
+                                   const std::array<std::vector<char>, space::kComponents>& fixed,
+                                   linalg::Distribution distribution)
+    : whole_(mesh, cell_degrees, distribution), log_(log), distribution_(distribution) {
+  Stopwatch clock;
+  HPC_VERIFY(mesh || distribution.distributed(), "a serial space without a mesh");
+  // (distributed, build_rank_space checks them on the first rank, which every rank then hears of)
+  if (!distribution.distributed() && static_cast<int>(materials.size()) != mesh->n_cells())
+    throw InputError("elasticity: one material per cell is needed");
+  rotation_centre_ = whole_.vertex_mean();
+  rank_ = build_rank_space(mesh, std::move(cell_degrees), distribution, &fixed,
+                           distribution.distributed() ? &materials : nullptr);
+  // Distributed: the materials of the part's cells.
+  materials_ = distribution.distributed() ? std::move(rank_.materials) : std::move(materials);
+  // Γ_C of the space's mesh: the whole one, or the part (which holds all of Γ_C's cells).
+  contact_ = std::make_unique<mesh::ContactBoundary>(rank_.space->mesh());
+  if (log_) log_->record("[S^p(T_h)]^2", n_dofs(), 0, clock.seconds());
+}
+
 ElasticOperators::ElasticOperators(const mesh::Mesh& mesh, std::vector<int> cell_degrees,
                                    std::vector<assembly::Material> materials, OperatorLog* log,
                                    const std::array<std::vector<char>, space::kComponents>& fixed,
                                    linalg::Distribution distribution)
-    : whole_(mesh, cell_degrees), materials_(std::move(materials)), log_(log), distribution_(distribution) {
-  Stopwatch clock;
-  if (static_cast<int>(materials_.size()) != mesh.n_cells())
-    throw InputError("elasticity: one material per cell is needed");
-  for (const auto& x : mesh.vertices()) rotation_centre_ += x / static_cast<double>(mesh.n_vertices());
-  contact_ = std::make_unique<mesh::ContactBoundary>(mesh);
-  rank_ = build_rank_space(mesh, std::move(cell_degrees), *contact_, distribution, &fixed);
-  if (rank_.part) {  // Γ_C and the materials of the part's cells
-    contact_ = std::make_unique<mesh::ContactBoundary>(*rank_.part);
-    std::vector<assembly::Material> own;
-    for (int c = 0; c < rank_.part->n_cells(); ++c) own.push_back(materials_[rank_.part->global_cell(c)]);
-    materials_ = std::move(own);
-  }
-  if (log_) log_->record("[S^p(T_h)]^2", n_dofs(), 0, clock.seconds());
-}
+    : ElasticOperators(&mesh, std::move(cell_degrees), std::move(materials), log, fixed, distribution) {}
 
 ElasticOperators::~ElasticOperators() = default;
 

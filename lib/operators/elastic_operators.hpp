@@ -36,6 +36,12 @@ class ElasticOperators {
   /// `distribution` other than serial: the factors are factorized over its ranks (every one of
   /// them must build the same operators in the same order), with one split of the cells, and
   /// everything lives on the rank's part of the mesh (as PrimalOperators).
+  /// Distributed, `mesh`, the degrees, the materials and the masks are read on the first rank only
+  /// (the others may pass null and empty ones: PrimalOperators).
+  ElasticOperators(const mesh::Mesh* mesh, std::vector<int> cell_degrees, std::vector<assembly::Material> materials,
+                   OperatorLog* log = nullptr, const std::array<std::vector<char>, space::kComponents>& fixed = {},
+                   linalg::Distribution distribution = {});
+  /// The same with the whole mesh at hand on every rank.
   ElasticOperators(const mesh::Mesh& mesh, std::vector<int> cell_degrees, std::vector<assembly::Material> materials,
                    OperatorLog* log = nullptr, const std::array<std::vector<char>, space::kComponents>& fixed = {},
                    linalg::Distribution distribution = {});

@@ -14,16 +14,19 @@
 
 namespace hpcontact::operators {
 
-PrimalOperators::PrimalOperators(const mesh::Mesh& mesh, std::vector<int> cell_degrees, OperatorLog* log,
+PrimalOperators::PrimalOperators(const mesh::Mesh* mesh, std::vector<int> cell_degrees, OperatorLog* log,
                                  linalg::Distribution distribution)
-    : whole_(mesh, cell_degrees), log_(log), distribution_(distribution) {
+    : whole_(mesh, cell_degrees, distribution), log_(log), distribution_(distribution) {
   Stopwatch clock;
-  contact_ = std::make_unique<mesh::ContactBoundary>(mesh);
-  rank_ = build_rank_space(mesh, std::move(cell_degrees), *contact_, distribution);
-  // Γ_C again on the part (which holds all of it), so that its trace edges name the part's cells.
-  if (rank_.part) contact_ = std::make_unique<mesh::ContactBoundary>(*rank_.part);
+  rank_ = build_rank_space(mesh, std::move(cell_degrees), distribution);
+  // Γ_C of the space's mesh: the whole one, or the part (which holds all of Γ_C's cells).
+  contact_ = std::make_unique<mesh::ContactBoundary>(rank_.space->mesh());
   if (log_) log_->record("S^p(T_h)", rank_.space->n_dofs(), 0, clock.seconds());
 }
+
+PrimalOperators::PrimalOperators(const mesh::Mesh& mesh, std::vector<int> cell_degrees, OperatorLog* log,
+                                 linalg::Distribution distribution)
+    : PrimalOperators(&mesh, std::move(cell_degrees), log, distribution) {}
 
 PrimalOperators::~PrimalOperators() = default;
 

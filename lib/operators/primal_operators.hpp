@@ -31,6 +31,12 @@ class PrimalOperators {
   /// and builds everything on the rank's part of the mesh (its own cells and Γ_C's).
   /// `distribution` other than serial: the factors are factorized over its ranks (every one of
   /// them must construct the object and make the same calls on it, in the same order).
+  /// `mesh` and `cell_degrees` are read on the first rank of a distributed run only: it numbers
+  /// the space, splits the cells and sends each rank its part (operators/rank_space.hpp), so the
+  /// others may pass null and nothing (built_on is then false for any mesh).
+  PrimalOperators(const mesh::Mesh* mesh, std::vector<int> cell_degrees, OperatorLog* log = nullptr,
+                  linalg::Distribution distribution = {});
+  /// The same with the whole mesh at hand on every rank.
   PrimalOperators(const mesh::Mesh& mesh, std::vector<int> cell_degrees, OperatorLog* log = nullptr,
                   linalg::Distribution distribution = {});
   ~PrimalOperators();

@@ -1,60 +1,120 @@
-// build_rank_space: a numbering-only space weighs the cells, the split follows, then the space
-// with the rank's cells' shapes, restricted to the rank's part.
+// build_rank_space: the first rank numbers the space (a numbering-only space weighs the cells),
+// the split follows, then each rank's part with its share of the numbering is sent to it, and
+// the rank adds the shapes of its cells.
 #include "operators/rank_space.hpp"
-
-#include <mpi.h>
 
 #include <algorithm>
 
+#include "core/byte_buffer.hpp"
+#include "core/petsc_session.hpp"
+#include "core/rank_agreement.hpp"
 #include "mesh/cell_partition.hpp"
+#include "mesh/contact_boundary.hpp"
 
 namespace hpcontact::operators {
 
-RankSpace build_rank_space(const mesh::Mesh& mesh, std::vector<int> cell_degrees, const mesh::ContactBoundary& contact,
-                           linalg::Distribution distribution, const RollerMasks* rollers) {
+namespace {
+
+// What the first rank alone holds while it cuts the parts: the whole space's numberings.
+struct WholeNumbering {
+  std::unique_ptr<space::H1Space> space, kept;       // kept: with Γ_D's dofs, where Γ_D exists
+  std::unique_ptr<space::VectorSpace> vector_space;  // elasticity: the rollers' unknowns
+  std::vector<int> contact_cells;                    // held by every rank
+};
+
+// Rank `rank`'s part of the mesh with its share of everything the first rank numbered.
+std::vector<char> part_bytes(const mesh::Mesh& mesh, const WholeNumbering& whole, const std::vector<int>& parts,
+                             int rank, const std::vector<assembly::Material>* materials) {
+  std::vector<char> held(mesh.n_cells(), 0);
+  for (int c = 0; c < mesh.n_cells(); ++c) held[c] = parts[c] == rank;
+  for (int c : whole.contact_cells) held[c] = 1;
+  std::vector<int> cells, cell_parts;
+  for (int c = 0; c < mesh.n_cells(); ++c)
+    if (held[c]) cells.push_back(c), cell_parts.push_back(parts[c]);
+  const mesh::Mesh part = mesh.extract(cells);
+  ByteWriter out;
+  part.pack(out);
+  whole.space->restricted_to(part, false).pack(out);
+  out.put(cell_parts);
+  if (whole.vector_space) whole.vector_space->pack(out);
+  out.put(static_cast<char>(whole.kept != nullptr));
+  if (whole.kept) whole.kept->restricted_to(part, false).pack(out);
+  if (materials) {
+    std::vector<assembly::Material> own;
+    for (int c : cells) own.push_back((*materials)[c]);
+    out.put(own);
+  }
+  return out.take();
+}
+
+}  // namespace
+
+RankSpace build_rank_space(const mesh::Mesh* mesh, std::vector<int> cell_degrees, linalg::Distribution distribution,
+                           const RollerMasks* rollers, const std::vector<assembly::Material>* materials) {
   RankSpace out;
   if (!distribution.distributed()) {
-    out.space = std::make_unique<space::H1Space>(mesh, std::move(cell_degrees));
+    HPC_VERIFY(mesh, "a serial space without a mesh");
+    out.space = std::make_unique<space::H1Space>(*mesh, std::move(cell_degrees));
     if (rollers) out.vector_space = std::make_unique<space::VectorSpace>(*out.space, *rollers);
     return out;
   }
-  const int components = rollers ? space::kComponents : 1;
-  const int n_cells = mesh.n_cells();
-  std::vector<char> held(n_cells, 0);
-  // Holding no cell, the space still numbers every dof and counts every cell's shapes.
-  const space::H1Space numbering(mesh, cell_degrees, space::DirichletDofs::eliminated, held);
-  std::vector<int> weights(n_cells);
-  for (int c = 0; c < n_cells; ++c) weights[c] = components * numbering.shape_count(c);
-  std::vector<int> parts = mesh::split_cells_over_ranks(mesh, weights, distribution.ranks);
+  MPI_Comm ranks = distribution.ranks;
+  const bool first = rank_and_size(ranks).first == 0;
+  // The first rank numbers the whole space and weighs the cells (a bad degree fails there, and on
+  // every rank alike). Holding no cell, the numbering still counts every cell's shapes.
+  WholeNumbering whole;
+  std::vector<int> weights;
+  run_on_all_ranks_agreeing(
+      [&] {
+        if (!first) return;
+        HPC_VERIFY(mesh, "the first rank of a distributed run holds the whole mesh");
+        const std::vector<char> none(mesh->n_cells(), 0);
+        whole.space = std::make_unique<space::H1Space>(*mesh, cell_degrees, space::DirichletDofs::eliminated, none);
+        const int components = rollers ? space::kComponents : 1;
+        for (int c = 0; c < mesh->n_cells(); ++c) weights.push_back(components * whole.space->shape_count(c));
+        // The rollers' unknowns are numbered from the whole mesh's roller edges (boundary-sized).
+        if (rollers) whole.vector_space = std::make_unique<space::VectorSpace>(*whole.space, *rollers);
+        if (mesh->has_part(mesh::BoundaryPart::dirichlet))
+          whole.kept = std::make_unique<space::H1Space>(*mesh, std::move(cell_degrees), space::DirichletDofs::kept, none);
+        const mesh::ContactBoundary contact(*mesh);
+        for (const auto& edge : contact.edges()) whole.contact_cells.push_back(edge.cell);
+        HPC_VERIFY(!materials || static_cast<int>(materials->size()) == mesh->n_cells(), "one material per cell");
+      },
+      ranks);
+  const std::vector<int> parts = mesh::split_cells_on_first_rank(mesh, weights, ranks);
   weights = {};
-  int rank = 0;
-  MPI_Comm_rank(distribution.ranks, &rank);
-  for (int c = 0; c < n_cells; ++c) held[c] = parts[c] == rank;
-  for (const auto& edge : contact.edges()) held[edge.cell] = 1;
-  std::vector<int> cells;
-  for (int c = 0; c < n_cells; ++c)
-    if (held[c]) cells.push_back(c);
-  out.part = std::make_unique<mesh::Mesh>(mesh.extract(cells));
-  out.space = std::make_unique<space::H1Space>(numbering.restricted_to(*out.part));
-  for (int c : cells) out.cell_parts.push_back(parts[c]);
-  // The rollers' unknowns are numbered from the whole mesh's roller edges (boundary-sized).
-  if (rollers)
-    out.vector_space = std::make_unique<space::VectorSpace>(*out.space, space::VectorSpace(numbering, *rollers));
-  if (mesh.has_part(mesh::BoundaryPart::dirichlet)) {
-    const space::H1Space kept(mesh, std::move(cell_degrees), space::DirichletDofs::kept, std::vector<char>(n_cells, 0));
-    out.kept = std::make_unique<space::H1Space>(kept.restricted_to(*out.part, false));
-  }
+  const std::vector<char> bytes = bytes_made_by_first_rank_for_each(
+      [&](int rank) { return part_bytes(*mesh, whole, parts, rank, materials); }, ranks);
+  ByteReader in(bytes);
+  out.part = std::make_unique<mesh::Mesh>(mesh::Mesh::unpack(in));
+  out.space = std::make_unique<space::H1Space>(space::H1Space::unpack(in, *out.part).with_shapes());
+  out.cell_parts = in.get_vector<int>();
+  if (rollers) out.vector_space = std::make_unique<space::VectorSpace>(space::VectorSpace::unpack(in, *out.space));
+  if (in.get<char>()) out.kept = std::make_unique<space::H1Space>(space::H1Space::unpack(in, *out.part));
+  if (materials) out.materials = in.get_vector<assembly::Material>();
+  HPC_VERIFY(in.at_end(), "a rank's part was not read to its end");
   return out;
 }
 
-WholeMeshFacts::WholeMeshFacts(const mesh::Mesh& mesh, const std::vector<int>& cell_degrees)
-    : address_(reinterpret_cast<std::uintptr_t>(&mesh)),
-      cells_(mesh.n_cells()),
-      vertices_(mesh.n_vertices()),
-      edges_(mesh.n_edges()),
-      smallest_degree_(cell_degrees.empty() ? 0 : *std::min_element(cell_degrees.begin(), cell_degrees.end())),
-      longest_edge_(mesh.longest_edge()),
-      has_dirichlet_(mesh.has_part(mesh::BoundaryPart::dirichlet)) {}
+WholeMeshFacts::WholeMeshFacts(const mesh::Mesh* mesh, const std::vector<int>& cell_degrees,
+                               linalg::Distribution distribution) {
+  static_assert(std::is_trivially_copyable_v<WholeMeshFacts>, "the facts are sent as they are");
+  if (mesh) {
+    cells_ = mesh->n_cells(), vertices_ = mesh->n_vertices(), edges_ = mesh->n_edges();
+    smallest_degree_ = cell_degrees.empty() ? 0 : *std::min_element(cell_degrees.begin(), cell_degrees.end());
+    longest_edge_ = mesh->longest_edge();
+    has_dirichlet_ = mesh->has_part(mesh::BoundaryPart::dirichlet);
+    mesh::Point sum = mesh::Point::Zero();
+    for (const auto& x : mesh->vertices()) sum += x / static_cast<double>(mesh->n_vertices());
+    vertex_mean_[0] = sum.x(), vertex_mean_[1] = sum.y();
+  }
+  if (distribution.distributed()) {
+    // (a first rank without the mesh sends zeros, and build_rank_space refuses it on every rank)
+    HPC_VERIFY(MPI_Bcast(this, sizeof(WholeMeshFacts), MPI_BYTE, 0, distribution.ranks) == MPI_SUCCESS,
+               "broadcast of the whole mesh's facts");
+  }
+  address_ = reinterpret_cast<std::uintptr_t>(mesh);
+}
 
 bool WholeMeshFacts::is(const mesh::Mesh& mesh) const {
   return reinterpret_cast<std::uintptr_t>(&mesh) == address_ && mesh.n_cells() == cells_ &&

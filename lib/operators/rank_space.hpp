@@ -1,17 +1,19 @@
-// The part of S^p(T_h) that one rank builds. Serial: the whole space. Distributed: the cells are
-// split over the ranks first (weighted by their unknowns), and the rank keeps the local shapes of
-// its own cells and of the cells on Γ_C (trace-sized: every rank assembles the couplings B), not
-// the whole mesh's table: on the rank's part of the mesh (mesh::Mesh::extract), the whole space
-// restricted to the part, whose tables all have the part's length.
+// The part of S^p(T_h) that one rank builds. Serial: the whole space. Distributed: the first rank
+// alone holds the whole mesh; it numbers the space, splits the cells over the ranks (weighted by
+// their unknowns) and sends each rank its part of the mesh (its own cells and Γ_C's: every rank
+// assembles the couplings B, trace-sized) with the part's share of the numbering, so that no other
+// rank holds an array of the whole mesh's length. The rank then adds the local shapes of its part.
 #pragma once
+
+#include <mpi.h>
 
 #include <array>
 #include <cstdint>
 #include <memory>
 #include <vector>
 
+#include "assembly/elastic_system.hpp"
 #include "linalg/distribution.hpp"
-#include "mesh/contact_boundary.hpp"
 #include "space/h1_space.hpp"
 #include "space/vector_space.hpp"
 
@@ -29,6 +31,9 @@ struct RankSpace {
   std::unique_ptr<space::H1Space> kept;
   /// The rank that eliminates each cell of the space's mesh; empty when serial.
   std::vector<int> cell_parts;
+  /// Distributed elasticity: the materials of the part's cells (the whole list when serial is the
+  /// caller's).
+  std::vector<assembly::Material> materials;
 
   /// Distributed: the space without elimination on the same cells (a Dirichlet lift's extended
   /// space, which a part cannot number alone; `space` itself without Γ_D); serial: null (the lift
@@ -40,9 +45,14 @@ using RollerMasks = std::array<std::vector<char>, space::kComponents>;
 
 /// The scalar space, or with `rollers` (elasticity: space::VectorSpace's masks over the whole
 /// mesh's edges) also the vector space, whose two unknowns per scalar shape then weigh the cells.
-/// Collective on `distribution.ranks` when distributed.
-RankSpace build_rank_space(const mesh::Mesh& mesh, std::vector<int> cell_degrees, const mesh::ContactBoundary& contact,
-                           linalg::Distribution distribution, const RollerMasks* rollers = nullptr);
+/// Serial: on `mesh`, which must outlive the result. Distributed: `mesh`, `cell_degrees`, the masks
+/// and `materials` (one per cell, restricted to the part) are read on the first rank of
+/// `distribution.ranks` only (the others may pass null and empty ones; `rollers` and `materials`
+/// given or not alike on every rank), and the result lives on the rank's part. Collective on
+/// `distribution.ranks` when distributed; a failure (a degree < 1) is raised on every rank.
+RankSpace build_rank_space(const mesh::Mesh* mesh, std::vector<int> cell_degrees, linalg::Distribution distribution,
+                           const RollerMasks* rollers = nullptr,
+                           const std::vector<assembly::Material>* materials = nullptr);
 
 /// What an operator object remembers of the whole mesh it was built from: its address and sizes,
 /// compared, never dereferenced, and the facts of it that a run asks later (h, whether Γ_D
@@ -50,7 +60,9 @@ RankSpace build_rank_space(const mesh::Mesh& mesh, std::vector<int> cell_degrees
 /// degrees once the object holds its part (the address alone could be reused by a later mesh).
 class WholeMeshFacts {
  public:
-  WholeMeshFacts(const mesh::Mesh& mesh, const std::vector<int>& cell_degrees);
+  /// The facts of `mesh`. Distributed, those of the first rank's mesh on every rank of
+  /// `distribution.ranks` (collective), where `mesh` may be null on the others (is() is then false).
+  WholeMeshFacts(const mesh::Mesh* mesh, const std::vector<int>& cell_degrees, linalg::Distribution distribution = {});
   /// Whether `mesh` is the mesh these facts were taken of (as far as address and sizes tell).
   bool is(const mesh::Mesh& mesh) const;
   /// h: the whole mesh's longest edge (a part's would be its own cells').
@@ -59,12 +71,16 @@ class WholeMeshFacts {
   bool has_dirichlet() const { return has_dirichlet_; }
   /// The smallest p_T over the whole mesh (a part's own can be higher).
   int smallest_degree() const { return smallest_degree_; }
+  /// The mean of the whole mesh's vertices (the rigid rotation's centre in elasticity).
+  mesh::Point vertex_mean() const { return {vertex_mean_[0], vertex_mean_[1]}; }
 
  private:
-  std::uintptr_t address_;
-  int cells_, vertices_, edges_, smallest_degree_;
-  double longest_edge_;
-  bool has_dirichlet_;
+  // Plain values only: the first rank sends the object as it is.
+  std::uintptr_t address_ = 0;
+  int cells_ = 0, vertices_ = 0, edges_ = 0, smallest_degree_ = 0;
+  double longest_edge_ = 0.0;
+  double vertex_mean_[2] = {0.0, 0.0};
+  bool has_dirichlet_ = false;
 };
 
 /// Whether `space`, built from the whole mesh `built_from` identifies, is of `mesh` with these

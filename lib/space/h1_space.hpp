@@ -73,6 +73,11 @@ class H1Space {
   H1Space restricted_to(const mesh::Mesh& part, bool with_shapes = true) const;
   /// A space restricted to a part with every cell's shapes (restricted_to without them, later).
   H1Space with_shapes() const;
+  /// The numbering of a space restricted to a part (restricted_to without shapes) as bytes, and
+  /// back on that part (sent beside it: mesh::Mesh::pack), so that one rank can number the whole
+  /// space and send each rank its part's share (space/space_bytes.cpp).
+  void pack(ByteWriter& out) const;
+  static H1Space unpack(ByteReader& in, const mesh::Mesh& part);
 
   const mesh::Mesh& mesh() const { return *mesh_; }
   int n_dofs() const { return n_dofs_; }

@@ -25,6 +25,11 @@ class VectorSpace {
   /// the mesh (H1Space::restricted_to), whose edges cannot find the rollers alone.
   VectorSpace(const H1Space& scalar, const VectorSpace& numbering);
 
+  /// The rollers and unknowns as bytes, and back on a scalar space of the same numbering (a part's:
+  /// VectorSpace(scalar, numbering) without the whole mesh's numbering at hand).
+  void pack(ByteWriter& out) const;
+  static VectorSpace unpack(ByteReader& in, const H1Space& scalar);
+
   const H1Space& scalar() const { return *scalar_; }
   int n_dofs() const { return n_dofs_; }
   int n_skeleton_dofs() const { return n_skeleton_dofs_; }

@@ -73,7 +73,7 @@ HertzRow run_level(const HertzStudy& study, const std::string& sequence, int lev
   Stopwatch clock;
   const auto& scene = variant.scene;
   const auto d = driver::discretize_scene(scene);
-  const auto owned = driver::scene_elastic_operators(scene, *d->mesh, d->cell_degrees);
+  const auto owned = driver::scene_elastic_operators(scene, d->mesh.get(), d->cell_degrees);
   const operators::ElasticOperators& operators = *owned;
   const auto setup = driver::elastic_setup_of(scene, *d, contact::ElasticContactProblem::frictionless, operators);
   const auto solution = contact::solve_elastic_contact(setup);

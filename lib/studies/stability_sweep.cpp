@@ -129,7 +129,7 @@ struct GroupMesh {
         contact(mesh),
         cell_degrees(scene::scene_cell_degrees(scene, mesh)) {
     if (scene.is_elastic())
-      elastic = driver::scene_elastic_operators(scene, mesh, cell_degrees, nullptr, distribution);
+      elastic = driver::scene_elastic_operators(scene, &mesh, cell_degrees, nullptr, distribution);
     else
       primal = std::make_unique<operators::PrimalOperators>(mesh, cell_degrees, nullptr, distribution);
   }
