@@ -169,6 +169,30 @@ TEST(DistributedFactor, GraphPartitionIsBalancedAndRanksTakeTheShorterCut) {
   }
 }
 
+// The first rank alone holds the mesh and sends each rank its part: on 2 and 3 ranks every part's
+// numbering, rollers, Γ_D-kept space and materials equal the whole space's on the same cells,
+// Γ_C's cells are on every part, each cell is owned once, and every part is smaller than the mesh. A bad degree on the first rank fails every rank alike, reported once.
+TEST(DistributedFactor, FirstRankSendsEachRankItsPartOfTheSpace) {
+  for (int ranks : {2, 3}) {
+    const auto run = run_command(mpirun_command(ranks, HPCONTACT_RANK_SPACE_CHECK, ""));
+    const std::string where = std::to_string(ranks) + " ranks\n" + run.output;
+    ASSERT_EQ(run.exit_code, 0) << where;
+    for (const std::string mesh : {"square", "triangles"}) {
+      const auto line = run.output.find(mesh + " mismatches");
+      ASSERT_NE(line, std::string::npos) << where;
+      const std::string text = run.output.substr(line);
+      EXPECT_EQ(number_after(text, "mismatches"), 0) << where;
+      EXPECT_EQ(number_after(text, "owned"), number_after(text, "cells")) << where;
+      EXPECT_EQ(number_after(text, "smaller"), ranks) << where;
+    }
+  }
+  const auto bad = run_command(mpirun_command(3, HPCONTACT_RANK_SPACE_CHECK, "bad"));
+  EXPECT_EQ(bad.exit_code, 3) << bad.output;
+  const auto message = bad.output.find("must be >= 1");
+  ASSERT_NE(message, std::string::npos) << bad.output;
+  EXPECT_EQ(bad.output.find("must be >= 1", message + 1), std::string::npos) << bad.output;
+}
+
 // The sweep's work queue: every value below N goes to exactly one rank, on 1 to 4 ranks; a rank
 // that exhausts the counter stops every rank from taking more.
 TEST(SharedCounter, HandsEveryValueToExactlyOneRankAndStopsWhenExhausted) {
