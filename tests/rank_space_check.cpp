@@ -63,9 +63,9 @@ void check(const std::string& name, const mesh::Mesh& mesh, const std::vector<in
   const bool first = rank == 0;
   const operators::RollerMasks none;
   const std::vector<assembly::Material> no_materials;
-  const auto got = operators::build_rank_space(first ? &mesh : nullptr, first ? degrees : std::vector<int>{},
-                                               distribution, first ? &rollers : &none,
-                                               first ? &materials : &no_materials);
+  const auto got =
+      operators::build_rank_space(first ? &mesh : nullptr, first ? degrees : std::vector<int>{}, distribution,
+                                  first ? &rollers : &none, first ? &materials : &no_materials);
   const operators::WholeMeshFacts facts(first ? &mesh : nullptr, first ? degrees : std::vector<int>{}, distribution);
 
   const space::H1Space whole(mesh, degrees);
@@ -86,8 +86,8 @@ void check(const std::string& name, const mesh::Mesh& mesh, const std::vector<in
     const auto &mine = got.materials[c], &theirs = materials[part.global_cell(c)];
     mismatches += mine.lambda != theirs.lambda || mine.mu != theirs.mu || mine.out_of_plane != theirs.out_of_plane;
   }
-  mismatches += facts.longest_edge() != mesh.longest_edge() || facts.smallest_degree() != 1 ||
-                 !facts.has_dirichlet() || facts.is(mesh) != first;
+  mismatches += facts.longest_edge() != mesh.longest_edge() || facts.smallest_degree() != 1 || !facts.has_dirichlet() ||
+                facts.is(mesh) != first;
   // Γ_C's cells all held; each cell owned by one rank.
   const mesh::ContactBoundary contact(mesh);
   std::vector<char> held(mesh.n_cells(), 0);

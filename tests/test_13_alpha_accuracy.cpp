@@ -140,7 +140,7 @@ TEST(AlphaAccuracy, AlphaErrorBoundsTheChangeToTheNextReference) {
       const space::MultiplierSpace multipliers(boundary, c.pc);
       auto setup = setup_of(c, mesh, boundary, norm);
       const norms::GramLadder full = norm == infsup::GramNorm::extension
-                                         ? norms::extension_gram_ladder(mesh, setup.cell_degrees, multipliers)
+                                         ? norms::extension_gram_ladder(&mesh, setup.cell_degrees, multipliers)
                                          : norms::interpolation_gram_ladder(multipliers);
       setup.alpha_tolerance = 1e-12;  // walk every rung of the truncated ladders below
       std::vector<infsup::InfSupResult> on_level;

@@ -67,16 +67,14 @@ int run_infsup(const InfSupOptions& o) {
   std::unique_ptr<operators::PrimalOperators> primal;
   std::unique_ptr<operators::ElasticOperators> elastic;
   const linalg::Distribution distribution = linalg::distribution_over(MPI_COMM_WORLD, distributed_solver);
-  // (the extension norm's references refine T_h on every rank)
-  const bool extension = scene.norm == infsup::GramNorm::extension;
-  const auto d = driver::discretize_scene(scene, distribution, extension);
+  const auto d = driver::discretize_scene(scene, distribution);
   if (scene.is_elastic())
     elastic = driver::scene_elastic_operators(scene, d->mesh.get(), d->cell_degrees, nullptr, distribution);
   else
     primal = std::make_unique<operators::PrimalOperators>(d->mesh.get(), d->cell_degrees, nullptr, distribution);
   // Distributed, the operators hold the rank's part: the whole mesh is kept only for the extension
   // norm's references, which refine it.
-  if (!extension)
+  if (scene.norm != infsup::GramNorm::extension)
     driver::release_whole_mesh(*d, elastic ? elastic->mesh() : primal->mesh());
   const auto setup = elastic ? driver::infsup_setup_of(scene, d->mesh.get(), d->cell_degrees, *d->boundary_mesh,
                                                        d->segment_degrees, *elastic)

@@ -278,7 +278,7 @@ void write_tables(const scene::Scene& scene, const std::vector<ElasticEffect>& e
 nlohmann::json run_elastic_scene(const scene::Scene& scene, const SceneRunOptions& options) {
   Stopwatch clock;
   // 1. Meshes, degrees and materials; the operators are built on first use and shared.
-  const auto d = discretize_scene(scene, options.distribution, reads_whole_mesh_after_operators(scene));
+  const auto d = discretize_scene(scene, options.distribution);
   OperatorLog log;
   const auto owned = scene_elastic_operators(scene, d->mesh.get(), d->cell_degrees, &log, options.distribution);
   const operators::ElasticOperators& operators = *owned;

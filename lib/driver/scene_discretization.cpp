@@ -28,8 +28,8 @@ std::unique_ptr<mesh::Mesh> contact_cells_of(const mesh::Mesh& mesh) {
 
 }  // namespace
 
-std::unique_ptr<SceneDiscretization> discretize_scene(const scene::Scene& scene, const linalg::Distribution& distribution,
-                                                      bool whole_mesh_on_every_rank) {
+std::unique_ptr<SceneDiscretization> discretize_scene(const scene::Scene& scene,
+                                                      const linalg::Distribution& distribution) {
   auto d = std::make_unique<SceneDiscretization>();
   const auto build_whole = [&] {
     d->mesh = std::make_unique<mesh::Mesh>(scene::build_scene_mesh(scene));
@@ -39,23 +39,18 @@ std::unique_ptr<SceneDiscretization> discretize_scene(const scene::Scene& scene,
     build_whole();
     d->contact_cells = contact_cells_of(*d->mesh);
   } else {
-    // The first rank builds T_h and its degrees, and sends Γ_C's cells: the operators take their
-    // parts from it (operators/rank_space.hpp), so the others need T_h whole only where asked.
+    // The first rank builds T_h and its degrees, and sends Γ_C's cells: the operators (and the
+    // extension norm's references) take their parts from it (operators/rank_space.hpp).
     const std::vector<char> bytes = bytes_made_by_first_rank(
         [&] {
           build_whole();
           ByteWriter out;
           contact_cells_of(*d->mesh)->pack(out);
-          if (whole_mesh_on_every_rank) d->mesh->pack(out);
           return out.take();
         },
         distribution.ranks);
     ByteReader in(bytes);
     d->contact_cells = std::make_unique<mesh::Mesh>(mesh::Mesh::unpack(in));
-    if (whole_mesh_on_every_rank && !d->mesh) {  // (the mesh sent is the first rank's to the bit)
-      d->mesh = std::make_unique<mesh::Mesh>(mesh::Mesh::unpack(in));
-      d->cell_degrees = scene::scene_cell_degrees(scene, *d->mesh);
-    }
   }
   d->contact = std::make_unique<mesh::ContactBoundary>(*d->contact_cells);
   d->boundary_mesh = std::make_unique<mesh::BoundaryMesh>(scene::build_scene_boundary_mesh(scene, *d->contact));

@@ -24,8 +24,7 @@ namespace hpcontact::driver {
 
 struct SceneDiscretization {
   /// T_h whole; null once released (release_whole_mesh): a distributed run's operators hold the
-  /// rank's part, and nothing after them reads the whole mesh. Distributed, on the first rank only
-  /// unless asked for on every rank (discretize_scene).
+  /// rank's part, and nothing after them reads the whole mesh. Distributed, on the first rank only.
   std::unique_ptr<mesh::Mesh> mesh;
   /// Γ_C's cells of T_h as a part of it (mesh::Mesh::extract), where `contact` lives, so that Γ_C
   /// (arc length, points, normals) outlives the whole mesh.
@@ -41,13 +40,11 @@ struct SceneDiscretization {
 
 /// Builds the meshes and degrees. Held by pointer: its parts refer to each other. Distributed, T_h
 /// and its degrees are built by the first rank of `distribution` (collective on its ranks), which
-/// alone holds them (the operators are built from it: PrimalOperators), unless
-/// `whole_mesh_on_every_rank` (the extension norm's references refine T_h on every rank); Γ_C's
-/// cells, T_{C,H} and the degree extremes are on every rank. @throws InputError as the scene's
-/// builders do, on every rank alike.
+/// alone holds them: the operators and the extension norm's references are built from it and
+/// send every rank its part (PrimalOperators). Γ_C's cells, T_{C,H} and the degree extremes are
+/// on every rank. @throws InputError as the scene's builders do, on every rank alike.
 std::unique_ptr<SceneDiscretization> discretize_scene(const scene::Scene& scene,
-                                                      const linalg::Distribution& distribution = {},
-                                                      bool whole_mesh_on_every_rank = false);
+                                                      const linalg::Distribution& distribution = {});
 
 /// Frees the whole T_h of `discretization` and its cells' degrees when the operators built on it
 /// live on a part of it (`operators_mesh`, the space's mesh: a distributed run), so that no rank
@@ -85,7 +82,8 @@ std::function<double(double)> multiplier_error_weight(const scene::Scene& scene,
 /// The inf-sup pairing of the scene ([infsup] problem: (11), or (22) with the scene's s) in its
 /// H^{-1/2} realization ([infsup] norm) on T_h (`mesh`, `cell_degrees`) and T_{C,H}
 /// (`boundary_mesh`, `segment_degrees`); `primal` must belong to T_h. `mesh` may be null when it
-/// was released (release_whole_mesh) and the norm is the interpolation norm.
+/// was released (release_whole_mesh) and the norm is the interpolation norm, and on the ranks but
+/// the first of a distributed run (which alone holds it).
 infsup::InfSupSetup infsup_setup_of(const scene::Scene& scene, const mesh::Mesh* mesh, std::vector<int> cell_degrees,
                                     const mesh::BoundaryMesh& boundary_mesh, std::vector<int> segment_degrees,
                                     const operators::PrimalOperators& primal);

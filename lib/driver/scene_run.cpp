@@ -287,7 +287,7 @@ nlohmann::json run_scene(const scene::Scene& given_scene, const SceneRunOptions&
   const scene::Scene scene =
       given_scene.fit_free_boundary ? fitted_scene(given_scene, options.distribution, say, free_boundary) : given_scene;
   // 1. Meshes and degrees; the operators of S^p(T_h) are built on first use and shared.
-  const auto d = discretize_scene(scene, options.distribution, reads_whole_mesh_after_operators(scene));
+  const auto d = discretize_scene(scene, options.distribution);
   OperatorLog log;
   const operators::PrimalOperators primal(d->mesh.get(), d->cell_degrees, &log, options.distribution);
   // (distributed, the operators now hold the rank's part)

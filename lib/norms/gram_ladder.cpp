@@ -28,13 +28,15 @@ GramLadder interpolation_gram_ladder(const space::MultiplierSpace& multipliers) 
                     2);
 }
 
-GramLadder extension_gram_ladder(const mesh::Mesh& mesh, std::vector<int> cell_degrees,
+GramLadder extension_gram_ladder(const mesh::Mesh* mesh, std::vector<int> cell_degrees,
                                  const space::MultiplierSpace& multipliers, linalg::Distribution distribution) {
+  // A copy where the mesh is given (distributed: the first rank at least), for the ladder's life.
+  std::shared_ptr<const mesh::Mesh> copy = mesh ? std::make_shared<const mesh::Mesh>(*mesh) : nullptr;
   return GramLadder(
-      [mesh, degrees = std::move(cell_degrees), &multipliers, distribution](int level, bool* geometric) {
+      [copy, degrees = std::move(cell_degrees), &multipliers, distribution](int level, bool* geometric) {
         bool graded = false;
         Eigen::MatrixXd gram =
-            extension_norm_gram(mesh, degrees, multipliers, extension_reference_at(level), &graded, distribution);
+            extension_norm_gram(copy.get(), degrees, multipliers, extension_reference_at(level), &graded, distribution);
         if (!graded) *geometric = false;
         return gram;
       },

@@ -49,8 +49,9 @@ GramLadder interpolation_gram_ladder(const space::MultiplierSpace& multipliers);
 
 /// The extension norm on the references extension_reference_at(level), graded towards the
 /// breakpoints of `multipliers` (which must outlive the ladder; the ladder keeps a copy of `mesh`),
-/// each factorized by `distribution` (its ranks then build every level together, in one order).
-GramLadder extension_gram_ladder(const mesh::Mesh& mesh, std::vector<int> cell_degrees,
+/// each factorized by `distribution` (its ranks then build every level together, in one order;
+/// `mesh` and `cell_degrees` are read on its first rank only: ExtensionReferenceFactor).
+GramLadder extension_gram_ladder(const mesh::Mesh* mesh, std::vector<int> cell_degrees,
                                  const space::MultiplierSpace& multipliers, linalg::Distribution distribution = {});
 
 /// The ladder of `sub` read off that of `envelope` (restrict_gram), which must outlive it.

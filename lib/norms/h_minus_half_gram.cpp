@@ -13,6 +13,8 @@
 #include "basis/lobatto.hpp"
 #include "basis/quadrature.hpp"
 #include "core/error.hpp"
+#include "core/petsc_session.hpp"
+#include "core/rank_agreement.hpp"
 #include "mesh/point_grading.hpp"
 #include "mesh/refine.hpp"
 
@@ -144,14 +146,42 @@ std::optional<std::vector<int>> grading_vertices(const mesh::Mesh& mesh, const s
 
 }  // namespace
 
-ExtensionReferenceFactor::ExtensionReferenceFactor(const mesh::Mesh& mesh, const std::vector<int>& cell_degrees,
+ExtensionReferenceFactor::ExtensionReferenceFactor(const mesh::Mesh* mesh, const std::vector<int>& cell_degrees,
                                                    const ExtensionReference& reference,
                                                    const std::vector<double>& grading_points,
                                                    linalg::Distribution distribution) {
   if (reference.refinements < 0 || reference.extra_degree < 0 || reference.layers < 0)
     throw InputError("extension norm: refinements, layers and extra_degree must be >= 0");
-  fine_ = std::make_unique<mesh::Mesh>(mesh);
-  std::vector<int> degrees = cell_degrees;
+  // S_ref's mesh is built where T_h is: distributed, on the first rank alone, which sends each
+  // rank its part of it (PrimalOperators); a failure there is raised on every rank.
+  const bool distributed = distribution.distributed();
+  const bool builds = !distributed || rank_and_size(distribution.ranks).first == 0;
+  std::vector<int> degrees;
+  const auto build = [&] {
+    if (!builds) return;
+    HPC_VERIFY(mesh, "the extension norm's references refine the whole mesh, which was not given");
+    fine_ = std::make_unique<mesh::Mesh>(*mesh);
+    degrees = cell_degrees;
+    refine_reference(reference, grading_points, degrees);
+  };
+  if (distributed) {
+    run_on_all_ranks_agreeing(build, distribution.ranks);
+    int graded = graded_ ? 1 : 0;
+    HPC_VERIFY(MPI_Bcast(&graded, 1, MPI_INT, 0, distribution.ranks) == MPI_SUCCESS,
+               "broadcast of whether the reference is graded");
+    graded_ = graded == 1;
+  } else {
+    build();
+  }
+  operators_ = std::make_unique<operators::PrimalOperators>(fine_.get(), std::move(degrees), nullptr, distribution);
+  // Distributed, the operators hold the rank's part of S_ref: the whole refined mesh goes before
+  // the factorization, the run's peak.
+  if (distribution.distributed()) fine_.reset();
+  operators_->gram_factor();
+}
+
+void ExtensionReferenceFactor::refine_reference(const ExtensionReference& reference,
+                                                const std::vector<double>& grading_points, std::vector<int>& degrees) {
   auto refine = [&] {
     *fine_ = mesh::refine_uniformly(*fine_);
     std::vector<int> children;
@@ -183,11 +213,6 @@ ExtensionReferenceFactor::ExtensionReferenceFactor(const mesh::Mesh& mesh, const
   }
   if (fine_->has_curved_cells()) graded_ = false;
   for (int& p : degrees) p += reference.extra_degree;
-  operators_ = std::make_unique<operators::PrimalOperators>(*fine_, std::move(degrees), nullptr, distribution);
-  // Distributed, the operators hold the rank's part of S_ref: the whole refined mesh goes before
-  // the factorization, the run's peak, instead of staying on every rank with it.
-  if (distribution.distributed()) fine_.reset();
-  operators_->gram_factor();
 }
 
 Eigen::MatrixXd extension_norm_gram(const ExtensionReferenceFactor& reference,
@@ -197,7 +222,7 @@ Eigen::MatrixXd extension_norm_gram(const ExtensionReferenceFactor& reference,
       assembly::assemble_coupling(reference_operators.space(), reference_operators.contact(), multipliers));
 }
 
-Eigen::MatrixXd extension_norm_gram(const mesh::Mesh& mesh, const std::vector<int>& cell_degrees,
+Eigen::MatrixXd extension_norm_gram(const mesh::Mesh* mesh, const std::vector<int>& cell_degrees,
                                     const space::MultiplierSpace& multipliers, const ExtensionReference& reference,
                                     bool* graded, linalg::Distribution distribution) {
   const ExtensionReferenceFactor factor(mesh, cell_degrees, reference, multipliers.boundary_mesh().nodes(),

@@ -65,9 +65,10 @@ ExtensionReference extension_reference_at(int level);
 class ExtensionReferenceFactor {
  public:
   /// `grading_points`: arc lengths on Γ_C of `mesh`. `distribution`: K + M factorized over its
-  /// ranks (each of them builds S_ref's mesh whole, keeps its part, and all make the same calls),
-  /// or serial.
-  ExtensionReferenceFactor(const mesh::Mesh& mesh, const std::vector<int>& cell_degrees,
+  /// ranks (the first builds S_ref's mesh whole and sends each rank its part, and all make the same
+  /// calls; `mesh` and `cell_degrees` are read on the first rank only, the others may pass null
+  /// and nothing), or serial.
+  ExtensionReferenceFactor(const mesh::Mesh* mesh, const std::vector<int>& cell_degrees,
                            const ExtensionReference& reference, const std::vector<double>& grading_points = {},
                            linalg::Distribution distribution = {});
   const operators::PrimalOperators& operators() const { return *operators_; }
@@ -77,6 +78,10 @@ class ExtensionReferenceFactor {
   bool graded() const { return graded_; }
 
  private:
+  /// Refines fine_ (T_h at first) into S_ref's mesh, `degrees` with it, and finds graded_.
+  void refine_reference(const ExtensionReference& reference, const std::vector<double>& grading_points,
+                        std::vector<int>& degrees);
+
   bool graded_ = false;
   std::unique_ptr<mesh::Mesh> fine_;  ///< S_ref's mesh, whole; distributed, freed once the operators hold their part
   std::unique_ptr<operators::PrimalOperators> operators_;
@@ -88,8 +93,8 @@ Eigen::MatrixXd extension_norm_gram(const ExtensionReferenceFactor& reference,
 
 /// The same, building the reference first, graded towards the breakpoints of `multipliers`.
 /// `cell_degrees` is the degree distribution on `mesh`. `graded`, if given, receives
-/// ExtensionReferenceFactor::graded().
-Eigen::MatrixXd extension_norm_gram(const mesh::Mesh& mesh, const std::vector<int>& cell_degrees,
+/// ExtensionReferenceFactor::graded(). `mesh` as there.
+Eigen::MatrixXd extension_norm_gram(const mesh::Mesh* mesh, const std::vector<int>& cell_degrees,
                                     const space::MultiplierSpace& multipliers, const ExtensionReference& reference,
                                     bool* graded = nullptr, linalg::Distribution distribution = {});
 

@@ -153,7 +153,7 @@ const EnvelopeGram& envelope_of(const SweepRun& run, const SweepPoint& point, co
       point.gram == infsup::GramNorm::interpolation
           ? norms::interpolation_gram_ladder(*envelope.multipliers)
           : norms::extension_gram_ladder(
-                group.mesh,
+                &group.mesh,
                 scene::scene_cell_degrees(point_scene(level_scene, run.largest_p, -1, std::nullopt), group.mesh),
                 *envelope.multipliers, run.distribution));
   return envelope;
