@@ -28,30 +28,39 @@ std::unique_ptr<mesh::Mesh> contact_cells_of(const mesh::Mesh& mesh) {
 
 }  // namespace
 
-std::unique_ptr<SceneDiscretization> discretize_scene(const scene::Scene& scene,
-                                                      const linalg::Distribution& distribution) {
-  auto d = std::make_unique<SceneDiscretization>();
+SceneMesh build_scene_mesh_on_first_rank(const scene::Scene& scene, const linalg::Distribution& distribution) {
+  SceneMesh out;
   const auto build_whole = [&] {
-    d->mesh = std::make_unique<mesh::Mesh>(scene::build_scene_mesh(scene));
-    d->cell_degrees = scene::scene_cell_degrees(scene, *d->mesh);
+    out.mesh = std::make_unique<mesh::Mesh>(scene::build_scene_mesh(scene));
+    out.cell_degrees = scene::scene_cell_degrees(scene, *out.mesh);
   };
   if (!distribution.distributed()) {
     build_whole();
-    d->contact_cells = contact_cells_of(*d->mesh);
-  } else {
-    // The first rank builds T_h and its degrees, and sends Γ_C's cells: the operators (and the
-    // extension norm's references) take their parts from it (operators/rank_space.hpp).
-    const std::vector<char> bytes = bytes_made_by_first_rank(
-        [&] {
-          build_whole();
-          ByteWriter out;
-          contact_cells_of(*d->mesh)->pack(out);
-          return out.take();
-        },
-        distribution.ranks);
-    ByteReader in(bytes);
-    d->contact_cells = std::make_unique<mesh::Mesh>(mesh::Mesh::unpack(in));
+    out.contact_cells = contact_cells_of(*out.mesh);
+    return out;
   }
+  // The first rank builds T_h and its degrees, and sends Γ_C's cells: the operators (and the
+  // extension norm's references) take their parts from it (operators/rank_space.hpp).
+  const std::vector<char> bytes = bytes_made_by_first_rank(
+      [&] {
+        build_whole();
+        ByteWriter bytes_out;
+        contact_cells_of(*out.mesh)->pack(bytes_out);
+        return bytes_out.take();
+      },
+      distribution.ranks);
+  ByteReader in(bytes);
+  out.contact_cells = std::make_unique<mesh::Mesh>(mesh::Mesh::unpack(in));
+  return out;
+}
+
+std::unique_ptr<SceneDiscretization> discretize_scene(const scene::Scene& scene,
+                                                      const linalg::Distribution& distribution) {
+  auto d = std::make_unique<SceneDiscretization>();
+  SceneMesh built = build_scene_mesh_on_first_rank(scene, distribution);
+  d->mesh = std::move(built.mesh);
+  d->cell_degrees = std::move(built.cell_degrees);
+  d->contact_cells = std::move(built.contact_cells);
   d->contact = std::make_unique<mesh::ContactBoundary>(*d->contact_cells);
   d->boundary_mesh = std::make_unique<mesh::BoundaryMesh>(scene::build_scene_boundary_mesh(scene, *d->contact));
   std::array<int, 2> extremes{};  // the smallest and largest degree, from the first rank

@@ -12,7 +12,6 @@
 #include <optional>
 #include <set>
 
-#include "core/byte_buffer.hpp"
 #include "core/error.hpp"
 #include "core/expression.hpp"
 #include "mesh/cell_map.hpp"
@@ -125,21 +124,6 @@ mesh::Mesh build_scene_mesh(const Scene& scene) {
                                  scene.contact_predicate.empty() ? "contact_groups" : "contact", error.what()));
   }
   return mesh;
-}
-
-mesh::Mesh build_scene_mesh_once(const Scene& scene, MPI_Comm ranks) {
-  std::optional<mesh::Mesh> built;
-  const auto bytes = bytes_made_by_first_rank(
-      [&] {
-        built.emplace(build_scene_mesh(scene));
-        ByteWriter out;
-        built->pack(out);
-        return out.take();
-      },
-      ranks);
-  if (built) return std::move(*built);
-  ByteReader in(bytes);
-  return mesh::Mesh::unpack(in);
 }
 
 namespace {

@@ -2,8 +2,6 @@
 // segment, and T_{C,H} on Γ_C.
 #pragma once
 
-#include <mpi.h>
-
 #include <array>
 #include <vector>
 
@@ -16,10 +14,6 @@ namespace hpcontact::scene {
 
 /// T_h with boundary parts. @throws InputError if Γ_C is empty or Γ_C and Γ_D overlap.
 mesh::Mesh build_scene_mesh(const Scene& scene);
-/// The same on every rank of `ranks`, built by the first and sent to the others: a Gmsh file is
-/// read (or a geometry meshed) once, not by every rank, and every rank holds the same mesh to the
-/// bit. Collective on `ranks`; a failure to build it is raised on every rank.
-mesh::Mesh build_scene_mesh_once(const Scene& scene, MPI_Comm ranks);
 
 /// The boundary edges where one displacement component alone vanishes (rollers of an elastic
 /// scene: [boundary] fixed_x, fixed_y and their _groups), one mask per component, each of size

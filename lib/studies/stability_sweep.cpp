@@ -112,28 +112,43 @@ struct SweepRun {
   linalg::Distribution distribution;
 };
 
-// T_h of one group (level, p) and its operators, shared by the group's points.
+// T_h of one group (level, p) and its operators, shared by the group's points. Distributed, T_h
+// and its degrees are on the group's first rank only (the operators and the extension norm's
+// references send the others their parts), Γ_C on every rank.
 struct GroupMesh {
   scene::Scene scene;
-  mesh::Mesh mesh;
+  driver::SceneMesh built;
   mesh::ContactBoundary contact;
-  std::vector<int> cell_degrees;
   /// The operators of the scalar model, or of an elastic scene (its α pairs [S^p(T_h)]² with the
   /// normal and tangential multipliers): one of the two, each split over the group's ranks once.
   std::unique_ptr<operators::PrimalOperators> primal;
   std::unique_ptr<operators::ElasticOperators> elastic;
   GroupMesh(const scene::Scene& level_scene, linalg::Distribution distribution)
       : scene(level_scene),
-        mesh(distribution.distributed() ? scene::build_scene_mesh_once(scene, distribution.ranks)
-                                        : scene::build_scene_mesh(scene)),
-        contact(mesh),
-        cell_degrees(scene::scene_cell_degrees(scene, mesh)) {
+        built(driver::build_scene_mesh_on_first_rank(scene, distribution)),
+        contact(*built.contact_cells) {
     if (scene.is_elastic())
-      elastic = driver::scene_elastic_operators(scene, &mesh, cell_degrees, nullptr, distribution);
+      elastic = driver::scene_elastic_operators(scene, built.mesh.get(), built.cell_degrees, nullptr, distribution);
     else
-      primal = std::make_unique<operators::PrimalOperators>(mesh, cell_degrees, nullptr, distribution);
+      primal =
+          std::make_unique<operators::PrimalOperators>(built.mesh.get(), built.cell_degrees, nullptr, distribution);
   }
 };
+
+/// The scene's degrees on `mesh` where it is (distributed: the first rank), a failure raised on
+/// every rank alike; empty elsewhere.
+std::vector<int> cell_degrees_on_first_rank(const scene::Scene& scene, const mesh::Mesh* mesh,
+                                            linalg::Distribution distribution) {
+  std::vector<int> degrees;
+  const auto evaluate = [&] {
+    if (mesh) degrees = scene::scene_cell_degrees(scene, *mesh);
+  };
+  if (distribution.distributed())
+    run_on_all_ranks_agreeing(evaluate, distribution.ranks);
+  else
+    evaluate();
+  return degrees;
+}
 
 /// The envelope Gram ladder of the point's (norm, ratio) on its level, built on first use.
 const EnvelopeGram& envelope_of(const SweepRun& run, const SweepPoint& point, const GroupMesh& group,
@@ -153,8 +168,9 @@ const EnvelopeGram& envelope_of(const SweepRun& run, const SweepPoint& point, co
       point.gram == infsup::GramNorm::interpolation
           ? norms::interpolation_gram_ladder(*envelope.multipliers)
           : norms::extension_gram_ladder(
-                &group.mesh,
-                scene::scene_cell_degrees(point_scene(level_scene, run.largest_p, -1, std::nullopt), group.mesh),
+                group.built.mesh.get(),
+                cell_degrees_on_first_rank(point_scene(level_scene, run.largest_p, -1, std::nullopt),
+                                           group.built.mesh.get(), run.distribution),
                 *envelope.multipliers, run.distribution));
   return envelope;
 }
@@ -166,10 +182,10 @@ std::string compute_point(const SweepRun& run, const SweepPoint& point, const Gr
   const scene::Scene scene = point_scene(group.scene, 0, point.pc, ratio, point.pairing, point.gram);
   const auto boundary = scene::build_scene_boundary_mesh(scene, group.contact);
   auto segment_degrees = scene::scene_segment_degrees(scene, group.contact, boundary);
-  auto setup = group.elastic ? driver::infsup_setup_of(scene, &group.mesh, group.cell_degrees, boundary,
-                                                       std::move(segment_degrees), *group.elastic)
-                             : driver::infsup_setup_of(scene, &group.mesh, group.cell_degrees, boundary,
-                                                       std::move(segment_degrees), *group.primal);
+  auto setup = group.elastic ? driver::infsup_setup_of(scene, group.built.mesh.get(), group.built.cell_degrees,
+                                                       boundary, std::move(segment_degrees), *group.elastic)
+                             : driver::infsup_setup_of(scene, group.built.mesh.get(), group.built.cell_degrees,
+                                                       boundary, std::move(segment_degrees), *group.primal);
   setup.alpha_tolerance = sweep.alpha_tolerance;
   const auto& envelope = envelope_of(run, point, group, boundary, grams);
   const norms::GramLadder ladder = norms::restricted_ladder(*envelope.ladder, *envelope.multipliers,
