@@ -171,7 +171,8 @@ TEST(DistributedFactor, GraphPartitionIsBalancedAndRanksTakeTheShorterCut) {
 
 // The first rank alone holds the mesh and sends each rank its part: on 2 and 3 ranks every part's
 // numbering, rollers, Γ_D-kept space and materials equal the whole space's on the same cells,
-// Γ_C's cells are on every part, each cell is owned once, and every part is smaller than the mesh. A bad degree on the first rank fails every rank alike, reported once.
+// Γ_C's cells are on every part, each cell is owned once, and every part is smaller than the mesh.
+// A bad degree on the first rank fails every rank alike, reported once.
 TEST(DistributedFactor, FirstRankSendsEachRankItsPartOfTheSpace) {
   for (int ranks : {2, 3}) {
     const auto run = run_command(mpirun_command(ranks, HPCONTACT_RANK_SPACE_CHECK, ""));

@@ -84,8 +84,8 @@ std::vector<int> partition_cells_by_graph(const Mesh* mesh, const std::vector<in
     throw;
   }
   static_assert(sizeof(PetscInt) == sizeof(int), "the graph is scattered as MPI_INT");
-  HPC_VERIFY(MPI_Scatterv(all_neighbours.data(), neighbour_counts.data(), neighbour_starts.data(), MPI_INT,
-                          neighbours, n_local_neighbours, MPI_INT, 0, ranks_sharing) == MPI_SUCCESS &&
+  HPC_VERIFY(MPI_Scatterv(all_neighbours.data(), neighbour_counts.data(), neighbour_starts.data(), MPI_INT, neighbours,
+                          n_local_neighbours, MPI_INT, 0, ranks_sharing) == MPI_SUCCESS &&
                  MPI_Scatterv(all_weights.data(), cell_counts.data(), cell_starts.data(), MPI_INT, weights, n_local,
                               MPI_INT, 0, ranks_sharing) == MPI_SUCCESS,
              "scattering the graph's rows failed");

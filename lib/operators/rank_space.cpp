@@ -75,7 +75,8 @@ RankSpace build_rank_space(const mesh::Mesh* mesh, std::vector<int> cell_degrees
         // The rollers' unknowns are numbered from the whole mesh's roller edges (boundary-sized).
         if (rollers) whole.vector_space = std::make_unique<space::VectorSpace>(*whole.space, *rollers);
         if (mesh->has_part(mesh::BoundaryPart::dirichlet))
-          whole.kept = std::make_unique<space::H1Space>(*mesh, std::move(cell_degrees), space::DirichletDofs::kept, none);
+          whole.kept =
+              std::make_unique<space::H1Space>(*mesh, std::move(cell_degrees), space::DirichletDofs::kept, none);
         const mesh::ContactBoundary contact(*mesh);
         for (const auto& edge : contact.edges()) whole.contact_cells.push_back(edge.cell);
         HPC_VERIFY(!materials || static_cast<int>(materials->size()) == mesh->n_cells(), "one material per cell");
