@@ -3,7 +3,7 @@
 // and space itself, here only, to check its part against them: the same global dofs, signs and
 // modes on every cell of the part, the same rollers, the space with Γ_D's dofs kept, the
 // materials, Γ_C's cells all held, every cell owned by exactly one rank, and a part smaller than
-// the whole mesh on every rank but one. Rank 0 prints one line per mesh:
+// the whole mesh on every rank. Rank 0 prints one line per mesh:
 //   NAME mismatches M owned O cells C smaller S
 //
 //   rank_space_check          the p-graded square (quadrilaterals) and its triangles

@@ -416,10 +416,13 @@ TEST(Cli, ShardedSweepMergesIntoTheSerialCsv) {
 // energies and α to 1e-10.
 // `mpirun -n 2 hpcontact infsup` factorizes A_G over the ranks and prints the serial α, in both
 // H^{-1/2} realizations and with the three distributed solvers; only rank 0 prints.
+// The §7 scene in both norms, and an elastic scene in the extension norm (whose references rank 0
+// alone refines and sends in parts, as for the scalar pairing).
 TEST(Cli, InfsupUnderMpirunGivesTheSerialAlpha) {
   const std::string env = "env OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ";
-  for (const char* norm : {"interp", "extension"}) {
-    const std::string arguments = std::string(" infsup --n 16 --p 3 --pc 2 --ratio 1/2 --norm ") + norm;
+  const std::string elastic = " --scene " + std::string(HPCONTACT_SOURCE_DIR) + "/studies/elasticity/square.toml";
+  for (const std::string& norm : std::vector<std::string>{"interp", "extension", "extension" + elastic}) {
+    const std::string arguments = " infsup --n 16 --p 3 --pc 2 --ratio 1/2 --norm " + norm;
     const auto serial = run(arguments);
     ASSERT_EQ(serial.exit_code, 0) << serial.output;
     for (const char* solver : {"substructuring", "mumps", "bddc"}) {

@@ -60,7 +60,7 @@ int run_infsup(const InfSupOptions& o) {
   for (const auto& file : {o.csv, o.mode})
     if (!file.empty()) io::ensure_writable_directory(std::filesystem::absolute(file).parent_path());
 
-  // 2. Build T_h (under mpirun by rank 0, sent to the others) and T_{C,H}, and solve the
+  // 2. Build T_h (under mpirun by rank 0 alone, which sends each rank its part) and T_{C,H}, and solve the
   // eigenproblem. Under mpirun A_G is factorized over the ranks, and rank 0 reports and writes.
   const int rank = mpi_rank_and_size().first;
   // An elastic scene pairs the normal (and tangential) multipliers with [S^p(T_h)]².

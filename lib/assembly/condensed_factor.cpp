@@ -92,6 +92,8 @@ CondensedFactor::CondensedFactor(std::unique_ptr<const CellSystem> system, const
   if (distributed) {
     const int rank = rank_and_size(ranks).first;
     HPC_VERIFY(part_of_cell.empty() || static_cast<int>(part_of_cell.size()) == n_cells, "one part per cell");
+    HPC_VERIFY(!part_of_cell.empty() || !system_->mesh().is_part(),
+               "a part's cells are split by the whole mesh's owner");
     const std::vector<int> parts =
         part_of_cell.empty() ? mesh::split_cells_over_ranks(system_->mesh(), cell_work_weights(*system_), ranks)
                              : part_of_cell;

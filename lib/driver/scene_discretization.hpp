@@ -38,15 +38,15 @@ struct SceneDiscretization {
   std::unique_ptr<space::MultiplierSpace> multipliers;  ///< M^{p_C}(T_{C,H}), refers to boundary_mesh
 };
 
-/// T_h and its degrees where they are built (serial: here; distributed: on the first rank of
-/// `distribution` only, null and empty on the others), and Γ_C's cells of T_h as a part of it
-/// (mesh::Mesh::extract) on every rank. Collective on the ranks when distributed.
-/// @throws InputError as the scene's builders do, on every rank alike.
+/// T_h with its degrees, and Γ_C's cells of T_h as a part of it (mesh::Mesh::extract).
 struct SceneMesh {
-  std::unique_ptr<mesh::Mesh> mesh;
-  std::vector<int> cell_degrees;
+  std::unique_ptr<mesh::Mesh> mesh;  ///< distributed: on the first rank only
+  std::vector<int> cell_degrees;     ///< where `mesh` is
   std::unique_ptr<mesh::Mesh> contact_cells;
 };
+/// The scene's T_h and degrees where they are built (serial: here; distributed: on the first rank
+/// of `distribution` only, null and empty on the others), Γ_C's cells on every rank. Collective on
+/// the ranks when distributed. @throws InputError as the scene's builders do, on every rank alike.
 SceneMesh build_scene_mesh_on_first_rank(const scene::Scene& scene, const linalg::Distribution& distribution);
 
 /// Builds the meshes and degrees. Held by pointer: its parts refer to each other. Distributed, T_h

@@ -24,13 +24,19 @@ EigenBackend parse_eigen_backend(const std::string& text, const std::string& ori
 
 namespace {
 
+// The ranks the setup's operators (scalar or elastic) are factorized over; serial without any.
+linalg::Distribution distribution_of(const InfSupSetup& setup) {
+  if (setup.primal) return setup.primal->distribution();
+  if (setup.elastic) return setup.elastic->distribution();
+  return {};
+}
+
 std::unique_ptr<norms::GramLadder> own_ladder(const InfSupSetup& setup, const space::MultiplierSpace& multipliers) {
   if (setup.norm == GramNorm::interpolation)
     return std::make_unique<norms::GramLadder>(norms::interpolation_gram_ladder(multipliers));
   // (distributed, the first rank alone holds the whole mesh, which the references refine)
   return std::make_unique<norms::GramLadder>(
-      norms::extension_gram_ladder(setup.mesh, setup.cell_degrees, multipliers,
-                                   setup.primal ? setup.primal->distribution() : linalg::Distribution{}));
+      norms::extension_gram_ladder(setup.mesh, setup.cell_degrees, multipliers, distribution_of(setup)));
 }
 
 // α of each zone's multipliers alone: the pencil (S_G, G) restricted to the active dofs whose
@@ -74,7 +80,7 @@ InfSupResult analyse_infsup(const InfSupSetup& setup, EigenBackend backend) {
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
   const std::unique_ptr<norms::GramLadder> own = setup.grams ? nullptr : own_ladder(setup, multipliers);
   const norms::GramLadder& grams = setup.grams ? *setup.grams : *own;
-  const linalg::Distribution distribution = setup.primal ? setup.primal->distribution() : linalg::Distribution{};
+  const linalg::Distribution distribution = distribution_of(setup);
   const double seconds_gram_before = grams.seconds();
   InfSupResult result;
   SmallestEigenpair pair;

@@ -28,7 +28,8 @@ std::string to_string(PairingProblem problem);
 struct InfSupSetup {
   /// T_h whole: where own operators are built and, for the extension norm, what its references
   /// refine. May be null when `primal` or `elastic` is given and the norm is the interpolation norm
-  /// (a distributed run frees it once its operators hold the rank's part).
+  /// (a distributed run frees it once its operators hold the rank's part), and on the ranks but the
+  /// first of a distributed run in either norm (rank 0 alone holds it and refines the references).
   const mesh::Mesh* mesh = nullptr;
   std::vector<int> cell_degrees;  ///< p_T
   const mesh::BoundaryMesh* boundary_mesh = nullptr;

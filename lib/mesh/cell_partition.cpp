@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "core/petsc_session.hpp"
+#include "core/rank_agreement.hpp"
 #include "mesh/graph_partition.hpp"
 
 namespace hpcontact::mesh {
@@ -81,9 +82,17 @@ PartitionInterface partition_interface(const Mesh& mesh, const std::vector<int>&
 
 std::vector<int> split_cells_on_first_rank(const Mesh* mesh, const std::vector<int>& cell_weights, MPI_Comm ranks) {
   std::vector<int> graph = partition_cells_by_graph(mesh, cell_weights, ranks);  // collective: every rank calls it
-  if (rank_and_size(ranks).first != 0) return {};
-  std::vector<int> bisection = bisect_cells(*mesh, rank_and_size(ranks).second, cell_weights);
-  return partition_interface(*mesh, graph).edges < partition_interface(*mesh, bisection).edges ? graph : bisection;
+  // The first rank bisects and compares alone; a failure there (memory) ends every rank alike.
+  const bool first = rank_and_size(ranks).first == 0;
+  run_on_all_ranks_agreeing(
+      [&] {
+        if (!first) return;
+        std::vector<int> bisection = bisect_cells(*mesh, rank_and_size(ranks).second, cell_weights);
+        if (partition_interface(*mesh, bisection).edges <= partition_interface(*mesh, graph).edges)
+          graph = std::move(bisection);
+      },
+      ranks);
+  return graph;
 }
 
 std::vector<int> split_cells_over_ranks(const Mesh& mesh, const std::vector<int>& cell_weights, MPI_Comm ranks) {

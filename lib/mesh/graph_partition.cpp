@@ -6,7 +6,8 @@
 #include <mpi.h>
 #include <petscmat.h>
 
-#include <cstdio>  // ptscotch.h needs FILE (and MPI) declared first
+#include <cstdio>
+#include <limits>  // ptscotch.h needs FILE (and MPI) declared first
 // (the reset below reaches the generator PT-Scotch runs on because libptscotch, linked here, and
 // the copy PETSc loads are one library in the process)
 #include <ptscotch.h>
@@ -45,6 +46,8 @@ std::vector<int> partition_cells_by_graph(const Mesh* mesh, const std::vector<in
           row_sizes.push_back(static_cast<int>(all_neighbours.size() - before));
         }
         all_weights = cell_weights;
+        HPC_VERIFY(all_neighbours.size() <= static_cast<std::size_t>(std::numeric_limits<int>::max()),
+                   "the cells' graph has more edges than MPI's int counts can scatter");
       },
       ranks_sharing);
   int n_cells = static_cast<int>(row_sizes.size());

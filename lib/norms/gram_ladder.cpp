@@ -30,7 +30,7 @@ GramLadder interpolation_gram_ladder(const space::MultiplierSpace& multipliers) 
 
 GramLadder extension_gram_ladder(const mesh::Mesh* mesh, std::vector<int> cell_degrees,
                                  const space::MultiplierSpace& multipliers, linalg::Distribution distribution) {
-  // A copy where the mesh is given (distributed: the first rank at least), for the ladder's life.
+  // A copy where the mesh is given (serial; distributed, the first rank only), for the ladder's life.
   std::shared_ptr<const mesh::Mesh> copy = mesh ? std::make_shared<const mesh::Mesh>(*mesh) : nullptr;
   return GramLadder(
       [copy, degrees = std::move(cell_degrees), &multipliers, distribution](int level, bool* geometric) {

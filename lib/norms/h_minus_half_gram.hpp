@@ -83,7 +83,8 @@ class ExtensionReferenceFactor {
                         std::vector<int>& degrees);
 
   bool graded_ = false;
-  std::unique_ptr<mesh::Mesh> fine_;  ///< S_ref's mesh, whole; distributed, freed once the operators hold their part
+  /// S_ref's mesh, whole; distributed, on the first rank only, and freed once the operators hold their part.
+  std::unique_ptr<mesh::Mesh> fine_;
   std::unique_ptr<operators::PrimalOperators> operators_;
 };
 
