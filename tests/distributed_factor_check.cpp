@@ -38,6 +38,7 @@
 #include "core/error.hpp"
 #include "core/petsc_session.hpp"
 #include "core/rank_agreement.hpp"
+#include "helper_failure.hpp"
 #include "linalg/bddc_solver.hpp"
 #include "linalg/distributed_cholesky.hpp"
 #include "linalg/interface_cholesky.hpp"
@@ -276,13 +277,6 @@ int main(int argc, char** argv) {
     return run(argv[1], argv[2], mode == "indefinite" || plain || interior_only, mode == "untouched", plain,
                interior_only);
   } catch (const std::exception& error) {
-    // A rank failing alone may leave the others in a collective call: it ends the job, as the tool.
-    const bool shared = failure_shared_by_every_rank();
-    if (!shared || mpi_rank_and_size().first == 0) fmt::print("error: {}\n", error.what());
-    if (!shared) {
-      std::fflush(stdout);
-      MPI_Abort(MPI_COMM_WORLD, 3);
-    }
-    return 3;
+    return testing::end_helper_on_failure(error);
   }
 }

@@ -10,12 +10,12 @@
 //   rank_space_check bad      a degree 0 on the first rank: every rank must fail alike
 #include <fmt/format.h>
 
-#include <cstdio>
 #include <string>
 
 #include "core/error.hpp"
 #include "core/petsc_session.hpp"
 #include "core/rank_agreement.hpp"
+#include "helper_failure.hpp"
 #include "mesh/contact_boundary.hpp"
 #include "mesh/rectangle_mesh.hpp"
 #include "mesh/refine.hpp"
@@ -129,13 +129,6 @@ int main(int argc, char** argv) {
     check("triangles", triangles, triangle_degrees);
     return 0;
   } catch (const std::exception& error) {
-    // A rank failing alone may leave the others in a collective call: it ends the job, as the tool.
-    const bool shared = failure_shared_by_every_rank();
-    if (!shared || mpi_rank_and_size().first == 0) fmt::print("error: {}\n", error.what());
-    if (!shared) {
-      std::fflush(stdout);
-      MPI_Abort(MPI_COMM_WORLD, 3);
-    }
-    return 3;
+    return testing::end_helper_on_failure(error);
   }
 }
