@@ -3,32 +3,14 @@
 // static condensation and the trace-last factorization are those of the scalar problem.
 #pragma once
 
-#include <string>
 #include <vector>
 
 #include "assembly/cell_system.hpp"
+#include "assembly/material.hpp"
 #include "space/h1_space.hpp"
 #include "space/vector_space.hpp"
 
 namespace hpcontact::assembly {
-
-enum class PlaneModel { strain, stress };
-
-/// "plane_strain" / "plane_stress".
-std::string to_string(PlaneModel model);
-
-struct Material {
-  double lambda = 0.0;  ///< first Lamé parameter (of the plane model)
-  double mu = 0.0;      ///< shear modulus
-  /// σ_zz = out_of_plane · (ε_xx + ε_yy): λ in plane strain, 0 in plane stress.
-  double out_of_plane = 0.0;
-};
-
-/// Lamé parameters of Young's modulus E > 0 and Poisson's ratio ν ∈ (−1, ½):
-///   plane strain  λ = Eν / ((1 + ν)(1 − 2ν)),  μ = E / (2(1 + ν));
-///   plane stress  λ = Eν / (1 − ν²)            (the same μ).
-/// @throws InputError outside these ranges.
-Material lame_parameters(double young, double poisson, PlaneModel model);
 
 /// Local unknowns of a cell: component c of scalar shape s at position 2s + c; global dofs by
 /// space::VectorSpace::dof (-1 where Γ_D or a roller fixes the component). Element matrix (signed shapes), with D_ab =

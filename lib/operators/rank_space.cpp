@@ -1,6 +1,6 @@
 // build_rank_space: the first rank numbers the space (a numbering-only space weighs the cells),
-// the split follows, then each rank's part with its share of the numbering is sent to it, and
-// the rank adds the shapes of its cells.
+// the split follows, then each rank's part with its share of the numbering is sent to it
+// (operators/rank_parts), and the rank adds the shapes of its cells.
 #include "operators/rank_space.hpp"
 
 #include <algorithm>
@@ -10,44 +10,9 @@
 #include "core/rank_agreement.hpp"
 #include "mesh/cell_partition.hpp"
 #include "mesh/contact_boundary.hpp"
+#include "operators/rank_parts.hpp"
 
 namespace hpcontact::operators {
-
-namespace {
-
-// What the first rank alone holds while it cuts the parts: the whole space's numberings.
-struct WholeNumbering {
-  std::unique_ptr<space::H1Space> space, kept;       // kept: with Γ_D's dofs, where Γ_D exists
-  std::unique_ptr<space::VectorSpace> vector_space;  // elasticity: the rollers' unknowns
-  std::vector<int> contact_cells;                    // held by every rank
-};
-
-// Rank `rank`'s part of the mesh with its share of everything the first rank numbered.
-std::vector<char> part_bytes(const mesh::Mesh& mesh, const WholeNumbering& whole, const std::vector<int>& parts,
-                             int rank, const std::vector<assembly::Material>* materials) {
-  std::vector<char> held(mesh.n_cells(), 0);
-  for (int c = 0; c < mesh.n_cells(); ++c) held[c] = parts[c] == rank;
-  for (int c : whole.contact_cells) held[c] = 1;
-  std::vector<int> cells, cell_parts;
-  for (int c = 0; c < mesh.n_cells(); ++c)
-    if (held[c]) cells.push_back(c), cell_parts.push_back(parts[c]);
-  const mesh::Mesh part = mesh.extract(cells);
-  ByteWriter out;
-  part.pack(out);
-  whole.space->restricted_to(part, false).pack(out);
-  out.put(cell_parts);
-  if (whole.vector_space) whole.vector_space->pack(out);
-  out.put(static_cast<char>(whole.kept != nullptr));
-  if (whole.kept) whole.kept->restricted_to(part, false).pack(out);
-  if (materials) {
-    std::vector<assembly::Material> own;
-    for (int c : cells) own.push_back((*materials)[c]);
-    out.put(own);
-  }
-  return out.take();
-}
-
-}  // namespace
 
 RankSpace build_rank_space(const mesh::Mesh* mesh, std::vector<int> cell_degrees, linalg::Distribution distribution,
                            const RollerMasks* rollers, const std::vector<assembly::Material>* materials) {
@@ -79,13 +44,19 @@ RankSpace build_rank_space(const mesh::Mesh* mesh, std::vector<int> cell_degrees
               std::make_unique<space::H1Space>(*mesh, std::move(cell_degrees), space::DirichletDofs::kept, none);
         const mesh::ContactBoundary contact(*mesh);
         for (const auto& edge : contact.edges()) whole.contact_cells.push_back(edge.cell);
-        HPC_VERIFY(!materials || static_cast<int>(materials->size()) == mesh->n_cells(), "one material per cell");
       },
       ranks);
   const std::vector<int> parts = mesh::split_cells_on_first_rank(mesh, weights, ranks);
   weights = {};
-  const std::vector<char> bytes = bytes_made_by_first_rank_for_each(
-      [&](int rank) { return part_bytes(*mesh, whole, parts, rank, materials); }, ranks);
+  std::unique_ptr<RankParts> cutter;  // the first rank's
+  run_on_all_ranks_agreeing(
+      [&] {
+        if (first) cutter = std::make_unique<RankParts>(*mesh, whole, parts, rank_and_size(ranks).second, materials);
+      },
+      ranks);
+  const std::vector<char> bytes =
+      bytes_made_by_first_rank_for_each([&](int rank) { return cutter->bytes_for(rank); }, ranks);
+  cutter.reset();
   ByteReader in(bytes);
   out.part = std::make_unique<mesh::Mesh>(mesh::Mesh::unpack(in));
   out.space = std::make_unique<space::H1Space>(space::H1Space::unpack(in, *out.part).with_shapes());

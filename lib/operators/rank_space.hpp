@@ -12,7 +12,7 @@
 #include <memory>
 #include <vector>
 
-#include "assembly/elastic_system.hpp"
+#include "assembly/material.hpp"
 #include "linalg/distribution.hpp"
 #include "space/h1_space.hpp"
 #include "space/vector_space.hpp"

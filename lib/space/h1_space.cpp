@@ -106,20 +106,15 @@ H1Space H1Space::restricted_to(const mesh::Mesh& part, bool with_shapes) const {
     out.edge_degrees_.push_back(edge_degrees_[part.global_edge(e)]);
     out.edge_first_dofs_.push_back(edge_first_dofs_[part.global_edge(e)]);
   }
-  for (int c = 0; c < part.n_cells(); ++c) out.cell_degrees_.push_back(cell_degrees_[part.global_cell(c)]);
-  // Interior modes are numbered cell after cell after the skeleton: a cell's first one counts
-  // those of every cell before it in the whole mesh.
-  int first_interior = n_skeleton_dofs_;
-  for (int c = 0, whole = 0; c < part.n_cells(); ++c) {
-    for (; whole < part.global_cell(c); ++whole) first_interior += interior_count(whole);
-    out.first_interior_.push_back(first_interior);
+  for (int c = 0; c < part.n_cells(); ++c) {
+    out.cell_degrees_.push_back(cell_degrees_[part.global_cell(c)]);
+    out.first_interior_.push_back(first_interior_[part.global_cell(c)]);
   }
   out.first_shape_.assign(part.n_cells() + 1, 0);
   return with_shapes ? out.with_shapes() : out;
 }
 
 H1Space H1Space::with_shapes() const {
-  HPC_VERIFY(!first_interior_.empty(), "shapes are added to a space restricted to a part");
   H1Space out = *this;
   const int n_cells = mesh_->n_cells();
   for (int c = 0; c < n_cells; ++c) out.first_shape_[c + 1] = out.first_shape_[c] + out.shape_count(c);
@@ -195,7 +190,9 @@ void H1Space::build(DirichletDofs dirichlet, const std::vector<char>& held) {
   for (int c = 0; c < mesh.n_cells(); ++c) first_shape_[c + 1] = first_shape_[c] + (is_held(c) ? shape_count(c) : 0);
   shapes_.clear();
   shapes_.reserve(first_shape_.back());
+  first_interior_.resize(mesh.n_cells());
   for (int c = 0; c < mesh.n_cells(); ++c) {
+    first_interior_[c] = next;
     if (is_held(c)) append_shapes(c, next);  // a cell not held is numbered all the same
     next += interior_count(c);
   }

@@ -124,7 +124,7 @@ class H1Space {
   std::vector<int> cell_degrees_;
   std::vector<int> edge_degrees_;
   std::vector<int> vertex_dofs_, edge_first_dofs_;  ///< see vertex_dof, edge_mode_dof
-  std::vector<int> first_interior_;                 ///< restricted: each cell's first interior dof
+  std::vector<int> first_interior_;                 ///< each cell's first interior dof
   std::vector<LocalShape> shapes_;                  ///< every held cell's shapes, cell after cell
   std::vector<std::int64_t> first_shape_;           ///< cell c's shapes: [first_shape_[c], first_shape_[c + 1])
   int n_dofs_ = 0;

@@ -1,0 +1,27 @@
+// An isotropic material of linear elasticity in the plane: its Lamé parameters, from Young's
+// modulus and Poisson's ratio in plane strain or plane stress.
+#pragma once
+
+#include <string>
+
+namespace hpcontact::assembly {
+
+enum class PlaneModel { strain, stress };
+
+/// "plane_strain" / "plane_stress".
+std::string to_string(PlaneModel model);
+
+struct Material {
+  double lambda = 0.0;  ///< first Lamé parameter (of the plane model)
+  double mu = 0.0;      ///< shear modulus
+  /// σ_zz = out_of_plane · (ε_xx + ε_yy): λ in plane strain, 0 in plane stress.
+  double out_of_plane = 0.0;
+};
+
+/// Lamé parameters of Young's modulus E > 0 and Poisson's ratio ν ∈ (−1, ½):
+///   plane strain  λ = Eν / ((1 + ν)(1 − 2ν)),  μ = E / (2(1 + ν));
+///   plane stress  λ = Eν / (1 − ν²)            (the same μ).
+/// @throws InputError outside these ranges.
+Material lame_parameters(double young, double poisson, PlaneModel model);
+
+}  // namespace hpcontact::assembly
