@@ -6,13 +6,10 @@
 
 #include <algorithm>
 #include <charconv>
-#include <cmath>
-#include <fstream>
 #include <map>
 #include <memory>
 #include <optional>
 #include <set>
-#include <tuple>
 
 #include "core/error.hpp"
 #include "core/petsc_session.hpp"
