@@ -22,12 +22,23 @@ using namespace hpcontact;
 
 namespace {
 
+// The scenes this process wrote, removed when it ends (their names carry the process id, so
+// files left behind would pile up run after run).
+struct WrittenScenes {
+  std::vector<std::filesystem::path> paths;
+  ~WrittenScenes() {
+    for (const auto& path : paths) std::filesystem::remove(path);
+  }
+};
+
 // One file per process: ctest runs the tests of this file in parallel processes, which must not
 // write each other's scenes.
 std::string write_scene(const std::string& name, const std::string& text) {
+  static WrittenScenes written;
   const auto path =
       std::filesystem::temp_directory_path() / ("hpcontact_scene_" + name + "_" + std::to_string(::getpid()) + ".toml");
   std::ofstream(path) << text;
+  written.paths.push_back(path);
   return path.string();
 }
 
