@@ -4,7 +4,8 @@
 // on 4), with the elements
 // split in strips or scattered (every unknown shared, ranks without interior, floating parts);
 // an indefinite matrix must fail on every rank with a clear message, not hang; the split of the
-// cells over the ranks must be balanced and take the shorter cut of bisection and PT-Scotch.
+// cells over the ranks must be balanced and take the shorter cut of bisection and PT-Scotch, and
+// each rank's part cut by the first rank must hold its cells with the whole space's dofs.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,7 +14,12 @@
 
 #define HPCONTACT_CLI "hpcontact"  // cli_runner.hpp's run() is not used here
 #include "cli_runner.hpp"
+#include "core/byte_buffer.hpp"
 #include "linalg/substructured_cholesky.hpp"
+#include "mesh/cell_partition.hpp"
+#include "mesh/contact_boundary.hpp"
+#include "mesh/rectangle_mesh.hpp"
+#include "operators/rank_parts.hpp"
 
 using hpcontact::testing::run_command;
 namespace linalg = hpcontact::linalg;
@@ -192,6 +198,55 @@ TEST(DistributedFactor, FirstRankSendsEachRankItsPartOfTheSpace) {
   const auto message = bad.output.find("must be >= 1");
   ASSERT_NE(message, std::string::npos) << bad.output;
   EXPECT_EQ(bad.output.find("must be >= 1", message + 1), std::string::npos) << bad.output;
+}
+
+// The first rank's cutting of the parts, serially: rank r's part is its own cells and Γ_C's,
+// ascending, the mesh sent to it is that part of the whole mesh, and its numbering gives each cell
+// the whole space's dofs (interior modes included: their offsets are read from the whole space).
+TEST(DistributedFactor, RankPartsHoldEachRanksOwnCellsAndGammaCsWithTheirDofs) {
+  namespace mesh = hpcontact::mesh;
+  namespace space = hpcontact::space;
+  const auto square = mesh::make_paper_square_mesh(8);
+  std::vector<int> degrees(square.n_cells());
+  for (int c = 0; c < square.n_cells(); ++c) degrees[c] = 1 + c % 4;  // interiors of 0, 1, 4 and 9 modes
+  const space::H1Space with_shapes(square, degrees);
+  hpcontact::operators::WholeNumbering whole;
+  whole.space = std::make_unique<space::H1Space>(square, degrees, space::DirichletDofs::eliminated,
+                                                 std::vector<char>(square.n_cells(), 0));
+  const mesh::ContactBoundary contact(square);  // (named: edges() refers into it)
+  for (const auto& edge : contact.edges()) whole.contact_cells.push_back(edge.cell);
+  const std::vector<char> on_contact = [&] {
+    std::vector<char> flags(square.n_cells(), 0);
+    for (int c : whole.contact_cells) flags[c] = 1;
+    return flags;
+  }();
+  const int ranks = 3;
+  const auto parts = mesh::bisect_cells(square, ranks, std::vector<int>(square.n_cells(), 1));
+  const hpcontact::operators::RankParts cutter(square, whole, parts, ranks, nullptr);
+  std::vector<int> owners(square.n_cells(), 0);
+  for (int rank = 0; rank < ranks; ++rank) {
+    const auto cells = cutter.cells_of(rank);
+    int expected = 0;
+    for (int c = 0; c < square.n_cells(); ++c) expected += parts[c] == rank || on_contact[c];
+    ASSERT_EQ(static_cast<int>(cells.size()), expected) << "rank " << rank;
+    EXPECT_TRUE(std::adjacent_find(cells.begin(), cells.end(), std::greater_equal<>()) == cells.end());
+    for (int c : cells) owners[c] += parts[c] == rank;
+    const auto bytes = cutter.bytes_for(rank);
+    hpcontact::ByteReader in(bytes);
+    const auto part = mesh::Mesh::unpack(in);
+    const auto numbering = space::H1Space::unpack(in, part).with_shapes();
+    ASSERT_EQ(part.n_cells(), expected);
+    for (int c = 0; c < part.n_cells(); ++c) {
+      ASSERT_EQ(part.global_cell(c), cells[c]);
+      const auto mine = numbering.cell_shapes(c), reference = with_shapes.cell_shapes(cells[c]);
+      ASSERT_EQ(mine.size(), reference.size()) << "cell " << cells[c];
+      for (std::size_t k = 0; k < mine.size(); ++k) EXPECT_EQ(mine[k].dof, reference[k].dof) << "cell " << cells[c];
+    }
+  }
+  EXPECT_TRUE(std::all_of(owners.begin(), owners.end(), [](int n) { return n == 1; }));
+  std::vector<int> beyond = parts;
+  beyond[0] = ranks;  // a cell of a rank outside the split
+  EXPECT_THROW(hpcontact::operators::RankParts(square, whole, beyond, ranks, nullptr), std::logic_error);
 }
 
 // The sweep's work queue: every value below N goes to exactly one rank, on 1 to 4 ranks; a rank
