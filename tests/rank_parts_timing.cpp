@@ -1,7 +1,6 @@
-// A measurement, not a test: how long the first rank of a distributed run takes to cut every
-// rank's part (operators::RankParts) of the §7 square with n × n cells at p = 4, split by
-// coordinate bisection into P parts, in one process (no MPI). Usage: rank_parts_timing N P...;
-// prints one line per P: the seconds and the bytes of all parts.
+// A measurement, not a test: the first rank's time to cut every rank's part (operators::RankParts:
+// the §7 square with n × n cells at p = 4, Γ_D eliminated and kept, bisection into P parts) in one
+// process. Usage: rank_parts_timing N P...; one line per P: the seconds and the bytes of all parts.
 #include <fmt/format.h>
 
 #include <chrono>
@@ -22,10 +21,11 @@ int main(int argc, char** argv) {
   }
   const mesh::Mesh square = mesh::make_paper_square_mesh(std::stoi(argv[1]));
   operators::WholeNumbering whole;
-  whole.space =
-      std::make_unique<space::H1Space>(square, std::vector<int>(square.n_cells(), 4), space::DirichletDofs::eliminated,
-                                       std::vector<char>(square.n_cells(), 0));  // numbering only
-  const mesh::ContactBoundary contact(square);                                   // (named: edges() refers into it)
+  const std::vector<int> degrees(square.n_cells(), 4);
+  const std::vector<char> none(square.n_cells(), 0);  // numbering only, as on the first rank
+  whole.space = std::make_unique<space::H1Space>(square, degrees, space::DirichletDofs::eliminated, none);
+  whole.kept = std::make_unique<space::H1Space>(square, degrees, space::DirichletDofs::kept, none);
+  const mesh::ContactBoundary contact(square);  // (named: edges() refers into it)
   for (const auto& edge : contact.edges()) whole.contact_cells.push_back(edge.cell);
   for (int a = 2; a < argc; ++a) {
     const int ranks = std::stoi(argv[a]);

@@ -10,6 +10,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <memory>
 #include <string>
 
 #define HPCONTACT_CLI "hpcontact"  // cli_runner.hpp's run() is not used here
@@ -201,52 +203,65 @@ TEST(DistributedFactor, FirstRankSendsEachRankItsPartOfTheSpace) {
 }
 
 // The first rank's cutting of the parts, serially: rank r's part is its own cells and Γ_C's,
-// ascending, the mesh sent to it is that part of the whole mesh, and its numbering gives each cell
-// the whole space's dofs (interior modes included: their offsets are read from the whole space).
+// ascending and each once (Γ_C turns the square's corner, so one cell has two Γ_C edges, and the
+// list is handed over unsorted with repeats), read back with each cell's owner and material and
+// the whole space's dofs, Γ_D eliminated and kept (interior modes included: their offsets are read
+// from the whole space).
 TEST(DistributedFactor, RankPartsHoldEachRanksOwnCellsAndGammaCsWithTheirDofs) {
   namespace mesh = hpcontact::mesh;
   namespace space = hpcontact::space;
-  const auto square = mesh::make_paper_square_mesh(8);
+  namespace operators = hpcontact::operators;
+  auto square = mesh::make_paper_square_mesh(8);
+  mesh::assign_boundary_part(square, mesh::BoundaryPart::contact,
+                             [](const mesh::Point& x) { return x.x() > 0.999 && x.y() < 0.0; });
   std::vector<int> degrees(square.n_cells());
   for (int c = 0; c < square.n_cells(); ++c) degrees[c] = 1 + c % 4;  // interiors of 0, 1, 4 and 9 modes
-  const space::H1Space with_shapes(square, degrees);
-  hpcontact::operators::WholeNumbering whole;
-  whole.space = std::make_unique<space::H1Space>(square, degrees, space::DirichletDofs::eliminated,
-                                                 std::vector<char>(square.n_cells(), 0));
+  const space::H1Space eliminated(square, degrees), kept(square, degrees, space::DirichletDofs::kept);
+  const std::vector<char> none(square.n_cells(), 0);  // numbering only, as on the first rank
+  operators::WholeNumbering whole;
+  whole.space = std::make_unique<space::H1Space>(square, degrees, space::DirichletDofs::eliminated, none);
+  whole.kept = std::make_unique<space::H1Space>(square, degrees, space::DirichletDofs::kept, none);
   const mesh::ContactBoundary contact(square);  // (named: edges() refers into it)
-  for (const auto& edge : contact.edges()) whole.contact_cells.push_back(edge.cell);
-  const std::vector<char> on_contact = [&] {
-    std::vector<char> flags(square.n_cells(), 0);
-    for (int c : whole.contact_cells) flags[c] = 1;
-    return flags;
-  }();
+  std::vector<char> on_contact(square.n_cells(), 0);
+  for (const auto& edge : contact.edges()) whole.contact_cells.push_back(edge.cell), on_contact[edge.cell] = 1;
+  ASSERT_EQ(contact.edges().size(), 12u);  // the bottom's 8 edges and the right side's lower 4
+  std::reverse(whole.contact_cells.begin(), whole.contact_cells.end());
+  whole.contact_cells.insert(whole.contact_cells.end(), whole.contact_cells.begin(), whole.contact_cells.end());
+  std::vector<hpcontact::assembly::Material> materials(square.n_cells());
+  for (int c = 0; c < square.n_cells(); ++c) materials[c].mu = c;
   const int ranks = 3;
   const auto parts = mesh::bisect_cells(square, ranks, std::vector<int>(square.n_cells(), 1));
-  const hpcontact::operators::RankParts cutter(square, whole, parts, ranks, nullptr);
+  const operators::RankParts cutter(square, whole, parts, ranks, &materials);
   std::vector<int> owners(square.n_cells(), 0);
   for (int rank = 0; rank < ranks; ++rank) {
+    const std::string where = "rank " + std::to_string(rank);
     const auto cells = cutter.cells_of(rank);
     int expected = 0;
     for (int c = 0; c < square.n_cells(); ++c) expected += parts[c] == rank || on_contact[c];
-    ASSERT_EQ(static_cast<int>(cells.size()), expected) << "rank " << rank;
-    EXPECT_TRUE(std::adjacent_find(cells.begin(), cells.end(), std::greater_equal<>()) == cells.end());
+    ASSERT_EQ(static_cast<int>(cells.size()), expected) << where;
+    EXPECT_TRUE(std::adjacent_find(cells.begin(), cells.end(), std::greater_equal<>()) == cells.end()) << where;
     for (int c : cells) owners[c] += parts[c] == rank;
-    const auto bytes = cutter.bytes_for(rank);
-    hpcontact::ByteReader in(bytes);
-    const auto part = mesh::Mesh::unpack(in);
-    const auto numbering = space::H1Space::unpack(in, part).with_shapes();
-    ASSERT_EQ(part.n_cells(), expected);
-    for (int c = 0; c < part.n_cells(); ++c) {
-      ASSERT_EQ(part.global_cell(c), cells[c]);
-      const auto mine = numbering.cell_shapes(c), reference = with_shapes.cell_shapes(cells[c]);
-      ASSERT_EQ(mine.size(), reference.size()) << "cell " << cells[c];
-      for (std::size_t k = 0; k < mine.size(); ++k) EXPECT_EQ(mine[k].dof, reference[k].dof) << "cell " << cells[c];
+    const auto part = operators::rank_space_from_bytes(cutter.bytes_for(rank), false, true);
+    ASSERT_EQ(part.part->n_cells(), expected) << where;
+    ASSERT_TRUE(part.kept) << where;
+    const auto kept_part = part.kept->with_shapes();
+    for (int c = 0; c < part.part->n_cells(); ++c) {
+      const int whole_cell = cells[c];
+      ASSERT_EQ(part.part->global_cell(c), whole_cell) << where;
+      EXPECT_EQ(part.cell_parts[c], parts[whole_cell]) << where;
+      EXPECT_EQ(part.materials[c].mu, whole_cell) << where;
+      for (const auto& [mine, reference] : {std::pair{part.space->cell_shapes(c), eliminated.cell_shapes(whole_cell)},
+                                            std::pair{kept_part.cell_shapes(c), kept.cell_shapes(whole_cell)}}) {
+        ASSERT_EQ(mine.size(), reference.size()) << where << ", cell " << whole_cell;
+        for (std::size_t k = 0; k < mine.size(); ++k)
+          EXPECT_EQ(mine[k].dof, reference[k].dof) << where << ", cell " << whole_cell;
+      }
     }
   }
   EXPECT_TRUE(std::all_of(owners.begin(), owners.end(), [](int n) { return n == 1; }));
   std::vector<int> beyond = parts;
   beyond[0] = ranks;  // a cell of a rank outside the split
-  EXPECT_THROW(hpcontact::operators::RankParts(square, whole, beyond, ranks, nullptr), std::logic_error);
+  EXPECT_THROW(operators::RankParts(square, whole, beyond, ranks, nullptr), std::logic_error);
 }
 
 // The sweep's work queue: every value below N goes to exactly one rank, on 1 to 4 ranks; a rank

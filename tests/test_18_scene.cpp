@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <system_error>
+#include <vector>
 
 #include "core/error.hpp"
 #include "io/toml_reader.hpp"
@@ -27,7 +29,8 @@ namespace {
 struct WrittenScenes {
   std::vector<std::filesystem::path> paths;
   ~WrittenScenes() {
-    for (const auto& path : paths) std::filesystem::remove(path);
+    std::error_code ignored;  // (a destructor at exit must not throw)
+    for (const auto& path : paths) std::filesystem::remove(path, ignored);
   }
 };
 

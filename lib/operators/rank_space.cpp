@@ -16,9 +16,9 @@ namespace hpcontact::operators {
 
 RankSpace build_rank_space(const mesh::Mesh* mesh, std::vector<int> cell_degrees, linalg::Distribution distribution,
                            const RollerMasks* rollers, const std::vector<assembly::Material>* materials) {
-  RankSpace out;
   if (!distribution.distributed()) {
     HPC_VERIFY(mesh, "a serial space without a mesh");
+    RankSpace out;
     out.space = std::make_unique<space::H1Space>(*mesh, std::move(cell_degrees));
     if (rollers) out.vector_space = std::make_unique<space::VectorSpace>(*out.space, *rollers);
     return out;
@@ -57,15 +57,7 @@ RankSpace build_rank_space(const mesh::Mesh* mesh, std::vector<int> cell_degrees
   const std::vector<char> bytes =
       bytes_made_by_first_rank_for_each([&](int rank) { return cutter->bytes_for(rank); }, ranks);
   cutter.reset();
-  ByteReader in(bytes);
-  out.part = std::make_unique<mesh::Mesh>(mesh::Mesh::unpack(in));
-  out.space = std::make_unique<space::H1Space>(space::H1Space::unpack(in, *out.part).with_shapes());
-  out.cell_parts = in.get_vector<int>();
-  if (rollers) out.vector_space = std::make_unique<space::VectorSpace>(space::VectorSpace::unpack(in, *out.space));
-  if (in.get<char>()) out.kept = std::make_unique<space::H1Space>(space::H1Space::unpack(in, *out.part));
-  if (materials) out.materials = in.get_vector<assembly::Material>();
-  HPC_VERIFY(in.at_end(), "a rank's part was not read to its end");
-  return out;
+  return rank_space_from_bytes(bytes, rollers != nullptr, materials != nullptr);
 }
 
 WholeMeshFacts::WholeMeshFacts(const mesh::Mesh* mesh, const std::vector<int>& cell_degrees,

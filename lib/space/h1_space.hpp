@@ -71,7 +71,8 @@ class H1Space {
   /// this space's. So a rank can keep the space of its own cells only. Without `with_shapes`, the
   /// numbering alone (no cell held) until with_shapes().
   H1Space restricted_to(const mesh::Mesh& part, bool with_shapes = true) const;
-  /// A space restricted to a part with every cell's shapes (restricted_to without them, later).
+  /// This space with every cell's shapes: a part's numbering (restricted_to without them, or
+  /// unpack) once it has reached its rank, or a numbering-only whole space.
   H1Space with_shapes() const;
   /// The numbering of a space restricted to a part (restricted_to without shapes) as bytes, and
   /// back on that part (sent beside it: mesh::Mesh::pack), so that one rank can number the whole
@@ -124,9 +125,10 @@ class H1Space {
   std::vector<int> cell_degrees_;
   std::vector<int> edge_degrees_;
   std::vector<int> vertex_dofs_, edge_first_dofs_;  ///< see vertex_dof, edge_mode_dof
-  std::vector<int> first_interior_;                 ///< each cell's first interior dof
-  std::vector<LocalShape> shapes_;                  ///< every held cell's shapes, cell after cell
-  std::vector<std::int64_t> first_shape_;           ///< cell c's shapes: [first_shape_[c], first_shape_[c + 1])
+  /// Each cell's first interior dof, kept so that restricted_to costs the part, not the mesh.
+  std::vector<int> first_interior_;
+  std::vector<LocalShape> shapes_;         ///< every held cell's shapes, cell after cell
+  std::vector<std::int64_t> first_shape_;  ///< cell c's shapes: [first_shape_[c], first_shape_[c + 1])
   int n_dofs_ = 0;
   int n_skeleton_dofs_ = 0;
   int max_degree_ = 1;
