@@ -3,9 +3,13 @@
 // process. Usage: rank_parts_timing N P...; one line per P: the seconds and the bytes of all parts.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
+#include <memory>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "mesh/cell_partition.hpp"
 #include "mesh/contact_boundary.hpp"
@@ -14,12 +18,32 @@
 
 using namespace hpcontact;
 
+namespace {
+
+void time_cutting(int n, const std::vector<int>& rank_counts);
+
+}  // namespace
+
 int main(int argc, char** argv) {
-  if (argc < 3) {
-    fmt::print(stderr, "usage: rank_parts_timing N P...\n");
+  try {
+    if (argc < 3) throw std::invalid_argument("too few arguments");
+    std::vector<int> rank_counts;
+    for (int a = 2; a < argc; ++a) rank_counts.push_back(std::stoi(argv[a]));
+    const int n = std::stoi(argv[1]);
+    if (n < 1 || *std::min_element(rank_counts.begin(), rank_counts.end()) < 1)
+      throw std::invalid_argument("N and every P must be >= 1");
+    time_cutting(n, rank_counts);
+  } catch (const std::exception& error) {
+    fmt::print(stderr, "rank_parts_timing: {}\nusage: rank_parts_timing N P... (integers >= 1)\n", error.what());
     return 2;
   }
-  const mesh::Mesh square = mesh::make_paper_square_mesh(std::stoi(argv[1]));
+  return EXIT_SUCCESS;
+}
+
+namespace {
+
+void time_cutting(int n, const std::vector<int>& rank_counts) {
+  const mesh::Mesh square = mesh::make_paper_square_mesh(n);
   operators::WholeNumbering whole;
   const std::vector<int> degrees(square.n_cells(), 4);
   const std::vector<char> none(square.n_cells(), 0);  // numbering only, as on the first rank
@@ -27,8 +51,7 @@ int main(int argc, char** argv) {
   whole.kept = std::make_unique<space::H1Space>(square, degrees, space::DirichletDofs::kept, none);
   const mesh::ContactBoundary contact(square);  // (named: edges() refers into it)
   for (const auto& edge : contact.edges()) whole.contact_cells.push_back(edge.cell);
-  for (int a = 2; a < argc; ++a) {
-    const int ranks = std::stoi(argv[a]);
+  for (int ranks : rank_counts) {
     const auto parts = mesh::bisect_cells(square, ranks, std::vector<int>(square.n_cells(), 1));
     const auto start = std::chrono::steady_clock::now();
     const operators::RankParts cutter(square, whole, parts, ranks, nullptr);
@@ -37,5 +60,6 @@ int main(int argc, char** argv) {
     const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
     fmt::print("cells {} ranks {} seconds {:.3f} MB {:.1f}\n", square.n_cells(), ranks, seconds.count(), bytes / 1e6);
   }
-  return EXIT_SUCCESS;
 }
+
+}  // namespace
