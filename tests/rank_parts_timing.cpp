@@ -12,7 +12,6 @@
 #include <vector>
 
 #include "mesh/cell_partition.hpp"
-#include "mesh/contact_boundary.hpp"
 #include "mesh/rectangle_mesh.hpp"
 #include "operators/rank_parts.hpp"
 
@@ -44,13 +43,8 @@ namespace {
 
 void time_cutting(int n, const std::vector<int>& rank_counts) {
   const mesh::Mesh square = mesh::make_paper_square_mesh(n);
-  operators::WholeNumbering whole;
-  const std::vector<int> degrees(square.n_cells(), 4);
-  const std::vector<char> none(square.n_cells(), 0);  // numbering only, as on the first rank
-  whole.space = std::make_unique<space::H1Space>(square, degrees, space::DirichletDofs::eliminated, none);
-  whole.kept = std::make_unique<space::H1Space>(square, degrees, space::DirichletDofs::kept, none);
-  const mesh::ContactBoundary contact(square);  // (named: edges() refers into it)
-  for (const auto& edge : contact.edges()) whole.contact_cells.push_back(edge.cell);
+  const operators::WholeNumbering whole =
+      operators::number_whole_space(square, std::vector<int>(square.n_cells(), 4), nullptr);
   for (int ranks : rank_counts) {
     const auto parts = mesh::bisect_cells(square, ranks, std::vector<int>(square.n_cells(), 1));
     const auto start = std::chrono::steady_clock::now();

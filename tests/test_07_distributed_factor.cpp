@@ -217,16 +217,14 @@ TEST(DistributedFactor, RankPartsHoldEachRanksOwnCellsAndGammaCsWithTheirDofs) {
   std::vector<int> degrees(square.n_cells());
   for (int c = 0; c < square.n_cells(); ++c) degrees[c] = 1 + c % 4;  // interiors of 0, 1, 4 and 9 modes
   const space::H1Space eliminated(square, degrees), kept(square, degrees, space::DirichletDofs::kept);
-  const std::vector<char> none(square.n_cells(), 0);  // numbering only, as on the first rank
-  operators::WholeNumbering whole;
-  whole.space = std::make_unique<space::H1Space>(square, degrees, space::DirichletDofs::eliminated, none);
-  whole.kept = std::make_unique<space::H1Space>(square, degrees, space::DirichletDofs::kept, none);
-  const mesh::ContactBoundary contact(square);  // (named: edges() refers into it)
+  operators::WholeNumbering whole = operators::number_whole_space(square, degrees, nullptr);
+  ASSERT_TRUE(whole.kept);
+  ASSERT_EQ(whole.contact_cells.size(), 12u);  // the bottom's 8 edges and the right side's lower 4
   std::vector<char> on_contact(square.n_cells(), 0);
-  for (const auto& edge : contact.edges()) whole.contact_cells.push_back(edge.cell), on_contact[edge.cell] = 1;
-  ASSERT_EQ(contact.edges().size(), 12u);  // the bottom's 8 edges and the right side's lower 4
-  std::reverse(whole.contact_cells.begin(), whole.contact_cells.end());
-  whole.contact_cells.insert(whole.contact_cells.end(), whole.contact_cells.begin(), whole.contact_cells.end());
+  for (int c : whole.contact_cells) on_contact[c] = 1;
+  const std::vector<int> reversed(whole.contact_cells.rbegin(), whole.contact_cells.rend());
+  whole.contact_cells = reversed;  // unsorted, and each twice
+  whole.contact_cells.insert(whole.contact_cells.end(), reversed.begin(), reversed.end());
   std::vector<hpcontact::assembly::Material> materials(square.n_cells());
   for (int c = 0; c < square.n_cells(); ++c) materials[c].mu = c;
   const int ranks = 3;

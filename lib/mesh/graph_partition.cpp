@@ -6,8 +6,8 @@
 #include <mpi.h>
 #include <petscmat.h>
 
-#include <cstdio>
-#include <limits>  // ptscotch.h needs FILE (and MPI) declared first
+#include <cstdio>  // ptscotch.h needs FILE (and MPI) declared first
+#include <limits>
 // (the reset below reaches the generator PT-Scotch runs on because libptscotch, linked here, and
 // the copy PETSc loads are one library in the process)
 #include <ptscotch.h>

@@ -6,8 +6,22 @@
 
 #include "core/byte_buffer.hpp"
 #include "core/error.hpp"
+#include "mesh/contact_boundary.hpp"
 
 namespace hpcontact::operators {
+
+WholeNumbering number_whole_space(const mesh::Mesh& mesh, std::vector<int> cell_degrees, const RollerMasks* rollers) {
+  WholeNumbering whole;
+  const std::vector<char> none(mesh.n_cells(), 0);  // holding no cell, the numbering still counts every shape
+  whole.space = std::make_unique<space::H1Space>(mesh, cell_degrees, space::DirichletDofs::eliminated, none);
+  // The rollers' unknowns are numbered from the whole mesh's roller edges (boundary-sized).
+  if (rollers) whole.vector_space = std::make_unique<space::VectorSpace>(*whole.space, *rollers);
+  if (mesh.has_part(mesh::BoundaryPart::dirichlet))
+    whole.kept = std::make_unique<space::H1Space>(mesh, std::move(cell_degrees), space::DirichletDofs::kept, none);
+  const mesh::ContactBoundary contact(mesh);
+  for (const auto& edge : contact.edges()) whole.contact_cells.push_back(edge.cell);
+  return whole;
+}
 
 RankParts::RankParts(const mesh::Mesh& mesh, const WholeNumbering& whole, const std::vector<int>& parts, int ranks,
                      const std::vector<assembly::Material>* materials)

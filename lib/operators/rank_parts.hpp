@@ -20,6 +20,11 @@ struct WholeNumbering {
   std::vector<int> contact_cells;                    // held by every rank (any order, repeats allowed)
 };
 
+/// The first rank's numberings of the whole space on `mesh` (numbering only: no cell's shapes),
+/// with Γ_D's dofs kept too where Γ_D exists and the rollers' unknowns where `rollers` is given.
+/// @throws InputError on a degree < 1.
+WholeNumbering number_whole_space(const mesh::Mesh& mesh, std::vector<int> cell_degrees, const RollerMasks* rollers);
+
 class RankParts {
  public:
   /// `parts`: the rank of each cell of `mesh` (all in [0, ranks)); `materials`: one per cell, or

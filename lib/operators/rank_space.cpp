@@ -9,7 +9,6 @@
 #include "core/petsc_session.hpp"
 #include "core/rank_agreement.hpp"
 #include "mesh/cell_partition.hpp"
-#include "mesh/contact_boundary.hpp"
 #include "operators/rank_parts.hpp"
 
 namespace hpcontact::operators {
@@ -33,17 +32,9 @@ RankSpace build_rank_space(const mesh::Mesh* mesh, std::vector<int> cell_degrees
       [&] {
         if (!first) return;
         HPC_VERIFY(mesh, "the first rank of a distributed run holds the whole mesh");
-        const std::vector<char> none(mesh->n_cells(), 0);
-        whole.space = std::make_unique<space::H1Space>(*mesh, cell_degrees, space::DirichletDofs::eliminated, none);
+        whole = number_whole_space(*mesh, std::move(cell_degrees), rollers);
         const int components = rollers ? space::kComponents : 1;
         for (int c = 0; c < mesh->n_cells(); ++c) weights.push_back(components * whole.space->shape_count(c));
-        // The rollers' unknowns are numbered from the whole mesh's roller edges (boundary-sized).
-        if (rollers) whole.vector_space = std::make_unique<space::VectorSpace>(*whole.space, *rollers);
-        if (mesh->has_part(mesh::BoundaryPart::dirichlet))
-          whole.kept =
-              std::make_unique<space::H1Space>(*mesh, std::move(cell_degrees), space::DirichletDofs::kept, none);
-        const mesh::ContactBoundary contact(*mesh);
-        for (const auto& edge : contact.edges()) whole.contact_cells.push_back(edge.cell);
       },
       ranks);
   const std::vector<int> parts = mesh::split_cells_on_first_rank(mesh, weights, ranks);
