@@ -15,7 +15,7 @@
 #include "assembly/elastic_system.hpp"
 #include "cli_runner.hpp"
 #include "contact/elastic_contact.hpp"
-#include "driver/elastic_run.hpp"
+#include "driver/elastic_scene.hpp"
 #include "elastic_manufactured.hpp"
 #include "infsup/infsup_analysis.hpp"
 #include "mesh/boundary_mesh.hpp"

@@ -310,9 +310,9 @@ TEST(CurvedScenes, SignoriniOnACurvedContactEdgeMeetsKkt) {
       scene::read_scene(kCurved + "annulus.toml", {{"run.effects", std::vector<std::string>{"signorini"}, "test"}});
   driver::SceneRunOptions options;
   options.out = dir;
-  const auto summary = driver::run_scene(scene, options);
-  EXPECT_LT(summary["signorini"]["solver"]["kkt_residual"].get<double>(), 1e-12);
-  const double contact_length = summary["signorini"]["contact_set_length"].get<double>();
+  const driver::RunResult summary = driver::run_scene(scene, options);
+  EXPECT_LT(summary.contact("signorini").solver.kkt_residual, 1e-12);
+  const double contact_length = summary.contact("signorini").contact_set_length;
   EXPECT_GT(contact_length, 0.5);
   EXPECT_LT(contact_length, 2.5);
   // The samples lie on the outer arc. u ≥ g holds in the mean against the multipliers (and at the

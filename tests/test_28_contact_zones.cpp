@@ -31,7 +31,7 @@ namespace {
 
 const std::string kZones = std::string(HPCONTACT_SOURCE_DIR) + "/studies/zones/";
 
-nlohmann::json run(const std::string& scene_file, const std::vector<scene::SceneOverride>& overrides,
+driver::RunResult run(const std::string& scene_file, const std::vector<scene::SceneOverride>& overrides,
                    const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() / ("hpcontact_zones_" + name);
   std::filesystem::remove_all(dir);
@@ -122,29 +122,29 @@ TEST(ContactZones, TwoZonesAreTwiceTheHalfProblem) {
   // two_zones.toml is even in y; half.toml is its lower half with the symmetry plane free.
   const auto whole = run("two_zones.toml", {}, "two");
   const auto half = run("half.toml", {}, "half");
-  EXPECT_NEAR(whole["signorini"]["energy"].get<double>(), 2 * half["signorini"]["energy"].get<double>(), 1e-13);
-  EXPECT_LT(whole["signorini"]["solver"]["kkt_residual"].get<double>(), 1e-12);
-  const auto& zones = whole["signorini"]["zones"];
+  EXPECT_NEAR(whole.contact("signorini").energy, 2 * half.contact("signorini").energy, 1e-13);
+  EXPECT_LT(whole.contact("signorini").solver.kkt_residual, 1e-12);
+  const auto& zones = whole.contact("signorini").zones;
   ASSERT_EQ(zones.size(), 2u);
-  EXPECT_NEAR(zones[0]["contact_set_length"].get<double>(), zones[1]["contact_set_length"].get<double>(), 1e-12);
-  EXPECT_NEAR(zones[0]["contact_set_length"].get<double>(), half["signorini"]["contact_set_length"].get<double>(),
+  EXPECT_NEAR(zones[0].contact_set_length, zones[1].contact_set_length, 1e-12);
+  EXPECT_NEAR(zones[0].contact_set_length, half.contact("signorini").contact_set_length,
               1e-12);
   // α of each zone's multipliers alone: equal by symmetry, and at least α of the whole (a
   // smaller multiplier space); the zones couple through Ω, so the whole's α is below both.
-  const double alpha = whole["infsup"]["alpha"].get<double>();
-  const auto& zone_alpha = whole["infsup"]["zone_alpha"];
+  const double alpha = whole.infsup->alpha;
+  const auto& zone_alpha = whole.infsup->zone_alpha;
   ASSERT_EQ(zone_alpha.size(), 2u);
-  EXPECT_NEAR(zone_alpha[0].get<double>(), zone_alpha[1].get<double>(), 1e-10);
+  EXPECT_NEAR(zone_alpha[0], zone_alpha[1], 1e-10);
   EXPECT_GT(alpha, 0.1);
-  EXPECT_LT(alpha, zone_alpha[0].get<double>() - 1e-4);
-  EXPECT_FALSE(half["infsup"].contains("zone_alpha"));
+  EXPECT_LT(alpha, zone_alpha[0] - 1e-4);
+  EXPECT_TRUE(half.infsup->zone_alpha.empty());
   // Independently: the same body with only the bottom edge as Γ_C (the top free) has the bottom
   // zone's α, since the primal space and the bottom multipliers are the same.
   const auto bottom = run("two_zones.toml",
                           {{"boundary.contact", std::string("abs(y + 1) < 1e-9"), "test"},
                            {"run.effects", std::vector<std::string>{"infsup"}, "test"}},
                           "bottom");
-  EXPECT_NEAR(bottom["infsup"]["alpha"].get<double>(), zone_alpha[0].get<double>(), 1e-9);
+  EXPECT_NEAR(bottom.infsup->alpha, zone_alpha[0], 1e-9);
   // The boundary samples carry their zone.
   std::ifstream in(std::filesystem::temp_directory_path() / "hpcontact_zones_two" / "boundary_signorini.csv");
   std::string line;
@@ -171,11 +171,11 @@ TEST(ContactZones, ClosedCurveAroundAPinMeetsKkt) {
     EXPECT_LT((n + contact.point_at(s) / 0.5).norm(), 1e-12) << "the normal points into the hole";
   }
   const auto summary = run("pin.toml", {{"run.effects", std::vector<std::string>{"signorini"}, "test"}}, "pin");
-  EXPECT_LT(summary["signorini"]["solver"]["kkt_residual"].get<double>(), 1e-12);
-  const double contact_length = summary["signorini"]["contact_set_length"].get<double>();
+  EXPECT_LT(summary.contact("signorini").solver.kkt_residual, 1e-12);
+  const double contact_length = summary.contact("signorini").contact_set_length;
   EXPECT_GT(contact_length, 0.3);
   EXPECT_LT(contact_length, 0.8 * std::numbers::pi);
-  EXPECT_TRUE(summary["signorini"]["zones"][0]["closed"].get<bool>());
+  EXPECT_TRUE(summary.contact("signorini").zones[0].closed);
   // The interpolation norm is refused with the way out; the scene's extension norm gives α.
   try {
     run("pin.toml", {{"infsup.norm", std::string("interp"), "test"}}, "pin_interp");
@@ -200,12 +200,12 @@ TEST(ContactZones, EachZoneItsOwnContactMeshDegreeAndConstraintPoints) {
   auto explicit_overrides = per_zone;
   explicit_overrides[0] = {"contact_mesh.breakpoints", breakpoints, "test"};
   const auto given = run("two_zones.toml", explicit_overrides, "breakpoints");
-  const auto& signorini = lists["signorini"];
-  EXPECT_NEAR(signorini["energy"].get<double>(), given["signorini"]["energy"].get<double>(), 1e-14);
-  EXPECT_LT(signorini["solver"]["kkt_residual"].get<double>(), 1e-12);
-  EXPECT_EQ(signorini["nmult"].get<int>(), 4 * 2 + 8 * 4);
-  EXPECT_EQ(signorini["constraint_points_per_segment"]["total"].get<int>(), 4 * 2 + 8 * 5);
-  EXPECT_EQ(signorini["constraint_points_per_segment"]["max"].get<int>(), 5);
+  const auto& signorini = lists.contact("signorini");
+  EXPECT_NEAR(signorini.energy, given.contact("signorini").energy, 1e-14);
+  EXPECT_LT(signorini.solver.kkt_residual, 1e-12);
+  EXPECT_EQ(signorini.nmult, 4 * 2 + 8 * 4);
+  EXPECT_EQ(signorini.constraint_points->total, 4 * 2 + 8 * 5);
+  EXPECT_EQ(signorini.constraint_points->max, 5);
 
   auto expect_refused = [&](const std::vector<scene::SceneOverride>& overrides, const std::string& key,
                             const std::string& rule) {

@@ -277,9 +277,9 @@ TEST(TriangleScenes, SignoriniOnAGmshTriangleMeshHasTheQuadrilateralEnergy) {
                                                 {"discretization.p", static_cast<long long>(p), "test"}});
     driver::SceneRunOptions options;
     options.out = dir;
-    const auto summary = driver::run_scene(scene, options);
-    EXPECT_LT(summary["signorini"]["solver"]["kkt_residual"].get<double>(), 1e-12);
-    return summary["signorini"]["energy"].get<double>();
+    const driver::RunResult summary = driver::run_scene(scene, options);
+    EXPECT_LT(summary.contact("signorini").solver.kkt_residual, 1e-12);
+    return summary.contact("signorini").energy;
   };
   const std::string quadrilaterals = std::string(HPCONTACT_SOURCE_DIR) + "/studies/paper/figure1_signorini.toml";
   double previous_difference = INFINITY;
@@ -370,11 +370,11 @@ TEST(CurvedTriangles, TutorialArchSceneSolvesOnItsArc) {
                                        {{"run.effects", std::vector<std::string>{"signorini"}, "test"}});
   driver::SceneRunOptions options;
   options.out = dir;
-  const auto summary = driver::run_scene(scene, options);
-  EXPECT_LT(summary["signorini"]["solver"]["kkt_residual"].get<double>(), 1e-12);
+  const driver::RunResult summary = driver::run_scene(scene, options);
+  EXPECT_LT(summary.contact("signorini").solver.kkt_residual, 1e-12);
   // The arc through (±1, 0) and (0, -0.3) with centre (0, 91/60): radius 109/60, angle 2 asin(60/109).
   const double arc = 109.0 / 60.0 * 2.0 * std::asin(60.0 / 109.0);
-  const double contact = summary["signorini"]["contact_set_length"].get<double>();
+  const double contact = summary.contact("signorini").contact_set_length;
   EXPECT_GT(contact, 0.2 * arc);
   EXPECT_LT(contact, 0.95 * arc);
 }

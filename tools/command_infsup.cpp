@@ -10,13 +10,10 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/petsc_session.hpp"
-#include "driver/elastic_run.hpp"
-#include "driver/scene_discretization.hpp"
+#include "driver/run_stages.hpp"
 #include "infsup/infsup_analysis.hpp"
 #include "io/atomic_file.hpp"
 #include "linalg/distribution.hpp"
-#include "operators/elastic_operators.hpp"
-#include "operators/primal_operators.hpp"
 #include "postprocess/mode_samples.hpp"
 #include "scene/scene_mesh.hpp"
 #include "scene/scene_reader.hpp"
@@ -64,23 +61,14 @@ int run_infsup(const InfSupOptions& o) {
   // solve the eigenproblem. Under mpirun A_G is factorized over the ranks, and rank 0 reports and
   // writes.
   const int rank = mpi_rank_and_size().first;
-  // An elastic scene pairs the normal (and tangential) multipliers with [S^p(T_h)]².
-  std::unique_ptr<operators::PrimalOperators> primal;
-  std::unique_ptr<operators::ElasticOperators> elastic;
-  const linalg::Distribution distribution = linalg::distribution_over(MPI_COMM_WORLD, distributed_solver);
-  const auto d = driver::discretize_scene(scene, distribution);
-  if (scene.is_elastic())
-    elastic = driver::scene_elastic_operators(scene, d->mesh.get(), d->cell_degrees, nullptr, distribution);
-  else
-    primal = std::make_unique<operators::PrimalOperators>(d->mesh.get(), d->cell_degrees, nullptr, distribution);
-  // Distributed, the operators hold the rank's part: the whole mesh is kept only for the extension
-  // norm's references, which refine it.
-  if (scene.norm != infsup::GramNorm::extension)
-    driver::release_whole_mesh(*d, elastic ? elastic->mesh() : primal->mesh());
-  const auto setup = elastic ? driver::infsup_setup_of(scene, d->mesh.get(), d->cell_degrees, *d->boundary_mesh,
-                                                       d->segment_degrees, *elastic)
-                             : driver::infsup_setup_of(scene, d->mesh.get(), d->cell_degrees, *d->boundary_mesh,
-                                                       d->segment_degrees, *primal);
+  // The run's own stages: an elastic scene pairs the normal (and tangential) multipliers with
+  // [S^p(T_h)]². Distributed, the operators hold the rank's part: the whole mesh is kept only for
+  // the extension norm's references, which refine it.
+  const driver::StageContext context{linalg::distribution_over(MPI_COMM_WORLD, distributed_solver), {}};
+  const auto level = driver::discretize(scene, context);
+  driver::build_operators(*level, nullptr, context, scene.norm == infsup::GramNorm::extension);
+  const auto& d = level->d;
+  const auto setup = level->model->infsup_setup();
   const auto result = infsup::analyse_infsup(setup, backend);
   if (rank != 0) return 0;
 

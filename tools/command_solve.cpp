@@ -5,6 +5,7 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <optional>
 
@@ -29,21 +30,32 @@ struct SolveOptions {
 };
 
 // " (zones 0.4500 + 0.5000)" when Γ_C has several zones: each zone's contact set length.
-std::string zone_lengths(const nlohmann::json& result) {
-  if (!result.contains("zones") || result["zones"].size() < 2) return "";
+std::string zone_lengths(const driver::ContactResult& result) {
+  if (result.zones.size() < 2) return "";
   std::vector<std::string> lengths;
-  for (const auto& zone : result["zones"])
-    lengths.push_back(fmt::format("{:.4f}", zone["contact_set_length"].get<double>()));
+  for (const auto& zone : result.zones) lengths.push_back(fmt::format("{:.4f}", zone.contact_set_length));
   return fmt::format(" (zones {})", fmt::join(lengths, " + "));
 }
 
 // ", zones alone 0.4800, 0.4800": α of each zone's multipliers when Γ_C has several zones.
-std::string zone_alphas(const nlohmann::json& infsup) {
-  if (!infsup.contains("zone_alpha")) return "";
+std::string zone_alphas(const driver::InfSupSummary& infsup) {
+  if (infsup.zone_alpha.empty()) return "";
   std::vector<std::string> alphas;
-  for (const auto& alpha : infsup["zone_alpha"])
-    alphas.push_back(alpha.is_number() ? fmt::format("{:.10g}", alpha.get<double>()) : "-");
+  for (const double alpha : infsup.zone_alpha)
+    alphas.push_back(std::isfinite(alpha) ? fmt::format("{:.10g}", alpha) : "-");
   return fmt::format(", zones alone {}", fmt::join(alphas, ", "));
+}
+
+// One line per contact problem: its energy, solver and contact set (and the total force of an
+// elastic body).
+void print_contact(const driver::ContactResult& result) {
+  fmt::print("{}: energy = {:.17g}", result.problem, result.energy);
+  if (result.total_force) fmt::print(", total force P = {:.10g}", *result.total_force);
+  fmt::print(", {} {} steps, KKT residual {:.2e}, contact set length {:.4f}{}", result.solver.iterations,
+             result.solver.method, result.solver.kkt_residual, result.contact_set_length, zone_lengths(result));
+  if (!result.fixed_point_changes.empty())
+    fmt::print(", {} fixed-point iterations", result.fixed_point_changes.size());
+  fmt::print("\n");
 }
 
 int run_solve(const SolveOptions& o) {
@@ -75,38 +87,17 @@ int run_solve(const SolveOptions& o) {
                                     if (rank == 0) fmt::print(stderr, "# {}\n", line);
                                   }};
   options.distribution = linalg::distribution_over(MPI_COMM_WORLD, distributed_solver);
-  const auto summary = driver::run_scene(scene, options);
+  const driver::RunResult result = driver::run_scene(scene, options);
   if (rank != 0) return 0;
 
   // 3. One line per effect.
-  for (const auto problem : scene.contact_effects()) {
-    const std::string name = scene::to_string(scene::effect_of(problem));
-    const auto& result = summary[name];
-    fmt::print("{}: energy = {:.17g}, {} {} steps, KKT residual {:.2e}, contact set length {:.4f}{}\n", name,
-               result["energy"].get<double>(), result["solver"]["iterations"].get<int>(),
-               result["solver"]["method"].get<std::string>(), result["solver"]["kkt_residual"].get<double>(),
-               result["contact_set_length"].get<double>(), zone_lengths(result));
-  }
-  for (const auto problem : scene.elastic_effects()) {
-    const std::string name = contact::to_string(problem);
-    const auto& result = summary[name];
-    fmt::print(
-        "{}: energy = {:.17g}, total force P = {:.10g}, {} {} steps, KKT residual {:.2e}, contact set length {:.4f}",
-        name, result["energy"].get<double>(), result["total_force"].get<double>(),
-        result["solver"]["iterations"].get<int>(), result["solver"]["method"].get<std::string>(),
-        result["solver"]["kkt_residual"].get<double>(), result["contact_set_length"].get<double>());
-    fmt::print("{}", zone_lengths(result));
-    if (result.contains("fixed_point"))
-      fmt::print(", {} fixed-point iterations", result["fixed_point"]["iterations"].get<int>());
-    fmt::print("\n");
-  }
-  if (summary.contains("infsup"))
-    fmt::print("infsup: alpha = {:.10g} ({}){}\n", summary["infsup"]["alpha"].get<double>(),
-               summary["infsup"]["lambda_unique"].get<bool>() ? "lambda unique" : "singular: lambda not unique",
-               zone_alphas(summary["infsup"]));
-  fmt::print("# p {} pC {} m {} ndofs {}: wrote {} in {:.2f} s on {} rank{}\n", summary["p"].get<std::string>(),
-             summary["pC"].get<std::string>(), summary["m"].get<int>(), summary["ndofs"].get<int>(), o.out,
-             summary["seconds_total"].get<double>(), ranks, ranks > 1 ? "s" : "");
+  for (const auto& contact : result.contacts) print_contact(contact);
+  if (result.infsup)
+    fmt::print("infsup: alpha = {:.10g} ({}){}\n", result.infsup->alpha,
+               result.infsup->lambda_unique ? "lambda unique" : "singular: lambda not unique",
+               zone_alphas(*result.infsup));
+  fmt::print("# p {} pC {} m {} ndofs {}: wrote {} in {:.2f} s on {} rank{}\n", result.p, result.pc, result.m,
+             result.n_dofs, o.out, result.seconds_total, ranks, ranks > 1 ? "s" : "");
   return 0;
 }
 

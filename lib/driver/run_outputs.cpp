@@ -13,6 +13,8 @@
 #include "core/rank_agreement.hpp"
 #include "io/atomic_file.hpp"
 #include "io/output_folder.hpp"
+#include "io/vtk_xml_document.hpp"
+#include "io/vtp_writer.hpp"
 #include "io/vtu_writer.hpp"
 
 namespace hpcontact::driver {
@@ -92,6 +94,24 @@ void write_run_outputs(const std::filesystem::path& out, const linalg::Distribut
         folder->commit();
       },
       ranks);
+}
+
+std::string level_file_name(const std::string& problem, int level) {
+  return fmt::format("solution_{}_level{}", problem, level);
+}
+
+OutputText level_collection(const std::string& problem, int finest, bool distributed) {
+  std::vector<io::PvdEntry> entries;
+  for (int k = 0; k <= finest; ++k)
+    entries.push_back({static_cast<double>(k), solution_file_name(level_file_name(problem, k), distributed)});
+  return {"solution_" + problem + ".pvd", io::pvd_text(entries)};
+}
+
+void write_sample_files(const scene::Scene& scene, const std::filesystem::path& folder, const std::string& name,
+                        const io::CsvTable& samples) {
+  if (scene.wants_output(scene::Output::boundary)) samples.write(folder / ("boundary_" + name + ".csv"));
+  if (scene.wants_output(scene::Output::vtu))
+    io::write_file_atomically(folder / ("contact_" + name + ".vtp"), io::polyline_vtp_text(samples));
 }
 
 }  // namespace hpcontact::driver

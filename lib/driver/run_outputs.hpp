@@ -10,7 +10,9 @@
 #include <utility>
 #include <vector>
 
+#include "io/csv_writer.hpp"
 #include "linalg/distribution.hpp"
+#include "scene/scene.hpp"
 
 namespace hpcontact::driver {
 
@@ -39,5 +41,21 @@ std::string solution_file_name(const std::string& name, bool distributed);
 void write_run_outputs(const std::filesystem::path& out, const linalg::Distribution& distribution,
                        const std::vector<SolutionFile>& solutions,
                        const std::function<void(const std::filesystem::path& folder)>& write_rest);
+
+/// A file of the output folder made before the folder is written: its name and content.
+struct OutputText {
+  std::string name, text;
+};
+
+/// The solution file of level k of the convergence effect: solution_<problem>_level<k> (.vtu, or
+/// .pvtu when distributed: solution_file_name).
+std::string level_file_name(const std::string& problem, int level);
+/// solution_<problem>.pvd: the levels 0 … `finest` of a problem with the level as ParaView's time.
+OutputText level_collection(const std::string& problem, int finest, bool distributed);
+
+/// A contact problem's sample files into `folder`: boundary_<name>.csv (output "boundary") and
+/// contact_<name>.vtp (output "vtu").
+void write_sample_files(const scene::Scene& scene, const std::filesystem::path& folder, const std::string& name,
+                        const io::CsvTable& samples);
 
 }  // namespace hpcontact::driver

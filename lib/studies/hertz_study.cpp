@@ -10,7 +10,7 @@
 #include "core/error.hpp"
 #include "core/expression.hpp"
 #include "core/timer.hpp"
-#include "driver/elastic_run.hpp"
+#include "driver/elastic_scene.hpp"
 #include "io/toml_reader.hpp"
 #include "postprocess/hertz_comparison.hpp"
 #include "space/multiplier_space.hpp"

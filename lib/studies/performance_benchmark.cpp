@@ -16,7 +16,7 @@
 #include "contact/elastic_contact.hpp"
 #include "core/error.hpp"
 #include "core/timer.hpp"
-#include "driver/elastic_run.hpp"
+#include "driver/elastic_scene.hpp"
 #include "driver/scene_discretization.hpp"
 #include "infsup/infsup_analysis.hpp"
 #include "io/toml_reader.hpp"

@@ -16,7 +16,7 @@
 #include "core/rank_agreement.hpp"
 #include "core/rank_groups.hpp"
 #include "core/shared_counter.hpp"
-#include "driver/elastic_run.hpp"
+#include "driver/elastic_scene.hpp"
 #include "driver/scene_discretization.hpp"
 #include "io/atomic_file.hpp"
 #include "io/toml_reader.hpp"

@@ -23,14 +23,14 @@ int main(int argc, char** argv) {
     // 2. Solve and write DIR/summary.json, boundary and VTU files.
     hpcontact::driver::SceneRunOptions options;
     options.out = argv[1];
-    const auto summary = hpcontact::driver::run_scene(scene, options);
+    const hpcontact::driver::RunResult result = hpcontact::driver::run_scene(scene, options);
     // 3. Report.
     std::FILE* file = std::fopen((std::string(argv[1]) + "/scene.toml").c_str(), "w");
     if (!file || std::fputs(hpcontact::scene::paper_scene_text().c_str(), file) < 0 || std::fclose(file) != 0) {
       std::fprintf(stderr, "error: cannot write %s/scene.toml\n", argv[1]);
       return 4;
     }
-    std::printf("friction_s: energy = %.17g\n", summary["friction_s"]["energy"].get<double>());
+    std::printf("friction_s: energy = %.17g\n", result.contact("friction_s").energy);
   } catch (const hpcontact::InputError& error) {
     std::fprintf(stderr, "error: %s\n", error.what());
     return 2;

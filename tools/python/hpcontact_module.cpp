@@ -14,10 +14,12 @@
 #include "core/error.hpp"
 #include "core/petsc_session.hpp"
 #include "driver/scene_run.hpp"
+#include "driver/summary_json.hpp"
 #include "scene/scene_keys.hpp"
 #include "scene/scene_reader.hpp"
 #include "studies/stability_sweep.hpp"
 #include "studies/sweep_verdicts.hpp"
+#include "run_result_bindings.hpp"
 
 namespace py = pybind11;
 using namespace hpcontact;
@@ -145,25 +147,11 @@ py::dict columns_of(const io::CsvTable& table) {
   return out;
 }
 
-py::object json_to_python(const nlohmann::json& value) {
-  return py::module_::import("json").attr("loads")(value.dump());
-}
+// summary.json's text as a dict (the one JSON writer: driver::summary_json).
+py::object json_to_python(const std::string& text) { return py::module_::import("json").attr("loads")(text); }
 
-}  // namespace
-
-PYBIND11_MODULE(_hpcontact, m) {
-  m.doc() = "hpcontact: higher-order mixed FEM for contact problems and their inf-sup stability (compiled part)";
-  static py::exception<InputError> input_error(m, "InputError", PyExc_ValueError);
-  py::register_exception_translator([](std::exception_ptr error) {
-    try {
-      if (error) std::rethrow_exception(error);
-    } catch (const InputError& e) {
-      PyErr_SetString(input_error.ptr(), e.what());
-    }
-  });
-  session() = std::make_unique<PetscSession>(std::vector<std::string>{"hpcontact-python"}, false);
-  py::module_::import("atexit").attr("register")(py::cpp_function([] { session().reset(); }));
-
+// Scenes: the checked Scene, from a file or a dict of tables, with overrides.
+void bind_scenes(py::module_& m) {
   py::class_<scene::Scene>(m, "Scene", "A checked scene (read_scene, scene_from_dict)")
       .def_property_readonly("file", [](const scene::Scene& s) { return s.file; })
       .def_property_readonly("effects",
@@ -189,6 +177,25 @@ PYBIND11_MODULE(_hpcontact, m) {
       },
       py::arg("tables"), py::arg("path"), py::arg("overrides") = py::dict(),
       "The scene of a dict of tables ({'domain': {...}, ...}); `path` names it and anchors relative mesh files");
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_hpcontact, m) {
+  m.doc() = "hpcontact: higher-order mixed FEM for contact problems and their inf-sup stability (compiled part)";
+  static py::exception<InputError> input_error(m, "InputError", PyExc_ValueError);
+  py::register_exception_translator([](std::exception_ptr error) {
+    try {
+      if (error) std::rethrow_exception(error);
+    } catch (const InputError& e) {
+      PyErr_SetString(input_error.ptr(), e.what());
+    }
+  });
+  python::bind_run_result(m);
+  session() = std::make_unique<PetscSession>(std::vector<std::string>{"hpcontact-python"}, false);
+  py::module_::import("atexit").attr("register")(py::cpp_function([] { session().reset(); }));
+
+  bind_scenes(m);
   m.def(
       "run_scene",
       [](const scene::Scene& scene, const std::string& out) {
@@ -197,17 +204,19 @@ PYBIND11_MODULE(_hpcontact, m) {
         options.out = out;
         options.write_files = !out.empty();
         options.tables = &tables;
-        nlohmann::json summary;
+        driver::RunResult result;
         {
           py::gil_scoped_release release;
-          summary = driver::run_scene(scene, options);
+          result = driver::run_scene(scene, options);
         }
         py::dict arrays;
         for (const auto& [name, table] : tables) arrays[py::str(name)] = columns_of(table);
-        return py::make_tuple(json_to_python(summary), arrays);
+        const auto summary = json_to_python(driver::summary_json(result));
+        return py::make_tuple(std::move(result), summary, arrays);
       },
       py::arg("scene"), py::arg("out") = "",
-      "Runs the scene's effects: (summary dict, {table name: {column: array}}); writes files into `out` if given");
+      "Runs the scene's effects: (RunResult, summary dict, {table name: {column: array}}); writes files into "
+      "`out` if given");
   m.def(
       "run_sweep",
       [](const std::string& study, const std::filesystem::path& out) {

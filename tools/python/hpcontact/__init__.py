@@ -7,7 +7,8 @@ with dotted-key overrides::
 
     import hpcontact
     result = hpcontact.solve("studies/paper/figure1_signorini.toml", {"discretization.p": 4})
-    result.summary["signorini"]["energy"]          # the summary.json of a run, as a dict
+    result.run.contact("signorini").energy         # the typed result (RunResult)
+    result.summary["signorini"]["energy"]          # the same as summary.json's dict
     b = result.boundary["signorini"]               # numpy arrays along Γ_C
     b["s_arc"], b["u"], b["obstacle"], b["lambda"]
     hpcontact.infsup("studies/paper/figure1_signorini.toml").alpha
@@ -79,8 +80,8 @@ def solve(source, overrides=None, effects=None, out=None, path=None):
     if effects is not None:
         overrides["run.effects"] = list(effects)
     checked = scene(source, overrides, path)
-    summary, tables = _hpcontact.run_scene(checked, os.fspath(out) if out is not None else "")
-    return Result(summary, tables)
+    run, summary, tables = _hpcontact.run_scene(checked, os.fspath(out) if out is not None else "")
+    return Result(run, summary, tables)
 
 
 @dataclass
@@ -101,9 +102,8 @@ def infsup(source, overrides=None, path=None):
     overrides["run.effects"] = ["infsup"]
     overrides.setdefault("run.outputs", ["summary", "mode"])
     result = solve(source, overrides, path=path)
-    info = result.summary["infsup"]
-    return InfSup(info["alpha"], info["alpha_error"], info["alpha_converged"], info["lambda_unique"],
-                  result.mode, result.summary)
+    info = result.run.infsup
+    return InfSup(info.alpha, info.alpha_error, info.alpha_converged, info.lambda_unique, result.mode, result.summary)
 
 
 def _read_columns(path):

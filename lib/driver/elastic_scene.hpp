@@ -1,15 +1,13 @@
-// Running a scene of an elastic body: its contact problems (frictionless, Tresca, Coulomb) on one
-// set of operators, and their outputs. run_scene hands elastic scenes to run_elastic_scene.
+// What an elastic scene defines beyond the scalar model: its materials, its operators on T_h and
+// its contact problems (frictionless, Tresca, Coulomb), read from the scene's keys.
 #pragma once
 
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <vector>
 
 #include "assembly/elastic_system.hpp"
 #include "contact/elastic_contact.hpp"
 #include "driver/scene_discretization.hpp"
-#include "driver/scene_run.hpp"
 #include "operators/elastic_operators.hpp"
 
 namespace hpcontact::driver {
@@ -31,15 +29,5 @@ std::unique_ptr<operators::ElasticOperators> scene_elastic_operators(const scene
 contact::ElasticContactSetup elastic_setup_of(const scene::Scene& scene, const SceneDiscretization& d,
                                               contact::ElasticContactProblem problem,
                                               const operators::ElasticOperators& operators);
-
-/// Runs the elastic effects of `scene` and writes into `options.out`:
-///   summary.json              (output "summary") every effect's results, the operators, timings
-///   boundary_<effect>.csv     (output "boundary") x,y,s_arc,u_n,u_t,gap,pressure,traction_t,zone on Γ_C
-///   solution_<effect>.vtu     (output "vtu") the displacement and the von Mises stress, VTK
-///                              Lagrange cells of the largest p (under mpirun a .pvtu naming
-///                              one piece per rank, as run_scene)
-///   contact_<effect>.vtp      (output "vtu") the boundary samples on Γ_C, one polyline per zone
-/// Nothing is written unless every effect succeeded. Returns the summary.
-nlohmann::json run_elastic_scene(const scene::Scene& scene, const SceneRunOptions& options);
 
 }  // namespace hpcontact::driver

@@ -1,0 +1,95 @@
+// The elastic model: its operators, contact problems and results.
+#include "driver/elastic_model.hpp"
+
+#include "assembly/cell_field.hpp"
+#include "core/timer.hpp"
+#include "driver/elastic_scene.hpp"
+#include "io/vtu_writer.hpp"
+#include "postprocess/elastic_boundary_samples.hpp"
+
+namespace hpcontact::driver {
+namespace {
+
+ContactResult elastic_result(const contact::ElasticContactSetup& setup,
+                             const contact::ElasticContactSolution& solution,
+                             const postprocess::ElasticBoundarySamples& samples, double seconds) {
+  ContactResult r;
+  r.problem = contact::to_string(setup.problem);
+  r.energy = solution.energy;
+  r.n_dofs = solution.n_dofs;
+  r.nmult = solution.lambda.size();
+  r.n_trace = solution.n_trace;
+  r.contact_set_length = samples.contact_set_length;
+  r.total_force = samples.total_force;
+  const auto& zones = setup.boundary_mesh->zones();
+  for (std::size_t z = 0; z < zones.size(); ++z)
+    r.zones.push_back({zones[z].end - zones[z].begin, zones[z].closed, samples.zone_contact_set_length[z],
+                       samples.zone_total_force[z]});
+  r.solver = solution.qp;
+  r.seconds = {solution.seconds.assembly, solution.seconds.factorization, solution.seconds.condensation,
+               solution.seconds.qp,       solution.seconds.recovery,      seconds};
+  r.fixed_point_changes = solution.fixed_point_changes;
+  if (setup.problem == contact::ElasticContactProblem::coulomb) r.friction_coefficient = setup.friction_coefficient;
+  return r;
+}
+
+class ElasticModel final : public Model {
+ public:
+  ElasticModel(const scene::Scene& scene, const SceneDiscretization& d, OperatorLog* log,
+               const linalg::Distribution& distribution)
+      : scene_(scene),
+        d_(d),
+        operators_(scene_elastic_operators(scene, d.mesh.get(), d.cell_degrees, log, distribution)) {}
+
+  std::vector<scene::Effect> problems() const override {
+    std::vector<scene::Effect> effects;
+    for (const auto problem : scene_.elastic_effects()) effects.push_back(scene::effect_of(problem));
+    return effects;
+  }
+
+  SolvedProblem solve(scene::Effect effect) const override {
+    Stopwatch clock;
+    const auto setup = elastic_setup_of(scene_, d_, *scene::elastic_problem_of(effect), *operators_);
+    auto solution = std::make_shared<const contact::ElasticContactSolution>(contact::solve_elastic_contact(setup));
+    const double seconds = clock.seconds();
+    auto samples = postprocess::sample_elastic_boundary(setup, *solution);
+    SolvedProblem solved{elastic_result(setup, *solution, samples, seconds), std::move(samples.table),
+                         solution->pressure, io::elastic_vtu_fields(), nullptr};
+    // The displacement u0 + the Dirichlet lift and its von Mises stress, on this rank's cells.
+    solved.solution_text = [this, solution] {
+      return io::elastic_vtu_text(
+          assembly::vector_field(operators_->vector_space(), solution->u, solution->u_rows, solution->lift),
+          operators_->materials());
+    };
+    return solved;
+  }
+
+  infsup::InfSupSetup infsup_setup() const override {
+    return infsup_setup_of(scene_, d_.mesh.get(), d_.cell_degrees, *d_.boundary_mesh, d_.segment_degrees,
+                           *operators_);
+  }
+  const mesh::Mesh& operators_mesh() const override { return operators_->mesh(); }
+  long long n_dofs() const override { return operators_->n_dofs(); }
+  void release_factors() const override { operators_->release_factors(); }
+  // The pressure's error in L²(Γ_C): the data determine it everywhere.
+  std::function<double(double)> multiplier_error_weight(scene::Effect, const SceneDiscretization&) const override {
+    return {};
+  }
+  std::optional<MaterialSummary> material() const override {
+    return MaterialSummary{assembly::to_string(scene_.plane_model), scene_.young, scene_.poisson};
+  }
+
+ private:
+  const scene::Scene& scene_;
+  const SceneDiscretization& d_;
+  const std::unique_ptr<operators::ElasticOperators> operators_;
+};
+
+}  // namespace
+
+std::unique_ptr<Model> make_elastic_model(const scene::Scene& scene, const SceneDiscretization& d, OperatorLog* log,
+                                          const linalg::Distribution& distribution) {
+  return std::make_unique<ElasticModel>(scene, d, log, distribution);
+}
+
+}  // namespace hpcontact::driver

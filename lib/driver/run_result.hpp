@@ -1,0 +1,107 @@
+// What a run of a scene computed, as types: one ContactResult per contact problem, the α of the
+// pairing, the convergence rows, the operators built. summary.json, the printed report, the Python
+// module and library programs all read these fields (summary_json.hpp writes the JSON from them).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "contact/qp_report.hpp"
+#include "core/operator_log.hpp"
+#include "mesh/mesh.hpp"
+
+namespace hpcontact::driver {
+
+/// One zone of Γ_C in a contact result.
+struct ZoneResult {
+  double length = 0.0;              ///< arc length of the zone
+  bool closed = false;              ///< a closed curve
+  double contact_set_length = 0.0;  ///< where the multiplier does not vanish, from the samples
+  std::optional<double> total_force;  ///< elastic: ∫ pressure ds over the zone
+};
+
+/// Constraint points of Remark 3 used per segment of T_{C,H}.
+struct ConstraintPointCount {
+  int min = 0, max = 0;
+  long long total = 0;
+};
+
+/// Wall time of a contact solve's phases (seconds).
+struct ContactSeconds {
+  double assembly = 0.0, factorization = 0.0, condensation = 0.0, contact_qp = 0.0, recovery = 0.0;
+  double total = 0.0;  ///< from the setup to the solution, as the run saw it
+};
+
+/// One contact problem solved on the scene's discretization.
+struct ContactResult {
+  std::string problem;  ///< the effect's name: signorini, friction, friction_s, frictionless, tresca, coulomb
+  double energy = 0.0;  ///< E(u) = ½ a(u, u) − F(u)
+  long long n_dofs = 0, nmult = 0, n_trace = 0;
+  double contact_set_length = 0.0;
+  std::optional<double> total_force;  ///< elastic: P = ∫_{Γ_C} pressure ds
+  std::vector<ZoneResult> zones;
+  std::optional<ConstraintPointCount> constraint_points;  ///< scalar problems
+  contact::QpReport solver;
+  ContactSeconds seconds;
+  std::vector<double> fixed_point_changes;   ///< Coulomb: max |Δλ| / max |λ| per fixed-point iteration
+  std::optional<double> friction_coefficient;  ///< Coulomb
+};
+
+/// The inf-sup constant of the scene's pairing (effect infsup).
+struct InfSupSummary {
+  double alpha = 0.0, alpha_error = 0.0;
+  bool alpha_converged = true;
+  int reference_level = 0;
+  bool lambda_unique = true;  ///< α above round-off: λ is unique
+  std::string problem, norm;  ///< the pairing (11) / (22), the H^{-1/2} realization
+  std::optional<std::string> primal_norm;  ///< elastic: h1 or energy
+  double lambda_min = 0.0, lambda_max = 0.0, pi = 0.0;
+  std::string eigensolver;
+  double residual = 0.0, seconds = 0.0;
+  std::vector<double> zone_alpha;  ///< several zones: α of each zone's multipliers alone
+};
+
+/// One row of convergence.csv: a contact problem on one refinement level.
+struct ConvergenceRow {
+  std::string problem;
+  int level = 0;
+  long long p = 0, pc = 0;  ///< the largest degrees of the level
+  long long n = 0, m = 0, n_dofs = 0, nmult = 0;
+  double energy = 0.0, error_energy = 0.0, error_lambda = 0.0, seconds = 0.0;
+  std::string p_rule, pc_rule;  ///< the degrees as the scene writes them (a number or a rule's text)
+};
+
+/// The material of an elastic scene, as written.
+struct MaterialSummary {
+  std::string model, young, poisson;
+};
+
+/// What the mesh was graded towards ([solve] fit_free_boundary).
+struct FreeBoundarySummary {
+  std::vector<mesh::Point> points;
+  int rounds = 0;
+  double moved = 0.0, seconds = 0.0;
+};
+
+struct RunResult {
+  std::string scene;                 ///< the scene file
+  std::vector<std::string> effects;  ///< as the scene lists them
+  std::string p, pc;                 ///< the degrees as written
+  std::optional<MaterialSummary> material;
+  long long edges_on_contact = 0, m = 0, n_dofs = 0, nmult = 0;
+  std::vector<OperatorRecord> operators;  ///< every operator built, in order
+  std::optional<FreeBoundarySummary> free_boundary;
+  std::vector<ContactResult> contacts;  ///< in the order the problems ran
+  std::optional<InfSupSummary> infsup;
+  int convergence_refinements = 0;
+  std::vector<ConvergenceRow> convergence;  ///< empty without the effect convergence
+  double seconds_total = 0.0;
+  int ranks = 1;
+  std::string distributed_solver;
+
+  /// The result of the contact problem named `problem`. @throws std::out_of_range if it did not run.
+  const ContactResult& contact(const std::string& problem) const;
+};
+
+}  // namespace hpcontact::driver

@@ -1,0 +1,63 @@
+// The stages of a run that work on one level: discretize, build operators, solve, analyse α.
+#include "driver/run_stages.hpp"
+
+#include "infsup/infsup_analysis.hpp"
+#include "postprocess/mode_samples.hpp"
+
+namespace hpcontact::driver {
+
+std::unique_ptr<Level> discretize(const scene::Scene& scene, const StageContext& context) {
+  auto level = std::make_unique<Level>();
+  level->scene = scene;
+  level->d = discretize_scene(level->scene, context.distribution);
+  return level;
+}
+
+void build_operators(Level& level, OperatorLog* log, const StageContext& context, bool keep_whole_mesh) {
+  level.model = build_model(level.scene, *level.d, log, context.distribution);
+  // Distributed, the operators now hold the rank's part: nothing else needs the whole mesh.
+  if (!keep_whole_mesh) release_whole_mesh(*level.d, level.model->operators_mesh());
+}
+
+void solve_contact_problems(Level& level, const StageContext& context, const std::string& where) {
+  for (const auto problem : level.model->problems()) {
+    context.say("solving " + scene::to_string(problem) + where);
+    level.solved.push_back(level.model->solve(problem));
+  }
+}
+
+namespace {
+
+InfSupSummary infsup_summary(const infsup::InfSupResult& alpha, const infsup::InfSupSetup& setup) {
+  InfSupSummary s;
+  s.alpha = alpha.alpha;
+  s.alpha_error = alpha.alpha_error;
+  s.alpha_converged = alpha.alpha_converged;
+  s.reference_level = alpha.reference_level;
+  s.lambda_unique = !alpha.singular;
+  s.problem = infsup::to_string(setup.problem);
+  s.norm = infsup::to_string(setup.norm);
+  if (setup.elastic) s.primal_norm = operators::to_string(setup.primal_norm);
+  s.lambda_min = alpha.lambda_min;
+  s.lambda_max = alpha.lambda_max;
+  s.pi = alpha.pi;
+  s.eigensolver = alpha.method;
+  s.residual = alpha.residual;
+  s.seconds = alpha.seconds;
+  s.zone_alpha = alpha.zone_alpha;
+  return s;
+}
+
+}  // namespace
+
+InfSupSummary analyse_infsup(Level& level, const StageContext& context, std::optional<io::CsvTable>& mode) {
+  context.say("inf-sup constant");
+  const auto setup = level.model->infsup_setup();
+  const auto alpha = infsup::analyse_infsup(setup, infsup::EigenBackend::slepc);
+  if (level.scene.wants_output(scene::Output::mode))
+    mode = postprocess::sample_mode(*level.d->contact, *level.d->multipliers, alpha.mode);
+  release_whole_mesh(*level.d, level.model->operators_mesh());
+  return infsup_summary(alpha, setup);
+}
+
+}  // namespace hpcontact::driver

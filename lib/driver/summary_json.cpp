@@ -1,0 +1,115 @@
+// summary.json written from RunResult.
+#include "driver/summary_json.hpp"
+
+#include <nlohmann/json.hpp>
+
+namespace hpcontact::driver {
+namespace {
+
+using nlohmann::json;
+
+json solver_json(const contact::QpReport& qp) {
+  json j{{"method", qp.method},
+         {"converged", qp.converged},
+         {"kkt_residual", qp.kkt_residual},
+         {"iterations", qp.iterations},
+         {"proximal_steps", qp.proximal_steps}};
+  if (!qp.fallback_reason.empty()) j["fallback_reason"] = qp.fallback_reason;
+  for (const auto& step : qp.log)
+    j["log"].push_back(
+        {{"iteration", step.iteration}, {"active_set_changes", step.active_set_changes}, {"kkt_residual", step.kkt_residual}});
+  return j;
+}
+
+json contact_json(const ContactResult& c) {
+  json j{{"energy", c.energy},
+         {"nmult", c.nmult},
+         {"n_trace", c.n_trace},
+         {"contact_set_length", c.contact_set_length},
+         {"solver", solver_json(c.solver)},
+         {"seconds",
+          {{"assembly", c.seconds.assembly},
+           {"factorization", c.seconds.factorization},
+           {"condensation", c.seconds.condensation},
+           {"contact_qp", c.seconds.contact_qp},
+           {"recovery", c.seconds.recovery},
+           {"total", c.seconds.total}}}};
+  if (c.total_force) j["total_force"] = *c.total_force;
+  j["zones"] = json::array();
+  for (const auto& zone : c.zones) {
+    j["zones"].push_back(
+        {{"length", zone.length}, {"closed", zone.closed}, {"contact_set_length", zone.contact_set_length}});
+    if (zone.total_force) j["zones"].back()["total_force"] = *zone.total_force;
+  }
+  if (c.constraint_points)
+    j["constraint_points_per_segment"] = {
+        {"min", c.constraint_points->min}, {"max", c.constraint_points->max}, {"total", c.constraint_points->total}};
+  if (!c.fixed_point_changes.empty())
+    j["fixed_point"] = {{"iterations", c.fixed_point_changes.size()}, {"changes", c.fixed_point_changes}};
+  if (c.friction_coefficient) j["friction_coefficient"] = *c.friction_coefficient;
+  return j;
+}
+
+json infsup_json(const InfSupSummary& a) {
+  json j{{"alpha", a.alpha},
+         {"alpha_error", a.alpha_error},
+         {"alpha_converged", a.alpha_converged},
+         {"reference_level", a.reference_level},
+         {"lambda_unique", a.lambda_unique},
+         {"problem", a.problem},
+         {"norm", a.norm},
+         {"lambda_min", a.lambda_min},
+         {"lambda_max", a.lambda_max},
+         {"Pi", a.pi},
+         {"eigensolver", a.eigensolver},
+         {"residual", a.residual},
+         {"seconds", a.seconds}};
+  if (a.primal_norm) j["primal_norm"] = *a.primal_norm;
+  if (!a.zone_alpha.empty()) j["zone_alpha"] = a.zone_alpha;
+  return j;
+}
+
+json operators_json(const std::vector<OperatorRecord>& records) {
+  json operators = json::array();
+  for (const auto& record : records) {
+    operators.push_back(
+        {{"name", record.name}, {"rows", record.rows}, {"cols", record.cols}, {"seconds", record.seconds}});
+    if (record.solves > 0)
+      operators.back()["iterations"] = {
+          {"solves", record.solves}, {"total", record.iterations}, {"most", record.most_iterations}};
+  }
+  return operators;
+}
+
+}  // namespace
+
+std::string summary_json(const RunResult& r) {
+  json j{{"scene", r.scene},
+         {"effects", r.effects},
+         {"p", r.p},
+         {"pC", r.pc},
+         {"edges_on_contact", r.edges_on_contact},
+         {"m", r.m},
+         {"ndofs", r.n_dofs},
+         {"nmult", r.nmult},
+         {"operators", operators_json(r.operators)},
+         {"seconds_total", r.seconds_total},
+         {"ranks", r.ranks},
+         {"distributed_solver", r.distributed_solver}};
+  if (r.material) j["material"] = {{"model", r.material->model}, {"E", r.material->young}, {"nu", r.material->poisson}};
+  if (r.free_boundary) {
+    json points = json::array();
+    for (const auto& point : r.free_boundary->points) points.push_back({point.x(), point.y()});
+    j["free_boundary"] = {{"points", points},
+                          {"rounds", r.free_boundary->rounds},
+                          {"moved", r.free_boundary->moved},
+                          {"seconds", r.free_boundary->seconds}};
+  }
+  for (const auto& contact : r.contacts) j[contact.problem] = contact_json(contact);
+  if (r.infsup) j["infsup"] = infsup_json(*r.infsup);
+  if (!r.convergence.empty())
+    j["convergence"] = {{"refinements", r.convergence_refinements}, {"file", "convergence.csv"}};
+  return j.dump(2) + "\n";
+}
+
+}  // namespace hpcontact::driver

@@ -1,0 +1,62 @@
+// Python classes for driver::RunResult, ContactResult, InfSupSummary, ConvergenceRow, QpReport.
+#include "run_result_bindings.hpp"
+
+#include <pybind11/stl.h>
+
+#include "driver/run_result.hpp"
+
+namespace py = pybind11;
+
+namespace hpcontact::python {
+
+void bind_run_result(py::module_& m) {
+  using driver::ContactResult, driver::InfSupSummary, driver::RunResult, driver::ZoneResult;
+  py::class_<contact::QpReport>(m, "SolverReport", "How the contact QP was solved")
+      .def_readonly("method", &contact::QpReport::method)
+      .def_readonly("converged", &contact::QpReport::converged)
+      .def_readonly("kkt_residual", &contact::QpReport::kkt_residual)
+      .def_readonly("iterations", &contact::QpReport::iterations)
+      .def_readonly("proximal_steps", &contact::QpReport::proximal_steps);
+  py::class_<ZoneResult>(m, "ZoneResult", "One zone of Γ_C in a contact result")
+      .def_readonly("length", &ZoneResult::length)
+      .def_readonly("closed", &ZoneResult::closed)
+      .def_readonly("contact_set_length", &ZoneResult::contact_set_length)
+      .def_readonly("total_force", &ZoneResult::total_force);
+  py::class_<ContactResult>(m, "ContactResult", "One contact problem solved")
+      .def_readonly("problem", &ContactResult::problem)
+      .def_readonly("energy", &ContactResult::energy)
+      .def_readonly("n_dofs", &ContactResult::n_dofs)
+      .def_readonly("nmult", &ContactResult::nmult)
+      .def_readonly("contact_set_length", &ContactResult::contact_set_length)
+      .def_readonly("total_force", &ContactResult::total_force)
+      .def_readonly("zones", &ContactResult::zones)
+      .def_readonly("solver", &ContactResult::solver)
+      .def_readonly("fixed_point_changes", &ContactResult::fixed_point_changes)
+      .def("__repr__", [](const ContactResult& c) {
+        return "<hpcontact.ContactResult " + c.problem + " energy=" + std::to_string(c.energy) + ">";
+      });
+  py::class_<InfSupSummary>(m, "InfSupSummary", "The inf-sup constant of the scene's pairing")
+      .def_readonly("alpha", &InfSupSummary::alpha)
+      .def_readonly("alpha_error", &InfSupSummary::alpha_error)
+      .def_readonly("alpha_converged", &InfSupSummary::alpha_converged)
+      .def_readonly("lambda_unique", &InfSupSummary::lambda_unique)
+      .def_readonly("problem", &InfSupSummary::problem)
+      .def_readonly("norm", &InfSupSummary::norm)
+      .def_readonly("pi", &InfSupSummary::pi)
+      .def_readonly("zone_alpha", &InfSupSummary::zone_alpha);
+  py::class_<RunResult>(m, "RunResult", "What a scene run computed")
+      .def_readonly("scene", &RunResult::scene)
+      .def_readonly("effects", &RunResult::effects)
+      .def_readonly("p", &RunResult::p)
+      .def_readonly("pC", &RunResult::pc)
+      .def_readonly("m", &RunResult::m)
+      .def_readonly("n_dofs", &RunResult::n_dofs)
+      .def_readonly("nmult", &RunResult::nmult)
+      .def_readonly("contacts", &RunResult::contacts)
+      .def_readonly("infsup", &RunResult::infsup)
+      .def_readonly("seconds_total", &RunResult::seconds_total)
+      .def("contact", &RunResult::contact, py::arg("problem"), py::return_value_policy::reference_internal,
+           "The result of the contact problem named `problem` (IndexError if it did not run)");
+}
+
+}  // namespace hpcontact::python
