@@ -32,7 +32,7 @@ namespace {
 const std::string kZones = std::string(HPCONTACT_SOURCE_DIR) + "/studies/zones/";
 
 driver::RunResult run(const std::string& scene_file, const std::vector<scene::SceneOverride>& overrides,
-                   const std::string& name) {
+                      const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() / ("hpcontact_zones_" + name);
   std::filesystem::remove_all(dir);
   driver::SceneRunOptions options;
@@ -127,8 +127,7 @@ TEST(ContactZones, TwoZonesAreTwiceTheHalfProblem) {
   const auto& zones = whole.contact("signorini").zones;
   ASSERT_EQ(zones.size(), 2u);
   EXPECT_NEAR(zones[0].contact_set_length, zones[1].contact_set_length, 1e-12);
-  EXPECT_NEAR(zones[0].contact_set_length, half.contact("signorini").contact_set_length,
-              1e-12);
+  EXPECT_NEAR(zones[0].contact_set_length, half.contact("signorini").contact_set_length, 1e-12);
   // α of each zone's multipliers alone: equal by symmetry, and at least α of the whole (a
   // smaller multiplier space); the zones couple through Ω, so the whole's α is below both.
   const double alpha = whole.infsup->alpha;

@@ -53,8 +53,7 @@ void print_contact(const driver::ContactResult& result) {
   if (result.total_force) fmt::print(", total force P = {:.10g}", *result.total_force);
   fmt::print(", {} {} steps, KKT residual {:.2e}, contact set length {:.4f}{}", result.solver.iterations,
              result.solver.method, result.solver.kkt_residual, result.contact_set_length, zone_lengths(result));
-  if (!result.fixed_point_changes.empty())
-    fmt::print(", {} fixed-point iterations", result.fixed_point_changes.size());
+  if (!result.fixed_point_changes.empty()) fmt::print(", {} fixed-point iterations", result.fixed_point_changes.size());
   fmt::print("\n");
 }
 

@@ -46,8 +46,7 @@ std::unique_ptr<Level> refined_level(const Level& base, int k, const StageContex
   return level;
 }
 
-ConvergenceRow convergence_row(const Level& base, const Level& level, int k, std::size_t problem,
-                               const Level& finest) {
+ConvergenceRow convergence_row(const Level& base, const Level& level, int k, std::size_t problem, const Level& finest) {
   const auto& d = *level.d;
   const auto& solved = level.solved[problem];
   const auto& reference = finest.solved[problem];

@@ -10,8 +10,7 @@
 namespace hpcontact::driver {
 namespace {
 
-ContactResult elastic_result(const contact::ElasticContactSetup& setup,
-                             const contact::ElasticContactSolution& solution,
+ContactResult elastic_result(const contact::ElasticContactSetup& setup, const contact::ElasticContactSolution& solution,
                              const postprocess::ElasticBoundarySamples& samples, double seconds) {
   ContactResult r;
   r.problem = contact::to_string(setup.problem);
@@ -65,8 +64,7 @@ class ElasticModel final : public Model {
   }
 
   infsup::InfSupSetup infsup_setup() const override {
-    return infsup_setup_of(scene_, d_.mesh.get(), d_.cell_degrees, *d_.boundary_mesh, d_.segment_degrees,
-                           *operators_);
+    return infsup_setup_of(scene_, d_.mesh.get(), d_.cell_degrees, *d_.boundary_mesh, d_.segment_degrees, *operators_);
   }
   const mesh::Mesh& operators_mesh() const override { return operators_->mesh(); }
   long long n_dofs() const override { return operators_->n_dofs(); }

@@ -15,9 +15,9 @@ namespace hpcontact::driver {
 
 /// One zone of Γ_C in a contact result.
 struct ZoneResult {
-  double length = 0.0;              ///< arc length of the zone
-  bool closed = false;              ///< a closed curve
-  double contact_set_length = 0.0;  ///< where the multiplier does not vanish, from the samples
+  double length = 0.0;                ///< arc length of the zone
+  bool closed = false;                ///< a closed curve
+  double contact_set_length = 0.0;    ///< where the multiplier does not vanish, from the samples
   std::optional<double> total_force;  ///< elastic: ∫ pressure ds over the zone
 };
 
@@ -44,7 +44,7 @@ struct ContactResult {
   std::optional<ConstraintPointCount> constraint_points;  ///< scalar problems
   contact::QpReport solver;
   ContactSeconds seconds;
-  std::vector<double> fixed_point_changes;   ///< Coulomb: max |Δλ| / max |λ| per fixed-point iteration
+  std::vector<double> fixed_point_changes;     ///< Coulomb: max |Δλ| / max |λ| per fixed-point iteration
   std::optional<double> friction_coefficient;  ///< Coulomb
 };
 
@@ -53,8 +53,8 @@ struct InfSupSummary {
   double alpha = 0.0, alpha_error = 0.0;
   bool alpha_converged = true;
   int reference_level = 0;
-  bool lambda_unique = true;  ///< α above round-off: λ is unique
-  std::string problem, norm;  ///< the pairing (11) / (22), the H^{-1/2} realization
+  bool lambda_unique = true;               ///< α above round-off: λ is unique
+  std::string problem, norm;               ///< the pairing (11) / (22), the H^{-1/2} realization
   std::optional<std::string> primal_norm;  ///< elastic: h1 or energy
   double lambda_min = 0.0, lambda_max = 0.0, pi = 0.0;
   std::string eigensolver;

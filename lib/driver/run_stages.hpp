@@ -40,7 +40,7 @@ struct RunFiles {
 struct StageContext {
   linalg::Distribution distribution;
   std::function<void(const std::string&)> progress;  ///< may be empty
-  bool writes_level_files = false;  ///< each convergence level's u as a ParaView file
+  bool writes_level_files = false;                   ///< each convergence level's u as a ParaView file
   void say(const std::string& line) const {
     if (progress) progress(line);
   }

@@ -26,9 +26,9 @@ ContactResult scalar_result(const std::string& name, const contact::ContactSolut
   for (std::size_t z = 0; z < zones.size(); ++z)
     r.zones.push_back({zones[z].end - zones[z].begin, zones[z].closed, samples.zone_contact_set_length[z], {}});
   const auto& q = solution.constraint_points;
-  r.constraint_points = ConstraintPointCount{*std::min_element(q.begin(), q.end()),
-                                             *std::max_element(q.begin(), q.end()),
-                                             static_cast<long long>(solution.constraint_s.size())};
+  r.constraint_points =
+      ConstraintPointCount{*std::min_element(q.begin(), q.end()), *std::max_element(q.begin(), q.end()),
+                           static_cast<long long>(solution.constraint_s.size())};
   r.solver = solution.qp;
   r.seconds = {solution.seconds.assembly, solution.seconds.factorization, solution.seconds.condensation,
                solution.seconds.qp,       solution.seconds.recovery,      seconds};
@@ -57,8 +57,8 @@ class ScalarModel final : public Model {
                          std::move(samples.table), solution->lambda_legendre, io::solution_vtu_fields(), nullptr};
     // u = u0 + the Dirichlet lift on Ω, on this rank's cells.
     solved.solution_text = [this, solution] {
-      return io::solution_vtu_text(assembly::scalar_field(primal_.space(), solution->u, solution->u_rows,
-                                                          solution->lift));
+      return io::solution_vtu_text(
+          assembly::scalar_field(primal_.space(), solution->u, solution->u_rows, solution->lift));
     };
     return solved;
   }

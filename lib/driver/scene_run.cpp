@@ -51,7 +51,8 @@ void hand_over_tables(const Level& base, const RunResult& result, const RunFiles
     for (const auto& solved : base.solved)
       options.tables->insert_or_assign("boundary_" + solved.result.problem, solved.samples);
   if (files.mode) options.tables->insert_or_assign("mode", *files.mode);
-  if (!result.convergence.empty()) options.tables->insert_or_assign("convergence", convergence_table(result.convergence));
+  if (!result.convergence.empty())
+    options.tables->insert_or_assign("convergence", convergence_table(result.convergence));
 }
 
 // 6. The outputs as one set: rank 0 writes all but the pieces of the solutions' ParaView files; a
@@ -60,8 +61,7 @@ void write_outputs(const Level& base, const RunResult& result, RunFiles& files, 
   const auto& scene = base.scene;
   if (scene.wants_output(scene::Output::vtu))
     for (const auto& solved : base.solved)
-      files.solutions.push_back(
-          {"solution_" + solved.result.problem, solved.solution_fields, solved.solution_text});
+      files.solutions.push_back({"solution_" + solved.result.problem, solved.solution_fields, solved.solution_text});
   write_run_outputs(options.out, options.distribution, files.solutions, [&](const std::filesystem::path& out) {
     for (const auto& solved : base.solved) write_sample_files(scene, out, solved.result.problem, solved.samples);
     for (const auto& file : files.texts) io::write_file_atomically(out / file.name, file.text);

@@ -16,8 +16,9 @@ json solver_json(const contact::QpReport& qp) {
          {"proximal_steps", qp.proximal_steps}};
   if (!qp.fallback_reason.empty()) j["fallback_reason"] = qp.fallback_reason;
   for (const auto& step : qp.log)
-    j["log"].push_back(
-        {{"iteration", step.iteration}, {"active_set_changes", step.active_set_changes}, {"kkt_residual", step.kkt_residual}});
+    j["log"].push_back({{"iteration", step.iteration},
+                        {"active_set_changes", step.active_set_changes},
+                        {"kkt_residual", step.kkt_residual}});
   return j;
 }
 

@@ -15,11 +15,11 @@
 #include "core/petsc_session.hpp"
 #include "driver/scene_run.hpp"
 #include "driver/summary_json.hpp"
+#include "run_result_bindings.hpp"
 #include "scene/scene_keys.hpp"
 #include "scene/scene_reader.hpp"
 #include "studies/stability_sweep.hpp"
 #include "studies/sweep_verdicts.hpp"
-#include "run_result_bindings.hpp"
 
 namespace py = pybind11;
 using namespace hpcontact;
