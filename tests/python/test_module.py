@@ -28,6 +28,10 @@ def test_solve_gives_the_command_line_results_as_arrays(tmp_path):
     summary, out = cli_summary(tmp_path, FIGURE1, "--p", "3", "--effects", "signorini")
     assert result.summary["signorini"]["energy"] == summary["signorini"]["energy"]
     assert result.summary["signorini"]["solver"]["kkt_residual"] < 1e-12
+    # The typed result carries the same numbers as fields.
+    typed = result.run.contact("signorini")
+    assert typed.energy == summary["signorini"]["energy"] and typed.solver.kkt_residual < 1e-12
+    assert [c.problem for c in result.run.contacts] == ["signorini"] and result.run.infsup is None
     samples = result.boundary["signorini"]
     assert isinstance(samples["lambda"], np.ndarray) and samples["lambda"].dtype == np.float64
     # The same samples as the CLI's boundary CSV, to the last digit.

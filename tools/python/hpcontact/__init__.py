@@ -48,8 +48,10 @@ def scene(source, overrides=None, path=None):
 
 @dataclass
 class Result:
-    """What a run computed: the summary (summary.json as a dict) and its tables as numpy arrays."""
+    """What a run computed: the typed result (`run`, a RunResult: run.contacts, run.contact(name),
+    run.infsup), the same as summary.json's dict, and its tables as numpy arrays."""
 
+    run: object
     summary: dict
     tables: dict = field(default_factory=dict)
 
