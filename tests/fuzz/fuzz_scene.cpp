@@ -1,6 +1,6 @@
 // libFuzzer target: the scene parser must turn any byte string into a Scene or an InputError.
 // Anything else (another exception, a crash, a sanitizer report, a hang) is a bug; crashers go
-// to tests/fuzz/regressions/, which test_23_fuzz_regressions replays in every test run.
+// to tests/fuzz/regressions/, which fuzz/regressions_test.cpp replays in every test run.
 #include <cstddef>
 #include <cstdint>
 #include <string>

@@ -1,0 +1,202 @@
+// Sweeps: the plan of a stability sweep (its points, groups and the schedule over MPI
+// ranks) is pure and checked here without building a mesh.
+#include "studies/sweep_plan.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <numeric>
+#include <set>
+
+#include "studies/stability_sweep.hpp"
+
+using namespace hpcontact;
+using studies::SweepGroup;
+using studies::SweepPlan;
+
+namespace {
+
+// Two levels of a sweep over p = 1..3, every p_C, two ratios, both norms.
+studies::StabilitySweep two_level_sweep() {
+  studies::StabilitySweep sweep;
+  sweep.levels.resize(2);
+  for (int level = 0; level < 2; ++level) {
+    studies::StabilitySweep::LevelFacts facts;
+    facts.cells = 64 << (2 * level);
+    facts.contact_edges = 8 << level;
+    facts.scene_p = 1;
+    facts.segments = {8 << level, 4 << level};
+    facts.scene_pc = {0, 0};
+    sweep.level_facts.push_back(facts);
+  }
+  sweep.degrees = {1, 2, 3};
+  sweep.multiplier_degrees = {0, 1, 2};
+  sweep.ratios = {scene::Ratio{1.0, "1"}, scene::Ratio{0.5, "1/2"}};
+  sweep.norms = {infsup::GramNorm::interpolation, infsup::GramNorm::extension};
+  sweep.problems = {infsup::PairingProblem::signorini};
+  return sweep;
+}
+
+double load_of(const SweepPlan& plan, int rank) {
+  double load = 0.0;
+  std::set<std::size_t> levels;
+  for (const auto& group : plan.groups)
+    if (group.todo && group.owner == rank) {
+      load += group.cost;
+      levels.insert(group.share);
+    }
+  for (std::size_t level : levels) load += plan.shared_cost[level];
+  return load;
+}
+
+}  // namespace
+
+// Points in alpha.csv order, p_C < p only, distinct keys; groups are the runs of (level, p).
+TEST(SweepPlan, PointsAndGroups) {
+  const auto sweep = two_level_sweep();
+  const auto points = studies::list_sweep_points(sweep);
+  // Per level: p = 1 (p_C 0), p = 2 (0, 1), p = 3 (0, 1, 2): 6 pairs × 2 norms × 2 ratios.
+  ASSERT_EQ(points.size(), 2u * 6 * 2 * 2);
+  std::set<std::string> keys;
+  for (const auto& point : points) {
+    EXPECT_LT(point.reported_pc, point.reported_p);
+    keys.insert(point.key());
+  }
+  EXPECT_EQ(keys.size(), points.size());
+  const auto plan = studies::plan_sweep(sweep, points, {});
+  ASSERT_EQ(plan.groups.size(), 6u);
+  for (const auto& group : plan.groups) {
+    EXPECT_TRUE(group.todo);
+    EXPECT_TRUE(group.extension);
+    for (std::size_t k = group.first; k < group.last; ++k) {
+      EXPECT_EQ(points[k].level, group.level);
+      EXPECT_EQ(points[k].p, points[group.first].p);
+    }
+  }
+  EXPECT_GT(plan.shared_cost[1], plan.shared_cost[0]);
+  // Stored points are not planned again; a group with nothing left is not to do.
+  std::set<std::string> done;
+  for (std::size_t k = plan.groups[0].first; k < plan.groups[0].last; ++k) done.insert(points[k].key());
+  const auto resumed = studies::plan_sweep(sweep, points, done);
+  EXPECT_FALSE(resumed.groups[0].todo);
+  EXPECT_TRUE(resumed.groups[1].todo);
+}
+
+// Split by ratio (several processes): per (level, p) one group per ratio, every point in exactly one
+// group, of its ratio; the shares are (level, ratio), each needing one extension reference (the
+// unsplit share of a level needs two, one per ratio); a stored ratio's group is not to do.
+TEST(SweepPlan, GroupsSplitByRatioShareOneReferenceEach) {
+  const auto sweep = two_level_sweep();
+  const auto points = studies::list_sweep_points(sweep);
+  const auto whole = studies::plan_sweep(sweep, points, {});
+  const auto plan = studies::plan_sweep(sweep, points, {}, true);
+  ASSERT_EQ(plan.groups.size(), 12u);
+  ASSERT_EQ(plan.shared_cost.size(), 4u);
+  std::vector<int> groups_of_point(points.size(), 0);
+  for (const auto& group : plan.groups) {
+    EXPECT_EQ(group.share, group.level * 2 + group.ratio);
+    for (std::size_t k = group.first; k < group.last; ++k)
+      if (group.holds(points[k])) {
+        ++groups_of_point[k];
+        EXPECT_EQ(points[k].ratio, group.ratio);
+        EXPECT_EQ(points[k].level, group.level);
+      }
+  }
+  EXPECT_TRUE(std::ranges::all_of(groups_of_point, [](int n) { return n == 1; }));
+  EXPECT_DOUBLE_EQ(whole.shared_cost[0], 2 * plan.shared_cost[0]);
+  EXPECT_GT(plan.shared_cost[2], plan.shared_cost[0]);
+  // Resuming: the same groups (a slice maps them by index), a stored ratio's group not to do; the
+  // unsplit level still needs the references of every ratio some point to do uses.
+  std::set<std::string> done;
+  for (std::size_t k = plan.groups[1].first; k < plan.groups[1].last; ++k)
+    if (plan.groups[1].holds(points[k])) done.insert(points[k].key());
+  const auto resumed = studies::plan_sweep(sweep, points, done, true);
+  ASSERT_EQ(resumed.groups.size(), plan.groups.size());
+  for (std::size_t g = 0; g < plan.groups.size(); ++g) {
+    EXPECT_EQ(resumed.groups[g].first, plan.groups[g].first);
+    EXPECT_EQ(resumed.groups[g].ratio, plan.groups[g].ratio);
+  }
+  EXPECT_TRUE(resumed.groups[0].todo);
+  EXPECT_FALSE(resumed.groups[1].todo);
+  // Level 0 with p = 1's ratio-0 points, p = 2's ratio-1 points and all of p = 3 stored: p = 1
+  // still needs ratio 1's reference and p = 2 ratio 0's, so the level needs both.
+  std::set<std::string> mixed;
+  for (const auto& point : points)
+    if (point.level == 0 && ((point.reported_p == 1 && point.ratio == 0) ||
+                             (point.reported_p == 2 && point.ratio == 1) || point.reported_p == 3))
+      mixed.insert(point.key());
+  const auto mixed_whole = studies::plan_sweep(sweep, points, mixed);
+  EXPECT_DOUBLE_EQ(mixed_whole.shared_cost[0], whole.shared_cost[0]);
+}
+
+// The schedule: one rank gets everything; two ranks split two equal levels one each, and split one
+// level's equal groups when nothing is shared; the estimate returned is the largest load.
+TEST(SweepPlan, ScheduleBalancesTheRanks) {
+  SweepPlan equal_levels{{{0, 1, 0, 0, true, false, 5.0},
+                          {1, 2, 0, 0, true, false, 5.0},
+                          {2, 3, 1, 1, true, false, 5.0},
+                          {3, 4, 1, 1, true, false, 5.0}},
+                         {0.0, 0.0}};
+  SweepPlan serial = equal_levels;
+  EXPECT_DOUBLE_EQ(studies::schedule_sweep_groups(serial, 1), 20.0);
+  for (const auto& group : serial.groups) EXPECT_EQ(group.owner, 0);
+  EXPECT_DOUBLE_EQ(studies::schedule_sweep_groups(equal_levels, 2), 10.0);
+  EXPECT_DOUBLE_EQ(load_of(equal_levels, 0), 10.0);
+  EXPECT_DOUBLE_EQ(load_of(equal_levels, 1), 10.0);
+
+  SweepPlan one_level{{{0, 1, 0, 0, true, false, 4.0},
+                       {1, 2, 0, 0, true, false, 4.0},
+                       {2, 3, 0, 0, true, false, 4.0},
+                       {3, 4, 0, 0, true, false, 4.0},
+                       {4, 5, 0, 0, false, false, 100.0}},
+                      {0.0}};
+  EXPECT_DOUBLE_EQ(studies::schedule_sweep_groups(one_level, 2), 8.0);
+  EXPECT_DOUBLE_EQ(load_of(one_level, 0), 8.0);
+  EXPECT_DOUBLE_EQ(load_of(one_level, 1), 8.0);
+
+  // Two levels whose shared work dominates: splitting a level would repeat it, so each level
+  // stays whole on its own rank (52 each, where splitting groups would take 102).
+  SweepPlan shared{{{0, 1, 0, 0, true, true, 1.0},
+                    {1, 2, 0, 0, true, true, 1.0},
+                    {2, 3, 1, 1, true, true, 1.0},
+                    {3, 4, 1, 1, true, true, 1.0}},
+                   {50.0, 50.0}};
+  EXPECT_DOUBLE_EQ(studies::schedule_sweep_groups(shared, 2), 52.0);
+  EXPECT_EQ(shared.groups[0].owner, shared.groups[1].owner);
+  EXPECT_EQ(shared.groups[2].owner, shared.groups[3].owner);
+  EXPECT_NE(shared.groups[0].owner, shared.groups[2].owner);
+}
+
+// The units idle ranks take under mpirun: whole levels when the schedule keeps levels together,
+// single groups otherwise, each group to do in exactly one unit, longest first on several ranks
+// (shared work counted), groups in order within a unit; groups already stored are in none.
+TEST(SweepPlan, WorkUnitsFollowTheScheduleLongestFirst) {
+  SweepPlan shared{{{0, 1, 0, 0, true, true, 1.0},
+                    {1, 2, 0, 0, true, true, 1.0},
+                    {2, 3, 1, 1, true, true, 1.0},
+                    {3, 4, 1, 1, true, true, 1.0},
+                    {4, 5, 1, 1, false, true, 9.0}},
+                   {40.0, 50.0}};
+  studies::schedule_sweep_groups(shared, 2);
+  ASSERT_TRUE(shared.whole_shares);
+  const auto levels = studies::sweep_work_units(shared, 2);
+  ASSERT_EQ(levels.size(), 2u);
+  EXPECT_EQ(levels[0], (std::vector<std::size_t>{2, 3}));  // level 1: 52 before level 0: 42
+  EXPECT_EQ(levels[1], (std::vector<std::size_t>{0, 1}));
+  // One rank: the plan's order.
+  studies::schedule_sweep_groups(shared, 1);
+  EXPECT_EQ(studies::sweep_work_units(shared, 1), (std::vector<std::vector<std::size_t>>{{0, 1}, {2, 3}}));
+
+  SweepPlan one_level{{{0, 1, 0, 0, true, false, 2.0},
+                       {1, 2, 0, 0, true, false, 4.0},
+                       {2, 3, 0, 0, false, false, 100.0},
+                       {3, 4, 0, 0, true, false, 3.0}},
+                      {0.0}};
+  studies::schedule_sweep_groups(one_level, 2);
+  ASSERT_FALSE(one_level.whole_shares);
+  const auto groups = studies::sweep_work_units(one_level, 2);
+  ASSERT_EQ(groups.size(), 3u);
+  EXPECT_EQ(groups[0], (std::vector<std::size_t>{1}));
+  EXPECT_EQ(groups[1], (std::vector<std::size_t>{3}));
+  EXPECT_EQ(groups[2], (std::vector<std::size_t>{0}));
+}
