@@ -1,5 +1,6 @@
 // `hpcontact infsup`: the inf-sup constant α(h, H, p, p_C) of (11) / (22) on the paper's §7
-// geometry, with Π of (20), optional CSV row and spurious-mode samples.
+// geometry, with Π of (20), optional CSV row (the columns of a sweep's alpha.csv) and
+// spurious-mode samples.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -12,7 +13,9 @@
 #include "core/petsc_session.hpp"
 #include "driver/run_stages.hpp"
 #include "infsup/infsup_analysis.hpp"
+#include "infsup/infsup_record.hpp"
 #include "io/atomic_file.hpp"
+#include "io/infsup_record_csv.hpp"
 #include "linalg/distribution.hpp"
 #include "postprocess/mode_samples.hpp"
 #include "scene/scene_mesh.hpp"
@@ -96,13 +99,19 @@ int run_infsup(const InfSupOptions& o) {
              result.lambda_max, result.singular ? " (singular to working precision: alpha = 0)" : "", result.method,
              result.residual, result.seconds);
   if (!o.csv.empty()) {
-    io::CsvTable row({"problem", "norm", "p", "pC", "n", "m", "h", "H", "ratio", "Pi", "alpha", "alpha_error", "ndofs",
-                      "nmult", "seconds"});
-    row.add_row({problem, norm, static_cast<long long>(p), static_cast<long long>(pc), static_cast<long long>(n),
-                 static_cast<long long>(m), result.h, result.H,
-                 scene.ratio.size() == 1 ? scene.ratio.front().value : ratio, result.pi, result.alpha,
-                 result.alpha_error, static_cast<long long>(result.n_primal_dofs),
-                 static_cast<long long>(result.n_multiplier_dofs), result.seconds});
+    // The sweep's alpha.csv row: a single run is level 1.
+    const infsup::PairingFacts pairing{
+        .problem = setup.problem,
+        .norm = setup.norm,
+        .p = p,
+        .pc = pc,
+        .level = 1,
+        .n = n,
+        .m = m,
+        .h_min = infsup::shortest_contact_edge(*d->contact),
+        .ratio = scene.ratio.size() == 1 ? std::optional<double>(scene.ratio.front().value) : std::nullopt};
+    io::CsvTable row(io::alpha_columns());
+    io::add_alpha_row(row, infsup::make_infsup_record(pairing, result));
     io::append_csv_rows(o.csv, row);
   }
   if (!o.mode.empty()) postprocess::sample_mode(*d->contact, *d->multipliers, result.mode).write(o.mode);
@@ -134,7 +143,7 @@ void add_infsup_command(CLI::App& app, CommandAction& action) {
                    "Under mpirun: substructuring (CHOLMOD per rank, dense interface) | mumps (MPIAIJ + MUMPS) | bddc "
                    "(MATIS + CG with PCBDDC)")
       ->capture_default_str();
-  command->add_option("--csv", o->csv, "Append one row to this CSV file");
+  command->add_option("--csv", o->csv, "Append one row to this CSV file (the columns of a sweep's alpha.csv)");
   command->add_option("--mode", o->mode, "Write the spurious mode as CSV x,mu (20 samples/segment)");
   command->add_option("--alpha-tol", o->alpha_tolerance,
                       "Relative error of alpha: the H^{-1/2} reference is refined until the estimate is below it "

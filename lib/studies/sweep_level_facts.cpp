@@ -9,6 +9,7 @@
 
 #include "core/byte_buffer.hpp"
 #include "core/error.hpp"
+#include "infsup/infsup_record.hpp"
 #include "mesh/boundary_mesh.hpp"
 #include "mesh/contact_boundary.hpp"
 #include "scene/scene_mesh.hpp"
@@ -29,10 +30,7 @@ LevelFacts facts_of_level(const scene::Scene& scene, const std::vector<std::opti
   LevelFacts facts;
   facts.cells = mesh.n_cells();
   facts.contact_edges = static_cast<int>(contact.edges().size());
-  const auto nodes = contact.breakpoints();
-  facts.contact_h_min = nodes.back() - nodes.front();
-  for (std::size_t k = 0; k + 1 < nodes.size(); ++k)
-    facts.contact_h_min = std::min(facts.contact_h_min, nodes[k + 1] - nodes[k]);
+  facts.contact_h_min = infsup::shortest_contact_edge(contact);
   const auto cell_degrees = scene::scene_cell_degrees(scene, mesh);
   facts.scene_p = *std::min_element(cell_degrees.begin(), cell_degrees.end());
   for (const auto& ratio : ratios) {
