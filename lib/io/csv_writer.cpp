@@ -35,7 +35,11 @@ void CsvTable::add_row(std::vector<CsvCell> row) {
 std::string CsvTable::to_string() const {
   std::string out;
   for (std::size_t k = 0; k < columns_.size(); ++k) out += (k ? "," : "") + columns_[k];
-  out += '\n';
+  return out + '\n' + rows_to_string();
+}
+
+std::string CsvTable::rows_to_string() const {
+  std::string out;
   for (const auto& row : rows_) {
     for (std::size_t k = 0; k < row.size(); ++k) {
       if (k) out += ',';

@@ -18,7 +18,10 @@ class CsvTable {
   const std::vector<std::string>& columns() const { return columns_; }
   std::size_t n_rows() const { return rows_.size(); }
   const std::vector<std::vector<CsvCell>>& rows() const { return rows_; }
+  /// The header line and the rows.
   std::string to_string() const;
+  /// The rows alone, for appending to a file that has the header.
+  std::string rows_to_string() const;
   /// Writes the table atomically.
   void write(const std::filesystem::path& path) const;
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "infsup/infsup_analysis.hpp"
-#include "io/csv_writer.hpp"
+#include "infsup/infsup_record.hpp"
 #include "linalg/distribution.hpp"
 #include "scene/ratio.hpp"
 #include "scene/scene_variants.hpp"
@@ -55,12 +55,6 @@ struct StabilitySweep {
 /// @throws InputError naming file, key, value and the allowed range, and the level (on every rank).
 StabilitySweep read_stability_sweep(const std::string& path, MPI_Comm ranks = MPI_COMM_WORLD);
 
-/// Columns of alpha.csv (one row per point). `level` counts the sweep's levels from 1, `n` is
-/// the number of edges of T_h on Γ_C, `m` the number of segments of T_{C,H}, h the longest edge
-/// of T_h and h_min the shortest edge of T_h on Γ_C; for degree rules p is
-/// the smallest p_T and pC the largest p_C (the worst case, as in Π).
-std::vector<std::string> alpha_columns();
-
 /// Slice `index` of `count` of a sweep (`hpcontact sweep --shard index/count`): the groups the
 /// scheduler gives to process `index` of `count` on the whole sweep, the same in every run, so
 /// that the jobs of a batch scheduler's array compute disjoint parts without talking to each other.
@@ -81,23 +75,33 @@ struct SweepRanks {
 /// @throws InputError naming --ranks-per-unit unless it divides `ranks`.
 void check_sweep_ranks(const SweepRanks& sweep_ranks, int ranks);
 
+/// What a run leaves in alpha.csv: its rows in the order of the points (every rank's on rank 0,
+/// the others hold their own and those stored before), and whether they are every point of the
+/// sweep (on rank 0).
+struct SweepOutcome {
+  std::vector<infsup::InfSupRecord> rows;
+  bool complete = false;
+};
+
 /// Runs every point (of `shard`) not already in `alpha_csv` (resumable), rewriting the file
 /// atomically after each group of points sharing (level, p). `progress(done, total, label)` is
 /// called before each point (`done`: the points stored before and those all ranks computed so far,
-/// this one included; `total`: those stored and those to do in this run, a slice's own). Under mpirun the groups of
-/// `sweep_ranks` (single ranks by default) take units of groups (whole levels or single groups, longest first:
-/// sweep_work_units) as they become idle, and rank 0 writes the rows in the serial order (the
-/// file is then written once, at the end). Returns whether alpha_csv holds every point of the
-/// sweep.
-bool run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::path& alpha_csv,
-                         const std::function<void(int, int, const std::string&)>& progress = {}, SweepShard shard = {},
-                         SweepRanks sweep_ranks = {});
+/// this one included; `total`: those stored and those to do in this run, a slice's own). Under
+/// mpirun the groups of `sweep_ranks` (single ranks by default) take units of groups (whole levels
+/// or single groups, longest first: sweep_work_units) as they become idle, and rank 0 writes the
+/// rows in the serial order (the file is then written once, at the end). Who computes what:
+/// SweepSchedule; what a point computes: SweepEvaluation.
+SweepOutcome run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::path& alpha_csv,
+                                 const std::function<void(int, int, const std::string&)>& progress = {},
+                                 SweepShard shard = {}, SweepRanks sweep_ranks = {});
 
 /// The alpha.csv of every folder in `shards` (and the per-rank shards beside each) into
 /// `alpha_csv`, in the serial order: equal to a serial run's file but for the seconds column. A
 /// point in two folders keeps the first folder's row (a warning names points whose numbers differ).
+/// Returns the rows written, in that order.
 /// @throws InputError if a point of the sweep is in none of them (naming how many and one).
-void merge_sweep_shards(const StabilitySweep& sweep, const std::vector<std::filesystem::path>& shards,
-                        const std::filesystem::path& alpha_csv);
+std::vector<infsup::InfSupRecord> merge_sweep_shards(const StabilitySweep& sweep,
+                                                     const std::vector<std::filesystem::path>& shards,
+                                                     const std::filesystem::path& alpha_csv);
 
 }  // namespace hpcontact::studies

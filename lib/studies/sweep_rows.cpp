@@ -1,4 +1,5 @@
-// Stored sweep rows: validated reading, durable appending, the folder lock; the rows a run holds.
+// Stored sweep rows: validated reading into records, durable appending, the folder lock; the rows
+// a run holds.
 #include "studies/sweep_rows.hpp"
 
 #include <fcntl.h>
@@ -9,69 +10,28 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <charconv>
 #include <fstream>
-#include <sstream>
+#include <type_traits>
 
+#include "core/byte_buffer.hpp"
 #include "core/error.hpp"
 #include "core/petsc_session.hpp"
-#include "io/csv_writer.hpp"
-#include "studies/stability_sweep.hpp"
+#include "io/infsup_record_csv.hpp"
 
 namespace hpcontact::studies {
 namespace {
 
-bool parses_completely(const std::string& text, bool integer) {
-  if (text.empty()) return false;
-  const char* end = text.data() + text.size();
-  if (integer) {
-    long long value = 0;
-    const auto [ptr, error] = std::from_chars(text.data(), end, value);
-    return error == std::errc() && ptr == end;
-  }
-  double value = 0.0;
-  const auto [ptr, error] = std::from_chars(text.data(), end, value);
-  return error == std::errc() && ptr == end;
-}
-
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> cells;
-  std::stringstream stream(line);
-  for (std::string cell; std::getline(stream, cell, ',');) cells.push_back(cell);
-  if (!line.empty() && line.back() == ',') cells.emplace_back();
-  return cells;
-}
-
-// The key of a complete, well-formed row, or "" if it is not one.
-std::string key_of_row(const std::vector<std::string>& header, const std::vector<std::string>& cells) {
-  if (cells.size() != header.size()) return "";
-  std::map<std::string, std::string> row;
-  for (std::size_t k = 0; k < header.size(); ++k) {
-    const std::string& column = header[k];
-    if (column == "problem" || column == "norm") {
-      if (cells[k].empty()) return "";
-    } else {
-      const bool integer = column == "p" || column == "pC" || column == "level" || column == "n" || column == "m" ||
-                           column == "ndofs" || column == "nmult";
-      if (!parses_completely(cells[k], integer)) return "";
-    }
-    row[column] = cells[k];
-  }
-  return point_key(row["problem"], row["norm"], std::stoi(row["p"]), std::stoi(row["pC"]), std::stoi(row["level"]),
-                   std::stol(row["m"]));
-}
-
 void read_rows(const std::filesystem::path& file, bool with_header, const std::set<std::string>& keys,
-               StoredRowsUse use, std::map<std::string, std::string>& rows, std::vector<std::string>& dropped) {
+               StoredRowsUse use, std::map<std::string, infsup::InfSupRecord>& rows,
+               std::vector<std::string>& dropped) {
   std::ifstream in(file);
   if (!in) return;
-  const std::vector<std::string> header = alpha_columns();
   std::string line;
   int number = 0;
   if (with_header) {
     std::getline(in, line);
     ++number;
-    if (split(line) != header)
+    if (line + '\n' != io::CsvTable(io::alpha_columns()).to_string())
       throw InputError("'" + file.string() + "' is not an alpha.csv written by this version of hpcontact sweep " +
                        (use == StoredRowsUse::resume
                             ? "(other columns): choose another --out folder, or --restart"
@@ -81,21 +41,59 @@ void read_rows(const std::filesystem::path& file, bool with_header, const std::s
     ++number;
     if (line.empty()) continue;
     // A last line without its newline was cut while being written.
-    const bool whole = !in.eof();
-    const std::string key = whole ? key_of_row(header, split(line)) : "";
+    const auto record = in.eof() ? std::nullopt : io::read_alpha_row(line);
+    const std::string key = record ? point_key(*record) : "";
     if (key.empty() || !keys.contains(key)) {
       dropped.push_back(
           fmt::format("{}:{}{}", file.filename().string(), number, key.empty() ? "" : " (not a point of this study)"));
       continue;
     }
-    rows[key] = line + '\n';
+    rows[key] = *record;
   }
+}
+
+// Writes all of `text` to the open file `fd`, retrying after signals. @throws IoError naming `file`.
+void write_all(int fd, const std::string& text, const std::filesystem::path& file) {
+  std::size_t written = 0;
+  while (written < text.size()) {
+    const ssize_t n = write(fd, text.data() + written, text.size() - written);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const std::string reason = describe_io_failure("cannot append to", file.string());
+      close(fd);
+      throw IoError(reason);
+    }
+    written += static_cast<std::size_t>(n);
+  }
+}
+
+// Every rank's `bytes`, one piece per rank, on rank 0 (empty on the others). Collective.
+std::vector<std::vector<char>> gather_bytes_on_rank_zero(const std::vector<char>& bytes) {
+  const int rank = mpi_rank_and_size().first, size = mpi_rank_and_size().second;
+  int length = static_cast<int>(bytes.size());
+  std::vector<int> lengths(size), offsets(size, 0);
+  MPI_Gather(&length, 1, MPI_INT, lengths.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+  std::vector<char> all;
+  if (rank == 0) {
+    for (int r = 1; r < size; ++r) offsets[r] = offsets[r - 1] + lengths[r - 1];
+    all.resize(static_cast<std::size_t>(offsets[size - 1] + lengths[size - 1]));
+  }
+  MPI_Gatherv(bytes.data(), length, MPI_CHAR, all.data(), lengths.data(), offsets.data(), MPI_CHAR, 0, MPI_COMM_WORLD);
+  std::vector<std::vector<char>> pieces;
+  if (rank == 0)
+    for (int r = 0; r < size; ++r) pieces.emplace_back(all.begin() + offsets[r], all.begin() + offsets[r] + lengths[r]);
+  return pieces;
 }
 
 }  // namespace
 
 std::string point_key(const std::string& problem, const std::string& norm, int p, int pc, int level, long m) {
   return fmt::format("{}/{}/{}/{}/{}/{}", problem, norm, p, pc, level, m);
+}
+
+std::string point_key(const infsup::InfSupRecord& record) {
+  return point_key(infsup::to_string(record.problem), infsup::to_string(record.norm), record.p, record.pc, record.level,
+                   record.m);
 }
 
 std::filesystem::path shard_path(const std::filesystem::path& alpha_csv, int rank) {
@@ -115,9 +113,10 @@ std::vector<std::filesystem::path> existing_shards(const std::filesystem::path& 
   return shards;
 }
 
-std::map<std::string, std::string> read_stored_rows(const std::filesystem::path& alpha_csv,
-                                                    const std::set<std::string>& keys, bool warn, StoredRowsUse use) {
-  std::map<std::string, std::string> rows;
+std::map<std::string, infsup::InfSupRecord> read_stored_rows(const std::filesystem::path& alpha_csv,
+                                                             const std::set<std::string>& keys, bool warn,
+                                                             StoredRowsUse use) {
+  std::map<std::string, infsup::InfSupRecord> rows;
   std::vector<std::string> dropped;
   read_rows(alpha_csv, true, keys, use, rows, dropped);
   for (const auto& shard : existing_shards(alpha_csv)) read_rows(shard, false, keys, use, rows, dropped);
@@ -134,25 +133,37 @@ std::map<std::string, std::string> read_stored_rows(const std::filesystem::path&
   return rows;
 }
 
-void append_durably(const std::filesystem::path& file, const std::string& lines) {
+void append_durably(const std::filesystem::path& file, const std::vector<infsup::InfSupRecord>& records) {
+  io::CsvTable rows(io::alpha_columns());
+  for (const auto& record : records) io::add_alpha_row(rows, record);
   errno = 0;
   const int fd = open(file.c_str(), O_WRONLY | O_APPEND | O_CREAT, 0644);
   if (fd < 0) throw IoError(describe_io_failure("cannot open for appending", file.string()));
-  std::size_t written = 0;
-  while (written < lines.size()) {
-    const ssize_t n = write(fd, lines.data() + written, lines.size() - written);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      const std::string reason = describe_io_failure("cannot append to", file.string());
-      close(fd);
-      throw IoError(reason);
-    }
-    written += static_cast<std::size_t>(n);
-  }
+  write_all(fd, rows.rows_to_string(), file);
   const bool synced = fsync(fd) == 0;
   const std::string reason = synced ? "" : describe_io_failure("cannot sync to disk", file.string());
   close(fd);
   if (!synced) throw IoError(reason);
+}
+
+std::vector<std::pair<int, infsup::InfSupRecord>> gather_rows_on_rank_zero(
+    const std::vector<std::pair<int, infsup::InfSupRecord>>& rows) {
+  static_assert(std::is_trivially_copyable_v<infsup::InfSupRecord>, "records travel between ranks as bytes");
+  std::vector<int> indices;
+  std::vector<infsup::InfSupRecord> records;
+  for (const auto& [index, record] : rows) indices.push_back(index), records.push_back(record);
+  ByteWriter out;
+  out.put(indices), out.put(records);
+  std::vector<std::pair<int, infsup::InfSupRecord>> gathered;
+  for (const auto& piece : gather_bytes_on_rank_zero(out.take())) {
+    ByteReader in(piece);
+    const auto piece_indices = in.get_vector<int>();
+    const auto piece_records = in.get_vector<infsup::InfSupRecord>();
+    HPC_VERIFY(in.at_end() && piece_indices.size() == piece_records.size(), "bytes of a rank's sweep rows garbled");
+    for (std::size_t k = 0; k < piece_indices.size(); ++k) gathered.emplace_back(piece_indices[k], piece_records[k]);
+  }
+  std::sort(gathered.begin(), gathered.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  return gathered;
 }
 
 FolderLock::FolderLock(const std::filesystem::path& folder) {
@@ -180,13 +191,6 @@ FolderLock::~FolderLock() {
   if (fd_ >= 0) close(fd_);  // releases the lock
 }
 
-namespace {
-
-// A row of alpha.csv without its last column (the seconds, which differ between runs).
-std::string without_seconds(const std::string& line) { return line.substr(0, line.rfind(',')); }
-
-}  // namespace
-
 AlphaRows::AlphaRows(const std::vector<SweepPoint>& points) {
   for (std::size_t k = 0; k < points.size(); ++k) {
     index_of_key_[points[k].key()] = k;
@@ -200,48 +204,35 @@ void AlphaRows::read(const std::filesystem::path& alpha_csv, bool warn) {
 
 std::vector<std::string> AlphaRows::merge_slice(const std::filesystem::path& alpha_csv) {
   std::vector<std::string> conflicts;
-  for (auto& [key, line] : read_stored_rows(alpha_csv, keys_, true, StoredRowsUse::merge)) {
-    const auto [held, inserted] = rows_.emplace(key, line);
-    if (!inserted && without_seconds(held->second) != without_seconds(line)) conflicts.push_back(key);
+  for (auto& [key, record] : read_stored_rows(alpha_csv, keys_, true, StoredRowsUse::merge)) {
+    const auto [held, inserted] = rows_.emplace(key, record);
+    // The seconds differ between runs; every other number of a point is the same.
+    infsup::InfSupRecord timed_alike = held->second;
+    timed_alike.seconds = record.seconds;
+    if (!inserted && timed_alike != record) conflicts.push_back(key);
   }
   return conflicts;
 }
 
 std::set<std::string> AlphaRows::keys() const {
   std::set<std::string> keys;
-  for (const auto& [key, line] : rows_) keys.insert(key);
+  for (const auto& [key, record] : rows_) keys.insert(key);
   return keys;
 }
 
-std::string AlphaRows::content() const {
-  std::vector<std::pair<std::size_t, const std::string*>> lines;
-  for (const auto& [key, line] : rows_) lines.emplace_back(index_of_key_.at(key), &line);
-  std::sort(lines.begin(), lines.end());
-  std::string content = io::CsvTable(alpha_columns()).to_string();
-  for (const auto& [index, line] : lines) content += *line;
-  return content;
+std::vector<infsup::InfSupRecord> AlphaRows::records() const {
+  std::vector<std::pair<std::size_t, const infsup::InfSupRecord*>> held;
+  for (const auto& [key, record] : rows_) held.emplace_back(index_of_key_.at(key), &record);
+  std::sort(held.begin(), held.end());
+  std::vector<infsup::InfSupRecord> records;
+  for (const auto& [index, record] : held) records.push_back(*record);
+  return records;
 }
 
-std::vector<std::pair<int, std::string>> gather_rows_on_rank_zero(
-    const std::vector<std::pair<int, std::string>>& rows) {
-  const int rank = mpi_rank_and_size().first, size = mpi_rank_and_size().second;
-  std::string packed;
-  for (const auto& [index, line] : rows) packed += std::to_string(index) + '\t' + line;  // line ends in '\n'
-  int length = static_cast<int>(packed.size());
-  std::vector<int> lengths(size), offsets(size, 0);
-  MPI_Gather(&length, 1, MPI_INT, lengths.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
-  std::string all;
-  if (rank == 0) {
-    for (int r = 1; r < size; ++r) offsets[r] = offsets[r - 1] + lengths[r - 1];
-    all.resize(static_cast<std::size_t>(offsets[size - 1] + lengths[size - 1]));
-  }
-  MPI_Gatherv(packed.data(), length, MPI_CHAR, all.data(), lengths.data(), offsets.data(), MPI_CHAR, 0, MPI_COMM_WORLD);
-  std::vector<std::pair<int, std::string>> out;
-  std::stringstream stream(all);
-  for (std::string index, line; std::getline(stream, index, '\t') && std::getline(stream, line);)
-    out.emplace_back(std::stoi(index), line + '\n');
-  std::sort(out.begin(), out.end());
-  return out;
+std::string AlphaRows::content() const {
+  io::CsvTable table(io::alpha_columns());
+  for (const auto& record : records()) io::add_alpha_row(table, record);
+  return table.to_string();
 }
 
 }  // namespace hpcontact::studies

@@ -1,13 +1,14 @@
-// Verdicts of a stability sweep from its alpha.csv.
+// Verdicts of a stability sweep from the rows of its alpha.csv.
 #pragma once
 
-#include <filesystem>
+#include <vector>
 
+#include "infsup/infsup_record.hpp"
 #include "io/csv_writer.hpp"
 
 namespace hpcontact::studies {
 
-/// Fits α ≈ C h_min^r over the `fit_levels` finest levels of each configuration in alpha.csv
+/// Fits α ≈ C h_min^r over the `fit_levels` finest levels of each configuration among `rows`
 /// (h_min, the shortest edge on Γ_C, is h on uniform meshes and the size of the finest layer on
 /// graded ones, where checkerboard modes live) and returns verdicts.csv:
 /// problem,norm,p,pC,ratio,rate,C,alpha_finest,verdict with verdict
@@ -16,6 +17,7 @@ namespace hpcontact::studies {
 ///   stable          otherwise (α bounded below)
 ///   too_few_levels  one level only
 ///   h_unchanged     the levels do not refine Γ_C (no rate can be fitted)
-io::CsvTable fit_verdicts(const std::filesystem::path& alpha_csv, int fit_levels);
+/// Configurations come in the order of their labels, each level's rows in the order given.
+io::CsvTable fit_verdicts(const std::vector<infsup::InfSupRecord>& rows, int fit_levels);
 
 }  // namespace hpcontact::studies

@@ -1,14 +1,15 @@
-// Sweeps: the plan of a stability sweep (its points, groups and the schedule over MPI
-// ranks) is pure and checked here without building a mesh.
-#include "studies/sweep_plan.hpp"
-
+// Sweeps: the plan of a stability sweep (its points, groups and the schedule over MPI ranks),
+// its rows and its verdicts are pure and checked here without building a mesh.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <numeric>
 #include <set>
 
+#include "io/infsup_record_csv.hpp"
 #include "studies/stability_sweep.hpp"
+#include "studies/sweep_plan.hpp"
+#include "studies/sweep_verdicts.hpp"
 
 using namespace hpcontact;
 using studies::SweepGroup;
@@ -199,4 +200,69 @@ TEST(SweepPlan, WorkUnitsFollowTheScheduleLongestFirst) {
   EXPECT_EQ(groups[0], (std::vector<std::size_t>{1}));
   EXPECT_EQ(groups[1], (std::vector<std::size_t>{3}));
   EXPECT_EQ(groups[2], (std::vector<std::size_t>{0}));
+}
+
+namespace {
+
+infsup::InfSupRecord record_at(double h_min, double alpha) {
+  infsup::InfSupRecord record;
+  record.problem = infsup::PairingProblem::friction;
+  record.norm = infsup::GramNorm::extension;
+  record.p = 3, record.pc = 2, record.level = 2, record.n = 16, record.m = 8;
+  record.h = 0.125, record.h_min = h_min, record.H = 0.25, record.ratio = 0.5, record.pi = 2.0 / 3.0;
+  record.alpha = alpha, record.alpha_error = 1e-11, record.alpha_converged = true;
+  record.ndofs = 1089, record.nmult = 24, record.seconds = 0.1;
+  return record;
+}
+
+}  // namespace
+
+// A record written as a row of alpha.csv reads back as itself (every number to the last bit),
+// but for alpha_converged, which is not a column; a row with a column missing, an unknown label or
+// a number that does not parse completely reads as none.
+TEST(SweepRows, ARecordReadsBackFromItsRow) {
+  const auto record = record_at(0.1, 0.123456789012345678);
+  io::CsvTable table(io::alpha_columns());
+  io::add_alpha_row(table, record);
+  std::string row = table.rows_to_string();
+  ASSERT_EQ(row.back(), '\n');
+  row.pop_back();
+  auto expected = record;
+  expected.alpha_converged.reset();
+  ASSERT_TRUE(io::read_alpha_row(row).has_value()) << row;
+  EXPECT_EQ(*io::read_alpha_row(row), expected);
+  EXPECT_FALSE(io::read_alpha_row(row.substr(0, row.rfind(','))));                          // seconds missing
+  EXPECT_FALSE(io::read_alpha_row("Friction" + row.substr(row.find(','))));                 // not a label
+  EXPECT_FALSE(io::read_alpha_row(std::string(row).replace(row.find(",3,"), 3, ",3.5,")));  // p not whole
+  EXPECT_FALSE(io::read_alpha_row(row + "x"));                                              // seconds cut
+}
+
+// Verdicts from records: α = h_min decays at rate 1, α constant is stable, α ≤ 1e-6 singular, one
+// level too few; the fit uses the finest fit_levels levels whatever the rows' order.
+TEST(SweepVerdicts, FitRatesOfTypedRows) {
+  std::vector<infsup::InfSupRecord> rows;
+  for (double h : {0.5, 0.25, 0.125, 0.0625}) {
+    auto decaying = record_at(h, 2 * h), stable = record_at(h, 0.3), singular = record_at(h, 1e-9);
+    stable.pc = 1, singular.pc = 0;
+    rows.insert(rows.begin(), {decaying, stable, singular});
+  }
+  auto alone = record_at(0.5, 0.3);
+  alone.p = 4;
+  rows.push_back(alone);
+  const auto verdicts = studies::fit_verdicts(rows, 3);
+  ASSERT_EQ(verdicts.n_rows(), 4u);
+  std::vector<std::string> seen;
+  for (const auto& row : verdicts.rows()) {
+    seen.push_back(std::get<std::string>(row.back()));
+    EXPECT_EQ(std::get<std::string>(row[0]), "friction");
+    EXPECT_EQ(std::get<std::string>(row[1]), "extension");
+    EXPECT_DOUBLE_EQ(std::get<double>(row[4]), 0.5);
+    if (seen.back() == "decaying") {
+      EXPECT_NEAR(std::get<double>(row[5]), 1.0, 1e-12);
+      EXPECT_NEAR(std::get<double>(row[6]), 2.0, 1e-12);
+      EXPECT_DOUBLE_EQ(std::get<double>(row[7]), 0.125);
+    }
+  }
+  // Ordered by (problem, norm, p, pC, ratio): p = 3 with pC 0, 1, 2, then p = 4.
+  EXPECT_EQ(seen, (std::vector<std::string>{"singular", "stable", "decaying", "too_few_levels"}));
 }

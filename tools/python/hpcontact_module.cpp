@@ -223,11 +223,11 @@ PYBIND11_MODULE(_hpcontact, m) {
         const auto sweep = studies::read_stability_sweep(study);
         std::filesystem::create_directories(out);
         const auto alpha_csv = out / "alpha.csv";
-        {
+        const auto outcome = [&] {
           py::gil_scoped_release release;
-          studies::run_stability_sweep(sweep, alpha_csv, {});
-        }
-        const auto verdicts = studies::fit_verdicts(alpha_csv, sweep.fit_levels);
+          return studies::run_stability_sweep(sweep, alpha_csv, {});
+        }();
+        const auto verdicts = studies::fit_verdicts(outcome.rows, sweep.fit_levels);
         verdicts.write(out / "verdicts.csv");
         return py::make_tuple(alpha_csv.string(), (out / "verdicts.csv").string());
       },
