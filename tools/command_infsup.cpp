@@ -70,51 +70,36 @@ int run_infsup(const InfSupOptions& o) {
   const driver::StageContext context{linalg::distribution_over(MPI_COMM_WORLD, distributed_solver), {}};
   const auto level = driver::discretize(scene, context);
   driver::build_operators(*level, nullptr, context, scene.norm == infsup::GramNorm::extension);
-  const auto& d = level->d;
   const auto setup = level->model->infsup_setup();
   const auto result = infsup::analyse_infsup(setup, backend);
   if (rank != 0) return 0;
 
-  // 3. Report and save. For degree rules p and p_C are the worst case, as in Π: the smallest p,
-  // the largest p_C.
-  const int p = d->smallest_cell_degree;
-  const int pc = *std::max_element(d->segment_degrees.begin(), d->segment_degrees.end());
-  const int n = static_cast<int>(d->contact->edges().size()), m = d->boundary_mesh->n_segments();
-  const double ratio = static_cast<double>(m) / n;
-  const std::string problem = infsup::to_string(setup.problem), norm = infsup::to_string(setup.norm);
-  fmt::print("alpha = {:.17g}\n", result.alpha);
-  for (std::size_t z = 0; z < result.zone_alpha.size(); ++z)
-    fmt::print("# zone {} alone: alpha = {:.17g}\n", z, result.zone_alpha[z]);
-  fmt::print("# alpha_error {:.2e} (reference level {}{})\n", result.alpha_error, result.reference_level,
-             result.alpha_converged
+  // 3. Report and save: the α record of the run's stages, the CSV row a sweep's alpha.csv has.
+  const auto summary = driver::infsup_summary(*level, setup, result);
+  const auto& record = summary.record;
+  fmt::print("alpha = {:.17g}\n", record.alpha);
+  for (std::size_t z = 0; z < summary.zone_alpha.size(); ++z)
+    fmt::print("# zone {} alone: alpha = {:.17g}\n", z, summary.zone_alpha[z]);
+  fmt::print("# alpha_error {:.2e} (reference level {}{})\n", record.alpha_error, summary.reference_level,
+             record.alpha_converged.value_or(true)
                  ? ""
                  : fmt::format(", NOT below --alpha-tol {:g}: the H^-1/2 reference could not be refined far enough; "
                                "with the extension norm, breakpoints of T_C,H that are not vertices of T_h (h/H > 1) "
                                "leave it ungraded and the estimate is then too low: use --norm interp",
                                scene.alpha_tolerance));
-  fmt::print("# problem {} norm {} p {} pC {} n {} m {} h/H {} Pi {:.6g} ndofs {} nmult {}\n", problem, norm, p, pc, n,
-             m, scene.ratio.size() == 1 ? scene.ratio.front().text : fmt::format("{}", ratio), result.pi,
-             result.n_primal_dofs, result.n_multiplier_dofs);
-  fmt::print("# lambda_min {:.6e} lambda_max {:.6e}{} solver {} residual {:.2e} seconds {:.3f}\n", result.lambda_min,
-             result.lambda_max, result.singular ? " (singular to working precision: alpha = 0)" : "", result.method,
-             result.residual, result.seconds);
+  fmt::print("# problem {} norm {} p {} pC {} n {} m {} h/H {} Pi {:.6g} ndofs {} nmult {}\n",
+             infsup::to_string(record.problem), infsup::to_string(record.norm), record.p, record.pc, record.n, record.m,
+             scene.ratio.size() == 1 ? scene.ratio.front().text : fmt::format("{}", record.ratio), record.pi,
+             record.ndofs, record.nmult);
+  fmt::print("# lambda_min {:.6e} lambda_max {:.6e}{} solver {} residual {:.2e} seconds {:.3f}\n", summary.lambda_min,
+             summary.lambda_max, summary.lambda_unique ? "" : " (singular to working precision: alpha = 0)",
+             summary.eigensolver, summary.residual, record.seconds);
   if (!o.csv.empty()) {
-    // The sweep's alpha.csv row: a single run is level 1.
-    const infsup::PairingFacts pairing{
-        .problem = setup.problem,
-        .norm = setup.norm,
-        .p = p,
-        .pc = pc,
-        .level = 1,
-        .n = n,
-        .m = m,
-        .h_min = infsup::shortest_contact_edge(*d->contact),
-        .ratio = scene.ratio.size() == 1 ? std::optional<double>(scene.ratio.front().value) : std::nullopt};
     io::CsvTable row(io::alpha_columns());
-    io::add_alpha_row(row, infsup::make_infsup_record(pairing, result));
+    io::add_alpha_row(row, record);
     io::append_csv_rows(o.csv, row);
   }
-  if (!o.mode.empty()) postprocess::sample_mode(*d->contact, *d->multipliers, result.mode).write(o.mode);
+  if (!o.mode.empty()) postprocess::sample_mode(*level->d->contact, *level->d->multipliers, result.mode).write(o.mode);
   return 0;
 }
 

@@ -92,7 +92,7 @@ int run_solve(const SolveOptions& o) {
   // 3. One line per effect.
   for (const auto& contact : result.contacts) print_contact(contact);
   if (result.infsup)
-    fmt::print("infsup: alpha = {:.10g} ({}){}\n", result.infsup->alpha,
+    fmt::print("infsup: alpha = {:.10g} ({}){}\n", result.infsup->record.alpha,
                result.infsup->lambda_unique ? "lambda unique" : "singular: lambda not unique",
                zone_alphas(*result.infsup));
   fmt::print("# p {} pC {} m {} ndofs {}: wrote {} in {:.2f} s on {} rank{}\n", result.p, result.pc, result.m,

@@ -9,6 +9,7 @@
 
 #include "contact/qp_report.hpp"
 #include "core/operator_log.hpp"
+#include "infsup/infsup_record.hpp"
 #include "mesh/mesh.hpp"
 
 namespace hpcontact::driver {
@@ -50,15 +51,14 @@ struct ContactResult {
 
 /// The inf-sup constant of the scene's pairing (effect infsup).
 struct InfSupSummary {
-  double alpha = 0.0, alpha_error = 0.0;
-  bool alpha_converged = true;
-  int reference_level = 0;
+  /// α and its pairing: the record `hpcontact infsup --csv` and a sweep's alpha.csv write.
+  infsup::InfSupRecord record;
+  int reference_level = 0;                 ///< the H^{-1/2} reference's level behind alpha_error
   bool lambda_unique = true;               ///< α above round-off: λ is unique
-  std::string problem, norm;               ///< the pairing (11) / (22), the H^{-1/2} realization
   std::optional<std::string> primal_norm;  ///< elastic: h1 or energy
-  double lambda_min = 0.0, lambda_max = 0.0, pi = 0.0;
+  double lambda_min = 0.0, lambda_max = 0.0;
   std::string eigensolver;
-  double residual = 0.0, seconds = 0.0;
+  double residual = 0.0;
   std::vector<double> zone_alpha;  ///< several zones: α of each zone's multipliers alone
 };
 

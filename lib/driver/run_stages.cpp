@@ -1,7 +1,8 @@
 // The stages of a run that work on one level: discretize, build operators, solve, analyse α.
 #include "driver/run_stages.hpp"
 
-#include "infsup/infsup_analysis.hpp"
+#include <algorithm>
+
 #include "postprocess/mode_samples.hpp"
 
 namespace hpcontact::driver {
@@ -26,29 +27,32 @@ void solve_contact_problems(Level& level, const StageContext& context, const std
   }
 }
 
-namespace {
-
-InfSupSummary infsup_summary(const infsup::InfSupResult& alpha, const infsup::InfSupSetup& setup) {
+InfSupSummary infsup_summary(const Level& level, const infsup::InfSupSetup& setup, const infsup::InfSupResult& alpha) {
+  const auto& d = *level.d;
+  const int n = static_cast<int>(d.contact->edges().size());
+  // For degree rules the worst case, as in Π: the smallest p, the largest p_C.
+  const infsup::PairingFacts pairing{
+      .problem = setup.problem,
+      .norm = setup.norm,
+      .p = d.smallest_cell_degree,
+      .pc = *std::max_element(d.segment_degrees.begin(), d.segment_degrees.end()),
+      .level = 1,
+      .n = n,
+      .m = d.boundary_mesh->n_segments(),
+      .h_min = infsup::shortest_contact_edge(*d.contact),
+      .ratio = level.scene.ratio.size() == 1 ? std::optional<double>(level.scene.ratio.front().value) : std::nullopt};
   InfSupSummary s;
-  s.alpha = alpha.alpha;
-  s.alpha_error = alpha.alpha_error;
-  s.alpha_converged = alpha.alpha_converged;
+  s.record = infsup::make_infsup_record(pairing, alpha);
   s.reference_level = alpha.reference_level;
   s.lambda_unique = !alpha.singular;
-  s.problem = infsup::to_string(setup.problem);
-  s.norm = infsup::to_string(setup.norm);
   if (setup.elastic) s.primal_norm = operators::to_string(setup.primal_norm);
   s.lambda_min = alpha.lambda_min;
   s.lambda_max = alpha.lambda_max;
-  s.pi = alpha.pi;
   s.eigensolver = alpha.method;
   s.residual = alpha.residual;
-  s.seconds = alpha.seconds;
   s.zone_alpha = alpha.zone_alpha;
   return s;
 }
-
-}  // namespace
 
 InfSupSummary analyse_infsup(Level& level, const StageContext& context, std::optional<io::CsvTable>& mode) {
   context.say("inf-sup constant");
@@ -57,7 +61,7 @@ InfSupSummary analyse_infsup(Level& level, const StageContext& context, std::opt
   if (level.scene.wants_output(scene::Output::mode))
     mode = postprocess::sample_mode(*level.d->contact, *level.d->multipliers, alpha.mode);
   release_whole_mesh(*level.d, level.model->operators_mesh());
-  return infsup_summary(alpha, setup);
+  return infsup_summary(level, setup, alpha);
 }
 
 }  // namespace hpcontact::driver

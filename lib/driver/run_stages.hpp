@@ -14,6 +14,7 @@
 #include "driver/run_outputs.hpp"
 #include "driver/run_result.hpp"
 #include "driver/scene_discretization.hpp"
+#include "infsup/infsup_analysis.hpp"
 #include "io/csv_writer.hpp"
 #include "linalg/distribution.hpp"
 
@@ -58,6 +59,11 @@ void solve_contact_problems(Level& level, const StageContext& context, const std
 
 /// 4. α of the scene's pairing on the level's operators (and its mode with output "mode").
 InfSupSummary analyse_infsup(Level& level, const StageContext& context, std::optional<io::CsvTable>& mode);
+
+/// α of `setup` on the level as reported: the record of its pairing (a single run is level 1; h/H
+/// the scene's when it gives one) and the eigensolver's diagnostics. Used by analyse_infsup and
+/// `hpcontact infsup`.
+InfSupSummary infsup_summary(const Level& level, const infsup::InfSupSetup& setup, const infsup::InfSupResult& alpha);
 
 /// 5. The contact problems on scene.convergence_refinements uniform refinements beyond `base`,
 /// each level with its own operators (recorded into `log` under the level's name, its factors freed

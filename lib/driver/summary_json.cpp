@@ -52,19 +52,20 @@ json contact_json(const ContactResult& c) {
 }
 
 json infsup_json(const InfSupSummary& a) {
-  json j{{"alpha", a.alpha},
-         {"alpha_error", a.alpha_error},
-         {"alpha_converged", a.alpha_converged},
+  const auto& r = a.record;
+  json j{{"alpha", r.alpha},
+         {"alpha_error", r.alpha_error},
+         {"alpha_converged", r.alpha_converged.value_or(true)},
          {"reference_level", a.reference_level},
          {"lambda_unique", a.lambda_unique},
-         {"problem", a.problem},
-         {"norm", a.norm},
+         {"problem", infsup::to_string(r.problem)},
+         {"norm", infsup::to_string(r.norm)},
          {"lambda_min", a.lambda_min},
          {"lambda_max", a.lambda_max},
-         {"Pi", a.pi},
+         {"Pi", r.pi},
          {"eigensolver", a.eigensolver},
          {"residual", a.residual},
-         {"seconds", a.seconds}};
+         {"seconds", r.seconds}};
   if (a.primal_norm) j["primal_norm"] = *a.primal_norm;
   if (!a.zone_alpha.empty()) j["zone_alpha"] = a.zone_alpha;
   return j;

@@ -5,7 +5,7 @@
 #include <algorithm>
 
 #include "core/rank_agreement.hpp"
-#include "driver/elastic_run.hpp"
+#include "driver/elastic_scene.hpp"
 #include "driver/scene_discretization.hpp"
 #include "mesh/boundary_mesh.hpp"
 #include "mesh/contact_boundary.hpp"

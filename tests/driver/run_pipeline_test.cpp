@@ -65,7 +65,9 @@ void expect_summary_matches(const driver::RunResult& result) {
     EXPECT_EQ(summary[contact.problem].contains("total_force"), contact.total_force.has_value());
   }
   ASSERT_EQ(summary.contains("infsup"), result.infsup.has_value());
-  if (result.infsup) EXPECT_EQ(summary["infsup"]["alpha"].get<double>(), result.infsup->alpha);
+  if (result.infsup) {
+    EXPECT_EQ(summary["infsup"]["alpha"].get<double>(), result.infsup->record.alpha);
+  }
 }
 
 }  // namespace
@@ -84,7 +86,7 @@ TEST(RunPipeline, ScalarSceneGivesTypedResultsOfEveryEffect) {
   EXPECT_LT(result.contact("signorini").energy, 0.0);
   EXPECT_THROW(result.contact("tresca"), std::out_of_range);
   ASSERT_TRUE(result.infsup.has_value());
-  EXPECT_GT(result.infsup->alpha, 0.1);  // p = 1, p_C = 0, h/H = 1 on the §7 mesh: stable at n = 8
+  EXPECT_GT(result.infsup->record.alpha, 0.1);  // p = 1, p_C = 0, h/H = 1 on the §7 mesh: stable at n = 8
   EXPECT_FALSE(result.material.has_value());
   expect_summary_matches(result);
 }
@@ -119,7 +121,9 @@ TEST(RunPipeline, ConvergenceRowsOfBothModelsAreCompleteAndAgainstTheFinestLevel
       const auto& row = result.convergence[static_cast<std::size_t>(k)];
       EXPECT_EQ(row.level, k);
       EXPECT_EQ(row.problem, result.contacts.front().problem);
-      if (k > 0) EXPECT_GT(row.n_dofs, result.convergence[static_cast<std::size_t>(k) - 1].n_dofs);
+      if (k > 0) {
+        EXPECT_GT(row.n_dofs, result.convergence[static_cast<std::size_t>(k) - 1].n_dofs);
+      }
     }
     EXPECT_EQ(result.convergence.back().error_energy, 0.0);
     EXPECT_EQ(result.convergence.back().error_lambda, 0.0);

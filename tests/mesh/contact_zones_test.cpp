@@ -131,7 +131,7 @@ TEST(ContactZones, TwoZonesAreTwiceTheHalfProblem) {
   EXPECT_NEAR(zones[0].contact_set_length, half.contact("signorini").contact_set_length, 1e-12);
   // α of each zone's multipliers alone: equal by symmetry, and at least α of the whole (a
   // smaller multiplier space); the zones couple through Ω, so the whole's α is below both.
-  const double alpha = whole.infsup->alpha;
+  const double alpha = whole.infsup->record.alpha;
   const auto& zone_alpha = whole.infsup->zone_alpha;
   ASSERT_EQ(zone_alpha.size(), 2u);
   EXPECT_NEAR(zone_alpha[0], zone_alpha[1], 1e-10);
@@ -144,7 +144,7 @@ TEST(ContactZones, TwoZonesAreTwiceTheHalfProblem) {
                           {{"boundary.contact", std::string("abs(y + 1) < 1e-9"), "test"},
                            {"run.effects", std::vector<std::string>{"infsup"}, "test"}},
                           "bottom");
-  EXPECT_NEAR(bottom.infsup->alpha, zone_alpha[0], 1e-9);
+  EXPECT_NEAR(bottom.infsup->record.alpha, zone_alpha[0], 1e-9);
   // The boundary samples carry their zone.
   const auto samples =
       hpcontact::testing::read_csv(hpcontact::testing::scratch_root() / "zones_two" / "boundary_signorini.csv");

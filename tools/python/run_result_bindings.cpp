@@ -35,14 +35,20 @@ void bind_run_result(py::module_& m) {
       .def("__repr__", [](const ContactResult& c) {
         return "<hpcontact.ContactResult " + c.problem + " energy=" + std::to_string(c.energy) + ">";
       });
+  // α's pairing and value live in the summary's InfSupRecord; Python reads them as attributes.
   py::class_<InfSupSummary>(m, "InfSupSummary", "The inf-sup constant of the scene's pairing")
-      .def_readonly("alpha", &InfSupSummary::alpha)
-      .def_readonly("alpha_error", &InfSupSummary::alpha_error)
-      .def_readonly("alpha_converged", &InfSupSummary::alpha_converged)
+      .def_property_readonly("alpha", [](const InfSupSummary& a) { return a.record.alpha; })
+      .def_property_readonly("alpha_error", [](const InfSupSummary& a) { return a.record.alpha_error; })
+      .def_property_readonly("alpha_converged",
+                             [](const InfSupSummary& a) { return a.record.alpha_converged.value_or(true); })
       .def_readonly("lambda_unique", &InfSupSummary::lambda_unique)
-      .def_readonly("problem", &InfSupSummary::problem)
-      .def_readonly("norm", &InfSupSummary::norm)
-      .def_readonly("pi", &InfSupSummary::pi)
+      .def_property_readonly("problem", [](const InfSupSummary& a) { return infsup::to_string(a.record.problem); })
+      .def_property_readonly("norm", [](const InfSupSummary& a) { return infsup::to_string(a.record.norm); })
+      .def_property_readonly("pi", [](const InfSupSummary& a) { return a.record.pi; })
+      .def_property_readonly("p", [](const InfSupSummary& a) { return a.record.p; })
+      .def_property_readonly("pc", [](const InfSupSummary& a) { return a.record.pc; })
+      .def_property_readonly("h", [](const InfSupSummary& a) { return a.record.h; })
+      .def_property_readonly("H", [](const InfSupSummary& a) { return a.record.H; })
       .def_readonly("zone_alpha", &InfSupSummary::zone_alpha);
   py::class_<RunResult>(m, "RunResult", "What a scene run computed")
       .def_readonly("scene", &RunResult::scene)
