@@ -1,5 +1,6 @@
 // CondensedFactor: per-cell elimination of the interior modes (shared between congruent
-// parallelograms), assembly of the skeleton Schur complement S (lower triangle), CHOLMOD on S.
+// parallelograms), assembly of the skeleton Schur complement S (lower triangle), the skeleton
+// solver the distribution names on S.
 #include "assembly/condensed_factor.hpp"
 
 #include <fmt/format.h>
@@ -14,6 +15,7 @@
 #include "core/petsc_session.hpp"
 #include "core/rank_agreement.hpp"
 #include "linalg/row_exchange.hpp"
+#include "linalg/skeleton_solver_factory.hpp"
 #include "mesh/cell_partition.hpp"
 
 namespace hpcontact::assembly {
@@ -28,21 +30,6 @@ struct CondensedFactor::CellBlock {
 };
 
 namespace {
-
-// Tells the user (once per process, on rank 0) when substructuring's dense interface problem
-// outweighs the ranks' factors: adding ranks then costs memory per rank instead of saving it.
-void note_if_interface_dominates(const linalg::SubstructuredCholesky& factor) {
-  static bool noted = false;
-  if (noted || mpi_rank_and_size().first != 0 ||
-      !linalg::interface_outweighs_factors(factor.interface_entries(), factor.mean_factor_nonzeros()))
-    return;
-  noted = true;
-  fmt::print(stderr,
-             "hpcontact: note: substructuring's dense interface problem ({} unknowns between the parts (and Γ_C), "
-             "{:.0f} MB per rank) outweighs the ranks' sparse factors ({:.0f} MB on average): more ranks gain "
-             "little memory per rank; --distributed-solver mumps or bddc hold no interface matrix\n",
-             factor.interface_size(), factor.interface_entries() * 8e-6, factor.mean_factor_nonzeros() * 8e-6);
-}
 
 // The row of a cell's shape s: its dof in global order, or its entry of `cell_rows` (the rows of
 // the cell's shapes in a vector held at the rank's local dofs) when given.
@@ -107,34 +94,15 @@ CondensedFactor::CondensedFactor(std::unique_ptr<const CellSystem> system, const
   else
     lower = eliminate_interiors(contributes);
   find_local_dofs(std::move(contributes));
-  switch (distribution.solver) {
-    case linalg::DistributedSolver::serial: {
-      Eigen::SparseMatrix<double> schur(n_skeleton, n_skeleton);
-      schur.setFromTriplets(lower.begin(), lower.end());
-      lower = {};
-      serial_ = std::make_unique<linalg::SparseCholesky>(schur, trailing);
-      break;
-    }
-    case linalg::DistributedSolver::substructuring:
-      substructured_ = std::make_unique<linalg::SubstructuredCholesky>(ranks, n_skeleton, lower, trailing);
-      note_if_interface_dominates(*substructured_);
-      break;
-    case linalg::DistributedSolver::mumps:
-      mumps_ = std::make_unique<linalg::DistributedCholesky>(ranks, n_skeleton, lower, trailing);
-      break;
-    case linalg::DistributedSolver::bddc:
-      bddc_ = std::make_unique<linalg::BddcSolver>(ranks, n_skeleton, lower, 1e-12, local_bddc_hints());
-      break;
-  }
+  skeleton_solver_ = linalg::make_skeleton_solver(n_skeleton, std::move(lower), trailing, distribution,
+                                                  [this] { return local_bddc_hints(); });
   // The skeleton solver's local unknowns are the skeleton dofs of the rank's cells (each has its
   // diagonal entry from S_T): solve_local passes rows between the two without a lookup. (Agreed
   // over the ranks: a rank failing alone would leave the others waiting in a collective call.)
   if (distributed)
     run_on_all_ranks_agreeing(
         [&] {
-          const std::vector<int>& unknowns = substructured_ ? substructured_->local_unknowns()
-                                             : mumps_       ? mumps_->local_unknowns()
-                                                            : bddc_->local_unknowns();
+          const std::vector<int>& unknowns = skeleton_solver_->local_unknowns();
           HPC_VERIFY(std::equal(unknowns.begin(), unknowns.end(), local_dofs().begin(),
                                 local_dofs().begin() + n_local_skeleton_),
                      "the skeleton solver's local unknowns differ from the skeleton dofs of the rank's cells");
@@ -303,18 +271,6 @@ CondensedFactor::~CondensedFactor() = default;
 CondensedFactor::CondensedFactor(CondensedFactor&&) noexcept = default;
 CondensedFactor& CondensedFactor::operator=(CondensedFactor&&) noexcept = default;
 
-Eigen::MatrixXd CondensedFactor::skeleton_solve(const Eigen::MatrixXd& rhs) const {
-  if (serial_) return serial_->solve(rhs);
-  if (bddc_) return bddc_->solve(rhs);
-  return substructured_ ? substructured_->solve(rhs) : mumps_->solve(rhs);
-}
-
-Eigen::MatrixXd CondensedFactor::skeleton_solve_local(const Eigen::MatrixXd& partial_rhs) const {
-  if (serial_) return serial_->solve(partial_rhs);
-  if (bddc_) return bddc_->solve_local(partial_rhs);
-  return substructured_ ? substructured_->solve_local(partial_rhs) : mumps_->solve_local(partial_rhs);
-}
-
 Eigen::MatrixXd CondensedFactor::interior_corrections(const Eigen::MatrixXd& rhs, bool local,
                                                       Eigen::Index n_skeleton_rows) const {
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(n_skeleton_rows, rhs.cols());
@@ -359,7 +315,7 @@ Eigen::MatrixXd CondensedFactor::solve(const Eigen::MatrixXd& rhs) const {
   Eigen::MatrixXd condensed = interior_corrections(rhs, false, n_skeleton);
   if (distribution_.distributed()) sum_over_ranks(distribution_.ranks, condensed.data(), condensed.size());
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(size_, rhs.cols());
-  out.topRows(n_skeleton) = skeleton_solve(condensed + rhs.topRows(n_skeleton));
+  out.topRows(n_skeleton) = skeleton_solver_->solve(condensed + rhs.topRows(n_skeleton));
   // Each rank recovers its own cells' interior modes (the unknowns after the skeleton, each in one
   // cell); distributed, the other ranks' (zero here) are summed in.
   recover_interiors(rhs, false, out);
@@ -381,8 +337,8 @@ Eigen::MatrixXd CondensedFactor::solve_local(const Eigen::MatrixXd& partial_rhs)
   // right-hand side, and the condensation adds up within the rank: the skeleton solver sums the
   // shares.
   Eigen::MatrixXd out(partial_rhs.rows(), partial_rhs.cols());
-  out.topRows(n_local_skeleton_) = skeleton_solve_local(interior_corrections(partial_rhs, true, n_local_skeleton_) +
-                                                        partial_rhs.topRows(n_local_skeleton_));
+  out.topRows(n_local_skeleton_) = skeleton_solver_->solve_local(
+      interior_corrections(partial_rhs, true, n_local_skeleton_) + partial_rhs.topRows(n_local_skeleton_));
   recover_interiors(partial_rhs, true, out);
   return out;
 }
@@ -396,12 +352,8 @@ Eigen::MatrixXd CondensedFactor::schur_complement(const linalg::Coupling& b) con
   for (int row = 0; skeleton_only && row < b.outerSize(); ++row)
     for (linalg::Coupling::InnerIterator it(b, row); it; ++it)
       if (it.col() >= n_skeleton && it.value() != 0.0) skeleton_only = false;
-  if (skeleton_only) {
-    const auto b_skeleton = linalg::squeezed<linalg::Coupling>(b.leftCols(n_skeleton));
-    if (serial_) return serial_->schur_complement(b_skeleton);
-    if (bddc_) return bddc_->schur_complement(b_skeleton);
-    return substructured_ ? substructured_->schur_complement(b_skeleton) : mumps_->schur_complement(b_skeleton);
-  }
+  if (skeleton_only)
+    return skeleton_solver_->schur_complement(linalg::squeezed<linalg::Coupling>(b.leftCols(n_skeleton)));
   const Eigen::MatrixXd result = b * solve(Eigen::MatrixXd(b.transpose()));
   return 0.5 * (result + result.transpose());
 }
@@ -436,10 +388,7 @@ double CondensedFactor::cell_quadratic_forms(const Eigen::VectorXd& u, bool loca
   return sum;
 }
 
-std::optional<linalg::BddcIterations> CondensedFactor::iterations() const {
-  if (bddc_) return bddc_->iterations();
-  return std::nullopt;
-}
+std::optional<linalg::IterationCounts> CondensedFactor::iterations() const { return skeleton_solver_->iterations(); }
 
 void log_iterations(const CondensedFactor* factor, const std::string& name, OperatorLog* log) {
   if (!factor || !log) return;

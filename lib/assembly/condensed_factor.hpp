@@ -1,7 +1,7 @@
 // Factorization of a system assembled cell by cell (a K + b M on S^p(T_h), or elasticity on
 // [S^p(T_h)]²) by static condensation: every cell's interior modes are eliminated cell by cell,
-// and the Schur complement on the skeleton (vertex and edge dofs) is factorized by CHOLMOD,
-// optionally with a trailing set (the Γ_C trace) last.
+// and the Schur complement on the skeleton (vertex and edge dofs) is factorized (CHOLMOD, or a
+// distributed solver), optionally with a trailing set (the Γ_C trace) last.
 #pragma once
 
 #include <Eigen/Core>
@@ -16,10 +16,8 @@
 #include "core/operator_log.hpp"
 #include "linalg/bddc_solver.hpp"
 #include "linalg/coupling_matrix.hpp"
-#include "linalg/distributed_cholesky.hpp"
 #include "linalg/distribution.hpp"
-#include "linalg/sparse_cholesky.hpp"
-#include "linalg/substructured_cholesky.hpp"
+#include "linalg/skeleton_solver.hpp"
 #include "space/h1_space.hpp"
 
 namespace hpcontact::assembly {
@@ -39,12 +37,13 @@ namespace hpcontact::assembly {
 /// PT-Scotch, whichever cuts fewer edges (mesh/cell_partition.hpp); each rank eliminates only its own part's cells and
 /// contributes their S_T to S; condensing a right-hand side, recovering the interior modes and the quadratic form add
 /// up the ranks' parts. Vectors are either replicated (solve, quadratic_form) or held at each rank's own cells' dofs
-/// (solve_local and the other *_local members, with right-hand sides as the ranks' shares). S is then factorized either
-/// by substructuring (default, SubstructuredCholesky): each rank factorizes the skeleton dofs only its part touches,
-/// and the dofs between parts and the trailing set form a small dense interface problem whose trailing block gives B
-/// A⁻¹ Bᵀ; or by MUMPS on an MPIAIJ matrix (DistributedCholesky), whose Schur complement on the trailing set gives B
-/// A⁻¹ Bᵀ the same way; or kept unassembled as MATIS, each rank's part its subdomain, and solved by CG + BDDC
-/// (BddcSolver), B A⁻¹ Bᵀ again by solves.
+/// (solve_local and the other *_local members, with right-hand sides as the ranks' shares). S is solved by the
+/// linalg::SkeletonSolver the distribution names (make_skeleton_solver): CHOLMOD serially; distributed, substructuring
+/// (default, SubstructuredCholesky): each rank factorizes the skeleton dofs only its part touches, and the dofs between
+/// parts and the trailing set form a small dense interface problem whose trailing block gives B A⁻¹ Bᵀ; or MUMPS on an
+/// MPIAIJ matrix (DistributedCholesky), whose Schur complement on the trailing set gives B A⁻¹ Bᵀ the same way; or
+/// kept unassembled as MATIS, each rank's part its subdomain, and solved by CG + BDDC (BddcSolver), B A⁻¹ Bᵀ again
+/// by solves.
 class CondensedFactor {
  public:
   /// `trailing`: dofs (skeleton dofs only) ordered last in the factorization of S.
@@ -100,7 +99,7 @@ class CondensedFactor {
   /// uᵀ A u for u held at local_dofs() (each rank its own). Collective.
   double quadratic_form_local(const Eigen::VectorXd& u_local) const;
   /// The conjugate gradients' iterations so far (BDDC); empty for a direct solver.
-  std::optional<linalg::BddcIterations> iterations() const;
+  std::optional<linalg::IterationCounts> iterations() const;
 
  private:
   struct CellBlock;
@@ -115,10 +114,6 @@ class CondensedFactor {
   /// The system's null motions, fields and boundary at the local skeleton dofs (distributed: what
   /// BDDC learns of the rank's subdomain beyond its matrix).
   linalg::BddcHints local_bddc_hints() const;
-  /// S⁻¹ rhs on the skeleton, shape (n_skeleton, k).
-  Eigen::MatrixXd skeleton_solve(const Eigen::MatrixXd& rhs) const;
-  /// The same with each rank's share at its local skeleton dofs.
-  Eigen::MatrixXd skeleton_solve_local(const Eigen::MatrixXd& partial_rhs) const;
   /// −Σ_T (A_ii⁻¹ A_is)ᵀ f_i over this rank's cells, on the skeleton rows (n_skeleton_rows of them);
   /// rhs and the result held at the local dofs when `local`, else in global order.
   Eigen::MatrixXd interior_corrections(const Eigen::MatrixXd& rhs, bool local, Eigen::Index n_skeleton_rows) const;
@@ -133,15 +128,12 @@ class CondensedFactor {
   std::vector<std::unique_ptr<CellBlock>> blocks_;
   std::vector<int> block_of_cell_;
   int n_trailing_ = 0;
-  LocalRows rows_;                                  ///< see local_rows(), local_dofs()
-  std::vector<long> cell_row_start_;                ///< per own cell: its first entry of cell_rows_ (distributed)
-  std::vector<int> cell_rows_;                      ///< the local rows of the own cells' shapes (−1: Dirichlet)
-  std::vector<char> counts_dof_;                    ///< per local dof: this rank is the lowest holding it (distributed)
-  int n_local_skeleton_ = 0;                        ///< local dofs in the skeleton (the first ones)
-  std::unique_ptr<linalg::SparseCholesky> serial_;  ///< one of the four, by the distribution
-  std::unique_ptr<linalg::SubstructuredCholesky> substructured_;
-  std::unique_ptr<linalg::DistributedCholesky> mumps_;
-  std::unique_ptr<linalg::BddcSolver> bddc_;
+  LocalRows rows_;                    ///< see local_rows(), local_dofs()
+  std::vector<long> cell_row_start_;  ///< per own cell: its first entry of cell_rows_ (distributed)
+  std::vector<int> cell_rows_;        ///< the local rows of the own cells' shapes (−1: Dirichlet)
+  std::vector<char> counts_dof_;      ///< per local dof: this rank is the lowest holding it (distributed)
+  int n_local_skeleton_ = 0;          ///< local dofs in the skeleton (the first ones)
+  std::unique_ptr<linalg::SkeletonSolver> skeleton_solver_;  ///< S's solver, the one the distribution names
   /// Distributed: the cells are split over distribution_.ranks and per-cell work is summed over them.
   linalg::Distribution distribution_;
 };

@@ -22,7 +22,7 @@ struct BddcSolver::Impl {
   PetscHandle<KSP, KSPDestroy> ksp;
   PetscInt row_begin = 0, row_end = 0;
   std::optional<RowExchange> exchange;  ///< between the subdomain's unknowns and the rank's rows
-  mutable BddcIterations iterations;
+  mutable IterationCounts iterations;
 };
 
 namespace {
@@ -227,14 +227,14 @@ BddcSolver::~BddcSolver() {
 BddcSolver::BddcSolver(BddcSolver&&) noexcept = default;
 BddcSolver& BddcSolver::operator=(BddcSolver&&) noexcept = default;
 
-BddcIterations BddcSolver::iterations() const { return impl_->iterations; }
+std::optional<IterationCounts> BddcSolver::iterations() const { return impl_->iterations; }
 
 namespace {
 
 // One solve: the rank's rows of the right-hand side in, the rank's rows of the solution into
 // `owned_solution` (both `owned` long: the rows PETSc gives the rank).
 void solve_column(KSP ksp, Mat a, const double* owned_rhs, PetscInt owned, double* owned_solution,
-                  BddcIterations& count) {
+                  IterationCounts& count) {
   PetscHandle<Vec, VecDestroy> b, x;
   HPC_PETSC_CALL(MatCreateVecs(a, x.out(), b.out()));
   PetscScalar* array = nullptr;

@@ -12,19 +12,13 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "linalg/coupling_matrix.hpp"
+#include "linalg/skeleton_solver.hpp"
 
 namespace hpcontact::linalg {
-
-/// Iterations of the conjugate gradients over all solves of one BddcSolver. `round_off_stops`:
-/// solves where CG stopped on an indefinite preconditioner or a breakdown at round-off and the true
-/// residual ‖b − A x‖ met 100 × the relative tolerance, so the answer was kept.
-struct BddcIterations {
-  long solves = 0, total = 0, round_off_stops = 0;
-  int largest = 0;
-};
 
 /// What a rank tells BDDC of the unknowns its entries touch (ascending, as local_unknowns()),
 /// beyond its matrix; each may be empty.
@@ -42,7 +36,7 @@ struct BddcHints {
   std::vector<int> natural_boundary;
 };
 
-class BddcSolver {
+class BddcSolver : public SkeletonSolver {
  public:
   /// `lower_entries`: this rank's contributions (row ≥ col) to the lower triangle of the n × n
   /// matrix, summed where they meet. `relative_tolerance`: of the preconditioned residual (with
@@ -53,23 +47,24 @@ class BddcSolver {
   /// `hints`: what the rank knows of its subdomain's unknowns beyond the matrix (BddcHints).
   BddcSolver(MPI_Comm ranks, int n, const std::vector<Eigen::Triplet<double>>& lower_entries,
              double relative_tolerance = 1e-12, const BddcHints& hints = {});
-  ~BddcSolver();
+  ~BddcSolver() override;
   BddcSolver(BddcSolver&&) noexcept;
   BddcSolver& operator=(BddcSolver&&) noexcept;
 
-  int size() const { return size_; }
+  int size() const override { return size_; }
   /// A⁻¹ rhs, shape (n, k), the same on every rank. Collective.
   /// @throws NumericalError (on every rank) if the iteration does not converge.
-  Eigen::MatrixXd solve(const Eigen::MatrixXd& rhs) const;
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& rhs) const override;
   /// The unknowns this rank's entries touch (its subdomain's, ascending): the rows of solve_local.
-  const std::vector<int>& local_unknowns() const;
+  const std::vector<int>& local_unknowns() const override;
   /// A⁻¹ b for b = Σ_r b_r: each rank passes its share b_r at its local unknowns (shape
   /// (local_unknowns().size(), k), k the same on every rank) and receives A⁻¹ b there. Collective.
-  Eigen::MatrixXd solve_local(const Eigen::MatrixXd& partial_rhs) const;
+  Eigen::MatrixXd solve_local(const Eigen::MatrixXd& partial_rhs) const override;
   /// B A⁻¹ Bᵀ, dense symmetric (m, m), the same on every rank, for B (m, n) replicated: one
   /// solve per row of B, each rank multiplying its own rows of the solution. Collective.
-  Eigen::MatrixXd schur_complement(const Coupling& b) const;
-  BddcIterations iterations() const;
+  Eigen::MatrixXd schur_complement(const Coupling& b) const override;
+  /// The conjugate gradients' iterations over all solves so far.
+  std::optional<IterationCounts> iterations() const override;
 
  private:
   struct Impl;

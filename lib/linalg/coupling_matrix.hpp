@@ -5,6 +5,7 @@
 #pragma once
 
 #include <Eigen/SparseCore>
+#include <vector>
 
 namespace hpcontact::linalg {
 
@@ -17,6 +18,18 @@ template <class Matrix>
 Matrix squeezed(Matrix matrix) {
   matrix.data().squeeze();
   return matrix;
+}
+
+/// The columns of B that hold a nonzero: the trailing set that makes B A⁻¹ Bᵀ cheap.
+inline std::vector<int> nonzero_columns(const Coupling& b) {
+  std::vector<char> used(b.cols(), 0);
+  for (int row = 0; row < b.outerSize(); ++row)
+    for (Coupling::InnerIterator it(b, row); it; ++it)
+      if (it.value() != 0.0) used[it.col()] = 1;
+  std::vector<int> out;
+  for (int j = 0; j < static_cast<int>(b.cols()); ++j)
+    if (used[j]) out.push_back(j);
+  return out;
 }
 
 }  // namespace hpcontact::linalg

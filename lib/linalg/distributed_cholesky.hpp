@@ -12,10 +12,11 @@
 #include <vector>
 
 #include "linalg/coupling_matrix.hpp"
+#include "linalg/skeleton_solver.hpp"
 
 namespace hpcontact::linalg {
 
-class DistributedCholesky {
+class DistributedCholesky : public SkeletonSolver {
  public:
   /// `lower_entries`: this rank's contributions (row ≥ col) to the lower triangle of the n × n
   /// matrix; contributions to one entry, from one rank or several, are summed. `trailing` (the
@@ -27,23 +28,23 @@ class DistributedCholesky {
   /// null pivot of MUMPS's LDLᵀ, or with a trailing set an S_T that is not positive definite).
   DistributedCholesky(MPI_Comm ranks, int n, const std::vector<Eigen::Triplet<double>>& lower_entries,
                       const std::vector<int>& trailing = {});
-  ~DistributedCholesky();
+  ~DistributedCholesky() override;
   DistributedCholesky(DistributedCholesky&&) noexcept;
   DistributedCholesky& operator=(DistributedCholesky&&) noexcept;
 
-  int size() const { return size_; }
+  int size() const override { return size_; }
   /// A⁻¹ rhs, shape (n, k), the same on every rank. Collective.
-  Eigen::MatrixXd solve(const Eigen::MatrixXd& rhs) const;
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& rhs) const override;
   /// The unknowns this rank's entries touch (ascending): the rows of solve_local.
-  const std::vector<int>& local_unknowns() const;
+  const std::vector<int>& local_unknowns() const override;
   /// A⁻¹ b for b = Σ_r b_r: each rank passes its share b_r at its local unknowns (shape
   /// (local_unknowns().size(), k), k the same on every rank) and receives A⁻¹ b there; PETSc moves
   /// the rows to and from their owners. Collective.
-  Eigen::MatrixXd solve_local(const Eigen::MatrixXd& partial_rhs) const;
+  Eigen::MatrixXd solve_local(const Eigen::MatrixXd& partial_rhs) const override;
   /// B A⁻¹ Bᵀ, dense symmetric (m, m), the same on every rank; B (m, n) replicated. From S_T when
   /// B's nonzero columns lie in the trailing set, else by solves in blocks of 64 columns.
   /// Collective.
-  Eigen::MatrixXd schur_complement(const Coupling& b) const;
+  Eigen::MatrixXd schur_complement(const Coupling& b) const override;
   /// |T|: the size of the dense Schur complement MUMPS returned (0 without a trailing set).
   int trailing_size() const;
 

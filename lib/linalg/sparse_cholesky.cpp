@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <numeric>
 
 #include "core/error.hpp"
 #include "linalg/schur_complement.hpp"
@@ -118,8 +119,9 @@ std::vector<int> interior_first_ordering(const Eigen::SparseMatrix<double>& a, c
 }  // namespace
 
 SparseCholesky::SparseCholesky(const Eigen::SparseMatrix<double>& matrix, const std::vector<int>& trailing)
-    : impl_(std::make_unique<Impl>()), size_(static_cast<int>(matrix.rows())) {
+    : impl_(std::make_unique<Impl>()), size_(static_cast<int>(matrix.rows())), all_unknowns_(size_) {
   HPC_VERIFY(matrix.rows() == matrix.cols(), "Cholesky of a non-square matrix");
+  std::iota(all_unknowns_.begin(), all_unknowns_.end(), 0);
   // CHOLMOD reads only the lower triangle of a matrix marked symmetric-lower, so the whole matrix
   // is handed over without a copy when it is compressed (CHOLMOD does not write to it).
   Eigen::SparseMatrix<double> compressed;
@@ -230,17 +232,6 @@ Eigen::MatrixXd SparseCholesky::schur_complement(const Coupling& b) const {
   return schur_complement_through_trailing(
       b, impl_->trailing_factor, [this](int j) { return impl_->trailing_position[j]; },
       [this](const Eigen::MatrixXd& rhs) { return solve(rhs); });
-}
-
-std::vector<int> nonzero_columns(const Coupling& b) {
-  std::vector<char> used(b.cols(), 0);
-  for (int row = 0; row < b.outerSize(); ++row)
-    for (Coupling::InnerIterator it(b, row); it; ++it)
-      if (it.value() != 0.0) used[it.col()] = 1;
-  std::vector<int> out;
-  for (int j = 0; j < static_cast<int>(b.cols()); ++j)
-    if (used[j]) out.push_back(j);
-  return out;
 }
 
 }  // namespace hpcontact::linalg

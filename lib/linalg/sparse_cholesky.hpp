@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "linalg/coupling_matrix.hpp"
+#include "linalg/skeleton_solver.hpp"
 
 namespace hpcontact::linalg {
 
@@ -20,19 +21,24 @@ namespace hpcontact::linalg {
 /// the trailing set, L⁻¹ P Bᵀ vanishes outside the trailing rows, so
 ///     B A⁻¹ Bᵀ = Wᵀ W,   W = L_tt⁻¹ (B P_tᵀ)ᵀ,
 /// i.e. the Steklov–Poincaré condensation onto the trace: one factorization, then dense work of
-/// size |trailing| — no solve with the full factor per column of B.
-class SparseCholesky {
+/// size |trailing| — no solve with the full factor per column of B. As a SkeletonSolver it is the
+/// serial one: its local unknowns are all n, solve_local is solve.
+class SparseCholesky : public SkeletonSolver {
  public:
   /// @throws NumericalError if the matrix is not positive definite (with the failing column).
   explicit SparseCholesky(const Eigen::SparseMatrix<double>& matrix, const std::vector<int>& trailing = {});
-  ~SparseCholesky();
+  ~SparseCholesky() override;
   SparseCholesky(SparseCholesky&&) noexcept;
   SparseCholesky& operator=(SparseCholesky&&) noexcept;
 
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const;
   /// Solves for several right-hand sides at once, shape (n, k).
-  Eigen::MatrixXd solve(const Eigen::MatrixXd& rhs) const;
-  int size() const { return size_; }
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& rhs) const override;
+  int size() const override { return size_; }
+  /// 0, …, n − 1: one process holds every unknown.
+  const std::vector<int>& local_unknowns() const override { return all_unknowns_; }
+  /// solve: the one share is the whole right-hand side.
+  Eigen::MatrixXd solve_local(const Eigen::MatrixXd& partial_rhs) const override { return solve(partial_rhs); }
   /// Number of unknowns ordered last (0 without a trailing set).
   int n_trailing() const;
   /// The trailing block L_tt of the factor, dense lower triangular (n_trailing, n_trailing):
@@ -46,15 +52,13 @@ class SparseCholesky {
   /// B A⁻¹ Bᵀ, dense symmetric (m, m), for B of shape (m, n). Through the trailing block when
   /// every column of B with a nonzero lies in the trailing set, otherwise by solves in blocks of
   /// 64 columns.
-  Eigen::MatrixXd schur_complement(const Coupling& b) const;
+  Eigen::MatrixXd schur_complement(const Coupling& b) const override;
 
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
   int size_ = 0;
+  std::vector<int> all_unknowns_;  ///< see local_unknowns()
 };
-
-/// The columns of B that hold a nonzero: the trailing set that makes B A⁻¹ Bᵀ cheap.
-std::vector<int> nonzero_columns(const Coupling& b);
 
 }  // namespace hpcontact::linalg

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "linalg/coupling_matrix.hpp"
+#include "linalg/skeleton_solver.hpp"
 
 namespace hpcontact::linalg {
 
@@ -33,7 +34,7 @@ namespace hpcontact::linalg {
 /// definite where its part of the domain floats, so it factorizes A_r + D_r (D_r its own diagonal
 /// on G ∩ r) and subtracts D_r from the trailing block again. On one rank G = C: the serial
 /// trailing-block factorization.
-class SubstructuredCholesky {
+class SubstructuredCholesky : public SkeletonSolver {
  public:
   /// `lower_entries`: this rank's contributions (row ≥ col) to the lower triangle of the n × n
   /// matrix; contributions to one entry are summed. `trailing`: the same on every rank.
@@ -42,11 +43,11 @@ class SubstructuredCholesky {
   /// has no entries.
   SubstructuredCholesky(MPI_Comm ranks, int n, const std::vector<Eigen::Triplet<double>>& lower_entries,
                         const std::vector<int>& trailing);
-  ~SubstructuredCholesky();
+  ~SubstructuredCholesky() override;
   SubstructuredCholesky(SubstructuredCholesky&&) noexcept;
   SubstructuredCholesky& operator=(SubstructuredCholesky&&) noexcept;
 
-  int size() const { return size_; }
+  int size() const override { return size_; }
   /// |G|: the size of the dense interface problem (unknowns shared by ranks, and the trailing set
   /// when it joined them).
   int interface_size() const;
@@ -55,17 +56,17 @@ class SubstructuredCholesky {
   /// Nonzeros of the ranks' sparse (CHOLMOD) factors, averaged over the ranks.
   double mean_factor_nonzeros() const { return mean_factor_nonzeros_; }
   /// A⁻¹ rhs, shape (n, k), the same on every rank. Collective.
-  Eigen::MatrixXd solve(const Eigen::MatrixXd& rhs) const;
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& rhs) const override;
   /// The unknowns this rank's entries touch (ascending): the rows of solve_local.
-  const std::vector<int>& local_unknowns() const;
+  const std::vector<int>& local_unknowns() const override;
   /// A⁻¹ b for b = Σ_r b_r: each rank passes its share b_r at its local unknowns (shape
   /// (local_unknowns().size(), k), k the same on every rank) and receives A⁻¹ b there. Only the
   /// interface rows (|G| × k) are summed over the ranks. Collective.
-  Eigen::MatrixXd solve_local(const Eigen::MatrixXd& partial_rhs) const;
+  Eigen::MatrixXd solve_local(const Eigen::MatrixXd& partial_rhs) const override;
   /// B A⁻¹ Bᵀ, dense symmetric (m, m), the same on every rank, for B (m, n) replicated: from L_CC,
   /// the trailing block of chol(S_G), when B's nonzero columns lie in the trailing set, otherwise by solves
   /// in blocks of 64 columns. Collective.
-  Eigen::MatrixXd schur_complement(const Coupling& b) const;
+  Eigen::MatrixXd schur_complement(const Coupling& b) const override;
 
  private:
   /// B A⁻¹ Bᵀ by solves in blocks of 64 rows of B, each rank multiplying B's columns at its own

@@ -184,7 +184,7 @@ int run(const std::string& solver, const std::string& split, bool indefinite, bo
     const linalg::BddcSolver factor(MPI_COMM_WORLD, n, mine);
     solution = factor.solve(rhs), schur = factor.schur_complement(b), schur_out = factor.schur_complement(b_out);
     check_local(factor, solution);
-    if (rank == 0) fmt::print("iterations_largest {}\n", factor.iterations().largest);
+    if (rank == 0) fmt::print("iterations_largest {}\n", factor.iterations()->largest);
   } else {
     throw_bad_input("distributed_factor_check", "SOLVER", solver, "substructuring | mumps | bddc");
   }
