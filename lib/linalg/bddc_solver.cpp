@@ -116,12 +116,8 @@ void mark_natural_boundary(PC pc, MPI_Comm ranks, const RowExchange& exchange,
   HPC_PETSC_CALL(PCBDDCSetNeumannBoundariesLocal(pc, local_index_set(members).get()));
 }
 
-}  // namespace
-
-BddcSolver::BddcSolver(MPI_Comm ranks, int n, const std::vector<Eigen::Triplet<double>>& lower_entries,
-                       double relative_tolerance, const BddcHints& hints)
-    : impl_(std::make_unique<Impl>()), ranks_(ranks), size_(n) {
-  // 1. The rank's subdomain: the unknowns its entries touch, numbered locally in global order.
+// The unknowns the rank's entries touch (global indices, ascending): its subdomain.
+std::vector<PetscInt> subdomain_unknowns(int n, const std::vector<Eigen::Triplet<double>>& lower_entries) {
   std::vector<PetscInt> global;
   global.reserve(2 * lower_entries.size());
   for (const auto& entry : lower_entries) {
@@ -131,18 +127,22 @@ BddcSolver::BddcSolver(MPI_Comm ranks, int n, const std::vector<Eigen::Triplet<d
   }
   std::sort(global.begin(), global.end());
   global.erase(std::unique(global.begin(), global.end()), global.end());
+  return global;
+}
+
+// The MATIS `a` of the ranks' subdomains: each rank's local matrix holds its contributions (both
+// triangles) at its unknowns `subdomain`, numbered locally in global order.
+void create_unassembled_matrix(MPI_Comm ranks, int n, const std::vector<PetscInt>& subdomain,
+                               const std::vector<Eigen::Triplet<double>>& lower_entries, Mat* a) {
   auto local_of = [&](PetscInt g) {
-    return static_cast<PetscInt>(std::lower_bound(global.begin(), global.end(), g) - global.begin());
+    return static_cast<PetscInt>(std::lower_bound(subdomain.begin(), subdomain.end(), g) - subdomain.begin());
   };
-  const auto n_local = static_cast<PetscInt>(global.size());
   PetscHandle<ISLocalToGlobalMapping, ISLocalToGlobalMappingDestroy> map;
-  HPC_PETSC_CALL(ISLocalToGlobalMappingCreate(ranks, 1, n_local, global.data(), PETSC_COPY_VALUES, map.out()));
-  // 2. MATIS: the local matrix holds the rank's contributions (both triangles).
-  Mat& a = *impl_->matrix.out();
-  HPC_PETSC_CALL(MatCreateIS(ranks, 1, PETSC_DECIDE, PETSC_DECIDE, n, n, map.get(), map.get(), &a));
+  HPC_PETSC_CALL(ISLocalToGlobalMappingCreate(ranks, 1, static_cast<PetscInt>(subdomain.size()), subdomain.data(),
+                                              PETSC_COPY_VALUES, map.out()));
+  HPC_PETSC_CALL(MatCreateIS(ranks, 1, PETSC_DECIDE, PETSC_DECIDE, n, n, map.get(), map.get(), a));
   Mat local = nullptr;
-  HPC_PETSC_CALL(MatISGetLocalMat(a, &local));
-  std::vector<PetscInt> row_nonzeros(n_local, 0);
+  HPC_PETSC_CALL(MatISGetLocalMat(*a, &local));
   std::vector<PetscInt> rows, cols;
   std::vector<PetscScalar> values;
   for (const auto& entry : lower_entries) {
@@ -153,30 +153,35 @@ BddcSolver::BddcSolver(MPI_Comm ranks, int n, const std::vector<Eigen::Triplet<d
   HPC_PETSC_CALL(MatSetType(local, MATSEQAIJ));
   HPC_PETSC_CALL(MatSetPreallocationCOO(local, static_cast<PetscCount>(rows.size()), rows.data(), cols.data()));
   HPC_PETSC_CALL(MatSetValuesCOO(local, values.data(), ADD_VALUES));
-  HPC_PETSC_CALL(MatISRestoreLocalMat(a, &local));
-  HPC_PETSC_CALL(MatAssemblyBegin(a, MAT_FINAL_ASSEMBLY));
-  HPC_PETSC_CALL(MatAssemblyEnd(a, MAT_FINAL_ASSEMBLY));
-  HPC_PETSC_CALL(MatSetOption(a, MAT_SYMMETRIC, PETSC_TRUE));
-  HPC_PETSC_CALL(MatSetOption(a, MAT_SPD, PETSC_TRUE));
-  HPC_PETSC_CALL(MatGetOwnershipRange(a, &impl_->row_begin, &impl_->row_end));
-  impl_->exchange.emplace(ranks, n, static_cast<int>(impl_->row_begin), static_cast<int>(impl_->row_end),
-                          std::vector<int>(global.begin(), global.end()));
-  // A subdomain that touches no Dirichlet part floats: its Neumann problem is singular (constants,
-  // or elasticity's rigid motions, which BDDC's vertex and edge constraints remove only from the
-  // coarse problem), and PETSc's own LU stops on the zero pivot. MUMPS with null-pivot detection
-  // (ICNTL(24)) solves it; set unless the user chose otherwise.
+  HPC_PETSC_CALL(MatISRestoreLocalMat(*a, &local));
+  HPC_PETSC_CALL(MatAssemblyBegin(*a, MAT_FINAL_ASSEMBLY));
+  HPC_PETSC_CALL(MatAssemblyEnd(*a, MAT_FINAL_ASSEMBLY));
+  HPC_PETSC_CALL(MatSetOption(*a, MAT_SYMMETRIC, PETSC_TRUE));
+  HPC_PETSC_CALL(MatSetOption(*a, MAT_SPD, PETSC_TRUE));
+}
+
+// A subdomain that touches no Dirichlet part floats: its Neumann problem is singular (constants,
+// or elasticity's rigid motions, which BDDC's vertex and edge constraints remove only from the
+// coarse problem), and PETSc's own LU stops on the zero pivot. MUMPS with null-pivot detection
+// (ICNTL(24)) solves it; set unless the user chose otherwise.
+void solve_floating_subdomains_by_mumps() {
   for (const auto& [name, value] : {std::pair{"-bddc_pc_bddc_neumann_pc_factor_mat_solver_type", "mumps"},
                                     std::pair{"-bddc_pc_bddc_neumann_mat_mumps_icntl_24", "1"}}) {
     PetscBool set = PETSC_FALSE;
     HPC_PETSC_CALL(PetscOptionsHasName(nullptr, nullptr, name, &set));
     if (!set) HPC_PETSC_CALL(PetscOptionsSetValue(nullptr, name, value));
   }
-  // The near null space (elasticity's rigid motions) joins BDDC's coarse space unless the user
-  // sets -bddc_pc_bddc_use_nnsp 0. Since BDDC is told the fields and the natural boundary it
-  // converged in every run (six elastic scenes on 3, 4, 6 and 8 ranks) and kept CG's iterations
-  // nearly flat in the ranks (elastic square n = 32: 16.5 … 19.2 per solve, against 19.7 … 29
-  // without). Before, it made the preconditioner indefinite on the 8 × 8 square on 3 ranks.
-  const Eigen::MatrixXd& near_null_space = hints.near_null_space;
+}
+
+// The near null space (elasticity's rigid motions) joins BDDC's coarse space unless the user
+// sets -bddc_pc_bddc_use_nnsp 0. Since BDDC is told the fields and the natural boundary it
+// converged in every run (six elastic scenes on 3, 4, 6 and 8 ranks) and kept CG's iterations
+// nearly flat in the ranks (elastic square n = 32: 16.5 … 19.2 per solve, against 19.7 … 29
+// without). Before, it made the preconditioner indefinite on the 8 × 8 square on 3 ranks.
+// Attaches it to `a`; returns whether BDDC is to use it by the default rather than the user's
+// choice (which PCBDDC reads from the options only).
+bool attach_near_null_space(Mat a, MPI_Comm ranks, const Eigen::MatrixXd& near_null_space, PetscInt n_local,
+                            const RowExchange& exchange) {
   int motion_columns = static_cast<int>(near_null_space.cols());
   MPI_Allreduce(MPI_IN_PLACE, &motion_columns, 1, MPI_INT, MPI_MAX, ranks);
   PetscBool use_motions = motion_columns > 0 ? PETSC_TRUE : PETSC_FALSE, user_chose = PETSC_FALSE;
@@ -186,15 +191,18 @@ BddcSolver::BddcSolver(MPI_Comm ranks, int n, const std::vector<Eigen::Triplet<d
     int fits = near_null_space.rows() == n_local && near_null_space.cols() == motion_columns ? 1 : 0;
     MPI_Allreduce(MPI_IN_PLACE, &fits, 1, MPI_INT, MPI_LAND, ranks);
     HPC_VERIFY(fits, "BDDC: near null space not at the ranks' unknowns");
-    set_near_null_space(a, impl_->exchange->consistent_to_owned(near_null_space));
+    set_near_null_space(a, exchange.consistent_to_owned(near_null_space));
   }
-  // 3. CG + BDDC with PETSc's default (multiplicity) scaling. -bddc_pc_bddc_use_deluxe_scaling
-  // saves 0-27 % of the iterations on the scenes measured (docs/user_guide.md), but in Debian 12's
-  // PETSc 3.18 with MUMPS 5.5 it fails on some splits (INFOG(1) = -46, a solve with no right-hand
-  // side, in PCBDDCSetUpCorrection; -8 in the deluxe Schur complements; both on test_07's graph
-  // Laplacian): an option, not the default.
-  KSP& ksp = *impl_->ksp.out();
-  HPC_PETSC_CALL(KSPCreate(ranks, &ksp));
+  return !user_chose && use_motions && motion_columns > 0;
+}
+
+// CG + BDDC on `a` with PETSc's default (multiplicity) scaling, told the hints' fields and
+// natural boundary. -bddc_pc_bddc_use_deluxe_scaling saves 0-27 % of the iterations on the scenes
+// measured (docs/user_guide.md), but in Debian 12's PETSc 3.18 with MUMPS 5.5 it fails on some
+// splits (INFOG(1) = -46, a solve with no right-hand side, in PCBDDCSetUpCorrection; -8 in the
+// deluxe Schur complements; both on test_07's graph Laplacian): an option, not the default.
+void set_up_conjugate_gradients(KSP ksp, Mat a, MPI_Comm ranks, PetscInt n_local, const BddcHints& hints,
+                                const RowExchange& exchange, double relative_tolerance, bool default_motions) {
   HPC_PETSC_CALL(KSPSetOptionsPrefix(ksp, "bddc_"));
   HPC_PETSC_CALL(KSPSetOperators(ksp, a, a));
   HPC_PETSC_CALL(KSPSetType(ksp, KSPCG));
@@ -202,7 +210,7 @@ BddcSolver::BddcSolver(MPI_Comm ranks, int n, const std::vector<Eigen::Triplet<d
   HPC_PETSC_CALL(KSPGetPC(ksp, &pc));
   HPC_PETSC_CALL(PCSetType(pc, PCBDDC));
   split_fields(pc, ranks, n_local, hints.fields);
-  mark_natural_boundary(pc, ranks, *impl_->exchange, hints.natural_boundary);
+  mark_natural_boundary(pc, ranks, exchange, hints.natural_boundary);
   HPC_PETSC_CALL(KSPSetTolerances(ksp, relative_tolerance, 0.0, PETSC_DEFAULT, 2000));
   // Relative to the initial residual, not to the preconditioned right-hand side: PCBDDC's pre-solve
   // starts CG from the subdomain interiors' solution, and for some right-hand sides (met on a Gmsh
@@ -211,12 +219,32 @@ BddcSolver::BddcSolver(MPI_Comm ranks, int n, const std::vector<Eigen::Triplet<d
   HPC_PETSC_CALL(KSPConvergedDefaultSetUIRNorm(ksp));
   // (PCBDDC reads use_nnsp from the options only: set for this solver alone, so that it does not
   // become the user's choice for the next one)
-  const bool default_motions = !user_chose && use_motions && motion_columns > 0;
   if (default_motions) HPC_PETSC_CALL(PetscOptionsSetValue(nullptr, "-bddc_pc_bddc_use_nnsp", "1"));
   const PetscErrorCode set_from_options = KSPSetFromOptions(ksp);
   if (default_motions) HPC_PETSC_CALL(PetscOptionsClearValue(nullptr, "-bddc_pc_bddc_use_nnsp"));
   HPC_PETSC_CALL(set_from_options);
   HPC_PETSC_CALL(KSPSetUp(ksp));
+}
+
+}  // namespace
+
+BddcSolver::BddcSolver(MPI_Comm ranks, int n, const std::vector<Eigen::Triplet<double>>& lower_entries,
+                       double relative_tolerance, const BddcHints& hints)
+    : impl_(std::make_unique<Impl>()), ranks_(ranks), size_(n) {
+  // The rank's subdomain (the unknowns its entries touch) and its Neumann matrix in a MATIS.
+  const std::vector<PetscInt> subdomain = subdomain_unknowns(n, lower_entries);
+  const auto n_local = static_cast<PetscInt>(subdomain.size());
+  create_unassembled_matrix(ranks, n, subdomain, lower_entries, impl_->matrix.out());
+  Mat a = impl_->matrix.get();
+  HPC_PETSC_CALL(MatGetOwnershipRange(a, &impl_->row_begin, &impl_->row_end));
+  impl_->exchange.emplace(ranks, n, static_cast<int>(impl_->row_begin), static_cast<int>(impl_->row_end),
+                          std::vector<int>(subdomain.begin(), subdomain.end()));
+  // What BDDC needs beyond the matrix, then the iteration.
+  solve_floating_subdomains_by_mumps();
+  const bool default_motions = attach_near_null_space(a, ranks, hints.near_null_space, n_local, *impl_->exchange);
+  HPC_PETSC_CALL(KSPCreate(ranks, impl_->ksp.out()));
+  set_up_conjugate_gradients(impl_->ksp.get(), a, ranks, n_local, hints, *impl_->exchange, relative_tolerance,
+                             default_motions);
 }
 
 BddcSolver::~BddcSolver() {

@@ -66,37 +66,47 @@ Eigen::MatrixXd replicated_trailing_schur(MPI_Comm ranks, Mat factor, int size) 
   return schur;
 }
 
-}  // namespace
-
-DistributedCholesky::DistributedCholesky(MPI_Comm ranks, int n,
-                                         const std::vector<Eigen::Triplet<double>>& lower_entries,
-                                         const std::vector<int>& trailing)
-    : impl_(std::make_unique<Impl>()), ranks_(ranks), size_(n) {
+// A's entries in both triangles, as PETSc's COO arrays: MUMPS's Cholesky reads the upper one of
+// an AIJ matrix.
+struct CooEntries {
   std::vector<PetscInt> rows, cols;
   std::vector<PetscScalar> values;
-  rows.reserve(2 * lower_entries.size());
-  cols.reserve(2 * lower_entries.size());
-  values.reserve(2 * lower_entries.size());
+};
+
+CooEntries both_triangles(int n, const std::vector<Eigen::Triplet<double>>& lower_entries) {
+  CooEntries out;
+  out.rows.reserve(2 * lower_entries.size());
+  out.cols.reserve(2 * lower_entries.size());
+  out.values.reserve(2 * lower_entries.size());
   for (const auto& entry : lower_entries) {
     HPC_VERIFY(entry.row() >= entry.col() && entry.row() < n, "distributed Cholesky: entry outside the lower triangle");
-    rows.push_back(entry.row()), cols.push_back(entry.col()), values.push_back(entry.value());
+    out.rows.push_back(entry.row()), out.cols.push_back(entry.col()), out.values.push_back(entry.value());
     if (entry.row() != entry.col())
-      rows.push_back(entry.col()), cols.push_back(entry.row()), values.push_back(entry.value());
+      out.rows.push_back(entry.col()), out.cols.push_back(entry.row()), out.values.push_back(entry.value());
   }
-  impl_->trailing = trailing;
+  return out;
+}
+
+// Each trailing unknown's row of S_T (its place in `trailing`).
+SortedIndexMap trailing_positions(int n, const std::vector<int>& trailing) {
   std::vector<std::pair<int, int>> positions;
   for (std::size_t k = 0; k < trailing.size(); ++k) {
     HPC_VERIFY(trailing[k] >= 0 && trailing[k] < n, "distributed Cholesky: trailing set outside the unknowns");
     positions.emplace_back(trailing[k], static_cast<int>(k));
   }
-  impl_->trailing_position = SortedIndexMap(std::move(positions));  // (refuses a repeated index)
-  Mat& a = *impl_->matrix.out();
-  HPC_PETSC_CALL(MatCreate(ranks, &a));
-  HPC_PETSC_CALL(MatSetSizes(a, PETSC_DECIDE, PETSC_DECIDE, n, n));
-  HPC_PETSC_CALL(MatSetType(a, MATAIJ));
-  HPC_PETSC_CALL(MatSetPreallocationCOO(a, static_cast<PetscCount>(rows.size()), rows.data(), cols.data()));
-  HPC_PETSC_CALL(MatSetValuesCOO(a, values.data(), ADD_VALUES));
-  HPC_PETSC_CALL(MatSetOption(a, MAT_SYMMETRIC, PETSC_TRUE));
+  return SortedIndexMap(std::move(positions));  // (refuses a repeated index)
+}
+
+// The MPIAIJ matrix `a` (rows in contiguous blocks) summed from every rank's `entries` (not const:
+// PETSc 3.18's COO preallocation takes its index arrays so).
+void assemble_matrix(MPI_Comm ranks, int n, CooEntries& entries, bool with_schur_set, Mat* a) {
+  HPC_PETSC_CALL(MatCreate(ranks, a));
+  HPC_PETSC_CALL(MatSetSizes(*a, PETSC_DECIDE, PETSC_DECIDE, n, n));
+  HPC_PETSC_CALL(MatSetType(*a, MATAIJ));
+  HPC_PETSC_CALL(MatSetPreallocationCOO(*a, static_cast<PetscCount>(entries.rows.size()), entries.rows.data(),
+                                        entries.cols.data()));
+  HPC_PETSC_CALL(MatSetValuesCOO(*a, entries.values.data(), ADD_VALUES));
+  HPC_PETSC_CALL(MatSetOption(*a, MAT_SYMMETRIC, PETSC_TRUE));
   // Declared positive definite, MUMPS runs its SYM = 1 LDLᵀ, whose Schur complement comes back
   // under mpirun with zero off-diagonal entries (PETSc 3.18.5, MUMPS 5.5: S_T off by 80 % in
   // test_07 on 2 and 3 ranks, right on one). With a Schur set the matrix is therefore declared
@@ -105,14 +115,20 @@ DistributedCholesky::DistributedCholesky(MPI_Comm ranks, int n,
   // stays SYM = 1: ScaLAPACK then factorizes the root front, and only its Cholesky (SYM = 1)
   // refuses an indefinite one there; SYM = 2 would count no negative pivots in it (PETSc asks
   // for ICNTL(13) = 1 before it reports an inertia).
-  if (trailing.empty()) HPC_PETSC_CALL(MatSetOption(a, MAT_SPD, PETSC_TRUE));
-  HPC_PETSC_CALL(MatGetOwnershipRange(a, &impl_->row_begin, &impl_->row_end));
+  if (!with_schur_set) HPC_PETSC_CALL(MatSetOption(*a, MAT_SPD, PETSC_TRUE));
+}
+
+// The unknowns among `rows`, ascending, each once.
+std::vector<int> touched_unknowns(const std::vector<PetscInt>& rows) {
   std::vector<int> touched(rows.begin(), rows.end());
   std::sort(touched.begin(), touched.end());
   touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
-  impl_->exchange.emplace(ranks, n, impl_->row_begin, impl_->row_end, std::move(touched));
-  Mat& f = *impl_->factor.out();
-  HPC_PETSC_CALL(MatGetFactor(a, MATSOLVERMUMPS, MAT_FACTOR_CHOLESKY, &f));
+  return touched;
+}
+
+// MUMPS's factor `f` of `a`, with `trailing` as its Schur set.
+void factorize_by_mumps(MPI_Comm ranks, Mat a, const std::vector<int>& trailing, Mat* f) {
+  HPC_PETSC_CALL(MatGetFactor(a, MATSOLVERMUMPS, MAT_FACTOR_CHOLESKY, f));
   if (!trailing.empty()) {
     // PETSc's MUMPS interface takes a parallel Schur set only when rank 0 holds all of it: S_T
     // comes back whole on rank 0.
@@ -122,38 +138,47 @@ DistributedCholesky::DistributedCholesky(MPI_Comm ranks, int n,
     PetscHandle<IS, ISDestroy> schur_set;
     HPC_PETSC_CALL(ISCreateGeneral(PETSC_COMM_SELF, static_cast<PetscInt>(indices.size()), indices.data(),
                                    PETSC_COPY_VALUES, schur_set.out()));
-    HPC_PETSC_CALL(MatFactorSetSchurIS(f, schur_set.get()));
+    HPC_PETSC_CALL(MatFactorSetSchurIS(*f, schur_set.get()));
   }
   // Null pivots counted (INFOG(28)), not passed over: SYM = 2 with a Schur set otherwise replaces
   // a zero pivot of A_II by a static pivot and factorizes a singular matrix without complaint.
-  HPC_PETSC_CALL(MatMumpsSetIcntl(f, 24, 1));
+  HPC_PETSC_CALL(MatMumpsSetIcntl(*f, 24, 1));
   MatFactorInfo info;
   HPC_PETSC_CALL(MatFactorInfoInitialize(&info));
-  HPC_PETSC_CALL(MatCholeskyFactorSymbolic(f, a, nullptr, &info));
-  HPC_PETSC_CALL(MatCholeskyFactorNumeric(f, a, &info));
+  HPC_PETSC_CALL(MatCholeskyFactorSymbolic(*f, a, nullptr, &info));
+  HPC_PETSC_CALL(MatCholeskyFactorNumeric(*f, a, &info));
+}
+
+// What MUMPS's error code INFOG(1) means for the user.
+const char* mumps_failure_meaning(PetscInt infog1) {
+  if (infog1 == -10 || infog1 == -40) return "the matrix is not positive definite, or singular";
+  if (infog1 == -6) return "the matrix is singular";
+  if (infog1 == -8 || infog1 == -9 || infog1 == -14 || infog1 == -15 || infog1 == -17)
+    return "its workspace was too small: raise -mat_mumps_icntl_14 (percent of extra space)";
+  if (infog1 == -13) return "out of memory";
+  if (infog1 == -38)
+    return "parallel analysis (-mat_mumps_icntl_28 2) needs PT-Scotch or ParMETIS, which this MUMPS lacks";
+  if (infog1 == -39)
+    return "options MUMPS cannot combine, e.g. parallel analysis (-mat_mumps_icntl_28 2) with a Schur complement";
+  return "see MUMPS's manual for INFOG(1)";
+}
+
+// @throws NumericalError if MUMPS's factorization `f` of the n × n matrix failed or met a
+// negative or null pivot (the same on every rank).
+void check_mumps_factor(Mat f, int n) {
   MatFactorError error = MAT_FACTOR_NOERROR;
   HPC_PETSC_CALL(MatFactorGetError(f, &error));
   if (error != MAT_FACTOR_NOERROR) {
     PetscInt infog1 = 0, infog2 = 0;
     HPC_PETSC_CALL(MatMumpsGetInfog(f, 1, &infog1));
     HPC_PETSC_CALL(MatMumpsGetInfog(f, 2, &infog2));
-    const char* meaning = infog1 == -10 || infog1 == -40 ? "the matrix is not positive definite, or singular"
-                          : infog1 == -6                 ? "the matrix is singular"
-                          : infog1 == -8 || infog1 == -9 || infog1 == -14 || infog1 == -15 || infog1 == -17
-                              ? "its workspace was too small: raise -mat_mumps_icntl_14 (percent of extra space)"
-                          : infog1 == -13 ? "out of memory"
-                          : infog1 == -38 ? "parallel analysis (-mat_mumps_icntl_28 2) needs PT-Scotch or ParMETIS, "
-                                            "which this MUMPS lacks"
-                          : infog1 == -39 ? "options MUMPS cannot combine, e.g. parallel analysis "
-                                            "(-mat_mumps_icntl_28 2) with a Schur complement"
-                                          : "see MUMPS's manual for INFOG(1)";
     throw NumericalError(
         fmt::format("MUMPS's factorization of a {0}x{0} matrix failed: INFOG(1) = {1}, INFOG(2) = {2} ({3})", n, infog1,
-                    infog2, meaning));
+                    infog2, mumps_failure_meaning(infog1)));
   }
   // MUMPS's LDLᵀ runs to the end over negative and null pivots and only counts them (INFOG(12) and
   // INFOG(28), the same on every rank). With a Schur set the root front is S_T itself, not
-  // factorized by ScaLAPACK, so the counts cover all of A_II; S_T's own Cholesky below checks the rest.
+  // factorized by ScaLAPACK, so the counts cover all of A_II; S_T's own Cholesky checks the rest.
   for (const auto& [infog, kind, meaning] : {std::tuple{12, "negative", "not positive definite"},
                                              std::tuple{28, "null", "singular, not positive definite"}}) {
     PetscInt count = 0;
@@ -163,10 +188,29 @@ DistributedCholesky::DistributedCholesky(MPI_Comm ranks, int n,
           fmt::format("MUMPS's factorization of a {0}x{0} matrix met {1} {2} pivot{3}: the matrix is {4}", n, count,
                       kind, count > 1 ? "s" : "", meaning));
   }
+}
+
+}  // namespace
+
+DistributedCholesky::DistributedCholesky(MPI_Comm ranks, int n,
+                                         const std::vector<Eigen::Triplet<double>>& lower_entries,
+                                         const std::vector<int>& trailing)
+    : impl_(std::make_unique<Impl>()), ranks_(ranks), size_(n) {
+  impl_->trailing = trailing;
+  impl_->trailing_position = trailing_positions(n, trailing);
+  {
+    CooEntries entries = both_triangles(n, lower_entries);
+    assemble_matrix(ranks, n, entries, !trailing.empty(), impl_->matrix.out());
+    HPC_PETSC_CALL(MatGetOwnershipRange(impl_->matrix.get(), &impl_->row_begin, &impl_->row_end));
+    impl_->exchange.emplace(ranks, n, impl_->row_begin, impl_->row_end, touched_unknowns(entries.rows));
+  }
+  factorize_by_mumps(ranks, impl_->matrix.get(), trailing, impl_->factor.out());
+  check_mumps_factor(impl_->factor.get(), n);
   if (!trailing.empty()) {
     // Solves on the interior problem A_II only (MUMPS's ICNTL(26) = 0); S_T is solved here.
-    HPC_PETSC_CALL(MatMumpsSetIcntl(f, 26, 0));
-    impl_->trailing_schur.compute(replicated_trailing_schur(ranks, f, static_cast<int>(trailing.size())));
+    HPC_PETSC_CALL(MatMumpsSetIcntl(impl_->factor.get(), 26, 0));
+    impl_->trailing_schur.compute(
+        replicated_trailing_schur(ranks, impl_->factor.get(), static_cast<int>(trailing.size())));
     if (impl_->trailing_schur.info() != Eigen::Success)
       throw NumericalError("distributed Cholesky (MUMPS): the Schur complement on the " +
                            std::to_string(trailing.size()) + " trailing unknowns is not positive definite");

@@ -48,6 +48,19 @@ struct SubstructuredCholesky::Impl {
   /// last) into `local` and keeps S_r + D_r in `shifted_schur`; returns D_r.
   Eigen::VectorXd factor_own_part(const std::vector<Eigen::Triplet<double>>& lower_entries,
                                   const std::unordered_map<int, int>& local_index);
+  /// factor_own_part on every rank of `ranks`, a failure on one agreed on by all, so that none
+  /// waits in a collective call. Collective.
+  Eigen::VectorXd factor_own_part_on_every_rank(MPI_Comm ranks,
+                                                const std::vector<Eigen::Triplet<double>>& lower_entries,
+                                                const std::unordered_map<int, int>& local_index);
+  /// The interface G (`interface`, `interface_position`, `n_trailing`, `trailing_position`): the
+  /// unknowns `shared` between ranks, then the trailing set when it joins them
+  /// (trailing_joins_interface; `n_entries`: this rank's entries). Collective.
+  void choose_interface(MPI_Comm ranks, const std::vector<int>& shared, const std::vector<int>& trailing_sorted,
+                        std::size_t n_entries);
+  /// This rank's unknowns among `touched`: `interior` first, then `own_interface`, and where each
+  /// sits in `touched`; returns every touched unknown's position in that order.
+  std::unordered_map<int, int> number_own_unknowns(const std::vector<int>& touched);
 };
 
 Eigen::VectorXd SubstructuredCholesky::Impl::factor_own_part(const std::vector<Eigen::Triplet<double>>& lower_entries,
@@ -91,15 +104,28 @@ Eigen::VectorXd SubstructuredCholesky::Impl::factor_own_part(const std::vector<E
   return shift;
 }
 
-SubstructuredCholesky::SubstructuredCholesky(MPI_Comm ranks, int n,
-                                             const std::vector<Eigen::Triplet<double>>& lower_entries,
-                                             const std::vector<int>& trailing)
-    : impl_(std::make_unique<Impl>()), ranks_(ranks), size_(n) {
-  Impl& d = *impl_;
-  d.rank = rank_and_size(ranks).first;
-  // 1. The unknowns this rank's entries touch, and those that more than one rank touches.
-  // (A hash set: the entries are many times the unknowns they touch, and sorting them all took
-  // 20 % of a factorization's time at 1e6 dofs.)
+Eigen::VectorXd SubstructuredCholesky::Impl::factor_own_part_on_every_rank(
+    MPI_Comm ranks, const std::vector<Eigen::Triplet<double>>& lower_entries,
+    const std::unordered_map<int, int>& local_index) {
+  Eigen::VectorXd shift;
+  std::exception_ptr failure;
+  try {
+    shift = factor_own_part(lower_entries, local_index);
+  } catch (...) {
+    failure = std::current_exception();
+  }
+  double failed = failure ? 1.0 : 0.0;
+  sum_over_ranks(ranks, &failed, 1);
+  if (failure) std::rethrow_exception(failure);
+  if (failed != 0.0) throw NumericalError("substructured Cholesky: the factorization failed on another rank");
+  return shift;
+}
+
+namespace {
+
+// The unknowns this rank's entries touch, ascending. (A hash set: the entries are many times the
+// unknowns they touch, and sorting them all took 20 % of a factorization's time at 1e6 dofs.)
+std::vector<int> touched_unknowns(int n, const std::vector<Eigen::Triplet<double>>& lower_entries) {
   std::unordered_set<int> touched_set;
   for (const auto& entry : lower_entries) {
     HPC_VERIFY(entry.col() >= 0 && entry.row() >= entry.col() && entry.row() < n,
@@ -109,81 +135,101 @@ SubstructuredCholesky::SubstructuredCholesky(MPI_Comm ranks, int n,
   std::vector<int> touched(touched_set.begin(), touched_set.end());
   touched_set = {};
   std::sort(touched.begin(), touched.end());
-  const std::vector<int> shared = shared_unknowns(ranks, n, touched);
-  std::vector<int> trailing_sorted = trailing;
-  std::sort(trailing_sorted.begin(), trailing_sorted.end());
-  trailing_sorted.erase(std::unique(trailing_sorted.begin(), trailing_sorted.end()), trailing_sorted.end());
-  HPC_VERIFY(trailing_sorted.empty() || (trailing_sorted.front() >= 0 && trailing_sorted.back() < n),
-             "trailing index out of range");
-  const auto is_trailing = [&](int i) { return std::binary_search(trailing_sorted.begin(), trailing_sorted.end(), i); };
-  // 2. The interface: shared unknowns, then the trailing set, each in index order. The trailing
-  // set joins it where that is the cheaper way to B A⁻¹ Bᵀ, counted per rank and per multiplier
-  // (taking as many multipliers as trailing unknowns, the most a trace carries). In it: t²/3 + s·t
-  // of dense factorization shared by the ranks (t trailing, s shared unknowns), and t² to apply
-  // its factor, which every rank holds whole. Out of it (each trailing unknown interior to the
-  // rank that touches it alone): two sweeps through the rank's factor, at least twice the entries
-  // it holds, and through the interface's factor, 2·s² shared by the ranks
-  // (schur_complement_by_solves). So the graded trace of the extension norm's references stays out
-  // (t = 4481, s = 923 at n = 64 on 2 ranks: 2.5e7 against 7.9e6), and the annulus' trace on 2
-  // ranks joins (t = 1577, s = 747: 3.5e6 against 6.7e6; out of it, S took 20.8 s, not 0.4 s).
-  // Memory bounds it too: the t² of the trailing block held by every rank must not outweigh the
-  // rank's share of the matrix entries (the cells' entries, duplicates counted: a proxy for its
-  // factor, known before factorizing) beyond 64 MB, or more ranks would gain no memory
-  // (interface_outweighs_factors).
-  std::size_t n_shared = 0;
-  for (int i : shared) n_shared += !is_trailing(i);
+  return touched;
+}
+
+// The trailing set ascending, each unknown once.
+std::vector<int> sorted_trailing(int n, const std::vector<int>& trailing) {
+  std::vector<int> sorted = trailing;
+  std::sort(sorted.begin(), sorted.end());
+  sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+  HPC_VERIFY(sorted.empty() || (sorted.front() >= 0 && sorted.back() < n), "trailing index out of range");
+  return sorted;
+}
+
+// Whether the trailing set joins the interface: where that is the cheaper way to B A⁻¹ Bᵀ, counted
+// per rank and per multiplier (taking as many multipliers as trailing unknowns, the most a trace
+// carries). In it: t²/3 + s·t of dense factorization shared by the ranks (t trailing, s shared
+// unknowns), and t² to apply its factor, which every rank holds whole. Out of it (each trailing
+// unknown interior to the rank that touches it alone): two sweeps through the rank's factor, at
+// least twice the entries it holds, and through the interface's factor, 2·s² shared by the ranks
+// (schur_complement_by_solves). So the graded trace of the extension norm's references stays out
+// (t = 4481, s = 923 at n = 64 on 2 ranks: 2.5e7 against 7.9e6), and the annulus' trace on 2
+// ranks joins (t = 1577, s = 747: 3.5e6 against 6.7e6; out of it, S took 20.8 s, not 0.4 s).
+// Memory bounds it too: the t² of the trailing block held by every rank must not outweigh the
+// rank's share of the matrix entries (`n_entries`, the cells' entries, duplicates counted: a proxy
+// for its factor, known before factorizing) beyond 64 MB, or more ranks would gain no memory
+// (interface_outweighs_factors). The same answer on every rank. Collective.
+bool trailing_joins_interface(MPI_Comm ranks, double t, double s, std::size_t n_entries) {
   const int n_ranks = rank_and_size(ranks).second;
-  double entries_per_rank = static_cast<double>(lower_entries.size()) / n_ranks;
-  sum_over_ranks(ranks, &entries_per_rank, 1);  // (the same decision on every rank)
-  const double t = static_cast<double>(trailing_sorted.size()), s = static_cast<double>(n_shared);
+  double entries_per_rank = static_cast<double>(n_entries) / n_ranks;
+  sum_over_ranks(ranks, &entries_per_rank, 1);
   const double in_interface = (t * t / 3 + s * t) / n_ranks + t * t;
   const double by_solves = 2 * entries_per_rank + 2 * s * s / n_ranks;
-  const bool trailing_in_interface =
-      n_ranks == 1 || (in_interface <= by_solves && !interface_outweighs_factors(t * t, entries_per_rank));
+  return n_ranks == 1 || (in_interface <= by_solves && !interface_outweighs_factors(t * t, entries_per_rank));
+}
+
+}  // namespace
+
+void SubstructuredCholesky::Impl::choose_interface(MPI_Comm ranks, const std::vector<int>& shared,
+                                                   const std::vector<int>& trailing_sorted, std::size_t n_entries) {
+  const auto is_trailing = [&](int i) { return std::binary_search(trailing_sorted.begin(), trailing_sorted.end(), i); };
+  std::size_t n_shared = 0;
+  for (int i : shared) n_shared += !is_trailing(i);
+  const bool joins = trailing_joins_interface(ranks, static_cast<double>(trailing_sorted.size()),
+                                              static_cast<double>(n_shared), n_entries);
+  // Shared unknowns, then the trailing set, each in index order.
   for (int i : shared)
-    if (!trailing_in_interface || !is_trailing(i)) d.interface.push_back(i);
+    if (!joins || !is_trailing(i)) interface.push_back(i);
   std::vector<std::pair<int, int>> positions;
-  if (trailing_in_interface)
-    for (int i : trailing_sorted) positions.emplace_back(i, d.n_trailing++), d.interface.push_back(i);
-  d.trailing_position = SortedIndexMap(std::move(positions));
+  if (joins)
+    for (int i : trailing_sorted) positions.emplace_back(i, n_trailing++), interface.push_back(i);
+  trailing_position = SortedIndexMap(std::move(positions));
   positions.clear();
-  for (int g = 0; g < static_cast<int>(d.interface.size()); ++g) positions.emplace_back(d.interface[g], g);
-  d.interface_position = SortedIndexMap(std::move(positions));
-  // 3. This rank's unknowns: its interior first, then the interface positions it touches.
-  positions.clear();
+  for (int g = 0; g < static_cast<int>(interface.size()); ++g) positions.emplace_back(interface[g], g);
+  interface_position = SortedIndexMap(std::move(positions));
+}
+
+std::unordered_map<int, int> SubstructuredCholesky::Impl::number_own_unknowns(const std::vector<int>& touched) {
+  std::vector<std::pair<int, int>> positions;
   for (int i : touched)
-    if (d.interface_position.find(i) < 0)
-      positions.emplace_back(i, static_cast<int>(d.interior.size())), d.interior.push_back(i);
-  const int n_interior = static_cast<int>(d.interior.size());
-  for (int g = 0; g < static_cast<int>(d.interface.size()); ++g)
-    if (std::binary_search(touched.begin(), touched.end(), d.interface[g])) {
-      positions.emplace_back(d.interface[g], n_interior + static_cast<int>(d.own_interface.size()));
-      d.own_interface.push_back(g);
+    if (interface_position.find(i) < 0)
+      positions.emplace_back(i, static_cast<int>(interior.size())), interior.push_back(i);
+  const int n_interior = static_cast<int>(interior.size());
+  for (int g = 0; g < static_cast<int>(interface.size()); ++g)
+    if (std::binary_search(touched.begin(), touched.end(), interface[g])) {
+      positions.emplace_back(interface[g], n_interior + static_cast<int>(own_interface.size()));
+      own_interface.push_back(g);
     }
-  for (int i : d.interior)
-    d.interior_slot.push_back(static_cast<int>(std::lower_bound(touched.begin(), touched.end(), i) - touched.begin()));
-  for (int g : d.own_interface)
-    d.own_interface_slot.push_back(
-        static_cast<int>(std::lower_bound(touched.begin(), touched.end(), d.interface[g]) - touched.begin()));
+  const auto slot = [&](int i) {
+    return static_cast<int>(std::lower_bound(touched.begin(), touched.end(), i) - touched.begin());
+  };
+  for (int i : interior) interior_slot.push_back(slot(i));
+  for (int g : own_interface) own_interface_slot.push_back(slot(interface[g]));
   // A hash map: factor_own_part looks up both ends of every entry.
   std::unordered_map<int, int> local_index(positions.size());
   for (const auto& [index, position] : positions) local_index.emplace(index, position);
-  positions = {};
-  // 4. S_r + D_r: the trailing block of the local factor, or the matrix itself without interior.
-  // A failure on one rank is agreed on by all, so that none waits in a collective call.
-  Eigen::VectorXd shift;  // D_r: this rank's own diagonal on G
-  std::exception_ptr failure;
-  try {
-    shift = d.factor_own_part(lower_entries, local_index);
-  } catch (...) {
-    failure = std::current_exception();
-  }
-  double failed = failure ? 1.0 : 0.0;
-  sum_over_ranks(ranks, &failed, 1);
-  if (failure) std::rethrow_exception(failure);
-  if (failed != 0.0) throw NumericalError("substructured Cholesky: the factorization failed on another rank");
-  const int n_own = static_cast<int>(d.own_interface.size());
+  return local_index;
+}
+
+SubstructuredCholesky::SubstructuredCholesky(MPI_Comm ranks, int n,
+                                             const std::vector<Eigen::Triplet<double>>& lower_entries,
+                                             const std::vector<int>& trailing)
+    : impl_(std::make_unique<Impl>()), ranks_(ranks), size_(n) {
+  Impl& d = *impl_;
+  d.rank = rank_and_size(ranks).first;
+  // 1. The unknowns this rank's entries touch, and those that more than one rank touches.
+  std::vector<int> touched = touched_unknowns(n, lower_entries);
+  const std::vector<int> shared = shared_unknowns(ranks, n, touched);
+  // 2. The interface G: the shared unknowns, and the trailing set where it joins them.
+  d.choose_interface(ranks, shared, sorted_trailing(n, trailing), lower_entries.size());
+  // 3. This rank's unknowns: its interior first, then the interface positions it touches.
+  const std::unordered_map<int, int> local_index = d.number_own_unknowns(touched);
+  // 4. S_r + D_r (D_r: this rank's own diagonal on G): the trailing block of the local factor, or
+  // the matrix itself without interior.
+  const Eigen::VectorXd shift = d.factor_own_part_on_every_rank(ranks, lower_entries, local_index);
   // 5. S_G = Σ_r (S_r + D_r − D_r), held and factorized over the ranks.
+  const int n_own = static_cast<int>(d.own_interface.size());
   for (int k = 0; k < n_own; ++k) d.shifted_schur(k, k) -= shift(k);
   d.interface_factor.emplace(ranks, static_cast<int>(d.interface.size()), d.n_trailing, d.own_interface,
                              d.shifted_schur);
