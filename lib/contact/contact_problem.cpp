@@ -102,96 +102,132 @@ assembly::DirichletLift::LiftedLoad problem_load_share(const ContactSetup& setup
                            primal.distribution());
 }
 
+// The problem's coupling and constraints: B (B^s for (13)) in the nodal multiplier basis and the
+// offset of the gap it measures, (ℓ_i, g) for (9), less B w with Dirichlet data u = u_0 + w.
+struct NodalCoupling {
+  std::string name;  ///< "B" or "B^s" (S is shared between problems by it)
+  MultiplierConstraints constraints;
+  linalg::Coupling matrix;
+  Eigen::VectorXd gap_offset;
+};
+
+NodalCoupling assemble_nodal_coupling(const ContactSetup& setup, const operators::PrimalOperators& primal,
+                                      const space::MultiplierSpace& multipliers, const assembly::DirichletLift* lift) {
+  const bool weighted = setup.problem == ContactProblem::friction;
+  const assembly::BoundaryFunction weight = weighted ? setup.bound : assembly::BoundaryFunction{};
+  NodalCoupling out;
+  out.name = weighted ? "B^s" : "B";
+  const linalg::Coupling& coupling_legendre = primal.coupling(multipliers, weight, out.name);
+  out.constraints = build_multiplier_constraints(setup, multipliers, primal.contact());
+  const linalg::Coupling to_nodal = out.constraints.to_nodal.sparseView();
+  out.matrix = linalg::squeezed<linalg::Coupling>((to_nodal * coupling_legendre).pruned());
+  out.gap_offset = Eigen::VectorXd::Zero(multipliers.n_dofs());
+  if (setup.problem == ContactProblem::signorini) {
+    Stopwatch obstacle_clock;
+    out.gap_offset =
+        out.constraints.to_nodal * assembly::assemble_multiplier_load(primal.contact(), multipliers, setup.obstacle);
+    if (primal.log()) primal.log()->record("g", multipliers.n_dofs(), 1, obstacle_clock.seconds());
+  }
+  // The constraints act on u_0 + w: B u_0 against (ℓ_i, g) − B w.
+  if (lift)
+    out.gap_offset -= to_nodal * lift->times(assembly::assemble_coupling(lift->extended_scalar(), primal.contact(),
+                                                                         multipliers, weight));
+  return out;
+}
+
+// The condensed problem min ½ λᵀSλ − dᵀλ: S = B K⁻¹ Bᵀ, d = B u_free − gap_offset with u_free =
+// K⁻¹ F, and the load that u is recovered from.
+struct CondensedProblem {
+  assembly::DirichletLift::LiftedLoad load;  ///< this rank's share of F (of u_0's), the energy's constant
+  const Eigen::MatrixXd& s;
+  Eigen::VectorXd b_u_free, d;
+};
+
+// Condensation onto the Γ_C trace: the trace dofs ordered last in the factorization, so that
+// S = B K⁻¹ Bᵀ is dense algebra on the trailing block of the factor. S depends on the coupling
+// alone (its key holds the multiplier space's layout): problems sharing B share S. Distributed,
+// the vectors of S^p(T_h) are held at each rank's own cells' dofs, the load as the ranks' shares:
+// none of the global length, with Dirichlet data too (u stays at the rank's own cells' dofs,
+// where the outputs read it).
+CondensedProblem condense_onto_trace(const ContactSetup& setup, const operators::PrimalOperators& primal,
+                                     const space::MultiplierSpace& multipliers, const NodalCoupling& coupling,
+                                     ContactSolution& out) {
+  Stopwatch factorization_clock;
+  const assembly::CondensedFactor& k_factor = primal.stiffness_factor();
+  out.seconds.factorization = factorization_clock.seconds();
+  Stopwatch load_clock;
+  assembly::DirichletLift::LiftedLoad load = problem_load_share(setup, primal, out.lift.get(), k_factor);
+  out.seconds.assembly += load_clock.seconds();
+  Stopwatch condensation_clock;
+  const Eigen::VectorXd u_free = k_factor.solve_local(load.load).col(0);
+  const Eigen::MatrixXd& s =
+      primal.derived_matrix("S", operators::PrimalOperators::coupling_key(multipliers, coupling.name),
+                            [&] { return Eigen::MatrixXd(k_factor.schur_complement(coupling.matrix)); });
+  Eigen::VectorXd b_u_free = k_factor.multiply_local(coupling.matrix, u_free).col(0);
+  Eigen::VectorXd d = b_u_free - coupling.gap_offset;
+  out.seconds.condensation = condensation_clock.seconds();
+  out.n_trace = k_factor.n_trailing();
+  return {std::move(load), s, std::move(b_u_free), std::move(d)};
+}
+
+// The multiplier λ of the condensed problem under the constraints (and their multipliers).
+void solve_for_multiplier(const ContactSetup& setup, const CondensedProblem& problem,
+                          const MultiplierConstraints& constraints, OperatorLog* log, ContactSolution& out) {
+  Stopwatch qp_clock;
+  auto qp = solve_multiplier_qp(problem.s, problem.d, constraints, setup.qp, setup.interior_point);
+  out.lambda = std::move(qp.x);
+  out.constraint_multiplier = std::move(qp.y);
+  out.qp = std::move(qp.report);
+  out.seconds.qp = qp_clock.seconds();
+  if (log) log->record("contact QP (" + out.qp.method + ")", problem.s.rows(), problem.s.cols(), out.seconds.qp);
+}
+
+// Recovery: u = K⁻¹(F − Bᵀλ), the gap, the energy from the factor's blocks (K itself is never
+// assembled).
+void recover_displacement(const assembly::CondensedFactor& k_factor, const CondensedProblem& problem,
+                          const NodalCoupling& coupling, ContactSolution& out) {
+  Stopwatch recovery_clock;
+  out.lambda_legendre = coupling.constraints.to_nodal.transpose() * out.lambda;  // V⁻¹ c_nodal
+  const Eigen::VectorXd& load_share = problem.load.load;
+  const Eigen::VectorXd reduced_share = load_share - k_factor.transpose_share(coupling.matrix, out.lambda).col(0);
+  const Eigen::VectorXd u = k_factor.solve_local(reduced_share).col(0);
+  out.gap = k_factor.multiply_local(coupling.matrix, u).col(0) - coupling.gap_offset;
+  // C = I: stationarity y = d − S λ = gap.
+  if (out.qp.method != "interior-point") out.constraint_multiplier = out.gap;
+  out.gap_scale = problem.b_u_free.lpNorm<Eigen::Infinity>() + coupling.gap_offset.lpNorm<Eigen::Infinity>() +
+                  (problem.s * out.lambda).lpNorm<Eigen::Infinity>();
+  out.energy = 0.5 * k_factor.quadratic_form_local(u) - k_factor.dot_local(load_share, u) + problem.load.energy_offset;
+  out.u = u;
+  out.u_rows = k_factor.local_rows();
+  out.n_dofs = k_factor.size();
+  out.seconds.recovery = recovery_clock.seconds();
+}
+
 }  // namespace
 
 ContactSolution solve_contact(const ContactSetup& setup) {
   check_data(setup);
-  const bool signorini = setup.problem == ContactProblem::signorini;
   ContactSolution out;
-
   // 1. Operators: F, the coupling B (B^s for (13)) in the nodal multiplier basis, the constraints
   //    and, for (9), the obstacle term (ℓ_i, g).
   Stopwatch assembly_clock;
   std::unique_ptr<operators::PrimalOperators> own_primal;
   const operators::PrimalOperators& primal =
       operators::shared_or_own(setup.primal, setup.mesh, setup.cell_degrees, own_primal);
-  OperatorLog* log = primal.log();
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
   if (setup.dirichlet)
     out.lift = std::make_shared<assembly::DirichletLift>(primal.space(), setup.dirichlet, primal.lift_space());
-  const bool weighted = setup.problem == ContactProblem::friction;
-  const std::string coupling_name = weighted ? "B^s" : "B";
-  const linalg::Coupling& coupling_legendre =
-      primal.coupling(multipliers, weighted ? setup.bound : assembly::BoundaryFunction{}, coupling_name);
-  MultiplierConstraints constraints = build_multiplier_constraints(setup, multipliers, primal.contact());
-  const linalg::Coupling to_nodal = constraints.to_nodal.sparseView();
-  const auto coupling = linalg::squeezed<linalg::Coupling>((to_nodal * coupling_legendre).pruned());
-  Eigen::VectorXd gap_offset = Eigen::VectorXd::Zero(multipliers.n_dofs());
-  if (signorini) {
-    Stopwatch obstacle_clock;
-    gap_offset =
-        constraints.to_nodal * assembly::assemble_multiplier_load(primal.contact(), multipliers, setup.obstacle);
-    if (log) log->record("g", multipliers.n_dofs(), 1, obstacle_clock.seconds());
-  }
-  // The constraints act on u_0 + w: B u_0 against (ℓ_i, g) − B w.
-  if (out.lift)
-    gap_offset -= to_nodal * out.lift->times(
-                                 assembly::assemble_coupling(out.lift->extended_scalar(), primal.contact(), multipliers,
-                                                             weighted ? setup.bound : assembly::BoundaryFunction{}));
+  NodalCoupling coupling = assemble_nodal_coupling(setup, primal, multipliers, out.lift.get());
   out.seconds.assembly = assembly_clock.seconds();
-
-  // 2. Condensation onto the Γ_C trace: the trace dofs ordered last in the factorization, so that
-  //    S = B K⁻¹ Bᵀ is dense algebra on the trailing block of the factor. S depends on the coupling
-  //    alone (its key holds the multiplier space's layout): problems sharing B share S.
-  Stopwatch factorization_clock;
-  const assembly::CondensedFactor& k_factor = primal.stiffness_factor();
-  out.seconds.factorization = factorization_clock.seconds();
-  // Distributed, the vectors of S^p(T_h) are held at each rank's own cells' dofs, the load as the
-  // ranks' shares: none of the global length, with Dirichlet data too (u stays at the rank's own cells'
-  // dofs, where the outputs read it).
-  Stopwatch load_clock;
-  const auto [load_share, energy_offset] = problem_load_share(setup, primal, out.lift.get(), k_factor);
-  out.seconds.assembly += load_clock.seconds();
-  Stopwatch condensation_clock;
-  const Eigen::VectorXd u_free = k_factor.solve_local(load_share).col(0);
-  const Eigen::MatrixXd& s =
-      primal.derived_matrix("S", operators::PrimalOperators::coupling_key(multipliers, coupling_name),
-                            [&] { return Eigen::MatrixXd(k_factor.schur_complement(coupling)); });
-  const Eigen::VectorXd b_u_free = k_factor.multiply_local(coupling, u_free).col(0);
-  const Eigen::VectorXd d = b_u_free - gap_offset;
-  out.seconds.condensation = condensation_clock.seconds();
-  out.n_trace = k_factor.n_trailing();
-
-  // 3. The multiplier.
-  Stopwatch qp_clock;
-  auto qp = solve_multiplier_qp(s, d, constraints, setup.qp, setup.interior_point);
-  out.lambda = std::move(qp.x);
-  out.constraint_multiplier = std::move(qp.y);
-  out.qp = std::move(qp.report);
-  out.seconds.qp = qp_clock.seconds();
-  if (log) log->record("contact QP (" + out.qp.method + ")", s.rows(), s.cols(), out.seconds.qp);
-
-  // 4. Recovery: u = K⁻¹(F − Bᵀλ), the gap, the energy from the factor's blocks (K itself is
-  //    never assembled).
-  Stopwatch recovery_clock;
-  out.lambda_legendre = constraints.to_nodal.transpose() * out.lambda;  // V⁻¹ c_nodal
-  const Eigen::VectorXd reduced_share = load_share - k_factor.transpose_share(coupling, out.lambda).col(0);
-  const Eigen::VectorXd u = k_factor.solve_local(reduced_share).col(0);
-  out.gap = k_factor.multiply_local(coupling, u).col(0) - gap_offset;
-  // C = I: stationarity y = d − S λ = gap.
-  if (out.qp.method != "interior-point") out.constraint_multiplier = out.gap;
-  out.gap_scale = b_u_free.lpNorm<Eigen::Infinity>() + gap_offset.lpNorm<Eigen::Infinity>() +
-                  (s * out.lambda).lpNorm<Eigen::Infinity>();
-  out.energy = 0.5 * k_factor.quadratic_form_local(u) - k_factor.dot_local(load_share, u) + energy_offset;
-  out.u = u;
-  out.u_rows = k_factor.local_rows();
-  out.n_dofs = k_factor.size();
-  out.seconds.recovery = recovery_clock.seconds();
-  out.constraint_matrix = std::move(constraints.matrix);
-  out.lower = std::move(constraints.lower);
-  out.upper = std::move(constraints.upper);
-  out.constraint_s = std::move(constraints.s);
-  out.constraint_points = std::move(constraints.points_per_segment);
+  // 2. Condensation onto the Γ_C trace, 3. the multiplier, 4. u recovered.
+  const CondensedProblem problem = condense_onto_trace(setup, primal, multipliers, coupling, out);
+  solve_for_multiplier(setup, problem, coupling.constraints, primal.log(), out);
+  recover_displacement(primal.stiffness_factor(), problem, coupling, out);
+  out.constraint_matrix = std::move(coupling.constraints.matrix);
+  out.lower = std::move(coupling.constraints.lower);
+  out.upper = std::move(coupling.constraints.upper);
+  out.constraint_s = std::move(coupling.constraints.s);
+  out.constraint_points = std::move(coupling.constraints.points_per_segment);
   return out;
 }
 
