@@ -1,6 +1,8 @@
 // Coupling assembly interval by interval of the common refinement.
 #include "assembly/coupling.hpp"
 
+#include <fmt/format.h>
+
 #include <array>
 #include <cmath>
 
@@ -68,6 +70,16 @@ Eigen::MatrixXd interval_coupling(const space::H1Space& space, const mesh::Conta
 }
 
 }  // namespace
+
+const BoundaryFunction& CouplingWeight::function() const {
+  static const BoundaryFunction none;
+  return function_ ? *function_ : none;
+}
+
+std::string CouplingWeight::identity() const {
+  if (!*this) return "";
+  return key_.empty() ? fmt::format("@{}", static_cast<const void*>(function_.get())) : key_;
+}
 
 linalg::Coupling assemble_coupling(const space::H1Space& space, const mesh::ContactBoundary& contact,
                                    const space::MultiplierSpace& multipliers, const BoundaryFunction& weight) {

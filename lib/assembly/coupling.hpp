@@ -6,6 +6,9 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <functional>
+#include <memory>
+#include <string>
+#include <type_traits>
 
 #include "linalg/coupling_matrix.hpp"
 #include "mesh/contact_boundary.hpp"
@@ -16,6 +19,32 @@
 namespace hpcontact::assembly {
 
 using BoundaryFunction = std::function<double(const mesh::Point&)>;
+
+/// The weight s of B^s with its identity. The operators' caches key B^s and S^s = B^s K⁻¹ (B^s)ᵀ
+/// on identity(), so that two weights on the same operators never share a cached matrix, which a
+/// name ("B^s") alone could not tell apart. A weight given with a key (a scene's text of s) is
+/// identified by it: weights with the same key must be the same function, and then share B^s.
+/// Without a key a weight is identified by its object, shared by its copies. Empty: no weight (B).
+class CouplingWeight {
+ public:
+  CouplingWeight() = default;
+  template <class F>
+  requires(!std::is_same_v<std::decay_t<F>, CouplingWeight> &&
+           std::is_invocable_r_v<double, const F&, const mesh::Point&>)
+      CouplingWeight(F function, std::string key = {})  // NOLINT(google-explicit-constructor): a weight is its function
+      : function_(std::make_shared<const BoundaryFunction>(std::move(function))), key_(std::move(key)) {}
+  double operator()(const mesh::Point& x) const { return (*function_)(x); }
+  explicit operator bool() const { return function_ && *function_; }
+  /// The function; empty for no weight.
+  const BoundaryFunction& function() const;
+  /// The key, else the address of the function shared by the copies (unique while they live);
+  /// empty for no weight.
+  std::string identity() const;
+
+ private:
+  std::shared_ptr<const BoundaryFunction> function_;
+  std::string key_;
+};
 
 /// B (no weight) or B^s (weight s): shape (n_multiplier_dofs, n_primal_dofs). With a weight the
 /// rule gets 4 extra Gauss points (s is data, not a polynomial).

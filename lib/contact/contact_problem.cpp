@@ -105,7 +105,8 @@ assembly::DirichletLift::LiftedLoad problem_load_share(const ContactSetup& setup
 // The problem's coupling and constraints: B (B^s for (13)) in the nodal multiplier basis and the
 // offset of the gap it measures, (ℓ_i, g) for (9), less B w with Dirichlet data u = u_0 + w.
 struct NodalCoupling {
-  std::string name;  ///< "B" or "B^s" (S is shared between problems by it)
+  std::string name;                 ///< "B" or "B^s" (S is shared between problems by it and the weight)
+  assembly::CouplingWeight weight;  ///< s for B^s
   MultiplierConstraints constraints;
   linalg::Coupling matrix;
   Eigen::VectorXd gap_offset;
@@ -114,10 +115,10 @@ struct NodalCoupling {
 NodalCoupling assemble_nodal_coupling(const ContactSetup& setup, const operators::PrimalOperators& primal,
                                       const space::MultiplierSpace& multipliers, const assembly::DirichletLift* lift) {
   const bool weighted = setup.problem == ContactProblem::friction;
-  const assembly::BoundaryFunction weight = weighted ? setup.bound : assembly::BoundaryFunction{};
   NodalCoupling out;
+  out.weight = weighted ? setup.bound : assembly::CouplingWeight{};
   out.name = weighted ? "B^s" : "B";
-  const linalg::Coupling& coupling_legendre = primal.coupling(multipliers, weight, out.name);
+  const linalg::Coupling& coupling_legendre = primal.coupling(multipliers, out.weight, out.name);
   out.constraints = build_multiplier_constraints(setup, multipliers, primal.contact());
   const linalg::Coupling to_nodal = out.constraints.to_nodal.sparseView();
   out.matrix = linalg::squeezed<linalg::Coupling>((to_nodal * coupling_legendre).pruned());
@@ -131,7 +132,7 @@ NodalCoupling assemble_nodal_coupling(const ContactSetup& setup, const operators
   // The constraints act on u_0 + w: B u_0 against (ℓ_i, g) − B w.
   if (lift)
     out.gap_offset -= to_nodal * lift->times(assembly::assemble_coupling(lift->extended_scalar(), primal.contact(),
-                                                                         multipliers, weight));
+                                                                         multipliers, out.weight.function()));
   return out;
 }
 
@@ -161,7 +162,7 @@ CondensedProblem condense_onto_trace(const ContactSetup& setup, const operators:
   Stopwatch condensation_clock;
   const Eigen::VectorXd u_free = k_factor.solve_local(load.load).col(0);
   const Eigen::MatrixXd& s =
-      primal.derived_matrix("S", operators::PrimalOperators::coupling_key(multipliers, coupling.name),
+      primal.derived_matrix("S", operators::PrimalOperators::coupling_key(multipliers, coupling.name, coupling.weight),
                             [&] { return Eigen::MatrixXd(k_factor.schur_complement(coupling.matrix)); });
   Eigen::VectorXd b_u_free = k_factor.multiply_local(coupling.matrix, u_free).col(0);
   Eigen::VectorXd d = b_u_free - coupling.gap_offset;

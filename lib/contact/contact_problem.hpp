@@ -60,8 +60,8 @@ struct ContactSetup {
   /// Names f and the traction: problems solved on the same `primal` with the same non-empty key
   /// share the assembled F. Empty: F is assembled for this solve alone.
   std::string load_key;
-  PointFunction obstacle;  ///< g, Signorini only
-  PointFunction bound;     ///< s, friction problems only (s ≥ 0)
+  PointFunction obstacle;          ///< g, Signorini only
+  assembly::CouplingWeight bound;  ///< s, friction problems only (s ≥ 0)
   /// Optional boundary traction t(x, n) on Γ_N and Γ_C, added to the load as ∫ t v ds (Neumann
   /// data; on Γ_C a prescribed traction besides the contact force, used by manufactured tests).
   std::function<double(const mesh::Point& x, const mesh::Point& normal)> traction;

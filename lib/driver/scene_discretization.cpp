@@ -94,6 +94,26 @@ std::function<double(const mesh::Point&)> scene_function(const scene::Scene& sce
   return [expression](const mesh::Point& x) { return expression(x.x(), x.y()); };
 }
 
+namespace {
+
+// The scene's s as the weight of B^s, keyed by its text so that the contact solve and α share B^s;
+// s ≥ 0 is part of the data's contract, reported against the scene's key.
+assembly::CouplingWeight scene_friction_bound(const scene::Scene& scene) {
+  auto bound = scene_function(scene, "data.s", scene.friction_bound);
+  if (!bound) return {};
+  return {[bound, file = scene.where("data.s"), text = scene.friction_bound](const mesh::Point& x) {
+            const double value = bound(x);
+            if (value < 0)
+              throw_bad_input(file, "data.s",
+                              fmt::format("\"{}\" = {} at (x, y) = ({}, {})", text, value, x.x(), x.y()),
+                              "the friction bound must be >= 0 on Γ_C");
+            return value;
+          },
+          "data.s = " + scene.friction_bound};
+}
+
+}  // namespace
+
 std::vector<int> checked_constraint_points(const scene::Scene& scene, const SceneDiscretization& d,
                                            contact::ContactProblem problem) {
   const auto& boundary_mesh = *d.boundary_mesh;
@@ -133,16 +153,7 @@ contact::ContactSetup contact_setup_of(const scene::Scene& scene, const SceneDis
   if (problem == contact::ContactProblem::signorini)
     setup.obstacle = scene_function(scene, "data.g", scene.obstacle);
   else
-    setup.bound = scene_function(scene, "data.s", scene.friction_bound);
-  if (setup.bound)  // s ≥ 0 is part of the data's contract: report it against the scene's key
-    setup.bound = [bound = setup.bound, file = scene.where("data.s"),
-                   text = scene.friction_bound](const mesh::Point& x) {
-      const double value = bound(x);
-      if (value < 0)
-        throw_bad_input(file, "data.s", fmt::format("\"{}\" = {} at (x, y) = ({}, {})", text, value, x.x(), x.y()),
-                        "the friction bound must be >= 0 on Γ_C");
-      return value;
-    };
+    setup.bound = scene_friction_bound(scene);
   setup.primal = &primal;
   return setup;
 }
@@ -185,7 +196,7 @@ infsup::InfSupSetup infsup_setup_of(const scene::Scene& scene, const mesh::Mesh*
     if (scene.friction_bound.empty())
       throw_bad_input(scene.where("infsup.problem"), "data.s", "(missing)",
                       "the friction pairing (22) needs the friction bound s");
-    setup.friction_bound = scene_function(scene, "data.s", scene.friction_bound);
+    setup.friction_bound = scene_friction_bound(scene);
   }
   return setup;
 }

@@ -122,7 +122,7 @@ InfSupOperators assemble_infsup_operators(const InfSupSetup& setup) {
   const auto& contact = primal.contact();
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
   Stopwatch assembly_clock;  // (what is not built yet)
-  const auto& coupling = primal.coupling(multipliers, friction ? setup.friction_bound : assembly::BoundaryFunction{},
+  const auto& coupling = primal.coupling(multipliers, friction ? setup.friction_bound : assembly::CouplingWeight{},
                                          friction ? "B^s" : "B");
   out.seconds_assembly = assembly_clock.seconds();
   Stopwatch primal_clock;
@@ -133,7 +133,7 @@ InfSupOperators assemble_infsup_operators(const InfSupSetup& setup) {
   out.seconds_primal = primal_clock.seconds();
 
   if (friction) {
-    out.active_dofs = dofs_meeting_support(contact, multipliers, setup.friction_bound);
+    out.active_dofs = dofs_meeting_support(contact, multipliers, setup.friction_bound.function());
     if (out.active_dofs.empty()) throw InputError("the friction bound s vanishes on all of Γ_C: no multiplier is left");
     out.s_g = restrict(s_g, out.active_dofs);
   } else {

@@ -36,7 +36,7 @@ struct InfSupSetup {
   std::vector<int> segment_degrees;  ///< p_C per segment
   GramNorm norm = GramNorm::interpolation;
   PairingProblem problem = PairingProblem::signorini;
-  assembly::BoundaryFunction friction_bound;  ///< s, required for the friction problem
+  assembly::CouplingWeight friction_bound;  ///< s, required for the friction problem
   /// α is refined on the reference ladder until its estimated error is below this fraction of α.
   double alpha_tolerance = 1e-4;
   // Optional parts shared with other computations (built here when absent): a contact solve on the

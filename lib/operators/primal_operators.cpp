@@ -92,21 +92,25 @@ void PrimalOperators::release_factors() const {
 }
 
 const linalg::Coupling& PrimalOperators::coupling(const space::MultiplierSpace& multipliers,
-                                                  const assembly::BoundaryFunction& weight,
+                                                  const assembly::CouplingWeight& weight,
                                                   const std::string& name) const {
-  const std::string key = coupling_key(multipliers, name);
+  const std::string key = coupling_key(multipliers, name, weight);
   auto found = couplings_.find(key);
   if (found == couplings_.end()) {
     Stopwatch clock;
-    found = couplings_.emplace(key, assembly::assemble_coupling(*rank_.space, *contact_, multipliers, weight)).first;
+    found =
+        couplings_.emplace(key, assembly::assemble_coupling(*rank_.space, *contact_, multipliers, weight.function()))
+            .first;
+    if (weight) weights_.push_back(weight);
     if (log_) log_->record(name, found->second.rows(), found->second.cols(), clock.seconds());
   }
   return found->second;
 }
 
-std::string PrimalOperators::coupling_key(const space::MultiplierSpace& multipliers, const std::string& name) {
+std::string PrimalOperators::coupling_key(const space::MultiplierSpace& multipliers, const std::string& name,
+                                          const assembly::CouplingWeight& weight) {
   // The layout of the multiplier space identifies it: its segments and their degrees.
-  std::string key = name;
+  std::string key = weight ? fmt::format("{}[{}]", name, weight.identity()) : name;
   for (int k = 0; k < multipliers.n_segments(); ++k)
     key += fmt::format("|{:.17g}:{}", multipliers.boundary_mesh().segment_end(k), multipliers.segment_degree(k));
   return key;

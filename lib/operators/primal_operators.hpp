@@ -66,11 +66,14 @@ class PrimalOperators {
   /// then does not hold them beside its files' text.
   void release_factors() const;
   /// B_ij = ∫ μ_i φ_j ("B"), or with the weight s ("B^s"), for a multiplier space on Γ_C; kept per
-  /// (name, multiplier space layout), so that the contact solve and α share it.
-  const linalg::Coupling& coupling(const space::MultiplierSpace& multipliers, const assembly::BoundaryFunction& weight,
+  /// (name, weight, multiplier space layout), so that the contact solve and α share it. The weight
+  /// is kept alive with it (its identity is part of the key).
+  const linalg::Coupling& coupling(const space::MultiplierSpace& multipliers, const assembly::CouplingWeight& weight,
                                    const std::string& name) const;
-  /// The key under which `coupling` keeps B: `name` and the multiplier space's layout.
-  static std::string coupling_key(const space::MultiplierSpace& multipliers, const std::string& name);
+  /// The key under which `coupling` keeps B: `name`, the weight's identity and the multiplier
+  /// space's layout.
+  static std::string coupling_key(const space::MultiplierSpace& multipliers, const std::string& name,
+                                  const assembly::CouplingWeight& weight = {});
   /// A vector or dense matrix derived from the operators above (the load F of one f, the
   /// condensed S = B K⁻¹ Bᵀ of one coupling), built by `build` on first use under `key` and
   /// logged as `name`, so that problems sharing data share it (Signorini and (15) share B and S).
@@ -96,6 +99,8 @@ class PrimalOperators {
   mutable std::unique_ptr<assembly::CondensedFactor> stiffness_factor_, gram_factor_;
   mutable std::unique_ptr<std::vector<int>> trace_dofs_;
   mutable std::map<std::string, linalg::Coupling> couplings_;
+  /// The weights of couplings_, kept so that the identities of those without a key stay unique.
+  mutable std::vector<assembly::CouplingWeight> weights_;
   mutable std::map<std::string, Eigen::VectorXd> derived_vectors_;
   mutable std::map<std::string, Eigen::MatrixXd> derived_matrices_;
 };
