@@ -1,5 +1,7 @@
 // Sweeps: the plan of a stability sweep (its points, groups and the schedule over MPI ranks),
 // its rows and its verdicts are pure and checked here without building a mesh.
+#include "studies/sweep_plan.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -8,7 +10,6 @@
 
 #include "io/infsup_record_csv.hpp"
 #include "studies/stability_sweep.hpp"
-#include "studies/sweep_plan.hpp"
 #include "studies/sweep_verdicts.hpp"
 
 using namespace hpcontact;
