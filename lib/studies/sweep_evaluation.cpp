@@ -83,15 +83,15 @@ SweepEvaluation::SweepEvaluation(const StabilitySweep& sweep, const std::vector<
       ratios_(ratio_choices(sweep)),
       degrees_used_(multiplier_degrees_used(points)),
       backend_(infsup::parse_eigen_backend(sweep.eigensolver, sweep.file)),
-      largest_p_(sweep.degrees.empty() ? 0 : *std::max_element(sweep.degrees.begin(), sweep.degrees.end())),
+      largest_p_(sweep.degrees.empty() ? std::nullopt
+                                       : std::optional(*std::max_element(sweep.degrees.begin(), sweep.degrees.end()))),
       distribution_(distribution) {}
 
 SweepEvaluation::~SweepEvaluation() = default;
 
 std::shared_ptr<const SweepEvaluation::Group> SweepEvaluation::start_group(const SweepGroup& group) const {
-  return std::make_shared<const Group>(
-      point_scene(sweep_.levels[group.level].scene, points_[group.first].p, -1, std::nullopt), group.share,
-      distribution_);
+  return std::make_shared<const Group>(point_scene(sweep_.levels[group.level].scene, {.p = points_[group.first].p}),
+                                       group.share, distribution_);
 }
 
 void SweepEvaluation::release_share(std::size_t share) { grams_of_share_.erase(share); }
@@ -106,26 +106,26 @@ const SweepEvaluation::EnvelopeGram& SweepEvaluation::envelope_of(const SweepPoi
   const scene::Scene& level_scene = sweep_.levels[point.level].scene;
   envelope.boundary = std::make_unique<mesh::BoundaryMesh>(boundary);
   std::vector<int> degrees(boundary.n_segments(), 0);
-  for (int pc : degrees_used_.at({point.level, point.ratio})) {
-    const auto at_pc =
-        scene::scene_segment_degrees(point_scene(level_scene, 0, pc, ratios_[point.ratio]), group.contact, boundary);
+  for (const auto pc : degrees_used_.at({point.level, point.ratio})) {
+    const auto at_pc = scene::scene_segment_degrees(point_scene(level_scene, {.pc = pc, .ratio = ratios_[point.ratio]}),
+                                                    group.contact, boundary);
     for (std::size_t k = 0; k < degrees.size(); ++k) degrees[k] = std::max(degrees[k], at_pc[k]);
   }
   envelope.multipliers = std::make_unique<space::MultiplierSpace>(*envelope.boundary, std::move(degrees));
   envelope.ladder = std::make_unique<norms::GramLadder>(
       point.gram == infsup::GramNorm::interpolation
           ? norms::interpolation_gram_ladder(*envelope.multipliers)
-          : norms::extension_gram_ladder(
-                group.built.mesh.get(),
-                cell_degrees_on_first_rank(point_scene(level_scene, largest_p_, -1, std::nullopt),
-                                           group.built.mesh.get(), distribution_),
-                *envelope.multipliers, distribution_));
+          : norms::extension_gram_ladder(group.built.mesh.get(),
+                                         cell_degrees_on_first_rank(point_scene(level_scene, {.p = largest_p_}),
+                                                                    group.built.mesh.get(), distribution_),
+                                         *envelope.multipliers, distribution_));
   return envelope;
 }
 
 infsup::InfSupRecord SweepEvaluation::evaluate_point(const SweepPoint& point, const Group& group) {
   const auto& ratio = ratios_[point.ratio];
-  const scene::Scene scene = point_scene(group.scene, 0, point.pc, ratio, point.pairing, point.gram);
+  const scene::Scene scene =
+      point_scene(group.scene, {.pc = point.pc, .ratio = ratio, .problem = point.pairing, .norm = point.gram});
   const auto boundary = scene::build_scene_boundary_mesh(scene, group.contact);
   auto segment_degrees = scene::scene_segment_degrees(scene, group.contact, boundary);
   auto setup = group.elastic ? driver::infsup_setup_of(scene, group.built.mesh.get(), group.built.cell_degrees,

@@ -50,9 +50,9 @@ class SweepEvaluation {
   const std::vector<SweepPoint>& points_;
   std::vector<std::optional<scene::Ratio>> ratios_;
   /// Per (level, ratio index): the p_C as given that its points use (the envelope's degrees).
-  std::map<std::pair<std::size_t, std::size_t>, std::set<int>> degrees_used_;
+  std::map<std::pair<std::size_t, std::size_t>, std::set<std::optional<int>>> degrees_used_;
   infsup::EigenBackend backend_;
-  int largest_p_;  ///< the sweep's largest p (the extension norm's references), 0 without a list
+  std::optional<int> largest_p_;  ///< the sweep's largest p (the extension norm's references); none without a list
   linalg::Distribution distribution_;
   std::map<std::size_t, std::unique_ptr<ShareGrams>> grams_of_share_;
 };

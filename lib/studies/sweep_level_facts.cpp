@@ -34,7 +34,7 @@ LevelFacts facts_of_level(const scene::Scene& scene, const std::vector<std::opti
   const auto cell_degrees = scene::scene_cell_degrees(scene, mesh);
   facts.scene_p = *std::min_element(cell_degrees.begin(), cell_degrees.end());
   for (const auto& ratio : ratios) {
-    const auto at_point = point_scene(scene, 0, -1, ratio);
+    const auto at_point = point_scene(scene, {.ratio = ratio});
     std::optional<mesh::BoundaryMesh> built;
     try {
       built.emplace(scene::build_scene_boundary_mesh(at_point, contact));

@@ -22,17 +22,16 @@ std::vector<std::optional<scene::Ratio>> ratio_choices(const StabilitySweep& swe
   return {sweep.ratios.begin(), sweep.ratios.end()};
 }
 
-scene::Scene point_scene(scene::Scene scene, int p, int pc, const std::optional<scene::Ratio>& ratio,
-                         infsup::PairingProblem problem, infsup::GramNorm norm) {
-  if (p > 0) scene.p = scene::Degree{p, {}};
-  if (pc >= 0) scene.pc = scene::Degree{pc, {}};
-  if (ratio) {
-    scene.ratio = {*ratio};
+scene::Scene point_scene(scene::Scene scene, const PointChoice& choice) {
+  if (choice.p) scene.p = scene::Degree{*choice.p, {}};
+  if (choice.pc) scene.pc = scene::Degree{*choice.pc, {}};
+  if (choice.ratio) {
+    scene.ratio = {*choice.ratio};
     scene.m.clear();
     scene.breakpoints.clear();
   }
-  scene.problem = problem;
-  scene.norm = norm;
+  if (choice.problem) scene.problem = *choice.problem;
+  if (choice.norm) scene.norm = *choice.norm;
   return scene;
 }
 
@@ -43,18 +42,21 @@ std::string level_name(const StabilitySweep& sweep, std::size_t level) {
 
 std::vector<SweepPoint> list_sweep_points(const StabilitySweep& sweep) {
   const std::size_t ratios = ratio_choices(sweep).size();
-  const std::vector<int> degrees = sweep.degrees.empty() ? std::vector<int>{0} : sweep.degrees;
-  const std::vector<int> multiplier_degrees =
-      sweep.multiplier_degrees.empty() ? std::vector<int>{-1} : sweep.multiplier_degrees;
+  // No list: one choice, the scene's own degree.
+  const auto choices = [](const std::vector<int>& list) {
+    return list.empty() ? std::vector<std::optional<int>>{std::nullopt}
+                        : std::vector<std::optional<int>>(list.begin(), list.end());
+  };
+  const auto degrees = choices(sweep.degrees), multiplier_degrees = choices(sweep.multiplier_degrees);
   std::vector<SweepPoint> points;
   for (std::size_t level = 0; level < sweep.levels.size(); ++level) {
     const auto& facts = sweep.level_facts[level];
-    for (int p : degrees)
+    for (const auto p : degrees)
       for (const auto problem : sweep.problems)
         for (const auto norm : sweep.norms)
-          for (int pc : multiplier_degrees)
+          for (const auto pc : multiplier_degrees)
             for (std::size_t r = 0; r < ratios; ++r) {
-              const int reported_p = p > 0 ? p : facts.scene_p, reported_pc = pc >= 0 ? pc : facts.scene_pc[r];
+              const int reported_p = p.value_or(facts.scene_p), reported_pc = pc.value_or(facts.scene_pc[r]);
               if (sweep.pc_below_p && reported_pc >= reported_p) continue;
               points.push_back({infsup::to_string(problem), infsup::to_string(norm), problem, norm, level, r, p, pc,
                                 reported_p, reported_pc, facts.segments[r]});
@@ -63,9 +65,9 @@ std::vector<SweepPoint> list_sweep_points(const StabilitySweep& sweep) {
   return points;
 }
 
-std::map<std::pair<std::size_t, std::size_t>, std::set<int>> multiplier_degrees_used(
+std::map<std::pair<std::size_t, std::size_t>, std::set<std::optional<int>>> multiplier_degrees_used(
     const std::vector<SweepPoint>& points) {
-  std::map<std::pair<std::size_t, std::size_t>, std::set<int>> used;
+  std::map<std::pair<std::size_t, std::size_t>, std::set<std::optional<int>>> used;
   for (const auto& point : points) used[{point.level, point.ratio}].insert(point.pc);
   return used;
 }

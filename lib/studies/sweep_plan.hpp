@@ -25,7 +25,7 @@ struct SweepPoint {
   infsup::PairingProblem pairing = infsup::PairingProblem::signorini;
   infsup::GramNorm gram = infsup::GramNorm::interpolation;
   std::size_t level = 0, ratio = 0;  ///< ratio: index into ratio_choices
-  int p = 0, pc = -1;                ///< as given to the scene (0, -1: the scene's own)
+  std::optional<int> p, pc;          ///< as given to the scene; empty: the scene's own
   int reported_p = 0, reported_pc = 0;
   long m = 0;  ///< segments of T_{C,H}
   /// The point's key in alpha.csv (see sweep_rows.hpp).
@@ -35,12 +35,16 @@ struct SweepPoint {
 /// The sweep's ratios, or one empty choice: the scene's own contact mesh.
 std::vector<std::optional<scene::Ratio>> ratio_choices(const StabilitySweep& sweep);
 
-/// The scene of one point: the level's scene with the sweep's p, p_C (replacing degree rules),
-/// ratio (replacing the scene's m, ratio or breakpoints) where the sweep gives them, and the
-/// point's pairing and norm.
-scene::Scene point_scene(scene::Scene scene, int p, int pc, const std::optional<scene::Ratio>& ratio,
-                         infsup::PairingProblem problem = infsup::PairingProblem::signorini,
-                         infsup::GramNorm norm = infsup::GramNorm::interpolation);
+/// What a sweep point sets in its level's scene; an empty member keeps the scene's value.
+struct PointChoice {
+  std::optional<int> p{}, pc{};         ///< replace the scene's degree (or degree rule)
+  std::optional<scene::Ratio> ratio{};  ///< replaces the scene's m, ratio or breakpoints
+  std::optional<infsup::PairingProblem> problem{};
+  std::optional<infsup::GramNorm> norm{};
+};
+
+/// The scene of one point: the level's scene with what `choice` sets.
+scene::Scene point_scene(scene::Scene scene, const PointChoice& choice);
 
 /// "level 2 (domain.n_x=24 domain.n_y=24)", for messages and progress.
 std::string level_name(const StabilitySweep& sweep, std::size_t level);
@@ -51,7 +55,7 @@ std::vector<SweepPoint> list_sweep_points(const StabilitySweep& sweep);
 
 /// Per (level, ratio index): the p_C as given that the level's points use, from which the envelope
 /// multiplier space of the level's Gram matrices is built.
-std::map<std::pair<std::size_t, std::size_t>, std::set<int>> multiplier_degrees_used(
+std::map<std::pair<std::size_t, std::size_t>, std::set<std::optional<int>>> multiplier_degrees_used(
     const std::vector<SweepPoint>& points);
 
 /// Points sharing (level, p), consecutive in alpha.csv; split by ratio (only the points of one
