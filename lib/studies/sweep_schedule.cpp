@@ -41,7 +41,7 @@ SweepPlan plan_of_run(const StabilitySweep& sweep, const std::vector<SweepPoint>
 }
 
 std::string progress_label(const StabilitySweep& sweep, const SweepPoint& point) {
-  const auto& ratio = ratio_choices(sweep)[point.ratio];
+  const auto ratio = ratio_choices(sweep)[point.ratio];  // a copy: the list is a temporary
   return fmt::format("{} {} p={} pC={} {}{}", point.problem, point.norm, point.reported_p, point.reported_pc,
                      level_name(sweep, point.level), ratio ? " h/H=" + ratio->text : "");
 }
