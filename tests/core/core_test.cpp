@@ -13,19 +13,11 @@
 #include "core/error.hpp"
 #include "core/expression.hpp"
 #include "core/petsc_session.hpp"
+#include "support/input_error_message.hpp"
 
 using namespace hpcontact;
 
-namespace {
-std::string message_of(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return "(no InputError thrown)";
-}
-}  // namespace
+using hpcontact::testing::message_of;
 
 TEST(Expression, EvaluatesWithVariablesAndConstants) {
   const Expression g("-x^2 + 2*y + pi", "test");

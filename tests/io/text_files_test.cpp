@@ -11,20 +11,12 @@
 #include "io/atomic_file.hpp"
 #include "io/csv_writer.hpp"
 #include "io/toml_reader.hpp"
+#include "support/input_error_message.hpp"
 #include "support/scratch.hpp"
 
 using namespace hpcontact;
 
-namespace {
-std::string message_of(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return "(no InputError thrown)";
-}
-}  // namespace
+using hpcontact::testing::message_of;
 
 TEST(Csv, FullPrecisionRoundTrip) {
   const double value = 0.1 + 0.2;
