@@ -15,6 +15,7 @@
 #include "core/error.hpp"
 #include "core/petsc_session.hpp"
 #include "core/rank_agreement.hpp"
+#include "mesh/contact_point_separation.hpp"
 #include "mesh/point_grading.hpp"
 #include "mesh/refine.hpp"
 
@@ -149,7 +150,7 @@ std::optional<std::vector<int>> grading_vertices(const mesh::Mesh& mesh, const s
 ExtensionReferenceFactor::ExtensionReferenceFactor(const mesh::Mesh* mesh, const std::vector<int>& cell_degrees,
                                                    const ExtensionReference& reference,
                                                    const std::vector<double>& grading_points,
-                                                   linalg::Distribution distribution) {
+                                                   linalg::Distribution distribution, int n_multipliers) {
   if (reference.refinements < 0 || reference.extra_degree < 0 || reference.layers < 0)
     throw InputError("extension norm: refinements, layers and extra_degree must be >= 0");
   // S_ref's mesh is built where T_h is: distributed, on the first rank alone, which sends each
@@ -177,16 +178,26 @@ ExtensionReferenceFactor::ExtensionReferenceFactor(const mesh::Mesh* mesh, const
   // Distributed, the operators hold the rank's part of S_ref: the whole refined mesh goes before
   // the factorization, the run's peak.
   if (distribution.distributed()) fine_.reset();
-  operators_->gram_factor();
+  // Distributed, the solvers decide for themselves where the trace goes (trailing_joins_interface).
+  operators_->gram_factor(distribution.distributed()
+                              ? operators::PrimalOperators::TraceOrdering::last
+                              : trace_ordering_for(operators_->space().n_dofs(),
+                                                   static_cast<long long>(operators_->trace_dofs().size()),
+                                                   n_multipliers));
 }
 
 void ExtensionReferenceFactor::refine_reference(const ExtensionReference& reference,
                                                 const std::vector<double>& grading_points, std::vector<int>& degrees) {
-  auto refine = [&] {
+  const auto adopt_children = [&](const std::vector<int>& parents) {
+    std::vector<int> child_degrees(parents.size());
+    for (std::size_t c = 0; c < parents.size(); ++c) child_degrees[c] = degrees[parents[c]];
+    degrees = std::move(child_degrees);
+  };
+  const auto refine = [&] {
     *fine_ = mesh::refine_uniformly(*fine_);
-    std::vector<int> children;
-    for (int p : degrees) children.insert(children.end(), 4, p);  // children of cell c: 4c..4c+3
-    degrees = std::move(children);
+    std::vector<int> parents(4 * degrees.size());
+    for (std::size_t c = 0; c < parents.size(); ++c) parents[c] = static_cast<int>(c / 4);  // children 4c..4c+3
+    adopt_children(parents);
   };
   for (int level = 0; level < reference.refinements; ++level) refine();
   if (fine_->has_curved_cells()) {
@@ -194,9 +205,18 @@ void ExtensionReferenceFactor::refine_reference(const ExtensionReference& refere
     // layers, at most two), and report the reference as not geometric.
     for (int level = 0; level < std::min(reference.layers / 2, 2); ++level) refine();
   } else if (reference.layers > 0 && !grading_points.empty()) {
-    // Breakpoints of T_{C,H} inside edges of T_h become vertices after enough refinements (two
-    // more at most; beyond that the grading is left out and the error estimate shows it).
     auto centres = grading_vertices(*fine_, grading_points);
+    // Breakpoints of T_{C,H} one edge apart or inside edges of T_h: cut the cells on Γ_C, or
+    // where that cannot be done locally, refine the whole mesh (twice at most; beyond that the
+    // grading is left out and the error estimate shows it).
+    if (!centres)
+      if (auto cut = mesh::separate_contact_points(*fine_, grading_points)) {
+        centres = grading_vertices(cut->mesh, grading_points);
+        if (centres) {
+          *fine_ = std::move(cut->mesh);
+          adopt_children(cut->parents);
+        }
+      }
     for (int extra = 0; !centres && extra < 2; ++extra) {
       refine();
       centres = grading_vertices(*fine_, grading_points);
@@ -206,13 +226,19 @@ void ExtensionReferenceFactor::refine_reference(const ExtensionReference& refere
       std::vector<int> parents;
       *fine_ = mesh::grade_towards_vertices(*fine_, *centres, reference.grading, reference.layers,
                                             "extension reference", &parents);
-      std::vector<int> graded(parents.size());
-      for (std::size_t c = 0; c < parents.size(); ++c) graded[c] = degrees[parents[c]];
-      degrees = std::move(graded);
+      adopt_children(parents);
     }
   }
   if (fine_->has_curved_cells()) graded_ = false;
   for (int& p : degrees) p += reference.extra_degree;
+}
+
+operators::PrimalOperators::TraceOrdering trace_ordering_for(long long n_unknowns, long long n_trace,
+                                                             long long n_multipliers) {
+  const double trace = static_cast<double>(n_trace);
+  return trace * trace * trace <= 400.0 * static_cast<double>(n_multipliers) * static_cast<double>(n_unknowns)
+             ? operators::PrimalOperators::TraceOrdering::last
+             : operators::PrimalOperators::TraceOrdering::free;
 }
 
 Eigen::MatrixXd extension_norm_gram(const ExtensionReferenceFactor& reference,
@@ -226,7 +252,7 @@ Eigen::MatrixXd extension_norm_gram(const mesh::Mesh* mesh, const std::vector<in
                                     const space::MultiplierSpace& multipliers, const ExtensionReference& reference,
                                     bool* graded, linalg::Distribution distribution) {
   const ExtensionReferenceFactor factor(mesh, cell_degrees, reference, multipliers.boundary_mesh().nodes(),
-                                        distribution);
+                                        distribution, multipliers.n_dofs());
   if (graded) *graded = factor.graded();
   return extension_norm_gram(factor, multipliers);
 }

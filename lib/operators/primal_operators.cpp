@@ -79,9 +79,10 @@ const assembly::CondensedFactor& PrimalOperators::stiffness_factor() const {
                           "factor(K)", log_);
 }
 
-const assembly::CondensedFactor& PrimalOperators::gram_factor() const {
-  return condensed_factor(*rank_.space, 1.0, 1.0, trace_dofs(), distribution_, rank_.cell_parts, gram_factor_,
-                          "factor(K+M)", log_);
+const assembly::CondensedFactor& PrimalOperators::gram_factor(TraceOrdering ordering) const {
+  static const std::vector<int> anywhere;
+  return condensed_factor(*rank_.space, 1.0, 1.0, ordering == TraceOrdering::last ? trace_dofs() : anywhere,
+                          distribution_, rank_.cell_parts, gram_factor_, "factor(K+M)", log_);
 }
 
 void PrimalOperators::release_factors() const {

@@ -58,10 +58,16 @@ class PrimalOperators {
   const space::H1Space* lift_space() const { return rank_.lift_space(); }
   const mesh::ContactBoundary& contact() const { return *contact_; }
 
-  /// K factorized with the trace last ("factor(K)"), and A_G = K + M likewise ("factor(K+M)"),
-  /// both by static condensation from the element matrices (neither needs K or M assembled).
+  /// Where a factorization puts Γ_C's trace: last, so that a Schur complement B A⁻¹ Bᵀ costs dense
+  /// algebra of the trace's size (linalg/sparse_cholesky.hpp), or wherever the fill-reducing
+  /// ordering wants it, so that it costs one pair of triangular solves per row of B.
+  enum class TraceOrdering { last, free };
+
+  /// K factorized with the trace last ("factor(K)"), and A_G = K + M ("factor(K+M)") with the
+  /// trace as `ordering` says on its first use (later calls get that factorization), both by static
+  /// condensation from the element matrices (neither needs K or M assembled).
   const assembly::CondensedFactor& stiffness_factor() const;
-  const assembly::CondensedFactor& gram_factor() const;
+  const assembly::CondensedFactor& gram_factor(TraceOrdering ordering = TraceOrdering::last) const;
   /// Frees both factorizations (rebuilt on a later use): a run's output phase, which needs none,
   /// then does not hold them beside its files' text.
   void release_factors() const;
@@ -81,7 +87,8 @@ class PrimalOperators {
                                         const std::function<Eigen::VectorXd()>& build) const;
   const Eigen::MatrixXd& derived_matrix(const std::string& name, const std::string& key,
                                         const std::function<Eigen::MatrixXd()>& build) const;
-  /// Every dof with a trace on Γ_C (the trailing set of both factorizations).
+  /// Every dof with a trace on Γ_C (the trailing set of factor(K), and of factor(K+M) unless it is
+  /// ordered freely).
   const std::vector<int>& trace_dofs() const;
   /// Distributed: the rank that eliminates each cell of mesh() (the rank's part: its own cells and
   /// Γ_C's), computed once (collectively, when the object is built) for both factorizations,

@@ -6,6 +6,7 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 
+#include "assembly/coupling.hpp"
 #include "infsup/infsup_analysis.hpp"
 #include "mesh/contact_boundary.hpp"
 #include "mesh/rectangle_mesh.hpp"
@@ -161,4 +162,28 @@ TEST(AlphaAccuracy, AlphaErrorBoundsTheChangeToTheNextReference) {
         EXPECT_LE(std::abs(change), on_level[k].alpha_error + 1e-13) << label;
       }
     }
+}
+
+// The extension norm's G = B A⁻¹ Bᵀ two ways: through the dense trailing block of the factor with
+// the trace ordered last, and by solves with a factor ordered freely (the way chosen for large
+// graded traces, trace_ordering_for); on a reference cut and graded towards breakpoints one edge
+// apart (h/H = 1). They agree to round-off.
+TEST(AlphaAccuracy, GramOfTheTraceLastEqualsGramBySolves) {
+  const auto mesh = mesh::make_paper_square_mesh(8);
+  const auto boundary = mesh::BoundaryMesh::uniform(2.0, 8);
+  const space::MultiplierSpace multipliers(boundary, 2);
+  const norms::ExtensionReferenceFactor reference(&mesh, std::vector<int>(mesh.n_cells(), 3),
+                                                  norms::extension_reference_at(1), boundary.nodes());
+  EXPECT_TRUE(reference.graded());
+  const auto& graded = reference.operators();
+  const operators::PrimalOperators trace_last(&graded.space().mesh(), graded.space().cell_degrees());
+  const operators::PrimalOperators free(&graded.space().mesh(), graded.space().cell_degrees());
+  const auto coupling = assembly::assemble_coupling(graded.space(), graded.contact(), multipliers);
+  const Eigen::MatrixXd last =
+      trace_last.gram_factor(operators::PrimalOperators::TraceOrdering::last).schur_complement(coupling);
+  const Eigen::MatrixXd solved =
+      free.gram_factor(operators::PrimalOperators::TraceOrdering::free).schur_complement(coupling);
+  EXPECT_LT((last - solved).norm(), 1e-12 * last.norm());
+  EXPECT_EQ(norms::trace_ordering_for(631512, 10081, 480), operators::PrimalOperators::TraceOrdering::free);
+  EXPECT_EQ(norms::trace_ordering_for(388820, 3601, 480), operators::PrimalOperators::TraceOrdering::last);
 }
