@@ -83,9 +83,10 @@ int run_infsup(const InfSupOptions& o) {
   fmt::print("# alpha_error {:.2e} (reference level {}{})\n", record.alpha_error, summary.reference_level,
              record.alpha_converged.value_or(true)
                  ? ""
-                 : fmt::format(", NOT below --alpha-tol {:g}: the H^-1/2 reference could not be refined far enough; "
-                               "with the extension norm, breakpoints of T_C,H that are not vertices of T_h (h/H > 1) "
-                               "leave it ungraded and the estimate is then too low: use --norm interp",
+                 : fmt::format(", NOT below --alpha-tol {:g}: the H^-1/2 reference ladder ended first, or (extension "
+                               "norm) its references could not be graded (breakpoints of T_C,H inside edges of T_h "
+                               "refined twice, singular points of the boundary too close to others, curved cells) "
+                               "and the estimate is then too low: use --norm interp where it applies",
                                scene.alpha_tolerance));
   fmt::print("# problem {} norm {} p {} pC {} n {} m {} h/H {} Pi {:.6g} ndofs {} nmult {}\n",
              infsup::to_string(record.problem), infsup::to_string(record.norm), record.p, record.pc, record.n, record.m,

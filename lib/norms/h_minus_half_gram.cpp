@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <optional>
 #include <vector>
 
@@ -107,9 +108,12 @@ Eigen::MatrixXd restrict_gram(const Eigen::MatrixXd& envelope_gram, const space:
 }
 
 ExtensionReference extension_reference_at(int level) {
-  // No refinement unless the grading needs it (breakpoints one edge apart, or inside edges): the
-  // references of h/H ≤ 1/2 on T_h itself cost a quarter, at the same accuracy (α within 2e-5).
-  return {.refinements = 0, .layers = 2 + 2 * level, .grading = 0.2, .extra_degree = 2 + level};
+  // No refinement unless the grading needs it (breakpoints inside edges that cannot be cut): the
+  // references on T_h itself cost a quarter, at the same accuracy (α within 2e-5).
+  // Level 0 with 3 layers and p_T + 3 keeps the change to level 1 within 1e-4 α where level 1
+  // is enough (n = 128, p = 4, p_C = 3: 2.8e-5 α), so that two references do.
+  return {
+      .refinements = 0, .layers = 3 + 2 * level, .grading = 0.2, .extra_degree = 3 + level, .far_extra_degree = level};
 }
 
 namespace {
@@ -143,6 +147,39 @@ std::optional<std::vector<int>> grading_vertices(const mesh::Mesh& mesh, const s
         star_of[c] = v;
       }
   return vertices;
+}
+
+// Whether each cell has a vertex on Γ_C.
+std::vector<char> cells_at_contact(const mesh::Mesh& mesh) {
+  std::vector<char> on_contact(mesh.n_vertices(), 0), at(mesh.n_cells(), 0);
+  for (int e : mesh.boundary_edges())
+    if (mesh.edge_part(e) == mesh::BoundaryPart::contact)
+      for (int v : mesh.edge(e)) on_contact[v] = 1;
+  for (int c = 0; c < mesh.n_cells(); ++c)
+    for (int v : mesh.cell(c))
+      if (on_contact[v]) at[c] = 1;
+  return at;
+}
+
+// The vertices of ∂Ω where the boundary part changes or the boundary turns by more than 30°
+// (corners), where u^μ is singular.
+std::vector<int> singular_boundary_vertices(const mesh::Mesh& mesh) {
+  std::map<int, std::vector<int>> edges_at;
+  for (int e : mesh.boundary_edges())
+    for (int v : mesh.edge(e)) edges_at[v].push_back(e);
+  std::vector<int> singular;
+  for (const auto& [v, edges] : edges_at) {
+    if (edges.size() != 2) continue;  // a vertex where the boundary touches itself: left alone
+    const auto away = [&](int e) {
+      const auto& ends = mesh.edge(e);
+      return mesh.vertex(ends[0] == v ? ends[1] : ends[0]) - mesh.vertex(v);
+    };
+    // The boundary turns by more than 30° (a polygonal curve's small turns are not corners).
+    const mesh::Point a = away(edges[0]), b = away(edges[1]);
+    const bool turns = a.dot(b) > -std::cos(std::numbers::pi / 6) * a.norm() * b.norm();
+    if (turns || mesh.edge_part(edges[0]) != mesh.edge_part(edges[1])) singular.push_back(v);
+  }
+  return singular;
 }
 
 }  // namespace
@@ -188,10 +225,17 @@ ExtensionReferenceFactor::ExtensionReferenceFactor(const mesh::Mesh* mesh, const
 
 void ExtensionReferenceFactor::refine_reference(const ExtensionReference& reference,
                                                 const std::vector<double>& grading_points, std::vector<int>& degrees) {
+  // Which cells get the high degree (at Γ_C or in a singular point's star), carried to the children.
+  std::vector<char> near = cells_at_contact(*fine_);
   const auto adopt_children = [&](const std::vector<int>& parents) {
     std::vector<int> child_degrees(parents.size());
-    for (std::size_t c = 0; c < parents.size(); ++c) child_degrees[c] = degrees[parents[c]];
+    std::vector<char> child_near(parents.size());
+    for (std::size_t c = 0; c < parents.size(); ++c) {
+      child_degrees[c] = degrees[parents[c]];
+      child_near[c] = near[parents[c]];
+    }
     degrees = std::move(child_degrees);
+    near = std::move(child_near);
   };
   const auto refine = [&] {
     *fine_ = mesh::refine_uniformly(*fine_);
@@ -222,6 +266,7 @@ void ExtensionReferenceFactor::refine_reference(const ExtensionReference& refere
       centres = grading_vertices(*fine_, grading_points);
     }
     graded_ = centres.has_value();
+    if (centres) add_singular_points(*centres, near);
     if (centres) {
       std::vector<int> parents;
       *fine_ = mesh::grade_towards_vertices(*fine_, *centres, reference.grading, reference.layers,
@@ -230,7 +275,34 @@ void ExtensionReferenceFactor::refine_reference(const ExtensionReference& refere
     }
   }
   if (fine_->has_curved_cells()) graded_ = false;
-  for (int& p : degrees) p += reference.extra_degree;
+  for (std::size_t c = 0; c < degrees.size(); ++c)
+    degrees[c] =
+        near[c] ? degrees[c] + reference.extra_degree : std::max(1, degrees[c] - 3) + reference.far_extra_degree;
+}
+
+void ExtensionReferenceFactor::add_singular_points(std::vector<int>& centres, std::vector<char>& near) {
+  std::vector<int> star_of(fine_->n_cells(), -1);
+  const auto in_star = [&](int c, int v) {
+    const auto cell = fine_->cell(c);
+    return std::find(cell.begin(), cell.end(), v) != cell.end();
+  };
+  for (int c = 0; c < fine_->n_cells(); ++c)
+    for (int v : centres)
+      if (in_star(c, v)) star_of[c] = v;
+  for (int v : singular_boundary_vertices(*fine_)) {
+    if (std::find(centres.begin(), centres.end(), v) != centres.end()) continue;  // a breakpoint already
+    bool disjoint = true;
+    for (int c = 0; c < fine_->n_cells(); ++c) disjoint = disjoint && !(in_star(c, v) && star_of[c] >= 0);
+    // A star that would share a cell with another (a mesh too coarse there) is not graded: then
+    // the reference does not converge geometrically, and says so.
+    if (!disjoint) {
+      graded_ = false;
+      continue;
+    }
+    for (int c = 0; c < fine_->n_cells(); ++c)
+      if (in_star(c, v)) star_of[c] = v, near[c] = 1;
+    centres.push_back(v);
+  }
 }
 
 operators::PrimalOperators::TraceOrdering trace_ordering_for(long long n_unknowns, long long n_trace,
