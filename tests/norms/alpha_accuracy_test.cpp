@@ -164,6 +164,26 @@ TEST(AlphaAccuracy, AlphaErrorBoundsTheChangeToTheNextReference) {
     }
 }
 
+// A smooth weakest mode (p = 4, p_C = 0, h/H = 1/4, n = 12): u^μ then reaches Γ_D's end at (1, 0),
+// where it has an r^{1/2} singularity. References graded towards it converge geometrically: the
+// estimate on the top level falls below 1e-8 α, and the α taken with the default tolerance lies
+// within its estimate of the top level's (ungraded there, level 4 was still 5.3e-5 high, with an
+// estimate of 1.1e-5).
+TEST(AlphaAccuracy, ExtensionNormConvergesGeometricallyWhereGammaDMeetsGammaN) {
+  const Point c{4, 0, 12, 3};
+  const auto mesh = mesh::make_paper_square_mesh(c.n);
+  const auto boundary = mesh::BoundaryMesh::uniform(2.0, c.m);
+  auto setup = setup_of(c, mesh, boundary, infsup::GramNorm::extension);
+  const auto usual = infsup::analyse_infsup(setup, infsup::EigenBackend::dense);
+  setup.alpha_tolerance = 1e-12;  // to the top of the ladder
+  const auto top = infsup::analyse_infsup(setup, infsup::EigenBackend::dense);
+  EXPECT_EQ(top.reference_level, 4);
+  EXPECT_LT(top.alpha_error, 1e-8 * top.alpha);
+  EXPECT_TRUE(usual.alpha_converged);
+  EXPECT_GE(usual.alpha, top.alpha - 1e-13);
+  EXPECT_LE(usual.alpha - top.alpha, usual.alpha_error);
+}
+
 // The extension norm's G = B A⁻¹ Bᵀ two ways: through the dense trailing block of the factor with
 // the trace ordered last, and by solves with a factor ordered freely (the way chosen for large
 // graded traces, trace_ordering_for); on a reference cut and graded towards breakpoints one edge
