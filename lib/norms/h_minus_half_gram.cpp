@@ -168,8 +168,9 @@ std::vector<int> singular_boundary_vertices(const mesh::Mesh& mesh) {
   for (int e : mesh.boundary_edges())
     for (int v : mesh.edge(e)) edges_at[v].push_back(e);
   std::vector<int> singular;
-  for (const auto& [v, edges] : edges_at) {
+  for (const auto& [vertex, edges] : edges_at) {
     if (edges.size() != 2) continue;  // a vertex where the boundary touches itself: left alone
+    const int v = vertex;             // (a structured binding is not captured by clang 14's lambdas)
     const auto away = [&](int e) {
       const auto& ends = mesh.edge(e);
       return mesh.vertex(ends[0] == v ? ends[1] : ends[0]) - mesh.vertex(v);
