@@ -17,6 +17,13 @@ usage() { echo "usage: bash cmake/quickstart.sh study|figures|test" >&2; exit 2;
 mode=$1
 case "$mode" in study|figures|test) ;; *) usage ;; esac
 
+# Each stage ends with its wall time on stderr (docs/testing.md lists what is slow and why).
+stage_start=$SECONDS
+stage_done() { echo "quickstart: $1 in $(( SECONDS - stage_start )) s" >&2; stage_start=$SECONDS; }
+# A section of the main job: "== what" on stderr, the previous section's time before it.
+section_name=""
+section() { [ -z "$section_name" ] || stage_done "$section_name"; section_name=$1; echo "== $1" >&2; }
+
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 cd "$root"
 jobs=$(nproc 2>/dev/null || echo 2)
@@ -51,15 +58,19 @@ if [ "$mode" = test ]; then
     echo "quickstart: these files differ from .clang-format; run: clang-format -i <file>" >&2; exit 1; }
 fi
 
+stage_done "packages and formatting check"
+
 # 3. Configure (once) and build.
 if [ ! -f build/CMakeCache.txt ]; then
   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 fi
 cmake --build build -j "$jobs"
+stage_done "Release build (build/)"
 
 # 4. Run.
 if [ "$mode" = test ]; then
   (cd build && ctest --output-on-failure -j "$jobs")
+  stage_done "Release tests"
   # 5. The sanitizer build and the fuzzer. LeakSanitizer is off: OpenMPI (under PETSc/SLEPc)
   #    unloads its components at exit and leaves allocations that LSan cannot attribute.
   export ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
@@ -68,7 +79,9 @@ if [ "$mode" = test ]; then
       -DHPCONTACT_SANITIZE=ON -DHPCONTACT_FUZZ=ON
   fi
   cmake --build build-sanitize -j "$jobs"
+  stage_done "sanitizer build (build-sanitize/)"
   (cd build-sanitize && ctest --output-on-failure -j "$jobs")
+  stage_done "sanitizer tests"
   exec bash tests/fuzz/run_fuzzer.sh build-sanitize/bin/fuzz_scene 60
 fi
 
@@ -81,16 +94,16 @@ done
 # The main job writes only under results/; `figures` also refreshes the committed copies.
 publish() { if [ "$mode" = figures ]; then cp "$1" "$2"; fi; }
 mkdir -p results
-echo "== convergence study: studies/convergence/study.toml -> results/convergence" >&2
+section "convergence study: studies/convergence/study.toml -> results/convergence"
 build/bin/hpcontact convergence studies/convergence/study.toml --out results/convergence
 "$python" plots/plot_convergence.py results/convergence
 publish results/convergence/convergence.png studies/convergence/convergence.png
-echo "== convergence on a curved domain: studies/curved/convergence.toml -> results/curved" >&2
+section "convergence on a curved domain: studies/curved/convergence.toml -> results/curved"
 build/bin/hpcontact convergence studies/curved/convergence.toml --out results/curved
 "$python" plots/plot_curved.py results/curved
 publish results/curved/curved.png studies/curved/curved.png
 
-echo "== stability sweep: studies/stability/quick.toml -> results/stability" >&2
+section "stability sweep: studies/stability/quick.toml -> results/stability"
 build/bin/hpcontact sweep studies/stability/quick.toml --out results/stability --restart
 # Spurious modes of the paper's Figure 2 and 3 pairings (and the stable neighbours) at n = 24.
 for pairing in "1 0 1" "1 0 1/2" "2 1 1" "3 2 1" "3 2 1/2" "3 1 1"; do
@@ -102,22 +115,22 @@ done
 for picture in stable_map alpha_vs_h alpha_vs_pi modes; do
   publish "results/stability/$picture.png" "studies/stability/$picture.png"
 done
-echo "== full stability grid: studies/stability/study.toml -> results/stability_full" >&2
+section "full stability grid: studies/stability/study.toml -> results/stability_full"
 build/bin/hpcontact sweep studies/stability/study.toml --out results/stability_full --restart
 publish results/stability_full/verdicts.csv studies/stability/verdicts_full.csv
-echo "== stability on geometric meshes: studies/stability/graded*.toml -> results/stability_graded*" >&2
+section "stability on geometric meshes: studies/stability/graded*.toml -> results/stability_graded*"
 for study in graded graded_anisotropic; do
   build/bin/hpcontact sweep "studies/stability/$study.toml" --out "results/stability_$study" --restart
   "$python" plots/plot_stability.py "results/stability_$study"
   publish "results/stability_$study/alpha_vs_h.png" "studies/stability/${study}_alpha_vs_h.png"
 done
-echo "== contact problems of Figures 1, 4, 6: studies/paper/*.toml -> results/paper" >&2
+section "contact problems of Figures 1, 4, 6: studies/paper/*.toml -> results/paper"
 for figure in figure1_signorini figure4_friction figure6_friction_s; do
   build/bin/hpcontact solve "studies/paper/$figure.toml" --out "results/paper/$figure"
   "$python" plots/plot_paper.py "results/paper/$figure"
   publish "results/paper/$figure/figure_${figure#*_}.png" "studies/paper/$figure.png"
 done
-echo "== multiplier panels of Figures 2, 3, 5, 7 -> results/paper/panels" >&2
+section "multiplier panels of Figures 2, 3, 5, 7 -> results/paper/panels"
 for problem in signorini friction friction_s; do
   case $problem in
     signorini) scene=figure1_signorini; pairings=("1 0 1" "1 0 1/2" "2 1 1" "3 2 1" "3 2 1/2" "3 1 1") ;;
@@ -134,19 +147,20 @@ done
 for problem in signorini friction friction_s; do
   publish "results/paper/panels/panels_$problem.png" "studies/paper/panels_$problem.png"
 done
-echo "== work-precision study: studies/work_precision/study.toml -> results/work_precision" >&2
+section "work-precision study: studies/work_precision/study.toml -> results/work_precision"
 build/bin/hpcontact work-precision studies/work_precision/study.toml --out results/work_precision
 "$python" plots/plot_work_precision.py results/work_precision
 publish results/work_precision/work_precision.png studies/work_precision/work_precision.png
 publish results/work_precision/cheapest.csv studies/work_precision/cheapest.csv
 publish results/work_precision/reference.csv studies/work_precision/reference.csv
-echo "== Hertz validation of the elastic contact solver: studies/elasticity/hertz_study.toml -> results/hertz" >&2
+section "Hertz validation of the elastic contact solver: studies/elasticity/hertz_study.toml -> results/hertz"
 build/bin/hpcontact hertz studies/elasticity/hertz_study.toml --out results/hertz
 "$python" plots/plot_hertz.py results/hertz
 publish results/hertz/hertz.png studies/elasticity/hertz.png
-echo "== elastic stability sweep: studies/elasticity/stability.toml -> results/elastic_stability" >&2
+section "elastic stability sweep: studies/elasticity/stability.toml -> results/elastic_stability"
 build/bin/hpcontact sweep studies/elasticity/stability.toml --out results/elastic_stability --restart
 "$python" plots/plot_stability.py results/elastic_stability
 publish results/elastic_stability/stable_map.png studies/elasticity/stable_map.png
 publish results/elastic_stability/stable_map_friction_interp.png studies/elasticity/stable_map_friction.png
+stage_done "$section_name"
 echo "quickstart: done; CSV and PNG in results/" >&2
