@@ -199,8 +199,9 @@ int ContactBoundary::edge_index_at(double s) const {
   return it == edges_.end() ? static_cast<int>(edges_.size()) - 1 : static_cast<int>(it - edges_.begin());
 }
 
-Point ContactBoundary::point_at(double s) const {
-  const int k = edge_index_at(s);
+Point ContactBoundary::point_at(double s) const { return point_on_edge(edge_index_at(s), s); }
+
+Point ContactBoundary::point_on_edge(int k, double s) const {
   const auto& e = edges_[k];
   if (!e.arc) {
     const double fraction = (s - e.s_begin) / (e.s_end - e.s_begin);
@@ -215,8 +216,9 @@ Point ContactBoundary::normal_at(double s) const {
   return mesh_->boundary_normal(e.edge, e.local_parameter(s));
 }
 
-Point ContactBoundary::tangent_at(double s) const {
-  const int k = edge_index_at(s);
+Point ContactBoundary::tangent_at(double s) const { return tangent_on_edge(edge_index_at(s), s); }
+
+Point ContactBoundary::tangent_on_edge(int k, double s) const {
   const auto& e = edges_[k];
   if (!e.arc) return (edge_ends_[k][1] - edge_ends_[k][0]).normalized();
   const Point along_t = CellMap(*mesh_, e.cell).edge_tangent(e.local_edge, e.local_parameter(s));

@@ -58,6 +58,10 @@ class ContactBoundary {
   Point normal_at(double s) const;
   /// Unit tangent at arc length s, pointing towards increasing s.
   Point tangent_at(double s) const;
+  /// The point and the unit tangent of trace edge k at arc length s ∈ [s_begin, s_end] of that edge
+  /// (at a vertex shared by two edges, the one asked for).
+  Point point_on_edge(int k, double s) const;
+  Point tangent_on_edge(int k, double s) const;
   /// Whether some edge of Γ_C is curved.
   bool is_curved() const;
   const std::vector<ContactZone>& zones() const { return zones_; }

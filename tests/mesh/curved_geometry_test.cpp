@@ -28,6 +28,7 @@
 #include "scene/scene_mesh.hpp"
 #include "scene/scene_reader.hpp"
 #include "studies/convergence_study.hpp"
+#include "support/annulus_sector.hpp"
 #include "support/csv_file.hpp"
 #include "support/curved_convergence_check.hpp"
 #include "support/scratch.hpp"
@@ -40,30 +41,11 @@ namespace {
 
 const std::string kCurved = std::string(HPCONTACT_SOURCE_DIR) + "/studies/curved/";
 
-Point on_circle(double radius, double angle) { return radius * Point(std::cos(angle), std::sin(angle)); }
+using hpcontact::testing::on_circle;
 
-// The quarter annulus 1 < r < 2, 0 < θ < π/2 with n_r × n_θ cells whose sides on the two arcs
-// follow the circles exactly (degree-16 interpolants).
+// The quarter annulus 1 < r < 2, 0 < θ < π/2 with n_r × n_θ cells.
 mesh::Mesh quarter_annulus(int n_r, int n_theta) {
-  std::vector<Point> vertices;
-  const auto index = [&](int i, int j) { return i + (n_r + 1) * j; };
-  for (int j = 0; j <= n_theta; ++j)
-    for (int i = 0; i <= n_r; ++i) vertices.push_back(on_circle(1.0 + double(i) / n_r, pi / 2 * j / n_theta));
-  std::vector<std::array<int, 4>> cells;
-  for (int j = 0; j < n_theta; ++j)
-    for (int i = 0; i < n_r; ++i) cells.push_back({index(i, j), index(i + 1, j), index(i + 1, j + 1), index(i, j + 1)});
-  mesh::Mesh mesh(vertices, cells, "quarter annulus");
-  for (int e : mesh.boundary_edges()) {
-    const Point a = mesh.vertex(mesh.edge(e)[0]), b = mesh.vertex(mesh.edge(e)[1]);
-    const double radius = a.norm();
-    if (std::abs(b.norm() - radius) > 1e-12) continue;  // a straight side
-    const double from = std::atan2(a.y(), a.x()), to = std::atan2(b.y(), b.x());
-    mesh.set_edge_curve(e,
-                        std::make_shared<mesh::EdgeCurve>(mesh::EdgeCurve::interpolate(
-                            [&](double t) { return on_circle(radius, from + 0.5 * (t + 1) * (to - from)); }, 16)),
-                        "quarter annulus");
-  }
-  return mesh;
+  return hpcontact::testing::annulus_sector_mesh(1.0, 2.0, 0.0, pi / 2, n_r, n_theta);
 }
 
 double area(const mesh::Mesh& mesh) {
