@@ -71,6 +71,15 @@ Eigen::MatrixXd interval_coupling(const space::H1Space& space, const mesh::Conta
 
 }  // namespace
 
+void add_cell_coupling(std::vector<Eigen::Triplet<double>>& triplets, const Eigen::MatrixXd& local,
+                       std::span<const space::LocalShape> shapes, int first_multiplier) {
+  for (std::size_t j = 0; j < shapes.size(); ++j) {
+    if (shapes[j].dof < 0) continue;
+    for (int i = 0; i < local.rows(); ++i)
+      if (local(i, j) != 0.0) triplets.emplace_back(first_multiplier + i, shapes[j].dof, local(i, j));
+  }
+}
+
 const BoundaryFunction& CouplingWeight::function() const {
   static const BoundaryFunction none;
   return function_ ? *function_ : none;
@@ -88,13 +97,8 @@ linalg::Coupling assemble_coupling(const space::H1Space& space, const mesh::Cont
     const ArcWeight arc_weight =
         weight ? ArcWeight([&](double, const mesh::Point& x) { return weight(x); }) : ArcWeight();
     const Eigen::MatrixXd local = interval_coupling(space, contact, multipliers, interval, arc_weight);
-    const auto& shapes = space.cell_shapes(contact.edges()[interval.trace_edge].cell);
-    const int first = multipliers.first_dof(interval.segment);
-    for (std::size_t j = 0; j < shapes.size(); ++j) {
-      if (shapes[j].dof < 0) continue;
-      for (int i = 0; i < local.rows(); ++i)
-        if (local(i, j) != 0.0) triplets.emplace_back(first + i, shapes[j].dof, local(i, j));
-    }
+    add_cell_coupling(triplets, local, space.cell_shapes(contact.edges()[interval.trace_edge].cell),
+                      multipliers.first_dof(interval.segment));
   }
   linalg::Coupling coupling(multipliers.n_dofs(), space.n_dofs());
   coupling.setFromTriplets(triplets.begin(), triplets.end());

@@ -7,8 +7,10 @@
 #include <Eigen/SparseCore>
 #include <functional>
 #include <memory>
+#include <span>
 #include <string>
 #include <type_traits>
+#include <vector>
 
 #include "linalg/coupling_matrix.hpp"
 #include "mesh/contact_boundary.hpp"
@@ -51,6 +53,12 @@ class CouplingWeight {
 /// @throws InputError if the boundary mesh does not span Γ_C.
 linalg::Coupling assemble_coupling(const space::H1Space& space, const mesh::ContactBoundary& contact,
                                    const space::MultiplierSpace& multipliers, const BoundaryFunction& weight = {});
+
+/// Adds `local` (rows: the multipliers of one segment from `first_multiplier` on; columns: one
+/// cell's shapes in the order of `shapes`) to `triplets`, leaving out shapes without a dof and
+/// zeros.
+void add_cell_coupling(std::vector<Eigen::Triplet<double>>& triplets, const Eigen::MatrixXd& local,
+                       std::span<const space::LocalShape> shapes, int first_multiplier);
 
 /// The normal of Γ_C (outward from Ω) or its unit tangent (along increasing arc length s).
 enum class TraceDirection { normal, tangent };

@@ -1,0 +1,128 @@
+// The master side of the mortar coupling, B^m_ij = ∫ μ_i φ^m_j∘Φ ds on the slave's Γ_C, against
+// adaptive GSL quadrature of μ · u_h^m(Φ(x)) with Φ known in closed form, for non-matching flat
+// interfaces (fully and partly covered) and concentric arcs, random degrees on both sides.
+#include "assembly/mortar_coupling.hpp"
+
+#include <gsl/gsl_integration.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <numbers>
+#include <optional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "mesh/rectangle_mesh.hpp"
+#include "postprocess/fe_function.hpp"
+#include "support/annulus_sector.hpp"
+
+using namespace hpcontact;
+using mesh::Point;
+
+namespace {
+
+// A pair of bodies, the closed form of Φ on the slave's Γ_C (nullopt where the master does not
+// cover it) and the slave arc lengths where the integrand may have kinks.
+struct PairCase {
+  std::string name;
+  mesh::Mesh master, slave;
+  std::function<std::optional<Point>(const Point&)> phi;
+};
+
+mesh::Mesh with_contact(mesh::Mesh mesh, const std::function<bool(const Point&)>& on_contact) {
+  mesh::assign_boundary_part(mesh, mesh::BoundaryPart::contact, on_contact);
+  return mesh;
+}
+
+// The master's top y = −1 on (−w, w) in n cells, the slave's bottom y = −0.99 on (−0.8, 0.8) in 3.
+PairCase flat_case(double w, int n) {
+  return {"flat, master half-width " + std::to_string(w),
+          with_contact(mesh::make_rectangle_mesh({-w, w, -2.0, -1.0}, n, 2),
+                       [](const Point& p) { return p.y() > -1.0 - 1e-12; }),
+          with_contact(mesh::make_rectangle_mesh({-0.8, 0.8, -0.99, 0.0}, 3, 2),
+                       [](const Point& p) { return p.y() < -0.99 + 1e-12; }),
+          [w](const Point& x) -> std::optional<Point> {
+            if (std::abs(x.x()) > w) return std::nullopt;
+            return Point(x.x(), -1.0);
+          }};
+}
+
+// The master's arc r = 2, θ ∈ (0, π/2) in 5 cells, the slave's r = 2.05, θ ∈ (0.1, 1.4) in 3.
+PairCase arc_case() {
+  using std::numbers::pi;
+  return {"concentric arcs",
+          with_contact(hpcontact::testing::annulus_sector_mesh(1.0, 2.0, 0.0, pi / 2, 2, 5),
+                       [](const Point& p) { return p.norm() > 1.99; }),
+          with_contact(hpcontact::testing::annulus_sector_mesh(2.05, 3.0, 0.1, 1.4, 2, 3),
+                       [](const Point& p) { return p.norm() < 2.06; }),
+          [](const Point& x) -> std::optional<Point> { return Point(2.0 * x.normalized()); }};
+}
+
+struct Integrand {
+  const PairCase* pair;
+  const mesh::ContactBoundary* slave;
+  const space::H1Space* space;
+  const Eigen::VectorXd* u;
+  const postprocess::PointLocator* locator;
+  const space::MultiplierSpace* multipliers;
+  const Eigen::VectorXd* mu;
+};
+
+double integrand(double s, void* data) {
+  const auto& d = *static_cast<Integrand*>(data);
+  const auto image = d.pair->phi(d.slave->point_at(s));
+  if (!image) return 0.0;
+  return postprocess::evaluate_at(*d.space, *d.u, *d.locator, *image).value * d.multipliers->evaluate(*d.mu, s);
+}
+
+// μᵀ B^m u by adaptive quadrature, every breakpoint of the slave, T_{C,H} and the master's
+// image given as a singular point.
+double reference_pairing(Integrand data, const std::vector<double>& breakpoints) {
+  gsl_integration_workspace* workspace = gsl_integration_workspace_alloc(2000);
+  gsl_function f{integrand, &data};
+  std::vector<double> points = breakpoints;
+  double result = 0.0, error = 0.0;
+  gsl_integration_qagp(&f, points.data(), points.size(), 1e-14, 1e-12, 2000, workspace, &result, &error);
+  gsl_integration_workspace_free(workspace);
+  return result;
+}
+
+}  // namespace
+
+TEST(MortarCoupling, ExactOnTheMortarSegmentsAgainstAdaptiveQuadrature) {
+  std::mt19937 generator(11);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  for (const auto& pair : {flat_case(1.0, 5), flat_case(0.5, 5), arc_case()}) {
+    const mesh::ContactBoundary master(pair.master), slave(pair.slave);
+    const mesh::MasterProjection projection(master);
+    const postprocess::PointLocator locator(pair.master);
+    for (int m : {2, 4, 7}) {
+      std::vector<int> degrees(pair.master.n_cells());
+      for (int& p : degrees) p = std::uniform_int_distribution<int>(1, 5)(generator);
+      const space::H1Space space(pair.master, degrees);
+      const auto boundary = mesh::BoundaryMesh::uniform(slave.length(), m);
+      std::vector<int> pc(m);
+      for (int& d : pc) d = std::uniform_int_distribution<int>(0, 4)(generator);
+      const space::MultiplierSpace multipliers(boundary, pc);
+      Eigen::VectorXd u(space.n_dofs()), mu(multipliers.n_dofs());
+      for (auto& v : u) v = uniform(generator);
+      for (auto& v : mu) v = uniform(generator);
+      const auto b = assembly::assemble_mortar_coupling(space, projection, slave, multipliers);
+      ASSERT_EQ(b.rows(), multipliers.n_dofs());
+      ASSERT_EQ(b.cols(), space.n_dofs());
+      std::vector<double> breakpoints = slave.breakpoints();
+      for (double s : boundary.nodes()) breakpoints.push_back(s);
+      for (double s : projection.slave_breakpoints(slave)) breakpoints.push_back(s);
+      std::sort(breakpoints.begin(), breakpoints.end());
+      breakpoints.erase(std::unique(breakpoints.begin(), breakpoints.end(),
+                                    [](double a, double c) { return std::abs(a - c) < 1e-13; }),
+                        breakpoints.end());
+      const double pairing = mu.dot(b * u);
+      const double reference = reference_pairing({&pair, &slave, &space, &u, &locator, &multipliers, &mu}, breakpoints);
+      EXPECT_NEAR(pairing, reference, 1e-11 * (1.0 + std::abs(reference))) << pair.name << ", m = " << m;
+    }
+  }
+}
