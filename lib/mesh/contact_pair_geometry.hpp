@@ -34,6 +34,7 @@ struct MortarSegment {
 class MasterProjection {
  public:
   explicit MasterProjection(const ContactBoundary& master);
+  explicit MasterProjection(ContactBoundary&&) = delete;  // a temporary would dangle
 
   const ContactBoundary& master() const { return *master_; }
 

@@ -14,6 +14,9 @@ class MultiplierSpace {
   /// @param segment_degrees p_C per segment (≥ 0). @throws InputError otherwise.
   MultiplierSpace(const mesh::BoundaryMesh& boundary_mesh, std::vector<int> segment_degrees);
   MultiplierSpace(const mesh::BoundaryMesh& boundary_mesh, int degree);
+  // The space refers to its boundary mesh, which must outlive it: a temporary would dangle.
+  MultiplierSpace(mesh::BoundaryMesh&&, std::vector<int>) = delete;
+  MultiplierSpace(mesh::BoundaryMesh&&, int) = delete;
 
   const mesh::BoundaryMesh& boundary_mesh() const { return *mesh_; }
   int n_dofs() const { return n_dofs_; }

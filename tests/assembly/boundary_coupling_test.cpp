@@ -181,7 +181,7 @@ TEST(MultiplierDistance, ExactOnTheCommonRefinement) {
   gsl_integration_qagp(&f, points.data(), points.size(), 1e-14, 1e-12, 1000, workspace, &result, &error);
   gsl_integration_workspace_free(workspace);
   EXPECT_NEAR(contact::multiplier_l2_distance(a, ca, b, cb, data.weight), std::sqrt(result), 1e-12);
-  EXPECT_THROW(contact::multiplier_l2_distance(a, ca, space::MultiplierSpace(mesh::BoundaryMesh::uniform(1.0, 2), 1),
-                                               Eigen::VectorXd::Zero(4)),
+  const auto shorter = mesh::BoundaryMesh::uniform(1.0, 2);
+  EXPECT_THROW(contact::multiplier_l2_distance(a, ca, space::MultiplierSpace(shorter, 1), Eigen::VectorXd::Zero(4)),
                std::invalid_argument);
 }

@@ -1,12 +1,15 @@
 // The master side of the mortar coupling, B^m_ij = ∫ μ_i φ^m_j∘Φ ds on the slave's Γ_C, against
 // adaptive GSL quadrature of μ · u_h^m(Φ(x)) with Φ known in closed form, for non-matching flat
-// interfaces (fully and partly covered) and concentric arcs, random degrees on both sides.
+// interfaces (fully and partly covered) and concentric arcs, random degrees on both sides; and the
+// patch test of tied contact between two blocks with non-matching meshes.
 #include "assembly/mortar_coupling.hpp"
 
 #include <gsl/gsl_integration.h>
 #include <gtest/gtest.h>
 
+#include <Eigen/LU>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <numbers>
@@ -15,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include "assembly/coupling.hpp"
+#include "assembly/poisson_assembly.hpp"
 #include "mesh/rectangle_mesh.hpp"
 #include "postprocess/fe_function.hpp"
 #include "support/annulus_sector.hpp"
@@ -124,5 +129,63 @@ TEST(MortarCoupling, ExactOnTheMortarSegmentsAgainstAdaptiveQuadrature) {
       const double reference = reference_pairing({&pair, &slave, &space, &u, &locator, &multipliers, &mu}, breakpoints);
       EXPECT_NEAR(pairing, reference, 1e-11 * (1.0 + std::abs(reference))) << pair.name << ", m = " << m;
     }
+  }
+}
+
+// The mortar patch test of tied contact: two blocks meeting along y = −1 with non-matching meshes
+// (the master (−1, 1) × (−2, −1) in 5 × 2 cells, clamped at y = −2; the slave (−1, 1) × (−1, 0) in
+// 3 × 2 cells, free elsewhere) and u = (y + 2)(c + d x), harmonic and in Q_p for every p ≥ 1. With
+// the flux λ = −∂u/∂n_s = c + d x in M^{p_C} (p_C ≥ 1), the saddle point
+//   [K_s 0 B_sᵀ; 0 K_m −B_mᵀ; B_s −B_m 0] [u_s; u_m; λ] = [f_s; f_m; 0]
+// is solved by u itself: the discrete solution must be u to round-off on both bodies, and λ_h the flux.
+TEST(MortarCoupling, TiedNonMatchingBlocksReproduceABilinearSolution) {
+  const double c = 0.7, d = -0.4;
+  const auto exact = [&](const Point& x) { return (x.y() + 2.0) * (c + d * x.x()); };
+  const auto flux = [&](const Point& x, const Point& normal) {
+    return Point(d * (x.y() + 2.0), c + d * x.x()).dot(normal);  // ∂u/∂n on the Neumann edges
+  };
+  auto master_mesh = mesh::make_rectangle_mesh({-1.0, 1.0, -2.0, -1.0}, 5, 2);
+  mesh::assign_boundary_part(master_mesh, mesh::BoundaryPart::contact,
+                             [](const Point& p) { return p.y() > -1.0 - 1e-12; });
+  mesh::assign_boundary_part(master_mesh, mesh::BoundaryPart::dirichlet,
+                             [](const Point& p) { return p.y() < -2.0 + 1e-12; });
+  auto slave_mesh = mesh::make_rectangle_mesh({-1.0, 1.0, -1.0, 0.0}, 3, 2);
+  mesh::assign_boundary_part(slave_mesh, mesh::BoundaryPart::contact,
+                             [](const Point& p) { return p.y() < -1.0 + 1e-12; });
+  const mesh::ContactBoundary master(master_mesh), slave(slave_mesh);
+  const mesh::MasterProjection projection(master);
+  const postprocess::PointLocator master_locator(master_mesh), slave_locator(slave_mesh);
+  for (const auto& [p, pc, m] : std::vector<std::array<int, 3>>{{1, 1, 1}, {2, 1, 2}, {3, 2, 2}, {4, 1, 1}}) {
+    const space::H1Space master_space(master_mesh, p), slave_space(slave_mesh, p);
+    const auto boundary = mesh::BoundaryMesh::uniform(slave.length(), m);
+    const space::MultiplierSpace multipliers(boundary, pc);
+    const int ns = slave_space.n_dofs(), nm = master_space.n_dofs(), nl = multipliers.n_dofs();
+    const Eigen::MatrixXd bs = assembly::assemble_coupling(slave_space, slave, multipliers);
+    const Eigen::MatrixXd bm = assembly::assemble_mortar_coupling(master_space, projection, slave, multipliers);
+    Eigen::MatrixXd system = Eigen::MatrixXd::Zero(ns + nm + nl, ns + nm + nl);
+    system.block(0, 0, ns, ns) = assembly::assemble_volume_matrices(slave_space, {}).stiffness;
+    system.block(ns, ns, nm, nm) = assembly::assemble_volume_matrices(master_space, {}).stiffness;
+    system.block(ns + nm, 0, nl, ns) = bs;
+    system.block(ns + nm, ns, nl, nm) = -bm;
+    system.block(0, ns + nm, ns, nl) = bs.transpose();
+    system.block(ns, ns + nm, nm, nl) = -bm.transpose();
+    Eigen::VectorXd load = Eigen::VectorXd::Zero(ns + nm + nl);
+    load.head(ns) = assembly::assemble_boundary_load(slave_space, {mesh::BoundaryPart::neumann}, flux);
+    load.segment(ns, nm) = assembly::assemble_boundary_load(master_space, {mesh::BoundaryPart::neumann}, flux);
+    const Eigen::FullPivLU<Eigen::MatrixXd> lu(system);
+    ASSERT_TRUE(lu.isInvertible()) << "p " << p << " pC " << pc << " m " << m;
+    const Eigen::VectorXd solution = lu.solve(load);
+    const Eigen::VectorXd us = solution.head(ns), um = solution.segment(ns, nm), lambda = solution.tail(nl);
+    double error = 0.0;
+    for (double x = -1.0; x <= 1.0; x += 0.125)
+      for (double y = -1.875; y <= -0.125; y += 0.125) {
+        const Point point(x, y);
+        const double value = y > -1.0 ? postprocess::evaluate_at(slave_space, us, slave_locator, point).value
+                                      : postprocess::evaluate_at(master_space, um, master_locator, point).value;
+        error = std::max(error, std::abs(value - exact(point)));
+      }
+    EXPECT_LT(error, 1e-12) << "p " << p << " pC " << pc << " m " << m;
+    for (double s = 0.0; s <= slave.length(); s += 0.1)
+      EXPECT_NEAR(multipliers.evaluate(lambda, s), c + d * slave.point_at(s).x(), 1e-11) << "s = " << s;
   }
 }
