@@ -12,8 +12,7 @@
 
 namespace hpcontact::assembly {
 
-std::vector<CommonInterval> common_intervals(const mesh::ContactBoundary& contact,
-                                             const mesh::BoundaryMesh& boundary_mesh) {
+void check_multiplier_mesh(const mesh::ContactBoundary& contact, const mesh::BoundaryMesh& boundary_mesh) {
   if (std::abs(boundary_mesh.length() - contact.length()) > 1e-10 * contact.length())
     throw InputError("the boundary mesh T_{C,H} spans [0, " + std::to_string(boundary_mesh.length()) +
                      "] but Γ_C has length " + std::to_string(contact.length()));
@@ -27,6 +26,11 @@ std::vector<CommonInterval> common_intervals(const mesh::ContactBoundary& contac
   if (!same)
     throw InputError("the boundary mesh T_{C,H} does not break at the ends of the " +
                      std::to_string(contact.zones().size()) + " zones of Γ_C (or disagrees on which are closed)");
+}
+
+std::vector<CommonInterval> common_intervals(const mesh::ContactBoundary& contact,
+                                             const mesh::BoundaryMesh& boundary_mesh) {
+  check_multiplier_mesh(contact, boundary_mesh);
   const auto nodes = mesh::common_refinement(contact.breakpoints(), boundary_mesh.nodes());
   std::vector<CommonInterval> intervals;
   for (std::size_t k = 0; k + 1 < nodes.size(); ++k) {

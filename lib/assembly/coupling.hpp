@@ -75,6 +75,10 @@ linalg::Coupling assemble_directional_coupling(const space::VectorSpace& space, 
 Eigen::VectorXd assemble_multiplier_load(const mesh::ContactBoundary& contact,
                                          const space::MultiplierSpace& multipliers, const BoundaryFunction& g);
 
+/// @throws InputError unless `boundary_mesh` spans Γ_C of `contact` and breaks at the ends of its
+/// zones (open and closed alike): what a coupling between the two needs.
+void check_multiplier_mesh(const mesh::ContactBoundary& contact, const mesh::BoundaryMesh& boundary_mesh);
+
 /// The sub-intervals of the common refinement of T_h|Γ_C and T_{C,H}, each inside one trace
 /// edge and one segment.
 struct CommonInterval {

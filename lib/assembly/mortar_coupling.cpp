@@ -15,7 +15,7 @@ linalg::Coupling assemble_mortar_coupling(const space::H1Space& master_space, co
                                           const mesh::ContactBoundary& slave,
                                           const space::MultiplierSpace& multipliers) {
   const auto& boundary_mesh = multipliers.boundary_mesh();
-  common_intervals(slave, boundary_mesh);  // T_{C,H} must span the slave's Γ_C and break at its zones
+  check_multiplier_mesh(slave, boundary_mesh);
   const mesh::ContactBoundary& master = projection.master();
   std::vector<Eigen::Triplet<double>> triplets;
   for (const auto& segment : projection.mortar_segments(slave, boundary_mesh.nodes())) {

@@ -1,7 +1,6 @@
 // Γ_C pieces shared by inf-sup and contact: the chain Γ_C, the independent boundary
 // mesh T_{C,H}, the multiplier space, and the coupling B integrated exactly on the common
 // refinement (checked against adaptive GSL quadrature of μ·u_h evaluated through the point locator).
-#include <gsl/gsl_integration.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,6 +14,7 @@
 #include "mesh/rectangle_mesh.hpp"
 #include "mesh/refine.hpp"
 #include "postprocess/fe_function.hpp"
+#include "support/adaptive_integral.hpp"
 
 using namespace hpcontact;
 
@@ -83,15 +83,7 @@ double reference_pairing(Integrand data, int n, const mesh::BoundaryMesh& bounda
   std::vector<double> points;
   for (int i = 0; i <= n; ++i) points.push_back(-1.0 + 2.0 * i / n);
   for (double s : boundary.nodes()) points.push_back(s - 1.0);
-  std::sort(points.begin(), points.end());
-  points.erase(std::unique(points.begin(), points.end(), [](double a, double b) { return std::abs(a - b) < 1e-13; }),
-               points.end());
-  gsl_integration_workspace* workspace = gsl_integration_workspace_alloc(1000);
-  gsl_function f{integrand, &data};
-  double result = 0.0, error = 0.0;
-  gsl_integration_qagp(&f, points.data(), points.size(), 1e-14, 1e-12, 1000, workspace, &result, &error);
-  gsl_integration_workspace_free(workspace);
-  return result;
+  return hpcontact::testing::adaptive_integral(integrand, &data, points);
 }
 
 }  // namespace
@@ -167,19 +159,13 @@ TEST(MultiplierDistance, ExactOnTheCommonRefinement) {
   for (auto& c : ca) c = value(random);
   for (auto& c : cb) c = value(random);
   DistanceIntegrand data{&a, &b, &ca, &cb, [](double) { return 1.0; }};
-  gsl_function f{&squared_difference, &data};
-  std::vector<double> points{0.0, 0.5, 2.0 / 3.0, 4.0 / 3.0, 1.7, 2.0};
-  gsl_integration_workspace* workspace = gsl_integration_workspace_alloc(1000);
-  double result = 0.0, error = 0.0;
-  gsl_integration_qagp(&f, points.data(), points.size(), 1e-14, 1e-12, 1000, workspace, &result, &error);
-  gsl_integration_workspace_free(workspace);
-  EXPECT_NEAR(contact::multiplier_l2_distance(a, ca, b, cb), std::sqrt(result), 1e-12);
+  const std::vector<double> points{0.0, 0.5, 2.0 / 3.0, 4.0 / 3.0, 1.7, 2.0};
+  EXPECT_NEAR(contact::multiplier_l2_distance(a, ca, b, cb),
+              std::sqrt(hpcontact::testing::adaptive_integral(squared_difference, &data, points)), 1e-12);
   EXPECT_NEAR(contact::multiplier_l2_distance(a, ca, a, ca), 0.0, 1e-15);
   // With the weight w(s) = (2 - s)², as s = (1 - x)² on the §7 Γ_C: ∫ w² (μ_a − μ_b)².
   data.weight = [](double s) { return (2.0 - s) * (2.0 - s); };
-  workspace = gsl_integration_workspace_alloc(1000);
-  gsl_integration_qagp(&f, points.data(), points.size(), 1e-14, 1e-12, 1000, workspace, &result, &error);
-  gsl_integration_workspace_free(workspace);
+  const double result = hpcontact::testing::adaptive_integral(squared_difference, &data, points);
   EXPECT_NEAR(contact::multiplier_l2_distance(a, ca, b, cb, data.weight), std::sqrt(result), 1e-12);
   const auto shorter = mesh::BoundaryMesh::uniform(1.0, 2);
   EXPECT_THROW(contact::multiplier_l2_distance(a, ca, space::MultiplierSpace(shorter, 1), Eigen::VectorXd::Zero(4)),

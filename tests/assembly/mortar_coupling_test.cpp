@@ -4,7 +4,6 @@
 // patch test of tied contact between two blocks with non-matching meshes.
 #include "assembly/mortar_coupling.hpp"
 
-#include <gsl/gsl_integration.h>
 #include <gtest/gtest.h>
 
 #include <Eigen/LU>
@@ -22,6 +21,7 @@
 #include "assembly/poisson_assembly.hpp"
 #include "mesh/rectangle_mesh.hpp"
 #include "postprocess/fe_function.hpp"
+#include "support/adaptive_integral.hpp"
 #include "support/annulus_sector.hpp"
 
 using namespace hpcontact;
@@ -83,18 +83,6 @@ double integrand(double s, void* data) {
   return postprocess::evaluate_at(*d.space, *d.u, *d.locator, *image).value * d.multipliers->evaluate(*d.mu, s);
 }
 
-// μᵀ B^m u by adaptive quadrature, every breakpoint of the slave, T_{C,H} and the master's
-// image given as a singular point.
-double reference_pairing(Integrand data, const std::vector<double>& breakpoints) {
-  gsl_integration_workspace* workspace = gsl_integration_workspace_alloc(2000);
-  gsl_function f{integrand, &data};
-  std::vector<double> points = breakpoints;
-  double result = 0.0, error = 0.0;
-  gsl_integration_qagp(&f, points.data(), points.size(), 1e-14, 1e-12, 2000, workspace, &result, &error);
-  gsl_integration_workspace_free(workspace);
-  return result;
-}
-
 }  // namespace
 
 TEST(MortarCoupling, ExactOnTheMortarSegmentsAgainstAdaptiveQuadrature) {
@@ -118,15 +106,13 @@ TEST(MortarCoupling, ExactOnTheMortarSegmentsAgainstAdaptiveQuadrature) {
       const auto b = assembly::assemble_mortar_coupling(space, projection, slave, multipliers);
       ASSERT_EQ(b.rows(), multipliers.n_dofs());
       ASSERT_EQ(b.cols(), space.n_dofs());
+      // μᵀ B^m u by adaptive quadrature, the breakpoints of the slave, T_{C,H} and Φ given.
       std::vector<double> breakpoints = slave.breakpoints();
       for (double s : boundary.nodes()) breakpoints.push_back(s);
       for (double s : projection.slave_breakpoints(slave)) breakpoints.push_back(s);
-      std::sort(breakpoints.begin(), breakpoints.end());
-      breakpoints.erase(std::unique(breakpoints.begin(), breakpoints.end(),
-                                    [](double a, double c) { return std::abs(a - c) < 1e-13; }),
-                        breakpoints.end());
+      Integrand data{&pair, &slave, &space, &u, &locator, &multipliers, &mu};
       const double pairing = mu.dot(b * u);
-      const double reference = reference_pairing({&pair, &slave, &space, &u, &locator, &multipliers, &mu}, breakpoints);
+      const double reference = hpcontact::testing::adaptive_integral(integrand, &data, breakpoints);
       EXPECT_NEAR(pairing, reference, 1e-11 * (1.0 + std::abs(reference))) << pair.name << ", m = " << m;
     }
   }
