@@ -147,6 +147,12 @@ linalg::Coupling assemble_directional_coupling(const space::VectorSpace& space, 
 
 Eigen::VectorXd assemble_multiplier_load(const mesh::ContactBoundary& contact,
                                          const space::MultiplierSpace& multipliers, const BoundaryFunction& g) {
+  return assemble_multiplier_load(contact, multipliers, [&](double s) { return g(contact.point_at(s)); });
+}
+
+Eigen::VectorXd assemble_multiplier_load(const mesh::ContactBoundary& contact,
+                                         const space::MultiplierSpace& multipliers,
+                                         const std::function<double(double)>& g_of_arc) {
   Eigen::VectorXd load = Eigen::VectorXd::Zero(multipliers.n_dofs());
   for (const auto& interval : common_intervals(contact, multipliers.boundary_mesh())) {
     const int pc = multipliers.segment_degree(interval.segment);
@@ -157,7 +163,7 @@ Eigen::VectorXd assemble_multiplier_load(const mesh::ContactBoundary& contact,
       const double s = interval.s_begin + half * (rule.points[q] + 1.0);
       const double tau = multipliers.local_coordinate(interval.segment, s);
       load.segment(multipliers.first_dof(interval.segment), pc + 1) +=
-          rule.weights[q] * half * g(contact.point_at(s)) * multipliers.basis_values(interval.segment, tau);
+          rule.weights[q] * half * g_of_arc(s) * multipliers.basis_values(interval.segment, tau);
     }
   }
   return load;

@@ -74,6 +74,10 @@ linalg::Coupling assemble_directional_coupling(const space::VectorSpace& space, 
 /// g_i = ∫ g μ_i ds, shape (n_multiplier_dofs).
 Eigen::VectorXd assemble_multiplier_load(const mesh::ContactBoundary& contact,
                                          const space::MultiplierSpace& multipliers, const BoundaryFunction& g);
+/// The same for g given as a function of the arc length s on Γ_C.
+Eigen::VectorXd assemble_multiplier_load(const mesh::ContactBoundary& contact,
+                                         const space::MultiplierSpace& multipliers,
+                                         const std::function<double(double)>& g_of_arc);
 
 /// @throws InputError unless `boundary_mesh` spans Γ_C of `contact` and breaks at the ends of its
 /// zones (open and closed alike): what a coupling between the two needs.

@@ -3,6 +3,8 @@
 
 #include <Eigen/SparseCore>
 #include <algorithm>
+#include <array>
+#include <functional>
 #include <vector>
 
 #include "assembly/cell_values.hpp"
@@ -11,20 +13,32 @@
 
 namespace hpcontact::assembly {
 
-linalg::Coupling assemble_mortar_coupling(const space::H1Space& master_space, const mesh::MasterProjection& projection,
-                                          const mesh::ContactBoundary& slave,
-                                          const space::MultiplierSpace& multipliers) {
+namespace {
+
+// The coupling of one covered mortar segment: rows the multipliers of its segment of T_{C,H}
+// (from first_multiplier on), columns the shapes of the master cell beneath its image.
+struct MortarBlock {
+  Eigen::MatrixXd local;
+  int master_cell = -1;
+  int first_multiplier = 0;
+};
+
+// ∫ w(s) μ_i φ^m_j∘Φ ds on every covered mortar segment, with the weight w of the slave's arc
+// length (one for the scalar coupling; a component of n_s or t_s for the directional ones).
+std::vector<MortarBlock> mortar_blocks(const space::H1Space& master_space, const mesh::MasterProjection& projection,
+                                       const mesh::ContactBoundary& slave, const space::MultiplierSpace& multipliers,
+                                       const std::function<double(double)>& weight) {
   const auto& boundary_mesh = multipliers.boundary_mesh();
   check_multiplier_mesh(slave, boundary_mesh);
   const mesh::ContactBoundary& master = projection.master();
-  std::vector<Eigen::Triplet<double>> triplets;
+  std::vector<MortarBlock> blocks;
   for (const auto& segment : projection.mortar_segments(slave, boundary_mesh.nodes())) {
     if (!segment.covered) continue;
     const int multiplier_segment = boundary_mesh.segment_at(0.5 * (segment.s_begin + segment.s_end));
     const auto& image = master.edges()[segment.master_edge];
     const int p = master_space.cell_degree(image.cell), pc = multipliers.segment_degree(multiplier_segment);
-    // Exact for p + p_C where both edges are straight (Φ affine); a curved edge on either side
-    // makes φ∘Φ non-polynomial in s: 8 more points, as for the one-body coupling.
+    // Exact for p + p_C where both edges are straight (Φ affine, n_s constant); a curved edge on
+    // either side makes φ∘Φ and n_s non-polynomial in s: 8 more points, as for the one-body coupling.
     const bool curved = image.arc || slave.edges()[segment.slave_edge].arc;
     const int n_points = basis::gauss_points_for_degree(p + pc) + (curved ? 8 : 0);
     const auto& rule = basis::gauss_legendre(n_points);
@@ -36,14 +50,48 @@ linalg::Coupling assemble_mortar_coupling(const space::H1Space& master_space, co
       const auto phi = projection.project(slave.point_on_edge(segment.slave_edge, s));
       t[q] = image.local_parameter(std::clamp(phi.s, image.s_begin, image.s_end));
       mu.row(q) =
-          rule.weights[q] * half *
+          rule.weights[q] * half * (weight ? weight(s) : 1.0) *
           multipliers.basis_values(multiplier_segment, multipliers.local_coordinate(multiplier_segment, s)).transpose();
     }
     const CellValues cell =
         tabulate_cell(master_space, image.cell,
                       edge_reference_points(master_space.mesh().cell_type(image.cell), image.local_edge, t));
-    add_cell_coupling(triplets, mu.transpose() * cell.values, master_space.cell_shapes(image.cell),
-                      multipliers.first_dof(multiplier_segment));
+    blocks.push_back({mu.transpose() * cell.values, image.cell, multipliers.first_dof(multiplier_segment)});
+  }
+  return blocks;
+}
+
+}  // namespace
+
+linalg::Coupling assemble_mortar_coupling(const space::H1Space& master_space, const mesh::MasterProjection& projection,
+                                          const mesh::ContactBoundary& slave,
+                                          const space::MultiplierSpace& multipliers) {
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (const auto& block : mortar_blocks(master_space, projection, slave, multipliers, {}))
+    add_cell_coupling(triplets, block.local, master_space.cell_shapes(block.master_cell), block.first_multiplier);
+  linalg::Coupling coupling(multipliers.n_dofs(), master_space.n_dofs());
+  coupling.setFromTriplets(triplets.begin(), triplets.end());
+  return coupling;
+}
+
+linalg::Coupling assemble_directional_mortar_coupling(const space::VectorSpace& master_space,
+                                                      const mesh::MasterProjection& projection,
+                                                      const mesh::ContactBoundary& slave,
+                                                      const space::MultiplierSpace& multipliers,
+                                                      TraceDirection direction) {
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (int c = 0; c < space::kComponents; ++c) {
+    const auto component = [&](double s) { return trace_direction(slave, s, direction)(c); };
+    for (const auto& block : mortar_blocks(master_space.scalar(), projection, slave, multipliers, component)) {
+      const auto& shapes = master_space.scalar().cell_shapes(block.master_cell);
+      for (std::size_t j = 0; j < shapes.size(); ++j) {
+        const int column = master_space.dof(shapes[j].dof, c);
+        for (Eigen::Index i = 0; column >= 0 && i < block.local.rows(); ++i)
+          if (block.local(i, static_cast<Eigen::Index>(j)) != 0.0)
+            triplets.emplace_back(block.first_multiplier + static_cast<int>(i), column,
+                                  block.local(i, static_cast<Eigen::Index>(j)));
+      }
+    }
   }
   linalg::Coupling coupling(multipliers.n_dofs(), master_space.n_dofs());
   coupling.setFromTriplets(triplets.begin(), triplets.end());

@@ -6,10 +6,12 @@
 // cut at the breakpoints of T_{C,H}, Φ is affine and φ^m_j∘Φ a polynomial of the master's degree.
 #pragma once
 
+#include "assembly/coupling.hpp"
 #include "linalg/coupling_matrix.hpp"
 #include "mesh/contact_pair_geometry.hpp"
 #include "space/h1_space.hpp"
 #include "space/multiplier_space.hpp"
+#include "space/vector_space.hpp"
 
 namespace hpcontact::assembly {
 
@@ -21,5 +23,16 @@ namespace hpcontact::assembly {
 linalg::Coupling assemble_mortar_coupling(const space::H1Space& master_space, const mesh::MasterProjection& projection,
                                           const mesh::ContactBoundary& slave,
                                           const space::MultiplierSpace& multipliers);
+
+/// The elastic master side: B^{m,d}_{i,(j,c)} = ∫_{Γ_C^s} μ_i (φ^m_j∘Φ) d_c ds with d the slave's
+/// outward normal n_s or its tangent t_s (trace_direction of the slave), so that
+/// ∫ μ (v_s − v_m∘Φ)·d is B^{s,d} v_s − B^{m,d} v_m (B^{s,d} the slave's
+/// assemble_directional_coupling). Columns numbered by space::VectorSpace::dof of `master_space`.
+/// @throws InputError as assemble_mortar_coupling.
+linalg::Coupling assemble_directional_mortar_coupling(const space::VectorSpace& master_space,
+                                                      const mesh::MasterProjection& projection,
+                                                      const mesh::ContactBoundary& slave,
+                                                      const space::MultiplierSpace& multipliers,
+                                                      TraceDirection direction);
 
 }  // namespace hpcontact::assembly

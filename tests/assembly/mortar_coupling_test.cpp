@@ -1,6 +1,7 @@
 // The master side of the mortar coupling, B^m_ij = ∫ μ_i φ^m_j∘Φ ds on the slave's Γ_C, against
 // adaptive GSL quadrature of μ · u_h^m(Φ(x)) with Φ known in closed form, for non-matching flat
-// interfaces (fully and partly covered) and concentric arcs, random degrees on both sides; and the
+// interfaces (fully and partly covered) and concentric arcs, random degrees on both sides, for a
+// scalar field and for a displacement along the slave's normal and tangent; and the
 // patch test of tied contact between two blocks with non-matching meshes.
 #include "assembly/mortar_coupling.hpp"
 
@@ -83,6 +84,23 @@ double integrand(double s, void* data) {
   return postprocess::evaluate_at(*d.space, *d.u, *d.locator, *image).value * d.multipliers->evaluate(*d.mu, s);
 }
 
+// μ (u_h, w_h)∘Φ · d_s: the directional pairing, d the slave's normal or tangent.
+struct DirectionalIntegrand {
+  Integrand scalar;
+  const Eigen::VectorXd* w;
+  assembly::TraceDirection direction;
+};
+
+double directional_integrand(double s, void* data) {
+  const auto& d = *static_cast<DirectionalIntegrand*>(data);
+  const auto image = d.scalar.pair->phi(d.scalar.slave->point_at(s));
+  if (!image) return 0.0;
+  const Point direction = assembly::trace_direction(*d.scalar.slave, s, d.direction);
+  const double u = postprocess::evaluate_at(*d.scalar.space, *d.scalar.u, *d.scalar.locator, *image).value;
+  const double w = postprocess::evaluate_at(*d.scalar.space, *d.w, *d.scalar.locator, *image).value;
+  return (u * direction.x() + w * direction.y()) * d.scalar.multipliers->evaluate(*d.scalar.mu, s);
+}
+
 }  // namespace
 
 TEST(MortarCoupling, ExactOnTheMortarSegmentsAgainstAdaptiveQuadrature) {
@@ -114,6 +132,22 @@ TEST(MortarCoupling, ExactOnTheMortarSegmentsAgainstAdaptiveQuadrature) {
       const double pairing = mu.dot(b * u);
       const double reference = hpcontact::testing::adaptive_integral(integrand, &data, breakpoints);
       EXPECT_NEAR(pairing, reference, 1e-11 * (1.0 + std::abs(reference))) << pair.name << ", m = " << m;
+      // The elastic master side: (u, w)∘Φ paired along the slave's normal and tangent.
+      const space::VectorSpace vector_space(space);
+      Eigen::VectorXd w(space.n_dofs()), uw(vector_space.n_dofs());
+      for (auto& v : w) v = uniform(generator);
+      for (int dof = 0; dof < space.n_dofs(); ++dof) {
+        uw(vector_space.dof(dof, 0)) = u(dof);
+        uw(vector_space.dof(dof, 1)) = w(dof);
+      }
+      for (const auto direction : {assembly::TraceDirection::normal, assembly::TraceDirection::tangent}) {
+        const auto bd =
+            assembly::assemble_directional_mortar_coupling(vector_space, projection, slave, multipliers, direction);
+        DirectionalIntegrand directional{data, &w, direction};
+        const double expected = hpcontact::testing::adaptive_integral(directional_integrand, &directional, breakpoints);
+        EXPECT_NEAR(mu.dot(bd * uw), expected, 1e-11 * (1.0 + std::abs(expected)))
+            << pair.name << ", m = " << m << (direction == assembly::TraceDirection::normal ? ", normal" : ", tangent");
+      }
     }
   }
 }

@@ -27,6 +27,7 @@
 #include "space/vector_space.hpp"
 #include "support/cli_runner.hpp"
 #include "support/csv_file.hpp"
+#include "support/elastic_kkt.hpp"
 #include "support/elastic_manufactured.hpp"
 #include "support/slepc_test_environment.hpp"
 
@@ -197,35 +198,13 @@ struct ElasticContactFixture {
   }
 };
 
-// max over the constraint rows of the violation of lo ≤ Cλ ≤ hi, of gap ≥ 0 where λ is at its
-// upper bound, and of complementarity, relative to the sizes involved.
-void expect_kkt(const contact::ElasticContactSolution& solution, double tolerance) {
-  ASSERT_EQ(solution.constraint_matrix.rows(), solution.lambda.size()) << "nodal constraints expected";
-  const Eigen::VectorXd c_lambda = solution.constraint_matrix * solution.lambda;
-  const double lambda_scale = solution.lambda.lpNorm<Eigen::Infinity>(), gap_scale = solution.gap_scale;
-  for (Eigen::Index j = 0; j < c_lambda.size(); ++j) {
-    EXPECT_GE(c_lambda(j), solution.lower(j) - tolerance * lambda_scale) << "row " << j;
-    EXPECT_LE(c_lambda(j), solution.upper(j) + tolerance * lambda_scale) << "row " << j;
-    // Stationarity with C = I: the gap (dual gradient) is ≥ 0 at the upper bound, ≤ 0 at the lower
-    // one, and 0 in between.
-    const double to_upper = solution.upper(j) - c_lambda(j), to_lower = c_lambda(j) - solution.lower(j);
-    const double gap = solution.gap(j);
-    if (gap > tolerance * gap_scale) {
-      EXPECT_LE(to_upper, tolerance * lambda_scale) << "row " << j << ", gap " << gap;
-    }
-    if (gap < -tolerance * gap_scale) {
-      EXPECT_LE(to_lower, tolerance * lambda_scale) << "row " << j << ", gap " << gap;
-    }
-  }
-}
-
 }  // namespace
 
 TEST(ElasticContact, FrictionlessSatisfiesKktWithAPartialContactSet) {
   ElasticContactFixture fixture;
   for (int pc : {0, 1}) {
     const auto solution = fixture.solve(contact::ElasticContactProblem::frictionless, pc);
-    expect_kkt(solution, 1e-10);
+    hpcontact::testing::expect_kkt(solution, 1e-10);
     const Eigen::Index n = solution.lambda.size();
     int in_contact = 0;
     for (Eigen::Index j = 0; j < n; ++j)
@@ -245,8 +224,8 @@ TEST(ElasticContact, TrescaAndCoulombSatisfyKktAndTendToFrictionless) {
   for (const double friction : {0.3, 3e-2, 3e-3}) {
     const auto tresca = fixture.solve(contact::ElasticContactProblem::tresca, 1, 0.1 * friction);
     const auto coulomb = fixture.solve(contact::ElasticContactProblem::coulomb, 1, friction);
-    expect_kkt(tresca, 1e-10);
-    expect_kkt(coulomb, 1e-9);
+    hpcontact::testing::expect_kkt(tresca, 1e-10);
+    hpcontact::testing::expect_kkt(coulomb, 1e-9);
     EXPECT_GT(coulomb.fixed_point_changes.size(), 1u) << "F = " << friction;
     EXPECT_LE(coulomb.fixed_point_changes.back(), 1e-10);
     const double tresca_distance = (tresca.u - frictionless.u).norm() / scale;

@@ -1,0 +1,212 @@
+// Contact between two elastic bodies on non-matching meshes (contact/two_body_contact.hpp): the
+// contact patch test (uniform compression of two blocks of different materials reproduced to
+// round-off, quadrilaterals and triangles, p = 1…4, pressure uniform), KKT at the constraint
+// points with friction, and the rigid limit (a stiff master reproduces the one-body solver).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "assembly/cell_field.hpp"
+#include "contact/two_body_contact.hpp"
+#include "mesh/boundary_mesh.hpp"
+#include "mesh/contact_pair_geometry.hpp"
+#include "mesh/rectangle_mesh.hpp"
+#include "mesh/refine.hpp"
+#include "postprocess/boundary_samples.hpp"
+#include "postprocess/point_locator.hpp"
+#include "support/elastic_kkt.hpp"
+
+using namespace hpcontact;
+using mesh::Point;
+
+namespace {
+
+constexpr double kEps = 1e-12;
+
+// A block (x_min, x_max) × (y_min, y_max) with Γ_C on one side, u_x = 0 on its left side and
+// u_y fixed on the side `fixed_y_at` (a y coordinate).
+struct Block {
+  mesh::Rectangle rectangle;
+  mesh::Mesh mesh;
+  std::unique_ptr<operators::ElasticOperators> operators;
+
+  Block(const mesh::Rectangle& r, int n_x, int n_y, bool triangles, int p, double young, double poisson,
+        double contact_y, double fixed_y_at)
+      : rectangle(r), mesh(mesh::make_rectangle_mesh(r, n_x, n_y)) {
+    if (triangles) mesh = mesh::split_into_triangles(mesh);
+    mesh::assign_boundary_part(mesh, mesh::BoundaryPart::contact,
+                               [&](const Point& x) { return std::abs(x.y() - contact_y) < kEps; });
+    std::array<std::vector<char>, space::kComponents> fixed;
+    for (auto& mask : fixed) mask.assign(mesh.n_edges(), 0);
+    for (int e : mesh.boundary_edges()) {
+      const Point x = mesh.edge_midpoint(e);
+      fixed[0][e] = std::abs(x.x() - r.x_min) < kEps;
+      fixed[1][e] = std::abs(x.y() - fixed_y_at) < kEps;
+    }
+    operators = std::make_unique<operators::ElasticOperators>(
+        mesh, std::vector<int>(mesh.n_cells(), p),
+        std::vector<assembly::Material>(mesh.n_cells(),
+                                        assembly::lame_parameters(young, poisson, assembly::PlaneModel::strain)),
+        nullptr, fixed);
+  }
+};
+
+// The slave on top: (−1, 1) × (g₀, 1 + g₀), its top pushed down by δ, its bottom Γ_C; the master
+// below: (−1, 1) × (−1, 0), its bottom on rollers, its top Γ_C. Plane strain, sides free.
+struct CompressedBlocks {
+  double gap0 = 0.01, delta = 0.05;
+  double e_slave = 1.0, nu_slave = 0.3, e_master = 3.0, nu_master = 0.2;
+  Block slave, master;
+  std::unique_ptr<mesh::BoundaryMesh> boundary_mesh;
+
+  CompressedBlocks(int p, bool slave_triangles, int m_segments)
+      : slave({-1.0, 1.0, 0.01, 1.01}, 3, 3, slave_triangles, p, 1.0, 0.3, 0.01, 1.01),
+        master({-1.0, 1.0, -1.0, 0.0}, 5, 5, false, p, 3.0, 0.2, 0.0, -1.0),
+        boundary_mesh(std::make_unique<mesh::BoundaryMesh>(
+            mesh::BoundaryMesh::uniform(slave.operators->contact().length(), m_segments))) {}
+
+  // 1/E' = (1 − ν²)/E of plane strain under uniaxial stress σ_yy with σ_xx = 0.
+  double compliance(double young, double poisson) const { return (1.0 - poisson * poisson) / young; }
+  double pressure() const { return (delta - gap0) / (compliance(e_slave, nu_slave) + compliance(e_master, nu_master)); }
+  // u = (ν(1 + ν) p/E (x + 1), −(1 − ν²) p/E (y − y_fixed)) in each block.
+  Eigen::Vector2d exact(const Point& x) const {
+    const bool upper = x.y() > 0.005;
+    const double young = upper ? e_slave : e_master, poisson = upper ? nu_slave : nu_master;
+    const double y_fixed = upper ? 1.01 : -1.0, shift = upper ? -delta : 0.0;
+    return {poisson * (1.0 + poisson) * pressure() / young * (x.x() + 1.0),
+            shift - compliance(young, poisson) * pressure() * (x.y() - y_fixed)};
+  }
+
+  contact::TwoBodyContactSetup setup(contact::ElasticContactProblem problem, int pc) const {
+    contact::TwoBodyContactSetup s;
+    s.slave.operators = slave.operators.get();
+    s.slave.boundary_mesh = boundary_mesh.get();
+    s.slave.segment_degrees.assign(boundary_mesh->n_segments(), pc);
+    s.slave.problem = problem;
+    const double shift = -delta;
+    s.slave.dirichlet[1] = [shift](const Point&) { return shift; };
+    s.slave.threshold = [](const Point&) { return 0.05; };
+    s.slave.friction_coefficient = 0.3;
+    s.master.operators = master.operators.get();
+    return s;
+  }
+};
+
+// max |u_h − u| over a grid of points of one block, relative to max |u|.
+double relative_error(const CompressedBlocks& blocks, const Block& block, const contact::BodyDisplacement& u) {
+  const postprocess::PointLocator locator(block.mesh);
+  std::vector<postprocess::CellPoint> points;
+  std::vector<Point> xs;
+  for (double x = -1.0; x <= 1.0 + kEps; x += 0.125)
+    for (int j = 0; j <= 8; ++j) {
+      const double y_min = block.rectangle.y_min, y_max = block.rectangle.y_max;
+      xs.emplace_back(x, y_min + (y_max - y_min) * j / 8.0);
+      points.push_back(*locator.locate(xs.back()));
+    }
+  const Eigen::MatrixXd values = postprocess::values_at(
+      assembly::vector_field(block.operators->vector_space(), u.u, u.u_rows, u.lift), points, {});
+  double error = 0.0, scale = 0.0;
+  for (std::size_t k = 0; k < xs.size(); ++k) {
+    const Eigen::Vector2d exact = blocks.exact(xs[k]);
+    error = std::max(error, (values.row(static_cast<Eigen::Index>(k)).transpose() - exact).lpNorm<Eigen::Infinity>());
+    scale = std::max(scale, exact.lpNorm<Eigen::Infinity>());
+  }
+  return error / scale;
+}
+
+}  // namespace
+
+TEST(TwoBodyContact, PatchTestOfUniformCompressionIsExactOnNonMatchingMeshes) {
+  for (const bool triangles : {false, true})
+    for (int p = 1; p <= 4; ++p)
+      for (const int pc : {0, 1}) {
+        const CompressedBlocks blocks(p, triangles, 4);
+        const auto solution =
+            contact::solve_two_body_contact(blocks.setup(contact::ElasticContactProblem::frictionless, pc));
+        const std::string where = (triangles ? "triangles" : "quadrilaterals") + std::string(", p ") +
+                                  std::to_string(p) + ", p_C " + std::to_string(pc);
+        const contact::BodyDisplacement slave{solution.contact.u, solution.contact.u_rows, solution.contact.n_dofs,
+                                              solution.contact.lift};
+        EXPECT_LT(relative_error(blocks, blocks.slave, slave), 1e-10) << "slave, " << where;
+        EXPECT_LT(relative_error(blocks, blocks.master, solution.master), 1e-10) << "master, " << where;
+        // The pressure is the constant p in every segment's Legendre expansion.
+        const space::MultiplierSpace multipliers(*blocks.boundary_mesh, std::vector<int>(4, pc));
+        for (int k = 0; k < multipliers.n_segments(); ++k) {
+          const int first = multipliers.first_dof(k);
+          EXPECT_NEAR(solution.contact.pressure(first), blocks.pressure(), 1e-10 * blocks.pressure()) << where;
+          for (int j = 1; j <= pc; ++j) EXPECT_NEAR(solution.contact.pressure(first + j), 0.0, 1e-10) << where;
+        }
+      }
+}
+
+TEST(TwoBodyContact, FrictionSatisfiesKktAndHoldsTheInterfaceBackFromSliding) {
+  // The blocks' Poisson ratios differ, so that without friction the interface slides: the
+  // tangential traction that friction brings is bounded by s (Tresca) and F p (Coulomb).
+  const CompressedBlocks blocks(3, false, 4);
+  const auto frictionless =
+      contact::solve_two_body_contact(blocks.setup(contact::ElasticContactProblem::frictionless, 1));
+  for (const auto problem : {contact::ElasticContactProblem::tresca, contact::ElasticContactProblem::coulomb}) {
+    const auto solution = contact::solve_two_body_contact(blocks.setup(problem, 1));
+    hpcontact::testing::expect_kkt(solution.contact, 1e-9);
+    EXPECT_GT(solution.contact.shear.lpNorm<Eigen::Infinity>(), 1e-3 * blocks.pressure()) << "friction acts";
+    EXPECT_GT((solution.contact.u - frictionless.contact.u).norm(), 1e-6 * frictionless.contact.u.norm());
+    const Eigen::Index n = solution.contact.n_normal;
+    const double scale = solution.contact.lambda.lpNorm<Eigen::Infinity>();
+    for (Eigen::Index j = 0; j < n; ++j) {
+      const double pressure = -solution.contact.lambda(j), shear = std::abs(solution.contact.lambda(n + j));
+      const double bound = problem == contact::ElasticContactProblem::tresca ? 0.05 : 0.3 * std::max(pressure, 0.0);
+      EXPECT_LE(shear, bound + 1e-10 * scale) << "point " << j;
+    }
+  }
+}
+
+TEST(TwoBodyContact, AStiffClampedMasterReproducesTheRigidObstacle) {
+  // The paper's square hanging from Γ_D, pulled down by f = (0, −1) onto a master block clamped at
+  // its bottom, 1e10 times stiffer, whose top is tilted so that the contact set is partial.
+  const double ratio = 1e10;
+  auto slave_mesh = mesh::make_paper_square_mesh(8);
+  auto master_mesh = mesh::make_rectangle_mesh({-1.5, 1.5, -4.0, -1.0}, 6, 3);
+  std::vector<Point> moved = master_mesh.vertices();
+  for (auto& x : moved) x.y() -= (x.y() + 4.0) / 3.0 * (0.1 + 0.5 * (1.0 + x.x()));
+  master_mesh.move_vertices(moved, "tilted master");
+  mesh::assign_boundary_part(master_mesh, mesh::BoundaryPart::contact, [](const Point& x) { return x.y() > -3.9; });
+  mesh::assign_boundary_part(master_mesh, mesh::BoundaryPart::dirichlet,
+                             [](const Point& x) { return x.y() < -4.0 + kEps; });
+  // Sides of the master are free; only its top is Γ_C.
+  mesh::assign_boundary_part(master_mesh, mesh::BoundaryPart::neumann,
+                             [](const Point& x) { return std::abs(std::abs(x.x()) - 1.5) < kEps; });
+  const auto material = [](double young) {
+    return assembly::lame_parameters(young, 0.3, assembly::PlaneModel::strain);
+  };
+  const operators::ElasticOperators slave(slave_mesh, std::vector<int>(slave_mesh.n_cells(), 3),
+                                          std::vector<assembly::Material>(slave_mesh.n_cells(), material(1.0)));
+  const operators::ElasticOperators master(master_mesh, std::vector<int>(master_mesh.n_cells(), 3),
+                                           std::vector<assembly::Material>(master_mesh.n_cells(), material(ratio)));
+  const auto boundary_mesh = mesh::BoundaryMesh::uniform(slave.contact().length(), 8);
+  contact::TwoBodyContactSetup pair;
+  pair.slave.operators = &slave;
+  pair.slave.boundary_mesh = &boundary_mesh;
+  pair.slave.segment_degrees.assign(8, 1);
+  pair.slave.body_force = [](const Point&) { return Eigen::Vector2d(0.0, -1.0); };
+  pair.master.operators = &master;
+  const auto two_bodies = contact::solve_two_body_contact(pair);
+
+  // The one-body solver with the same gap to the master's top, along the slave's normal (0, −1).
+  const mesh::MasterProjection projection(master.contact());
+  contact::ElasticContactSetup one_body = pair.slave;
+  one_body.gap = [&](const Point& x) { return x.y() - projection.project(x).point.y(); };
+  const auto rigid = contact::solve_elastic_contact(one_body);
+
+  hpcontact::testing::expect_kkt(two_bodies.contact, 1e-9);
+  const Eigen::Index n = rigid.lambda.size();
+  int in_contact = 0;
+  for (Eigen::Index j = 0; j < n; ++j) in_contact += rigid.lambda(j) < -1e-8 * rigid.lambda.lpNorm<Eigen::Infinity>();
+  EXPECT_GT(in_contact, 0);
+  EXPECT_LT(in_contact, n) << "a partial contact set";
+  EXPECT_LT((two_bodies.contact.u - rigid.u).norm(), 1e-8 * rigid.u.norm());
+  EXPECT_LT((two_bodies.contact.pressure - rigid.pressure).norm(), 1e-8 * rigid.pressure.norm());
+  EXPECT_LT(two_bodies.master.u.lpNorm<Eigen::Infinity>(), 1e-8 * rigid.u.lpNorm<Eigen::Infinity>());
+}
