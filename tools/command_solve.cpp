@@ -55,6 +55,15 @@ void print_contact(const driver::ContactResult& result) {
              result.solver.method, result.solver.kkt_residual, result.contact_set_length, zone_lengths(result));
   if (!result.fixed_point_changes.empty()) fmt::print(", {} fixed-point iterations", result.fixed_point_changes.size());
   fmt::print("\n");
+  if (result.pair)
+    fmt::print("  pair '{}': slave '{}', master '{}'\n", result.pair->name, result.pair->slave, result.pair->master);
+  if (result.exact) {
+    fmt::print("  against [exact]:");
+    if (result.exact->displacement)
+      fmt::print(" displacement error {:.3e} (relative, max norm)", *result.exact->displacement);
+    if (result.exact->pressure) fmt::print(" pressure error {:.3e} (relative, max norm)", *result.exact->pressure);
+    fmt::print("\n");
+  }
 }
 
 int run_solve(const SolveOptions& o) {

@@ -18,16 +18,17 @@ namespace {
 // The coupling of one covered mortar segment: rows the multipliers of its segment of T_{C,H}
 // (from first_multiplier on), columns the shapes of the master cell beneath its image.
 struct MortarBlock {
-  Eigen::MatrixXd local;
+  std::vector<Eigen::MatrixXd> local;  ///< one per weight
   int master_cell = -1;
   int first_multiplier = 0;
 };
 
-// ∫ w(s) μ_i φ^m_j∘Φ ds on every covered mortar segment, with the weight w of the slave's arc
-// length (one for the scalar coupling; a component of n_s or t_s for the directional ones).
+// ∫ w(s) μ_i φ^m_j∘Φ ds on every covered mortar segment for each weight w of the slave's arc
+// length (none: 1, the scalar coupling; the components of n_s or t_s for the directional one), so
+// that Φ is evaluated once for all of them.
 std::vector<MortarBlock> mortar_blocks(const space::H1Space& master_space, const mesh::MasterProjection& projection,
                                        const mesh::ContactBoundary& slave, const space::MultiplierSpace& multipliers,
-                                       const std::function<double(double)>& weight) {
+                                       const std::vector<std::function<double(double)>>& weights) {
   const auto& boundary_mesh = multipliers.boundary_mesh();
   check_multiplier_mesh(slave, boundary_mesh);
   const mesh::ContactBoundary& master = projection.master();
@@ -44,19 +45,26 @@ std::vector<MortarBlock> mortar_blocks(const space::H1Space& master_space, const
     const auto& rule = basis::gauss_legendre(n_points);
     const double half = 0.5 * (segment.s_end - segment.s_begin);
     std::vector<double> t(n_points);
-    Eigen::MatrixXd mu(n_points, pc + 1);
+    const auto n_weights = std::max<std::size_t>(weights.size(), 1);
+    std::vector<Eigen::MatrixXd> mu(n_weights, Eigen::MatrixXd(n_points, pc + 1));
     for (int q = 0; q < n_points; ++q) {
       const double s = segment.s_begin + half * (rule.points[q] + 1.0);
       const auto phi = projection.project(slave.point_on_edge(segment.slave_edge, s));
-      t[q] = image.local_parameter(std::clamp(phi.s, image.s_begin, image.s_end));
-      mu.row(q) =
-          rule.weights[q] * half * (weight ? weight(s) : 1.0) *
+      // At round-off from a master vertex Φ may land on the neighbouring edge: then its arc
+      // length, clamped to this edge, gives the parameter.
+      t[q] = phi.edge == segment.master_edge ? phi.t
+                                             : image.local_parameter(std::clamp(phi.s, image.s_begin, image.s_end));
+      const Eigen::RowVectorXd basis =
+          rule.weights[q] * half *
           multipliers.basis_values(multiplier_segment, multipliers.local_coordinate(multiplier_segment, s)).transpose();
+      for (std::size_t w = 0; w < n_weights; ++w) mu[w].row(q) = (weights.empty() ? 1.0 : weights[w](s)) * basis;
     }
     const CellValues cell =
         tabulate_cell(master_space, image.cell,
                       edge_reference_points(master_space.mesh().cell_type(image.cell), image.local_edge, t));
-    blocks.push_back({mu.transpose() * cell.values, image.cell, multipliers.first_dof(multiplier_segment)});
+    MortarBlock block{{}, image.cell, multipliers.first_dof(multiplier_segment)};
+    for (const auto& weighted : mu) block.local.push_back(weighted.transpose() * cell.values);
+    blocks.push_back(std::move(block));
   }
   return blocks;
 }
@@ -68,7 +76,8 @@ linalg::Coupling assemble_mortar_coupling(const space::H1Space& master_space, co
                                           const space::MultiplierSpace& multipliers) {
   std::vector<Eigen::Triplet<double>> triplets;
   for (const auto& block : mortar_blocks(master_space, projection, slave, multipliers, {}))
-    add_cell_coupling(triplets, block.local, master_space.cell_shapes(block.master_cell), block.first_multiplier);
+    add_cell_coupling(triplets, block.local.front(), master_space.cell_shapes(block.master_cell),
+                      block.first_multiplier);
   linalg::Coupling coupling(multipliers.n_dofs(), master_space.n_dofs());
   coupling.setFromTriplets(triplets.begin(), triplets.end());
   return coupling;
@@ -79,17 +88,20 @@ linalg::Coupling assemble_directional_mortar_coupling(const space::VectorSpace& 
                                                       const mesh::ContactBoundary& slave,
                                                       const space::MultiplierSpace& multipliers,
                                                       TraceDirection direction) {
+  std::vector<std::function<double(double)>> components;
+  for (int c = 0; c < space::kComponents; ++c)
+    components.emplace_back([&, c](double s) { return trace_direction(slave, s, direction)(c); });
   std::vector<Eigen::Triplet<double>> triplets;
-  for (int c = 0; c < space::kComponents; ++c) {
-    const auto component = [&](double s) { return trace_direction(slave, s, direction)(c); };
-    for (const auto& block : mortar_blocks(master_space.scalar(), projection, slave, multipliers, component)) {
-      const auto& shapes = master_space.scalar().cell_shapes(block.master_cell);
+  for (const auto& block : mortar_blocks(master_space.scalar(), projection, slave, multipliers, components)) {
+    const auto& shapes = master_space.scalar().cell_shapes(block.master_cell);
+    for (int c = 0; c < space::kComponents; ++c) {
+      const Eigen::MatrixXd& local = block.local[static_cast<std::size_t>(c)];
       for (std::size_t j = 0; j < shapes.size(); ++j) {
         const int column = master_space.dof(shapes[j].dof, c);
-        for (Eigen::Index i = 0; column >= 0 && i < block.local.rows(); ++i)
-          if (block.local(i, static_cast<Eigen::Index>(j)) != 0.0)
+        for (Eigen::Index i = 0; column >= 0 && i < local.rows(); ++i)
+          if (local(i, static_cast<Eigen::Index>(j)) != 0.0)
             triplets.emplace_back(block.first_multiplier + static_cast<int>(i), column,
-                                  block.local(i, static_cast<Eigen::Index>(j)));
+                                  local(i, static_cast<Eigen::Index>(j)));
       }
     }
   }

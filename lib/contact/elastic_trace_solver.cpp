@@ -146,6 +146,73 @@ struct BodyCondensation {
   assembly::DirichletLift::LiftedLoad load;
 };
 
+// The Dirichlet lift of each body with Dirichlet data (null for the others).
+std::vector<std::shared_ptr<const assembly::DirichletLift>> body_lifts(const std::vector<TraceBody>& bodies) {
+  std::vector<std::shared_ptr<const assembly::DirichletLift>> lifts;
+  for (const auto& body : bodies) {
+    const auto& ops = *body.body.operators;
+    lifts.push_back(
+        body.body.dirichlet[0] || body.body.dirichlet[1]
+            ? std::make_shared<assembly::DirichletLift>(ops.vector_space(), body.body.dirichlet, ops.lift_space())
+            : nullptr);
+  }
+  return lifts;
+}
+
+// Condensation onto the trace (ordered last in each factor): S = Σ C_k A_k⁻¹ C_kᵀ and Σ C_k A_k⁻¹ F_k
+// into `s` and `b_u_free`. Distributed, the vectors of a displacement space are held at each rank's
+// own cells' dofs, the load as the ranks' shares: none of the global length.
+std::vector<BodyCondensation> condense_bodies(const std::vector<TraceBody>& bodies,
+                                              const std::vector<std::shared_ptr<const assembly::DirichletLift>>& lifts,
+                                              const CondensedProblem& problem, Eigen::MatrixXd& s,
+                                              Eigen::VectorXd& b_u_free, ElasticContactSolution& contact) {
+  const auto n_rows = static_cast<Eigen::Index>(problem.offset.size());
+  s = Eigen::MatrixXd::Zero(n_rows, n_rows);
+  b_u_free = Eigen::VectorXd::Zero(n_rows);
+  std::vector<BodyCondensation> condensed(bodies.size());
+  for (std::size_t k = 0; k < bodies.size(); ++k) {
+    Stopwatch factorization_clock;
+    condensed[k].factor = &bodies[k].body.operators->stiffness_factor();
+    contact.seconds.factorization += factorization_clock.seconds();
+    const auto& factor = *condensed[k].factor;
+    Stopwatch load_clock;
+    condensed[k].load = load_share(bodies[k].body, lifts[k].get(), factor);
+    contact.seconds.assembly += load_clock.seconds();
+    Stopwatch condensation_clock;
+    const Eigen::VectorXd u_free = factor.solve_local(condensed[k].load.load).col(0);
+    s += factor.schur_complement(problem.couplings[k]);
+    b_u_free += factor.multiply_local(problem.couplings[k], u_free).col(0);
+    contact.seconds.condensation += condensation_clock.seconds();
+    contact.n_trace += factor.n_trailing();
+  }
+  return condensed;
+}
+
+// Recovery of each body, u_k = A_k⁻¹(F_k − C_kᵀλ), with its energy; the gap Σ C_k u_k − offset.
+std::vector<BodyDisplacement> recover_bodies(const std::vector<BodyCondensation>& condensed,
+                                             const std::vector<std::shared_ptr<const assembly::DirichletLift>>& lifts,
+                                             const CondensedProblem& problem, ElasticContactSolution& contact) {
+  std::vector<BodyDisplacement> bodies;
+  contact.gap = -problem.offset;
+  for (std::size_t k = 0; k < condensed.size(); ++k) {
+    const auto& factor = *condensed[k].factor;
+    const Eigen::VectorXd& share = condensed[k].load.load;
+    BodyDisplacement body;
+    body.u =
+        factor.solve_local(Eigen::VectorXd(share - factor.transpose_share(problem.couplings[k], contact.lambda).col(0)))
+            .col(0);
+    contact.gap += factor.multiply_local(problem.couplings[k], body.u).col(0);
+    body.energy =
+        0.5 * factor.quadratic_form_local(body.u) - factor.dot_local(share, body.u) + condensed[k].load.energy_offset;
+    body.u_rows = factor.local_rows();
+    body.n_dofs = factor.size();
+    body.lift = lifts[k];
+    contact.energy += body.energy;
+    bodies.push_back(std::move(body));
+  }
+  return bodies;
+}
+
 }  // namespace
 
 TraceBody body_on_own_traces(const ElasticContactSetup& setup) {
@@ -174,39 +241,14 @@ TraceSolve solve_on_trace(const ElasticContactSetup& setup, const std::function<
   // 1. The lifts, each body's C_k, the constraints and the offset in the nodal basis.
   Stopwatch assembly_clock;
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
-  std::vector<std::shared_ptr<const assembly::DirichletLift>> lifts;
-  for (const auto& body : bodies) {
-    const auto& ops = *body.body.operators;
-    lifts.push_back(
-        body.body.dirichlet[0] || body.body.dirichlet[1]
-            ? std::make_shared<assembly::DirichletLift>(ops.vector_space(), body.body.dirichlet, ops.lift_space())
-            : nullptr);
-  }
+  const auto lifts = body_lifts(bodies);
   CondensedProblem problem = condensed_problem(setup, multipliers, gap_of_arc, bodies, lifts);
   contact.seconds.assembly = assembly_clock.seconds();
 
-  // 2. Condensation onto the trace (ordered last in each factor): S = Σ C_k A_k⁻¹ C_kᵀ, d.
-  // Distributed, the vectors of a displacement space are held at each rank's own cells' dofs, the
-  // load as the ranks' shares: none of the global length.
-  const auto n_rows = static_cast<Eigen::Index>(problem.offset.size());
-  Eigen::MatrixXd s = Eigen::MatrixXd::Zero(n_rows, n_rows);
-  Eigen::VectorXd b_u_free = Eigen::VectorXd::Zero(n_rows);
-  std::vector<BodyCondensation> condensed(bodies.size());
-  for (std::size_t k = 0; k < bodies.size(); ++k) {
-    Stopwatch factorization_clock;
-    condensed[k].factor = &bodies[k].body.operators->stiffness_factor();
-    contact.seconds.factorization += factorization_clock.seconds();
-    const auto& factor = *condensed[k].factor;
-    Stopwatch load_clock;
-    condensed[k].load = load_share(bodies[k].body, lifts[k].get(), factor);
-    contact.seconds.assembly += load_clock.seconds();
-    Stopwatch condensation_clock;
-    const Eigen::VectorXd u_free = factor.solve_local(condensed[k].load.load).col(0);
-    s += factor.schur_complement(problem.couplings[k]);
-    b_u_free += factor.multiply_local(problem.couplings[k], u_free).col(0);
-    contact.seconds.condensation += condensation_clock.seconds();
-    contact.n_trace += factor.n_trailing();
-  }
+  // 2. Condensation onto the trace: S, d.
+  Eigen::MatrixXd s;
+  Eigen::VectorXd b_u_free;
+  const auto condensed = condense_bodies(bodies, lifts, problem, s, b_u_free, contact);
   const Eigen::VectorXd d = b_u_free - problem.offset;
 
   // 3. The multiplier.
@@ -216,27 +258,11 @@ TraceSolve solve_on_trace(const ElasticContactSetup& setup, const std::function<
   if (auto* log = setup.operators->log())
     log->record("contact QP (" + qp.report.method + ")", s.rows(), s.cols(), contact.seconds.qp);
 
-  // 4. Recovery: u_k = A_k⁻¹(F_k − C_kᵀλ), the gap, the tractions, the energy.
+  // 4. Recovery: each u_k, the gap, the tractions, the energy.
   Stopwatch recovery_clock;
   contact.lambda = std::move(qp.x);
   contact.qp = std::move(qp.report);
-  contact.gap = -problem.offset;
-  for (std::size_t k = 0; k < bodies.size(); ++k) {
-    const auto& factor = *condensed[k].factor;
-    const Eigen::VectorXd& share = condensed[k].load.load;
-    BodyDisplacement body;
-    body.u =
-        factor.solve_local(Eigen::VectorXd(share - factor.transpose_share(problem.couplings[k], contact.lambda).col(0)))
-            .col(0);
-    contact.gap += factor.multiply_local(problem.couplings[k], body.u).col(0);
-    body.energy =
-        0.5 * factor.quadratic_form_local(body.u) - factor.dot_local(share, body.u) + condensed[k].load.energy_offset;
-    body.u_rows = factor.local_rows();
-    body.n_dofs = factor.size();
-    body.lift = lifts[k];
-    contact.energy += body.energy;
-    out.bodies.push_back(std::move(body));
-  }
+  out.bodies = recover_bodies(condensed, lifts, problem, contact);
   contact.gap_scale = b_u_free.lpNorm<Eigen::Infinity>() + problem.offset.lpNorm<Eigen::Infinity>() +
                       (s * contact.lambda).lpNorm<Eigen::Infinity>();
   const Eigen::VectorXd legendre = problem.constraints.to_nodal.transpose() * contact.lambda;

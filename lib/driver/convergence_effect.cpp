@@ -14,14 +14,15 @@ namespace {
 
 long long largest(const std::vector<int>& degrees) { return *std::max_element(degrees.begin(), degrees.end()); }
 
-// Level k's solutions as solution_<problem>_level<k>, their text built now (the level's operators
+// Level k's solutions as solution_<name>_level<k>, their text built now (the level's operators
 // end before the files are written); every rank builds its piece when distributed.
 void add_level_files(const Level& level, int k, const StageContext& context, RunFiles& files) {
   if (!context.writes_level_files) return;
   run_on_all_ranks_agreeing([&] {
     for (const auto& solved : level.solved)
-      files.solutions.push_back(
-          built_now({level_file_name(solved.result.problem, k), solved.solution_fields, solved.solution_text}));
+      for (const auto& solution : solved.solutions)
+        files.solutions.push_back(
+            built_now({level_file_name(solved.name + solution.suffix, k), solution.fields, solution.text}));
   });
 }
 
@@ -41,7 +42,7 @@ std::unique_ptr<Level> refined_level(const Level& base, int k, const StageContex
     log.append(std::move(record));
   }
   // Only the results, the meshes and the multipliers are read from here on.
-  for (auto& solved : level->solved) solved.solution_text = nullptr;
+  for (auto& solved : level->solved) solved.solutions.clear();
   level->model.reset();
   return level;
 }
@@ -85,8 +86,8 @@ std::vector<ConvergenceRow> refine_and_repeat(const Level& base, const StageCont
       rows.push_back(convergence_row(base, *levels[k], static_cast<int>(k), problem, *levels.back()));
   if (context.writes_level_files)
     for (const auto& solved : base.solved)
-      files.texts.push_back(level_collection(solved.result.problem, base.scene.convergence_refinements,
-                                             context.distribution.distributed()));
+      files.texts.push_back(
+          level_collection(solved.name, base.scene.convergence_refinements, context.distribution.distributed()));
   return rows;
 }
 

@@ -4,11 +4,17 @@
 #include "assembly/cell_field.hpp"
 #include "core/timer.hpp"
 #include "driver/elastic_scene.hpp"
+#include "driver/exact_check.hpp"
 #include "io/vtu_writer.hpp"
 #include "postprocess/elastic_boundary_samples.hpp"
 
 namespace hpcontact::driver {
-namespace {
+
+std::vector<scene::Effect> elastic_problem_effects(const scene::Scene& scene) {
+  std::vector<scene::Effect> effects;
+  for (const auto problem : scene.elastic_effects()) effects.push_back(scene::effect_of(problem));
+  return effects;
+}
 
 ContactResult elastic_result(const contact::ElasticContactSetup& setup, const contact::ElasticContactSolution& solution,
                              const postprocess::ElasticBoundarySamples& samples, double seconds) {
@@ -32,6 +38,8 @@ ContactResult elastic_result(const contact::ElasticContactSetup& setup, const co
   return r;
 }
 
+namespace {
+
 class ElasticModel final : public Model {
  public:
   ElasticModel(const scene::Scene& scene, const SceneDiscretization& d, OperatorLog* log,
@@ -40,11 +48,7 @@ class ElasticModel final : public Model {
         d_(d),
         operators_(scene_elastic_operators(scene, d.mesh.get(), d.cell_degrees, log, distribution)) {}
 
-  std::vector<scene::Effect> problems() const override {
-    std::vector<scene::Effect> effects;
-    for (const auto problem : scene_.elastic_effects()) effects.push_back(scene::effect_of(problem));
-    return effects;
-  }
+  std::vector<scene::Effect> problems() const override { return elastic_problem_effects(scene_); }
 
   SolvedProblem solve(scene::Effect effect) const override {
     Stopwatch clock;
@@ -52,15 +56,22 @@ class ElasticModel final : public Model {
     auto solution = std::make_shared<const contact::ElasticContactSolution>(contact::solve_elastic_contact(setup));
     const double seconds = clock.seconds();
     auto samples = postprocess::sample_elastic_boundary(setup, *solution);
-    SolvedProblem solved{elastic_result(setup, *solution, samples, seconds), std::move(samples.table),
-                         solution->pressure, io::elastic_vtu_fields(), nullptr};
+    auto result = elastic_result(setup, *solution, samples, seconds);
+    result.exact = exact_errors_of(
+        {{&scene_, assembly::vector_field(operators_->vector_space(), solution->u, solution->u_rows, solution->lift),
+          &operators_->mesh()}},
+        setup, solution->pressure, operators_->distribution());
     // The displacement u0 + the Dirichlet lift and its von Mises stress, on this rank's cells.
-    solved.solution_text = [this, solution] {
+    auto text = [this, solution] {
       return io::elastic_vtu_text(
           assembly::vector_field(operators_->vector_space(), solution->u, solution->u_rows, solution->lift),
           operators_->materials());
     };
-    return solved;
+    return {std::move(result),
+            scene::to_string(effect),
+            std::move(samples.table),
+            solution->pressure,
+            {{"", io::elastic_vtu_fields(), std::move(text)}}};
   }
 
   infsup::InfSupSetup infsup_setup() const override {

@@ -72,6 +72,21 @@ void check_dirichlet_data(const scene::Scene& scene, const operators::ElasticOpe
 
 }  // namespace
 
+contact::ElasticBody elastic_body_of(const scene::Scene& scene, const operators::ElasticOperators& operators) {
+  contact::ElasticBody body;
+  body.operators = &operators;
+  const auto fx = scene_function(scene, "data.f_x", scene.body_force_x);
+  const auto fy = scene_function(scene, "data.f_y", scene.body_force_y);
+  body.body_force = [fx, fy](const mesh::Point& x) { return Eigen::Vector2d(fx(x), fy(x)); };
+  const auto tx = scene_function(scene, "data.t_x", scene.traction_x);
+  const auto ty = scene_function(scene, "data.t_y", scene.traction_y);
+  body.traction = [tx, ty](const mesh::Point& x, const mesh::Point&) { return Eigen::Vector2d(tx(x), ty(x)); };
+  body.dirichlet = {scene_function(scene, "boundary.u_D_x", scene.dirichlet_x),
+                    scene_function(scene, "boundary.u_D_y", scene.dirichlet_y)};
+  check_dirichlet_data(scene, operators);
+  return body;
+}
+
 contact::ElasticContactSetup elastic_setup_of(const scene::Scene& scene, const SceneDiscretization& d,
                                               contact::ElasticContactProblem problem,
                                               const operators::ElasticOperators& operators) {
@@ -85,15 +100,10 @@ contact::ElasticContactSetup elastic_setup_of(const scene::Scene& scene, const S
                                                       problem == contact::ElasticContactProblem::frictionless
                                                           ? contact::ContactProblem::signorini
                                                           : contact::ContactProblem::friction_s);
-  const auto fx = scene_function(scene, "data.f_x", scene.body_force_x);
-  const auto fy = scene_function(scene, "data.f_y", scene.body_force_y);
-  setup.body_force = [fx, fy](const mesh::Point& x) { return Eigen::Vector2d(fx(x), fy(x)); };
-  const auto tx = scene_function(scene, "data.t_x", scene.traction_x);
-  const auto ty = scene_function(scene, "data.t_y", scene.traction_y);
-  setup.traction = [tx, ty](const mesh::Point& x, const mesh::Point&) { return Eigen::Vector2d(tx(x), ty(x)); };
-  setup.dirichlet = {scene_function(scene, "boundary.u_D_x", scene.dirichlet_x),
-                     scene_function(scene, "boundary.u_D_y", scene.dirichlet_y)};
-  check_dirichlet_data(scene, operators);
+  const auto body = elastic_body_of(scene, operators);
+  setup.body_force = body.body_force;
+  setup.traction = body.traction;
+  setup.dirichlet = body.dirichlet;
   setup.gap = scene_function(scene, "data.g", scene.obstacle);
   if (problem == contact::ElasticContactProblem::tresca) {
     const auto bound = scene_function(scene, "data.s", scene.friction_bound);

@@ -7,6 +7,7 @@
 
 #include "assembly/elastic_system.hpp"
 #include "contact/elastic_contact.hpp"
+#include "contact/elastic_trace_solver.hpp"
 #include "driver/scene_discretization.hpp"
 #include "operators/elastic_operators.hpp"
 
@@ -23,6 +24,10 @@ std::unique_ptr<operators::ElasticOperators> scene_elastic_operators(const scene
                                                                      const std::vector<int>& cell_degrees,
                                                                      OperatorLog* log = nullptr,
                                                                      linalg::Distribution distribution = {});
+
+/// The body of the scene on `operators`: its body force, traction and Dirichlet data.
+/// @throws InputError for Dirichlet data of a component that no edge fixes.
+contact::ElasticBody elastic_body_of(const scene::Scene& scene, const operators::ElasticOperators& operators);
 
 /// The elastic contact problem `problem` of the scene on `d` (data from the scene's expressions,
 /// s ≥ 0 checked where evaluated); `operators` must belong to the discretization.

@@ -21,17 +21,26 @@
 
 namespace hpcontact::driver {
 
+/// One ParaView file of a solved problem: the solution on one body.
+struct SolutionText {
+  std::string suffix;  ///< after solution_<name>: empty for one body, _<body> for each body of a pair
+  std::vector<std::pair<std::string, int>> fields;  ///< the file's point fields
+  /// The ParaView text of the solution on this rank's cells, built when called: the model that
+  /// solved it must still be alive.
+  std::function<std::string()> text;
+};
+
 /// One contact problem solved by a model, with what its outputs need.
 struct SolvedProblem {
   ContactResult result;
-  io::CsvTable samples;  ///< boundary_<problem>.csv: the fields sampled along Γ_C
+  /// Its name in the names of files and tables (boundary_<name>.csv, solution_<name>.vtu): the
+  /// effect's, or <pair>_<effect> for the contact pair of a two-body scene.
+  std::string name;
+  io::CsvTable samples;  ///< boundary_<name>.csv: the fields sampled along Γ_C
   /// The multiplier convergence errors are measured on: Legendre coefficients in the
   /// discretization's MultiplierSpace (λ for the scalar model, the pressure for elasticity).
   Eigen::VectorXd error_multiplier;
-  std::vector<std::pair<std::string, int>> solution_fields;  ///< the ParaView file's point fields
-  /// The ParaView text of the solution on this rank's cells, built when called: the model that
-  /// solved it must still be alive.
-  std::function<std::string()> solution_text;
+  std::vector<SolutionText> solutions;  ///< one per body
 };
 
 class Model {

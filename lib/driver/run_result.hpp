@@ -34,6 +34,17 @@ struct ContactSeconds {
   double total = 0.0;  ///< from the setup to the solution, as the run saw it
 };
 
+/// The contact pair a two-body problem was solved on: its name and its bodies.
+struct PairSummary {
+  std::string name, slave, master;
+};
+
+/// The solution against the scene's [exact] one: max |u_h − u| / max |u| over the body (both
+/// bodies of a pair), max |p_h − p| / max |p| on Γ_C; each empty when not given.
+struct ExactErrors {
+  std::optional<double> displacement, pressure;
+};
+
 /// One contact problem solved on the scene's discretization.
 struct ContactResult {
   std::string problem;  ///< the effect's name: signorini, friction, friction_s, frictionless, tresca, coulomb
@@ -47,6 +58,8 @@ struct ContactResult {
   ContactSeconds seconds;
   std::vector<double> fixed_point_changes;     ///< Coulomb: max |Δλ| / max |λ| per fixed-point iteration
   std::optional<double> friction_coefficient;  ///< Coulomb
+  std::optional<PairSummary> pair;             ///< two bodies: the pair (n_dofs counts both bodies)
+  std::optional<ExactErrors> exact;            ///< the scene gives [exact]
 };
 
 /// The inf-sup constant of the scene's pairing (effect infsup).

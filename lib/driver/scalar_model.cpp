@@ -53,14 +53,16 @@ class ScalarModel final : public Model {
     auto solution = std::make_shared<const contact::ContactSolution>(contact::solve_contact(setup));
     const double seconds = clock.seconds();
     auto samples = postprocess::sample_boundary(setup, *solution);
-    SolvedProblem solved{scalar_result(scene::to_string(effect), *solution, samples, *d_.boundary_mesh, seconds),
-                         std::move(samples.table), solution->lambda_legendre, io::solution_vtu_fields(), nullptr};
     // u = u0 + the Dirichlet lift on Ω, on this rank's cells.
-    solved.solution_text = [this, solution] {
+    auto text = [this, solution] {
       return io::solution_vtu_text(
           assembly::scalar_field(primal_.space(), solution->u, solution->u_rows, solution->lift));
     };
-    return solved;
+    return {scalar_result(scene::to_string(effect), *solution, samples, *d_.boundary_mesh, seconds),
+            scene::to_string(effect),
+            std::move(samples.table),
+            solution->lambda_legendre,
+            {{"", io::solution_vtu_fields(), std::move(text)}}};
   }
 
   infsup::InfSupSetup infsup_setup() const override {

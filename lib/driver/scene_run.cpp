@@ -48,8 +48,7 @@ void hand_over_tables(const Level& base, const RunResult& result, const RunFiles
                       const SceneRunOptions& options) {
   if (!options.tables) return;
   if (base.scene.wants_output(scene::Output::boundary))
-    for (const auto& solved : base.solved)
-      options.tables->insert_or_assign("boundary_" + solved.result.problem, solved.samples);
+    for (const auto& solved : base.solved) options.tables->insert_or_assign("boundary_" + solved.name, solved.samples);
   if (files.mode) options.tables->insert_or_assign("mode", *files.mode);
   if (!result.convergence.empty())
     options.tables->insert_or_assign("convergence", convergence_table(result.convergence));
@@ -61,9 +60,10 @@ void write_outputs(const Level& base, const RunResult& result, RunFiles& files, 
   const auto& scene = base.scene;
   if (scene.wants_output(scene::Output::vtu))
     for (const auto& solved : base.solved)
-      files.solutions.push_back({"solution_" + solved.result.problem, solved.solution_fields, solved.solution_text});
+      for (const auto& solution : solved.solutions)
+        files.solutions.push_back({"solution_" + solved.name + solution.suffix, solution.fields, solution.text});
   write_run_outputs(options.out, options.distribution, files.solutions, [&](const std::filesystem::path& out) {
-    for (const auto& solved : base.solved) write_sample_files(scene, out, solved.result.problem, solved.samples);
+    for (const auto& solved : base.solved) write_sample_files(scene, out, solved.name, solved.samples);
     for (const auto& file : files.texts) io::write_file_atomically(out / file.name, file.text);
     if (files.mode) files.mode->write(out / "mode.csv");
     if (!result.convergence.empty()) convergence_table(result.convergence).write(out / "convergence.csv");

@@ -48,6 +48,12 @@ json contact_json(const ContactResult& c) {
   if (!c.fixed_point_changes.empty())
     j["fixed_point"] = {{"iterations", c.fixed_point_changes.size()}, {"changes", c.fixed_point_changes}};
   if (c.friction_coefficient) j["friction_coefficient"] = *c.friction_coefficient;
+  if (c.exact) {
+    j["exact_errors"] = json::object();
+    if (c.exact->displacement) j["exact_errors"]["displacement"] = *c.exact->displacement;
+    if (c.exact->pressure) j["exact_errors"]["pressure"] = *c.exact->pressure;
+  }
+  if (c.pair) j["pair"] = {{"name", c.pair->name}, {"slave", c.pair->slave}, {"master", c.pair->master}};
   return j;
 }
 

@@ -211,6 +211,25 @@ Point ContactBoundary::point_on_edge(int k, double s) const {
   return CellMap(*mesh_, e.cell).map(ref.x(), ref.y());
 }
 
+Point ContactBoundary::point_at_parameter(int k, double t) const {
+  const auto& e = edges_[k];
+  const Eigen::Vector2d ref = local_edge_point(mesh_->cell_type(e.cell), e.local_edge, t);
+  return CellMap(*mesh_, e.cell).map(ref.x(), ref.y());
+}
+
+Point ContactBoundary::tangent_at_parameter(int k, double t) const {
+  const auto& e = edges_[k];
+  if (!e.arc) return (edge_ends_[k][1] - edge_ends_[k][0]).normalized();
+  return (e.reversed ? -1.0 : 1.0) * CellMap(*mesh_, e.cell).edge_tangent(e.local_edge, t).normalized();
+}
+
+double ContactBoundary::arc_length_at_parameter(int k, double t) const {
+  const auto& e = edges_[k];
+  if (e.arc) return e.reversed ? e.s_end - e.arc->arc(t) : e.s_begin + e.arc->arc(t);
+  const double fraction = 0.5 * ((e.reversed ? -t : t) + 1.0);
+  return e.s_begin + fraction * (e.s_end - e.s_begin);
+}
+
 Point ContactBoundary::normal_at(double s) const {
   const auto& e = edges_[edge_index_at(s)];
   return mesh_->boundary_normal(e.edge, e.local_parameter(s));

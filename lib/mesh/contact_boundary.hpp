@@ -62,6 +62,12 @@ class ContactBoundary {
   /// (at a vertex shared by two edges, the one asked for).
   Point point_on_edge(int k, double s) const;
   Point tangent_on_edge(int k, double s) const;
+  /// The same at the cell's local edge parameter t ∈ [-1, 1] of trace edge k, and the arc length
+  /// there: a search along a curved edge in t costs one cell-map evaluation per point, where one
+  /// in s costs an inversion of the arc length each.
+  Point point_at_parameter(int k, double t) const;
+  Point tangent_at_parameter(int k, double t) const;
+  double arc_length_at_parameter(int k, double t) const;
   /// Whether some edge of Γ_C is curved.
   bool is_curved() const;
   const std::vector<ContactZone>& zones() const { return zones_; }

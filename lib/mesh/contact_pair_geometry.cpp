@@ -17,26 +17,40 @@ namespace {
 // resolve their geometry keep (a straight edge needs only its two ends).
 constexpr int kCurvedSamples = 8;
 
-// A root of f in [a, b] where f(a) and f(b) differ in sign (or one is zero), by bisection to the
-// last bit of the interval: f is smooth but need not be monotone, and bisection cannot leave the
-// bracket.
+// A root of f in [a, b] where f(a) and f(b) differ in sign (or one is zero), by the Illinois
+// variant of false position, which keeps the bracket (f is smooth but need not be monotone) and
+// converges superlinearly: a curved edge costs a cell-map evaluation per step, and bisection to the
+// last bit took fifty of them. Ends when the bracket stops shrinking, the root being then known to
+// round-off.
 template <class Function>
-double bisect(const Function& f, double a, double b, double fa) {
-  for (int iteration = 0; iteration < 200 && b - a > 0.0; ++iteration) {
-    const double middle = 0.5 * (a + b);
-    if (middle <= a || middle >= b) break;
-    const double fm = f(middle);
-    if ((fa < 0.0) == (fm < 0.0)) {
-      a = middle;
-      fa = fm;
+double bracketed_root(const Function& f, double a, double b, double fa, double fb) {
+  if (fa == 0.0) return a;
+  if (fb == 0.0) return b;
+  int retained = 0;  // which end stayed last time: −1 a, +1 b
+  for (int iteration = 0; iteration < 200; ++iteration) {
+    double c = (a * fb - b * fa) / (fb - fa);
+    // Where false position stalls next to an end, halve instead.
+    if (!(c > a && c < b)) c = 0.5 * (a + b);
+    if (c <= a || c >= b) break;
+    const double fc = f(c);
+    if (fc == 0.0) return c;
+    if ((fa < 0.0) == (fc < 0.0)) {
+      a = c;
+      fa = fc;
+      if (retained == 1) fb *= 0.5;
+      retained = 1;
     } else {
-      b = middle;
+      b = c;
+      fb = fc;
+      if (retained == -1) fa *= 0.5;
+      retained = -1;
     }
+    if (b - a <= 4.0 * std::numeric_limits<double>::epsilon() * std::max(std::abs(a), std::abs(b))) break;
   }
-  return 0.5 * (a + b);
+  return std::abs(fa) <= std::abs(fb) ? a : b;
 }
 
-// The roots of f on [a, b] (samples + 1 values, a bisection in each piece where the sign changes).
+// The roots of f on [a, b] (samples + 1 values, a bracketed root in each piece where the sign changes).
 template <class Function>
 std::vector<double> roots_on(const Function& f, double a, double b, int samples) {
   std::vector<double> roots;
@@ -48,7 +62,7 @@ std::vector<double> roots_on(const Function& f, double a, double b, int samples)
     if (value == 0.0)
       roots.push_back(s);
     else if (previous_f != 0.0 && (previous_f < 0.0) != (value < 0.0))
-      roots.push_back(bisect(f, previous_s, s, previous_f));
+      roots.push_back(bracketed_root(f, previous_s, s, previous_f, value));
     previous_s = s;
     previous_f = value;
   }
@@ -72,45 +86,67 @@ MasterProjection::MasterProjection(const ContactBoundary& master) : master_(&mas
     centres_.push_back(master.point_on_edge(k, 0.5 * (edges[k].s_begin + edges[k].s_end)));
 }
 
-double MasterProjection::nearest_on_edge(int k, const Point& x) const {
+MasterProjection::EdgePoint MasterProjection::nearest_on_edge(int k, const Point& x) const {
   const TraceEdge& edge = master_->edges()[k];
-  const double length = edge.s_end - edge.s_begin;
   if (!edge.arc) {
     const Point a = master_->point_on_edge(k, edge.s_begin), b = master_->point_on_edge(k, edge.s_end);
-    const double t = std::clamp((x - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
-    return edge.s_begin + t * length;
+    const double fraction = std::clamp((x - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
+    const double s = edge.s_begin + fraction * (edge.s_end - edge.s_begin);
+    return {s, edge.local_parameter(s), (1.0 - fraction) * a + fraction * b};
   }
-  // The minima of |γ(s) − x|²/2 inside the edge are where its derivative (γ(s) − x)·γ'(s) (|γ'| = 1
-  // in arc length) changes sign from − to +; the ends are candidates too.
-  const auto slope = [&](double s) { return (master_->point_on_edge(k, s) - x).dot(master_->tangent_on_edge(k, s)); };
-  auto candidates = roots_on(slope, edge.s_begin, edge.s_end, kCurvedSamples);
-  candidates.push_back(edge.s_begin);
-  candidates.push_back(edge.s_end);
-  return *std::min_element(candidates.begin(), candidates.end(), [&](double a, double b) {
-    return (master_->point_on_edge(k, a) - x).squaredNorm() < (master_->point_on_edge(k, b) - x).squaredNorm();
-  });
+  // The minima of |γ − x|²/2 inside the edge are where its derivative along the edge, of the sign
+  // of (γ − x)·γ', changes sign; the ends are candidates too. Searched in the cell's edge parameter t.
+  const auto slope = [&](double t) {
+    return (master_->point_at_parameter(k, t) - x).dot(master_->tangent_at_parameter(k, t));
+  };
+  auto candidates = roots_on(slope, -1.0, 1.0, kCurvedSamples);
+  candidates.push_back(-1.0);
+  candidates.push_back(1.0);
+  EdgePoint best{0.0, 0.0, Point::Zero()};
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (const double t : candidates) {
+    const Point point = master_->point_at_parameter(k, t);
+    const double distance = (point - x).squaredNorm();
+    if (distance < best_distance) {
+      best_distance = distance;
+      best = {0.0, t, point};
+    }
+  }
+  best.s = std::clamp(master_->arc_length_at_parameter(k, best.t), edge.s_begin, edge.s_end);
+  return best;
 }
 
 MasterPoint MasterProjection::project(const Point& x) const {
   const auto& edges = master_->edges();
+  const auto n_edges = static_cast<int>(edges.size());
+  // Every point of an edge lies within half its arc length of its middle: a lower bound of its
+  // distance to x. The edge of the smallest bound is measured first, so that the bound prunes
+  // nearly every other edge (a curved one costs a cell-map evaluation per step of its root search).
+  std::vector<double> bound(static_cast<std::size_t>(n_edges));
+  int first = 0;
+  for (int k = 0; k < n_edges; ++k) {
+    bound[k] = (x - centres_[k]).norm() - 0.5 * (edges[k].s_end - edges[k].s_begin);
+    if (bound[k] < bound[first]) first = k;
+  }
   MasterPoint best;
   best.distance = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < static_cast<int>(edges.size()); ++k) {
-    // Every point of the edge lies within half its arc length of its middle.
-    if ((x - centres_[k]).norm() - 0.5 * (edges[k].s_end - edges[k].s_begin) > best.distance) continue;
-    const double s = nearest_on_edge(k, x);
-    const Point point = master_->point_on_edge(k, s);
-    const double distance = (point - x).norm();
-    if (distance < best.distance) best = {point, s, k, distance, true};
+  for (int visited = 0; visited < n_edges; ++visited) {
+    const int k = visited == 0 ? first : (visited <= first ? visited - 1 : visited);
+    if (bound[k] > best.distance) continue;
+    const EdgePoint nearest = nearest_on_edge(k, x);
+    const double distance = (nearest.point - x).norm();
+    // Ties go to the lower edge index, whichever was measured first.
+    if (distance < best.distance || (distance == best.distance && k < best.edge))
+      best = {nearest.point, nearest.s, nearest.t, k, distance, true};
   }
   // Beyond an open zone's end: x − Φ(x) leaves the zone along its outward tangent there.
   const TraceEdge& edge = edges[best.edge];
   const ContactZone& zone = master_->zones()[edge.zone];
   const double tolerance = 1e-12 * master_->length();
   if (!zone.closed && best.s <= edge.s_begin && edge.s_begin <= zone.s_begin)
-    best.covered = (x - best.point).dot(-master_->tangent_on_edge(best.edge, best.s)) <= tolerance;
+    best.covered = (x - best.point).dot(-master_->tangent_at_parameter(best.edge, best.t)) <= tolerance;
   if (!zone.closed && best.s >= edge.s_end && edge.s_end >= zone.s_end)
-    best.covered = (x - best.point).dot(master_->tangent_on_edge(best.edge, best.s)) <= tolerance;
+    best.covered = (x - best.point).dot(master_->tangent_at_parameter(best.edge, best.t)) <= tolerance;
   return best;
 }
 
@@ -125,15 +161,17 @@ std::vector<double> MasterProjection::slave_breakpoints(const ContactBoundary& s
   const double tolerance = 1e-9 * master_->length();
   std::vector<double> found;
   for (int k = 0; k < static_cast<int>(master_edges.size()); ++k)
-    for (const double s_vertex : {master_edges[k].s_begin, master_edges[k].s_end}) {
-      // The normal line of edge k through its vertex: (x − v)·t = 0.
-      const Point vertex = master_->point_on_edge(k, s_vertex);
-      const Point tangent = master_->tangent_on_edge(k, s_vertex);
+    for (const double t_vertex : {-1.0, 1.0}) {
+      // The normal line of edge k through its vertex: (x − v)·τ = 0, searched along each slave
+      // edge in its cell's edge parameter.
+      const Point vertex = master_->point_at_parameter(k, t_vertex);
+      const Point tangent = master_->tangent_at_parameter(k, t_vertex);
       for (int j = 0; j < static_cast<int>(slave_edges.size()); ++j) {
-        const auto side = [&](double s) { return (slave.point_on_edge(j, s) - vertex).dot(tangent); };
+        const auto side = [&](double t) { return (slave.point_at_parameter(j, t) - vertex).dot(tangent); };
         const int samples = slave_edges[j].arc ? kCurvedSamples : 1;
-        for (double s : roots_on(side, slave_edges[j].s_begin, slave_edges[j].s_end, samples))
-          if ((project(slave.point_on_edge(j, s)).point - vertex).norm() <= tolerance) found.push_back(s);
+        for (double t : roots_on(side, -1.0, 1.0, samples))
+          if ((project(slave.point_at_parameter(j, t)).point - vertex).norm() <= tolerance)
+            found.push_back(slave.arc_length_at_parameter(j, t));
       }
     }
   return sorted_distinct(std::move(found), 1e-12 * slave.length());

@@ -15,6 +15,7 @@ namespace hpcontact::mesh {
 struct MasterPoint {
   Point point = Point::Zero();  ///< Φ(x), the point of the master boundary nearest to x
   double s = 0.0;               ///< its arc length on the master boundary
+  double t = 0.0;               ///< its parameter on the master cell's edge (TraceEdge::local_parameter(s))
   int edge = -1;                ///< the master trace edge holding it (the nearer one at a vertex)
   double distance = 0.0;        ///< |Φ(x) − x|
   /// False where x lies beyond an end of an open master zone (Φ(x) is that end and x − Φ(x)
@@ -39,7 +40,7 @@ class MasterProjection {
   const ContactBoundary& master() const { return *master_; }
 
   /// Φ(x): the nearest point over all master edges (straight edges in closed form, curved ones by
-  /// a sign change of d/ds |γ(s) − x|²/2 = (γ(s) − x)·γ'(s) refined by bisection to round-off).
+  /// a sign change of d/ds |γ(s) − x|²/2 = (γ(s) − x)·γ'(s) refined by false position to round-off).
   /// Edges farther than the nearest point found so far are skipped by a bounding circle (centre
   /// at the edge's middle, radius half its length), so a query costs about one distance per edge.
   MasterPoint project(const Point& x) const;
@@ -60,8 +61,12 @@ class MasterProjection {
   std::vector<MortarSegment> mortar_segments(const ContactBoundary& slave, const std::vector<double>& extra = {}) const;
 
  private:
-  /// The nearest point of master edge k to x: its arc length.
-  double nearest_on_edge(int k, const Point& x) const;
+  /// The nearest point of master edge k to x: its arc length, edge parameter and position.
+  struct EdgePoint {
+    double s, t;
+    Point point;
+  };
+  EdgePoint nearest_on_edge(int k, const Point& x) const;
 
   const ContactBoundary* master_;
   std::vector<Point> centres_;  ///< each master edge's point at its middle arc length

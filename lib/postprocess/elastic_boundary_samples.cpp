@@ -1,8 +1,11 @@
-// sample_elastic_boundary.
+// sample_elastic_boundary and sample_pair_boundary: the multiplier sampled along Γ_C with the
+// displacements of one body or of both bodies of a pair.
 #include "postprocess/elastic_boundary_samples.hpp"
 
 #include "assembly/cell_values.hpp"
 #include "assembly/coupling.hpp"
+#include "core/error.hpp"
+#include "mesh/cell_map.hpp"
 #include "postprocess/boundary_samples.hpp"
 #include "space/multiplier_space.hpp"
 
@@ -17,47 +20,111 @@ double total_force(const space::MultiplierSpace& multipliers, const Eigen::Vecto
   return force;
 }
 
-ElasticBoundarySamples sample_elastic_boundary(const contact::ElasticContactSetup& setup,
-                                               const contact::ElasticContactSolution& solution, int per_interval) {
-  const auto& ops = *setup.operators;
-  const auto& contact = ops.contact();
+namespace {
+
+// One sample: where it is, and the multiplier there.
+struct Sample {
+  Eigen::Index point = 0;  ///< its index among sample_points
+  double s = 0.0;
+  mesh::Point x, normal, tangent;
+  double pressure = 0.0, shear = 0.0;
+};
+
+// Samples every interval of the common refinement of T_h|Γ_C and T_{C,H}; `row` makes a sample's
+// row of `columns`. The contact set length and the forces come from the pressure.
+ElasticBoundarySamples sample_pressure(const contact::ElasticContactSetup& setup,
+                                       const contact::ElasticContactSolution& solution,
+                                       std::vector<std::string> columns, int per_interval,
+                                       const std::function<std::vector<io::CsvCell>(const Sample&)>& row) {
+  const auto& contact = setup.operators->contact();
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
-  const auto intervals = assembly::common_intervals(contact, *setup.boundary_mesh);
-  const auto points = sample_points(contact, intervals, per_interval);
-  // u at the points from the ranks holding their cells (trace-sized, then the same on every rank)
-  const Eigen::MatrixXd u_at =
-      values_at(assembly::vector_field(ops.vector_space(), solution.u, solution.u_rows, solution.lift), points,
-                ops.distribution());
-  ElasticBoundarySamples out{
-      io::CsvTable({"x", "y", "s_arc", "u_n", "u_t", "gap", "pressure", "traction_t", "zone"}), 0.0, 0.0, {}, {}};
+  ElasticBoundarySamples out{io::CsvTable(std::move(columns)), 0.0, 0.0, {}, {}};
   out.total_force = total_force(multipliers, solution.pressure);
   out.zone_contact_set_length.assign(contact.zones().size(), 0.0);
   for (std::size_t z = 0; z < contact.zones().size(); ++z)
     out.zone_total_force.push_back(total_force(multipliers, solution.pressure, static_cast<int>(z)));
   const double pressure_scale = solution.pressure.cwiseAbs().maxCoeff();
-  Eigen::Index point = 0;
-  for (const auto& interval : intervals) {
+  Sample sample;
+  for (const auto& interval : assembly::common_intervals(contact, *setup.boundary_mesh)) {
     const auto& trace = contact.edges()[interval.trace_edge];
     const int k = interval.segment, first = multipliers.first_dof(k), n_modes = multipliers.segment_degree(k) + 1;
     int in_contact = 0;
-    for (int j = 0; j < per_interval; ++j, ++point) {
-      const double s = sample_arc(interval, j, per_interval);
-      const Eigen::Vector2d u = u_at.row(point).transpose();
-      const mesh::Point x = contact.point_at(s);
-      const mesh::Point normal = assembly::trace_direction(contact, s, assembly::TraceDirection::normal);
-      const mesh::Point tangent = assembly::trace_direction(contact, s, assembly::TraceDirection::tangent);
-      const Eigen::VectorXd basis = multipliers.basis_values(k, multipliers.local_coordinate(k, s));
-      const double pressure = basis.dot(solution.pressure.segment(first, n_modes));
-      const double shear = basis.dot(solution.shear.segment(first, n_modes));
-      out.table.add_row({x.x(), x.y(), s, u.dot(normal), u.dot(tangent), setup.gap(x) - u.dot(normal), pressure, shear,
-                         static_cast<long long>(trace.zone)});
-      if (pressure > 1e-10 * pressure_scale) ++in_contact;
+    for (int j = 0; j < per_interval; ++j, ++sample.point) {
+      sample.s = sample_arc(interval, j, per_interval);
+      sample.x = contact.point_at(sample.s);
+      sample.normal = assembly::trace_direction(contact, sample.s, assembly::TraceDirection::normal);
+      sample.tangent = assembly::trace_direction(contact, sample.s, assembly::TraceDirection::tangent);
+      const Eigen::VectorXd basis = multipliers.basis_values(k, multipliers.local_coordinate(k, sample.s));
+      sample.pressure = basis.dot(solution.pressure.segment(first, n_modes));
+      sample.shear = basis.dot(solution.shear.segment(first, n_modes));
+      auto cells = row(sample);
+      cells.emplace_back(static_cast<long long>(trace.zone));
+      out.table.add_row(std::move(cells));
+      if (sample.pressure > 1e-10 * pressure_scale) ++in_contact;
     }
     const double in_contact_length = (interval.s_end - interval.s_begin) * in_contact / per_interval;
     out.contact_set_length += in_contact_length;
     out.zone_contact_set_length[trace.zone] += in_contact_length;
   }
   return out;
+}
+
+}  // namespace
+
+ElasticBoundarySamples sample_elastic_boundary(const contact::ElasticContactSetup& setup,
+                                               const contact::ElasticContactSolution& solution, int per_interval) {
+  const auto& ops = *setup.operators;
+  const auto& contact = ops.contact();
+  const auto points = sample_points(contact, assembly::common_intervals(contact, *setup.boundary_mesh), per_interval);
+  // u at the points from the ranks holding their cells (trace-sized, then the same on every rank)
+  const Eigen::MatrixXd u_at =
+      values_at(assembly::vector_field(ops.vector_space(), solution.u, solution.u_rows, solution.lift), points,
+                ops.distribution());
+  return sample_pressure(setup, solution, {"x", "y", "s_arc", "u_n", "u_t", "gap", "pressure", "traction_t", "zone"},
+                         per_interval, [&](const Sample& at) -> std::vector<io::CsvCell> {
+                           const Eigen::Vector2d u = u_at.row(at.point).transpose();
+                           return {at.x.x(),         at.x.y(),          at.s,
+                                   u.dot(at.normal), u.dot(at.tangent), setup.gap(at.x) - u.dot(at.normal),
+                                   at.pressure,      at.shear};
+                         });
+}
+
+ElasticBoundarySamples sample_pair_boundary(const contact::TwoBodyContactSetup& setup,
+                                            const contact::TwoBodyContactSolution& solution,
+                                            const mesh::MasterProjection& projection, int per_interval) {
+  const auto& slave_ops = *setup.slave.operators;
+  const auto& master_ops = *setup.master.operators;
+  const auto& contact = slave_ops.contact();
+  const auto points =
+      sample_points(contact, assembly::common_intervals(contact, *setup.slave.boundary_mesh), per_interval);
+  const Eigen::MatrixXd slave_u = values_at(assembly::vector_field(slave_ops.vector_space(), solution.contact.u,
+                                                                   solution.contact.u_rows, solution.contact.lift),
+                                            points, slave_ops.distribution());
+  // The master's displacement at Φ(x) of each sample: its point in the master's cells.
+  // The gap g = (Φ(x) − x)·n_s from the same projection.
+  const PointLocator master_cells(master_ops.mesh());
+  std::vector<CellPoint> images;
+  std::vector<mesh::Point> offsets;  // Φ(x) − x
+  for (const auto& point : points) {
+    const mesh::Point x = mesh::CellMap(slave_ops.mesh(), point.cell).map(point.xi, point.eta);
+    const auto image = projection.project(x);
+    const auto located = master_cells.locate(image.point);
+    HPC_VERIFY(located.has_value(), "the closest master point lies outside the master's cells");
+    images.push_back(*located);
+    offsets.push_back(image.point - x);
+  }
+  const Eigen::MatrixXd master_u = values_at(assembly::vector_field(master_ops.vector_space(), solution.master.u,
+                                                                    solution.master.u_rows, solution.master.lift),
+                                             images, master_ops.distribution());
+  return sample_pressure(setup.slave, solution.contact,
+                         {"x", "y", "s_arc", "gap", "pressure", "traction_t", "u_n_slave", "u_n_master", "zone"},
+                         per_interval, [&](const Sample& at) -> std::vector<io::CsvCell> {
+                           const double u_n_slave = slave_u.row(at.point).dot(at.normal.transpose());
+                           const double u_n_master = master_u.row(at.point).dot(at.normal.transpose());
+                           const double gap = offsets[static_cast<std::size_t>(at.point)].dot(at.normal);
+                           return {at.x.x(),    at.x.y(), at.s,      gap - (u_n_slave - u_n_master),
+                                   at.pressure, at.shear, u_n_slave, u_n_master};
+                         });
 }
 
 }  // namespace hpcontact::postprocess

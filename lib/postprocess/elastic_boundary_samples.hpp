@@ -1,10 +1,13 @@
 // Boundary samples of an elastic contact solution on Γ_C (boundary_<effect>.csv): the normal and
 // tangential displacement, the gap to the obstacle, the contact pressure and the tangential
-// traction.
+// traction; for a pair of bodies (boundary_<pair>_<effect>.csv) the gap between them and both
+// bodies' normal displacements.
 #pragma once
 
 #include "contact/elastic_contact.hpp"
+#include "contact/two_body_contact.hpp"
 #include "io/csv_writer.hpp"
+#include "mesh/contact_pair_geometry.hpp"
 #include "space/multiplier_space.hpp"
 
 namespace hpcontact::postprocess {
@@ -26,5 +29,12 @@ double total_force(const space::MultiplierSpace& multipliers, const Eigen::Vecto
 /// equidistant points including both ends.
 ElasticBoundarySamples sample_elastic_boundary(const contact::ElasticContactSetup& setup,
                                                const contact::ElasticContactSolution& solution, int per_interval = 20);
+
+/// The same on the slave's Γ_C of a pair, the table's columns
+/// x,y,s_arc,gap,pressure,traction_t,u_n_slave,u_n_master,zone with gap = g − (u_s − u_m∘Φ)·n_s,
+/// g = (Φ(x) − x)·n_s (`projection` onto the master's Γ_C), u_n_master = u_m(Φ(x))·n_s.
+ElasticBoundarySamples sample_pair_boundary(const contact::TwoBodyContactSetup& setup,
+                                            const contact::TwoBodyContactSolution& solution,
+                                            const mesh::MasterProjection& projection, int per_interval = 20);
 
 }  // namespace hpcontact::postprocess

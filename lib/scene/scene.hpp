@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <optional>
 #include <set>
 #include <string>
@@ -45,8 +46,14 @@ struct Degree {
   std::string label() const { return rule.empty() ? std::to_string(value) : rule; }
 };
 
+struct ContactPair;
+
 struct Scene {
   std::string file;  ///< the scene file (or the name of a built-in scene)
+  // Two-body scenes ([[body]] and [[pair]] tables): each body is read as a scene of its own; the
+  // slave's carries the pair, and with it the master's scene.
+  std::string body;                         ///< the body's name; empty for a one-body scene
+  std::shared_ptr<const ContactPair> pair;  ///< on the slave's scene of a two-body scene
   // [domain]: a rectangle with n_x × n_y cells, or a Gmsh file.
   std::string mesh_file;            ///< empty for a rectangle; else absolute or relative to the working folder
   std::optional<double> mesh_size;  ///< a .geo mesh_file: Gmsh's maximal element size
@@ -91,6 +98,9 @@ struct Scene {
   // [data] of the elastic effects: body force, traction on Γ_N, Coulomb's coefficient.
   std::string body_force_x = "0", body_force_y = "0", traction_x = "0", traction_y = "0";
   double friction_coefficient = 0.0;
+  // [exact] (elastic effects): a known displacement and contact pressure, expressions in x, y that
+  // the run compares its solution with; empty: none.
+  std::string exact_x, exact_y, exact_pressure;
   // [infsup]
   infsup::GramNorm norm = infsup::GramNorm::interpolation;
   infsup::PairingProblem problem = infsup::PairingProblem::signorini;
@@ -127,6 +137,14 @@ struct Scene {
   /// than the scalar model.
   bool is_elastic() const;
   bool wants_output(Output output) const;
+};
+
+/// The contact pair of a two-body scene: its name (in file names, boundary_<pair>_<effect>.csv)
+/// and the master body. Γ_C of each body is its boundary.contact part; T_{C,H} and the multiplier
+/// live on the slave's.
+struct ContactPair {
+  std::string name;
+  Scene master;
 };
 
 /// The effect of a contact problem.

@@ -328,6 +328,14 @@ void add_discretization_and_data_keys(std::vector<SceneKey>& keys) {
       "material", "model",
       {{"plane_strain", assembly::PlaneModel::strain}, {"plane_stress", assembly::PlaneModel::stress}},
       assembly::PlaneModel::strain, &Scene::plane_model, "2-D model of the elastic body"));
+  // [exact]
+  add(expression_key("exact", "u_x", "", &Scene::exact_x,
+                     "elastic effects: the exact displacement's x component (with u_y); the run reports "
+                     "max |u_h − u| / max |u| over the body"));
+  add(expression_key("exact", "u_y", "", &Scene::exact_y, "elastic effects: the exact displacement's y component"));
+  add(expression_key("exact", "pressure", "", &Scene::exact_pressure,
+                     "elastic effects: the exact contact pressure on Γ_C; the run reports max |p_h − p| / max |p| "
+                     "there"));
 }
 
 void add_run_keys(std::vector<SceneKey>& keys) {
@@ -398,6 +406,9 @@ const std::vector<SceneSection>& scene_sections() {
        "the data: f (scalar model); f_x, f_y, t_x, t_y, friction_coefficient (elastic effects); g (the obstacle, for "
        "elasticity the gap to it along the outward normal: u·n ≤ g); s"},
       {"material", false, "the elastic body (effects frictionless, tresca, coulomb)"},
+      {"exact", false,
+       "a known solution the run compares with (patch tests, manufactured solutions); in a two-body scene each "
+       "body's own, the pressure the slave's"},
       {"infsup", false, "the inf-sup constant α (effect infsup, `hpcontact infsup`)"},
       {"solve", false, "the contact solve"},
       {"run", false, "effects and outputs of `hpcontact solve`"},
@@ -430,6 +441,18 @@ std::string scene_key_reference() {
         text += fmt::format("| `{}` | {} | {} | {} | {} |\n", key.name, key.type,
                             key.default_text.empty() ? "—" : "`" + key.default_text + "`", key.allowed, key.doc);
   }
+  text +=
+      "\n## Two bodies: [[body]] and [[pair]]\n\n"
+      "A scene of two elastic bodies in contact gives each body as a `[[body]]` table with a `name` (letters,\n"
+      "digits, `_`, `-`) and its own sections `[body.domain]`, `[body.boundary]`, `[body.material]`,\n"
+      "`[body.data]`, `[body.discretization]` and `[body.exact]`, with the keys above; `boundary.contact` (or\n"
+      "`contact_groups`) is the body's side of the contact. One `[[pair]]` names them: `slave` and `master`\n"
+      "(body names) and `name` (default `contact`; files are `boundary_<pair>_<effect>.csv`,\n"
+      "`solution_<pair>_<effect>_<body>.vtu`). The multiplier and T_{C,H} live on the slave's Γ_C; the gap is\n"
+      "the distance (Φ(x) − x)·n along the slave's normal, Φ the closest point of the master's Γ_C, so `data.g`\n"
+      "is not given. `[contact_mesh]`, `[discretization]`, `[infsup]`, `[solve]`, `[run]` and `[convergence]`\n"
+      "stay at the top and apply to both bodies; a `[discretization]` key set there from the command line\n"
+      "replaces the bodies' own. Effects: frictionless, tresca, coulomb (serial runs).\n";
   return text;
 }
 

@@ -14,6 +14,7 @@
 #include "core/error.hpp"
 #include "io/toml_reader.hpp"
 #include "scene/scene_keys.hpp"
+#include "scene/scene_tree.hpp"
 
 namespace hpcontact::scene {
 namespace {
@@ -149,7 +150,10 @@ const std::vector<std::string>& elastic_only_keys() {
                                              "boundary.fixed_x_groups",
                                              "boundary.fixed_y_groups",
                                              "boundary.u_D_x",
-                                             "boundary.u_D_y"};
+                                             "boundary.u_D_y",
+                                             "exact.u_x",
+                                             "exact.u_y",
+                                             "exact.pressure"};
   return keys;
 }
 
@@ -168,9 +172,18 @@ void check_elastic_effects(const Scene& scene) {
   if (scene.given.contains("boundary.u_D"))
     throw_bad_input(scene.where("boundary.u_D"), "boundary.u_D", scene.dirichlet_value,
                     "absent in an elastic scene: its Dirichlet data are boundary.u_D_x, boundary.u_D_y");
-  if (!scene.elastic_effects().empty() && scene.obstacle.empty())
+  if (!scene.body.empty() && scene.given.contains("data.g"))
+    throw_bad_input(scene.where("data.g"), "data.g", scene.obstacle,
+                    "absent for a body of a contact pair: the gap is the distance between the bodies along the "
+                    "slave's normal (move a body to open or close it)");
+  if (scene.body.empty() && !scene.elastic_effects().empty() && scene.obstacle.empty())
     throw_bad_input(scene.where("data.g"), "data.g", "(missing)",
                     "the elastic contact problems need the gap g to the obstacle along the normal");
+  if (scene.exact_x.empty() != scene.exact_y.empty()) {
+    const std::string missing = scene.exact_x.empty() ? "exact.u_x" : "exact.u_y";
+    throw_bad_input(scene.where(missing), missing, "(missing)",
+                    "both components of the exact displacement, or neither");
+  }
   if (scene.has_effect(Effect::tresca) && scene.friction_bound.empty())
     throw_bad_input(scene.where("data.s"), "data.s", "(missing)", "the effect 'tresca' needs the threshold s");
   if (scene.has_effect(Effect::coulomb) && !scene.given.contains("data.friction_coefficient"))
@@ -224,16 +237,14 @@ void check_effects(const Scene& scene) {
                       "tresca, coulomb)");
 }
 
-Scene parse_scene(const std::string& text, const std::string& path, const std::vector<SceneOverride>& overrides) {
-  // Parse errors are reported with line and column by the reader; the tree is then copied so that
-  // the overrides can replace values.
-  auto tree = std::make_shared<toml::table>(io::parse_toml_string(text, path).raw());
-  auto origins = apply_overrides(*tree, overrides);
+Scene read_scene_tree(const std::shared_ptr<toml::table>& tree, const std::string& path,
+                      std::map<std::string, std::string> origins, const std::string& body) {
   io::TomlTable root(tree, tree.get(), path, "");
   root.set_origins(origins);
 
   Scene scene;
   scene.file = path;
+  scene.body = body;
   scene.origins = std::move(origins);
   // Misspelt section names are reported before "missing section" errors.
   for (const auto& section : scene_sections()) root.has(section.name);
@@ -252,6 +263,15 @@ Scene parse_scene(const std::string& text, const std::string& path, const std::v
   if (scene.given.contains("run.effects") || scene.given.contains("run.outputs")) check_effects(scene);
   check_scene_size(scene);
   return scene;
+}
+
+Scene parse_scene(const std::string& text, const std::string& path, const std::vector<SceneOverride>& overrides) {
+  // Parse errors are reported with line and column by the reader; the tree is then copied so that
+  // the overrides can replace values.
+  auto tree = std::make_shared<toml::table>(io::parse_toml_string(text, path).raw());
+  auto origins = apply_overrides(*tree, overrides);
+  if (tree->contains("body") || tree->contains("pair")) return read_two_body_tree(tree, path, origins);
+  return read_scene_tree(tree, path, std::move(origins), "");
 }
 
 Scene read_scene(const std::string& path, const std::vector<SceneOverride>& overrides) {

@@ -1,0 +1,98 @@
+// The two-body model: both bodies' operators, the pair's contact problems and their outputs.
+#include "driver/two_body_model.hpp"
+
+#include "assembly/cell_field.hpp"
+#include "contact/two_body_contact.hpp"
+#include "core/error.hpp"
+#include "core/timer.hpp"
+#include "driver/elastic_model.hpp"
+#include "driver/elastic_scene.hpp"
+#include "driver/exact_check.hpp"
+#include "io/vtu_writer.hpp"
+#include "mesh/contact_pair_geometry.hpp"
+#include "postprocess/elastic_boundary_samples.hpp"
+
+namespace hpcontact::driver {
+namespace {
+
+class TwoBodyModel final : public Model {
+ public:
+  TwoBodyModel(const scene::Scene& scene, const SceneDiscretization& d, OperatorLog* log)
+      : scene_(scene),
+        d_(d),
+        master_d_(discretize_scene(scene.pair->master)),
+        slave_(scene_elastic_operators(scene, d.mesh.get(), d.cell_degrees, log)),
+        master_(scene_elastic_operators(scene.pair->master, master_d_->mesh.get(), master_d_->cell_degrees, log)) {}
+
+  std::vector<scene::Effect> problems() const override { return elastic_problem_effects(scene_); }
+
+  SolvedProblem solve(scene::Effect effect) const override {
+    Stopwatch clock;
+    const auto problem = *scene::elastic_problem_of(effect);
+    contact::TwoBodyContactSetup setup;
+    setup.slave = elastic_setup_of(scene_, d_, problem, *slave_);
+    setup.master = elastic_body_of(scene_.pair->master, *master_);
+    auto solution = std::make_shared<const contact::TwoBodyContactSolution>(contact::solve_two_body_contact(setup));
+    const double seconds = clock.seconds();
+    const mesh::MasterProjection projection(master_->contact());
+    auto samples = postprocess::sample_pair_boundary(setup, *solution, projection);
+    ContactResult result = elastic_result(setup.slave, solution->contact, samples, seconds);
+    result.n_dofs += solution->master.n_dofs;
+    result.pair = PairSummary{scene_.pair->name, scene_.body, scene_.pair->master.body};
+    const auto& u_s = solution->contact;
+    const auto& u_m = solution->master;
+    result.exact = exact_errors_of(
+        {{&scene_, assembly::vector_field(slave_->vector_space(), u_s.u, u_s.u_rows, u_s.lift), &slave_->mesh()},
+         {&scene_.pair->master, assembly::vector_field(master_->vector_space(), u_m.u, u_m.u_rows, u_m.lift),
+          &master_->mesh()}},
+        setup.slave, u_s.pressure, {});
+    // Each body's displacement u0 + its Dirichlet lift and its von Mises stress, a file each.
+    auto slave_text = [this, solution] {
+      const auto& u = solution->contact;
+      return io::elastic_vtu_text(assembly::vector_field(slave_->vector_space(), u.u, u.u_rows, u.lift),
+                                  slave_->materials());
+    };
+    auto master_text = [this, solution] {
+      const auto& u = solution->master;
+      return io::elastic_vtu_text(assembly::vector_field(master_->vector_space(), u.u, u.u_rows, u.lift),
+                                  master_->materials());
+    };
+    return {std::move(result),
+            scene_.pair->name + "_" + scene::to_string(effect),
+            std::move(samples.table),
+            solution->contact.pressure,
+            {{"_" + scene_.body, io::elastic_vtu_fields(), std::move(slave_text)},
+             {"_" + scene_.pair->master.body, io::elastic_vtu_fields(), std::move(master_text)}}};
+  }
+
+  infsup::InfSupSetup infsup_setup() const override {
+    throw InputError(scene_.where("run.effects") +
+                     ": the inf-sup constant of a mortar pair of two bodies is not available yet");
+  }
+  const mesh::Mesh& operators_mesh() const override { return slave_->mesh(); }
+  long long n_dofs() const override { return slave_->n_dofs() + master_->n_dofs(); }
+  void release_factors() const override {
+    slave_->release_factors();
+    master_->release_factors();
+  }
+  std::function<double(double)> multiplier_error_weight(scene::Effect, const SceneDiscretization&) const override {
+    return {};
+  }
+
+ private:
+  const scene::Scene& scene_;
+  const SceneDiscretization& d_;
+  const std::unique_ptr<SceneDiscretization> master_d_;
+  const std::unique_ptr<operators::ElasticOperators> slave_, master_;
+};
+
+}  // namespace
+
+std::unique_ptr<Model> make_two_body_model(const scene::Scene& scene, const SceneDiscretization& d, OperatorLog* log,
+                                           const linalg::Distribution& distribution) {
+  if (distribution.distributed())
+    throw InputError(scene.file + ": a two-body scene runs serially for now; run it without mpirun");
+  return std::make_unique<TwoBodyModel>(scene, d, log);
+}
+
+}  // namespace hpcontact::driver
