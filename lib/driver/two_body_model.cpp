@@ -22,7 +22,8 @@ class TwoBodyModel final : public Model {
         d_(d),
         master_d_(discretize_scene(scene.pair->master)),
         slave_(scene_elastic_operators(scene, d.mesh.get(), d.cell_degrees, log)),
-        master_(scene_elastic_operators(scene.pair->master, master_d_->mesh.get(), master_d_->cell_degrees, log)) {}
+        master_(scene_elastic_operators(scene.pair->master, master_d_->mesh.get(), master_d_->cell_degrees, log)),
+        projection_(master_->contact()) {}
 
   std::vector<scene::Effect> problems() const override { return elastic_problem_effects(scene_); }
 
@@ -34,8 +35,7 @@ class TwoBodyModel final : public Model {
     setup.master = elastic_body_of(scene_.pair->master, *master_);
     auto solution = std::make_shared<const contact::TwoBodyContactSolution>(contact::solve_two_body_contact(setup));
     const double seconds = clock.seconds();
-    const mesh::MasterProjection projection(master_->contact());
-    auto samples = postprocess::sample_pair_boundary(setup, *solution, projection);
+    auto samples = postprocess::sample_pair_boundary(setup, *solution, projection_);
     ContactResult result = elastic_result(setup.slave, solution->contact, samples, seconds);
     result.n_dofs += solution->master.n_dofs;
     result.pair = PairSummary{scene_.pair->name, scene_.body, scene_.pair->master.body};
@@ -65,9 +65,13 @@ class TwoBodyModel final : public Model {
              {"_" + scene_.pair->master.body, io::elastic_vtu_fields(), std::move(master_text)}}};
   }
 
+  // b(μ, v) = ∫ μ (v_s − v_m∘Φ)·n_s on both bodies' displacements, μ in H^{-1/2} of the slave's Γ_C.
   infsup::InfSupSetup infsup_setup() const override {
-    throw InputError(scene_.where("run.effects") +
-                     ": the inf-sup constant of a mortar pair of two bodies is not available yet");
+    auto setup =
+        infsup_setup_of(scene_, d_.mesh.get(), d_.cell_degrees, *d_.boundary_mesh, d_.segment_degrees, *slave_);
+    setup.master = master_.get();
+    setup.projection = &projection_;
+    return setup;
   }
   const mesh::Mesh& operators_mesh() const override { return slave_->mesh(); }
   long long n_dofs() const override { return slave_->n_dofs() + master_->n_dofs(); }
@@ -84,6 +88,7 @@ class TwoBodyModel final : public Model {
   const SceneDiscretization& d_;
   const std::unique_ptr<SceneDiscretization> master_d_;
   const std::unique_ptr<operators::ElasticOperators> slave_, master_;
+  const mesh::MasterProjection projection_;  ///< onto the master's Γ_C
 };
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <memory>
 
+#include "assembly/mortar_coupling.hpp"
 #include "assembly/poisson_assembly.hpp"
 #include "basis/quadrature.hpp"
 #include "core/error.hpp"
@@ -72,8 +73,34 @@ Eigen::MatrixXd block_copies(const Eigen::MatrixXd& g, int copies) {
 
 namespace {
 
+// The master's share of S_G of a contact pair: B_m A_{G,m}⁻¹ B_mᵀ with B_m the mortar coupling of
+// its traces through Φ along the slave's normal (and tangent), the sign of b irrelevant here.
+void add_master_pairing(const InfSupSetup& setup, const space::MultiplierSpace& multipliers, InfSupOperators& out) {
+  HPC_VERIFY(setup.projection, "a contact pair's inf-sup setup without the projection onto the master");
+  const auto& master = *setup.master;
+  const auto& slave = setup.elastic->contact();
+  Stopwatch assembly_clock;
+  auto coupling = [&](assembly::TraceDirection direction) {
+    return assembly::assemble_directional_mortar_coupling(master.vector_space(), *setup.projection, slave, multipliers,
+                                                          direction);
+  };
+  const linalg::Coupling normal = coupling(assembly::TraceDirection::normal);
+  const linalg::Coupling b_m = setup.problem == PairingProblem::friction
+                                   ? linalg::stack_rows(normal, coupling(assembly::TraceDirection::tangent))
+                                   : normal;
+  out.seconds_assembly += assembly_clock.seconds();
+  Stopwatch primal_clock;
+  const Eigen::MatrixXd s_m = master.gram_factor(setup.primal_norm).schur_complement(b_m);
+  if (master.log()) master.log()->record("S_G (master)", s_m.rows(), s_m.cols(), primal_clock.seconds());
+  out.s_g += s_m;
+  out.seconds_primal += primal_clock.seconds();
+  out.n_primal_dofs = master.n_dofs();
+  out.h = master.whole_mesh().longest_edge();
+  out.smallest_p = master.whole_mesh().smallest_degree();
+}
+
 // Elasticity: S_G = B A_G⁻¹ Bᵀ with B = B_n or (B_n; B_t) and A_G the Gram matrix of the primal
-// norm on [S^p(T_h)]², every multiplier active.
+// norm on [S^p(T_h)]², every multiplier active; for a contact pair plus the master's share.
 InfSupOperators elastic_infsup_operators(const InfSupSetup& setup) {
   const auto& elastic = *setup.elastic;
   HPC_VERIFY(!setup.mesh || elastic.built_on(*setup.mesh, setup.cell_degrees),
@@ -92,14 +119,16 @@ InfSupOperators elastic_infsup_operators(const InfSupSetup& setup) {
   out.s_g = a_g.schur_complement(coupling);
   if (elastic.log()) elastic.log()->record("S_G", out.s_g.rows(), out.s_g.cols(), schur_clock.seconds());
   out.seconds_primal = primal_clock.seconds();
+  if (setup.master) add_master_pairing(setup, multipliers, out);
   out.gram_copies = friction ? 2 : 1;
   out.n_multiplier_dofs = out.gram_copies * multipliers.n_dofs();
   out.active_dofs.resize(out.n_multiplier_dofs);
   for (int i = 0; i < out.n_multiplier_dofs; ++i) out.active_dofs[i] = i;
   out.log = elastic.log();
-  out.n_primal_dofs = elastic.n_dofs();
-  out.h = elastic.whole_mesh().longest_edge();
-  out.smallest_p = elastic.whole_mesh().smallest_degree();
+  out.n_primal_dofs += elastic.n_dofs();
+  out.h = std::max(out.h, elastic.whole_mesh().longest_edge());
+  out.smallest_p = out.smallest_p > 0 ? std::min(out.smallest_p, elastic.whole_mesh().smallest_degree())
+                                      : elastic.whole_mesh().smallest_degree();
   out.H = setup.boundary_mesh->mesh_size();
   return out;
 }

@@ -10,6 +10,7 @@
 
 #include "assembly/coupling.hpp"
 #include "mesh/boundary_mesh.hpp"
+#include "mesh/contact_pair_geometry.hpp"
 #include "mesh/mesh.hpp"
 #include "norms/gram_ladder.hpp"
 #include "operators/elastic_operators.hpp"
@@ -50,6 +51,12 @@ struct InfSupSetup {
   /// [S^p(T_h)]² in `primal_norm`. Must belong to (mesh, cell_degrees).
   const operators::ElasticOperators* elastic = nullptr;
   operators::PrimalNorm primal_norm = operators::PrimalNorm::h1;
+  /// A contact pair of two elastic bodies (when given, with `elastic` the slave's operators, whose
+  /// Γ_C carries T_{C,H}): the master's operators and Φ onto its Γ_C. The pairing is then
+  /// b(μ, v) = ∫ μ (v_s − v_m∘Φ)·n_s (and ·t_s) on V_s × V_m in the primal norm of both bodies, so
+  /// that S_G = B_s A_{G,s}⁻¹ B_sᵀ + B_m A_{G,m}⁻¹ B_mᵀ.
+  const operators::ElasticOperators* master = nullptr;
+  const mesh::MasterProjection* projection = nullptr;
 };
 
 struct InfSupOperators {

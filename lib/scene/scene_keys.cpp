@@ -452,7 +452,7 @@ std::string scene_key_reference() {
       "the distance (Φ(x) − x)·n along the slave's normal, Φ the closest point of the master's Γ_C, so `data.g`\n"
       "is not given. `[contact_mesh]`, `[discretization]`, `[infsup]`, `[solve]`, `[run]` and `[convergence]`\n"
       "stay at the top and apply to both bodies; a `[discretization]` key set there from the command line\n"
-      "replaces the bodies' own. Effects: frictionless, tresca, coulomb (serial runs).\n";
+      "replaces the bodies' own. Effects: frictionless, tresca, coulomb, infsup (serial runs).\n";
   return text;
 }
 

@@ -147,17 +147,19 @@ std::map<std::string, std::string> body_origins(const BodyTable& body, const std
   return out;
 }
 
-void check_pair_effects(const Scene& slave) {
+void check_pair_effects(const Scene& slave, const Scene& master) {
   const std::string where = slave.where("run.effects");
   for (const auto effect : slave.effects)
-    if (!elastic_problem_of(effect))
+    if (!elastic_problem_of(effect) && effect != Effect::infsup)
       throw_bad_input(where, "run.effects", to_string(effect),
-                      "frictionless, tresca or coulomb in a two-body scene (α of a mortar pair, convergence and the "
-                      "scalar two-body problems are not available yet)");
+                      "frictionless, tresca, coulomb or infsup in a two-body scene (convergence and the scalar "
+                      "two-body problems are not available yet)");
   if (slave.effects.empty())
-    throw_bad_input(where, "run.effects", "[]", "at least one of frictionless, tresca, coulomb");
-  if (slave.wants_output(Output::mode) && slave.given.contains("run.outputs"))
-    throw_bad_input(slave.where("run.outputs"), "run.outputs", "mode", "no spurious mode in a two-body scene");
+    throw_bad_input(where, "run.effects", "[]", "at least one of frictionless, tresca, coulomb, infsup");
+  for (const Scene* body : {&slave, &master})
+    if (!body->is_elastic())
+      throw_bad_input(body->file, "material", fmt::format("(missing in [[body]] '{}')", body->body),
+                      "a [body.material] table, or an elastic effect: the bodies of a pair are elastic");
 }
 
 }  // namespace
@@ -175,8 +177,8 @@ Scene read_two_body_tree(const std::shared_ptr<toml::table>& tree, const std::st
                                               body_origins(body, path, origins), body.name));
   }
   Scene slave = scenes.at(names.slave);
-  check_pair_effects(slave);
   const Scene& master = scenes.at(names.master);
+  check_pair_effects(slave, master);
   if (!master.exact_pressure.empty())
     throw_bad_input(master.where("exact.pressure"), "exact.pressure", master.exact_pressure,
                     fmt::format("given for the slave ('{}'): the multiplier lives on the slave's Γ_C", names.slave));

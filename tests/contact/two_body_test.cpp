@@ -11,6 +11,8 @@
 
 #include "assembly/cell_field.hpp"
 #include "contact/two_body_contact.hpp"
+#include "infsup/infsup_analysis.hpp"
+#include "infsup/infsup_operators.hpp"
 #include "mesh/boundary_mesh.hpp"
 #include "mesh/contact_pair_geometry.hpp"
 #include "mesh/rectangle_mesh.hpp"
@@ -18,6 +20,7 @@
 #include "postprocess/boundary_samples.hpp"
 #include "postprocess/point_locator.hpp"
 #include "support/elastic_kkt.hpp"
+#include "support/slepc_test_environment.hpp"
 
 using namespace hpcontact;
 using mesh::Point;
@@ -209,4 +212,84 @@ TEST(TwoBodyContact, AStiffClampedMasterReproducesTheRigidObstacle) {
   EXPECT_LT((two_bodies.contact.u - rigid.u).norm(), 1e-8 * rigid.u.norm());
   EXPECT_LT((two_bodies.contact.pressure - rigid.pressure).norm(), 1e-8 * rigid.pressure.norm());
   EXPECT_LT(two_bodies.master.u.lpNorm<Eigen::Infinity>(), 1e-8 * rigid.u.lpNorm<Eigen::Infinity>());
+}
+
+namespace {
+
+// A block (−1, 1) × (0, 1) (above) or its mirror image (−1, 1) × (−1, 0) (below), n × n cells,
+// Γ_C on the shared line y = 0, clamped on the far side; p = 3.
+struct MirroredBlock {
+  mesh::Mesh mesh;
+  std::unique_ptr<operators::ElasticOperators> operators;
+
+  MirroredBlock(bool above, int n, double young)
+      : mesh(mesh::make_rectangle_mesh({-1.0, 1.0, above ? 0.0 : -1.0, above ? 1.0 : 0.0}, n, n)) {
+    mesh::assign_boundary_part(mesh, mesh::BoundaryPart::contact,
+                               [](const Point& x) { return std::abs(x.y()) < kEps; });
+    mesh::assign_boundary_part(mesh, mesh::BoundaryPart::dirichlet,
+                               [](const Point& x) { return std::abs(std::abs(x.y()) - 1.0) < kEps; });
+    operators = std::make_unique<operators::ElasticOperators>(
+        mesh, std::vector<int>(mesh.n_cells(), 3),
+        std::vector<assembly::Material>(mesh.n_cells(),
+                                        assembly::lame_parameters(young, 0.3, assembly::PlaneModel::strain)));
+  }
+};
+
+infsup::InfSupSetup pair_setup(const MirroredBlock& slave, const mesh::BoundaryMesh& boundary, int pc,
+                               infsup::PairingProblem problem, operators::PrimalNorm norm) {
+  infsup::InfSupSetup setup;
+  setup.mesh = &slave.mesh;
+  setup.cell_degrees.assign(slave.mesh.n_cells(), 3);
+  setup.boundary_mesh = &boundary;
+  setup.segment_degrees.assign(boundary.n_segments(), pc);
+  setup.problem = problem;
+  setup.elastic = slave.operators.get();
+  setup.primal_norm = norm;
+  return setup;
+}
+
+}  // namespace
+
+TEST(TwoBodyInfSup, AMirroredMasterAddsTheSlavesShareReflected) {
+  // The master is the slave's mirror image (x, y) ↦ (x, −y) with the same mesh; a displacement
+  // reflected with it has the same norm (H¹ and energy), the opposite normal trace along n_s and
+  // the same tangential one. So the master's share of S_G is D S_s D with D = diag(−I, I) on
+  // (normal; tangential) multipliers: S_G = 2 S_s for the normal pairing, whose α grows by √2.
+  const MirroredBlock slave(true, 4, 1.0), master(false, 4, 1.0);
+  const mesh::MasterProjection projection(master.operators->contact());
+  const auto boundary = mesh::BoundaryMesh::uniform(2.0, 4);
+  for (const auto problem : {infsup::PairingProblem::signorini, infsup::PairingProblem::friction})
+    for (const auto norm : {operators::PrimalNorm::h1, operators::PrimalNorm::energy}) {
+      const std::string where = infsup::to_string(problem) + ", " + operators::to_string(norm);
+      auto setup = pair_setup(slave, boundary, 2, problem, norm);
+      const Eigen::MatrixXd alone = infsup::assemble_infsup_operators(setup).s_g;
+      const double alpha_alone = infsup::analyse_infsup(setup, infsup::EigenBackend::dense).alpha;
+      setup.master = master.operators.get();
+      setup.projection = &projection;
+      const auto pair = infsup::assemble_infsup_operators(setup);
+      Eigen::VectorXd d = Eigen::VectorXd::Ones(alone.rows());
+      d.head(alone.rows() / pair.gram_copies).setConstant(-1.0);
+      const Eigen::MatrixXd expected = alone + d.asDiagonal() * alone * d.asDiagonal();
+      EXPECT_LT((pair.s_g - expected).lpNorm<Eigen::Infinity>(), 1e-12 * alone.lpNorm<Eigen::Infinity>()) << where;
+      EXPECT_EQ(pair.n_primal_dofs, slave.operators->n_dofs() + master.operators->n_dofs()) << where;
+      if (problem == infsup::PairingProblem::signorini)
+        EXPECT_NEAR(infsup::analyse_infsup(setup, infsup::EigenBackend::dense).alpha, std::sqrt(2.0) * alpha_alone,
+                    1e-10 * alpha_alone)
+            << where;
+    }
+}
+
+TEST(TwoBodyInfSup, ANonMatchingMasterRaisesAlphaAndBothEigensolversAgree) {
+  // α² of a pair is λ_min of (S_s + S_m) against G: at least the slave's own α² (S_m ≥ 0).
+  const MirroredBlock slave(true, 3, 1.0), master(false, 5, 2.0);
+  const mesh::MasterProjection projection(master.operators->contact());
+  const auto boundary = mesh::BoundaryMesh::uniform(2.0, 3);
+  auto setup = pair_setup(slave, boundary, 1, infsup::PairingProblem::signorini, operators::PrimalNorm::h1);
+  const double slave_alone = infsup::analyse_infsup(setup, infsup::EigenBackend::dense).alpha;
+  setup.master = master.operators.get();
+  setup.projection = &projection;
+  const double pair = infsup::analyse_infsup(setup, infsup::EigenBackend::slepc).alpha;
+  EXPECT_GT(pair, slave_alone * (1.0 + 1e-3));
+  EXPECT_NEAR(pair, infsup::analyse_infsup(setup, infsup::EigenBackend::dense).alpha, 1e-8 * pair)
+      << "SLEPc and dense LAPACK agree";
 }

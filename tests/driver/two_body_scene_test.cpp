@@ -144,10 +144,14 @@ effects = ["frictionless"]
   const auto gap_message = message(with_gap);
   EXPECT_NE(gap_message.find("([[body]] 'top')"), std::string::npos) << gap_message;
   EXPECT_NE(gap_message.find("data.g"), std::string::npos) << gap_message;
-  std::string with_infsup = body + pair;
+  std::string with_convergence = body + pair;
   const std::string effects = "effects = [\"frictionless\"]";
-  with_infsup.replace(with_infsup.find(effects), effects.size(), "effects = [\"frictionless\", \"infsup\"]");
-  EXPECT_NE(message(with_infsup).find("not available yet"), std::string::npos) << message(with_infsup);
+  with_convergence.replace(with_convergence.find(effects), effects.size(),
+                           "effects = [\"frictionless\", \"convergence\"]");
+  EXPECT_NE(message(with_convergence).find("not available yet"), std::string::npos) << message(with_convergence);
+  std::string only_infsup = body + pair;
+  only_infsup.replace(only_infsup.find(effects), effects.size(), "effects = [\"infsup\"]");
+  EXPECT_NE(message(only_infsup).find("the bodies of a pair are elastic"), std::string::npos) << message(only_infsup);
   std::string twice = body + pair;
   twice.replace(twice.find("[[body]]\nname = \"bottom\""), 0, "[body.discretization]\np = 3\n");
   EXPECT_NE(message(twice).find("one place"), std::string::npos) << message(twice);
