@@ -45,15 +45,13 @@ void assign(toml::table& section, const std::string& name, const SceneOverride::
 std::map<std::string, std::string> apply_overrides(toml::table& root, const std::vector<SceneOverride>& overrides) {
   std::map<std::string, std::string> origins;
   for (const auto& override : overrides) {
-    const SceneKey* key = find_scene_key(override.key);
+    const KeyPlace place = place_of_key(root, override.key, override.origin);
+    const SceneKey* key = find_scene_key(place.section + "." + place.key);
     if (!key) throw_bad_input(override.origin, override.key, "", "a scene key (see docs/scene_keys.md)");
-    if (!root.contains(key->section)) root.insert(key->section, toml::table{});
-    auto* section = root.get_as<toml::table>(key->section);
-    if (!section) throw_bad_input(override.origin, key->section, "(not a table)", "a table of the scene");
     if (!key->group.empty())
       for (const auto& other : scene_keys())
-        if (other.group == key->group && other.section == key->section) section->erase(other.name);
-    assign(*section, key->name, override.value);
+        if (other.group == key->group && other.section == key->section) place.table->erase(other.name);
+    assign(*place.table, key->name, override.value);
     origins[override.key] = override.origin;
   }
   return origins;

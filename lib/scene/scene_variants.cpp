@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "scene/scene_reader.hpp"
+#include "scene/scene_tree.hpp"
 
 namespace hpcontact::scene {
 namespace {
@@ -76,16 +77,9 @@ std::vector<SceneVariant> scene_variants(const std::string& base_path, const io:
     toml::table scene = base;
     std::string label;
     for (const auto& [name, values] : varied) {
-      // Walk "section.key", creating the section if the base scene has none.
-      const auto dot = name.find('.');
-      if (dot == std::string::npos || name.find('.', dot + 1) != std::string::npos)
-        throw_bad_input(where, vary.qualified(name), "",
-                        "a dotted scene key \"section.key\", e.g. \"discretization.p\"");
-      const std::string section = name.substr(0, dot), key = name.substr(dot + 1);
-      if (!scene.contains(section)) scene.insert(section, toml::table{});
-      auto* table = scene.get_as<toml::table>(section);
-      if (!table) throw_bad_input(where, vary.qualified(name), "", "'" + section + "' is not a table of the scene");
-      table->insert_or_assign(key, values[i]);
+      // "section.key" or "body.<name>.section.key", the section made if the base scene has none.
+      const KeyPlace place = place_of_key(scene, name, where, vary.qualified(name));
+      place.table->insert_or_assign(place.key, values[i]);
       label += fmt::format("{}{}={}", label.empty() ? "" : " ", name, value_text(values[i]));
     }
     std::ostringstream text;

@@ -132,7 +132,8 @@ std::shared_ptr<toml::table> body_tree(const toml::table& root, const BodyTable&
   return tree;
 }
 
-// The origins of a body's keys: the body, unless an override replaced the value.
+// The origins of a body's keys: the body, unless an override replaced the value (one of the body's
+// own, body.<name>.section.key, or of the whole scene).
 std::map<std::string, std::string> body_origins(const BodyTable& body, const std::string& path,
                                                 const std::map<std::string, std::string>& origins) {
   std::map<std::string, std::string> out = origins;
@@ -141,7 +142,10 @@ std::map<std::string, std::string> body_origins(const BodyTable& body, const std
     if (!table) continue;
     for (const auto& [key_node, value] : *table) {
       const std::string dotted = section + "." + std::string(key_node.str());
-      if (!origins.contains(dotted)) out[dotted] = fmt::format("{} ([[body]] '{}')", path, body.name);
+      if (const auto found = origins.find("body." + body.name + "." + dotted); found != origins.end())
+        out[dotted] = found->second;
+      else if (!origins.contains(dotted))
+        out[dotted] = fmt::format("{} ([[body]] '{}')", path, body.name);
     }
   }
   return out;
@@ -163,6 +167,44 @@ void check_pair_effects(const Scene& slave, const Scene& master) {
 }
 
 }  // namespace
+
+KeyPlace place_of_key(toml::table& root, const std::string& name, const std::string& origin,
+                      const std::string& shown_name) {
+  const std::string& shown = shown_name.empty() ? name : shown_name;
+  std::vector<std::string> parts;
+  for (std::size_t start = 0;;) {
+    const auto dot = name.find('.', start);
+    parts.push_back(name.substr(start, dot == std::string::npos ? std::string::npos : dot - start));
+    if (dot == std::string::npos) break;
+    start = dot + 1;
+  }
+  toml::table* owner = &root;
+  if (parts.size() == 4 && parts[0] == "body") {
+    owner = nullptr;
+    std::vector<std::string> names;
+    if (auto* bodies = root["body"].as_array())
+      for (auto& node : *bodies)
+        if (auto* body = node.as_table()) {
+          const auto* body_name = body->get_as<std::string>("name");
+          if (body_name) names.push_back("'" + body_name->get() + "'");
+          if (body_name && body_name->get() == parts[1]) owner = body;
+        }
+    if (!owner)
+      throw_bad_input(origin, shown, "",
+                      fmt::format("a body of the scene after 'body.' (the scene has: {})",
+                                  names.empty() ? "no [[body]]" : fmt::format("{}", fmt::join(names, ", "))));
+    parts.erase(parts.begin(), parts.begin() + 2);
+  }
+  if (parts.size() != 2 || parts[0].empty() || parts[1].empty())
+    throw_bad_input(
+        origin, shown, "",
+        "a dotted scene key \"section.key\" (e.g. \"discretization.p\"), or \"body.<name>.section.key\" for "
+        "one body of a two-body scene");
+  if (!owner->contains(parts[0])) owner->insert(parts[0], toml::table{});
+  auto* table = owner->get_as<toml::table>(parts[0]);
+  if (!table) throw_bad_input(origin, shown, "", "'" + parts[0] + "' is not a table of the scene");
+  return {table, parts[0], parts[1]};
+}
 
 Scene read_two_body_tree(const std::shared_ptr<toml::table>& tree, const std::string& path,
                          const std::map<std::string, std::string>& origins) {

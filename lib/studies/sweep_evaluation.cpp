@@ -4,11 +4,13 @@
 
 #include <algorithm>
 
+#include "core/error.hpp"
 #include "core/rank_agreement.hpp"
 #include "driver/elastic_scene.hpp"
 #include "driver/scene_discretization.hpp"
 #include "mesh/boundary_mesh.hpp"
 #include "mesh/contact_boundary.hpp"
+#include "mesh/contact_pair_geometry.hpp"
 #include "norms/h_minus_half_gram.hpp"
 #include "operators/elastic_operators.hpp"
 #include "operators/primal_operators.hpp"
@@ -32,6 +34,7 @@ class SweepEvaluation::Group {
     else
       primal =
           std::make_unique<operators::PrimalOperators>(built.mesh.get(), built.cell_degrees, nullptr, distribution);
+    if (scene.pair) build_master(distribution);
   }
   scene::Scene scene;
   std::size_t share;
@@ -41,6 +44,21 @@ class SweepEvaluation::Group {
   /// normal and tangential multipliers): one of the two, each split over the group's ranks once.
   std::unique_ptr<operators::PrimalOperators> primal;
   std::unique_ptr<operators::ElasticOperators> elastic;
+  /// A contact pair: the master body's mesh, operators and Φ onto its Γ_C.
+  driver::SceneMesh master_built;
+  std::unique_ptr<operators::ElasticOperators> master;
+  std::unique_ptr<mesh::MasterProjection> projection;
+
+ private:
+  void build_master(linalg::Distribution distribution) {
+    if (distribution.distributed())
+      throw InputError(scene.file +
+                       ": α of a two-body pair is swept serially for now; run the sweep without "
+                       "mpirun (or with one rank per group)");
+    master_built = driver::build_scene_mesh_on_first_rank(scene.pair->master, distribution);
+    master = driver::scene_elastic_operators(scene.pair->master, master_built.mesh.get(), master_built.cell_degrees);
+    projection = std::make_unique<mesh::MasterProjection>(master->contact());
+  }
 };
 
 // Per (norm, ratio) of a share (a level, or a (level, ratio): SweepGroup::share) the Gram ladder of
@@ -133,6 +151,8 @@ infsup::InfSupRecord SweepEvaluation::evaluate_point(const SweepPoint& point, co
                              : driver::infsup_setup_of(scene, group.built.mesh.get(), group.built.cell_degrees,
                                                        boundary, std::move(segment_degrees), *group.primal);
   setup.alpha_tolerance = sweep_.alpha_tolerance;
+  setup.master = group.master.get();
+  setup.projection = group.projection.get();
   const auto& envelope = envelope_of(point, group, boundary);
   const norms::GramLadder ladder = norms::restricted_ladder(*envelope.ladder, *envelope.multipliers,
                                                             space::MultiplierSpace(boundary, setup.segment_degrees));

@@ -24,6 +24,12 @@ std::vector<std::optional<scene::Ratio>> ratio_choices(const StabilitySweep& swe
 
 scene::Scene point_scene(scene::Scene scene, const PointChoice& choice) {
   if (choice.p) scene.p = scene::Degree{*choice.p, {}};
+  // A contact pair: the master's degree too (its multiplier space is not used).
+  if (choice.p && scene.pair) {
+    auto pair = std::make_shared<scene::ContactPair>(*scene.pair);
+    pair->master.p = scene.p;
+    scene.pair = std::move(pair);
+  }
   if (choice.pc) scene.pc = scene::Degree{*choice.pc, {}};
   if (choice.ratio) {
     scene.ratio = {*choice.ratio};

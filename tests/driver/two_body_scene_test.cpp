@@ -159,4 +159,43 @@ effects = ["frictionless"]
   const auto raised = scene::parse_scene(twice, "pair.toml", {{"discretization.p", 4LL, "test --p"}});
   EXPECT_EQ(raised.p.value, 4);
   EXPECT_EQ(raised.pair->master.p.value, 4);
+  // One body's key: body.<name>.section.key.
+  const auto finer = scene::parse_scene(body + pair, "pair.toml", {{"body.bottom.domain.n_x", 7LL, "test --set"}});
+  EXPECT_EQ(finer.pair->master.n_x, 7);
+  EXPECT_EQ(finer.n_x, 2);
+  const auto no_such_body = hpcontact::testing::message_of([&] {
+    scene::parse_scene(body + pair, "pair.toml", {{"body.middle.domain.n_x", 7LL, "test --set"}});
+  });
+  EXPECT_NE(no_such_body.find("the scene has: 'top', 'bottom'"), std::string::npos) << no_such_body;
+}
+
+TEST(TwoBodyScene, SweepOfAPairAgreesWithTheSolvesAlpha) {
+  // Two levels of blocks.toml (body keys varied per body), p ≤ 2: the sweep's α (the Gram ladder
+  // of the sweep's envelope space, restricted) against α of the same configuration from
+  // hpcontact solve --effects infsup (its own Gram matrix).
+  const auto out = hpcontact::testing::scratch("pair_sweep");
+  const auto study = out / "study.toml";
+  {
+    std::ofstream file(study);
+    file << "[sweep]\nscene = \"" << kStudies << "blocks.toml\"\n"
+         << "levels = { \"body.upper.domain.n_x\" = [4, 8], \"body.upper.domain.n_y\" = [4, 8], "
+            "\"body.lower.domain.n_x\" = [6, 12], \"body.lower.domain.n_y\" = [6, 12] }\n"
+         << "p = \"1..2\"\npC = \"0..1\"\nratio = [1]\nnorm = [\"interp\"]\nproblem = [\"signorini\"]\n"
+         << "fit_levels = 2\n";
+  }
+  const auto run = hpcontact::testing::run("sweep " + study.string() + " --out " + (out / "sweep").string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto rows = hpcontact::testing::read_csv(out / "sweep" / "alpha.csv").records();
+  ASSERT_EQ(rows.size(), 6u) << "levels × (p, p_C < p): 2 × 3";
+  const auto solve = hpcontact::testing::run("solve " + kStudies + "blocks.toml --effects infsup --p 2 --pc 1 --out " +
+                                             (out / "solve").string());
+  ASSERT_EQ(solve.exit_code, 0) << solve.output;
+  const double alpha = summary_of(out / "solve")["infsup"]["alpha"].get<double>();
+  bool found = false;
+  for (const auto& row : rows)
+    if (row.at("p") == "2" && row.at("pC") == "1" && row.at("level") == "1") {
+      found = true;
+      EXPECT_NEAR(std::stod(row.at("alpha")), alpha, 1e-8 * alpha);
+    }
+  EXPECT_TRUE(found);
 }
