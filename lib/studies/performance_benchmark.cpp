@@ -25,6 +25,7 @@
 #include "scene/ratio.hpp"
 #include "scene/scene_reader.hpp"
 #include "studies/startup_benchmark.hpp"
+#include "studies/two_body_benchmark.hpp"
 
 namespace hpcontact::studies {
 
@@ -43,13 +44,14 @@ PerformanceBenchmark read_performance_benchmark(const std::string& path) {
       throw_bad_input(path, "benchmark.n", std::to_string(n), "even, with n · ratio a whole number >= 1");
     out.levels.push_back(static_cast<int>(n));
   }
-  const std::vector<std::string> allowed{"signorini",       "friction",  "friction_s", "alpha",
-                                         "alpha_extension", "assembled", "elastic",    "startup"};
+  const std::vector<std::string> allowed{"signorini", "friction", "friction_s", "alpha",  "alpha_extension",
+                                         "assembled", "elastic",  "two_body",   "startup"};
   out.kinds = table.string_list("kinds", allowed);
   for (const auto& kind : out.kinds)
     if (std::find(allowed.begin(), allowed.end(), kind) == allowed.end())
       throw_bad_input(path, "benchmark.kinds", kind,
-                      "any of signorini, friction, friction_s, alpha, alpha_extension, assembled, elastic, startup");
+                      "any of signorini, friction, friction_s, alpha, alpha_extension, assembled, elastic, two_body, "
+                      "startup");
   table.reject_unknown_keys();
   root.reject_unknown_keys();
   return out;
@@ -232,7 +234,8 @@ std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& 
     add(linear_k);
 
     for (const auto& kind : benchmark.kinds)
-      if (kind != "alpha" && kind != "alpha_extension" && kind != "assembled" && kind != "elastic" && kind != "startup")
+      if (kind != "alpha" && kind != "alpha_extension" && kind != "assembled" && kind != "elastic" &&
+          kind != "two_body" && kind != "startup")
         add(contact_row(kind, scene, *discretization, base, linear_k));
     BenchmarkRow linear_ag = base;
     linear_ag.kind = "linear_AG";
@@ -248,6 +251,7 @@ std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& 
     if (has("assembled"))
       for (const bool mass : {false, true}) add(assembled_row(mass, space, load, base, mass ? linear_ag : linear_k));
     if (has("elastic")) add_elastic_rows(benchmark, scene, base, add);
+    if (has("two_body")) add_two_body_rows(benchmark, base, add);
   }
   return rows;
 }

@@ -212,7 +212,7 @@ TEST(Cli, BenchmarkWritesRatiosAgainstTheBaselineOfTheSameRun) {
   const auto dir = scratch("benchmark");
   std::ofstream(dir / "bench.toml")
       << "[benchmark]\np = 2\npC = 1\nratio = \"1/2\"\nn = [4, 8]\n"
-         "kinds = [\"signorini\", \"alpha\", \"alpha_extension\", \"assembled\", \"startup\"]\n";
+         "kinds = [\"signorini\", \"alpha\", \"alpha_extension\", \"assembled\", \"two_body\", \"startup\"]\n";
   const auto result = run("benchmark " + (dir / "bench.toml").string() + " --out " + (dir / "out").string());
   ASSERT_EQ(result.exit_code, 0) << result.output;
   const auto csv = read_csv(dir / "out" / "benchmark.csv");
@@ -229,8 +229,15 @@ TEST(Cli, BenchmarkWritesRatiosAgainstTheBaselineOfTheSameRun) {
     kinds.push_back(row.front());
     EXPECT_NEAR(cells[10], cells[9] / cells[8], 1e-12 * cells[10]) << line;
   }
-  const std::vector<std::string> level{"linear_K",        "signorini",          "linear_AG",          "alpha",
-                                       "alpha_extension", "linear_K_assembled", "linear_AG_assembled"};
+  const std::vector<std::string> level{"linear_K",
+                                       "signorini",
+                                       "linear_AG",
+                                       "alpha",
+                                       "alpha_extension",
+                                       "linear_K_assembled",
+                                       "linear_AG_assembled",
+                                       "linear_A_two_body",
+                                       "two_body_frictionless"};
   std::vector<std::string> expected{"startup"};  // whole processes, once, before the levels
   expected.insert(expected.end(), level.begin(), level.end());
   expected.insert(expected.end(), level.begin(), level.end());
