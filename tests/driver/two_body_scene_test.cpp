@@ -85,8 +85,10 @@ TEST(TwoBodyScene, HertzPressureMatchesTheTwoBodyHertzSolution) {
   EXPECT_LT(std::sqrt(error / norm), 0.015);
 }
 
-TEST(TwoBodyScene, MalformedScenesAreRefusedWithTheKeyAndTheBody) {
-  const std::string body = R"toml(
+namespace {
+
+// Two blocks and a pair between them, for the reader's tests.
+const std::string kBodies = R"toml(
 [[body]]
 name = "top"
 [body.domain]
@@ -119,10 +121,17 @@ pC = 1
 [run]
 effects = ["frictionless"]
 )toml";
-  const std::string pair = "[[pair]]\nslave = \"top\"\nmaster = \"bottom\"\n";
-  const auto message = [](const std::string& text) {
-    return hpcontact::testing::message_of([&] { scene::parse_scene(text, "pair.toml"); });
-  };
+const std::string kPair = "[[pair]]\nslave = \"top\"\nmaster = \"bottom\"\n";
+
+std::string message(const std::string& text) {
+  return hpcontact::testing::message_of([&] { scene::parse_scene(text, "pair.toml"); });
+}
+
+}  // namespace
+
+TEST(TwoBodyScene, MalformedScenesAreRefusedWithTheKeyAndTheBody) {
+  const std::string& body = kBodies;
+  const std::string& pair = kPair;
   // A well-formed scene: the slave's, carrying the master's.
   const auto scene = scene::parse_scene(body + pair, "pair.toml");
   ASSERT_TRUE(scene.pair);
@@ -152,6 +161,11 @@ effects = ["frictionless"]
   std::string only_infsup = body + pair;
   only_infsup.replace(only_infsup.find(effects), effects.size(), "effects = [\"infsup\"]");
   EXPECT_NE(message(only_infsup).find("the bodies of a pair are elastic"), std::string::npos) << message(only_infsup);
+}
+
+TEST(TwoBodyScene, OverridesReachBothBodiesOrOne) {
+  const std::string& body = kBodies;
+  const std::string& pair = kPair;
   std::string twice = body + pair;
   twice.replace(twice.find("[[body]]\nname = \"bottom\""), 0, "[body.discretization]\np = 3\n");
   EXPECT_NE(message(twice).find("one place"), std::string::npos) << message(twice);
