@@ -25,7 +25,7 @@ struct MortarBlock {
 
 // ∫ w(s) μ_i φ^m_j∘Φ ds on every covered mortar segment for each weight w of the slave's arc
 // length (none: 1, the scalar coupling; the components of n_s or t_s for the directional one), so
-// that Φ is evaluated once for all of them.
+// that one call evaluates Φ once for all of them.
 std::vector<MortarBlock> mortar_blocks(const space::H1Space& master_space, const mesh::MasterProjection& projection,
                                        const mesh::ContactBoundary& slave, const space::MultiplierSpace& multipliers,
                                        const std::vector<std::function<double(double)>>& weights) {

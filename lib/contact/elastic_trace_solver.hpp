@@ -46,8 +46,9 @@ struct BodyDisplacement {
 using TraceCoupling = std::function<linalg::Coupling(
     const space::VectorSpace& space, const space::MultiplierSpace& multipliers, assembly::TraceDirection direction)>;
 
-/// A body of the condensed problem: the gap rows are offset − sign · ∫ μ (u·n), the tangential
-/// rows sign · ∫ μ (u·t) (sign +1 for the slave or the only body, −1 for the master).
+/// A body of the condensed problem. The gap rows are ∫ μ g − Σ_k sign_k ∫ μ (u_k·n) ≥ 0 and the
+/// tangential rows Σ_k sign_k ∫ μ (u_k·t) (sign +1 for the slave or the only body, −1 for the
+/// master), n and t the slave's.
 struct TraceBody {
   ElasticBody body;
   double sign = 1.0;

@@ -20,9 +20,9 @@ class TwoBodyModel final : public Model {
   TwoBodyModel(const scene::Scene& scene, const SceneDiscretization& d, OperatorLog* log)
       : scene_(scene),
         d_(d),
-        master_d_(discretize_scene(scene.pair->master)),
+        master_mesh_(build_scene_mesh_on_first_rank(scene.pair->master, {})),
         slave_(scene_elastic_operators(scene, d.mesh.get(), d.cell_degrees, log)),
-        master_(scene_elastic_operators(scene.pair->master, master_d_->mesh.get(), master_d_->cell_degrees, log)),
+        master_(scene_elastic_operators(scene.pair->master, master_mesh_.mesh.get(), master_mesh_.cell_degrees, log)),
         projection_(master_->contact()) {}
 
   std::vector<scene::Effect> problems() const override { return elastic_problem_effects(scene_); }
@@ -86,7 +86,8 @@ class TwoBodyModel final : public Model {
  private:
   const scene::Scene& scene_;
   const SceneDiscretization& d_;
-  const std::unique_ptr<SceneDiscretization> master_d_;
+  /// The master's T_h and degrees only: T_{C,H} and the multiplier live on the slave's Γ_C.
+  const SceneMesh master_mesh_;
   const std::unique_ptr<operators::ElasticOperators> slave_, master_;
   const mesh::MasterProjection projection_;  ///< onto the master's Γ_C
 };

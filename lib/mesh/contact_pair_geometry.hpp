@@ -40,7 +40,8 @@ class MasterProjection {
   const ContactBoundary& master() const { return *master_; }
 
   /// Φ(x): the nearest point over all master edges (straight edges in closed form, curved ones by
-  /// a sign change of d/ds |γ(s) − x|²/2 = (γ(s) − x)·γ'(s) refined by false position to round-off).
+  /// a sign change of the derivative of |γ − x|²/2 along the edge, of the sign of (γ − x)·γ', searched
+  /// in the cell's edge parameter t and refined by false position to round-off).
   /// Edges farther than the nearest point found so far are skipped by a bounding circle (centre
   /// at the edge's middle, radius half its length), so a query costs about one distance per edge.
   MasterPoint project(const Point& x) const;

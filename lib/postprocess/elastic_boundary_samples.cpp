@@ -4,7 +4,6 @@
 
 #include "assembly/cell_values.hpp"
 #include "assembly/coupling.hpp"
-#include "core/error.hpp"
 #include "mesh/cell_map.hpp"
 #include "postprocess/boundary_samples.hpp"
 #include "space/multiplier_space.hpp"
@@ -101,16 +100,18 @@ ElasticBoundarySamples sample_pair_boundary(const contact::TwoBodyContactSetup& 
                                                                    solution.contact.u_rows, solution.contact.lift),
                                             points, slave_ops.distribution());
   // The master's displacement at Φ(x) of each sample: its point in the master's cells.
-  // The gap g = (Φ(x) − x)·n_s from the same projection.
-  const PointLocator master_cells(master_ops.mesh());
+  // Φ(x) as a point of the master cell beneath its edge (from the edge parameter: a point search
+  // by cell boxes can miss a curved edge), and the gap g = (Φ(x) − x)·n_s from the same projection.
+  const auto& master_edges = master_ops.contact().edges();
   std::vector<CellPoint> images;
   std::vector<mesh::Point> offsets;  // Φ(x) − x
   for (const auto& point : points) {
     const mesh::Point x = mesh::CellMap(slave_ops.mesh(), point.cell).map(point.xi, point.eta);
     const auto image = projection.project(x);
-    const auto located = master_cells.locate(image.point);
-    HPC_VERIFY(located.has_value(), "the closest master point lies outside the master's cells");
-    images.push_back(*located);
+    const auto& edge = master_edges[image.edge];
+    const auto reference =
+        assembly::edge_reference_points(master_ops.mesh().cell_type(edge.cell), edge.local_edge, {image.t});
+    images.push_back({edge.cell, reference.xi.front(), reference.eta.front()});
     offsets.push_back(image.point - x);
   }
   const Eigen::MatrixXd master_u = values_at(assembly::vector_field(master_ops.vector_space(), solution.master.u,

@@ -54,6 +54,9 @@ struct Scene {
   // slave's carries the pair, and with it the master's scene.
   std::string body;                         ///< the body's name; empty for a one-body scene
   std::shared_ptr<const ContactPair> pair;  ///< on the slave's scene of a two-body scene
+  /// The master of a pair: its scene describes a body only (T_{C,H}, p_C and the multiplier's
+  /// data belong to the slave).
+  bool is_master = false;
   // [domain]: a rectangle with n_x × n_y cells, or a Gmsh file.
   std::string mesh_file;            ///< empty for a rectangle; else absolute or relative to the working folder
   std::optional<double> mesh_size;  ///< a .geo mesh_file: Gmsh's maximal element size

@@ -451,8 +451,11 @@ std::string scene_key_reference() {
       "`solution_<pair>_<effect>_<body>.vtu`). The multiplier and T_{C,H} live on the slave's Γ_C; the gap is\n"
       "the distance (Φ(x) − x)·n along the slave's normal, Φ the closest point of the master's Γ_C, so `data.g`\n"
       "is not given. `[contact_mesh]`, `[discretization]`, `[infsup]`, `[solve]`, `[run]` and `[convergence]`\n"
-      "stay at the top and apply to both bodies; a `[discretization]` key set there from the command line\n"
-      "replaces the bodies' own. Effects: frictionless, tresca, coulomb, infsup (serial runs).\n";
+      "stay at the top; p applies to both bodies (a `[discretization]` key set there from the command line\n"
+      "replaces the bodies' own), T_{C,H}, p_C, `[solve]` and the multiplier's data (`data.s`,\n"
+      "`data.friction_coefficient`, `exact.pressure`) are the slave's. A key of one body in an override or a\n"
+      "study's `levels`/`vary` is `body.<name>.section.key`. Effects: frictionless, tresca, coulomb, infsup\n"
+      "(serial runs).\n";
   return text;
 }
 

@@ -182,6 +182,7 @@ void check_elastic_effects(const Scene& scene) {
     throw_bad_input(scene.where(missing), missing, "(missing)",
                     "both components of the exact displacement, or neither");
   }
+  if (scene.is_master) return;  // the multiplier's data are the slave's
   if (scene.has_effect(Effect::tresca) && scene.friction_bound.empty())
     throw_bad_input(scene.where("data.s"), "data.s", "(missing)", "the effect 'tresca' needs the threshold s");
   if (scene.has_effect(Effect::coulomb) && !scene.given.contains("data.friction_coefficient"))
@@ -236,13 +237,14 @@ void check_effects(const Scene& scene) {
 }
 
 Scene read_scene_tree(const std::shared_ptr<toml::table>& tree, const std::string& path,
-                      std::map<std::string, std::string> origins, const std::string& body) {
+                      std::map<std::string, std::string> origins, const std::string& body, bool is_master) {
   io::TomlTable root(tree, tree.get(), path, "");
   root.set_origins(origins);
 
   Scene scene;
   scene.file = path;
   scene.body = body;
+  scene.is_master = is_master;
   scene.origins = std::move(origins);
   // Misspelt section names are reported before "missing section" errors.
   for (const auto& section : scene_sections()) root.has(section.name);

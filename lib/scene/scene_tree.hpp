@@ -18,9 +18,10 @@ class table;
 namespace hpcontact::scene {
 
 /// A one-body scene from `tree`; `origins` names where overridden keys came from, `body` the body
-/// of a two-body scene it describes (empty: a one-body scene). @throws InputError.
+/// of a two-body scene it describes (empty: a one-body scene), `is_master` whether that body is
+/// its pair's master. @throws InputError.
 Scene read_scene_tree(const std::shared_ptr<toml::table>& tree, const std::string& path,
-                      std::map<std::string, std::string> origins, const std::string& body);
+                      std::map<std::string, std::string> origins, const std::string& body, bool is_master = false);
 
 /// The place of a dotted key in a scene tree: "section.key" in the section's table, or
 /// "body.<name>.section.key" in that [[body]]'s section (two-body scenes).

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <regex>
 #include <set>
+#include <utility>
 
 #include "core/error.hpp"
 #include "io/toml_reader.hpp"
@@ -151,6 +152,22 @@ std::map<std::string, std::string> body_origins(const BodyTable& body, const std
   return out;
 }
 
+// The multiplier and its data live on the slave's Γ_C: given in the master's own tables they would
+// do nothing.
+void refuse_multiplier_keys(const BodyTable& master, const std::string& slave, const std::string& path) {
+  for (const auto& [section, key] : {std::pair<std::string, std::string>{"discretization", "pC"},
+                                     {"data", "s"},
+                                     {"data", "friction_coefficient"},
+                                     {"exact", "pressure"}}) {
+    const auto* table = master.table.raw()[section].as_table();
+    if (!table || !table->contains(key)) continue;
+    throw_bad_input(fmt::format("{} ([[body]] '{}')", path, master.name), section + "." + key, "(given)",
+                    fmt::format("absent for the master: the multiplier and its data live on the slave's Γ_C; give it "
+                                "for the slave ('{}')",
+                                slave));
+  }
+}
+
 void check_pair_effects(const Scene& slave, const Scene& master) {
   const std::string where = slave.where("run.effects");
   for (const auto effect : slave.effects)
@@ -215,15 +232,14 @@ Scene read_two_body_tree(const std::shared_ptr<toml::table>& tree, const std::st
   const PairNames names = read_pair(root, bodies);
   std::map<std::string, Scene> scenes;
   for (const auto& body : bodies) {
+    const bool is_master = body.name == names.master;
+    if (is_master) refuse_multiplier_keys(body, names.slave, path);
     scenes.emplace(body.name, read_scene_tree(body_tree(*tree, body, path, origins), path,
-                                              body_origins(body, path, origins), body.name));
+                                              body_origins(body, path, origins), body.name, is_master));
   }
   Scene slave = scenes.at(names.slave);
   const Scene& master = scenes.at(names.master);
   check_pair_effects(slave, master);
-  if (!master.exact_pressure.empty())
-    throw_bad_input(master.where("exact.pressure"), "exact.pressure", master.exact_pressure,
-                    fmt::format("given for the slave ('{}'): the multiplier lives on the slave's Γ_C", names.slave));
   slave.pair = std::make_shared<const ContactPair>(ContactPair{names.name, scenes.at(names.master)});
   return slave;
 }

@@ -60,9 +60,9 @@ effects = ["frictionless"]
 )toml";
 
 // One factorization and one solve of a body's A (fresh operators, so nothing is cached).
-double linear_solve_seconds(const scene::Scene& scene, const driver::SceneDiscretization& d) {
+double linear_solve_seconds(const scene::Scene& scene, const mesh::Mesh& mesh, const std::vector<int>& cell_degrees) {
   Stopwatch clock;
-  const auto operators = driver::scene_elastic_operators(scene, d.mesh.get(), d.cell_degrees);
+  const auto operators = driver::scene_elastic_operators(scene, &mesh, cell_degrees);
   const auto& factor = operators->stiffness_factor();
   const Eigen::VectorXd u =
       factor.solve_local(Eigen::MatrixXd::Ones(static_cast<Eigen::Index>(factor.local_dofs().size()), 1)).col(0);
@@ -85,15 +85,17 @@ void add_two_body_rows(const PerformanceBenchmark& benchmark, BenchmarkRow base,
                                          {"discretization.p", static_cast<long long>(benchmark.p), origin},
                                          {"discretization.pC", static_cast<long long>(benchmark.pc), origin}});
   const auto slave_d = driver::discretize_scene(scene);
-  const auto master_d = driver::discretize_scene(scene.pair->master);
+  const auto master_mesh = driver::build_scene_mesh_on_first_rank(scene.pair->master, {});
 
   BenchmarkRow linear = base;
   linear.kind = "linear_A_two_body";
   linear.seconds_baseline = linear.seconds =
-      linear_solve_seconds(scene, *slave_d) + linear_solve_seconds(scene.pair->master, *master_d);
+      linear_solve_seconds(scene, *slave_d->mesh, slave_d->cell_degrees) +
+      linear_solve_seconds(scene.pair->master, *master_mesh.mesh, master_mesh.cell_degrees);
 
   const auto slave = driver::scene_elastic_operators(scene, slave_d->mesh.get(), slave_d->cell_degrees);
-  const auto master = driver::scene_elastic_operators(scene.pair->master, master_d->mesh.get(), master_d->cell_degrees);
+  const auto master =
+      driver::scene_elastic_operators(scene.pair->master, master_mesh.mesh.get(), master_mesh.cell_degrees);
   linear.ndofs = slave->n_dofs() + master->n_dofs();
   add(linear);
   contact::TwoBodyContactSetup setup;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "assembly/cell_field.hpp"
@@ -59,15 +60,21 @@ struct Block {
 
 // The slave on top: (−1, 1) × (g₀, 1 + g₀), its top pushed down by δ, its bottom Γ_C; the master
 // below: (−1, 1) × (−1, 0), its bottom on rollers, its top Γ_C. Plane strain, sides free.
+// The softer block (E = 1, ν = 0.3) is the slave, or with `stiff_slave` the master (the other
+// block E = 3, ν = 0.2).
 struct CompressedBlocks {
   double gap0 = 0.01, delta = 0.05;
-  double e_slave = 1.0, nu_slave = 0.3, e_master = 3.0, nu_master = 0.2;
+  double e_slave, nu_slave, e_master, nu_master;
   Block slave, master;
   std::unique_ptr<mesh::BoundaryMesh> boundary_mesh;
 
-  CompressedBlocks(int p, bool slave_triangles, int m_segments)
-      : slave({-1.0, 1.0, 0.01, 1.01}, 3, 3, slave_triangles, p, 1.0, 0.3, 0.01, 1.01),
-        master({-1.0, 1.0, -1.0, 0.0}, 5, 5, false, p, 3.0, 0.2, 0.0, -1.0),
+  CompressedBlocks(int p, bool slave_triangles, int m_segments, bool stiff_slave = false)
+      : e_slave(stiff_slave ? 3.0 : 1.0),
+        nu_slave(stiff_slave ? 0.2 : 0.3),
+        e_master(stiff_slave ? 1.0 : 3.0),
+        nu_master(stiff_slave ? 0.3 : 0.2),
+        slave({-1.0, 1.0, 0.01, 1.01}, 3, 3, slave_triangles, p, e_slave, nu_slave, 0.01, 1.01),
+        master({-1.0, 1.0, -1.0, 0.0}, 5, 5, false, p, e_master, nu_master, 0.0, -1.0),
         boundary_mesh(std::make_unique<mesh::BoundaryMesh>(
             mesh::BoundaryMesh::uniform(slave.operators->contact().length(), m_segments))) {}
 
@@ -83,7 +90,8 @@ struct CompressedBlocks {
             shift - compliance(young, poisson) * pressure() * (x.y() - y_fixed)};
   }
 
-  contact::TwoBodyContactSetup setup(contact::ElasticContactProblem problem, int pc) const {
+  contact::TwoBodyContactSetup setup(contact::ElasticContactProblem problem, int pc, double threshold = 0.05,
+                                     double coefficient = 0.3) const {
     contact::TwoBodyContactSetup s;
     s.slave.operators = slave.operators.get();
     s.slave.boundary_mesh = boundary_mesh.get();
@@ -91,8 +99,8 @@ struct CompressedBlocks {
     s.slave.problem = problem;
     const double shift = -delta;
     s.slave.dirichlet[1] = [shift](const Point&) { return shift; };
-    s.slave.threshold = [](const Point&) { return 0.05; };
-    s.slave.friction_coefficient = 0.3;
+    s.slave.threshold = [threshold](const Point&) { return threshold; };
+    s.slave.friction_coefficient = coefficient;
     s.master.operators = master.operators.get();
     return s;
   }
@@ -120,6 +128,26 @@ double relative_error(const CompressedBlocks& blocks, const Block& block, const 
   return error / scale;
 }
 
+// (s, (u_s − u_m)·t) along the interface of the compressed blocks, t = (1, 0) (s = x + 1).
+std::vector<std::pair<double, double>> interface_slip(const CompressedBlocks& blocks,
+                                                      const contact::TwoBodyContactSolution& solution) {
+  const auto at = [](const Block& block, const contact::BodyDisplacement& u, double y, int samples) {
+    const postprocess::PointLocator locator(block.mesh);
+    std::vector<postprocess::CellPoint> points;
+    for (int k = 0; k < samples; ++k) points.push_back(*locator.locate(Point(-0.95 + 1.9 * k / (samples - 1), y)));
+    return postprocess::values_at(assembly::vector_field(block.operators->vector_space(), u.u, u.u_rows, u.lift),
+                                  points, {});
+  };
+  const contact::BodyDisplacement slave{solution.contact.u, solution.contact.u_rows, solution.contact.n_dofs,
+                                        solution.contact.lift};
+  const int samples = 39;
+  const Eigen::MatrixXd u_s = at(blocks.slave, slave, 0.01, samples),
+                        u_m = at(blocks.master, solution.master, 0.0, samples);
+  std::vector<std::pair<double, double>> slip;
+  for (int k = 0; k < samples; ++k) slip.emplace_back(0.05 + 1.9 * k / (samples - 1), u_s(k, 0) - u_m(k, 0));
+  return slip;
+}
+
 }  // namespace
 
 TEST(TwoBodyContact, PatchTestOfUniformCompressionIsExactOnNonMatchingMeshes) {
@@ -145,25 +173,38 @@ TEST(TwoBodyContact, PatchTestOfUniformCompressionIsExactOnNonMatchingMeshes) {
       }
 }
 
-TEST(TwoBodyContact, FrictionSatisfiesKktAndHoldsTheInterfaceBackFromSliding) {
-  // The blocks' Poisson ratios differ, so that without friction the interface slides: the
-  // tangential traction that friction brings is bounded by s (Tresca) and F p (Coulomb).
-  const CompressedBlocks blocks(3, false, 4);
-  const auto frictionless =
-      contact::solve_two_body_contact(blocks.setup(contact::ElasticContactProblem::frictionless, 1));
-  for (const auto problem : {contact::ElasticContactProblem::tresca, contact::ElasticContactProblem::coulomb}) {
-    const auto solution = contact::solve_two_body_contact(blocks.setup(problem, 1));
-    hpcontact::testing::expect_kkt(solution.contact, 1e-9);
-    EXPECT_GT(solution.contact.shear.lpNorm<Eigen::Infinity>(), 1e-3 * blocks.pressure()) << "friction acts";
-    EXPECT_GT((solution.contact.u - frictionless.contact.u).norm(), 1e-6 * frictionless.contact.u.norm());
-    const Eigen::Index n = solution.contact.n_normal;
-    const double scale = solution.contact.lambda.lpNorm<Eigen::Infinity>();
-    for (Eigen::Index j = 0; j < n; ++j) {
-      const double pressure = -solution.contact.lambda(j), shear = std::abs(solution.contact.lambda(n + j));
-      const double bound = problem == contact::ElasticContactProblem::tresca ? 0.05 : 0.3 * std::max(pressure, 0.0);
-      EXPECT_LE(shear, bound + 1e-10 * scale) << "point " << j;
+TEST(TwoBodyContact, FrictionSatisfiesKktAndOpposesTheSlip) {
+  // The blocks' Poisson ratios differ: the softer one (ν = 0.3, E = 1) widens more, so the slave
+  // slides towards +x against the master when it is the softer one, towards −x when the master
+  // is (the master's own motion then decides the sign: a wrong sign of its tangential trace
+  // would show). Holding the interface would take |σ_nt| up to about 6e-3; with friction 1e-3
+  // (Tresca s; Coulomb F p with F = 0.03) it slides where the traction is at its bound, and
+  // there friction opposes the slip (u_s − u_m∘Φ)·t: σ_nt (u_s − u_m)·t ≤ 0.
+  for (const bool stiff_slave : {false, true})
+    for (const auto problem : {contact::ElasticContactProblem::tresca, contact::ElasticContactProblem::coulomb}) {
+      const CompressedBlocks blocks(3, false, 4, stiff_slave);
+      const auto frictionless =
+          contact::solve_two_body_contact(blocks.setup(contact::ElasticContactProblem::frictionless, 1));
+      const std::string where = contact::to_string(problem) + (stiff_slave ? ", stiff slave" : ", soft slave");
+      const auto solution = contact::solve_two_body_contact(blocks.setup(problem, 1, 1e-3, 0.03));
+      hpcontact::testing::expect_kkt(solution.contact, 1e-9);
+      EXPECT_GT((solution.contact.u - frictionless.contact.u).norm(), 1e-6 * frictionless.contact.u.norm()) << where;
+      const Eigen::Index n = solution.contact.n_normal;
+      const double scale = solution.contact.lambda.lpNorm<Eigen::Infinity>();
+      for (Eigen::Index j = 0; j < n; ++j) {
+        const double pressure = -solution.contact.lambda(j), shear = std::abs(solution.contact.lambda(n + j));
+        const double bound = problem == contact::ElasticContactProblem::tresca ? 1e-3 : 0.03 * std::max(pressure, 0.0);
+        EXPECT_LE(shear, bound + 1e-10 * scale) << where << ", point " << j;
+      }
+      const auto slip = interface_slip(blocks, solution);
+      const space::MultiplierSpace multipliers(*blocks.boundary_mesh, std::vector<int>(4, 1));
+      double largest_slip = 0.0;
+      for (const auto& [s, du] : slip) largest_slip = std::max(largest_slip, std::abs(du));
+      EXPECT_GT(largest_slip, 1e-3) << where << ": the interface slides";
+      for (const auto& [s, du] : slip)
+        if (std::abs(du) > 1e-2 * largest_slip)
+          EXPECT_LE(multipliers.evaluate(solution.contact.shear, s) * du, 0.0) << where << ", s = " << s;
     }
-  }
 }
 
 TEST(TwoBodyContact, AStiffClampedMasterReproducesTheRigidObstacle) {

@@ -81,8 +81,9 @@ TEST(TwoBodyScene, HertzPressureMatchesTheTwoBodyHertzSolution) {
     norm += 0.5 * (x1 - x0) * (std::pow(hertz(x0), 2) + std::pow(hertz(x1), 2));
   }
   EXPECT_NEAR(a, 0.1, 0.002) << "the scene's indentation gives a ≈ 0.1";
-  EXPECT_NEAR(0.5 * (highest - lowest) / a, 1.0, 0.01) << "half-width " << 0.5 * (highest - lowest) << ", a " << a;
-  EXPECT_LT(std::sqrt(error / norm), 0.015);
+  // The issue asks 1 % and 1.5 %; the scene gives 0.02 % and 0.5 % (docs/two_bodies.md).
+  EXPECT_NEAR(0.5 * (highest - lowest) / a, 1.0, 0.002) << "half-width " << 0.5 * (highest - lowest) << ", a " << a;
+  EXPECT_LT(std::sqrt(error / norm), 0.008);
 }
 
 namespace {
@@ -148,6 +149,12 @@ TEST(TwoBodyScene, MalformedScenesAreRefusedWithTheKeyAndTheBody) {
             std::string::npos);
   EXPECT_NE(message(body + pair + "[domain]\nn_x = 2\n").find("belongs in each [[body]]"), std::string::npos);
   EXPECT_NE(message(body + pair + pair).find("exactly one contact pair"), std::string::npos);
+  // The multiplier's data given for the master would do nothing.
+  std::string master_bound = body + pair;
+  master_bound.replace(master_bound.find("[contact_mesh]"), 0, "[body.data]\ns = \"0.1\"\n");
+  const auto bound_message = message(master_bound);
+  EXPECT_NE(bound_message.find("([[body]] 'bottom')"), std::string::npos) << bound_message;
+  EXPECT_NE(bound_message.find("give it for the slave ('top')"), std::string::npos) << bound_message;
   std::string with_gap = body + pair;
   with_gap.replace(with_gap.find("[[body]]\nname = \"bottom\""), 0, "[body.data]\ng = \"0.1\"\n");
   const auto gap_message = message(with_gap);
@@ -201,13 +208,14 @@ TEST(TwoBodyScene, SweepOfAPairAgreesWithTheSolvesAlpha) {
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const auto rows = hpcontact::testing::read_csv(out / "sweep" / "alpha.csv").records();
   ASSERT_EQ(rows.size(), 6u) << "levels × (p, p_C < p): 2 × 3";
-  const auto solve = hpcontact::testing::run("solve " + kStudies + "blocks.toml --effects infsup --p 2 --pc 1 --out " +
+  // p = 1, not the scene's own p = 2: the sweep must set it in both bodies.
+  const auto solve = hpcontact::testing::run("solve " + kStudies + "blocks.toml --effects infsup --p 1 --pc 0 --out " +
                                              (out / "solve").string());
   ASSERT_EQ(solve.exit_code, 0) << solve.output;
   const double alpha = summary_of(out / "solve")["infsup"]["alpha"].get<double>();
   bool found = false;
   for (const auto& row : rows)
-    if (row.at("p") == "2" && row.at("pC") == "1" && row.at("level") == "1") {
+    if (row.at("p") == "1" && row.at("pC") == "0" && row.at("level") == "1") {
       found = true;
       EXPECT_NEAR(std::stod(row.at("alpha")), alpha, 1e-8 * alpha);
     }
