@@ -162,5 +162,12 @@ build/bin/hpcontact sweep studies/elasticity/stability.toml --out results/elasti
 "$python" plots/plot_stability.py results/elastic_stability
 publish results/elastic_stability/stable_map.png studies/elasticity/stable_map.png
 publish results/elastic_stability/stable_map_friction_interp.png studies/elasticity/stable_map_friction.png
+section "two bodies: studies/two_bodies/{stability,families}.toml -> results/two_body_*"
+for study in stability families; do
+  build/bin/hpcontact sweep "studies/two_bodies/$study.toml" --out "results/two_body_$study" --restart
+  "$python" plots/plot_stability.py "results/two_body_$study"
+done
+publish results/two_body_stability/stable_map.png studies/two_bodies/stable_map.png
+publish results/two_body_families/stable_map.png studies/two_bodies/families_map.png
 stage_done "$section_name"
 echo "quickstart: done; CSV and PNG in results/" >&2

@@ -2,8 +2,9 @@
 """Plots a stability sweep written by `hpcontact sweep` (alpha.csv, verdicts.csv) and optional
 spurious modes written by `hpcontact infsup --mode` (mode_*.csv, columns x,mu,...).
 
-Writes into DIR: alpha_vs_h.png (α against h per configuration, one panel per h/H),
-stable_map.png (verdict over (p, p_C), one panel per h/H), alpha_vs_pi.png, modes.png.
+Writes into DIR: alpha_vs_h.png (α against h per configuration, one panel per multiplier family
+and h/H), stable_map.png (verdict over (p, p_C), one panel per family and h/H: the families side
+by side), alpha_vs_pi.png, modes.png.
 Usage: plot_stability.py DIR
 """
 import csv
@@ -32,6 +33,25 @@ def ratio_label(value):
     return str(Fraction(float(value)).limit_denominator(16))
 
 
+FAMILY_ORDER = ["discontinuous", "standard", "standard-modified", "dual", "dual-modified"]
+
+
+def panel_order(panel):
+    """Panels by family (the paper's first), then by h/H from the largest."""
+    family, ratio = panel
+    return (FAMILY_ORDER.index(family) if family in FAMILY_ORDER else len(FAMILY_ORDER), family, -ratio)
+
+
+def family_of(row):
+    """The multiplier family of a row (files of sweeps without the column: the paper's)."""
+    return row.get("family", "discontinuous")
+
+
+def panel_title(family, ratio, families):
+    """"h/H = 1/2", with the family in front when the sweep has several."""
+    return (f"{family}\n" if len(families) > 1 else "") + f"h/H = {ratio_label(ratio)}"
+
+
 def save(figure, path):
     save_figure(figure, path, dpi=110)
 
@@ -49,21 +69,22 @@ def curve_style(p, pc):
 def plot_alpha_vs_h(rows, folder):
     groups = defaultdict(list)
     for row in rows:
-        key = (row["problem"], row["norm"], float(row["ratio"]), int(row["p"]), int(row["pC"]))
+        key = (row["problem"], row["norm"], (family_of(row), float(row["ratio"])), int(row["p"]), int(row["pC"]))
         # h_min, the shortest edge on Γ_C: h on uniform meshes, the finest layer on graded ones.
         groups[key].append((float(row["h_min"]), float(row["alpha"])))
-    ratios = sorted({key[2] for key in groups}, reverse=True)
+    families = sorted({key[2][0] for key in groups})
+    panels = sorted({key[2] for key in groups}, key=panel_order)
     labels = {(key[0], key[3], key[4]) for key in groups}
     # As many legend columns as fit the figure's width (an entry takes about 1.5 inches).
-    width = max(3.6 * len(ratios), 6.0)
+    width = max(3.6 * len(panels), 6.0)
     columns = max(1, min(len(labels), int(width // 1.5)))
     legend_rows = -(-len(labels) // columns)
     height = 4.2 + 0.28 * legend_rows
-    figure, axes = plt.subplots(1, len(ratios), figsize=(width, height), squeeze=False)
+    figure, axes = plt.subplots(1, len(panels), figsize=(width, height), squeeze=False, sharey=True)
     legend = {}
-    for axis, ratio in zip(axes[0], ratios):
+    for axis, panel in zip(axes[0], panels):
         for key, points in sorted(groups.items()):
-            if key[2] != ratio:
+            if key[2] != panel:
                 continue
             points.sort()
             h, alpha = zip(*points)
@@ -71,10 +92,10 @@ def plot_alpha_vs_h(rows, folder):
             (line,) = axis.loglog(h, [max(a, 1e-8) for a in alpha], markersize=4, linewidth=1,
                                   **curve_style(key[3], key[4]))
             legend.setdefault((key[3], key[4], key[0]), (label, line))
-        axis.set_title(f"h/H = {ratio_label(ratio)}")
+        axis.set_title(panel_title(panel[0], panel[1], families), fontsize=10)
         axis.set_xlabel(r"$h_{\min}$ (shortest edge on $\Gamma_C$)")
-        axis.set_ylabel(r"inf-sup constant $\alpha$")
         axis.grid(True, which="both", alpha=0.3)
+    axes[0][0].set_ylabel(r"inf-sup constant $\alpha$")
     # One legend for all panels, below them (the same p and p_C look the same everywhere).
     entries = [legend[key] for key in sorted(legend)]  # by p, then p_C
     figure.legend([line for _, line in entries], [label for label, _ in entries], loc="lower center",
@@ -87,25 +108,34 @@ def plot_alpha_vs_h(rows, folder):
 def plot_stable_map(verdicts, folder):
     for (problem, norm) in sorted({(v["problem"], v["norm"]) for v in verdicts}):
         selected = [v for v in verdicts if v["problem"] == problem and v["norm"] == norm]
-        ratios = sorted({float(v["ratio"]) for v in selected}, reverse=True)
-        p_max = max(int(v["p"]) for v in selected)
-        figure, axes = plt.subplots(1, len(ratios), figsize=(3.2 * len(ratios), 3.8), squeeze=False,
-                                    layout="constrained")
-        for axis, ratio in zip(axes[0], ratios):
-            grid = [[float("nan")] * (p_max + 1) for _ in range(p_max + 1)]
+        families = sorted({family_of(v) for v in selected})
+        panels = sorted({(family_of(v), float(v["ratio"])) for v in selected}, key=panel_order)
+        p_min, p_max = min(int(v["p"]) for v in selected), max(int(v["p"]) for v in selected)
+        pc_min, pc_max = min(int(v["pC"]) for v in selected), max(int(v["pC"]) for v in selected)
+        width = 0.55 * (p_max - p_min + 1) + 1.0
+        figure, axes = plt.subplots(1, len(panels), figsize=(max(width * len(panels) + 0.8, 4.5), 4.3),
+                                    squeeze=False, sharey=True)
+        shown = set()
+        for axis, (family, ratio) in zip(axes[0], panels):
+            grid = [[float("nan")] * (p_max + 1) for _ in range(pc_max + 1)]
             for v in selected:
-                if float(v["ratio"]) == ratio and v["verdict"] in VERDICT_CODE:
+                if family_of(v) == family and float(v["ratio"]) == ratio and v["verdict"] in VERDICT_CODE:
                     grid[int(v["pC"])][int(v["p"])] = VERDICT_CODE[v["verdict"]]
+                    shown.add(v["verdict"])
             axis.imshow(grid, origin="lower", cmap=ListedColormap(VERDICT_COLOURS), vmin=0, vmax=2)
-            axis.set_xlim(0.5, p_max + 0.5)
-            axis.set_ylim(-0.5, p_max - 0.5)
-            axis.set_xlabel("p (degree of $S^p(T_h)$)")
-            axis.set_title(f"h/H = {ratio_label(ratio)}")
+            axis.set_xlim(p_min - 0.5, p_max + 0.5)
+            axis.set_ylim(pc_min - 0.5, pc_max + 0.5)
+            axis.set_xticks(range(p_min, p_max + 1))
+            axis.set_yticks(range(pc_min, pc_max + 1))
+            axis.set_xlabel("p")
+            axis.set_title(panel_title(family, ratio, families), fontsize=10)
         axes[0][0].set_ylabel(r"$p_C$ (degree of the multipliers)")
-        handles = [plt.Rectangle((0, 0), 1, 1, color=c) for c in VERDICT_COLOURS]
-        # In the empty corner p_C ≥ p of the first panel.
-        axes[0][0].legend(handles, list(VERDICT_CODE), loc="upper left", fontsize=8)
+        # The verdicts that occur, below the panels (a legend inside would cover cells).
+        entries = [(verdict, colour) for verdict, colour in zip(VERDICT_CODE, VERDICT_COLOURS) if verdict in shown]
+        figure.legend([plt.Rectangle((0, 0), 1, 1, color=c) for _, c in entries], [v for v, _ in entries],
+                      loc="lower center", ncol=len(entries), fontsize=9)
         figure.suptitle(f"stable pairings ({problem}, {norm} norm)")
+        figure.tight_layout(rect=(0, 0.1, 1, 0.95))
         save(figure, folder / ("stable_map.png" if problem == "signorini" and norm == "interp"
                                else f"stable_map_{problem}_{norm}.png"))
 
@@ -114,7 +144,7 @@ def plot_alpha_vs_pi(rows, verdict_of, folder):
     figure, axis = plt.subplots(figsize=(6, 4.5))
     for verdict, colour in zip(VERDICT_CODE, VERDICT_COLOURS):
         points = [(float(r["Pi"]), max(float(r["alpha"]), 1e-8)) for r in rows
-                  if verdict_of.get((r["problem"], r["norm"], r["p"], r["pC"],
+                  if verdict_of.get((r["problem"], r["norm"], r["p"], r["pC"], family_of(r),
                                      f'{float(r["ratio"]):.6g}')) == verdict]
         if points:
             axis.loglog(*zip(*points), "o", color=colour, markersize=3, alpha=0.7, label=verdict)
@@ -152,7 +182,7 @@ def main():
     folder = Path(sys.argv[1])
     rows = read(folder / "alpha.csv")
     verdicts = read(folder / "verdicts.csv")
-    verdict_of = {(v["problem"], v["norm"], v["p"], v["pC"], f'{float(v["ratio"]):.6g}'): v["verdict"]
+    verdict_of = {(v["problem"], v["norm"], v["p"], v["pC"], family_of(v), f'{float(v["ratio"]):.6g}'): v["verdict"]
                   for v in verdicts}
     plot_alpha_vs_h(rows, folder)
     plot_stable_map(verdicts, folder)

@@ -1,7 +1,10 @@
 // Legendre recurrence and Lobatto shape functions.
 #include "basis/lobatto.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <cmath>
+
+#include "core/error.hpp"
 
 namespace hpcontact::basis {
 
@@ -11,6 +14,22 @@ Eigen::VectorXd legendre_values(int n, double t) {
   if (n >= 1) values(1) = t;
   for (int k = 2; k <= n; ++k) values(k) = ((2.0 * k - 1.0) * t * values(k - 1) - (k - 1.0) * values(k - 2)) / k;
   return values;
+}
+
+std::vector<double> gauss_lobatto_points(int p) {
+  HPC_VERIFY(p >= 1, "Gauss-Lobatto points of degree >= 1");
+  // The interior points are the roots of P_p' ∝ P^{(1,1)}_{p-1}: the eigenvalues of its symmetric
+  // tridiagonal Jacobi matrix (zero diagonal, off-diagonal sqrt(n(n+2)/((2n+1)(2n+3)))).
+  std::vector<double> points{-1.0};
+  if (p >= 2) {
+    Eigen::MatrixXd jacobi = Eigen::MatrixXd::Zero(p - 1, p - 1);
+    for (int n = 1; n <= p - 2; ++n)
+      jacobi(n - 1, n) = jacobi(n, n - 1) = std::sqrt(n * (n + 2.0) / ((2.0 * n + 1.0) * (2.0 * n + 3.0)));
+    const Eigen::VectorXd roots = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(jacobi).eigenvalues();
+    points.insert(points.end(), roots.begin(), roots.end());
+  }
+  points.push_back(1.0);
+  return points;
 }
 
 void lobatto_values(int p, double t, Eigen::Ref<Eigen::VectorXd> values, Eigen::Ref<Eigen::VectorXd> derivatives) {

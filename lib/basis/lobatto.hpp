@@ -10,6 +10,10 @@ namespace hpcontact::basis {
 /// Legendre polynomials P_0..P_n at t: shape (n+1).
 Eigen::VectorXd legendre_values(int n, double t);
 
+/// The p + 1 Gauss–Lobatto points of degree p ≥ 1 on [-1,1], ascending: ±1 and the roots of P_p'
+/// (from the eigenvalues of the Jacobi matrix of the Jacobi polynomials P^{(1,1)}).
+std::vector<double> gauss_lobatto_points(int p);
+
 /// Lobatto shape functions up to degree p at t, shape (p+1):
 ///   N_0 = (1 - t)/2,  N_1 = (1 + t)/2,
 ///   N_k = (P_k - P_{k-2}) / sqrt(2(2k - 1)) = sqrt((2k-1)/2) ∫_{-1}^t P_{k-1},  k ≥ 2.

@@ -102,7 +102,8 @@ assembly::DirichletLift::LiftedLoad problem_load_share(const ContactSetup& setup
                            primal.distribution());
 }
 
-// The problem's coupling and constraints: B (B^s for (13)) in the nodal multiplier basis and the
+// The problem's coupling and constraints: B (B^s for (13)) in the nodal multiplier basis (the
+// family's basis for a standard or dual family) and the
 // offset of the gap it measures, (ℓ_i, g) for (9), less B w with Dirichlet data u = u_0 + w.
 struct NodalCoupling {
   std::string name;                 ///< "B" or "B^s" (S is shared between problems by it and the weight)
@@ -122,7 +123,7 @@ NodalCoupling assemble_nodal_coupling(const ContactSetup& setup, const operators
   out.constraints = build_multiplier_constraints(setup, multipliers, primal.contact());
   const linalg::Coupling to_nodal = out.constraints.to_nodal.sparseView();
   out.matrix = linalg::squeezed<linalg::Coupling>((to_nodal * coupling_legendre).pruned());
-  out.gap_offset = Eigen::VectorXd::Zero(multipliers.n_dofs());
+  out.gap_offset = Eigen::VectorXd::Zero(out.constraints.to_nodal.rows());
   if (setup.problem == ContactProblem::signorini) {
     Stopwatch obstacle_clock;
     out.gap_offset =
@@ -146,7 +147,7 @@ struct CondensedProblem {
 
 // Condensation onto the Γ_C trace: the trace dofs ordered last in the factorization, so that
 // S = B K⁻¹ Bᵀ is dense algebra on the trailing block of the factor. S depends on the coupling
-// alone (its key holds the multiplier space's layout): problems sharing B share S. Distributed,
+// alone (its key holds the multiplier space's layout and family): problems sharing B share S. Distributed,
 // the vectors of S^p(T_h) are held at each rank's own cells' dofs, the load as the ranks' shares:
 // none of the global length, with Dirichlet data too (u stays at the rank's own cells' dofs,
 // where the outputs read it).
@@ -162,7 +163,9 @@ CondensedProblem condense_onto_trace(const ContactSetup& setup, const operators:
   Stopwatch condensation_clock;
   const Eigen::VectorXd u_free = k_factor.solve_local(load.load).col(0);
   const Eigen::MatrixXd& s =
-      primal.derived_matrix("S", operators::PrimalOperators::coupling_key(multipliers, coupling.name, coupling.weight),
+      primal.derived_matrix("S",
+                            operators::PrimalOperators::coupling_key(
+                                multipliers, coupling.name + " " + space::to_string(setup.family), coupling.weight),
                             [&] { return Eigen::MatrixXd(k_factor.schur_complement(coupling.matrix)); });
   Eigen::VectorXd b_u_free = k_factor.multiply_local(coupling.matrix, u_free).col(0);
   Eigen::VectorXd d = b_u_free - coupling.gap_offset;

@@ -27,6 +27,7 @@
 #include "mesh/boundary_mesh.hpp"
 #include "mesh/mesh.hpp"
 #include "operators/primal_operators.hpp"
+#include "space/multiplier_family.hpp"
 
 namespace hpcontact::contact {
 
@@ -55,6 +56,9 @@ struct ContactSetup {
   std::vector<int> cell_degrees;
   const mesh::BoundaryMesh* boundary_mesh = nullptr;
   std::vector<int> segment_degrees;
+  /// The multiplier family on T_{C,H}: the paper's discontinuous one, or a standard or dual basis
+  /// (space/multiplier_family.hpp), whose constraints act on its coefficients.
+  space::MultiplierFamily family;
   ContactProblem problem = ContactProblem::signorini;
   PointFunction f;  ///< volume load
   /// Names f and the traction: problems solved on the same `primal` with the same non-empty key

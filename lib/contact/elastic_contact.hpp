@@ -34,6 +34,7 @@ struct ElasticContactSetup {
   const operators::ElasticOperators* operators = nullptr;  ///< required; its log records what is built
   const mesh::BoundaryMesh* boundary_mesh = nullptr;       ///< T_{C,H}
   std::vector<int> segment_degrees;                        ///< p_C per segment
+  space::MultiplierFamily family;                          ///< as ContactSetup::family
   ElasticContactProblem problem = ElasticContactProblem::frictionless;
   assembly::VectorFunction body_force;  ///< f (may be empty)
   assembly::TractionFunction traction;  ///< t on Γ_N (may be empty)

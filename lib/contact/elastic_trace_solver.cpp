@@ -27,6 +27,7 @@ MultiplierConstraints part_constraints(const ElasticContactSetup& setup, const s
   ContactSetup part;
   part.boundary_mesh = setup.boundary_mesh;
   part.segment_degrees = setup.segment_degrees;
+  part.family = setup.family;
   part.constraint_points = setup.constraint_points;
   part.problem = normal ? ContactProblem::signorini : ContactProblem::friction_s;
   if (!normal)
@@ -40,7 +41,7 @@ struct CondensedProblem {
   std::vector<linalg::Coupling> couplings;  ///< per body
   MultiplierConstraints constraints;
   Eigen::VectorXd offset;
-  int n_normal = 0;       ///< multiplier coefficients of the normal part
+  int n_normal = 0;       ///< multiplier coefficients of the normal part (in the family's basis)
   int n_normal_rows = 0;  ///< constraint rows of the normal part
 };
 
@@ -62,7 +63,7 @@ CondensedProblem condensed_problem(const ElasticContactSetup& setup, const space
   const bool friction = setup.problem != ElasticContactProblem::frictionless;
   auto normal = part_constraints(setup, multipliers, true);
   const linalg::Coupling to_nodal = normal.to_nodal.sparseView();
-  out.n_normal = multipliers.n_dofs();
+  out.n_normal = static_cast<int>(normal.to_nodal.rows());
   out.n_normal_rows = static_cast<int>(normal.matrix.rows());
   out.offset =
       -(normal.to_nodal * assembly::assemble_multiplier_load(setup.operators->contact(), multipliers, gap_of_arc));
@@ -266,10 +267,10 @@ TraceSolve solve_on_trace(const ElasticContactSetup& setup, const std::function<
   contact.gap_scale = b_u_free.lpNorm<Eigen::Infinity>() + problem.offset.lpNorm<Eigen::Infinity>() +
                       (s * contact.lambda).lpNorm<Eigen::Infinity>();
   const Eigen::VectorXd legendre = problem.constraints.to_nodal.transpose() * contact.lambda;
-  contact.pressure = -legendre.head(problem.n_normal);
-  contact.shear = setup.problem == ElasticContactProblem::frictionless
-                      ? Eigen::VectorXd::Zero(problem.n_normal)
-                      : Eigen::VectorXd(-legendre.tail(problem.n_normal));
+  const int n_legendre = multipliers.n_dofs();
+  contact.pressure = -legendre.head(n_legendre);
+  contact.shear = setup.problem == ElasticContactProblem::frictionless ? Eigen::VectorXd::Zero(n_legendre)
+                                                                       : Eigen::VectorXd(-legendre.tail(n_legendre));
   contact.u = out.bodies.front().u;
   contact.u_rows = out.bodies.front().u_rows;
   contact.n_dofs = out.bodies.front().n_dofs;

@@ -9,6 +9,7 @@
 #include "basis/lobatto.hpp"
 #include "basis/quadrature.hpp"
 #include "core/error.hpp"
+#include "space/multiplier_family.hpp"
 
 namespace hpcontact::contact {
 namespace {
@@ -57,10 +58,55 @@ SegmentConstraints segment_constraints(const ContactSetup& setup, const mesh::Co
   return segment;
 }
 
+// A standard or dual family: its functions are the basis (to_nodal = Tᵀ, so that B_family = Tᵀ B
+// and λ_legendre = T c), and the bounds act on their coefficients at their nodes.
+MultiplierConstraints family_constraints(const ContactSetup& setup, const space::MultiplierSpace& multipliers,
+                                         const mesh::ContactBoundary& contact) {
+  if (!setup.constraint_points.empty())
+    throw InputError(
+        fmt::format("constraint points are set for the multiplier family {}, whose constraints act on "
+                    "its coefficients at its nodes: leave constraint_points out",
+                    space::to_string(setup.family)));
+  const space::FamilyBasis family = space::family_basis(multipliers, setup.family);
+  MultiplierConstraints out;
+  out.to_nodal = Eigen::MatrixXd(family.legendre.transpose());
+  const int n = family.n_functions();
+  out.matrix = Eigen::MatrixXd::Identity(n, n);
+  out.lower.resize(n);
+  out.upper.resize(n);
+  const auto& mesh = multipliers.boundary_mesh();
+  for (int i = 0; i < n; ++i) {
+    const double s = family.node_s[static_cast<std::size_t>(i)];
+    out.s.push_back(s);
+    if (setup.problem == ContactProblem::signorini) {
+      out.lower(i) = -std::numeric_limits<double>::infinity();
+      out.upper(i) = 0.0;
+      continue;
+    }
+    const double bound = setup.bound(contact.point_at(s));
+    if (!(bound >= 0.0))
+      throw InputError(
+          fmt::format("friction bound s = {} at x = {}: s must be >= 0 (and finite)", bound, contact.point_at(s).x()));
+    double limit = bound;  // (15)
+    if (setup.problem == ContactProblem::friction) {
+      // (13): |λ| ≤ 1 where the function's support meets supp s, λ = 0 elsewhere.
+      bool in_support = false;
+      for (int k : family.segments[static_cast<std::size_t>(i)])
+        in_support = in_support || meets_support(setup, contact, mesh.segment_begin(k), mesh.segment_end(k));
+      limit = in_support ? 1.0 : 0.0;
+    }
+    out.lower(i) = -limit;
+    out.upper(i) = limit;
+  }
+  return out;
+}
+
 }  // namespace
 
 MultiplierConstraints build_multiplier_constraints(const ContactSetup& setup, const space::MultiplierSpace& multipliers,
                                                    const mesh::ContactBoundary& contact) {
+  if (setup.family.kind != space::MultiplierFamilyKind::discontinuous)
+    return family_constraints(setup, multipliers, contact);
   // Legendre → Lagrange at the nodal points, segment by segment: c_nodal = V c_legendre with
   // V_ik = P_k(τ_i), so the nodal basis functions are ℓ = V⁻ᵀ P and B_nodal = V⁻ᵀ B_legendre.
   const int n = multipliers.n_dofs();

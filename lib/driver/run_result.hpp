@@ -101,6 +101,7 @@ struct RunResult {
   std::string scene;                 ///< the scene file
   std::vector<std::string> effects;  ///< as the scene lists them
   std::string p, pc;                 ///< the degrees as written
+  std::string family;                ///< the multiplier family (space::to_string)
   std::optional<MaterialSummary> material;
   long long edges_on_contact = 0, m = 0, n_dofs = 0, nmult = 0;
   std::vector<OperatorRecord> operators;  ///< every operator built, in order

@@ -34,6 +34,7 @@ InfSupSummary infsup_summary(const Level& level, const infsup::InfSupSetup& setu
   const infsup::PairingFacts pairing{
       .problem = setup.problem,
       .norm = setup.norm,
+      .family = setup.family,
       .p = d.smallest_cell_degree,
       .pc = *std::max_element(d.segment_degrees.begin(), d.segment_degrees.end()),
       .level = 1,

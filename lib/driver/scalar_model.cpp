@@ -25,10 +25,12 @@ ContactResult scalar_result(const std::string& name, const contact::ContactSolut
   const auto& zones = boundary_mesh.zones();
   for (std::size_t z = 0; z < zones.size(); ++z)
     r.zones.push_back({zones[z].end - zones[z].begin, zones[z].closed, samples.zone_contact_set_length[z], {}});
+  // (a standard or dual family constrains its coefficients: no points per segment)
   const auto& q = solution.constraint_points;
-  r.constraint_points =
-      ConstraintPointCount{*std::min_element(q.begin(), q.end()), *std::max_element(q.begin(), q.end()),
-                           static_cast<long long>(solution.constraint_s.size())};
+  if (!q.empty())
+    r.constraint_points =
+        ConstraintPointCount{*std::min_element(q.begin(), q.end()), *std::max_element(q.begin(), q.end()),
+                             static_cast<long long>(solution.constraint_s.size())};
   r.solver = solution.qp;
   r.seconds = {solution.seconds.assembly, solution.seconds.factorization, solution.seconds.condensation,
                solution.seconds.qp,       solution.seconds.recovery,      seconds};

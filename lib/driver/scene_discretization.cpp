@@ -2,6 +2,7 @@
 #include "driver/scene_discretization.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <array>
@@ -117,6 +118,12 @@ assembly::CouplingWeight scene_friction_bound(const scene::Scene& scene) {
 std::vector<int> checked_constraint_points(const scene::Scene& scene, const SceneDiscretization& d,
                                            contact::ContactProblem problem) {
   const auto& boundary_mesh = *d.boundary_mesh;
+  if (scene.family.kind != space::MultiplierFamilyKind::discontinuous && !scene.constraint_points.empty())
+    throw_bad_input(scene.where("solve.constraint_points"), "solve.constraint_points",
+                    fmt::format("{}", fmt::join(scene.constraint_points, ", ")),
+                    fmt::format("absent with contact_mesh.family = \"{}\", whose constraints act on its coefficients "
+                                "at its nodes",
+                                space::to_string(scene.family)));
   const int n_zones = static_cast<int>(boundary_mesh.zones().size());
   for (int k = 0; k < boundary_mesh.n_segments(); ++k) {
     if (scene.constraint_points.empty()) break;
@@ -142,6 +149,7 @@ contact::ContactSetup contact_setup_of(const scene::Scene& scene, const SceneDis
   contact::ContactSetup setup;
   setup.boundary_mesh = d.boundary_mesh.get();
   setup.segment_degrees = d.segment_degrees;
+  setup.family = scene.family;
   setup.problem = problem;
   setup.constraint_points = checked_constraint_points(scene, d, problem);
   setup.f = scene_function(scene, "data.f", scene.load);
@@ -179,6 +187,7 @@ infsup::InfSupSetup common_infsup_setup(const scene::Scene& scene, const mesh::M
   setup.cell_degrees = std::move(cell_degrees);
   setup.boundary_mesh = &boundary_mesh;
   setup.segment_degrees = std::move(segment_degrees);
+  setup.family = scene.family;
   setup.problem = scene.problem;
   setup.norm = scene.norm;
   setup.alpha_tolerance = scene.alpha_tolerance;

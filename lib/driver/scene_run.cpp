@@ -31,11 +31,14 @@ void describe_run(const Level& base, const OperatorLog& log, const linalg::Distr
   for (const auto effect : scene.effects) result.effects.push_back(scene::to_string(effect));
   result.p = scene.p.label();
   result.pc = scene.pc.label();
+  result.family = space::to_string(scene.family);
   result.material = base.model->material();
   result.edges_on_contact = static_cast<long long>(base.d->contact->edges().size());
   result.m = base.d->boundary_mesh->n_segments();
   result.n_dofs = base.model->n_dofs();
-  result.nmult = base.d->multipliers->n_dofs();
+  result.nmult = scene.family.kind == space::MultiplierFamilyKind::discontinuous
+                     ? base.d->multipliers->n_dofs()
+                     : space::family_basis(*base.d->multipliers, scene.family).n_functions();
   result.operators = log.records();
   for (const auto& solved : base.solved) result.contacts.push_back(solved.result);
   result.convergence_refinements = scene.convergence_refinements;

@@ -96,6 +96,7 @@ std::string summary_json(const RunResult& r) {
          {"effects", r.effects},
          {"p", r.p},
          {"pC", r.pc},
+         {"family", r.family},
          {"edges_on_contact", r.edges_on_contact},
          {"m", r.m},
          {"ndofs", r.n_dofs},

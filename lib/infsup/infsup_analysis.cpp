@@ -39,8 +39,8 @@ std::unique_ptr<norms::GramLadder> own_ladder(const InfSupSetup& setup, const sp
       norms::extension_gram_ladder(setup.mesh, setup.cell_degrees, multipliers, distribution_of(setup)));
 }
 
-// α of each zone's multipliers alone: the pencil (S_G, G) restricted to the active dofs whose
-// segment lies in the zone (every copy of the multiplier, for the elastic pairings).
+// α of each zone's multipliers alone: the pencil (S_G, G) restricted to the active functions whose
+// segments lie in the zone (every copy of the multiplier, for the elastic pairings).
 std::vector<double> zone_alphas(const InfSupOperators& operators, const space::MultiplierSpace& multipliers,
                                 const Eigen::MatrixXd& gram) {
   const auto& boundary = multipliers.boundary_mesh();
@@ -50,11 +50,17 @@ std::vector<double> zone_alphas(const InfSupOperators& operators, const space::M
   for (int k = 0; k < multipliers.n_segments(); ++k)
     for (int j = 0; j <= multipliers.segment_degree(k); ++j)
       zone_of_dof[multipliers.first_dof(k) + j] = boundary.zone_of_segment(k);
+  // A function lives in one zone (the families do not cross zone ends): that of its first row.
+  std::vector<int> zone_of_function;
+  for (int c = 0; c < operators.basis.outerSize(); ++c) {
+    Eigen::SparseMatrix<double>::InnerIterator it(operators.basis, c);
+    zone_of_function.push_back(zone_of_dof[static_cast<std::size_t>(it.row() % multipliers.n_dofs())]);
+  }
   std::vector<double> alphas;
   for (int z = 0; z < n_zones; ++z) {
     std::vector<int> rows;
-    for (std::size_t i = 0; i < operators.active_dofs.size(); ++i)
-      if (zone_of_dof[operators.active_dofs[i] % multipliers.n_dofs()] == z) rows.push_back(static_cast<int>(i));
+    for (std::size_t i = 0; i < zone_of_function.size(); ++i)
+      if (zone_of_function[i] == z) rows.push_back(static_cast<int>(i));
     if (rows.empty()) {
       alphas.push_back(std::numeric_limits<double>::quiet_NaN());  // no active multiplier (s ≡ 0 there)
       continue;
@@ -86,7 +92,7 @@ InfSupResult analyse_infsup(const InfSupSetup& setup, EigenBackend backend) {
   SmallestEigenpair pair;
   Eigen::MatrixXd fine;
   for (int level = 1;; ++level) {
-    fine = restrict(block_copies(grams.at(level), operators.gram_copies), operators.active_dofs);
+    fine = restrict(block_copies(grams.at(level), operators.gram_copies), operators.basis);
     Stopwatch eigen_clock;
     pair = backend == EigenBackend::slepc ? smallest_eigenpair_slepc(operators.s_g, fine)
                                           : smallest_eigenpair_dense(operators.s_g, fine);
@@ -96,7 +102,7 @@ InfSupResult analyse_infsup(const InfSupSetup& setup, EigenBackend backend) {
     const Eigen::VectorXd& x = pair.eigenvector;
     const double fine_norm = x.dot(fine * x);
     const double coarse_norm =
-        x.dot(restrict(block_copies(grams.at(level - 1), operators.gram_copies), operators.active_dofs) * x);
+        x.dot(restrict(block_copies(grams.at(level - 1), operators.gram_copies), operators.basis) * x);
     result.alpha_error = result.alpha * std::abs(std::sqrt(fine_norm / coarse_norm) - 1.0);
     result.reference_level = level;
     result.alpha_converged = grams.geometric() && result.alpha_error <= setup.alpha_tolerance * result.alpha;
@@ -110,9 +116,7 @@ InfSupResult analyse_infsup(const InfSupSetup& setup, EigenBackend backend) {
   result.zone_alpha = zone_alphas(operators, multipliers, fine);
   result.lambda_max = pair.largest_eigenvalue;
   result.singular = result.lambda_min <= kRoundOffZero * result.lambda_max;
-  result.mode = Eigen::VectorXd::Zero(operators.n_multiplier_dofs);
-  for (std::size_t i = 0; i < operators.active_dofs.size(); ++i)
-    result.mode(operators.active_dofs[i]) = pair.eigenvector(static_cast<Eigen::Index>(i));
+  result.mode = operators.basis * pair.eigenvector;
   const int min_p = operators.smallest_p;
   const int max_pc = *std::max_element(setup.segment_degrees.begin(), setup.segment_degrees.end());
   result.pi = stability_indicator(operators.h, operators.H, min_p, max_pc);

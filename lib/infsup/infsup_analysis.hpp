@@ -30,12 +30,13 @@ struct InfSupResult {
   double lambda_max = 0.0;  ///< largest eigenvalue of the same pencil
   /// α² ≤ kRoundOffZero · λ_max: S_G is singular to working precision, α = 0 numerically.
   bool singular = false;
-  Eigen::VectorXd mode;  ///< eigenvector over all multiplier dofs (0 off supp s), xᵀGx = 1
-  double pi = 0.0;       ///< Π(h, H, p, p_C), θ = 1
+  /// The eigenvector as Legendre coefficients of the whole multiplier (0 off supp s), xᵀGx = 1.
+  Eigen::VectorXd mode;
+  double pi = 0.0;  ///< Π(h, H, p, p_C), θ = 1
   double h = 0.0, H = 0.0;
-  int n_primal_dofs = 0, n_multiplier_dofs = 0;
-  double alpha_error = 0.0;  ///< estimate of |α − α_∞| from the reference (header)
-  int reference_level = 0;   ///< level of the ladder α was computed on
+  int n_primal_dofs = 0, n_multiplier_dofs = 0;  ///< the latter: functions of the multiplier family
+  double alpha_error = 0.0;                      ///< estimate of |α − α_∞| from the reference (header)
+  int reference_level = 0;                       ///< level of the ladder α was computed on
   /// alpha_error ≤ the setup's tolerance · α, on a ladder that converges geometrically (an
   /// extension-norm reference that cannot be graded makes alpha_error too low: false)
   bool alpha_converged = true;

@@ -42,26 +42,62 @@ double stability_indicator(double h, double H, int min_p, int max_pc) {
 namespace {
 
 // Segments on which s vanishes at every sample point carry no multiplier in (22).
-std::vector<int> dofs_meeting_support(const mesh::ContactBoundary& contact, const space::MultiplierSpace& multipliers,
-                                      const assembly::BoundaryFunction& s) {
-  std::vector<int> dofs;
+std::vector<bool> segments_meeting_support(const mesh::ContactBoundary& contact,
+                                           const space::MultiplierSpace& multipliers,
+                                           const assembly::BoundaryFunction& s) {
+  std::vector<bool> meets(static_cast<std::size_t>(multipliers.n_segments()));
   const auto& rule = basis::gauss_legendre(12);
   for (int k = 0; k < multipliers.n_segments(); ++k) {
     const double a = multipliers.boundary_mesh().segment_begin(k);
     const double b = multipliers.boundary_mesh().segment_end(k);
-    const bool meets = std::any_of(rule.points.begin(), rule.points.end(),
-                                   [&](double t) { return s(contact.point_at(a + 0.5 * (b - a) * (t + 1.0))) != 0.0; });
-    if (meets)
-      for (int i = 0; i <= multipliers.segment_degree(k); ++i) dofs.push_back(multipliers.first_dof(k) + i);
+    meets[static_cast<std::size_t>(k)] = std::any_of(rule.points.begin(), rule.points.end(), [&](double t) {
+      return s(contact.point_at(a + 0.5 * (b - a) * (t + 1.0))) != 0.0;
+    });
   }
-  return dofs;
+  return meets;
+}
+
+// R: the family's functions (Legendre modes for the discontinuous family) in `copies` copies,
+// those whose segments meet `active` (every segment when empty).
+Eigen::SparseMatrix<double> pencil_basis(const space::MultiplierSpace& multipliers,
+                                         const space::MultiplierFamily& family, int copies,
+                                         const std::vector<bool>& active = {}) {
+  const int n = multipliers.n_dofs();
+  Eigen::SparseMatrix<double> functions(n, n);
+  if (family.kind == space::MultiplierFamilyKind::discontinuous)
+    functions.setIdentity();
+  else
+    functions = space::family_basis(multipliers, family).legendre;
+  std::vector<int> segment_of_dof(static_cast<std::size_t>(n));
+  for (int k = 0; k < multipliers.n_segments(); ++k)
+    for (int m = 0; m <= multipliers.segment_degree(k); ++m)
+      segment_of_dof[static_cast<std::size_t>(multipliers.first_dof(k) + m)] = k;
+  std::vector<Eigen::Triplet<double>> entries;
+  int kept = 0;
+  for (int copy = 0; copy < copies; ++copy)
+    for (int c = 0; c < functions.outerSize(); ++c) {
+      bool keep = active.empty();
+      for (Eigen::SparseMatrix<double>::InnerIterator it(functions, c); it && !keep; ++it)
+        keep = active[static_cast<std::size_t>(segment_of_dof[static_cast<std::size_t>(it.row())])];
+      if (!keep) continue;
+      for (Eigen::SparseMatrix<double>::InnerIterator it(functions, c); it; ++it)
+        entries.emplace_back(copy * n + static_cast<int>(it.row()), kept, it.value());
+      ++kept;
+    }
+  Eigen::SparseMatrix<double> out(copies * n, kept);
+  out.setFromTriplets(entries.begin(), entries.end());
+  return out;
 }
 
 }  // namespace
 
-Eigen::MatrixXd restrict(const Eigen::MatrixXd& matrix, const std::vector<int>& dofs) {
-  if (static_cast<Eigen::Index>(dofs.size()) == matrix.rows()) return matrix;  // every dof active
-  return matrix(dofs, dofs);
+Eigen::MatrixXd restrict(const Eigen::MatrixXd& matrix, const Eigen::SparseMatrix<double>& basis) {
+  bool identity = basis.rows() == basis.cols() && basis.nonZeros() == basis.rows();
+  for (int c = 0; identity && c < basis.outerSize(); ++c)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(basis, c); it; ++it)
+      identity = identity && it.row() == c && it.value() == 1.0;
+  if (identity) return matrix;
+  return Eigen::MatrixXd(basis.transpose() * (matrix * basis));
 }
 
 Eigen::MatrixXd block_copies(const Eigen::MatrixXd& g, int copies) {
@@ -121,9 +157,9 @@ InfSupOperators elastic_infsup_operators(const InfSupSetup& setup) {
   out.seconds_primal = primal_clock.seconds();
   if (setup.master) add_master_pairing(setup, multipliers, out);
   out.gram_copies = friction ? 2 : 1;
-  out.n_multiplier_dofs = out.gram_copies * multipliers.n_dofs();
-  out.active_dofs.resize(out.n_multiplier_dofs);
-  for (int i = 0; i < out.n_multiplier_dofs; ++i) out.active_dofs[i] = i;
+  out.basis = pencil_basis(multipliers, setup.family, out.gram_copies);
+  out.n_multiplier_dofs = static_cast<int>(out.basis.cols());
+  out.s_g = restrict(out.s_g, out.basis);
   out.log = elastic.log();
   out.n_primal_dofs += elastic.n_dofs();
   out.h = std::max(out.h, elastic.whole_mesh().longest_edge());
@@ -161,18 +197,15 @@ InfSupOperators assemble_infsup_operators(const InfSupSetup& setup) {
   if (primal.log()) primal.log()->record("S_G", s_g.rows(), s_g.cols(), schur_clock.seconds());
   out.seconds_primal = primal_clock.seconds();
 
-  if (friction) {
-    out.active_dofs = dofs_meeting_support(contact, multipliers, setup.friction_bound.function());
-    if (out.active_dofs.empty()) throw InputError("the friction bound s vanishes on all of Γ_C: no multiplier is left");
-    out.s_g = restrict(s_g, out.active_dofs);
-  } else {
-    out.active_dofs.resize(multipliers.n_dofs());
-    for (int i = 0; i < multipliers.n_dofs(); ++i) out.active_dofs[i] = i;
-    out.s_g = s_g;
-  }
+  const Eigen::SparseMatrix<double> all = pencil_basis(multipliers, setup.family, 1);
+  out.basis = friction ? pencil_basis(multipliers, setup.family, 1,
+                                      segments_meeting_support(contact, multipliers, setup.friction_bound.function()))
+                       : all;
+  if (out.basis.cols() == 0) throw InputError("the friction bound s vanishes on all of Γ_C: no multiplier is left");
+  out.s_g = restrict(s_g, out.basis);
   out.log = primal.log();
   out.n_primal_dofs = space.n_dofs();
-  out.n_multiplier_dofs = multipliers.n_dofs();
+  out.n_multiplier_dofs = static_cast<int>(all.cols());
   out.h = primal.whole_mesh().longest_edge();
   out.smallest_p = primal.whole_mesh().smallest_degree();
   out.H = setup.boundary_mesh->mesh_size();

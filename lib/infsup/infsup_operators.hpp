@@ -5,6 +5,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include "norms/gram_ladder.hpp"
 #include "operators/elastic_operators.hpp"
 #include "operators/primal_operators.hpp"
+#include "space/multiplier_family.hpp"
 
 namespace hpcontact::infsup {
 
@@ -35,6 +37,9 @@ struct InfSupSetup {
   std::vector<int> cell_degrees;  ///< p_T
   const mesh::BoundaryMesh* boundary_mesh = nullptr;
   std::vector<int> segment_degrees;  ///< p_C per segment
+  /// The multiplier family on T_{C,H} (space/multiplier_family.hpp): the pencil is restricted to
+  /// its functions.
+  space::MultiplierFamily family;
   GramNorm norm = GramNorm::interpolation;
   PairingProblem problem = PairingProblem::signorini;
   assembly::CouplingWeight friction_bound;  ///< s, required for the friction problem
@@ -60,12 +65,14 @@ struct InfSupSetup {
 };
 
 struct InfSupOperators {
-  Eigen::MatrixXd s_g;  ///< B A_G⁻¹ Bᵀ restricted to the active multipliers, (n_active, n_active)
-  /// Multiplier dofs kept (all of them for Signorini; those of segments meeting supp s for
-  /// friction), in increasing order.
-  std::vector<int> active_dofs;
+  Eigen::MatrixXd s_g;  ///< Rᵀ B A_G⁻¹ Bᵀ R on the active multiplier functions R, (n_active, n_active)
+  /// R: the active multiplier functions as Legendre coefficients of the whole multiplier
+  /// (gram_copies × dofs of M^{p_C}(T_{C,H}) rows), one column each: the family's basis functions
+  /// (the Legendre modes themselves for the discontinuous family), all of them for Signorini, those
+  /// whose segments meet supp s for friction.
+  Eigen::SparseMatrix<double> basis;
   int n_primal_dofs = 0;
-  int n_multiplier_dofs = 0;      ///< of the whole multiplier: gram_copies × dofs of M^{p_C}(T_{C,H})
+  int n_multiplier_dofs = 0;      ///< of the whole multiplier: gram_copies × functions of the family
   int gram_copies = 1;            ///< G of the pairing = diag(G, …) with this many copies
   double h = 0.0;                 ///< longest edge of T_h
   int smallest_p = 0;             ///< smallest p_T of T_h
@@ -79,8 +86,9 @@ struct InfSupOperators {
 /// @throws InputError on inconsistent setups (no friction bound, s ≡ 0 on Γ_C, ...).
 InfSupOperators assemble_infsup_operators(const InfSupSetup& setup);
 
-/// `matrix` (n_multiplier_dofs square) restricted to the rows and columns `dofs`.
-Eigen::MatrixXd restrict(const Eigen::MatrixXd& matrix, const std::vector<int>& dofs);
+/// Rᵀ `matrix` R for R = `basis` (a square `matrix` in the Legendre coefficients of the whole
+/// multiplier); `matrix` itself when R is the identity.
+Eigen::MatrixXd restrict(const Eigen::MatrixXd& matrix, const Eigen::SparseMatrix<double>& basis);
 
 /// diag(g, …, g) with `copies` blocks.
 Eigen::MatrixXd block_copies(const Eigen::MatrixXd& g, int copies);

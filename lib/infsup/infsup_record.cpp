@@ -11,6 +11,7 @@ InfSupRecord make_infsup_record(const PairingFacts& pairing, const InfSupResult&
   record.norm = pairing.norm;
   record.p = pairing.p;
   record.pc = pairing.pc;
+  record.family = pairing.family;
   record.level = pairing.level;
   record.n = pairing.n;
   record.m = pairing.m;

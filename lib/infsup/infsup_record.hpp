@@ -18,14 +18,15 @@ struct InfSupRecord {
   PairingProblem problem = PairingProblem::signorini;
   GramNorm norm = GramNorm::interpolation;
   int p = 0, pc = 0;
-  int level = 1;       ///< the sweep's level, counted from 1 (1 for a single run)
-  int n = 0;           ///< edges of T_h on Γ_C
-  int m = 0;           ///< segments of T_{C,H}
-  double h = 0.0;      ///< longest edge of T_h
-  double h_min = 0.0;  ///< shortest edge of T_h on Γ_C (a sweep's rate fits use it)
-  double H = 0.0;      ///< longest segment of T_{C,H}
-  double ratio = 0.0;  ///< h/H as the scene or the sweep gives it, otherwise m / n
-  double pi = 0.0;     ///< Π(h, H, p, p_C) of (20)
+  space::MultiplierFamily family;  ///< the multiplier family on T_{C,H}
+  int level = 1;                   ///< the sweep's level, counted from 1 (1 for a single run)
+  int n = 0;                       ///< edges of T_h on Γ_C
+  int m = 0;                       ///< segments of T_{C,H}
+  double h = 0.0;                  ///< longest edge of T_h
+  double h_min = 0.0;              ///< shortest edge of T_h on Γ_C (a sweep's rate fits use it)
+  double H = 0.0;                  ///< longest segment of T_{C,H}
+  double ratio = 0.0;              ///< h/H as the scene or the sweep gives it, otherwise m / n
+  double pi = 0.0;                 ///< Π(h, H, p, p_C) of (20)
   // The result.
   double alpha = 0.0;
   double alpha_error = 0.0;  ///< estimate of |α − α_∞| (InfSupResult::alpha_error)
@@ -43,6 +44,7 @@ struct InfSupRecord {
 struct PairingFacts {
   PairingProblem problem = PairingProblem::signorini;
   GramNorm norm = GramNorm::interpolation;
+  space::MultiplierFamily family;
   int p = 0, pc = 0, level = 1, n = 0, m = 0;
   double h_min = 0.0;
   std::optional<double> ratio;  ///< h/H as given; absent: m / n

@@ -5,6 +5,8 @@
 #include <limits>
 #include <sstream>
 
+#include "core/error.hpp"
+
 namespace hpcontact::io {
 namespace {
 
@@ -42,18 +44,27 @@ std::optional<Choice> choice_of(const std::string& text, std::initializer_list<C
   return std::nullopt;
 }
 
+// The multiplier family labelled `text` (space::to_string), or nothing.
+std::optional<space::MultiplierFamily> family_of(const std::string& text) {
+  try {
+    return space::parse_multiplier_family(text, "alpha.csv");
+  } catch (const InputError&) {
+    return std::nullopt;
+  }
+}
+
 }  // namespace
 
 std::vector<std::string> alpha_columns() {
-  return {"problem", "norm",  "p",  "pC",    "level",       "n",     "m",     "h",      "h_min",
-          "H",       "ratio", "Pi", "alpha", "alpha_error", "ndofs", "nmult", "seconds"};
+  return {"problem", "norm", "p",     "pC", "family", "level",       "n",     "m",     "h",
+          "h_min",   "H",    "ratio", "Pi", "alpha",  "alpha_error", "ndofs", "nmult", "seconds"};
 }
 
 void add_alpha_row(CsvTable& table, const infsup::InfSupRecord& r) {
   table.add_row({infsup::to_string(r.problem), infsup::to_string(r.norm), static_cast<long long>(r.p),
-                 static_cast<long long>(r.pc), static_cast<long long>(r.level), static_cast<long long>(r.n),
-                 static_cast<long long>(r.m), r.h, r.h_min, r.H, r.ratio, r.pi, r.alpha, r.alpha_error, r.ndofs,
-                 r.nmult, r.seconds});
+                 static_cast<long long>(r.pc), space::to_string(r.family), static_cast<long long>(r.level),
+                 static_cast<long long>(r.n), static_cast<long long>(r.m), r.h, r.h_min, r.H, r.ratio, r.pi, r.alpha,
+                 r.alpha_error, r.ndofs, r.nmult, r.seconds});
 }
 
 std::optional<infsup::InfSupRecord> read_alpha_row(const std::string& line) {
@@ -63,19 +74,22 @@ std::optional<infsup::InfSupRecord> read_alpha_row(const std::string& line) {
   // The cells in the order of alpha_columns().
   const auto problem = choice_of(c[0], {PairingProblem::signorini, PairingProblem::friction});
   const auto norm = choice_of(c[1], {GramNorm::interpolation, GramNorm::extension});
-  const auto p = int_of(c[2]), pc = int_of(c[3]), level = int_of(c[4]), n = int_of(c[5]), m = int_of(c[6]);
-  const auto h = number_of<double>(c[7]), h_min = number_of<double>(c[8]), H = number_of<double>(c[9]);
-  const auto ratio = number_of<double>(c[10]), pi = number_of<double>(c[11]);
-  const auto alpha = number_of<double>(c[12]), alpha_error = number_of<double>(c[13]);
-  const auto ndofs = number_of<long long>(c[14]), nmult = number_of<long long>(c[15]);
-  const auto seconds = number_of<double>(c[16]);
-  if (!problem || !norm || !p || !pc || !level || !n || !m || !h || !h_min || !H || !ratio || !pi || !alpha ||
-      !alpha_error || !ndofs || !nmult || !seconds)
+  const auto p = int_of(c[2]), pc = int_of(c[3]);
+  const auto family = family_of(c[4]);
+  const auto level = int_of(c[5]), n = int_of(c[6]), m = int_of(c[7]);
+  const auto h = number_of<double>(c[8]), h_min = number_of<double>(c[9]), H = number_of<double>(c[10]);
+  const auto ratio = number_of<double>(c[11]), pi = number_of<double>(c[12]);
+  const auto alpha = number_of<double>(c[13]), alpha_error = number_of<double>(c[14]);
+  const auto ndofs = number_of<long long>(c[15]), nmult = number_of<long long>(c[16]);
+  const auto seconds = number_of<double>(c[17]);
+  if (!problem || !norm || !p || !pc || !family || !level || !n || !m || !h || !h_min || !H || !ratio || !pi ||
+      !alpha || !alpha_error || !ndofs || !nmult || !seconds)
     return std::nullopt;
   return infsup::InfSupRecord{.problem = *problem,
                               .norm = *norm,
                               .p = *p,
                               .pc = *pc,
+                              .family = *family,
                               .level = *level,
                               .n = *n,
                               .m = *m,

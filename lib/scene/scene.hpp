@@ -23,6 +23,7 @@
 #include "mesh/mesh.hpp"
 #include "mesh/rectangle_mesh.hpp"
 #include "scene/ratio.hpp"
+#include "space/multiplier_family.hpp"
 
 namespace hpcontact::scene {
 
@@ -88,6 +89,7 @@ struct Scene {
   std::vector<Ratio> ratio;
   std::vector<double> breakpoints;
   double grading = 1.0;
+  space::MultiplierFamily family;  ///< the multiplier family on T_{C,H}
   // [discretization]
   Degree p{1, {}}, pc{0, {}};
   // [data]: expressions in x, y.

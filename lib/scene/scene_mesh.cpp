@@ -182,13 +182,21 @@ std::vector<int> scene_cell_degrees(const Scene& scene, const mesh::Mesh& mesh) 
 
 std::vector<int> scene_segment_degrees(const Scene& scene, const mesh::ContactBoundary& contact,
                                        const mesh::BoundaryMesh& boundary_mesh) {
-  if (scene.pc.rule.empty()) return std::vector<int>(boundary_mesh.n_segments(), scene.pc.value);
-  const Expression rule(scene.pc.rule, scene.where("discretization.pC") + ": key 'discretization.pC'");
-  std::vector<int> degrees(boundary_mesh.n_segments());
-  for (int k = 0; k < boundary_mesh.n_segments(); ++k)
-    degrees[k] =
-        whole_degree(rule, contact.point_at(0.5 * (boundary_mesh.segment_begin(k) + boundary_mesh.segment_end(k))), 0,
-                     19, scene.where("discretization.pC"), "discretization.pC");
+  std::vector<int> degrees(boundary_mesh.n_segments(), scene.pc.value);
+  if (!scene.pc.rule.empty()) {
+    const Expression rule(scene.pc.rule, scene.where("discretization.pC") + ": key 'discretization.pC'");
+    for (int k = 0; k < boundary_mesh.n_segments(); ++k)
+      degrees[k] =
+          whole_degree(rule, contact.point_at(0.5 * (boundary_mesh.segment_begin(k) + boundary_mesh.segment_end(k))), 0,
+                       19, scene.where("discretization.pC"), "discretization.pC");
+  }
+  // The standard and dual families are continuous or dual to a continuous space: p_C ≥ 1.
+  if (scene.family.kind != space::MultiplierFamilyKind::discontinuous)
+    for (int k = 0; k < boundary_mesh.n_segments(); ++k)
+      if (degrees[k] < 1)
+        throw_bad_input(scene.where("discretization.pC"), "discretization.pC", std::to_string(degrees[k]),
+                        fmt::format("at least 1 with contact_mesh.family = \"{}\" (segment {} of T_{{C,H}})",
+                                    space::to_string(scene.family), k));
   return degrees;
 }
 

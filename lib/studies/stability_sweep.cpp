@@ -49,6 +49,9 @@ StabilitySweep read_stability_sweep(const std::string& path, MPI_Comm ranks) {
     sweep.norms.push_back(infsup::parse_gram_norm(norm, path + ": key 'sweep.norm'"));
   for (const auto& problem : table.string_list("problem", std::vector<std::string>{infsup::to_string(first.problem)}))
     sweep.problems.push_back(infsup::parse_pairing_problem(problem, path + ": key 'sweep.problem'"));
+  sweep.families.clear();
+  for (const auto& family : table.string_list("family", std::vector<std::string>{space::to_string(first.family)}))
+    sweep.families.push_back(space::parse_multiplier_family(family, path, "sweep.family"));
   sweep.fit_levels = static_cast<int>(table.integer("fit_levels", 2, 20, 3));
   sweep.eigensolver = table.choice("eigensolver", {"slepc", "dense"}, "slepc");
   sweep.alpha_tolerance = table.number_in("alpha_tol", 1e-12, 0.1, 1e-4);

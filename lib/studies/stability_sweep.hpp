@@ -25,6 +25,7 @@ namespace hpcontact::studies {
 ///           p, pC (integers, lists or "a..b"; absent: the scene's degree or rule),
 ///           pc_rule ("below_p" | "all"), ratio (h/H: numbers or fractions "2/3"; absent: the
 ///           scene's contact mesh), norm, problem (absent: the scene's [infsup] norm, problem),
+///           family (multiplier families; absent: the scene's contact_mesh.family),
 ///           fit_levels, eigensolver ("slepc" | "dense"), alpha_tol (relative error of every α)
 struct StabilitySweep {
   std::string file;
@@ -44,6 +45,7 @@ struct StabilitySweep {
   std::vector<scene::Ratio> ratios;  ///< empty: the scene's contact mesh
   std::vector<infsup::GramNorm> norms;
   std::vector<infsup::PairingProblem> problems;
+  std::vector<space::MultiplierFamily> families{space::MultiplierFamily{}};  ///< the scene's own when not listed
   int fit_levels = 3;
   std::string eigensolver = "slepc";
   double alpha_tolerance = 1e-4;

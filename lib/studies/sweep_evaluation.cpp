@@ -142,8 +142,9 @@ const SweepEvaluation::EnvelopeGram& SweepEvaluation::envelope_of(const SweepPoi
 
 infsup::InfSupRecord SweepEvaluation::evaluate_point(const SweepPoint& point, const Group& group) {
   const auto& ratio = ratios_[point.ratio];
-  const scene::Scene scene =
-      point_scene(group.scene, {.pc = point.pc, .ratio = ratio, .problem = point.pairing, .norm = point.gram});
+  const scene::Scene scene = point_scene(
+      group.scene,
+      {.pc = point.pc, .ratio = ratio, .problem = point.pairing, .norm = point.gram, .family = point.family});
   const auto boundary = scene::build_scene_boundary_mesh(scene, group.contact);
   auto segment_degrees = scene::scene_segment_degrees(scene, group.contact, boundary);
   auto setup = group.elastic ? driver::infsup_setup_of(scene, group.built.mesh.get(), group.built.cell_degrees,
@@ -160,6 +161,7 @@ infsup::InfSupRecord SweepEvaluation::evaluate_point(const SweepPoint& point, co
   const auto& facts = sweep_.level_facts[point.level];
   const infsup::PairingFacts pairing{.problem = point.pairing,
                                      .norm = point.gram,
+                                     .family = point.family,
                                      .p = point.reported_p,
                                      .pc = point.reported_pc,
                                      .level = static_cast<int>(point.level) + 1,

@@ -14,7 +14,7 @@
 namespace hpcontact::studies {
 
 std::string SweepPoint::key() const {
-  return point_key(problem, norm, reported_p, reported_pc, static_cast<int>(level) + 1, m);
+  return point_key(problem, norm, reported_p, reported_pc, family, static_cast<int>(level) + 1, m);
 }
 
 std::vector<std::optional<scene::Ratio>> ratio_choices(const StabilitySweep& sweep) {
@@ -38,6 +38,7 @@ scene::Scene point_scene(scene::Scene scene, const PointChoice& choice) {
   }
   if (choice.problem) scene.problem = *choice.problem;
   if (choice.norm) scene.norm = *choice.norm;
+  if (choice.family) scene.family = *choice.family;
   return scene;
 }
 
@@ -60,13 +61,15 @@ std::vector<SweepPoint> list_sweep_points(const StabilitySweep& sweep) {
     for (const auto p : degrees)
       for (const auto problem : sweep.problems)
         for (const auto norm : sweep.norms)
-          for (const auto pc : multiplier_degrees)
-            for (std::size_t r = 0; r < ratios; ++r) {
-              const int reported_p = p.value_or(facts.scene_p), reported_pc = pc.value_or(facts.scene_pc[r]);
-              if (sweep.pc_below_p && reported_pc >= reported_p) continue;
-              points.push_back({infsup::to_string(problem), infsup::to_string(norm), problem, norm, level, r, p, pc,
-                                reported_p, reported_pc, facts.segments[r]});
-            }
+          for (const auto& family : sweep.families)
+            for (const auto pc : multiplier_degrees)
+              for (std::size_t r = 0; r < ratios; ++r) {
+                const int reported_p = p.value_or(facts.scene_p), reported_pc = pc.value_or(facts.scene_pc[r]);
+                if (sweep.pc_below_p && reported_pc >= reported_p) continue;
+                if (family.kind != space::MultiplierFamilyKind::discontinuous && reported_pc < 1) continue;
+                points.push_back({infsup::to_string(problem), infsup::to_string(norm), problem, norm, family, level, r,
+                                  p, pc, reported_p, reported_pc, facts.segments[r]});
+              }
   }
   return points;
 }

@@ -1,5 +1,5 @@
 // Planning a stability sweep, without building anything: the points it computes (level × p ×
-// problem × norm × p_C × ratio), grouped by (level, p) because the points of a group share T_h
+// problem × norm × family × p_C × ratio), grouped by (level, p) because the points of a group share T_h
 // and one factorization of A_G (and by ratio too on many processes), a cost estimate per group,
 // the groups scheduled on the slices of a sharded sweep, and the units of work the MPI ranks
 // take in turn.
@@ -24,6 +24,7 @@ struct SweepPoint {
   std::string problem, norm;  ///< labels in alpha.csv
   infsup::PairingProblem pairing = infsup::PairingProblem::signorini;
   infsup::GramNorm gram = infsup::GramNorm::interpolation;
+  space::MultiplierFamily family;
   std::size_t level = 0, ratio = 0;  ///< ratio: index into ratio_choices
   std::optional<int> p, pc;          ///< as given to the scene; empty: the scene's own
   int reported_p = 0, reported_pc = 0;
@@ -41,6 +42,7 @@ struct PointChoice {
   std::optional<scene::Ratio> ratio{};  ///< replaces the scene's m, ratio or breakpoints
   std::optional<infsup::PairingProblem> problem{};
   std::optional<infsup::GramNorm> norm{};
+  std::optional<space::MultiplierFamily> family{};
 };
 
 /// The scene of one point: the level's scene with what `choice` sets.
@@ -49,8 +51,8 @@ scene::Scene point_scene(scene::Scene scene, const PointChoice& choice);
 /// "level 2 (domain.n_x=24 domain.n_y=24)", for messages and progress.
 std::string level_name(const StabilitySweep& sweep, std::size_t level);
 
-/// Every point, in the order of alpha.csv: by level, p, problem, norm, p_C, ratio (p_C ≥ p skipped
-/// with pc_rule = "below_p").
+/// Every point, in the order of alpha.csv: by level, p, problem, norm, family, p_C, ratio (p_C ≥ p
+/// skipped with pc_rule = "below_p", p_C = 0 for the standard and dual families).
 std::vector<SweepPoint> list_sweep_points(const StabilitySweep& sweep);
 
 /// Per (level, ratio index): the p_C as given that the level's points use, from which the envelope

@@ -87,13 +87,14 @@ std::vector<std::vector<char>> gather_bytes_on_rank_zero(const std::vector<char>
 
 }  // namespace
 
-std::string point_key(const std::string& problem, const std::string& norm, int p, int pc, int level, long m) {
-  return fmt::format("{}/{}/{}/{}/{}/{}", problem, norm, p, pc, level, m);
+std::string point_key(const std::string& problem, const std::string& norm, int p, int pc,
+                      const space::MultiplierFamily& family, int level, long m) {
+  return fmt::format("{}/{}/{}/{}/{}/{}/{}", problem, norm, p, pc, space::to_string(family), level, m);
 }
 
 std::string point_key(const infsup::InfSupRecord& record) {
-  return point_key(infsup::to_string(record.problem), infsup::to_string(record.norm), record.p, record.pc, record.level,
-                   record.m);
+  return point_key(infsup::to_string(record.problem), infsup::to_string(record.norm), record.p, record.pc,
+                   record.family, record.level, record.m);
 }
 
 std::filesystem::path shard_path(const std::filesystem::path& alpha_csv, int rank) {

@@ -17,7 +17,8 @@
 namespace hpcontact::studies {
 
 /// Identifies a point for resuming: the ratio through m, degrees as reported.
-std::string point_key(const std::string& problem, const std::string& norm, int p, int pc, int level, long m);
+std::string point_key(const std::string& problem, const std::string& norm, int p, int pc,
+                      const space::MultiplierFamily& family, int level, long m);
 /// The key of the point a record belongs to (SweepPoint::key of that point).
 std::string point_key(const infsup::InfSupRecord& record);
 

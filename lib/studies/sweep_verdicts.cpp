@@ -42,16 +42,16 @@ RateFit fit_rate(std::vector<std::pair<double, double>>::const_iterator first,
 
 io::CsvTable fit_verdicts(const std::vector<infsup::InfSupRecord>& rows, int fit_levels) {
   // Keyed by the labels as written, so that configurations come in the same order however they are read.
-  using Key = std::tuple<std::string, std::string, int, int, std::string>;
+  using Key = std::tuple<std::string, std::string, int, int, std::string, std::string>;
   std::map<Key, std::vector<std::pair<double, double>>> series;  // (h_min, α)
   std::map<Key, double> ratio_value;
   for (const auto& row : rows) {
-    const Key key{infsup::to_string(row.problem), infsup::to_string(row.norm), row.p, row.pc,
-                  fmt::format("{:.6g}", row.ratio)};
+    const Key key{infsup::to_string(row.problem), infsup::to_string(row.norm),     row.p, row.pc,
+                  space::to_string(row.family),   fmt::format("{:.6g}", row.ratio)};
     series[key].emplace_back(row.h_min, row.alpha);
     ratio_value[key] = row.ratio;
   }
-  io::CsvTable verdicts({"problem", "norm", "p", "pC", "ratio", "rate", "C", "alpha_finest", "verdict"});
+  io::CsvTable verdicts({"problem", "norm", "p", "pC", "family", "ratio", "rate", "C", "alpha_finest", "verdict"});
   for (auto& [key, points] : series) {
     std::sort(points.begin(), points.end(), [](auto& a, auto& b) { return a.first > b.first; });
     const int count = std::min<int>(fit_levels, static_cast<int>(points.size()));
@@ -63,9 +63,9 @@ io::CsvTable fit_verdicts(const std::vector<infsup::InfSupRecord>& rows, int fit
       fit.verdict = "too_few_levels";
     else
       fit = fit_rate(points.end() - count, points.end());
-    const auto& [problem, norm, p, pc, ratio_text] = key;
-    verdicts.add_row({problem, norm, static_cast<long long>(p), static_cast<long long>(pc), ratio_value[key], fit.rate,
-                      fit.constant, alpha_finest, fit.verdict});
+    const auto& [problem, norm, p, pc, family, ratio_text] = key;
+    verdicts.add_row({problem, norm, static_cast<long long>(p), static_cast<long long>(pc), family, ratio_value[key],
+                      fit.rate, fit.constant, alpha_finest, fit.verdict});
   }
   return verdicts;
 }

@@ -11,7 +11,7 @@ namespace hpcontact::studies {
 /// Fits α ≈ C h_min^r over the `fit_levels` finest levels of each configuration among `rows`
 /// (h_min, the shortest edge on Γ_C, is h on uniform meshes and the size of the finest layer on
 /// graded ones, where checkerboard modes live) and returns verdicts.csv:
-/// problem,norm,p,pC,ratio,rate,C,alpha_finest,verdict with verdict
+/// problem,norm,p,pC,family,ratio,rate,C,alpha_finest,verdict with verdict
 ///   singular        α_finest ≤ 1e-6 (α² ≤ 1e-12 λ_max, λ_max ≤ 1 here: zero to working precision)
 ///   decaying        r ≥ 0.3 (α → 0 like h_min^r)
 ///   stable          otherwise (α bounded below)

@@ -100,6 +100,19 @@ TEST(BadInput, FewerConstraintPointsThanPcPlusOne) {
                    "--constraint-points 2");
 }
 
+// A multiplier family: its name checked, p_C ≥ 1, and no constraint points (its coefficients are
+// constrained).
+TEST(BadInput, MultiplierFamilyAndWhatItRefuses) {
+  expect_bad_input("family_name", replaced("[contact_mesh]\n", "[contact_mesh]\nfamily = \"mortar\"\n"),
+                   {"scene.toml", "contact_mesh.family", "mortar", "standard-modified"});
+  expect_bad_input("family_pc", replaced("[contact_mesh]\n", "[contact_mesh]\nfamily = \"dual\"\n"),
+                   {"discretization.pC", "at least 1", "dual"}, "--pc 0");
+  expect_bad_input(
+      "family_points",
+      replaced("[contact_mesh]\n", "[contact_mesh]\nfamily = \"standard\"\n") + "[solve]\nconstraint_points = 3\n",
+      {"scene.toml", "solve.constraint_points", "standard", "absent"});
+}
+
 TEST(BadInput, ExpressionThatDoesNotParse) {
   expect_bad_input("parse", replaced("g = \"-x^2\"", "g = \"-x^^2\""), {"scene.toml", "data.g", "-x^^2"});
 }

@@ -104,10 +104,10 @@ TEST(Cli, InfsupCsvAndModeFiles) {
   const auto alpha = read_csv(csv);
   // The columns of a sweep's alpha.csv: a single run is level 1, h_min the shortest edge on Γ_C.
   EXPECT_EQ(alpha.header_line(),
-            "problem,norm,p,pC,level,n,m,h,h_min,H,ratio,Pi,alpha,alpha_error,ndofs,nmult,seconds");
+            "problem,norm,p,pC,family,level,n,m,h,h_min,H,ratio,Pi,alpha,alpha_error,ndofs,nmult,seconds");
   ASSERT_EQ(alpha.rows.size(), 2u);
   for (const auto& row : alpha.rows)
-    EXPECT_EQ(line_of(row).find("signorini,interp,1,0,1,4,4,0.5,0.5,0.5,1,"), 0u) << line_of(row);
+    EXPECT_EQ(line_of(row).find("signorini,interp,1,0,discontinuous,1,4,4,0.5,0.5,0.5,1,"), 0u) << line_of(row);
   EXPECT_EQ(read_csv(mode).rows.size(), 4u * 20);
 }
 
@@ -572,7 +572,7 @@ TEST(Cli, SweepRefusesAForeignAlphaCsvUnlessRestarted) {
   std::ifstream in(dir / "out" / "alpha.csv");
   const std::string text{std::istreambuf_iterator<char>(in), {}};
   EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1 + 2);  // header + one point per level
-  EXPECT_EQ(text.find("problem,norm,p,pC,level,"), 0u) << text;
+  EXPECT_EQ(text.find("problem,norm,p,pC,family,level,"), 0u) << text;
 }
 
 // summary.json lists every operator a run built, and a run builds only what its effects need,

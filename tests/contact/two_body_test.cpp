@@ -1,9 +1,11 @@
 // Contact between two elastic bodies on non-matching meshes (contact/two_body_contact.hpp): the
 // contact patch test (uniform compression of two blocks of different materials reproduced to
-// round-off, quadrilaterals and triangles, p = 1…4, pressure uniform), KKT at the constraint
-// points with friction, and the rigid limit (a stiff master reproduces the one-body solver).
+// round-off, quadrilaterals and triangles, p = 1…4, pressure uniform, for every multiplier family),
+// KKT at the constraint points with friction, the rigid limit (a stiff master reproduces the
+// one-body solver), and α of the pair (a mirrored master, SLEPc against LAPACK, the families).
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -18,6 +20,7 @@
 #include "mesh/contact_pair_geometry.hpp"
 #include "mesh/rectangle_mesh.hpp"
 #include "mesh/refine.hpp"
+#include "norms/gram_ladder.hpp"
 #include "postprocess/boundary_samples.hpp"
 #include "postprocess/point_locator.hpp"
 #include "support/elastic_kkt.hpp"
@@ -173,6 +176,34 @@ TEST(TwoBodyContact, PatchTestOfUniformCompressionIsExactOnNonMatchingMeshes) {
       }
 }
 
+// Every standard and dual family (with and without the end modification) reproduces constants, so
+// each passes the patch test: T_{C,H} the slave's trace mesh, p_C = p − 1 and p.
+TEST(TwoBodyContact, EveryMultiplierFamilyPassesThePatchTest) {
+  using space::MultiplierFamilyKind;
+  for (const auto kind : {MultiplierFamilyKind::standard, MultiplierFamilyKind::dual})
+    for (const bool modified : {false, true})
+      for (const bool triangles : {false, true})
+        for (int p = 1; p <= 3; ++p)
+          for (const int pc : {p - 1, p}) {
+            if (pc < 1) continue;
+            const CompressedBlocks blocks(p, triangles, 3);
+            auto setup = blocks.setup(contact::ElasticContactProblem::frictionless, pc);
+            setup.slave.family = {kind, modified};
+            const auto solution = contact::solve_two_body_contact(setup);
+            const std::string where = space::to_string(setup.slave.family) + (triangles ? ", triangles" : "") + ", p " +
+                                      std::to_string(p) + ", p_C " + std::to_string(pc);
+            const contact::BodyDisplacement slave{solution.contact.u, solution.contact.u_rows, solution.contact.n_dofs,
+                                                  solution.contact.lift};
+            EXPECT_LT(relative_error(blocks, blocks.slave, slave), 1e-10) << "slave, " << where;
+            EXPECT_LT(relative_error(blocks, blocks.master, solution.master), 1e-10) << "master, " << where;
+            const space::MultiplierSpace multipliers(*blocks.boundary_mesh, std::vector<int>(3, pc));
+            for (double s : {0.0, 0.3, 0.99, 1.5, 2.0})
+              EXPECT_NEAR(multipliers.evaluate(solution.contact.pressure, s), blocks.pressure(),
+                          1e-10 * blocks.pressure())
+                  << where << ", s = " << s;
+          }
+}
+
 TEST(TwoBodyContact, FrictionSatisfiesKktAndOpposesTheSlip) {
   // The blocks' Poisson ratios differ: the softer one (ν = 0.3, E = 1) widens more, so the slave
   // slides towards +x against the master when it is the softer one, towards −x when the master
@@ -202,8 +233,9 @@ TEST(TwoBodyContact, FrictionSatisfiesKktAndOpposesTheSlip) {
       for (const auto& [s, du] : slip) largest_slip = std::max(largest_slip, std::abs(du));
       EXPECT_GT(largest_slip, 1e-3) << where << ": the interface slides";
       for (const auto& [s, du] : slip)
-        if (std::abs(du) > 1e-2 * largest_slip)
+        if (std::abs(du) > 1e-2 * largest_slip) {
           EXPECT_LE(multipliers.evaluate(solution.contact.shear, s) * du, 0.0) << where << ", s = " << s;
+        }
     }
 }
 
@@ -313,10 +345,11 @@ TEST(TwoBodyInfSup, AMirroredMasterAddsTheSlavesShareReflected) {
       const Eigen::MatrixXd expected = alone + d.asDiagonal() * alone * d.asDiagonal();
       EXPECT_LT((pair.s_g - expected).lpNorm<Eigen::Infinity>(), 1e-12 * alone.lpNorm<Eigen::Infinity>()) << where;
       EXPECT_EQ(pair.n_primal_dofs, slave.operators->n_dofs() + master.operators->n_dofs()) << where;
-      if (problem == infsup::PairingProblem::signorini)
+      if (problem == infsup::PairingProblem::signorini) {
         EXPECT_NEAR(infsup::analyse_infsup(setup, infsup::EigenBackend::dense).alpha, std::sqrt(2.0) * alpha_alone,
                     1e-10 * alpha_alone)
             << where;
+      }
     }
 }
 
@@ -333,4 +366,33 @@ TEST(TwoBodyInfSup, ANonMatchingMasterRaisesAlphaAndBothEigensolversAgree) {
   EXPECT_GT(pair, slave_alone * (1.0 + 1e-3));
   EXPECT_NEAR(pair, infsup::analyse_infsup(setup, infsup::EigenBackend::dense).alpha, 1e-8 * pair)
       << "SLEPc and dense LAPACK agree";
+}
+
+// α of a family is λ_min of the pencil restricted to its functions T: (Tᵀ S_G T, Tᵀ G T), here
+// rebuilt from the discontinuous pencil and the family's Legendre coefficients; SLEPc and dense
+// LAPACK agree on it.
+TEST(TwoBodyInfSup, AFamilysAlphaIsThatOfTheRestrictedPencil) {
+  const MirroredBlock slave(true, 3, 1.0), master(false, 5, 2.0);
+  const mesh::MasterProjection projection(master.operators->contact());
+  const auto boundary = mesh::BoundaryMesh::uniform(2.0, 3);
+  auto setup = pair_setup(slave, boundary, 3, infsup::PairingProblem::signorini, operators::PrimalNorm::h1);
+  setup.master = master.operators.get();
+  setup.projection = &projection;
+  const Eigen::MatrixXd s_g = infsup::assemble_infsup_operators(setup).s_g;  // discontinuous: every mode
+  const space::MultiplierSpace multipliers(boundary, std::vector<int>(3, 3));
+  const auto ladder = norms::interpolation_gram_ladder(multipliers);
+  for (const auto kind : {space::MultiplierFamilyKind::standard, space::MultiplierFamilyKind::dual})
+    for (const bool modified : {false, true}) {
+      setup.family = {kind, modified};
+      const auto result = infsup::analyse_infsup(setup, infsup::EigenBackend::dense);
+      const Eigen::MatrixXd t = space::family_basis(multipliers, setup.family).legendre;
+      const Eigen::MatrixXd gram = ladder.at(result.reference_level);
+      const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> pencil(t.transpose() * s_g * t,
+                                                                             t.transpose() * gram * t);
+      const double expected = std::sqrt(pencil.eigenvalues().minCoeff());
+      const std::string where = space::to_string(setup.family);
+      EXPECT_NEAR(result.alpha, expected, 1e-10 * expected) << where;
+      EXPECT_EQ(result.n_multiplier_dofs, t.cols()) << where;
+      EXPECT_NEAR(infsup::analyse_infsup(setup, infsup::EigenBackend::slepc).alpha, expected, 1e-8 * expected) << where;
+    }
 }

@@ -84,6 +84,25 @@ TEST(SweepPlan, PointsAndGroups) {
   EXPECT_TRUE(resumed.groups[1].todo);
 }
 
+// A family axis multiplies the points; the standard and dual families skip p_C = 0.
+TEST(SweepPlan, AFamilyAxisSkipsDegreeZeroForContinuousFamilies) {
+  auto sweep = two_level_sweep();
+  sweep.families = {space::MultiplierFamily{}, {space::MultiplierFamilyKind::dual, true}};
+  const auto points = studies::list_sweep_points(sweep);
+  // Per level: discontinuous 6 (p, p_C) pairs, dual-modified 3 (p_C = 1 … p − 1); 2 norms, 2 ratios.
+  ASSERT_EQ(points.size(), 2u * (6 + 3) * 2 * 2);
+  std::set<std::string> keys;
+  for (const auto& point : points) {
+    if (point.family.kind == space::MultiplierFamilyKind::dual) {
+      EXPECT_GE(point.reported_pc, 1);
+    }
+    keys.insert(point.key());
+  }
+  EXPECT_EQ(keys.size(), points.size());
+  const auto scene = studies::point_scene(scene::Scene{}, {.family = sweep.families[1]});
+  EXPECT_EQ(scene.family, sweep.families[1]);
+}
+
 // Split by ratio (several processes): per (level, p) one group per ratio, every point in exactly one
 // group, of its ratio; the shares are (level, ratio), each needing one extension reference (the
 // unsplit share of a level needs two, one per ratio); a stored ratio's group is not to do.
@@ -210,6 +229,7 @@ infsup::InfSupRecord record_at(double h_min, double alpha) {
   record.problem = infsup::PairingProblem::friction;
   record.norm = infsup::GramNorm::extension;
   record.p = 3, record.pc = 2, record.level = 2, record.n = 16, record.m = 8;
+  record.family = {space::MultiplierFamilyKind::dual, true};
   record.h = 0.125, record.h_min = h_min, record.H = 0.25, record.ratio = 0.5, record.pi = 2.0 / 3.0;
   record.alpha = alpha, record.alpha_error = 1e-11, record.alpha_converged = true;
   record.ndofs = 1089, record.nmult = 24, record.seconds = 0.1;
@@ -236,6 +256,7 @@ TEST(SweepRows, ARecordReadsBackFromItsRow) {
   EXPECT_FALSE(io::read_alpha_row("Friction" + row.substr(row.find(','))));                 // not a label
   EXPECT_FALSE(io::read_alpha_row(std::string(row).replace(row.find(",3,"), 3, ",3.5,")));  // p not whole
   EXPECT_FALSE(io::read_alpha_row(row + "x"));                                              // seconds cut
+  EXPECT_FALSE(io::read_alpha_row(std::string(row).replace(row.find("dual-modified"), 13, "mortar")));  // no family
 }
 
 // Verdicts from records: α = h_min decays at rate 1, α constant is stable, α ≤ 1e-6 singular, one
@@ -257,13 +278,14 @@ TEST(SweepVerdicts, FitRatesOfTypedRows) {
     seen.push_back(std::get<std::string>(row.back()));
     EXPECT_EQ(std::get<std::string>(row[0]), "friction");
     EXPECT_EQ(std::get<std::string>(row[1]), "extension");
-    EXPECT_DOUBLE_EQ(std::get<double>(row[4]), 0.5);
+    EXPECT_EQ(std::get<std::string>(row[4]), "dual-modified");
+    EXPECT_DOUBLE_EQ(std::get<double>(row[5]), 0.5);
     if (seen.back() == "decaying") {
-      EXPECT_NEAR(std::get<double>(row[5]), 1.0, 1e-12);
-      EXPECT_NEAR(std::get<double>(row[6]), 2.0, 1e-12);
-      EXPECT_DOUBLE_EQ(std::get<double>(row[7]), 0.125);
+      EXPECT_NEAR(std::get<double>(row[6]), 1.0, 1e-12);
+      EXPECT_NEAR(std::get<double>(row[7]), 2.0, 1e-12);
+      EXPECT_DOUBLE_EQ(std::get<double>(row[8]), 0.125);
     }
   }
-  // Ordered by (problem, norm, p, pC, ratio): p = 3 with pC 0, 1, 2, then p = 4.
+  // Ordered by (problem, norm, p, pC, family, ratio): p = 3 with pC 0, 1, 2, then p = 4.
   EXPECT_EQ(seen, (std::vector<std::string>{"singular", "stable", "decaying", "too_few_levels"}));
 }
