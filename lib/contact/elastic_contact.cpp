@@ -14,9 +14,12 @@ std::string to_string(ElasticContactProblem problem) {
       return "frictionless";
     case ElasticContactProblem::tresca:
       return "tresca";
-    default:
+    case ElasticContactProblem::coulomb:
       return "coulomb";
+    case ElasticContactProblem::tied:
+      return "tied";
   }
+  return "?";
 }
 
 ElasticContactSolution solve_elastic_contact(const ElasticContactSetup& setup) {

@@ -25,9 +25,11 @@
 
 namespace hpcontact::contact {
 
-enum class ElasticContactProblem { frictionless, tresca, coulomb };
+/// tied: the bodies bonded, (u_s − u_m∘Φ)·n = g and (u_s − u_m∘Φ)·t = 0 on Γ_C (against a rigid
+/// obstacle u·n = g, u·t = 0): the linear special case, λ = (σ_nn, −σ_nt) of either sign.
+enum class ElasticContactProblem { frictionless, tresca, coulomb, tied };
 
-/// The effect names: "frictionless", "tresca", "coulomb".
+/// The effect names: "frictionless", "tresca", "coulomb", "tied".
 std::string to_string(ElasticContactProblem problem);
 
 struct ElasticContactSetup {

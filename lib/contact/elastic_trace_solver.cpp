@@ -21,7 +21,7 @@ namespace hpcontact::contact {
 namespace {
 
 // The constraints of one part of λ: the sign of M_- (normal), or |λ_t| ≤ s of M_s (tangential,
-// with s = 1 for Coulomb, whose bounds each fixed-point step sets).
+// with s = 1 for Coulomb, whose bounds each fixed-point step sets); none for tied contact.
 MultiplierConstraints part_constraints(const ElasticContactSetup& setup, const space::MultiplierSpace& multipliers,
                                        bool normal) {
   ContactSetup part;
@@ -30,10 +30,18 @@ MultiplierConstraints part_constraints(const ElasticContactSetup& setup, const s
   part.family = setup.family;
   part.constraint_points = setup.constraint_points;
   part.problem = normal ? ContactProblem::signorini : ContactProblem::friction_s;
+  const bool tied = setup.problem == ElasticContactProblem::tied;
+  // Tied contact bounds nothing: the coefficients themselves (no constraint points) are free.
+  if (tied) part.constraint_points.clear();
   if (!normal)
     part.bound = setup.problem == ElasticContactProblem::tresca ? setup.threshold
                                                                 : PointFunction([](const mesh::Point&) { return 1.0; });
-  return build_multiplier_constraints(part, multipliers, setup.operators->contact());
+  MultiplierConstraints constraints = build_multiplier_constraints(part, multipliers, setup.operators->contact());
+  if (tied) {
+    constraints.lower.setConstant(-std::numeric_limits<double>::infinity());
+    constraints.upper.setConstant(std::numeric_limits<double>::infinity());
+  }
+  return constraints;
 }
 
 // The condensed problem: each body's rows C_k, the constraints and the offset, in the nodal basis.

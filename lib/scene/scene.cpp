@@ -21,6 +21,7 @@ std::string to_string(Effect effect) {
     case Effect::frictionless:
     case Effect::tresca:
     case Effect::coulomb:
+    case Effect::tied:
       return contact::to_string(*elastic_problem_of(effect));
   }
   return "?";
@@ -43,7 +44,7 @@ std::string to_string(Output output) {
 const std::vector<Effect>& all_effects() {
   static const std::vector<Effect> effects{Effect::signorini, Effect::friction,    Effect::friction_s,
                                            Effect::infsup,    Effect::convergence, Effect::frictionless,
-                                           Effect::tresca,    Effect::coulomb};
+                                           Effect::tresca,    Effect::coulomb,     Effect::tied};
   return effects;
 }
 
@@ -79,13 +80,16 @@ Effect effect_of(contact::ElasticContactProblem problem) {
       return Effect::tresca;
     case contact::ElasticContactProblem::coulomb:
       return Effect::coulomb;
+    case contact::ElasticContactProblem::tied:
+      return Effect::tied;
   }
   return Effect::frictionless;
 }
 
 namespace {
 constexpr std::array kElasticProblems{contact::ElasticContactProblem::frictionless,
-                                      contact::ElasticContactProblem::tresca, contact::ElasticContactProblem::coulomb};
+                                      contact::ElasticContactProblem::tresca, contact::ElasticContactProblem::coulomb,
+                                      contact::ElasticContactProblem::tied};
 }
 
 std::optional<contact::ElasticContactProblem> elastic_problem_of(Effect effect) {

@@ -29,7 +29,7 @@ namespace hpcontact::scene {
 
 /// The scalar model's contact problems (9), (13), (15), the inf-sup constant, convergence under
 /// refinement, and the contact problems of an elastic body (frictionless, Tresca, Coulomb).
-enum class Effect { signorini, friction, friction_s, infsup, convergence, frictionless, tresca, coulomb };
+enum class Effect { signorini, friction, friction_s, infsup, convergence, frictionless, tresca, coulomb, tied };
 enum class Output { summary, boundary, vtu, mode };
 
 /// The names used in scene files and outputs ("friction_s", "vtu").
@@ -136,7 +136,7 @@ struct Scene {
   bool has_effect(Effect effect) const;
   /// The contact problems among the effects, in the order signorini, friction, friction_s.
   std::vector<contact::ContactProblem> contact_effects() const;
-  /// The elastic contact problems among the effects, in the order frictionless, tresca, coulomb.
+  /// The elastic contact problems among the effects, in the order frictionless, tresca, coulomb, tied.
   std::vector<contact::ElasticContactProblem> elastic_effects() const;
   /// Whether the scene poses an elastic body (an elastic effect, or a [material] table) rather
   /// than the scalar model.

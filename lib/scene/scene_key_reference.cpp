@@ -33,8 +33,8 @@ std::string scene_key_reference() {
       "stay at the top; p applies to both bodies (a `[discretization]` key set there from the command line\n"
       "replaces the bodies' own), T_{C,H}, p_C, `[solve]` and the multiplier's data (`data.s`,\n"
       "`data.friction_coefficient`, `exact.pressure`) are the slave's. A key of one body in an override or a\n"
-      "study's `levels`/`vary` is `body.<name>.section.key`. Effects: frictionless, tresca, coulomb, infsup\n"
-      "(serial runs).\n";
+      "study's `levels`/`vary` is `body.<name>.section.key`. Effects: frictionless, tresca, coulomb, tied,\n"
+      "infsup (serial runs).\n";
   return text;
 }
 

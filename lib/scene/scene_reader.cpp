@@ -160,7 +160,7 @@ void check_elastic_effects(const Scene& scene) {
   if (!scene.contact_effects().empty())
     throw_bad_input(where, "run.effects", to_string(effect_of(scene.contact_effects().front())),
                     "one body per scene: the scalar model's problems (signorini, friction, friction_s) or, with "
-                    "[material], the elastic ones (frictionless, tresca, coulomb), not both");
+                    "[material], the elastic ones (frictionless, tresca, coulomb, tied), not both");
   if (scene.fit_free_boundary)
     throw_bad_input(scene.where("solve.fit_free_boundary"), "solve.fit_free_boundary", "true",
                     "false with the elastic effects (the fit grades towards the scalar model's free boundary)");
@@ -208,7 +208,7 @@ void check_effects(const Scene& scene) {
     for (const auto& key : elastic_only_keys())
       if (scene.given.contains(key))
         throw_bad_input(scene.where(key), key, "(given)",
-                        "only with an elastic effect (frictionless, tresca, coulomb) among run.effects");
+                        "only with an elastic effect (frictionless, tresca, coulomb, tied) among run.effects");
   }
   if (scene.has_effect(Effect::signorini) && scene.obstacle.empty())
     throw_bad_input(scene.where("data.g"), "data.g", "(missing)",
@@ -224,7 +224,7 @@ void check_effects(const Scene& scene) {
   if (scene.has_effect(Effect::convergence) && !contact)
     throw_bad_input(where, "run.effects", "convergence",
                     "'convergence' refines the contact problems of the scene: add signorini, friction, friction_s, "
-                    "frictionless, tresca or coulomb");
+                    "frictionless, tresca, coulomb or tied");
   if (!scene.given.contains("run.outputs")) return;
   const std::string outputs_where = scene.where("run.outputs");
   if (scene.wants_output(Output::mode) && !scene.has_effect(Effect::infsup))
@@ -233,7 +233,7 @@ void check_effects(const Scene& scene) {
     if (scene.wants_output(output) && !contact)
       throw_bad_input(outputs_where, "run.outputs", to_string(output),
                       "needs a contact problem among the effects (signorini, friction, friction_s, frictionless, "
-                      "tresca, coulomb)");
+                      "tresca, coulomb, tied)");
 }
 
 Scene read_scene_tree(const std::shared_ptr<toml::table>& tree, const std::string& path,

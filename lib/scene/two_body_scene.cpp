@@ -173,10 +173,10 @@ void check_pair_effects(const Scene& slave, const Scene& master) {
   for (const auto effect : slave.effects)
     if (!elastic_problem_of(effect) && effect != Effect::infsup)
       throw_bad_input(where, "run.effects", to_string(effect),
-                      "frictionless, tresca, coulomb or infsup in a two-body scene (convergence and the scalar "
+                      "frictionless, tresca, coulomb, tied or infsup in a two-body scene (convergence and the scalar "
                       "two-body problems are not available yet)");
   if (slave.effects.empty())
-    throw_bad_input(where, "run.effects", "[]", "at least one of frictionless, tresca, coulomb, infsup");
+    throw_bad_input(where, "run.effects", "[]", "at least one of frictionless, tresca, coulomb, tied, infsup");
   for (const Scene* body : {&slave, &master})
     if (!body->is_elastic())
       throw_bad_input(body->file, "material", fmt::format("(missing in [[body]] '{}')", body->body),
