@@ -1,10 +1,12 @@
 // Contact of an elastic body with a rigid obstacle, on [S^p(T_h)]² × M^{p_C}(T_{C,H}) (normal, and
-// with friction tangential, multipliers; both discontinuous P_{p_C} on T_{C,H}), condensed onto
-// Γ_C as the scalar problems are:
+// with friction tangential, multipliers; both in one family on T_{C,H}, the paper's discontinuous
+// P_{p_C} by default), condensed onto Γ_C as the scalar problems are:
 //   frictionless  u·n ≤ g,  σ_nn ≤ 0,  σ_nn (u·n − g) = 0,  σ_nt = 0
 //   Tresca        the same, and |σ_nt| ≤ s, σ_nt u_t ≤ 0 where slipping (s given, ≥ 0)
 //   Coulomb       Tresca with s = F |σ_nn|, by a fixed point on the Tresca problem
-// With λ = (σ_nn, −σ_nt) in the nodal basis at the Chebyshev–Lobatto points of each segment,
+//   tied          u·n = g, u·t = 0 (no bound on λ)
+// With λ = (σ_nn, −σ_nt) in the nodal basis at the Chebyshev–Lobatto points of each segment (or
+// the family's basis),
 // B = (−B_n; B_t) and A u = F − Bᵀ λ, the multiplier solves
 //     min ½ λᵀ S λ − dᵀ λ   over   σ_nn ≤ 0 and |σ_nt| ≤ s at the constraint points (Remark 3),
 // S = B A⁻¹ Bᵀ, d = B A⁻¹ F + (ℓ_i, g; 0): the problem of contact_problem.hpp with M_- for the
@@ -65,8 +67,9 @@ struct ElasticContactSolution {
   /// Contact pressure p = −σ_nn ≥ 0 and tangential traction σ_nt on the body (along the tangent
   /// of increasing arc length), Legendre coefficients in M^{p_C}(T_{C,H}); σ_nt = 0 without friction.
   Eigen::VectorXd pressure, shear;
-  /// The multiplier λ in the nodal basis (normal part, then tangential part with friction), the
-  /// constraint rows and the gap d − S λ: the KKT data at the constraint points.
+  /// The multiplier λ in the nodal basis (the family's basis for a standard or dual family; normal
+  /// part, then tangential part with friction), the constraint rows and the gap d − S λ: the KKT
+  /// data at the constraint points (the family's nodes).
   Eigen::VectorXd lambda;
   Eigen::MatrixXd constraint_matrix;
   Eigen::VectorXd lower, upper, gap;

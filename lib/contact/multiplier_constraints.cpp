@@ -5,6 +5,8 @@
 
 #include <Eigen/LU>
 #include <limits>
+#include <tuple>
+#include <utility>
 
 #include "basis/lobatto.hpp"
 #include "basis/quadrature.hpp"
@@ -28,6 +30,19 @@ bool meets_support(const ContactSetup& setup, const mesh::ContactBoundary& conta
   return false;
 }
 
+// The bounds (lower, upper) of λ at the point s of Γ_C: λ ≤ 0 for (9); for (13) |λ| ≤ 1 where
+// the support of λ there meets supp s (`in_support`), λ = 0 elsewhere; |λ| ≤ s(x) for (15).
+std::pair<double, double> bounds_at(const ContactSetup& setup, const mesh::ContactBoundary& contact, double s,
+                                    bool in_support) {
+  if (setup.problem == ContactProblem::signorini) return {-std::numeric_limits<double>::infinity(), 0.0};
+  const double bound = setup.bound(contact.point_at(s));
+  if (!(bound >= 0.0))
+    throw InputError(
+        fmt::format("friction bound s = {} at x = {}: s must be >= 0 (and finite)", bound, contact.point_at(s).x()));
+  const double limit = setup.problem == ContactProblem::friction ? (in_support ? 1.0 : 0.0) : bound;
+  return {-limit, limit};
+}
+
 SegmentConstraints segment_constraints(const ContactSetup& setup, const mesh::ContactBoundary& contact, int pc, int q,
                                        const Eigen::MatrixXd& v_inverse, double a, double b) {
   SegmentConstraints segment;
@@ -36,24 +51,13 @@ SegmentConstraints segment_constraints(const ContactSetup& setup, const mesh::Co
   // ℓ_i(τ_j) = Σ_m P_m(τ_j) (V⁻¹)_mi; at the nodal points exactly the identity.
   for (int j = 0; j < q; ++j) segment.rows.row(j) = basis::legendre_values(pc, tau[j]).transpose() * v_inverse;
   if (q == pc + 1) segment.rows.setIdentity();
-  const bool signorini = setup.problem == ContactProblem::signorini;
   const bool in_support = setup.problem == ContactProblem::friction && meets_support(setup, contact, a, b);
   for (int j = 0; j < q; ++j) {
     const double s = a + 0.5 * (b - a) * (tau[j] + 1.0);
     segment.s.push_back(s);
-    if (signorini) {
-      segment.lower.push_back(-std::numeric_limits<double>::infinity());
-      segment.upper.push_back(0.0);
-      continue;
-    }
-    const double bound = setup.bound(contact.point_at(s));
-    if (!(bound >= 0.0))
-      throw InputError(
-          fmt::format("friction bound s = {} at x = {}: s must be >= 0 (and finite)", bound, contact.point_at(s).x()));
-    // (13): |λ| ≤ 1 on supp s, λ = 0 off it; (15): |λ| ≤ s.
-    const double limit = setup.problem == ContactProblem::friction ? (in_support ? 1.0 : 0.0) : bound;
-    segment.lower.push_back(-limit);
-    segment.upper.push_back(limit);
+    const auto [lower, upper] = bounds_at(setup, contact, s, in_support);
+    segment.lower.push_back(lower);
+    segment.upper.push_back(upper);
   }
   return segment;
 }
@@ -78,25 +82,12 @@ MultiplierConstraints family_constraints(const ContactSetup& setup, const space:
   for (int i = 0; i < n; ++i) {
     const double s = family.node_s[static_cast<std::size_t>(i)];
     out.s.push_back(s);
-    if (setup.problem == ContactProblem::signorini) {
-      out.lower(i) = -std::numeric_limits<double>::infinity();
-      out.upper(i) = 0.0;
-      continue;
-    }
-    const double bound = setup.bound(contact.point_at(s));
-    if (!(bound >= 0.0))
-      throw InputError(
-          fmt::format("friction bound s = {} at x = {}: s must be >= 0 (and finite)", bound, contact.point_at(s).x()));
-    double limit = bound;  // (15)
-    if (setup.problem == ContactProblem::friction) {
-      // (13): |λ| ≤ 1 where the function's support meets supp s, λ = 0 elsewhere.
-      bool in_support = false;
+    // (13): the function's support is its segments.
+    bool in_support = false;
+    if (setup.problem == ContactProblem::friction)
       for (int k : family.segments[static_cast<std::size_t>(i)])
         in_support = in_support || meets_support(setup, contact, mesh.segment_begin(k), mesh.segment_end(k));
-      limit = in_support ? 1.0 : 0.0;
-    }
-    out.lower(i) = -limit;
-    out.upper(i) = limit;
+    std::tie(out.lower(i), out.upper(i)) = bounds_at(setup, contact, s, in_support);
   }
   return out;
 }

@@ -24,11 +24,14 @@ ContactResult elastic_result(const contact::ElasticContactSetup& setup, const co
   r.n_dofs = solution.n_dofs;
   r.nmult = solution.lambda.size();
   r.n_trace = solution.n_trace;
-  r.contact_set_length = samples.contact_set_length;
+  // Tied contact bonds all of Γ_C whatever the sign of the traction: its contact set is Γ_C.
+  const bool tied = setup.problem == contact::ElasticContactProblem::tied;
+  r.contact_set_length = tied ? setup.boundary_mesh->length() : samples.contact_set_length;
   r.total_force = samples.total_force;
   const auto& zones = setup.boundary_mesh->zones();
   for (std::size_t z = 0; z < zones.size(); ++z)
-    r.zones.push_back({zones[z].end - zones[z].begin, zones[z].closed, samples.zone_contact_set_length[z],
+    r.zones.push_back({zones[z].end - zones[z].begin, zones[z].closed,
+                       tied ? zones[z].end - zones[z].begin : samples.zone_contact_set_length[z],
                        samples.zone_total_force[z]});
   r.solver = solution.qp;
   r.seconds = {solution.seconds.assembly, solution.seconds.factorization, solution.seconds.condensation,

@@ -94,6 +94,7 @@ contact::ElasticContactSetup elastic_setup_of(const scene::Scene& scene, const S
   setup.operators = &operators;
   setup.boundary_mesh = d.boundary_mesh.get();
   setup.segment_degrees = d.segment_degrees;
+  scene::check_family_fits(scene, *d.boundary_mesh, d.segment_degrees);
   setup.family = scene.family;
   setup.problem = problem;
   // The tangential multiplier's box (friction) is where Remark 3 asks the most points.

@@ -149,6 +149,7 @@ contact::ContactSetup contact_setup_of(const scene::Scene& scene, const SceneDis
   contact::ContactSetup setup;
   setup.boundary_mesh = d.boundary_mesh.get();
   setup.segment_degrees = d.segment_degrees;
+  scene::check_family_fits(scene, *d.boundary_mesh, d.segment_degrees);
   setup.family = scene.family;
   setup.problem = problem;
   setup.constraint_points = checked_constraint_points(scene, d, problem);
@@ -186,6 +187,7 @@ infsup::InfSupSetup common_infsup_setup(const scene::Scene& scene, const mesh::M
   setup.mesh = mesh;
   setup.cell_degrees = std::move(cell_degrees);
   setup.boundary_mesh = &boundary_mesh;
+  scene::check_family_fits(scene, boundary_mesh, segment_degrees);
   setup.segment_degrees = std::move(segment_degrees);
   setup.family = scene.family;
   setup.problem = scene.problem;

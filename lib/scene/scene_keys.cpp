@@ -301,15 +301,10 @@ void add_boundary_and_contact_mesh_keys(std::vector<SceneKey>& keys) {
       [](double v) { return v > 0.0; }, size_group));
   add(number_key("contact_mesh", "grading", 1e-3, 1.0, 1.0, &Scene::grading,
                  "with `m`: each segment this times the previous one (1: uniform)"));
-  using space::MultiplierFamily, space::MultiplierFamilyKind;
-  add(choice_key<MultiplierFamily>(
-      "contact_mesh", "family",
-      {{"discontinuous", {MultiplierFamilyKind::discontinuous, false}},
-       {"standard", {MultiplierFamilyKind::standard, false}},
-       {"standard-modified", {MultiplierFamilyKind::standard, true}},
-       {"dual", {MultiplierFamilyKind::dual, false}},
-       {"dual-modified", {MultiplierFamilyKind::dual, true}}},
-      MultiplierFamily{}, &Scene::family,
+  std::vector<std::pair<std::string, space::MultiplierFamily>> families;
+  for (const auto& family : space::all_multiplier_families()) families.emplace_back(space::to_string(family), family);
+  add(choice_key<space::MultiplierFamily>(
+      "contact_mesh", "family", families, space::MultiplierFamily{}, &Scene::family,
       "the multiplier on T_{C,H}: discontinuous P_{p_C} (the paper's), continuous P_{p_C} (standard mortar: `ratio = "
       "1`, p_C = p or p − 1) or its dual (biorthogonal) basis; `-modified`: the end modification at the ends of each "
       "open zone (the end node dropped, the end segment one degree lower). Standard and dual need p_C ≥ 1 and impose "

@@ -190,14 +190,31 @@ std::vector<int> scene_segment_degrees(const Scene& scene, const mesh::ContactBo
           whole_degree(rule, contact.point_at(0.5 * (boundary_mesh.segment_begin(k) + boundary_mesh.segment_end(k))), 0,
                        19, scene.where("discretization.pC"), "discretization.pC");
   }
-  // The standard and dual families are continuous or dual to a continuous space: p_C ≥ 1.
-  if (scene.family.kind != space::MultiplierFamilyKind::discontinuous)
-    for (int k = 0; k < boundary_mesh.n_segments(); ++k)
-      if (degrees[k] < 1)
-        throw_bad_input(scene.where("discretization.pC"), "discretization.pC", std::to_string(degrees[k]),
-                        fmt::format("at least 1 with contact_mesh.family = \"{}\" (segment {} of T_{{C,H}})",
-                                    space::to_string(scene.family), k));
   return degrees;
+}
+
+void check_family_fits(const Scene& scene, const mesh::BoundaryMesh& boundary_mesh,
+                       const std::vector<int>& segment_degrees) {
+  if (scene.family.kind == space::MultiplierFamilyKind::discontinuous) return;
+  const std::string family = space::to_string(scene.family);
+  // The standard and dual families are continuous or dual to a continuous space: p_C ≥ 1.
+  for (int k = 0; k < boundary_mesh.n_segments(); ++k)
+    if (segment_degrees[k] < 1)
+      throw_bad_input(scene.where("discretization.pC"), "discretization.pC", std::to_string(segment_degrees[k]),
+                      fmt::format("at least 1 with contact_mesh.family = \"{}\" (segment {} of T_{{C,H}})", family, k));
+  if (!scene.family.end_modification) return;
+  // The end modification drops both end nodes of an open zone: one segment of p_C = 1 keeps none.
+  for (int k = 0; k < boundary_mesh.n_segments(); ++k) {
+    const int zone = boundary_mesh.zone_of_segment(k);
+    const auto& z = boundary_mesh.zones()[zone];
+    if (!z.closed && boundary_mesh.segment_begin(k) == z.begin && boundary_mesh.segment_end(k) == z.end &&
+        segment_degrees[k] == 1)
+      throw_bad_input(
+          scene.where("contact_mesh.family"), "contact_mesh.family", family,
+          fmt::format("a family without the end modification here: zone {} of Γ_C is one segment of T_{{C,H}} "
+                      "with p_C = 1, whose two end nodes the modification drops (or more segments, p_C >= 2)",
+                      zone));
+  }
 }
 
 namespace {

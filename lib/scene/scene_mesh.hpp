@@ -24,6 +24,11 @@ std::array<std::vector<char>, 2> scene_fixed_components(const Scene& scene, cons
 /// p_T per cell (the rule at Ψ_T(0,0), or p). @throws InputError for values that are not whole
 /// numbers in [1, 20].
 std::vector<int> scene_cell_degrees(const Scene& scene, const mesh::Mesh& mesh);
+/// @throws InputError naming the scene's key unless its multiplier family fits T_{C,H} and the
+/// degrees: p_C ≥ 1 for the standard and dual families, and no zone of one segment with p_C = 1
+/// under the end modification.
+void check_family_fits(const Scene& scene, const mesh::BoundaryMesh& boundary_mesh,
+                       const std::vector<int>& segment_degrees);
 /// p_C per segment (the rule at the segment midpoint, or pC), whole numbers in [0, 19].
 std::vector<int> scene_segment_degrees(const Scene& scene, const mesh::ContactBoundary& contact,
                                        const mesh::BoundaryMesh& boundary_mesh);

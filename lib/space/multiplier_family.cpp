@@ -22,12 +22,18 @@ std::string to_string(const MultiplierFamily& family) {
   return {};
 }
 
+const std::vector<MultiplierFamily>& all_multiplier_families() {
+  static const std::vector<MultiplierFamily> families{{MultiplierFamilyKind::discontinuous, false},
+                                                      {MultiplierFamilyKind::standard, false},
+                                                      {MultiplierFamilyKind::standard, true},
+                                                      {MultiplierFamilyKind::dual, false},
+                                                      {MultiplierFamilyKind::dual, true}};
+  return families;
+}
+
 MultiplierFamily parse_multiplier_family(const std::string& text, const std::string& origin, const std::string& key) {
-  for (auto kind : {MultiplierFamilyKind::discontinuous, MultiplierFamilyKind::standard, MultiplierFamilyKind::dual})
-    for (bool modified : {false, true}) {
-      const MultiplierFamily family{kind, modified && kind != MultiplierFamilyKind::discontinuous};
-      if (to_string(family) == text) return family;
-    }
+  for (const auto& family : all_multiplier_families())
+    if (to_string(family) == text) return family;
   throw_bad_input(origin, key, text, "must be one of: discontinuous, standard, standard-modified, dual, dual-modified");
 }
 

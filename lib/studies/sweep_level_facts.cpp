@@ -20,8 +20,28 @@ namespace {
 
 using LevelFacts = StabilitySweep::LevelFacts;
 
-LevelFacts facts_of_level(const scene::Scene& scene, const std::vector<std::optional<scene::Ratio>>& ratios,
-                          bool friction) {
+// Every family and p_C of the sweep on T_{C,H} (a point the sweep lists must not stop it half-way).
+void check_families(const StabilitySweep& sweep, const scene::Scene& at_ratio, const mesh::ContactBoundary& contact,
+                    const mesh::BoundaryMesh& boundary) {
+  std::vector<std::optional<int>> degrees(sweep.multiplier_degrees.begin(), sweep.multiplier_degrees.end());
+  if (degrees.empty()) degrees.emplace_back();  // the scene's own
+  for (const auto& family : sweep.families)
+    for (const auto pc : degrees) {
+      const auto at_point = point_scene(at_ratio, {.pc = pc, .family = family});
+      const auto segment_degrees = scene::scene_segment_degrees(at_point, contact, boundary);
+      // (list_sweep_points skips the points whose largest p_C is 0 for these families)
+      if (*std::max_element(segment_degrees.begin(), segment_degrees.end()) < 1) continue;
+      try {
+        scene::check_family_fits(at_point, boundary, segment_degrees);
+      } catch (const InputError& error) {
+        throw InputError(fmt::format("with sweep.family = {}{}: {}", space::to_string(family),
+                                     pc ? fmt::format(", sweep.pC = {}", *pc) : "", error.what()));
+      }
+    }
+}
+
+LevelFacts facts_of_level(const StabilitySweep& sweep, const scene::Scene& scene,
+                          const std::vector<std::optional<scene::Ratio>>& ratios, bool friction) {
   if (friction && scene.friction_bound.empty() && !scene.is_elastic())
     throw_bad_input(scene.file, "data.s", "(missing)",
                     "the friction pairing (22) of sweep.problem needs the friction bound s");
@@ -43,6 +63,7 @@ LevelFacts facts_of_level(const scene::Scene& scene, const std::vector<std::opti
       throw InputError(fmt::format("with sweep.ratio = {}: {}", ratio->text, error.what()));
     }
     const auto segment_degrees = scene::scene_segment_degrees(at_point, contact, *built);
+    check_families(sweep, at_point, contact, *built);
     facts.segments.push_back(built->n_segments());
     facts.scene_pc.push_back(*std::max_element(segment_degrees.begin(), segment_degrees.end()));
   }
@@ -82,7 +103,7 @@ std::vector<LevelFacts> sweep_level_facts(const StabilitySweep& sweep, const std
       [&] {
         levels.emplace();
         for (std::size_t level = 0; level < sweep.levels.size(); ++level) try {
-            levels->push_back(facts_of_level(sweep.levels[level].scene, ratios, friction));
+            levels->push_back(facts_of_level(sweep, sweep.levels[level].scene, ratios, friction));
           } catch (const InputError& error) {
             throw InputError(
                 fmt::format("{}: {} of the scene {}: {}", sweep.file, level_name(sweep, level), base, error.what()));

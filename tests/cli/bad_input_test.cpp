@@ -111,6 +111,9 @@ TEST(BadInput, MultiplierFamilyAndWhatItRefuses) {
       "family_points",
       replaced("[contact_mesh]\n", "[contact_mesh]\nfamily = \"standard\"\n") + "[solve]\nconstraint_points = 3\n",
       {"scene.toml", "solve.constraint_points", "standard", "absent"});
+  expect_bad_input("family_end",
+                   replaced("[contact_mesh]\nratio = \"1/2\"\n", "[contact_mesh]\nm = 1\nfamily = \"dual-modified\"\n"),
+                   {"scene.toml", "contact_mesh.family", "dual-modified", "one segment"});
 }
 
 TEST(BadInput, ExpressionThatDoesNotParse) {

@@ -23,9 +23,7 @@ namespace {
 
 constexpr double kEps = 1e-12;
 
-Eigen::Vector2d exact(const Point& x) {
-  return {std::exp(x.x()) * std::sin(x.y()), std::exp(x.x()) * std::cos(x.y())};
-}
+Eigen::Vector2d exact(const Point& x) { return {std::exp(x.x()) * std::sin(x.y()), std::exp(x.x()) * std::cos(x.y())}; }
 
 // (−1, 1) × (y_min, y_max) on n × n cells, Γ_C along y = 0, Γ_D the other three sides.
 struct Block {
@@ -53,12 +51,12 @@ struct Block {
         xs.emplace_back(-1.0 + 2.0 * i / 16.0, y_min + (y_max - y_min) * j / 8.0);
         points.push_back(*locator.locate(xs.back()));
       }
-    const Eigen::MatrixXd values = postprocess::values_at(
-        assembly::vector_field(operators->vector_space(), u.u, u.u_rows, u.lift), points, {});
+    const Eigen::MatrixXd values =
+        postprocess::values_at(assembly::vector_field(operators->vector_space(), u.u, u.u_rows, u.lift), points, {});
     double largest = 0.0;
     for (std::size_t k = 0; k < xs.size(); ++k)
-      largest = std::max(largest,
-                         (values.row(static_cast<Eigen::Index>(k)).transpose() - exact(xs[k])).lpNorm<Eigen::Infinity>());
+      largest = std::max(
+          largest, (values.row(static_cast<Eigen::Index>(k)).transpose() - exact(xs[k])).lpNorm<Eigen::Infinity>());
     return largest;
   }
 };
@@ -74,7 +72,7 @@ double tied_error(int n, int p) {
   setup.slave.segment_degrees.assign(n, p - 1);
   setup.slave.problem = contact::ElasticContactProblem::tied;
   const std::array<contact::PointFunction, space::kComponents> data{[](const Point& x) { return exact(x)(0); },
-                                                                     [](const Point& x) { return exact(x)(1); }};
+                                                                    [](const Point& x) { return exact(x)(1); }};
   setup.slave.dirichlet = data;
   setup.master.operators = master.operators.get();
   setup.master.dirichlet = data;

@@ -131,6 +131,15 @@ double relative_error(const CompressedBlocks& blocks, const Block& block, const 
   return error / scale;
 }
 
+// Both bodies' displacements equal the patch test's linear field to 1e-10 (relative).
+void expect_exact_displacements(const CompressedBlocks& blocks, const contact::TwoBodyContactSolution& solution,
+                                const std::string& where) {
+  const contact::BodyDisplacement slave{solution.contact.u, solution.contact.u_rows, solution.contact.n_dofs,
+                                        solution.contact.lift};
+  EXPECT_LT(relative_error(blocks, blocks.slave, slave), 1e-10) << "slave, " << where;
+  EXPECT_LT(relative_error(blocks, blocks.master, solution.master), 1e-10) << "master, " << where;
+}
+
 // (s, (u_s − u_m)·t) along the interface of the compressed blocks, t = (1, 0) (s = x + 1).
 std::vector<std::pair<double, double>> interface_slip(const CompressedBlocks& blocks,
                                                       const contact::TwoBodyContactSolution& solution) {
@@ -162,10 +171,7 @@ TEST(TwoBodyContact, PatchTestOfUniformCompressionIsExactOnNonMatchingMeshes) {
             contact::solve_two_body_contact(blocks.setup(contact::ElasticContactProblem::frictionless, pc));
         const std::string where = (triangles ? "triangles" : "quadrilaterals") + std::string(", p ") +
                                   std::to_string(p) + ", p_C " + std::to_string(pc);
-        const contact::BodyDisplacement slave{solution.contact.u, solution.contact.u_rows, solution.contact.n_dofs,
-                                              solution.contact.lift};
-        EXPECT_LT(relative_error(blocks, blocks.slave, slave), 1e-10) << "slave, " << where;
-        EXPECT_LT(relative_error(blocks, blocks.master, solution.master), 1e-10) << "master, " << where;
+        expect_exact_displacements(blocks, solution, where);
         // The pressure is the constant p in every segment's Legendre expansion.
         const space::MultiplierSpace multipliers(*blocks.boundary_mesh, std::vector<int>(4, pc));
         for (int k = 0; k < multipliers.n_segments(); ++k) {
@@ -192,10 +198,7 @@ TEST(TwoBodyContact, EveryMultiplierFamilyPassesThePatchTest) {
             const auto solution = contact::solve_two_body_contact(setup);
             const std::string where = space::to_string(setup.slave.family) + (triangles ? ", triangles" : "") + ", p " +
                                       std::to_string(p) + ", p_C " + std::to_string(pc);
-            const contact::BodyDisplacement slave{solution.contact.u, solution.contact.u_rows, solution.contact.n_dofs,
-                                                  solution.contact.lift};
-            EXPECT_LT(relative_error(blocks, blocks.slave, slave), 1e-10) << "slave, " << where;
-            EXPECT_LT(relative_error(blocks, blocks.master, solution.master), 1e-10) << "master, " << where;
+            expect_exact_displacements(blocks, solution, where);
             const space::MultiplierSpace multipliers(*blocks.boundary_mesh, std::vector<int>(3, pc));
             for (double s : {0.0, 0.3, 0.99, 1.5, 2.0})
               EXPECT_NEAR(multipliers.evaluate(solution.contact.pressure, s), blocks.pressure(),

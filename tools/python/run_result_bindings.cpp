@@ -47,6 +47,7 @@ void bind_run_result(py::module_& m) {
       .def_property_readonly("pi", [](const InfSupSummary& a) { return a.record.pi; })
       .def_property_readonly("p", [](const InfSupSummary& a) { return a.record.p; })
       .def_property_readonly("pc", [](const InfSupSummary& a) { return a.record.pc; })
+      .def_property_readonly("family", [](const InfSupSummary& a) { return space::to_string(a.record.family); })
       .def_property_readonly("h", [](const InfSupSummary& a) { return a.record.h; })
       .def_property_readonly("H", [](const InfSupSummary& a) { return a.record.H; })
       .def_readonly("zone_alpha", &InfSupSummary::zone_alpha);
@@ -55,6 +56,7 @@ void bind_run_result(py::module_& m) {
       .def_readonly("effects", &RunResult::effects)
       .def_readonly("p", &RunResult::p)
       .def_readonly("pC", &RunResult::pc)
+      .def_readonly("family", &RunResult::family)
       .def_readonly("m", &RunResult::m)
       .def_readonly("n_dofs", &RunResult::n_dofs)
       .def_readonly("nmult", &RunResult::nmult)
