@@ -48,6 +48,13 @@ std::string zone_alphas(const driver::InfSupSummary& infsup) {
 
 // One line per contact problem: its energy, solver and contact set (and the total force of an
 // elastic body).
+void print_stability(const driver::StabilityReport& s) {
+  fmt::print("stability: predicted alpha = {:.4g} ({} {}), Pi = {:.3g}", s.alpha_predicted,
+             s.stable ? "stable: >=" : "UNSTABLE: <", s.threshold, s.pi);
+  if (s.alternative) fmt::print("; stable alternative: {}", s.alternative->edit);
+  fmt::print("\n");
+}
+
 void print_contact(const driver::ContactResult& result) {
   fmt::print("{}: energy = {:.17g}", result.problem, result.energy);
   if (result.total_force) fmt::print(", total force P = {:.10g}", *result.total_force);
@@ -98,7 +105,8 @@ int run_solve(const SolveOptions& o) {
   const driver::RunResult result = driver::run_scene(scene, options);
   if (rank != 0) return 0;
 
-  // 3. One line per effect.
+  // 3. One line per effect, after the pairing's predicted stability.
+  if (result.stability) print_stability(*result.stability);
   for (const auto& contact : result.contacts) print_contact(contact);
   if (result.infsup)
     fmt::print("infsup: alpha = {:.10g} ({}){}\n", result.infsup->record.alpha,

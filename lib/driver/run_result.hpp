@@ -97,6 +97,27 @@ struct FreeBoundarySummary {
   double moved = 0.0, seconds = 0.0;
 };
 
+/// A change of the scene that the predictor finds stable: the nearest to the scene's pairing
+/// (the most multipliers among the stable candidates).
+struct StableAlternative {
+  std::string edit;  ///< the scene edit, e.g. `[discretization] pC = 2`
+  double alpha_predicted = 0.0;
+  long long nmult = 0;
+};
+
+/// The stability of the run's pairing as predicted before it is solved (infsup/local_alpha.hpp).
+struct StabilityReport {
+  double alpha_predicted = 0.0;  ///< min over the patches of Γ_C of the local α
+  double threshold = 0.0;        ///< predicted stable iff alpha_predicted ≥ threshold
+  bool stable = true;
+  double pi = 0.0;          ///< Π(h, H, p, p_C) of (20) with θ = 1, largest over the segments
+  mesh::Point weakest_point;  ///< the middle of the segment with the weakest patch
+  int patches = 0, distinct_patches = 0;
+  double seconds = 0.0;                          ///< the prediction and the search for an alternative
+  std::optional<StableAlternative> alternative;  ///< when not stable and one was found
+  std::string warning;                           ///< when not stable: what the run printed
+};
+
 struct RunResult {
   std::string scene;                 ///< the scene file
   std::vector<std::string> effects;  ///< as the scene lists them
@@ -106,7 +127,8 @@ struct RunResult {
   long long edges_on_contact = 0, m = 0, n_dofs = 0, nmult = 0;
   std::vector<OperatorRecord> operators;  ///< every operator built, in order
   std::optional<FreeBoundarySummary> free_boundary;
-  std::vector<ContactResult> contacts;  ///< in the order the problems ran
+  std::optional<StabilityReport> stability;  ///< runs with a contact problem or α
+  std::vector<ContactResult> contacts;       ///< in the order the problems ran
   std::optional<InfSupSummary> infsup;
   int convergence_refinements = 0;
   std::vector<ConvergenceRow> convergence;  ///< empty without the effect convergence

@@ -57,6 +57,23 @@ json contact_json(const ContactResult& c) {
   return j;
 }
 
+json stability_json(const StabilityReport& s) {
+  json j = {{"alpha_predicted", s.alpha_predicted},
+            {"threshold", s.threshold},
+            {"stable", s.stable},
+            {"pi", s.pi},
+            {"weakest_point", {s.weakest_point.x(), s.weakest_point.y()}},
+            {"patches", s.patches},
+            {"distinct_patches", s.distinct_patches},
+            {"seconds", s.seconds}};
+  if (s.alternative)
+    j["alternative"] = {{"edit", s.alternative->edit},
+                        {"alpha_predicted", s.alternative->alpha_predicted},
+                        {"nmult", s.alternative->nmult}};
+  if (!s.warning.empty()) j["warning"] = s.warning;
+  return j;
+}
+
 json infsup_json(const InfSupSummary& a) {
   const auto& r = a.record;
   json j{{"alpha", r.alpha},
@@ -114,6 +131,7 @@ std::string summary_json(const RunResult& r) {
                           {"moved", r.free_boundary->moved},
                           {"seconds", r.free_boundary->seconds}};
   }
+  if (r.stability) j["stability"] = stability_json(*r.stability);
   for (const auto& contact : r.contacts) j[contact.problem] = contact_json(contact);
   if (r.infsup) j["infsup"] = infsup_json(*r.infsup);
   if (!r.convergence.empty())

@@ -115,6 +115,8 @@ struct Scene {
   /// |𝒞| per segment (Remark 3): one value, or one per zone of Γ_C; empty: p_C + 1.
   std::vector<int> constraint_points;
   bool fit_free_boundary = false;
+  /// What a solve does when its pairing is predicted unstable (infsup/local_alpha.hpp).
+  enum class StabilityPolicy { warn, refuse, ignore } stability = StabilityPolicy::warn;
   // [run]: empty effects when the scene has no [run] table (`solve` then needs --effects).
   std::vector<Effect> effects;
   std::vector<Output> outputs = all_outputs();

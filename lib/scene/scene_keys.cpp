@@ -383,6 +383,14 @@ void add_run_keys(std::vector<SceneKey>& keys) {
        [](const TomlTable& table, Scene& scene) {
          scene.fit_free_boundary = table.boolean("fit_free_boundary", false);
        }});
+  add(choice_key<Scene::StabilityPolicy>(
+      "solve", "stability",
+      {{"warn", Scene::StabilityPolicy::warn},
+       {"refuse", Scene::StabilityPolicy::refuse},
+       {"ignore", Scene::StabilityPolicy::ignore}},
+      Scene::StabilityPolicy::warn, &Scene::stability,
+      "a pairing predicted unstable (local α below 0.2): warn and name a stable alternative, refuse to solve (exit "
+      "2), or say nothing (the prediction is in the summary either way)"));
   // [run]
   add(enum_list_key<Effect>("run", "effects", all_effects(), &Scene::effects, "",
                             "what the run computes; absent: `solve` needs --effects"));

@@ -1,0 +1,32 @@
+// Whether a run's pairing of T_h and T_{C,H} is stable, predicted before anything is solved
+// (infsup/local_alpha.hpp), and the nearest stable alternative when it is not: what every solve
+// reports, and what `[solve] stability` acts on.
+#pragma once
+
+#include "driver/run_result.hpp"
+#include "driver/scene_discretization.hpp"
+#include "infsup/local_alpha.hpp"
+
+namespace hpcontact::driver {
+
+/// Γ_C of `d` as the predictor sees it, with `boundary_mesh` and `segment_degrees` as T_{C,H}
+/// (the scene's own, or a candidate's) and, for the scalar friction pairing ([infsup] problem =
+/// "friction"), the weight s.
+infsup::TracePairing trace_pairing_of(const scene::Scene& scene, const SceneDiscretization& d,
+                                      const mesh::BoundaryMesh& boundary_mesh, std::vector<int> segment_degrees);
+
+/// The prediction for the scene's pairing on `d`; when it is not stable, the stable candidate
+/// with the most multipliers among p_C lowered (a number p_C only) and T_{C,H} coarsened by 2
+/// (`ratio` or `m` only), and the warning naming both.
+StabilityReport predict_stability(const scene::Scene& scene, const SceneDiscretization& d);
+
+/// Acts on `report` as `[solve] stability` says: prints the warning through `say` (warn), or
+/// @throws InputError with it (refuse).
+void act_on_stability(const scene::Scene& scene, const StabilityReport& report,
+                      const std::function<void(const std::string&)>& say);
+
+/// A ratio h/H as a scene writes it: a fraction of small whole numbers where it is one ("1/2"),
+/// else the number.
+std::string ratio_text(double ratio);
+
+}  // namespace hpcontact::driver

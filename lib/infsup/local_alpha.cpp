@@ -1,0 +1,268 @@
+// The local α predictor (local_alpha.hpp): one small dense eigenproblem per distinct patch.
+#include "infsup/local_alpha.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <string>
+
+#include "basis/quadrature.hpp"
+#include "core/error.hpp"
+#include "core/timer.hpp"
+#include "infsup/infsup_operators.hpp"
+#include "space/multiplier_space.hpp"
+#include "space/piecewise_space_1d.hpp"
+
+namespace hpcontact::infsup {
+namespace {
+
+constexpr double kRelativeTolerance = 1e-10;  // of the length of Γ_C: breakpoints closer than this coincide
+
+// The multiplier functions as Legendre coefficients (T of the family, the identity for the
+// discontinuous one), with the range of rows each column touches and whether it meets supp s.
+struct MultiplierColumns {
+  Eigen::SparseMatrix<double> legendre;
+  std::vector<int> first_row, last_row;
+  std::vector<bool> meets_support;
+};
+
+MultiplierColumns multiplier_columns(const TracePairing& pairing, const space::MultiplierSpace& multipliers) {
+  MultiplierColumns out;
+  if (pairing.family.kind == space::MultiplierFamilyKind::discontinuous) {
+    out.legendre.resize(multipliers.n_dofs(), multipliers.n_dofs());
+    out.legendre.setIdentity();
+  } else {
+    out.legendre = space::family_basis(multipliers, pairing.family).legendre;
+  }
+  out.legendre.makeCompressed();
+  const auto& mesh = *pairing.boundary_mesh;
+  std::vector<bool> segment_meets(mesh.n_segments(), true);
+  if (pairing.weight) {
+    // As the global α's filter: a segment where s vanishes at every sample carries no multiplier.
+    const auto& rule = basis::gauss_legendre(8);
+    for (int k = 0; k < mesh.n_segments(); ++k) {
+      bool meets = false;
+      for (const double t : rule.points)
+        meets = meets || pairing.weight(mesh.segment_begin(k) + 0.5 * (t + 1) * (mesh.segment_end(k) - mesh.segment_begin(k))) != 0.0;
+      segment_meets[k] = meets;
+    }
+  }
+  std::vector<int> segment_of_row(multipliers.n_dofs());
+  for (int k = 0; k < mesh.n_segments(); ++k)
+    for (int j = 0; j <= multipliers.segment_degree(k); ++j) segment_of_row[multipliers.first_dof(k) + j] = k;
+  for (int c = 0; c < out.legendre.cols(); ++c) {
+    int first = multipliers.n_dofs(), last = -1;
+    bool meets = false;
+    for (Eigen::SparseMatrix<double>::InnerIterator it(out.legendre, c); it; ++it) {
+      first = std::min(first, static_cast<int>(it.row()));
+      last = std::max(last, static_cast<int>(it.row()));
+      meets = meets || segment_meets[segment_of_row[it.row()]];
+    }
+    out.first_row.push_back(first);
+    out.last_row.push_back(last);
+    out.meets_support.push_back(meets);
+  }
+  return out;
+}
+
+// One patch: the edges [first_edge, end_edge) of T_h (the interval J), the segments inside J
+// (their multipliers, as columns R of Legendre coefficients of rows [first_row, end_row)).
+struct Patch {
+  int first_edge = 0, end_edge = 0;
+  int first_segment = 0, end_segment = 0;
+  bool free_left = false, free_right = false;  // J ends at the end of an open zone
+  int first_row = 0, end_row = 0;
+  Eigen::MatrixXd columns;  // R, shape (end_row - first_row, functions)
+};
+
+// The discrete interpolation norm's inverse on `space`: with K̃ = K + M/L² (the full H¹ norm at
+// the patch's scale) and K̃ X = M X diag(μ), Xᵀ M X = I, the norm is M X diag(√μ) Xᵀ M and its
+// inverse X diag(1/√μ) Xᵀ. Shape (n_dofs, n_dofs).
+Eigen::MatrixXd inverse_half_norm(const space::PiecewiseSpace1D& space) {
+  const double length = space.nodes().back() - space.nodes().front();
+  const Eigen::MatrixXd mass = space.mass();
+  const Eigen::MatrixXd full = space.stiffness() + mass / (length * length);
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eigen(full, mass);
+  if (eigen.info() != Eigen::Success) throw NumericalError("local α: the trace norm's eigenproblem failed");
+  const Eigen::VectorXd scale = eigen.eigenvalues().cwiseMax(0.0).cwiseSqrt().cwiseInverse();
+  return eigen.eigenvectors() * scale.asDiagonal() * eigen.eigenvectors().transpose();
+}
+
+// ∫_J w μ_i φ_j ds for the multiplier rows of the patch and the functions of `space` (which lives
+// on part of `pieces`, the common refinement of the edges and segments in J): shape (rows, n_dofs).
+Eigen::MatrixXd coupling(const TracePairing& pairing, const space::MultiplierSpace& multipliers, const Patch& patch,
+                         const std::vector<double>& pieces, const space::PiecewiseSpace1D& space, int quadrature_points) {
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(patch.end_row - patch.first_row, space.n_dofs());
+  const auto& rule = basis::gauss_legendre(quadrature_points);
+  const auto& mesh = *pairing.boundary_mesh;
+  for (std::size_t i = 0; i + 1 < pieces.size(); ++i) {
+    const double a = pieces[i], b = pieces[i + 1], mid = 0.5 * (a + b);
+    const int segment = mesh.segment_at(mid), piece = space.piece_at(mid);
+    if (piece < 0 || segment < patch.first_segment || segment >= patch.end_segment) continue;
+    const double p0 = space.nodes()[piece], p1 = space.nodes()[piece + 1];
+    for (std::size_t q = 0; q < rule.points.size(); ++q) {
+      const double s = a + 0.5 * (rule.points[q] + 1) * (b - a);
+      const double w = rule.weights[q] * 0.5 * (b - a) * (pairing.weight ? pairing.weight(s) : 1.0);
+      const Eigen::VectorXd mu = multipliers.basis_values(segment, multipliers.local_coordinate(segment, s));
+      const auto v = space.values_on(piece, 2 * (s - p0) / (p1 - p0) - 1);
+      const int row = multipliers.first_dof(segment) - patch.first_row;
+      for (Eigen::Index r = 0; r < mu.size(); ++r)
+        for (std::size_t j = 0; j < v.dofs.size(); ++j)
+          out(row + r, v.dofs[j]) += w * mu[r] * v.values[static_cast<Eigen::Index>(j)];
+    }
+  }
+  return out;
+}
+
+// Sorted union of two breakpoint lists, points closer than `tolerance` merged.
+std::vector<double> merged(std::vector<double> a, const std::vector<double>& b, double tolerance) {
+  a.insert(a.end(), b.begin(), b.end());
+  std::sort(a.begin(), a.end());
+  std::vector<double> out;
+  for (const double x : a)
+    if (out.empty() || x - out.back() > tolerance) out.push_back(x);
+  return out;
+}
+
+// α_J of one patch.
+double patch_alpha(const TracePairing& pairing, const space::MultiplierSpace& multipliers, const Patch& patch,
+                   double tolerance) {
+  std::vector<double> edge_nodes{pairing.edges[patch.first_edge][0]};
+  std::vector<int> edge_degrees;
+  int top = 0;
+  for (int e = patch.first_edge; e < patch.end_edge; ++e) {
+    edge_nodes.push_back(pairing.edges[e][1]);
+    edge_degrees.push_back(pairing.edge_degrees[e]);
+    top = std::max(top, pairing.edge_degrees[e]);
+  }
+  std::vector<double> segment_nodes;
+  for (int k = patch.first_segment; k <= patch.end_segment; ++k) {
+    segment_nodes.push_back(pairing.boundary_mesh->nodes()[k]);
+    if (k < patch.end_segment) top = std::max(top, multipliers.segment_degree(k));
+  }
+  // The reference for the dual norm: continuous P_{top+2} on the common refinement of edges and
+  // segments in J, rich enough that no multiplier of the patch is invisible to it.
+  const auto pieces = merged(edge_nodes, segment_nodes, tolerance);
+  const int reference_degree = top + 2;
+  const space::PiecewiseSpace1D trace(edge_nodes, edge_degrees, patch.free_left, patch.free_right);
+  const space::PiecewiseSpace1D reference(pieces, std::vector<int>(pieces.size() - 1, reference_degree),
+                                          patch.free_left, patch.free_right);
+  const int points = (reference_degree + top) / 2 + 1 + (pairing.weight ? 4 : 0);
+  const Eigen::MatrixXd b_trace = patch.columns.transpose() * coupling(pairing, multipliers, patch, pieces, trace, points);
+  const Eigen::MatrixXd b_reference =
+      patch.columns.transpose() * coupling(pairing, multipliers, patch, pieces, reference, points);
+  const Eigen::MatrixXd s = b_trace * inverse_half_norm(trace) * b_trace.transpose();
+  const Eigen::MatrixXd g = b_reference * inverse_half_norm(reference) * b_reference.transpose();
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eigen(s, g, Eigen::EigenvaluesOnly);
+  if (eigen.info() != Eigen::Success) throw NumericalError("local α: a patch's eigenproblem failed");
+  return std::sqrt(std::max(0.0, eigen.eigenvalues().minCoeff()));
+}
+
+// What makes two patches the same eigenproblem: the breakpoints relative to J, the degrees,
+// the free ends and R (no weight: with one the data differ from patch to patch).
+std::string patch_key(const TracePairing& pairing, const space::MultiplierSpace& multipliers, const Patch& patch) {
+  const double a = pairing.edges[patch.first_edge][0], length = pairing.edges[patch.end_edge - 1][1] - a;
+  std::string key = std::to_string(patch.free_left) + std::to_string(patch.free_right) + "|";
+  const auto add = [&](double x) { key += std::to_string(std::lround((x - a) / length * 1e9)) + ","; };
+  for (int e = patch.first_edge; e < patch.end_edge; ++e) {
+    add(pairing.edges[e][1]);
+    key += std::to_string(pairing.edge_degrees[e]) + ";";
+  }
+  key += "|";
+  for (int k = patch.first_segment; k < patch.end_segment; ++k) {
+    add(pairing.boundary_mesh->segment_end(k));
+    key += std::to_string(multipliers.segment_degree(k)) + ";";
+  }
+  key += "|";
+  for (Eigen::Index i = 0; i < patch.columns.size(); ++i)
+    key += std::to_string(std::lround(patch.columns.data()[i] * 1e9)) + ",";
+  return key;
+}
+
+}  // namespace
+
+PredictedAlpha predict_alpha(const TracePairing& pairing) {
+  Stopwatch clock;
+  const auto& mesh = *pairing.boundary_mesh;
+  HPC_VERIFY(!pairing.edges.empty() && pairing.edges.size() == pairing.edge_degrees.size(), "trace edges with degrees");
+  HPC_VERIFY(static_cast<int>(pairing.segment_degrees.size()) == mesh.n_segments(), "one p_C per segment");
+  const space::MultiplierSpace multipliers(mesh, pairing.segment_degrees);
+  const auto columns = multiplier_columns(pairing, multipliers);
+  const double tolerance = kRelativeTolerance * mesh.length();
+  const auto& edges = pairing.edges;
+  // The first edge ending after s, and the first edge beginning at or after s.
+  const auto edge_ending_after = [&](double s) {
+    return static_cast<int>(std::partition_point(edges.begin(), edges.end(), [&](const auto& e) { return e[1] <= s + tolerance; }) - edges.begin());
+  };
+  const auto edge_beginning_at = [&](double s) {
+    return static_cast<int>(std::partition_point(edges.begin(), edges.end(), [&](const auto& e) { return e[0] < s - tolerance; }) - edges.begin());
+  };
+  std::vector<int> zone_first(mesh.zones().size(), mesh.n_segments()), zone_last(mesh.zones().size(), -1);
+  for (int k = 0; k < mesh.n_segments(); ++k) {
+    const int z = mesh.zone_of_segment(k);
+    zone_first[z] = std::min(zone_first[z], k);
+    zone_last[z] = std::max(zone_last[z], k);
+  }
+  PredictedAlpha out;
+  out.alpha = std::numeric_limits<double>::infinity();
+  std::map<std::string, double> solved;
+  for (int k = 0; k < mesh.n_segments(); ++k) {
+    const int z = mesh.zone_of_segment(k);
+    const auto& zone = mesh.zones()[z];
+    const int lo = std::max(k - 1, zone_first[z]), hi = std::min(k + 1, zone_last[z]);
+    Patch patch;
+    patch.first_edge = edge_ending_after(mesh.segment_begin(lo));
+    patch.end_edge = edge_beginning_at(mesh.segment_end(hi));
+    const double j0 = edges[patch.first_edge][0], j1 = edges[patch.end_edge - 1][1];
+    // The segments wholly inside J (J covers lo..hi at least).
+    patch.first_segment = mesh.segment_at(j0 + tolerance);
+    if (mesh.segment_begin(patch.first_segment) < j0 - tolerance) ++patch.first_segment;
+    patch.end_segment = mesh.segment_at(j1 - tolerance) + 1;
+    if (mesh.segment_end(patch.end_segment - 1) > j1 + tolerance) --patch.end_segment;
+    patch.free_left = !zone.closed && std::abs(j0 - zone.begin) < tolerance;
+    patch.free_right = !zone.closed && std::abs(j1 - zone.end) < tolerance;
+    patch.first_row = multipliers.first_dof(patch.first_segment);
+    patch.end_row = multipliers.first_dof(patch.end_segment - 1) + multipliers.segment_degree(patch.end_segment - 1) + 1;
+    // Π on segment k: its longest edge and smallest trace degree.
+    double h = 0.0;
+    int p = std::numeric_limits<int>::max();
+    for (int e = edge_ending_after(mesh.segment_begin(k)); e < edge_beginning_at(mesh.segment_end(k)); ++e) {
+      h = std::max(h, edges[e][1] - edges[e][0]);
+      p = std::min(p, pairing.edge_degrees[e]);
+    }
+    out.pi = std::max(out.pi, stability_indicator(h, mesh.segment_end(k) - mesh.segment_begin(k), p,
+                                                  multipliers.segment_degree(k)));
+    std::vector<int> inside;
+    for (int c = 0; c < columns.legendre.cols(); ++c)
+      if (columns.meets_support[c] && columns.first_row[c] >= patch.first_row && columns.last_row[c] < patch.end_row)
+        inside.push_back(c);
+    if (inside.empty()) continue;
+    patch.columns.setZero(patch.end_row - patch.first_row, static_cast<Eigen::Index>(inside.size()));
+    for (std::size_t j = 0; j < inside.size(); ++j)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(columns.legendre, inside[j]); it; ++it)
+        patch.columns(it.row() - patch.first_row, static_cast<Eigen::Index>(j)) = it.value();
+    ++out.patches;
+    double alpha = 0.0;
+    if (pairing.weight) {
+      alpha = patch_alpha(pairing, multipliers, patch, tolerance);
+      ++out.distinct_patches;
+    } else {
+      const auto key = patch_key(pairing, multipliers, patch);
+      const auto found = solved.find(key);
+      if (found != solved.end()) {
+        alpha = found->second;
+      } else {
+        alpha = solved[key] = patch_alpha(pairing, multipliers, patch, tolerance);
+        ++out.distinct_patches;
+      }
+    }
+    if (alpha < out.alpha) out.alpha = alpha, out.weakest_segment = k;
+  }
+  if (out.patches == 0) out.alpha = 0.0;
+  out.seconds = clock.seconds();
+  return out;
+}
+
+}  // namespace hpcontact::infsup
