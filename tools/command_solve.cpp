@@ -49,7 +49,8 @@ std::string zone_alphas(const driver::InfSupSummary& infsup) {
 // One line per contact problem: its energy, solver and contact set (and the total force of an
 // elastic body).
 void print_stability(const driver::StabilityReport& s) {
-  fmt::print("stability: predicted alpha = {:.4g} ({} {}), Pi = {:.3g}", s.alpha_predicted,
+  // (not "alpha = ": that names the inf-sup constant's line)
+  fmt::print("stability: alpha_predicted {:.4g} ({} {}), Pi {:.3g}", s.alpha_predicted,
              s.stable ? "stable: >=" : "UNSTABLE: <", s.threshold, s.pi);
   if (s.alternative) fmt::print("; stable alternative: {}", s.alternative->edit);
   fmt::print("\n");

@@ -61,6 +61,8 @@ class Model {
   /// the Γ_C of `finest` (empty: L²).
   virtual std::function<double(double)> multiplier_error_weight(scene::Effect problem,
                                                                 const SceneDiscretization& finest) const = 0;
+  /// Φ onto the master's Γ_C for a contact pair of two bodies; null for one body.
+  virtual const mesh::MasterProjection* master_projection() const { return nullptr; }
   /// What summary.json says of the model beyond the discretization (the material); empty: nothing.
   virtual std::optional<MaterialSummary> material() const { return std::nullopt; }
 };

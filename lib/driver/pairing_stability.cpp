@@ -84,6 +84,24 @@ std::string pairing_text(const scene::Scene& scene) {
                      space::to_string(scene.family));
 }
 
+// The master's trace edges as Φ maps them onto the slave's arc length: the covered mortar
+// segments merged per master edge.
+void add_master_traces(infsup::TracePairing& pairing, const scene::Scene& master_scene,
+                       const mesh::ContactBoundary& slave, const mesh::MasterProjection& projection) {
+  const auto degrees = scene::scene_trace_degrees(master_scene, projection.master());
+  int last_edge = -1;
+  for (const auto& piece : projection.mortar_segments(slave)) {
+    if (!piece.covered || piece.master_edge < 0) continue;
+    if (piece.master_edge == last_edge && std::abs(pairing.master_edges.back()[1] - piece.s_begin) < 1e-12 * slave.length()) {
+      pairing.master_edges.back()[1] = piece.s_end;
+      continue;
+    }
+    pairing.master_edges.push_back({piece.s_begin, piece.s_end});
+    pairing.master_degrees.push_back(degrees[piece.master_edge]);
+    last_edge = piece.master_edge;
+  }
+}
+
 }  // namespace
 
 std::string ratio_text(double ratio) {
@@ -96,24 +114,38 @@ std::string ratio_text(double ratio) {
   return fmt::format("{:.6g}", ratio);
 }
 
-infsup::TracePairing trace_pairing_of(const scene::Scene& scene, const SceneDiscretization& d,
-                                      const mesh::BoundaryMesh& boundary_mesh, std::vector<int> segment_degrees) {
+infsup::TracePairing trace_pairing_of(const scene::Scene& scene, const mesh::ContactBoundary& contact,
+                                      const mesh::BoundaryMesh& boundary_mesh, std::vector<int> segment_degrees,
+                                      const mesh::MasterProjection* projection) {
   infsup::TracePairing pairing;
-  for (const auto& edge : d.contact->edges()) pairing.edges.push_back({edge.s_begin, edge.s_end});
-  pairing.edge_degrees = d.trace_degrees;
+  for (const auto& edge : contact.edges()) pairing.edges.push_back({edge.s_begin, edge.s_end});
+  pairing.edge_degrees = scene::scene_trace_degrees(scene, contact);
+  const auto& mesh = contact.mesh();
+  for (const auto& edge : contact.edges()) {
+    // The cell's extent normal to the edge's chord.
+    const auto& ends = mesh.edge(edge.edge);
+    const mesh::Point a = mesh.vertex(ends[0]), chord = mesh.vertex(ends[1]) - a;
+    const mesh::Point normal = mesh::Point(-chord.y(), chord.x()) / chord.norm();
+    double depth = 0.0;
+    for (const int v : mesh.cell(edge.cell)) depth = std::max(depth, std::abs((mesh.vertex(v) - a).dot(normal)));
+    pairing.edge_depths.push_back(depth);
+  }
   pairing.boundary_mesh = &boundary_mesh;
   pairing.segment_degrees = std::move(segment_degrees);
   pairing.family = scene.family;
+  if (projection && scene.pair) add_master_traces(pairing, scene.pair->master, contact, *projection);
   // The elastic friction pairing has no weight; the scalar one (22) pairs sμ with v.
   if (!scene.is_elastic() && scene.problem == infsup::PairingProblem::friction)
     if (auto s = scene_function(scene, "data.s", scene.friction_bound))
-      pairing.weight = [s, contact = d.contact.get()](double arc) { return s(contact->point_at(arc)); };
+      pairing.weight = [s, &contact](double arc) { return s(contact.point_at(arc)); };
   return pairing;
 }
 
-StabilityReport predict_stability(const scene::Scene& scene, const SceneDiscretization& d) {
+StabilityReport predict_stability(const scene::Scene& scene, const SceneDiscretization& d,
+                                  const mesh::MasterProjection* projection) {
   Stopwatch clock;
-  const auto predicted = infsup::predict_alpha(trace_pairing_of(scene, d, *d.boundary_mesh, d.segment_degrees));
+  scene::check_family_fits(scene, *d.boundary_mesh, d.segment_degrees);  // its message names the scene's keys
+  const auto predicted = infsup::predict_alpha(trace_pairing_of(scene, *d.contact, *d.boundary_mesh, d.segment_degrees, projection));
   StabilityReport report;
   report.alpha_predicted = predicted.alpha;
   report.threshold = infsup::kStablePatchAlpha;
@@ -134,7 +166,7 @@ StabilityReport predict_stability(const scene::Scene& scene, const SceneDiscreti
         scene::check_family_fits(candidate.scene, bm, degrees);
         const space::MultiplierSpace multipliers(bm, degrees);
         const long long count = multiplier_count(candidate.scene, multipliers);
-        const auto alpha = infsup::predict_alpha(trace_pairing_of(candidate.scene, d, bm, std::move(degrees)));
+        const auto alpha = infsup::predict_alpha(trace_pairing_of(candidate.scene, *d.contact, bm, std::move(degrees), projection));
         if (!alpha.stable()) continue;
         const auto& best = report.alternative;
         if (!best || count > best->nmult || (count == best->nmult && alpha.alpha > best->alpha_predicted))

@@ -6,19 +6,23 @@
 #include "driver/run_result.hpp"
 #include "driver/scene_discretization.hpp"
 #include "infsup/local_alpha.hpp"
+#include "mesh/contact_pair_geometry.hpp"
 
 namespace hpcontact::driver {
 
-/// Γ_C of `d` as the predictor sees it, with `boundary_mesh` and `segment_degrees` as T_{C,H}
-/// (the scene's own, or a candidate's) and, for the scalar friction pairing ([infsup] problem =
-/// "friction"), the weight s.
-infsup::TracePairing trace_pairing_of(const scene::Scene& scene, const SceneDiscretization& d,
-                                      const mesh::BoundaryMesh& boundary_mesh, std::vector<int> segment_degrees);
+/// Γ_C (`contact`, the slave's of a pair) as the predictor sees it, with `boundary_mesh` and
+/// `segment_degrees` as T_{C,H} (the scene's own, or a candidate's) and, for the scalar friction
+/// pairing ([infsup] problem = "friction"), the weight s. The trace degrees are the scene's p.
+/// A two-body scene with `projection` (Φ onto the master's Γ_C) adds the master's traces.
+infsup::TracePairing trace_pairing_of(const scene::Scene& scene, const mesh::ContactBoundary& contact,
+                                      const mesh::BoundaryMesh& boundary_mesh, std::vector<int> segment_degrees,
+                                      const mesh::MasterProjection* projection = nullptr);
 
 /// The prediction for the scene's pairing on `d`; when it is not stable, the stable candidate
 /// with the most multipliers among p_C lowered (a number p_C only) and T_{C,H} coarsened by 2
 /// (`ratio` or `m` only), and the warning naming both.
-StabilityReport predict_stability(const scene::Scene& scene, const SceneDiscretization& d);
+StabilityReport predict_stability(const scene::Scene& scene, const SceneDiscretization& d,
+                                  const mesh::MasterProjection* projection = nullptr);
 
 /// Acts on `report` as `[solve] stability` says: prints the warning through `say` (warn), or
 /// @throws InputError with it (refuse).

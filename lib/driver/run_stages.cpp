@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "driver/pairing_stability.hpp"
 #include "postprocess/mode_samples.hpp"
 
 namespace hpcontact::driver {
@@ -44,6 +45,10 @@ InfSupSummary infsup_summary(const Level& level, const infsup::InfSupSetup& setu
       .ratio = level.scene.ratio.size() == 1 ? std::optional<double>(level.scene.ratio.front().value) : std::nullopt};
   InfSupSummary s;
   s.record = infsup::make_infsup_record(pairing, alpha);
+  s.record.alpha_predicted =
+      infsup::predict_alpha(trace_pairing_of(level.scene, *d.contact, *d.boundary_mesh, d.segment_degrees,
+                                            level.model->master_projection()))
+          .alpha;
   s.reference_level = alpha.reference_level;
   s.lambda_unique = !alpha.singular;
   if (setup.elastic) s.primal_norm = operators::to_string(setup.primal_norm);

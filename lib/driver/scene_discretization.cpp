@@ -73,14 +73,6 @@ std::unique_ptr<SceneDiscretization> discretize_scene(const scene::Scene& scene,
     HPC_VERIFY(MPI_Bcast(extremes.data(), 2, MPI_INT, 0, distribution.ranks) == MPI_SUCCESS,
                "broadcast of the degrees' extremes");
   d->smallest_cell_degree = extremes[0], d->largest_cell_degree = extremes[1];
-  d->trace_degrees.resize(d->contact->edges().size());
-  if (d->mesh)
-    for (std::size_t e = 0; e < d->trace_degrees.size(); ++e)
-      d->trace_degrees[e] = d->cell_degrees[d->contact_cells->global_cell(d->contact->edges()[e].cell)];
-  if (distribution.distributed())
-    HPC_VERIFY(MPI_Bcast(d->trace_degrees.data(), static_cast<int>(d->trace_degrees.size()), MPI_INT, 0,
-                         distribution.ranks) == MPI_SUCCESS,
-               "broadcast of the trace degrees");
   d->segment_degrees = scene::scene_segment_degrees(scene, *d->contact, *d->boundary_mesh);
   d->multipliers = std::make_unique<space::MultiplierSpace>(*d->boundary_mesh, d->segment_degrees);
   return d;

@@ -35,8 +35,6 @@ struct SceneDiscretization {
   std::vector<int> cell_degrees;
   int smallest_cell_degree = 0, largest_cell_degree = 0;  ///< of cell_degrees, on every rank
   std::vector<int> segment_degrees;
-  /// The degree of the trace on each edge of Γ_C (its cell's p_T), on every rank.
-  std::vector<int> trace_degrees;
   std::unique_ptr<space::MultiplierSpace> multipliers;  ///< M^{p_C}(T_{C,H}), refers to boundary_mesh
 };
 

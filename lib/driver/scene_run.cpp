@@ -89,13 +89,13 @@ RunResult run_scene(const scene::Scene& given_scene, const SceneRunOptions& opti
   const scene::Scene scene = given_scene.fit_free_boundary ? fitted_scene(given_scene, context, result) : given_scene;
   // 1. Meshes and degrees. 2. The model's operators, built on first use and shared by the effects.
   const auto base = discretize(scene, context);
-  // 1b. Whether the pairing is stable, predicted before anything is solved: a refused one costs
-  //     nothing more, a warned one is said before the run's time is spent.
+  build_operators(*base, &log, context, reads_whole_mesh_after_operators(scene));
+  // 2b. Whether the pairing is stable, predicted before anything is solved: a refused run stops
+  //     here, a warned one is told before its time is spent.
   if (!scene.contact_effects().empty() || !scene.elastic_effects().empty() || scene.has_effect(scene::Effect::infsup)) {
-    result.stability = predict_stability(scene, *base->d);
+    result.stability = predict_stability(scene, *base->d, base->model->master_projection());
     act_on_stability(scene, *result.stability, context.progress);
   }
-  build_operators(*base, &log, context, reads_whole_mesh_after_operators(scene));
   // 3. The contact problems.
   solve_contact_problems(*base, context, "");
   // 4. The inf-sup constant of the pairing: whether λ is unique.

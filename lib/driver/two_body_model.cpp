@@ -74,6 +74,7 @@ class TwoBodyModel final : public Model {
     return setup;
   }
   const mesh::Mesh& operators_mesh() const override { return slave_->mesh(); }
+  const mesh::MasterProjection* master_projection() const override { return &projection_; }
   long long n_dofs() const override { return slave_->n_dofs() + master_->n_dofs(); }
   void release_factors() const override {
     slave_->release_factors();

@@ -29,6 +29,8 @@ struct InfSupRecord {
   double pi = 0.0;                 ///< Π(h, H, p, p_C) of (20)
   // The result.
   double alpha = 0.0;
+  /// The local predictor's α (infsup/local_alpha.hpp) of the same pairing: min over the patches.
+  double alpha_predicted = 0.0;
   double alpha_error = 0.0;  ///< estimate of |α − α_∞| (InfSupResult::alpha_error)
   /// InfSupResult::alpha_converged; unknown for a record read back from a CSV row, which does
   /// not hold it.

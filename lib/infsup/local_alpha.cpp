@@ -90,10 +90,12 @@ Eigen::MatrixXd inverse_half_norm(const space::PiecewiseSpace1D& space) {
   return eigen.eigenvectors() * scale.asDiagonal() * eigen.eigenvectors().transpose();
 }
 
-// ∫_J w μ_i φ_j ds for the multiplier rows of the patch and the functions of `space` (which lives
-// on part of `pieces`, the common refinement of the edges and segments in J): shape (rows, n_dofs).
+// ∫_J w μ_i φ_j ds (w = s if `weighted`, else 1) for the multiplier rows of the patch and the
+// functions of `space` (on `pieces`, the common refinement of the edges and segments in J):
+// shape (rows, n_dofs).
 Eigen::MatrixXd coupling(const TracePairing& pairing, const space::MultiplierSpace& multipliers, const Patch& patch,
-                         const std::vector<double>& pieces, const space::PiecewiseSpace1D& space, int quadrature_points) {
+                         const std::vector<double>& pieces, const space::PiecewiseSpace1D& space, int quadrature_points,
+                         bool weighted) {
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(patch.end_row - patch.first_row, space.n_dofs());
   const auto& rule = basis::gauss_legendre(quadrature_points);
   const auto& mesh = *pairing.boundary_mesh;
@@ -104,7 +106,7 @@ Eigen::MatrixXd coupling(const TracePairing& pairing, const space::MultiplierSpa
     const double p0 = space.nodes()[piece], p1 = space.nodes()[piece + 1];
     for (std::size_t q = 0; q < rule.points.size(); ++q) {
       const double s = a + 0.5 * (rule.points[q] + 1) * (b - a);
-      const double w = rule.weights[q] * 0.5 * (b - a) * (pairing.weight ? pairing.weight(s) : 1.0);
+      const double w = rule.weights[q] * 0.5 * (b - a) * (weighted ? pairing.weight(s) : 1.0);
       const Eigen::VectorXd mu = multipliers.basis_values(segment, multipliers.local_coordinate(segment, s));
       const auto v = space.values_on(piece, 2 * (s - p0) / (p1 - p0) - 1);
       const int row = multipliers.first_dof(segment) - patch.first_row;
@@ -142,18 +144,44 @@ double patch_alpha(const TracePairing& pairing, const space::MultiplierSpace& mu
     segment_nodes.push_back(pairing.boundary_mesh->nodes()[k]);
     if (k < patch.end_segment) top = std::max(top, multipliers.segment_degree(k));
   }
+  // The master's edges wholly inside J, its traces vanishing at their chain's ends.
+  std::vector<double> master_nodes;
+  std::vector<int> master_degrees;
+  const double j0 = edge_nodes.front(), j1 = edge_nodes.back();
+  for (std::size_t e = 0; e < pairing.master_edges.size(); ++e) {
+    const auto& [m0, m1] = pairing.master_edges[e];
+    if (m0 < j0 - tolerance || m1 > j1 + tolerance) continue;
+    if (master_nodes.empty() || std::abs(master_nodes.back() - m0) > tolerance) {
+      if (!master_nodes.empty()) break;  // a gap: keep the first chain
+      master_nodes.push_back(m0);
+    }
+    master_nodes.push_back(m1);
+    master_degrees.push_back(pairing.master_degrees[e]);
+    top = std::max(top, pairing.master_degrees[e]);
+  }
   // The reference for the dual norm: continuous P_{top+2} on the common refinement of edges and
   // segments in J, rich enough that no multiplier of the patch is invisible to it.
-  const auto pieces = merged(edge_nodes, segment_nodes, tolerance);
+  const auto pieces = merged(merged(edge_nodes, segment_nodes, tolerance), master_nodes, tolerance);
   const int reference_degree = top + 2;
   const space::PiecewiseSpace1D trace(edge_nodes, edge_degrees, patch.free_left, patch.free_right);
+  if (trace.n_dofs() == 0) return 0.0;  // one edge of degree 1 with both ends held
   const space::PiecewiseSpace1D reference(pieces, std::vector<int>(pieces.size() - 1, reference_degree),
                                           patch.free_left, patch.free_right);
   const int points = (reference_degree + top) / 2 + 1 + (pairing.weight ? 4 : 0);
-  const Eigen::MatrixXd b_trace = patch.columns.transpose() * coupling(pairing, multipliers, patch, pieces, trace, points);
+  // The pairing weighs μ by s; its norm does not.
+  const Eigen::MatrixXd b_trace = patch.columns.transpose() *
+                                  coupling(pairing, multipliers, patch, pieces, trace, points, bool(pairing.weight));
   const Eigen::MatrixXd b_reference =
-      patch.columns.transpose() * coupling(pairing, multipliers, patch, pieces, reference, points);
-  const Eigen::MatrixXd s = b_trace * inverse_half_norm(trace) * b_trace.transpose();
+      patch.columns.transpose() * coupling(pairing, multipliers, patch, pieces, reference, points, false);
+  Eigen::MatrixXd s = b_trace * inverse_half_norm(trace) * b_trace.transpose();
+  if (master_nodes.size() >= 2) {
+    const space::PiecewiseSpace1D master(master_nodes, master_degrees, false, false);
+    if (master.n_dofs() > 0) {
+    const Eigen::MatrixXd b_master = patch.columns.transpose() *
+                                     coupling(pairing, multipliers, patch, pieces, master, points, bool(pairing.weight));
+    s += b_master * inverse_half_norm(master) * b_master.transpose();
+    }
+  }
   const Eigen::MatrixXd g = b_reference * inverse_half_norm(reference) * b_reference.transpose();
   const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eigen(s, g, Eigen::EigenvaluesOnly);
   if (eigen.info() != Eigen::Success) throw NumericalError("local α: a patch's eigenproblem failed");
@@ -176,9 +204,44 @@ std::string patch_key(const TracePairing& pairing, const space::MultiplierSpace&
     key += std::to_string(multipliers.segment_degree(k)) + ";";
   }
   key += "|";
+  for (std::size_t e = 0; e < pairing.master_edges.size(); ++e)
+    if (pairing.master_edges[e][1] > a && pairing.master_edges[e][0] < a + length) {
+      add(pairing.master_edges[e][0]);
+      add(pairing.master_edges[e][1]);
+      key += std::to_string(pairing.master_degrees[e]) + ";";
+    }
+  key += "|";
   for (Eigen::Index i = 0; i < patch.columns.size(); ++i)
     key += std::to_string(std::lround(patch.columns.data()[i] * 1e9)) + ",";
   return key;
+}
+
+// The patch's multiplier functions per length over its trace unknowns per length (both bodies'
+// for a pair). At 1 or more the traces cannot control the multipliers uniformly in h even where
+// α_J > 0: the modes that make α decay like h (p_C = p − 1 on T_h's edges, p_C = p at h/H = 2/3)
+// balance the counts exactly.
+double density_ratio(const TracePairing& pairing, const Patch& patch) {
+  const auto& mesh = *pairing.boundary_mesh;
+  const double j0 = pairing.edges[patch.first_edge][0], j1 = pairing.edges[patch.end_edge - 1][1];
+  double traces = 0.0;
+  for (int e = patch.first_edge; e < patch.end_edge; ++e) traces += pairing.edge_degrees[e];
+  for (std::size_t e = 0; e < pairing.master_edges.size(); ++e)
+    if (pairing.master_edges[e][1] > j0 && pairing.master_edges[e][0] < j1)
+      traces += pairing.master_degrees[e] * (std::min(j1, pairing.master_edges[e][1]) - std::max(j0, pairing.master_edges[e][0])) /
+                (pairing.master_edges[e][1] - pairing.master_edges[e][0]);
+  const double covered = mesh.segment_begin(patch.end_segment) - mesh.segment_begin(patch.first_segment);
+  return (static_cast<double>(patch.columns.cols()) / covered) / (traces / (j1 - j0));
+}
+
+// min over the edges of J of min(1, 2 √(h/d)): the cells taller than their edge (header).
+double depth_factor(const TracePairing& pairing, const Patch& patch) {
+  double factor = 1.0;
+  if (pairing.edge_depths.empty()) return factor;
+  for (int e = patch.first_edge; e < patch.end_edge; ++e) {
+    const double h = pairing.edges[e][1] - pairing.edges[e][0], d = pairing.edge_depths[e];
+    if (d > 0) factor = std::min(factor, 2.0 * std::sqrt(h / d));
+  }
+  return factor;
 }
 
 }  // namespace
@@ -258,6 +321,8 @@ PredictedAlpha predict_alpha(const TracePairing& pairing) {
         ++out.distinct_patches;
       }
     }
+    alpha *= depth_factor(pairing, patch);
+    if (density_ratio(pairing, patch) >= 1.0 - 1e-9) alpha = 0.0;
     if (alpha < out.alpha) out.alpha = alpha, out.weakest_segment = k;
   }
   if (out.patches == 0) out.alpha = 0.0;

@@ -6,9 +6,16 @@
 // M(J) the multipliers of the segments inside J, ‖·‖_{1/2,J} the discrete interpolation norm of
 // the trace space and ‖·‖_{-1/2,J} its dual over a richer reference space on J. α_J does not
 // change with the patch's size, and a multiplier that no trace of its patch sees (the
-// one-dimensional checkerboard) makes α_J vanish: the predicted α is min_J α_J.
+// one-dimensional checkerboard) makes α_J vanish; so does a patch with as many multiplier
+// functions per length as trace unknowns (the balance behind α decaying like h). The predicted α
+// is min_J α_J.
 // Everything is one-dimensional in the arc length: curved edges count as straight ones of the
-// same length, an elastic trace as one scalar component, a contact pair as its slave side alone.
+// same length, an elastic trace as one scalar component; a contact pair adds the master's traces
+// mapped onto the slave's arc length (b(μ, v) = (μ, v_s − v_m∘Φ): S = S_s + S_m).
+// The body enters through one number per edge, its cell's depth d normal to Γ_C: a cell much
+// taller than its edge h cannot let a trace decay as fast as H^{1/2} asks, which inflates the
+// trace's norm by about √(d/h) (the global α of studies/stability/graded_anisotropic.toml follows
+// 1.8 … 8 √(h/d)); α_J is multiplied by min(1, 2 √(h/d)) over the edges of J.
 #pragma once
 
 #include <array>
@@ -24,6 +31,11 @@ namespace hpcontact::infsup {
 struct TracePairing {
   std::vector<std::array<double, 2>> edges;  ///< the edges of T_h on Γ_C: [s_begin, s_end], in order of s
   std::vector<int> edge_degrees;             ///< the trace's degree on each edge (its cell's p_T)
+  std::vector<double> edge_depths;  ///< each edge's cell's extent normal to the edge; empty: no factor
+  /// A contact pair: the master's trace edges as Φ maps them onto the slave's arc length, in
+  /// order, with their degrees (empty for one body).
+  std::vector<std::array<double, 2>> master_edges;
+  std::vector<int> master_degrees;
   const mesh::BoundaryMesh* boundary_mesh = nullptr;  ///< T_{C,H} with Γ_C's zones
   std::vector<int> segment_degrees;                   ///< p_C per segment
   space::MultiplierFamily family;

@@ -57,14 +57,14 @@ std::optional<space::MultiplierFamily> family_of(const std::string& text) {
 
 std::vector<std::string> alpha_columns() {
   return {"problem", "norm", "p",     "pC", "family", "level",       "n",     "m",     "h",
-          "h_min",   "H",    "ratio", "Pi", "alpha",  "alpha_error", "ndofs", "nmult", "seconds"};
+          "h_min",   "H",    "ratio", "Pi", "alpha",  "alpha_predicted", "alpha_error", "ndofs", "nmult", "seconds"};
 }
 
 void add_alpha_row(CsvTable& table, const infsup::InfSupRecord& r) {
   table.add_row({infsup::to_string(r.problem), infsup::to_string(r.norm), static_cast<long long>(r.p),
                  static_cast<long long>(r.pc), space::to_string(r.family), static_cast<long long>(r.level),
                  static_cast<long long>(r.n), static_cast<long long>(r.m), r.h, r.h_min, r.H, r.ratio, r.pi, r.alpha,
-                 r.alpha_error, r.ndofs, r.nmult, r.seconds});
+                 r.alpha_predicted, r.alpha_error, r.ndofs, r.nmult, r.seconds});
 }
 
 std::optional<infsup::InfSupRecord> read_alpha_row(const std::string& line) {
@@ -79,11 +79,12 @@ std::optional<infsup::InfSupRecord> read_alpha_row(const std::string& line) {
   const auto level = int_of(c[5]), n = int_of(c[6]), m = int_of(c[7]);
   const auto h = number_of<double>(c[8]), h_min = number_of<double>(c[9]), H = number_of<double>(c[10]);
   const auto ratio = number_of<double>(c[11]), pi = number_of<double>(c[12]);
-  const auto alpha = number_of<double>(c[13]), alpha_error = number_of<double>(c[14]);
-  const auto ndofs = number_of<long long>(c[15]), nmult = number_of<long long>(c[16]);
-  const auto seconds = number_of<double>(c[17]);
+  const auto alpha = number_of<double>(c[13]), alpha_predicted = number_of<double>(c[14]);
+  const auto alpha_error = number_of<double>(c[15]);
+  const auto ndofs = number_of<long long>(c[16]), nmult = number_of<long long>(c[17]);
+  const auto seconds = number_of<double>(c[18]);
   if (!problem || !norm || !p || !pc || !family || !level || !n || !m || !h || !h_min || !H || !ratio || !pi ||
-      !alpha || !alpha_error || !ndofs || !nmult || !seconds)
+      !alpha || !alpha_predicted || !alpha_error || !ndofs || !nmult || !seconds)
     return std::nullopt;
   return infsup::InfSupRecord{.problem = *problem,
                               .norm = *norm,
@@ -99,6 +100,7 @@ std::optional<infsup::InfSupRecord> read_alpha_row(const std::string& line) {
                               .ratio = *ratio,
                               .pi = *pi,
                               .alpha = *alpha,
+                              .alpha_predicted = *alpha_predicted,
                               .alpha_error = *alpha_error,
                               .alpha_converged = std::nullopt,  // not a column
                               .ndofs = *ndofs,

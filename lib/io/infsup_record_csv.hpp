@@ -20,6 +20,7 @@ namespace hpcontact::io {
 ///   ratio            h/H as given (scene or sweep), otherwise m / n
 ///   Pi               Π(h, H, p, p_C) of (20)
 ///   alpha            α, ≥ 0 (0 where S_G is singular to working precision)
+///   alpha_predicted  the local predictor's α of the same pairing (infsup/local_alpha.hpp)
 ///   alpha_error      the estimate of |α − α_∞| from the H^{-1/2} reference
 ///   ndofs, nmult     unknowns of the primal and the multiplier space
 ///   seconds          operators and eigenproblem: the one column that differs between runs

@@ -180,6 +180,13 @@ std::vector<int> scene_cell_degrees(const Scene& scene, const mesh::Mesh& mesh) 
   return degrees;
 }
 
+std::vector<int> scene_trace_degrees(const Scene& scene, const mesh::ContactBoundary& contact) {
+  const auto cell_degrees = scene_cell_degrees(scene, contact.mesh());
+  std::vector<int> degrees;
+  for (const auto& edge : contact.edges()) degrees.push_back(cell_degrees[edge.cell]);
+  return degrees;
+}
+
 std::vector<int> scene_segment_degrees(const Scene& scene, const mesh::ContactBoundary& contact,
                                        const mesh::BoundaryMesh& boundary_mesh) {
   std::vector<int> degrees(boundary_mesh.n_segments(), scene.pc.value);

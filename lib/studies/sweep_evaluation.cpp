@@ -7,6 +7,7 @@
 #include "core/error.hpp"
 #include "core/rank_agreement.hpp"
 #include "driver/elastic_scene.hpp"
+#include "driver/pairing_stability.hpp"
 #include "driver/scene_discretization.hpp"
 #include "mesh/boundary_mesh.hpp"
 #include "mesh/contact_boundary.hpp"
@@ -169,7 +170,10 @@ infsup::InfSupRecord SweepEvaluation::evaluate_point(const SweepPoint& point, co
                                      .m = static_cast<int>(point.m),
                                      .h_min = facts.contact_h_min,
                                      .ratio = ratio ? std::optional<double>(ratio->value) : std::nullopt};
-  return infsup::make_infsup_record(pairing, infsup::analyse_infsup(setup, backend_));
+  auto record = infsup::make_infsup_record(pairing, infsup::analyse_infsup(setup, backend_));
+  record.alpha_predicted =
+      infsup::predict_alpha(driver::trace_pairing_of(scene, group.contact, boundary, setup.segment_degrees, group.projection.get())).alpha;
+  return record;
 }
 
 }  // namespace hpcontact::studies

@@ -104,7 +104,7 @@ TEST(Cli, InfsupCsvAndModeFiles) {
   const auto alpha = read_csv(csv);
   // The columns of a sweep's alpha.csv: a single run is level 1, h_min the shortest edge on Γ_C.
   EXPECT_EQ(alpha.header_line(),
-            "problem,norm,p,pC,family,level,n,m,h,h_min,H,ratio,Pi,alpha,alpha_error,ndofs,nmult,seconds");
+            "problem,norm,p,pC,family,level,n,m,h,h_min,H,ratio,Pi,alpha,alpha_predicted,alpha_error,ndofs,nmult,seconds");
   ASSERT_EQ(alpha.rows.size(), 2u);
   for (const auto& row : alpha.rows)
     EXPECT_EQ(line_of(row).find("signorini,interp,1,0,discontinuous,1,4,4,0.5,0.5,0.5,1,"), 0u) << line_of(row);
