@@ -30,7 +30,8 @@ std::optional<Candidate> coarsened(const scene::Scene& scene) {
       ratio.text = ratio_text(ratio.value);
       texts.push_back(fmt::format("\"{}\"", ratio.text));
     }
-    c.edit = fmt::format("[contact_mesh] ratio = {}", texts.size() == 1 ? texts.front() : fmt::format("[{}]", fmt::join(texts, ", ")));
+    c.edit = fmt::format("[contact_mesh] ratio = {}",
+                         texts.size() == 1 ? texts.front() : fmt::format("[{}]", fmt::join(texts, ", ")));
     return c;
   }
   if (!scene.m.empty()) {
@@ -39,7 +40,8 @@ std::optional<Candidate> coarsened(const scene::Scene& scene) {
       m /= 2;
       texts.push_back(std::to_string(m));
     }
-    c.edit = fmt::format("[contact_mesh] m = {}", texts.size() == 1 ? texts.front() : fmt::format("[{}]", fmt::join(texts, ", ")));
+    c.edit = fmt::format("[contact_mesh] m = {}",
+                         texts.size() == 1 ? texts.front() : fmt::format("[{}]", fmt::join(texts, ", ")));
     return c;
   }
   return std::nullopt;
@@ -92,7 +94,8 @@ void add_master_traces(infsup::TracePairing& pairing, const scene::Scene& master
   int last_edge = -1;
   for (const auto& piece : projection.mortar_segments(slave)) {
     if (!piece.covered || piece.master_edge < 0) continue;
-    if (piece.master_edge == last_edge && std::abs(pairing.master_edges.back()[1] - piece.s_begin) < 1e-12 * slave.length()) {
+    if (piece.master_edge == last_edge &&
+        std::abs(pairing.master_edges.back()[1] - piece.s_begin) < 1e-12 * slave.length()) {
       pairing.master_edges.back()[1] = piece.s_end;
       continue;
     }
@@ -145,7 +148,8 @@ StabilityReport predict_stability(const scene::Scene& scene, const SceneDiscreti
                                   const mesh::MasterProjection* projection) {
   Stopwatch clock;
   scene::check_family_fits(scene, *d.boundary_mesh, d.segment_degrees);  // its message names the scene's keys
-  const auto predicted = infsup::predict_alpha(trace_pairing_of(scene, *d.contact, *d.boundary_mesh, d.segment_degrees, projection));
+  const auto predicted =
+      infsup::predict_alpha(trace_pairing_of(scene, *d.contact, *d.boundary_mesh, d.segment_degrees, projection));
   StabilityReport report;
   report.alpha_predicted = predicted.alpha;
   report.threshold = infsup::kStablePatchAlpha;
@@ -155,8 +159,8 @@ StabilityReport predict_stability(const scene::Scene& scene, const SceneDiscreti
   report.distinct_patches = predicted.distinct_patches;
   if (predicted.weakest_segment >= 0) {
     const auto& bm = *d.boundary_mesh;
-    report.weakest_point =
-        d.contact->point_at(0.5 * (bm.segment_begin(predicted.weakest_segment) + bm.segment_end(predicted.weakest_segment)));
+    report.weakest_point = d.contact->point_at(
+        0.5 * (bm.segment_begin(predicted.weakest_segment) + bm.segment_end(predicted.weakest_segment)));
   }
   if (!report.stable) {
     for (const auto& candidate : candidates(scene)) {
@@ -166,7 +170,8 @@ StabilityReport predict_stability(const scene::Scene& scene, const SceneDiscreti
         scene::check_family_fits(candidate.scene, bm, degrees);
         const space::MultiplierSpace multipliers(bm, degrees);
         const long long count = multiplier_count(candidate.scene, multipliers);
-        const auto alpha = infsup::predict_alpha(trace_pairing_of(candidate.scene, *d.contact, bm, std::move(degrees), projection));
+        const auto alpha =
+            infsup::predict_alpha(trace_pairing_of(candidate.scene, *d.contact, bm, std::move(degrees), projection));
         if (!alpha.stable()) continue;
         const auto& best = report.alternative;
         if (!best || count > best->nmult || (count == best->nmult && alpha.alpha > best->alpha_predicted))
@@ -182,12 +187,13 @@ StabilityReport predict_stability(const scene::Scene& scene, const SceneDiscreti
         "in the limit h → 0. ",
         pairing_text(scene), report.alpha_predicted, report.threshold, report.weakest_point.x(),
         report.weakest_point.y(), report.pi);
-    report.warning += report.alternative
-                          ? fmt::format("Stable alternative: {} (predicted α = {:.3g}, {} multipliers).",
-                                        report.alternative->edit, report.alternative->alpha_predicted,
-                                        report.alternative->nmult)
-                          : std::string("No stable alternative among p_C lowered and T_{C,H} coarsened by 2: try "
-                                        "`hpcontact advise`.");
+    report.warning +=
+        report.alternative
+            ? fmt::format("Stable alternative: {} (predicted α = {:.3g}, {} multipliers).", report.alternative->edit,
+                          report.alternative->alpha_predicted, report.alternative->nmult)
+            : std::string(
+                  "No stable alternative among p_C lowered and T_{C,H} coarsened by 2: try "
+                  "`hpcontact advise`.");
   }
   report.seconds = clock.seconds();
   return report;
@@ -197,9 +203,10 @@ void act_on_stability(const scene::Scene& scene, const StabilityReport& report,
                       const std::function<void(const std::string&)>& say) {
   if (report.stable || scene.stability == scene::Scene::StabilityPolicy::ignore) return;
   if (scene.stability == scene::Scene::StabilityPolicy::refuse)
-    throw InputError(fmt::format("{}: {} (refused: solve.stability = \"refuse\")", scene.where("solve.stability"),
-                                 report.warning));
-  if (say) say("warning: " + report.warning + " (solve.stability = \"ignore\" silences this, \"refuse\" stops the run)");
+    throw InputError(
+        fmt::format("{}: {} (refused: solve.stability = \"refuse\")", scene.where("solve.stability"), report.warning));
+  if (say)
+    say("warning: " + report.warning + " (solve.stability = \"ignore\" silences this, \"refuse\" stops the run)");
 }
 
 }  // namespace hpcontact::driver

@@ -110,7 +110,7 @@ struct StabilityReport {
   double alpha_predicted = 0.0;  ///< min over the patches of Γ_C of the local α
   double threshold = 0.0;        ///< predicted stable iff alpha_predicted ≥ threshold
   bool stable = true;
-  double pi = 0.0;          ///< Π(h, H, p, p_C) of (20) with θ = 1, largest over the segments
+  double pi = 0.0;            ///< Π(h, H, p, p_C) of (20) with θ = 1, largest over the segments
   mesh::Point weakest_point;  ///< the middle of the segment with the weakest patch
   int patches = 0, distinct_patches = 0;
   double seconds = 0.0;                          ///< the prediction and the search for an alternative

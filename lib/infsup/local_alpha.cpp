@@ -45,7 +45,8 @@ MultiplierColumns multiplier_columns(const TracePairing& pairing, const space::M
     for (int k = 0; k < mesh.n_segments(); ++k) {
       bool meets = false;
       for (const double t : rule.points)
-        meets = meets || pairing.weight(mesh.segment_begin(k) + 0.5 * (t + 1) * (mesh.segment_end(k) - mesh.segment_begin(k))) != 0.0;
+        meets = meets || pairing.weight(mesh.segment_begin(k) +
+                                        0.5 * (t + 1) * (mesh.segment_end(k) - mesh.segment_begin(k))) != 0.0;
       segment_meets[k] = meets;
     }
   }
@@ -169,17 +170,17 @@ double patch_alpha(const TracePairing& pairing, const space::MultiplierSpace& mu
                                           patch.free_left, patch.free_right);
   const int points = (reference_degree + top) / 2 + 1 + (pairing.weight ? 4 : 0);
   // The pairing weighs μ by s; its norm does not.
-  const Eigen::MatrixXd b_trace = patch.columns.transpose() *
-                                  coupling(pairing, multipliers, patch, pieces, trace, points, bool(pairing.weight));
+  const Eigen::MatrixXd b_trace =
+      patch.columns.transpose() * coupling(pairing, multipliers, patch, pieces, trace, points, bool(pairing.weight));
   const Eigen::MatrixXd b_reference =
       patch.columns.transpose() * coupling(pairing, multipliers, patch, pieces, reference, points, false);
   Eigen::MatrixXd s = b_trace * inverse_half_norm(trace) * b_trace.transpose();
   if (master_nodes.size() >= 2) {
     const space::PiecewiseSpace1D master(master_nodes, master_degrees, false, false);
     if (master.n_dofs() > 0) {
-    const Eigen::MatrixXd b_master = patch.columns.transpose() *
-                                     coupling(pairing, multipliers, patch, pieces, master, points, bool(pairing.weight));
-    s += b_master * inverse_half_norm(master) * b_master.transpose();
+      const Eigen::MatrixXd b_master = patch.columns.transpose() * coupling(pairing, multipliers, patch, pieces, master,
+                                                                            points, bool(pairing.weight));
+      s += b_master * inverse_half_norm(master) * b_master.transpose();
     }
   }
   const Eigen::MatrixXd g = b_reference * inverse_half_norm(reference) * b_reference.transpose();
@@ -227,7 +228,8 @@ double density_ratio(const TracePairing& pairing, const Patch& patch) {
   for (int e = patch.first_edge; e < patch.end_edge; ++e) traces += pairing.edge_degrees[e];
   for (std::size_t e = 0; e < pairing.master_edges.size(); ++e)
     if (pairing.master_edges[e][1] > j0 && pairing.master_edges[e][0] < j1)
-      traces += pairing.master_degrees[e] * (std::min(j1, pairing.master_edges[e][1]) - std::max(j0, pairing.master_edges[e][0])) /
+      traces += pairing.master_degrees[e] *
+                (std::min(j1, pairing.master_edges[e][1]) - std::max(j0, pairing.master_edges[e][0])) /
                 (pairing.master_edges[e][1] - pairing.master_edges[e][0]);
   const double covered = mesh.segment_begin(patch.end_segment) - mesh.segment_begin(patch.first_segment);
   return (static_cast<double>(patch.columns.cols()) / covered) / (traces / (j1 - j0));
@@ -257,10 +259,14 @@ PredictedAlpha predict_alpha(const TracePairing& pairing) {
   const auto& edges = pairing.edges;
   // The first edge ending after s, and the first edge beginning at or after s.
   const auto edge_ending_after = [&](double s) {
-    return static_cast<int>(std::partition_point(edges.begin(), edges.end(), [&](const auto& e) { return e[1] <= s + tolerance; }) - edges.begin());
+    return static_cast<int>(
+        std::partition_point(edges.begin(), edges.end(), [&](const auto& e) { return e[1] <= s + tolerance; }) -
+        edges.begin());
   };
   const auto edge_beginning_at = [&](double s) {
-    return static_cast<int>(std::partition_point(edges.begin(), edges.end(), [&](const auto& e) { return e[0] < s - tolerance; }) - edges.begin());
+    return static_cast<int>(
+        std::partition_point(edges.begin(), edges.end(), [&](const auto& e) { return e[0] < s - tolerance; }) -
+        edges.begin());
   };
   std::vector<int> zone_first(mesh.zones().size(), mesh.n_segments()), zone_last(mesh.zones().size(), -1);
   for (int k = 0; k < mesh.n_segments(); ++k) {
@@ -287,7 +293,8 @@ PredictedAlpha predict_alpha(const TracePairing& pairing) {
     patch.free_left = !zone.closed && std::abs(j0 - zone.begin) < tolerance;
     patch.free_right = !zone.closed && std::abs(j1 - zone.end) < tolerance;
     patch.first_row = multipliers.first_dof(patch.first_segment);
-    patch.end_row = multipliers.first_dof(patch.end_segment - 1) + multipliers.segment_degree(patch.end_segment - 1) + 1;
+    patch.end_row =
+        multipliers.first_dof(patch.end_segment - 1) + multipliers.segment_degree(patch.end_segment - 1) + 1;
     // Π on segment k: its longest edge and smallest trace degree.
     double h = 0.0;
     int p = std::numeric_limits<int>::max();
@@ -295,8 +302,8 @@ PredictedAlpha predict_alpha(const TracePairing& pairing) {
       h = std::max(h, edges[e][1] - edges[e][0]);
       p = std::min(p, pairing.edge_degrees[e]);
     }
-    out.pi = std::max(out.pi, stability_indicator(h, mesh.segment_end(k) - mesh.segment_begin(k), p,
-                                                  multipliers.segment_degree(k)));
+    out.pi = std::max(
+        out.pi, stability_indicator(h, mesh.segment_end(k) - mesh.segment_begin(k), p, multipliers.segment_degree(k)));
     std::vector<int> inside;
     for (int c = 0; c < columns.legendre.cols(); ++c)
       if (columns.meets_support[c] && columns.first_row[c] >= patch.first_row && columns.last_row[c] < patch.end_row)

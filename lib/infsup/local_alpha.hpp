@@ -31,7 +31,7 @@ namespace hpcontact::infsup {
 struct TracePairing {
   std::vector<std::array<double, 2>> edges;  ///< the edges of T_h on Γ_C: [s_begin, s_end], in order of s
   std::vector<int> edge_degrees;             ///< the trace's degree on each edge (its cell's p_T)
-  std::vector<double> edge_depths;  ///< each edge's cell's extent normal to the edge; empty: no factor
+  std::vector<double> edge_depths;           ///< each edge's cell's extent normal to the edge; empty: no factor
   /// A contact pair: the master's trace edges as Φ maps them onto the slave's arc length, in
   /// order, with their degrees (empty for one body).
   std::vector<std::array<double, 2>> master_edges;

@@ -56,8 +56,8 @@ std::optional<space::MultiplierFamily> family_of(const std::string& text) {
 }  // namespace
 
 std::vector<std::string> alpha_columns() {
-  return {"problem", "norm", "p",     "pC", "family", "level",       "n",     "m",     "h",
-          "h_min",   "H",    "ratio", "Pi", "alpha",  "alpha_predicted", "alpha_error", "ndofs", "nmult", "seconds"};
+  return {"problem", "norm",  "p",  "pC",    "family",          "level",       "n",     "m",     "h",      "h_min",
+          "H",       "ratio", "Pi", "alpha", "alpha_predicted", "alpha_error", "ndofs", "nmult", "seconds"};
 }
 
 void add_alpha_row(CsvTable& table, const infsup::InfSupRecord& r) {

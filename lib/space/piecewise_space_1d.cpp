@@ -9,8 +9,7 @@
 
 namespace hpcontact::space {
 
-PiecewiseSpace1D::PiecewiseSpace1D(std::vector<double> nodes, std::vector<int> degrees, bool keep_left,
-                                   bool keep_right)
+PiecewiseSpace1D::PiecewiseSpace1D(std::vector<double> nodes, std::vector<int> degrees, bool keep_left, bool keep_right)
     : nodes_(std::move(nodes)), degrees_(std::move(degrees)) {
   HPC_VERIFY(nodes_.size() >= 2 && degrees_.size() + 1 == nodes_.size(), "a partition and one degree per piece");
   HPC_VERIFY(std::adjacent_find(nodes_.begin(), nodes_.end(), std::greater_equal<>()) == nodes_.end(),
@@ -67,8 +66,8 @@ Eigen::MatrixXd gram(const PiecewiseSpace1D& space, bool derivatives) {
       const Eigen::VectorXd& f = derivatives ? v.derivatives : v.values;
       for (std::size_t i = 0; i < v.dofs.size(); ++i)
         for (std::size_t j = 0; j < v.dofs.size(); ++j)
-          out(v.dofs[i], v.dofs[j]) += rule.weights[q] * half * f[static_cast<Eigen::Index>(i)] *
-                                       f[static_cast<Eigen::Index>(j)];
+          out(v.dofs[i], v.dofs[j]) +=
+              rule.weights[q] * half * f[static_cast<Eigen::Index>(i)] * f[static_cast<Eigen::Index>(j)];
     }
   }
   return out;

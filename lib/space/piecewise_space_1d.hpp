@@ -37,8 +37,8 @@ class PiecewiseSpace1D {
  private:
   std::vector<double> nodes_;
   std::vector<int> degrees_;
-  std::vector<int> vertex_dof_;   ///< per node; -1 for an end left out
-  std::vector<int> first_bubble_; ///< per piece: the dof of its bubble of degree 2
+  std::vector<int> vertex_dof_;    ///< per node; -1 for an end left out
+  std::vector<int> first_bubble_;  ///< per piece: the dof of its bubble of degree 2
   int n_dofs_ = 0;
 };
 
