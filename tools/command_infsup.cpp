@@ -26,7 +26,7 @@ namespace {
 
 struct InfSupOptions {
   std::optional<int> p, pc, n;
-  std::optional<std::string> ratio, norm, problem;
+  std::optional<std::string> ratio, norm, problem, family;
   std::optional<double> alpha_tolerance;
   std::string eigensolver = "slepc", distributed_solver = "substructuring";
   std::string csv, mode, scene;
@@ -44,6 +44,7 @@ scene::Scene resolve_scene(const InfSupOptions& o) {
   if (o.ratio) overrides.push_back({"contact_mesh.ratio", *o.ratio, where + " --ratio"});
   if (o.p) overrides.push_back({"discretization.p", static_cast<long long>(*o.p), where + " --p"});
   if (o.pc) overrides.push_back({"discretization.pC", static_cast<long long>(*o.pc), where + " --pc"});
+  if (o.family) overrides.push_back({"contact_mesh.family", *o.family, where + " --family"});
   if (o.norm) overrides.push_back({"infsup.norm", *o.norm, where + " --norm"});
   if (o.problem) overrides.push_back({"infsup.problem", *o.problem, where + " --problem"});
   if (o.alpha_tolerance) overrides.push_back({"infsup.alpha_tol", *o.alpha_tolerance, where + " --alpha-tol"});
@@ -117,6 +118,9 @@ void add_infsup_command(CLI::App& app, CommandAction& action) {
   command->add_option("--n", o->n, "n x n cells (domain.n_x, domain.n_y; §7 scene: 8, h = 2/n)");
   command->add_option("--ratio", o->ratio,
                       "h/H, e.g. 1/2: T_{C,H} has m = n * ratio segments (contact_mesh.ratio; §7 scene: 1)");
+  command->add_option("--family", o->family,
+                      "Multiplier family: discontinuous | standard | standard-modified | dual | dual-modified "
+                      "(contact_mesh.family; default discontinuous)");
   command->add_option("--norm", o->norm, "H^{-1/2} realization: interp | extension (infsup.norm; default interp)");
   command->add_option("--problem", o->problem,
                       "signorini: condition (11); friction: (22) with the scene's s, (1-x)^2 on the §7 scene "

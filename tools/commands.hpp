@@ -27,6 +27,9 @@ void add_work_precision_command(CLI::App& app, CommandAction& action);
 /// Adds `infsup`.
 void add_infsup_command(CLI::App& app, CommandAction& action);
 
+/// Adds `advise`.
+void add_advise_command(CLI::App& app, CommandAction& action);
+
 /// Adds `hertz`.
 void add_hertz_command(CLI::App& app, CommandAction& action);
 

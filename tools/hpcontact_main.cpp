@@ -61,6 +61,7 @@ int main(int argc, char** argv) {
   tools::CommandAction action;
   tools::add_convergence_command(app, action);
   tools::add_infsup_command(app, action);
+  tools::add_advise_command(app, action);
   tools::add_sweep_command(app, action);
   tools::add_solve_command(app, action);
   tools::add_benchmark_command(app, action);

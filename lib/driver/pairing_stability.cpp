@@ -118,9 +118,11 @@ std::string ratio_text(double ratio) {
 }
 
 infsup::TracePairing trace_pairing_of(const scene::Scene& scene, const mesh::ContactBoundary& contact,
+                                      const std::vector<std::array<bool, 2>>& held_zone_ends,
                                       const mesh::BoundaryMesh& boundary_mesh, std::vector<int> segment_degrees,
                                       const mesh::MasterProjection* projection) {
   infsup::TracePairing pairing;
+  pairing.held_zone_ends = held_zone_ends;
   for (const auto& edge : contact.edges()) pairing.edges.push_back({edge.s_begin, edge.s_end});
   pairing.edge_degrees = scene::scene_trace_degrees(scene, contact);
   const auto& mesh = contact.mesh();
@@ -149,7 +151,7 @@ StabilityReport predict_stability(const scene::Scene& scene, const SceneDiscreti
   Stopwatch clock;
   scene::check_family_fits(scene, *d.boundary_mesh, d.segment_degrees);  // its message names the scene's keys
   const auto predicted =
-      infsup::predict_alpha(trace_pairing_of(scene, *d.contact, *d.boundary_mesh, d.segment_degrees, projection));
+      infsup::predict_alpha(trace_pairing_of(scene, *d.contact, d.held_zone_ends, *d.boundary_mesh, d.segment_degrees, projection));
   StabilityReport report;
   report.alpha_predicted = predicted.alpha;
   report.threshold = infsup::kStablePatchAlpha;
@@ -171,7 +173,7 @@ StabilityReport predict_stability(const scene::Scene& scene, const SceneDiscreti
         const space::MultiplierSpace multipliers(bm, degrees);
         const long long count = multiplier_count(candidate.scene, multipliers);
         const auto alpha =
-            infsup::predict_alpha(trace_pairing_of(candidate.scene, *d.contact, bm, std::move(degrees), projection));
+            infsup::predict_alpha(trace_pairing_of(candidate.scene, *d.contact, d.held_zone_ends, bm, std::move(degrees), projection));
         if (!alpha.stable()) continue;
         const auto& best = report.alternative;
         if (!best || count > best->nmult || (count == best->nmult && alpha.alpha > best->alpha_predicted))

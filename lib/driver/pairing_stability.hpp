@@ -14,7 +14,9 @@ namespace hpcontact::driver {
 /// `segment_degrees` as T_{C,H} (the scene's own, or a candidate's) and, for the scalar friction
 /// pairing ([infsup] problem = "friction"), the weight s. The trace degrees are the scene's p.
 /// A two-body scene with `projection` (Φ onto the master's Γ_C) adds the master's traces.
+/// `held_zone_ends` (SceneMesh::held_zone_ends) tells where Γ_D holds a zone's end.
 infsup::TracePairing trace_pairing_of(const scene::Scene& scene, const mesh::ContactBoundary& contact,
+                                      const std::vector<std::array<bool, 2>>& held_zone_ends,
                                       const mesh::BoundaryMesh& boundary_mesh, std::vector<int> segment_degrees,
                                       const mesh::MasterProjection* projection = nullptr);
 

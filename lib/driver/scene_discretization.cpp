@@ -27,6 +27,25 @@ std::unique_ptr<mesh::Mesh> contact_cells_of(const mesh::Mesh& mesh) {
   return std::make_unique<mesh::Mesh>(mesh.extract(cells));
 }
 
+// Per zone of Γ_C, whether a Dirichlet edge of `mesh` touches its start and its end (closed
+// zones: never).
+std::vector<std::array<bool, 2>> held_zone_ends_of(const mesh::Mesh& mesh) {
+  const mesh::ContactBoundary contact(mesh);
+  std::vector<mesh::Point> dirichlet_vertices;
+  for (const int e : mesh.boundary_edges())
+    if (mesh.edge_part(e) == mesh::BoundaryPart::dirichlet)
+      for (const int v : mesh.edge(e)) dirichlet_vertices.push_back(mesh.vertex(v));
+  const auto held = [&](const mesh::Point& x) {
+    return std::any_of(dirichlet_vertices.begin(), dirichlet_vertices.end(),
+                       [&](const mesh::Point& y) { return (x - y).norm() <= 1e-12 * (1 + x.norm()); });
+  };
+  std::vector<std::array<bool, 2>> out;
+  for (const auto& zone : contact.zones())
+    out.push_back(zone.closed ? std::array<bool, 2>{false, false}
+                              : std::array<bool, 2>{held(contact.point_at(zone.s_begin)), held(contact.point_at(zone.s_end))});
+  return out;
+}
+
 }  // namespace
 
 SceneMesh build_scene_mesh_on_first_rank(const scene::Scene& scene, const linalg::Distribution& distribution) {
@@ -38,6 +57,7 @@ SceneMesh build_scene_mesh_on_first_rank(const scene::Scene& scene, const linalg
   if (!distribution.distributed()) {
     build_whole();
     out.contact_cells = contact_cells_of(*out.mesh);
+    out.held_zone_ends = held_zone_ends_of(*out.mesh);
     return out;
   }
   // The first rank builds T_h and its degrees, and sends Γ_C's cells: the operators (and the
@@ -47,11 +67,16 @@ SceneMesh build_scene_mesh_on_first_rank(const scene::Scene& scene, const linalg
         build_whole();
         ByteWriter bytes_out;
         contact_cells_of(*out.mesh)->pack(bytes_out);
+        std::vector<unsigned char> held;
+        for (const auto& ends : held_zone_ends_of(*out.mesh)) held.insert(held.end(), ends.begin(), ends.end());
+        bytes_out.put(held);
         return bytes_out.take();
       },
       distribution.ranks);
   ByteReader in(bytes);
   out.contact_cells = std::make_unique<mesh::Mesh>(mesh::Mesh::unpack(in));
+  const auto held = in.get_vector<unsigned char>();
+  for (std::size_t z = 0; z + 1 < held.size(); z += 2) out.held_zone_ends.push_back({held[z] != 0, held[z + 1] != 0});
   return out;
 }
 
@@ -62,6 +87,7 @@ std::unique_ptr<SceneDiscretization> discretize_scene(const scene::Scene& scene,
   d->mesh = std::move(built.mesh);
   d->cell_degrees = std::move(built.cell_degrees);
   d->contact_cells = std::move(built.contact_cells);
+  d->held_zone_ends = std::move(built.held_zone_ends);
   d->contact = std::make_unique<mesh::ContactBoundary>(*d->contact_cells);
   d->boundary_mesh = std::make_unique<mesh::BoundaryMesh>(scene::build_scene_boundary_mesh(scene, *d->contact));
   std::array<int, 2> extremes{};  // the smallest and largest degree, from the first rank

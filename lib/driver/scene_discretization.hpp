@@ -31,6 +31,7 @@ struct SceneDiscretization {
   std::unique_ptr<mesh::Mesh> contact_cells;
   std::unique_ptr<mesh::ContactBoundary> contact;  ///< refers to `contact_cells`
   std::unique_ptr<mesh::BoundaryMesh> boundary_mesh;
+  std::vector<std::array<bool, 2>> held_zone_ends;  ///< SceneMesh::held_zone_ends
   /// p_T per cell of T_h: where `mesh` is, emptied with it (release_whole_mesh), as long as it.
   std::vector<int> cell_degrees;
   int smallest_cell_degree = 0, largest_cell_degree = 0;  ///< of cell_degrees, on every rank
@@ -43,6 +44,9 @@ struct SceneMesh {
   std::unique_ptr<mesh::Mesh> mesh;  ///< distributed: on the first rank only
   std::vector<int> cell_degrees;     ///< where `mesh` is
   std::unique_ptr<mesh::Mesh> contact_cells;
+  /// Per zone of Γ_C (ContactBoundary's order), whether each end lies on Γ_D, where the traces
+  /// vanish: what the local α predictor needs of the mesh beyond Γ_C's cells. On every rank.
+  std::vector<std::array<bool, 2>> held_zone_ends;
 };
 /// The scene's T_h and degrees where they are built (serial: here; distributed: on the first rank
 /// of `distribution` only, null and empty on the others), Γ_C's cells on every rank. Collective on

@@ -73,7 +73,8 @@ MultiplierColumns multiplier_columns(const TracePairing& pairing, const space::M
 struct Patch {
   int first_edge = 0, end_edge = 0;
   int first_segment = 0, end_segment = 0;
-  bool free_left = false, free_right = false;  // J ends at the end of an open zone
+  bool zone_end_left = false, zone_end_right = false;  // J ends at the end of an open zone
+  bool free_left = false, free_right = false;          // ... where Γ_D does not hold the traces
   int first_row = 0, end_row = 0;
   Eigen::MatrixXd columns;  // R, shape (end_row - first_row, functions)
 };
@@ -161,13 +162,14 @@ double patch_alpha(const TracePairing& pairing, const space::MultiplierSpace& mu
     top = std::max(top, pairing.master_degrees[e]);
   }
   // The reference for the dual norm: continuous P_{top+2} on the common refinement of edges and
-  // segments in J, rich enough that no multiplier of the patch is invisible to it.
+  // segments in J, rich enough that no multiplier of the patch is invisible to it, and free at a
+  // zone's end even where Γ_D holds the traces: ‖μ‖_{-1/2} is the dual of H^{1/2}(Γ_C), as in α.
   const auto pieces = merged(merged(edge_nodes, segment_nodes, tolerance), master_nodes, tolerance);
   const int reference_degree = top + 2;
   const space::PiecewiseSpace1D trace(edge_nodes, edge_degrees, patch.free_left, patch.free_right);
   if (trace.n_dofs() == 0) return 0.0;  // one edge of degree 1 with both ends held
   const space::PiecewiseSpace1D reference(pieces, std::vector<int>(pieces.size() - 1, reference_degree),
-                                          patch.free_left, patch.free_right);
+                                          patch.zone_end_left, patch.zone_end_right);
   const int points = (reference_degree + top) / 2 + 1 + (pairing.weight ? 4 : 0);
   // The pairing weighs μ by s; its norm does not.
   const Eigen::MatrixXd b_trace =
@@ -193,7 +195,8 @@ double patch_alpha(const TracePairing& pairing, const space::MultiplierSpace& mu
 // the free ends and R (no weight: with one the data differ from patch to patch).
 std::string patch_key(const TracePairing& pairing, const space::MultiplierSpace& multipliers, const Patch& patch) {
   const double a = pairing.edges[patch.first_edge][0], length = pairing.edges[patch.end_edge - 1][1] - a;
-  std::string key = std::to_string(patch.free_left) + std::to_string(patch.free_right) + "|";
+  std::string key = std::to_string(patch.free_left) + std::to_string(patch.free_right) +
+                    std::to_string(patch.zone_end_left) + std::to_string(patch.zone_end_right) + "|";
   const auto add = [&](double x) { key += std::to_string(std::lround((x - a) / length * 1e9)) + ","; };
   for (int e = patch.first_edge; e < patch.end_edge; ++e) {
     add(pairing.edges[e][1]);
@@ -290,8 +293,11 @@ PredictedAlpha predict_alpha(const TracePairing& pairing) {
     if (mesh.segment_begin(patch.first_segment) < j0 - tolerance) ++patch.first_segment;
     patch.end_segment = mesh.segment_at(j1 - tolerance) + 1;
     if (mesh.segment_end(patch.end_segment - 1) > j1 + tolerance) --patch.end_segment;
-    patch.free_left = !zone.closed && std::abs(j0 - zone.begin) < tolerance;
-    patch.free_right = !zone.closed && std::abs(j1 - zone.end) < tolerance;
+    const auto held = [&](int end) { return !pairing.held_zone_ends.empty() && pairing.held_zone_ends[z][end]; };
+    patch.zone_end_left = !zone.closed && std::abs(j0 - zone.begin) < tolerance;
+    patch.zone_end_right = !zone.closed && std::abs(j1 - zone.end) < tolerance;
+    patch.free_left = patch.zone_end_left && !held(0);
+    patch.free_right = patch.zone_end_right && !held(1);
     patch.first_row = multipliers.first_dof(patch.first_segment);
     patch.end_row =
         multipliers.first_dof(patch.end_segment - 1) + multipliers.segment_degree(patch.end_segment - 1) + 1;

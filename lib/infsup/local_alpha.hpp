@@ -2,7 +2,7 @@
 // macro-element technique: for each segment K of T_{C,H}, the patch J made of the edges of T_h
 // under K and its two neighbours, and
 //   α_J = min_{μ ∈ M(J)} sup_{v ∈ V_0(J)} (μ, v)_{0,J} / (‖μ‖_{-1/2,J} ‖v‖_{1/2,J}),
-// with V_0(J) the traces on J that vanish at its ends (not at an end of an open zone of Γ_C),
+// with V_0(J) the traces on J that vanish at its ends (not at a free end of an open zone of Γ_C),
 // M(J) the multipliers of the segments inside J, ‖·‖_{1/2,J} the discrete interpolation norm of
 // the trace space and ‖·‖_{-1/2,J} its dual over a richer reference space on J. α_J does not
 // change with the patch's size, and a multiplier that no trace of its patch sees (the
@@ -37,6 +37,8 @@ struct TracePairing {
   std::vector<std::array<double, 2>> master_edges;
   std::vector<int> master_degrees;
   const mesh::BoundaryMesh* boundary_mesh = nullptr;  ///< T_{C,H} with Γ_C's zones
+  /// Per zone, whether the traces vanish at its start and end (Γ_D there); empty: free ends.
+  std::vector<std::array<bool, 2>> held_zone_ends;
   std::vector<int> segment_degrees;                   ///< p_C per segment
   space::MultiplierFamily family;
   /// s of the friction pairing (22) as a function of the arc length; empty: (11), no weight.

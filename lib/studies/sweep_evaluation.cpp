@@ -173,7 +173,7 @@ infsup::InfSupRecord SweepEvaluation::evaluate_point(const SweepPoint& point, co
   auto record = infsup::make_infsup_record(pairing, infsup::analyse_infsup(setup, backend_));
   record.alpha_predicted =
       infsup::predict_alpha(
-          driver::trace_pairing_of(scene, group.contact, boundary, setup.segment_degrees, group.projection.get()))
+          driver::trace_pairing_of(scene, group.contact, group.built.held_zone_ends, boundary, setup.segment_degrees, group.projection.get()))
           .alpha;
   return record;
 }
