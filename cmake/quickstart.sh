@@ -169,5 +169,15 @@ for study in stability families; do
 done
 publish results/two_body_stability/stable_map.png studies/two_bodies/stable_map.png
 publish results/two_body_families/stable_map.png studies/two_bodies/families_map.png
+section "local α predictor against the global α: every sweep above and studies/stability/predictor -> results/predictor_check"
+for study in stability/predictor/perturbed stability/predictor/gmsh_triangles stability/predictor/curved \
+  stability/predictor/degree_rules triangles/stability stability/friction; do
+  build/bin/hpcontact sweep "studies/$study.toml" --out "results/predictor_sweep_${study//\//_}" --restart
+done
+"$python" plots/plot_predictor_check.py results/predictor_check results/stability results/stability_full \
+  results/stability_graded results/stability_graded_anisotropic results/elastic_stability results/two_body_stability \
+  results/two_body_families results/predictor_sweep_*
+publish results/predictor_check/predictor_check.png studies/stability/predictor/predictor_check.png
+publish results/predictor_check/predictor_check.csv studies/stability/predictor/predictor_check.csv
 stage_done "$section_name"
 echo "quickstart: done; CSV and PNG in results/" >&2

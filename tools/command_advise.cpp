@@ -43,7 +43,8 @@ int run_advise(const AdviseOptions& o) {
 
   // 2. Predict every candidate, the global α of the best two.
   const auto advice = studies::advise_pairing(
-      scene, {.alpha_min = o.alpha_min, .progress = [](const std::string& line) { fmt::print(stderr, "# {}\n", line); }});
+      scene,
+      {.alpha_min = o.alpha_min, .progress = [](const std::string& line) { fmt::print(stderr, "# {}\n", line); }});
 
   // 3. Report and write advice.csv.
   fmt::print("{} candidates for p = {}; admitted: predicted alpha >= {:.3g}\n", advice.candidates.size(), advice.p,
@@ -58,7 +59,8 @@ int run_advise(const AdviseOptions& o) {
                                                        : fmt::format("{}", fmt::join(best.edits, "; ")));
   }
   const auto table = studies::advice_table(advice);
-  driver::write_run_outputs(o.out, {}, {}, [&](const std::filesystem::path& folder) { table.write(folder / "advice.csv"); });
+  driver::write_run_outputs(o.out, {}, {},
+                            [&](const std::filesystem::path& folder) { table.write(folder / "advice.csv"); });
   fmt::print("# wrote {}/advice.csv in {:.2f} s\n", o.out, advice.seconds);
   return 0;
 }
@@ -67,8 +69,9 @@ int run_advise(const AdviseOptions& o) {
 
 void add_advise_command(CLI::App& app, CommandAction& action) {
   auto* command = app.add_subcommand(
-      "advise", "Which p_C, T_{C,H} and multiplier family to use with a scene's mesh and p: candidates ranked by the "
-                "predicted inf-sup constant and the multipliers they resolve");
+      "advise",
+      "Which p_C, T_{C,H} and multiplier family to use with a scene's mesh and p: candidates ranked by the "
+      "predicted inf-sup constant and the multipliers they resolve");
   auto o = std::make_shared<AdviseOptions>();
   command->add_option("scene", o->scene, "Scene file (TOML); keys in docs/scene_keys.md")
       ->required()

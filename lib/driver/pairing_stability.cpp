@@ -150,8 +150,8 @@ StabilityReport predict_stability(const scene::Scene& scene, const SceneDiscreti
                                   const mesh::MasterProjection* projection) {
   Stopwatch clock;
   scene::check_family_fits(scene, *d.boundary_mesh, d.segment_degrees);  // its message names the scene's keys
-  const auto predicted =
-      infsup::predict_alpha(trace_pairing_of(scene, *d.contact, d.held_zone_ends, *d.boundary_mesh, d.segment_degrees, projection));
+  const auto predicted = infsup::predict_alpha(
+      trace_pairing_of(scene, *d.contact, d.held_zone_ends, *d.boundary_mesh, d.segment_degrees, projection));
   StabilityReport report;
   report.alpha_predicted = predicted.alpha;
   report.threshold = infsup::kStablePatchAlpha;
@@ -172,8 +172,8 @@ StabilityReport predict_stability(const scene::Scene& scene, const SceneDiscreti
         scene::check_family_fits(candidate.scene, bm, degrees);
         const space::MultiplierSpace multipliers(bm, degrees);
         const long long count = multiplier_count(candidate.scene, multipliers);
-        const auto alpha =
-            infsup::predict_alpha(trace_pairing_of(candidate.scene, *d.contact, d.held_zone_ends, bm, std::move(degrees), projection));
+        const auto alpha = infsup::predict_alpha(
+            trace_pairing_of(candidate.scene, *d.contact, d.held_zone_ends, bm, std::move(degrees), projection));
         if (!alpha.stable()) continue;
         const auto& best = report.alternative;
         if (!best || count > best->nmult || (count == best->nmult && alpha.alpha > best->alpha_predicted))
@@ -201,12 +201,13 @@ StabilityReport predict_stability(const scene::Scene& scene, const SceneDiscreti
   return report;
 }
 
-void act_on_stability(const scene::Scene& scene, const StabilityReport& report,
+void act_on_stability(const scene::Scene& scene, StabilityReport& report,
                       const std::function<void(const std::string&)>& say) {
   if (report.stable || scene.stability == scene::Scene::StabilityPolicy::ignore) return;
   if (scene.stability == scene::Scene::StabilityPolicy::refuse)
     throw InputError(
         fmt::format("{}: {} (refused: solve.stability = \"refuse\")", scene.where("solve.stability"), report.warning));
+  report.warned = true;
   if (say)
     say("warning: " + report.warning + " (solve.stability = \"ignore\" silences this, \"refuse\" stops the run)");
 }

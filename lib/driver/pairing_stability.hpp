@@ -26,9 +26,9 @@ infsup::TracePairing trace_pairing_of(const scene::Scene& scene, const mesh::Con
 StabilityReport predict_stability(const scene::Scene& scene, const SceneDiscretization& d,
                                   const mesh::MasterProjection* projection = nullptr);
 
-/// Acts on `report` as `[solve] stability` says: prints the warning through `say` (warn), or
-/// @throws InputError with it (refuse).
-void act_on_stability(const scene::Scene& scene, const StabilityReport& report,
+/// Acts on `report` as `[solve] stability` says: prints the warning through `say` and marks it
+/// warned (warn), or @throws InputError with it (refuse).
+void act_on_stability(const scene::Scene& scene, StabilityReport& report,
                       const std::function<void(const std::string&)>& say);
 
 /// A ratio h/H as a scene writes it: a fraction of small whole numbers where it is one ("1/2"),

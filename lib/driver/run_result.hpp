@@ -115,7 +115,8 @@ struct StabilityReport {
   int patches = 0, distinct_patches = 0;
   double seconds = 0.0;                          ///< the prediction and the search for an alternative
   std::optional<StableAlternative> alternative;  ///< when not stable and one was found
-  std::string warning;                           ///< when not stable: what the run printed
+  std::string warning;                           ///< when not stable: the warning's text
+  bool warned = false;                           ///< the run warned ([solve] stability = "warn")
 };
 
 struct RunResult {

@@ -71,6 +71,7 @@ json stability_json(const StabilityReport& s) {
                         {"alpha_predicted", s.alternative->alpha_predicted},
                         {"nmult", s.alternative->nmult}};
   if (!s.warning.empty()) j["warning"] = s.warning;
+  j["warned"] = s.warned;
   return j;
 }
 

@@ -18,7 +18,7 @@ namespace hpcontact::studies {
 namespace {
 
 // The ratios h/H tried: T_h's edges, T_{C,H} not nested in T_h, and coarser ones.
-const std::vector<std::pair<double, std::string>> kRatios{{1.0, "1"},   {0.75, "3/4"},  {2.0 / 3, "2/3"},
+const std::vector<std::pair<double, std::string>> kRatios{{1.0, "1"},   {0.75, "3/4"},    {2.0 / 3, "2/3"},
                                                           {0.5, "1/2"}, {1.0 / 3, "1/3"}, {0.25, "1/4"}};
 
 // The edits that turn `scene` into `c`.
@@ -27,7 +27,7 @@ std::vector<std::string> edits_of(const scene::Scene& scene, const AdviceCandida
   if (!scene.pc.rule.empty() || scene.pc.value != c.pc) edits.push_back(fmt::format("[discretization] pC = {}", c.pc));
   const bool same_ratio = scene.ratio.size() == 1 && std::abs(scene.ratio.front().value - c.ratio.value) < 1e-12;
   if (!same_ratio) {
-    const std::string replaced = !scene.m.empty() ? " (in place of m)"
+    const std::string replaced = !scene.m.empty()             ? " (in place of m)"
                                  : !scene.breakpoints.empty() ? " (in place of breakpoints)"
                                  : scene.ratio.size() > 1     ? " (one ratio for every zone)"
                                                               : "";
@@ -90,7 +90,8 @@ PairingAdvice advise_pairing(const scene::Scene& scene, const AdviceOptions& opt
           const space::MultiplierSpace multipliers(boundary, degrees);
           c.nmult = discontinuous ? multipliers.n_dofs() : space::family_basis(multipliers, family).n_functions();
           c.alpha_predicted =
-              infsup::predict_alpha(driver::trace_pairing_of(candidate, contact, base->d->held_zone_ends, boundary, std::move(degrees), projection))
+              infsup::predict_alpha(driver::trace_pairing_of(candidate, contact, base->d->held_zone_ends, boundary,
+                                                             std::move(degrees), projection))
                   .alpha;
         } catch (const InputError&) {
           continue;  // a ratio without whole segments on this mesh, a family that does not fit
@@ -100,8 +101,9 @@ PairingAdvice advise_pairing(const scene::Scene& scene, const AdviceOptions& opt
         advice.candidates.push_back(std::move(c));
       }
   if (advice.candidates.empty())
-    throw InputError(scene.file + ": no multiplier discretization fits this mesh (no ratio h/H of 1, 3/4, 2/3, 1/2, "
-                                  "1/3, 1/4 gives whole segments)");
+    throw InputError(scene.file +
+                     ": no multiplier discretization fits this mesh (no ratio h/H of 1, 3/4, 2/3, 1/2, "
+                     "1/3, 1/4 gives whole segments)");
   double best = 0.0;
   for (const auto& c : advice.candidates) best = std::max(best, c.alpha_predicted);
   advice.alpha_min = options.alpha_min.value_or(std::max(0.1 * best, infsup::kStablePatchAlpha));
@@ -124,14 +126,17 @@ PairingAdvice advise_pairing(const scene::Scene& scene, const AdviceOptions& opt
 }
 
 io::CsvTable advice_table(const PairingAdvice& advice) {
-  io::CsvTable table({"zone", "p", "pC", "ratio", "family", "constraint_points", "alpha_predicted", "alpha",
-                      "unknowns", "recommended"});
+  io::CsvTable table({"zone", "p", "pC", "ratio", "family", "constraint_points", "alpha_predicted", "alpha", "unknowns",
+                      "recommended"});
   for (std::size_t i = 0; i < advice.candidates.size(); ++i) {
     const auto& c = advice.candidates[i];
     table.add_row({std::string("all"), advice.p, static_cast<long long>(c.pc), c.ratio.text, space::to_string(c.family),
-                   c.constraint_points ? io::CsvCell(static_cast<long long>(*c.constraint_points)) : io::CsvCell(std::string("nodes")),
+                   c.constraint_points ? io::CsvCell(static_cast<long long>(*c.constraint_points))
+                                       : io::CsvCell(std::string("nodes")),
                    c.alpha_predicted, c.alpha ? io::CsvCell(*c.alpha) : io::CsvCell(std::string()), c.unknowns,
-                   std::string(advice.recommended == i ? "yes" : advice.runner_up == i ? "runner-up" : "no")});
+                   std::string(advice.recommended == i ? "yes"
+                               : advice.runner_up == i ? "runner-up"
+                                                       : "no")});
   }
   return table;
 }

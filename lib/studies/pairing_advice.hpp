@@ -21,7 +21,7 @@ struct AdviceCandidate {
   space::MultiplierFamily family;
   std::optional<int> constraint_points;  ///< per segment (p_C + 1); none for the families (their nodes)
   double alpha_predicted = 0.0;
-  std::optional<double> alpha;  ///< the global α (`hpcontact infsup`), for the recommended row and its runner-up
+  std::optional<double> alpha;        ///< the global α (`hpcontact infsup`), for the recommended row and its runner-up
   long long nmult = 0, unknowns = 0;  ///< multiplier functions; unknowns of the primal space plus those
   bool admitted = false;              ///< alpha_predicted ≥ the advice's alpha_min
   std::vector<std::string> edits;     ///< the scene edits that make the scene this candidate

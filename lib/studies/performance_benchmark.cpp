@@ -17,6 +17,7 @@
 #include "core/error.hpp"
 #include "core/timer.hpp"
 #include "driver/elastic_scene.hpp"
+#include "driver/pairing_stability.hpp"
 #include "driver/scene_discretization.hpp"
 #include "infsup/infsup_analysis.hpp"
 #include "io/toml_reader.hpp"
@@ -44,13 +45,14 @@ PerformanceBenchmark read_performance_benchmark(const std::string& path) {
       throw_bad_input(path, "benchmark.n", std::to_string(n), "even, with n · ratio a whole number >= 1");
     out.levels.push_back(static_cast<int>(n));
   }
-  const std::vector<std::string> allowed{"signorini", "friction", "friction_s", "alpha",  "alpha_extension",
-                                         "assembled", "elastic",  "two_body",   "startup"};
+  const std::vector<std::string> allowed{"signorini",       "friction",  "friction_s", "alpha",    "alpha_predicted",
+                                         "alpha_extension", "assembled", "elastic",    "two_body", "startup"};
   out.kinds = table.string_list("kinds", allowed);
   for (const auto& kind : out.kinds)
     if (std::find(allowed.begin(), allowed.end(), kind) == allowed.end())
       throw_bad_input(path, "benchmark.kinds", kind,
-                      "any of signorini, friction, friction_s, alpha, alpha_extension, assembled, elastic, two_body, "
+                      "any of signorini, friction, friction_s, alpha, alpha_predicted, alpha_extension, assembled, "
+                      "elastic, two_body, "
                       "startup");
   table.reject_unknown_keys();
   root.reject_unknown_keys();
@@ -115,6 +117,21 @@ BenchmarkRow alpha_row(const driver::SceneDiscretization& d, const scene::Scene&
   row.seconds_assembly = result.seconds_assembly;
   row.seconds_baseline = linear_ag.seconds_baseline;
   row.seconds = result.seconds - result.seconds_assembly;
+  return row;
+}
+
+// The local α predictor of a solve's stability report (kind "alpha_predicted") against the
+// global α of the same pairing (interpolation norm), its operators included: what the report costs.
+BenchmarkRow predictor_row(const driver::SceneDiscretization& d, const scene::Scene& scene, const BenchmarkRow& base,
+                           const BenchmarkRow& alpha) {
+  BenchmarkRow row = base;
+  row.kind = "alpha_predicted";
+  Stopwatch clock;
+  const auto pairing =
+      driver::trace_pairing_of(scene, *d.contact, d.held_zone_ends, *d.boundary_mesh, d.segment_degrees);
+  infsup::predict_alpha(pairing);
+  row.seconds = clock.seconds();
+  row.seconds_baseline = alpha.seconds_assembly + alpha.seconds;
   return row;
 }
 
@@ -234,17 +251,21 @@ std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& 
     add(linear_k);
 
     for (const auto& kind : benchmark.kinds)
-      if (kind != "alpha" && kind != "alpha_extension" && kind != "assembled" && kind != "elastic" &&
-          kind != "two_body" && kind != "startup")
+      if (kind != "alpha" && kind != "alpha_predicted" && kind != "alpha_extension" && kind != "assembled" &&
+          kind != "elastic" && kind != "two_body" && kind != "startup")
         add(contact_row(kind, scene, *discretization, base, linear_k));
     BenchmarkRow linear_ag = base;
     linear_ag.kind = "linear_AG";
-    if (has("alpha") || has("alpha_extension") || has("assembled")) {
+    if (has("alpha") || has("alpha_predicted") || has("alpha_extension") || has("assembled")) {
       linear_ag.seconds_baseline = linear_ag.seconds =
           time_linear_solve<assembly::CondensedFactor>(load, space, 1.0, 1.0);
       add(linear_ag);
     }
-    if (has("alpha")) add(alpha_row(*discretization, scene, base, linear_ag, infsup::GramNorm::interpolation));
+    if (has("alpha") || has("alpha_predicted")) {
+      const auto alpha = alpha_row(*discretization, scene, base, linear_ag, infsup::GramNorm::interpolation);
+      if (has("alpha")) add(alpha);
+      if (has("alpha_predicted")) add(predictor_row(*discretization, scene, base, alpha));
+    }
     if (has("alpha_extension")) add(alpha_row(*discretization, scene, base, linear_ag, infsup::GramNorm::extension));
     // The same solves on the assembled K and A_G, as ratios to the condensed ones: what static
     // condensation saves in time, and (peak_rss_mb) in memory.

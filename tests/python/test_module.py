@@ -115,3 +115,20 @@ def test_list_overrides_reach_the_scene_per_zone():
     assert result.summary["signorini"]["nmult"] == (4 + 8) * 2
     with pytest.raises(hpcontact.InputError, match="one per zone"):
         hpcontact.solve(two_zones, {"contact_mesh.ratio": [1, 1, 1]}, effects=["signorini"])
+
+
+def test_an_unstable_pairing_warns_and_advise_recommends_what_infsup_confirms(tmp_path):
+    # p = 4, p_C = 3 on T_h's edges: predicted unstable, a StabilityWarning naming the alternative.
+    with pytest.warns(hpcontact.StabilityWarning, match=r"Stable alternative: \[discretization\] pC = 2"):
+        result = hpcontact.solve(FIGURE1, {"discretization.p": 4, "discretization.pC": 3, "contact_mesh.ratio": 1},
+                                 effects=["signorini"])
+    assert not result.run.stability.stable and result.summary["stability"]["warned"]
+    assert result.run.stability.alternative.edit == "[discretization] pC = 2"
+    # advise: advice.csv written, its recommended row's α is hpcontact infsup's of that row.
+    advice = hpcontact.advise(FIGURE1, out=tmp_path / "advice")
+    assert (tmp_path / "advice" / "advice.csv").exists()
+    best = advice.recommended
+    assert best["alpha_predicted"] >= advice.alpha_min and advice.edits
+    cli = subprocess.run([CLI, "infsup", "--scene", FIGURE1, "--pc", str(int(best["pC"])), "--ratio", best["ratio"],
+                          "--family", best["family"]], check=True, capture_output=True, text=True).stdout
+    assert float(cli.split("alpha = ")[1].split()[0]) == best["alpha"]

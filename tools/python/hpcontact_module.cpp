@@ -15,9 +15,11 @@
 #include "core/petsc_session.hpp"
 #include "driver/scene_run.hpp"
 #include "driver/summary_json.hpp"
+#include "io/atomic_file.hpp"
 #include "run_result_bindings.hpp"
 #include "scene/scene_keys.hpp"
 #include "scene/scene_reader.hpp"
+#include "studies/pairing_advice.hpp"
 #include "studies/stability_sweep.hpp"
 #include "studies/sweep_verdicts.hpp"
 
@@ -233,6 +235,27 @@ PYBIND11_MODULE(_hpcontact, m) {
       },
       py::arg("study"), py::arg("out"),
       "Runs a stability sweep into `out` (alpha.csv, resumable; verdicts.csv): the two file paths");
+  m.def(
+      "run_advice",
+      [](const scene::Scene& scene, std::optional<double> alpha_min, const std::filesystem::path& out) {
+        if (!out.empty()) io::check_output_directory(out);
+        const auto advice = [&] {
+          py::gil_scoped_release release;
+          return studies::advise_pairing(scene, {.alpha_min = alpha_min});
+        }();
+        const auto table = studies::advice_table(advice);
+        if (!out.empty()) {
+          io::ensure_writable_directory(out);
+          table.write(out / "advice.csv");
+        }
+        py::list edits;
+        if (advice.recommended)
+          for (const auto& edit : advice.candidates[*advice.recommended].edits) edits.append(edit);
+        return py::make_tuple(columns_of(table), edits, advice.alpha_min);
+      },
+      py::arg("scene"), py::arg("alpha_min") = py::none(), py::arg("out") = std::filesystem::path(),
+      "The candidates of `hpcontact advise` as advice.csv's columns (written to out/advice.csv if given), the "
+      "recommendation's scene edits, alpha_min");
   m.def("scene_keys", [] {
     py::list keys;
     for (const auto& key : scene::scene_keys())

@@ -51,6 +51,19 @@ void bind_run_result(py::module_& m) {
       .def_property_readonly("h", [](const InfSupSummary& a) { return a.record.h; })
       .def_property_readonly("H", [](const InfSupSummary& a) { return a.record.H; })
       .def_readonly("zone_alpha", &InfSupSummary::zone_alpha);
+  py::class_<driver::StableAlternative>(m, "StableAlternative", "A scene edit the predictor finds stable")
+      .def_readonly("edit", &driver::StableAlternative::edit)
+      .def_readonly("alpha_predicted", &driver::StableAlternative::alpha_predicted)
+      .def_readonly("nmult", &driver::StableAlternative::nmult);
+  py::class_<driver::StabilityReport>(m, "StabilityReport", "The pairing's stability as predicted before the solve")
+      .def_readonly("alpha_predicted", &driver::StabilityReport::alpha_predicted)
+      .def_readonly("threshold", &driver::StabilityReport::threshold)
+      .def_readonly("stable", &driver::StabilityReport::stable)
+      .def_readonly("pi", &driver::StabilityReport::pi)
+      .def_readonly("alternative", &driver::StabilityReport::alternative)
+      .def_readonly("warning", &driver::StabilityReport::warning)
+      .def_readonly("warned", &driver::StabilityReport::warned)
+      .def_readonly("seconds", &driver::StabilityReport::seconds);
   py::class_<RunResult>(m, "RunResult", "What a scene run computed")
       .def_readonly("scene", &RunResult::scene)
       .def_readonly("effects", &RunResult::effects)
@@ -62,6 +75,7 @@ void bind_run_result(py::module_& m) {
       .def_readonly("nmult", &RunResult::nmult)
       .def_readonly("contacts", &RunResult::contacts)
       .def_readonly("infsup", &RunResult::infsup)
+      .def_readonly("stability", &RunResult::stability)
       .def_readonly("seconds_total", &RunResult::seconds_total)
       .def("contact", &RunResult::contact, py::arg("problem"), py::return_value_policy::reference_internal,
            "The result of the contact problem named `problem` (IndexError if it did not run)");

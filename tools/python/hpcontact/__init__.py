@@ -19,6 +19,7 @@ Errors in the input raise hpcontact.InputError (a ValueError) with the command-l
 import csv
 import os
 import tempfile
+import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -27,7 +28,12 @@ from ._hpcontact import InputError, Scene, read_scene, scene_from_dict, scene_ke
 from . import _hpcontact
 
 __all__ = ["InputError", "Scene", "read_scene", "scene_from_dict", "scene_keys", "scene", "solve", "infsup",
-           "sweep", "Result", "InfSup"]
+           "sweep", "advise", "Result", "InfSup", "Advice", "StabilityWarning"]
+
+
+class StabilityWarning(UserWarning):
+    """A solve's pairing is predicted unstable ([solve] stability = "warn"): the message names the
+    predicted α, where, and a stable alternative."""
 
 
 def scene(source, overrides=None, path=None):
@@ -83,6 +89,9 @@ def solve(source, overrides=None, effects=None, out=None, path=None):
         overrides["run.effects"] = list(effects)
     checked = scene(source, overrides, path)
     run, summary, tables = _hpcontact.run_scene(checked, os.fspath(out) if out is not None else "")
+    stability = summary.get("stability", {})
+    if stability.get("warned"):
+        warnings.warn(stability["warning"], StabilityWarning, stacklevel=2)
     return Result(run, summary, tables)
 
 
@@ -129,3 +138,26 @@ def sweep(study, out=None):
             return sweep(study, folder)
     alpha_csv, verdicts_csv = _hpcontact.run_sweep(os.fspath(study), os.fspath(out))
     return _read_columns(alpha_csv), _read_columns(verdicts_csv)
+
+
+@dataclass
+class Advice:
+    """What `hpcontact advise` finds for a scene's mesh and p: every candidate (advice.csv's
+    columns as arrays: zone, p, pC, ratio, family, constraint_points, alpha_predicted, alpha,
+    unknowns, recommended), the recommended row, the scene edits that apply it, and alpha_min."""
+
+    candidates: dict
+    recommended: dict
+    edits: list
+    alpha_min: float
+
+
+def advise(source, overrides=None, alpha_min=None, out=None, path=None):
+    """Ranks the multiplier discretizations (p_C, h/H, family) for the scene's T_h and p by predicted
+    α and multipliers, with the global α of the recommended one and its runner-up. With `out` the
+    candidates are also written to out/advice.csv."""
+    checked = scene(source, overrides, path)
+    columns, edits, minimum = _hpcontact.run_advice(checked, alpha_min, os.fspath(out) if out is not None else "")
+    rows = [dict(zip(columns, values)) for values in zip(*columns.values())]
+    recommended = next((row for row in rows if row["recommended"] == "yes"), None)
+    return Advice(columns, recommended, list(edits), minimum)
