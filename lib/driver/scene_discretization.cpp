@@ -41,8 +41,9 @@ std::vector<std::array<bool, 2>> held_zone_ends_of(const mesh::Mesh& mesh) {
   };
   std::vector<std::array<bool, 2>> out;
   for (const auto& zone : contact.zones())
-    out.push_back(zone.closed ? std::array<bool, 2>{false, false}
-                              : std::array<bool, 2>{held(contact.point_at(zone.s_begin)), held(contact.point_at(zone.s_end))});
+    out.push_back(zone.closed
+                      ? std::array<bool, 2>{false, false}
+                      : std::array<bool, 2>{held(contact.point_at(zone.s_begin)), held(contact.point_at(zone.s_end))});
   return out;
 }
 
