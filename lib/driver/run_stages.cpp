@@ -46,8 +46,8 @@ InfSupSummary infsup_summary(const Level& level, const infsup::InfSupSetup& setu
   InfSupSummary s;
   s.record = infsup::make_infsup_record(pairing, alpha);
   s.record.alpha_predicted =
-      infsup::predict_alpha(trace_pairing_of(level.scene, *d.contact, d.held_zone_ends, *d.boundary_mesh, d.segment_degrees,
-                                             level.model->master_projection()))
+      infsup::predict_alpha(trace_pairing_of(level.scene, *d.contact, d.held_zone_ends, *d.boundary_mesh,
+                                             d.segment_degrees, level.model->master_projection()))
           .alpha;
   s.reference_level = alpha.reference_level;
   s.lambda_unique = !alpha.singular;

@@ -39,7 +39,7 @@ struct TracePairing {
   const mesh::BoundaryMesh* boundary_mesh = nullptr;  ///< T_{C,H} with Γ_C's zones
   /// Per zone, whether the traces vanish at its start and end (Γ_D there); empty: free ends.
   std::vector<std::array<bool, 2>> held_zone_ends;
-  std::vector<int> segment_degrees;                   ///< p_C per segment
+  std::vector<int> segment_degrees;  ///< p_C per segment
   space::MultiplierFamily family;
   /// s of the friction pairing (22) as a function of the arc length; empty: (11), no weight.
   std::function<double(double)> weight;

@@ -172,8 +172,8 @@ infsup::InfSupRecord SweepEvaluation::evaluate_point(const SweepPoint& point, co
                                      .ratio = ratio ? std::optional<double>(ratio->value) : std::nullopt};
   auto record = infsup::make_infsup_record(pairing, infsup::analyse_infsup(setup, backend_));
   record.alpha_predicted =
-      infsup::predict_alpha(
-          driver::trace_pairing_of(scene, group.contact, group.built.held_zone_ends, boundary, setup.segment_degrees, group.projection.get()))
+      infsup::predict_alpha(driver::trace_pairing_of(scene, group.contact, group.built.held_zone_ends, boundary,
+                                                     setup.segment_degrees, group.projection.get()))
           .alpha;
   return record;
 }

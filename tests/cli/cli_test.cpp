@@ -103,8 +103,9 @@ TEST(Cli, InfsupCsvAndModeFiles) {
     ASSERT_EQ(run("infsup --p 1 --pc 0 --n 4 --ratio 1 --csv " + csv + " --mode " + mode).exit_code, 0);
   const auto alpha = read_csv(csv);
   // The columns of a sweep's alpha.csv: a single run is level 1, h_min the shortest edge on Γ_C.
-  EXPECT_EQ(alpha.header_line(),
-            "problem,norm,p,pC,family,level,n,m,h,h_min,H,ratio,Pi,alpha,alpha_predicted,alpha_error,ndofs,nmult,seconds");
+  EXPECT_EQ(
+      alpha.header_line(),
+      "problem,norm,p,pC,family,level,n,m,h,h_min,H,ratio,Pi,alpha,alpha_predicted,alpha_error,ndofs,nmult,seconds");
   ASSERT_EQ(alpha.rows.size(), 2u);
   for (const auto& row : alpha.rows)
     EXPECT_EQ(line_of(row).find("signorini,interp,1,0,discontinuous,1,4,4,0.5,0.5,0.5,1,"), 0u) << line_of(row);
