@@ -53,7 +53,7 @@ def check(folder):
         counts["false_stable"] += unstable and not predicted_unstable
         if predicted_unstable and not unstable:
             counts["false_unstable"] += 1
-            counts["false_unstable_decaying"] += verdicts.get(configuration_key(row)) != "stable"
+            counts["false_unstable_decaying"] += verdicts.get(configuration_key(row)) in ("decaying", "singular")
         points.append((max(predicted, FLOOR), max(alpha, FLOOR)))
     return counts, points
 

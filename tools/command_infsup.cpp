@@ -93,6 +93,8 @@ int run_infsup(const InfSupOptions& o) {
              infsup::to_string(record.problem), infsup::to_string(record.norm), record.p, record.pc, record.n, record.m,
              scene.ratio.size() == 1 ? scene.ratio.front().text : fmt::format("{}", record.ratio), record.pi,
              record.ndofs, record.nmult);
+  fmt::print("# alpha_predicted {:.6g} (the local predictor, docs/stability.md: stable at >= 0.2)\n",
+             record.alpha_predicted);
   fmt::print("# lambda_min {:.6e} lambda_max {:.6e}{} solver {} residual {:.2e} seconds {:.3f}\n", summary.lambda_min,
              summary.lambda_max, summary.lambda_unique ? "" : " (singular to working precision: alpha = 0)",
              summary.eigensolver, summary.residual, record.seconds);

@@ -46,9 +46,12 @@ std::string zone_alphas(const driver::InfSupSummary& infsup) {
   return fmt::format(", zones alone {}", fmt::join(alphas, ", "));
 }
 
-// One line per contact problem: its energy, solver and contact set (and the total force of an
-// elastic body).
+// The pairing's predicted stability, and the alternative when it is predicted unstable.
 void print_stability(const driver::StabilityReport& s) {
+  if (!s.failure.empty()) {
+    fmt::print("stability: not predicted ({})\n", s.failure);
+    return;
+  }
   // (not "alpha = ": that names the inf-sup constant's line)
   fmt::print("stability: alpha_predicted {:.4g} ({} {}), Pi {:.3g}", s.alpha_predicted,
              s.stable ? "stable: >=" : "UNSTABLE: <", s.threshold, s.pi);
@@ -56,6 +59,8 @@ void print_stability(const driver::StabilityReport& s) {
   fmt::print("\n");
 }
 
+// One line per contact problem: its energy, solver and contact set (and the total force of an
+// elastic body).
 void print_contact(const driver::ContactResult& result) {
   fmt::print("{}: energy = {:.17g}", result.problem, result.energy);
   if (result.total_force) fmt::print(", total force P = {:.10g}", *result.total_force);

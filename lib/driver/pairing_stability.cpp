@@ -20,6 +20,18 @@ struct Candidate {
   std::string edit;
 };
 
+// A ratio h/H as a scene writes it: a fraction of small whole numbers where it is one ("1/2"),
+// else the number.
+std::string ratio_text(double ratio) {
+  for (int denominator = 1; denominator <= 64; ++denominator) {
+    const double numerator = ratio * denominator;
+    if (std::abs(numerator - std::round(numerator)) < 1e-9 * denominator && std::round(numerator) >= 1)
+      return denominator == 1 ? fmt::format("{}", std::lround(numerator))
+                              : fmt::format("{}/{}", std::lround(numerator), denominator);
+  }
+  return fmt::format("{:.6g}", ratio);
+}
+
 // T_{C,H} with twice the segment length: `ratio` halved or `m` halved (none for breakpoints).
 std::optional<Candidate> coarsened(const scene::Scene& scene) {
   Candidate c{scene, ""};
@@ -36,7 +48,7 @@ std::optional<Candidate> coarsened(const scene::Scene& scene) {
   }
   if (!scene.m.empty()) {
     for (auto& m : c.scene.m) {
-      if (m < 2) return std::nullopt;
+      if (m < 2 || m % 2 != 0) return std::nullopt;  // (an odd m would not be twice as coarse)
       m /= 2;
       texts.push_back(std::to_string(m));
     }
@@ -66,12 +78,6 @@ std::vector<Candidate> candidates(const scene::Scene& scene) {
   return out;
 }
 
-// The number of multiplier functions of the family on T_{C,H}.
-long long multiplier_count(const scene::Scene& scene, const space::MultiplierSpace& multipliers) {
-  if (scene.family.kind == space::MultiplierFamilyKind::discontinuous) return multipliers.n_dofs();
-  return space::family_basis(multipliers, scene.family).n_functions();
-}
-
 // The pairing as the warning names it.
 std::string pairing_text(const scene::Scene& scene) {
   std::string mesh = "breakpoints as given";
@@ -93,7 +99,8 @@ void add_master_traces(infsup::TracePairing& pairing, const scene::Scene& master
   const auto degrees = scene::scene_trace_degrees(master_scene, projection.master());
   int last_edge = -1;
   for (const auto& piece : projection.mortar_segments(slave)) {
-    if (!piece.covered || piece.master_edge < 0) continue;
+    // (a piece shorter than round-off carries nothing, and would repeat a node)
+    if (!piece.covered || piece.master_edge < 0 || piece.s_end - piece.s_begin <= 1e-12 * slave.length()) continue;
     if (piece.master_edge == last_edge &&
         std::abs(pairing.master_edges.back()[1] - piece.s_begin) < 1e-12 * slave.length()) {
       pairing.master_edges.back()[1] = piece.s_end;
@@ -106,16 +113,6 @@ void add_master_traces(infsup::TracePairing& pairing, const scene::Scene& master
 }
 
 }  // namespace
-
-std::string ratio_text(double ratio) {
-  for (int denominator = 1; denominator <= 64; ++denominator) {
-    const double numerator = ratio * denominator;
-    if (std::abs(numerator - std::round(numerator)) < 1e-9 * denominator && std::round(numerator) >= 1)
-      return denominator == 1 ? fmt::format("{}", std::lround(numerator))
-                              : fmt::format("{}/{}", std::lround(numerator), denominator);
-  }
-  return fmt::format("{:.6g}", ratio);
-}
 
 infsup::TracePairing trace_pairing_of(const scene::Scene& scene, const mesh::ContactBoundary& contact,
                                       const std::vector<std::array<bool, 2>>& held_zone_ends,
@@ -146,15 +143,43 @@ infsup::TracePairing trace_pairing_of(const scene::Scene& scene, const mesh::Con
   return pairing;
 }
 
+std::optional<CandidatePrediction> predict_candidate(const scene::Scene& candidate,
+                                                     const mesh::ContactBoundary& contact,
+                                                     const std::vector<std::array<bool, 2>>& held_zone_ends,
+                                                     const mesh::MasterProjection* projection) {
+  try {
+    const auto bm = scene::build_scene_boundary_mesh(candidate, contact);
+    auto degrees = scene::scene_segment_degrees(candidate, contact, bm);
+    scene::check_family_fits(candidate, bm, degrees);
+    const space::MultiplierSpace multipliers(bm, degrees);
+    const long long count = space::multiplier_function_count(multipliers, candidate.family);
+    const auto predicted =
+        infsup::predict_alpha(trace_pairing_of(candidate, contact, held_zone_ends, bm, std::move(degrees), projection));
+    return CandidatePrediction{predicted.alpha, count};
+  } catch (const InputError&) {
+    return std::nullopt;  // not a discretization of this mesh
+  } catch (const NumericalError&) {
+    return std::nullopt;  // no prediction: not offered
+  }
+}
+
 StabilityReport predict_stability(const scene::Scene& scene, const SceneDiscretization& d,
                                   const mesh::MasterProjection* projection) {
   Stopwatch clock;
   scene::check_family_fits(scene, *d.boundary_mesh, d.segment_degrees);  // its message names the scene's keys
-  const auto predicted = infsup::predict_alpha(
-      trace_pairing_of(scene, *d.contact, d.held_zone_ends, *d.boundary_mesh, d.segment_degrees, projection));
   StabilityReport report;
-  report.alpha_predicted = predicted.alpha;
   report.threshold = infsup::kStablePatchAlpha;
+  infsup::PredictedAlpha predicted;
+  try {
+    predicted = infsup::predict_alpha(
+        trace_pairing_of(scene, *d.contact, d.held_zone_ends, *d.boundary_mesh, d.segment_degrees, projection));
+  } catch (const NumericalError& error) {
+    // No prediction is no reason to stop the run: the report says why it is missing.
+    report.failure = error.what();
+    report.seconds = clock.seconds();
+    return report;
+  }
+  report.alpha_predicted = predicted.alpha;
   report.stable = predicted.stable();
   report.pi = predicted.pi;
   report.patches = predicted.patches;
@@ -166,22 +191,12 @@ StabilityReport predict_stability(const scene::Scene& scene, const SceneDiscreti
   }
   if (!report.stable) {
     for (const auto& candidate : candidates(scene)) {
-      try {
-        const auto bm = scene::build_scene_boundary_mesh(candidate.scene, *d.contact);
-        auto degrees = scene::scene_segment_degrees(candidate.scene, *d.contact, bm);
-        scene::check_family_fits(candidate.scene, bm, degrees);
-        const space::MultiplierSpace multipliers(bm, degrees);
-        const long long count = multiplier_count(candidate.scene, multipliers);
-        const auto alpha = infsup::predict_alpha(
-            trace_pairing_of(candidate.scene, *d.contact, d.held_zone_ends, bm, std::move(degrees), projection));
-        if (!alpha.stable()) continue;
-        const auto& best = report.alternative;
-        if (!best || count > best->nmult || (count == best->nmult && alpha.alpha > best->alpha_predicted))
-          report.alternative = StableAlternative{candidate.edit, alpha.alpha, count};
-      } catch (const InputError&) {
-        // A candidate the scene's meshes do not allow (a ratio without whole segments, a family
-        // that does not fit): not an alternative.
-      }
+      const auto predicted = predict_candidate(candidate.scene, *d.contact, d.held_zone_ends, projection);
+      if (!predicted || !predicted->stable()) continue;
+      const auto& best = report.alternative;
+      if (!best || predicted->nmult > best->nmult ||
+          (predicted->nmult == best->nmult && predicted->alpha > best->alpha_predicted))
+        report.alternative = StableAlternative{candidate.edit, predicted->alpha, predicted->nmult};
     }
     report.warning = fmt::format(
         "the pairing {} is predicted unstable: local α = {:.3g} < {} on the patch around (x, y) = ({:.4g}, {:.4g}) "

@@ -31,8 +31,17 @@ StabilityReport predict_stability(const scene::Scene& scene, const SceneDiscreti
 void act_on_stability(const scene::Scene& scene, StabilityReport& report,
                       const std::function<void(const std::string&)>& say);
 
-/// A ratio h/H as a scene writes it: a fraction of small whole numbers where it is one ("1/2"),
-/// else the number.
-std::string ratio_text(double ratio);
+/// The prediction for a candidate scene (the scene with another p_C, T_{C,H} or family) on the
+/// same Γ_C: its α and its number of multiplier functions; none if the candidate does not fit the
+/// mesh (a ratio without whole segments, a family that does not fit) or its prediction fails.
+struct CandidatePrediction {
+  double alpha = 0.0;
+  long long nmult = 0;
+  bool stable() const { return alpha >= infsup::kStablePatchAlpha; }
+};
+std::optional<CandidatePrediction> predict_candidate(const scene::Scene& candidate,
+                                                     const mesh::ContactBoundary& contact,
+                                                     const std::vector<std::array<bool, 2>>& held_zone_ends,
+                                                     const mesh::MasterProjection* projection);
 
 }  // namespace hpcontact::driver

@@ -117,6 +117,7 @@ struct StabilityReport {
   std::optional<StableAlternative> alternative;  ///< when not stable and one was found
   std::string warning;                           ///< when not stable: the warning's text
   bool warned = false;                           ///< the run warned ([solve] stability = "warn")
+  std::string failure;  ///< why there is no prediction (a patch's eigenproblem failed); then `stable`
 };
 
 struct RunResult {

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <set>
 
 #include "core/byte_buffer.hpp"
 #include "core/error.hpp"
@@ -28,22 +29,25 @@ std::unique_ptr<mesh::Mesh> contact_cells_of(const mesh::Mesh& mesh) {
 }
 
 // Per zone of Γ_C, whether a Dirichlet edge of `mesh` touches its start and its end (closed
-// zones: never).
+// zones: never), by vertex.
 std::vector<std::array<bool, 2>> held_zone_ends_of(const mesh::Mesh& mesh) {
   const mesh::ContactBoundary contact(mesh);
-  std::vector<mesh::Point> dirichlet_vertices;
+  std::set<int> dirichlet_vertices;
   for (const int e : mesh.boundary_edges())
     if (mesh.edge_part(e) == mesh::BoundaryPart::dirichlet)
-      for (const int v : mesh.edge(e)) dirichlet_vertices.push_back(mesh.vertex(v));
-  const auto held = [&](const mesh::Point& x) {
-    return std::any_of(dirichlet_vertices.begin(), dirichlet_vertices.end(),
-                       [&](const mesh::Point& y) { return (x - y).norm() <= 1e-12 * (1 + x.norm()); });
+      dirichlet_vertices.insert(mesh.edge(e).begin(), mesh.edge(e).end());
+  // The vertex of trace edge k at its end of arc length s (the nearer of its two).
+  const auto vertex_at = [&](int k, double s) {
+    const auto& ends = mesh.edge(contact.edges()[k].edge);
+    const mesh::Point x = contact.point_on_edge(k, s);
+    return (mesh.vertex(ends[0]) - x).norm() <= (mesh.vertex(ends[1]) - x).norm() ? ends[0] : ends[1];
   };
   std::vector<std::array<bool, 2>> out;
   for (const auto& zone : contact.zones())
     out.push_back(zone.closed
                       ? std::array<bool, 2>{false, false}
-                      : std::array<bool, 2>{held(contact.point_at(zone.s_begin)), held(contact.point_at(zone.s_end))});
+                      : std::array<bool, 2>{dirichlet_vertices.count(vertex_at(zone.first_edge, zone.s_begin)) > 0,
+                                            dirichlet_vertices.count(vertex_at(zone.end_edge - 1, zone.s_end)) > 0});
   return out;
 }
 

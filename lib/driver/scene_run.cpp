@@ -37,9 +37,7 @@ void describe_run(const Level& base, const OperatorLog& log, const linalg::Distr
   result.edges_on_contact = static_cast<long long>(base.d->contact->edges().size());
   result.m = base.d->boundary_mesh->n_segments();
   result.n_dofs = base.model->n_dofs();
-  result.nmult = scene.family.kind == space::MultiplierFamilyKind::discontinuous
-                     ? base.d->multipliers->n_dofs()
-                     : space::family_basis(*base.d->multipliers, scene.family).n_functions();
+  result.nmult = space::multiplier_function_count(*base.d->multipliers, scene.family);
   result.operators = log.records();
   for (const auto& solved : base.solved) result.contacts.push_back(solved.result);
   result.convergence_refinements = scene.convergence_refinements;

@@ -72,6 +72,7 @@ json stability_json(const StabilityReport& s) {
                         {"nmult", s.alternative->nmult}};
   if (!s.warning.empty()) j["warning"] = s.warning;
   j["warned"] = s.warned;
+  if (!s.failure.empty()) j["failure"] = s.failure;
   return j;
 }
 

@@ -10,7 +10,6 @@
 
 #include "basis/quadrature.hpp"
 #include "core/error.hpp"
-#include "core/timer.hpp"
 #include "infsup/infsup_operators.hpp"
 #include "space/multiplier_space.hpp"
 #include "space/piecewise_space_1d.hpp"
@@ -120,16 +119,6 @@ Eigen::MatrixXd coupling(const TracePairing& pairing, const space::MultiplierSpa
   return out;
 }
 
-// Sorted union of two breakpoint lists, points closer than `tolerance` merged.
-std::vector<double> merged(std::vector<double> a, const std::vector<double>& b, double tolerance) {
-  a.insert(a.end(), b.begin(), b.end());
-  std::sort(a.begin(), a.end());
-  std::vector<double> out;
-  for (const double x : a)
-    if (out.empty() || x - out.back() > tolerance) out.push_back(x);
-  return out;
-}
-
 // α_J of one patch.
 double patch_alpha(const TracePairing& pairing, const space::MultiplierSpace& multipliers, const Patch& patch,
                    double tolerance) {
@@ -164,7 +153,9 @@ double patch_alpha(const TracePairing& pairing, const space::MultiplierSpace& mu
   // The reference for the dual norm: continuous P_{top+2} on the common refinement of edges and
   // segments in J, rich enough that no multiplier of the patch is invisible to it, and free at a
   // zone's end even where Γ_D holds the traces: ‖μ‖_{-1/2} is the dual of H^{1/2}(Γ_C), as in α.
-  const auto pieces = merged(merged(edge_nodes, segment_nodes, tolerance), master_nodes, tolerance);
+  const auto pieces = master_nodes.empty()
+                          ? mesh::common_refinement(edge_nodes, segment_nodes)
+                          : mesh::common_refinement(mesh::common_refinement(edge_nodes, segment_nodes), master_nodes);
   const int reference_degree = top + 2;
   const space::PiecewiseSpace1D trace(edge_nodes, edge_degrees, patch.free_left, patch.free_right);
   if (trace.n_dofs() == 0) return 0.0;  // one edge of degree 1 with both ends held
@@ -186,8 +177,12 @@ double patch_alpha(const TracePairing& pairing, const space::MultiplierSpace& mu
     }
   }
   const Eigen::MatrixXd g = b_reference * inverse_half_norm(reference) * b_reference.transpose();
+  // (Eigen's generalized solver does not check that g is positive definite: checked here)
+  if (Eigen::LLT<Eigen::MatrixXd>(g).info() != Eigen::Success)
+    throw NumericalError("local α: the H^{-1/2} Gram of a patch is not positive definite");
   const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eigen(s, g, Eigen::EigenvaluesOnly);
-  if (eigen.info() != Eigen::Success) throw NumericalError("local α: a patch's eigenproblem failed");
+  if (eigen.info() != Eigen::Success || !eigen.eigenvalues().allFinite())
+    throw NumericalError("local α: a patch's eigenproblem failed");
   return std::sqrt(std::max(0.0, eigen.eigenvalues().minCoeff()));
 }
 
@@ -203,6 +198,7 @@ std::string patch_key(const TracePairing& pairing, const space::MultiplierSpace&
     key += std::to_string(pairing.edge_degrees[e]) + ";";
   }
   key += "|";
+  add(pairing.boundary_mesh->segment_begin(patch.first_segment));
   for (int k = patch.first_segment; k < patch.end_segment; ++k) {
     add(pairing.boundary_mesh->segment_end(k));
     key += std::to_string(multipliers.segment_degree(k)) + ";";
@@ -249,97 +245,132 @@ double depth_factor(const TracePairing& pairing, const Patch& patch) {
   return factor;
 }
 
+// Γ_C's edges and T_{C,H} as the patches need them: the edges under an arc, the zones' segments.
+class PatchMaker {
+ public:
+  PatchMaker(const TracePairing& pairing, const space::MultiplierSpace& multipliers, const MultiplierColumns& columns)
+      : pairing_(pairing),
+        mesh_(*pairing.boundary_mesh),
+        multipliers_(multipliers),
+        columns_(columns),
+        tolerance_(kRelativeTolerance * mesh_.length()),
+        zone_first_(mesh_.zones().size(), mesh_.n_segments()),
+        zone_last_(mesh_.zones().size(), -1) {
+    for (int k = 0; k < mesh_.n_segments(); ++k) {
+      const int z = mesh_.zone_of_segment(k);
+      zone_first_[z] = std::min(zone_first_[z], k);
+      zone_last_[z] = std::max(zone_last_[z], k);
+    }
+  }
+  double tolerance() const { return tolerance_; }
+
+  /// The patch of segment k: the edges under it and its zone neighbours, the segments wholly
+  /// inside them and their multiplier functions (R); none without a function.
+  std::optional<Patch> patch(int k) const {
+    const int z = mesh_.zone_of_segment(k);
+    const auto& zone = mesh_.zones()[z];
+    const int lo = std::max(k - 1, zone_first_[z]), hi = std::min(k + 1, zone_last_[z]);
+    Patch patch;
+    patch.first_edge = edge_ending_after(mesh_.segment_begin(lo));
+    patch.end_edge = edge_beginning_at(mesh_.segment_end(hi));
+    HPC_VERIFY(patch.first_edge < patch.end_edge, "T_{C,H} spans the edges of Γ_C");
+    const auto& edges = pairing_.edges;
+    const double j0 = edges[patch.first_edge][0], j1 = edges[patch.end_edge - 1][1];
+    // The segments wholly inside J (J covers lo..hi at least).
+    patch.first_segment = mesh_.segment_at(j0 + tolerance_);
+    if (mesh_.segment_begin(patch.first_segment) < j0 - tolerance_) ++patch.first_segment;
+    patch.end_segment = mesh_.segment_at(j1 - tolerance_) + 1;
+    if (mesh_.segment_end(patch.end_segment - 1) > j1 + tolerance_) --patch.end_segment;
+    HPC_VERIFY(patch.first_segment < patch.end_segment, "J covers its own segments");
+    const auto held = [&](int end) { return !pairing_.held_zone_ends.empty() && pairing_.held_zone_ends[z][end]; };
+    patch.zone_end_left = !zone.closed && std::abs(j0 - zone.begin) < tolerance_;
+    patch.zone_end_right = !zone.closed && std::abs(j1 - zone.end) < tolerance_;
+    patch.free_left = patch.zone_end_left && !held(0);
+    patch.free_right = patch.zone_end_right && !held(1);
+    patch.first_row = multipliers_.first_dof(patch.first_segment);
+    patch.end_row =
+        multipliers_.first_dof(patch.end_segment - 1) + multipliers_.segment_degree(patch.end_segment - 1) + 1;
+    std::vector<int> inside;
+    for (int c = 0; c < columns_.legendre.cols(); ++c)
+      if (columns_.meets_support[c] && columns_.first_row[c] >= patch.first_row && columns_.last_row[c] < patch.end_row)
+        inside.push_back(c);
+    if (inside.empty()) return std::nullopt;
+    patch.columns.setZero(patch.end_row - patch.first_row, static_cast<Eigen::Index>(inside.size()));
+    for (std::size_t j = 0; j < inside.size(); ++j)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(columns_.legendre, inside[j]); it; ++it)
+        patch.columns(it.row() - patch.first_row, static_cast<Eigen::Index>(j)) = it.value();
+    return patch;
+  }
+
+  /// Π on segment k: its longest edge and the smallest trace degree there.
+  double pi(int k) const {
+    double h = 0.0;
+    int p = std::numeric_limits<int>::max();
+    for (int e = edge_ending_after(mesh_.segment_begin(k)); e < edge_beginning_at(mesh_.segment_end(k)); ++e) {
+      h = std::max(h, pairing_.edges[e][1] - pairing_.edges[e][0]);
+      p = std::min(p, pairing_.edge_degrees[e]);
+    }
+    HPC_VERIFY(h > 0, "a segment over edges of Γ_C");
+    return stability_indicator(h, mesh_.segment_end(k) - mesh_.segment_begin(k), p, multipliers_.segment_degree(k));
+  }
+
+ private:
+  // The first edge ending after s, and the first edge beginning at or after s.
+  int edge_ending_after(double s) const {
+    const auto& edges = pairing_.edges;
+    return static_cast<int>(
+        std::partition_point(edges.begin(), edges.end(), [&](const auto& e) { return e[1] <= s + tolerance_; }) -
+        edges.begin());
+  }
+  int edge_beginning_at(double s) const {
+    const auto& edges = pairing_.edges;
+    return static_cast<int>(
+        std::partition_point(edges.begin(), edges.end(), [&](const auto& e) { return e[0] < s - tolerance_; }) -
+        edges.begin());
+  }
+
+  const TracePairing& pairing_;
+  const mesh::BoundaryMesh& mesh_;
+  const space::MultiplierSpace& multipliers_;
+  const MultiplierColumns& columns_;
+  double tolerance_;
+  std::vector<int> zone_first_, zone_last_;
+};
+
 }  // namespace
 
 PredictedAlpha predict_alpha(const TracePairing& pairing) {
-  Stopwatch clock;
   const auto& mesh = *pairing.boundary_mesh;
   HPC_VERIFY(!pairing.edges.empty() && pairing.edges.size() == pairing.edge_degrees.size(), "trace edges with degrees");
   HPC_VERIFY(static_cast<int>(pairing.segment_degrees.size()) == mesh.n_segments(), "one p_C per segment");
+  HPC_VERIFY(pairing.held_zone_ends.empty() || pairing.held_zone_ends.size() == mesh.zones().size(),
+             "held ends for every zone");
   const space::MultiplierSpace multipliers(mesh, pairing.segment_degrees);
   const auto columns = multiplier_columns(pairing, multipliers);
-  const double tolerance = kRelativeTolerance * mesh.length();
-  const auto& edges = pairing.edges;
-  // The first edge ending after s, and the first edge beginning at or after s.
-  const auto edge_ending_after = [&](double s) {
-    return static_cast<int>(
-        std::partition_point(edges.begin(), edges.end(), [&](const auto& e) { return e[1] <= s + tolerance; }) -
-        edges.begin());
-  };
-  const auto edge_beginning_at = [&](double s) {
-    return static_cast<int>(
-        std::partition_point(edges.begin(), edges.end(), [&](const auto& e) { return e[0] < s - tolerance; }) -
-        edges.begin());
-  };
-  std::vector<int> zone_first(mesh.zones().size(), mesh.n_segments()), zone_last(mesh.zones().size(), -1);
-  for (int k = 0; k < mesh.n_segments(); ++k) {
-    const int z = mesh.zone_of_segment(k);
-    zone_first[z] = std::min(zone_first[z], k);
-    zone_last[z] = std::max(zone_last[z], k);
-  }
+  const PatchMaker maker(pairing, multipliers, columns);
   PredictedAlpha out;
   out.alpha = std::numeric_limits<double>::infinity();
-  std::map<std::string, double> solved;
+  std::map<std::string, double> solved;  // α_J by patch_key; a weight differs from patch to patch
   for (int k = 0; k < mesh.n_segments(); ++k) {
-    const int z = mesh.zone_of_segment(k);
-    const auto& zone = mesh.zones()[z];
-    const int lo = std::max(k - 1, zone_first[z]), hi = std::min(k + 1, zone_last[z]);
-    Patch patch;
-    patch.first_edge = edge_ending_after(mesh.segment_begin(lo));
-    patch.end_edge = edge_beginning_at(mesh.segment_end(hi));
-    const double j0 = edges[patch.first_edge][0], j1 = edges[patch.end_edge - 1][1];
-    // The segments wholly inside J (J covers lo..hi at least).
-    patch.first_segment = mesh.segment_at(j0 + tolerance);
-    if (mesh.segment_begin(patch.first_segment) < j0 - tolerance) ++patch.first_segment;
-    patch.end_segment = mesh.segment_at(j1 - tolerance) + 1;
-    if (mesh.segment_end(patch.end_segment - 1) > j1 + tolerance) --patch.end_segment;
-    const auto held = [&](int end) { return !pairing.held_zone_ends.empty() && pairing.held_zone_ends[z][end]; };
-    patch.zone_end_left = !zone.closed && std::abs(j0 - zone.begin) < tolerance;
-    patch.zone_end_right = !zone.closed && std::abs(j1 - zone.end) < tolerance;
-    patch.free_left = patch.zone_end_left && !held(0);
-    patch.free_right = patch.zone_end_right && !held(1);
-    patch.first_row = multipliers.first_dof(patch.first_segment);
-    patch.end_row =
-        multipliers.first_dof(patch.end_segment - 1) + multipliers.segment_degree(patch.end_segment - 1) + 1;
-    // Π on segment k: its longest edge and smallest trace degree.
-    double h = 0.0;
-    int p = std::numeric_limits<int>::max();
-    for (int e = edge_ending_after(mesh.segment_begin(k)); e < edge_beginning_at(mesh.segment_end(k)); ++e) {
-      h = std::max(h, edges[e][1] - edges[e][0]);
-      p = std::min(p, pairing.edge_degrees[e]);
-    }
-    out.pi = std::max(
-        out.pi, stability_indicator(h, mesh.segment_end(k) - mesh.segment_begin(k), p, multipliers.segment_degree(k)));
-    std::vector<int> inside;
-    for (int c = 0; c < columns.legendre.cols(); ++c)
-      if (columns.meets_support[c] && columns.first_row[c] >= patch.first_row && columns.last_row[c] < patch.end_row)
-        inside.push_back(c);
-    if (inside.empty()) continue;
-    patch.columns.setZero(patch.end_row - patch.first_row, static_cast<Eigen::Index>(inside.size()));
-    for (std::size_t j = 0; j < inside.size(); ++j)
-      for (Eigen::SparseMatrix<double>::InnerIterator it(columns.legendre, inside[j]); it; ++it)
-        patch.columns(it.row() - patch.first_row, static_cast<Eigen::Index>(j)) = it.value();
+    out.pi = std::max(out.pi, maker.pi(k));
+    const auto patch = maker.patch(k);
+    if (!patch) continue;
     ++out.patches;
     double alpha = 0.0;
-    if (pairing.weight) {
-      alpha = patch_alpha(pairing, multipliers, patch, tolerance);
-      ++out.distinct_patches;
+    const auto key = pairing.weight ? std::string() : patch_key(pairing, multipliers, *patch);
+    const auto found = solved.find(key);
+    if (!key.empty() && found != solved.end()) {
+      alpha = found->second;
     } else {
-      const auto key = patch_key(pairing, multipliers, patch);
-      const auto found = solved.find(key);
-      if (found != solved.end()) {
-        alpha = found->second;
-      } else {
-        alpha = solved[key] = patch_alpha(pairing, multipliers, patch, tolerance);
-        ++out.distinct_patches;
-      }
+      alpha = patch_alpha(pairing, multipliers, *patch, maker.tolerance());
+      if (!key.empty()) solved[key] = alpha;
+      ++out.distinct_patches;
     }
-    alpha *= depth_factor(pairing, patch);
-    if (density_ratio(pairing, patch) >= 1.0 - 1e-9) alpha = 0.0;
+    alpha *= depth_factor(pairing, *patch);
+    if (density_ratio(pairing, *patch) >= 1.0 - 1e-9) alpha = 0.0;
     if (alpha < out.alpha) out.alpha = alpha, out.weakest_segment = k;
   }
   if (out.patches == 0) out.alpha = 0.0;
-  out.seconds = clock.seconds();
   return out;
 }
 

@@ -58,7 +58,6 @@ struct PredictedAlpha {
   double pi = 0.0;
   int patches = 0;           ///< patches analysed (segments with a multiplier)
   int distinct_patches = 0;  ///< of them, with an eigenproblem of their own (the others repeat one)
-  double seconds = 0.0;
   bool stable() const { return alpha >= kStablePatchAlpha; }
 };
 

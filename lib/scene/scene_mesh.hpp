@@ -29,10 +29,10 @@ std::vector<int> scene_cell_degrees(const Scene& scene, const mesh::Mesh& mesh);
 /// under the end modification.
 void check_family_fits(const Scene& scene, const mesh::BoundaryMesh& boundary_mesh,
                        const std::vector<int>& segment_degrees);
-/// p_C per segment (the rule at the segment midpoint, or pC), whole numbers in [0, 19].
 /// The degree of the trace on each edge of `contact` (its cell's p_T): from the cells of
 /// contact.mesh(), so that every rank of a distributed run has it.
 std::vector<int> scene_trace_degrees(const Scene& scene, const mesh::ContactBoundary& contact);
+/// p_C per segment (the rule at the segment midpoint, or pC), whole numbers in [0, 19].
 std::vector<int> scene_segment_degrees(const Scene& scene, const mesh::ContactBoundary& contact,
                                        const mesh::BoundaryMesh& boundary_mesh);
 

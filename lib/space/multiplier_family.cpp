@@ -150,4 +150,9 @@ FamilyBasis family_basis(const MultiplierSpace& multipliers, const MultiplierFam
   return out;
 }
 
+long long multiplier_function_count(const MultiplierSpace& multipliers, const MultiplierFamily& family) {
+  if (family.kind == MultiplierFamilyKind::discontinuous) return multipliers.n_dofs();
+  return family_basis(multipliers, family).n_functions();
+}
+
 }  // namespace hpcontact::space

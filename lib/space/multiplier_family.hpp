@@ -52,6 +52,10 @@ struct FamilyBasis {
   int n_functions() const { return static_cast<int>(node_s.size()); }
 };
 
+/// The number of multiplier functions of `family` on `multipliers`' T_{C,H}: its dofs for the
+/// discontinuous family, the family basis's functions otherwise.
+long long multiplier_function_count(const MultiplierSpace& multipliers, const MultiplierFamily& family);
+
 /// @throws InputError if `family` is discontinuous (its basis is MultiplierSpace's own), if a
 /// segment has p_C = 0 (the families are continuous or dual to a continuous space: p_C ≥ 1), or if
 /// the end modification leaves a segment without a function (one segment of p_C = 1 in a zone).

@@ -82,20 +82,11 @@ PairingAdvice advise_pairing(const scene::Scene& scene, const AdviceOptions& opt
         const bool discontinuous = family.kind == space::MultiplierFamilyKind::discontinuous;
         if (!discontinuous && pc == 0) continue;
         if (discontinuous) c.constraint_points = pc + 1;
-        const auto candidate = candidate_scene(scene, c);
-        try {
-          const auto boundary = scene::build_scene_boundary_mesh(candidate, contact);
-          auto degrees = scene::scene_segment_degrees(candidate, contact, boundary);
-          scene::check_family_fits(candidate, boundary, degrees);
-          const space::MultiplierSpace multipliers(boundary, degrees);
-          c.nmult = discontinuous ? multipliers.n_dofs() : space::family_basis(multipliers, family).n_functions();
-          c.alpha_predicted =
-              infsup::predict_alpha(driver::trace_pairing_of(candidate, contact, base->d->held_zone_ends, boundary,
-                                                             std::move(degrees), projection))
-                  .alpha;
-        } catch (const InputError&) {
-          continue;  // a ratio without whole segments on this mesh, a family that does not fit
-        }
+        const auto predicted =
+            driver::predict_candidate(candidate_scene(scene, c), contact, base->d->held_zone_ends, projection);
+        if (!predicted) continue;  // a ratio without whole segments on this mesh, a family that does not fit
+        c.alpha_predicted = predicted->alpha;
+        c.nmult = predicted->nmult;
         c.unknowns = base->model->n_dofs() + c.nmult;
         c.edits = edits_of(scene, c);
         advice.candidates.push_back(std::move(c));

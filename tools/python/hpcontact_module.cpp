@@ -181,6 +181,25 @@ void bind_scenes(py::module_& m) {
       "The scene of a dict of tables ({'domain': {...}, ...}); `path` names it and anchors relative mesh files");
 }
 
+// `hpcontact advise` for Python: advice.csv's columns (written to out/advice.csv if given), the
+// recommendation's scene edits, alpha_min.
+py::tuple run_advice(const scene::Scene& scene, std::optional<double> alpha_min, const std::filesystem::path& out) {
+  if (!out.empty()) io::check_output_directory(out);
+  const auto advice = [&] {
+    py::gil_scoped_release release;
+    return studies::advise_pairing(scene, {.alpha_min = alpha_min});
+  }();
+  const auto table = studies::advice_table(advice);
+  if (!out.empty()) {
+    io::ensure_writable_directory(out);
+    table.write(out / "advice.csv");
+  }
+  py::list edits;
+  if (advice.recommended)
+    for (const auto& edit : advice.candidates[*advice.recommended].edits) edits.append(edit);
+  return py::make_tuple(columns_of(table), edits, advice.alpha_min);
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_hpcontact, m) {
@@ -235,27 +254,10 @@ PYBIND11_MODULE(_hpcontact, m) {
       },
       py::arg("study"), py::arg("out"),
       "Runs a stability sweep into `out` (alpha.csv, resumable; verdicts.csv): the two file paths");
-  m.def(
-      "run_advice",
-      [](const scene::Scene& scene, std::optional<double> alpha_min, const std::filesystem::path& out) {
-        if (!out.empty()) io::check_output_directory(out);
-        const auto advice = [&] {
-          py::gil_scoped_release release;
-          return studies::advise_pairing(scene, {.alpha_min = alpha_min});
-        }();
-        const auto table = studies::advice_table(advice);
-        if (!out.empty()) {
-          io::ensure_writable_directory(out);
-          table.write(out / "advice.csv");
-        }
-        py::list edits;
-        if (advice.recommended)
-          for (const auto& edit : advice.candidates[*advice.recommended].edits) edits.append(edit);
-        return py::make_tuple(columns_of(table), edits, advice.alpha_min);
-      },
-      py::arg("scene"), py::arg("alpha_min") = py::none(), py::arg("out") = std::filesystem::path(),
-      "The candidates of `hpcontact advise` as advice.csv's columns (written to out/advice.csv if given), the "
-      "recommendation's scene edits, alpha_min");
+  m.def("run_advice", &run_advice, py::arg("scene"), py::arg("alpha_min") = py::none(),
+        py::arg("out") = std::filesystem::path(),
+        "The candidates of `hpcontact advise` as advice.csv's columns (written to out/advice.csv if given), the "
+        "recommendation's scene edits, alpha_min");
   m.def("scene_keys", [] {
     py::list keys;
     for (const auto& key : scene::scene_keys())

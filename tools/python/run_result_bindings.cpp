@@ -60,6 +60,13 @@ void bind_run_result(py::module_& m) {
       .def_readonly("threshold", &driver::StabilityReport::threshold)
       .def_readonly("stable", &driver::StabilityReport::stable)
       .def_readonly("pi", &driver::StabilityReport::pi)
+      .def_property_readonly("weakest_point",
+                             [](const driver::StabilityReport& s) {
+                               return std::array<double, 2>{s.weakest_point.x(), s.weakest_point.y()};
+                             })
+      .def_readonly("patches", &driver::StabilityReport::patches)
+      .def_readonly("distinct_patches", &driver::StabilityReport::distinct_patches)
+      .def_readonly("failure", &driver::StabilityReport::failure)
       .def_readonly("alternative", &driver::StabilityReport::alternative)
       .def_readonly("warning", &driver::StabilityReport::warning)
       .def_readonly("warned", &driver::StabilityReport::warned)
