@@ -20,6 +20,7 @@
 #include "postprocess/point_locator.hpp"
 #include "support/contact_fixture.hpp"
 #include "support/manufactured_solution.hpp"
+#include "support/paper_alpha.hpp"
 #include "support/slepc_test_environment.hpp"
 
 using namespace hpcontact;
@@ -35,16 +36,7 @@ double condition_number(const Eigen::MatrixXd& a) {
   return eigenvalues.maxCoeff() / eigenvalues.minCoeff();
 }
 
-infsup::InfSupResult paper_alpha(int n, int p, int pc, int m, infsup::EigenBackend backend) {
-  const auto mesh = mesh::make_paper_square_mesh(n);
-  const auto boundary = mesh::BoundaryMesh::uniform(2.0, m);
-  infsup::InfSupSetup setup;
-  setup.mesh = &mesh;
-  setup.cell_degrees.assign(mesh.n_cells(), p);
-  setup.boundary_mesh = &boundary;
-  setup.segment_degrees.assign(m, pc);
-  return infsup::analyse_infsup(setup, backend);
-}
+using hpcontact::testing::paper_alpha;
 
 }  // namespace
 

@@ -8,8 +8,8 @@
 
 #include <cmath>
 
-#include "infsup/infsup_analysis.hpp"
 #include "mesh/rectangle_mesh.hpp"
+#include "support/paper_alpha.hpp"
 #include "support/slepc_test_environment.hpp"
 
 using namespace hpcontact;
@@ -30,17 +30,6 @@ struct UniformTrace {
   }
 };
 
-double global_alpha(int n, int m, int p, int pc) {
-  const auto mesh = mesh::make_paper_square_mesh(n);
-  const auto boundary = mesh::BoundaryMesh::uniform(2.0, m);
-  infsup::InfSupSetup setup;
-  setup.mesh = &mesh;
-  setup.cell_degrees.assign(mesh.n_cells(), p);
-  setup.boundary_mesh = &boundary;
-  setup.segment_degrees.assign(m, pc);
-  return infsup::analyse_infsup(setup, infsup::EigenBackend::dense).alpha;
-}
-
 }  // namespace
 
 // Every p ≤ 4, p_C ≤ p, h/H ∈ {1, 1/2, 2/3} on 12 × 12 cells: a pairing predicted stable has a
@@ -55,7 +44,7 @@ TEST(LocalAlpha, AgreesWithTheGlobalAlphaOnThePaperSquare) {
         const std::string label = "p " + std::to_string(p) + " pC " + std::to_string(pc) + " m " + std::to_string(m);
         const UniformTrace trace(n, m, p, pc);
         const auto predicted = infsup::predict_alpha(trace.pairing);
-        const double alpha = global_alpha(n, m, p, pc);
+        const double alpha = hpcontact::testing::paper_alpha(n, p, pc, m).alpha;
         if (predicted.stable()) {
           EXPECT_GE(alpha, 0.1) << label;
           EXPECT_NEAR(predicted.alpha, alpha, 0.2) << label;
