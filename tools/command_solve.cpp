@@ -67,6 +67,13 @@ void print_contact(const driver::ContactResult& result) {
   fmt::print(", {} {} steps, KKT residual {:.2e}, contact set length {:.4f}{}", result.solver.iterations,
              result.solver.method, result.solver.kkt_residual, result.contact_set_length, zone_lengths(result));
   if (!result.fixed_point_changes.empty()) fmt::print(", {} fixed-point iterations", result.fixed_point_changes.size());
+  // (between the constraint points the bounds are not imposed: how far the multiplier leaves them)
+  if (result.bounds && result.bounds->violation > 1e-8)
+    fmt::print(", multiplier outside its bounds by {:.2g} of its max at ({:.4g}, {:.4g}){}", result.bounds->violation,
+               result.bounds->at.x(), result.bounds->at.y(),
+               result.bounds->to_free_boundary
+                   ? fmt::format(", {:.3g} from the free boundary", *result.bounds->to_free_boundary)
+                   : std::string());
   fmt::print("\n");
   if (result.pair)
     fmt::print("  pair '{}': slave '{}', master '{}'\n", result.pair->name, result.pair->slave, result.pair->master);

@@ -36,6 +36,7 @@ ContactResult elastic_result(const contact::ElasticContactSetup& setup, const co
   r.solver = solution.qp;
   r.seconds = {solution.seconds.assembly, solution.seconds.factorization, solution.seconds.condensation,
                solution.seconds.qp,       solution.seconds.recovery,      seconds};
+  if (!tied) r.bounds = MultiplierBounds{samples.bounds.relative, samples.bounds.at, samples.bounds.to_free_boundary};
   r.fixed_point_changes = solution.fixed_point_changes;
   if (setup.problem == contact::ElasticContactProblem::coulomb) r.friction_coefficient = setup.friction_coefficient;
   return r;

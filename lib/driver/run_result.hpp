@@ -45,6 +45,14 @@ struct ExactErrors {
   std::optional<double> displacement, pressure;
 };
 
+/// The multiplier outside its bounds between the points where they are imposed (λ ≤ 0, |λ| ≤ 1,
+/// |λ| ≤ s; the elastic pressure ≥ 0), from the boundary samples.
+struct MultiplierBounds {
+  double violation = 0.0;  ///< the largest distance outside, relative to max |λ|
+  mesh::Point at = mesh::Point::Zero();
+  std::optional<double> to_free_boundary;  ///< arc length from there to the nearest end of the contact set
+};
+
 /// One contact problem solved on the scene's discretization.
 struct ContactResult {
   std::string problem;  ///< the effect's name: signorini, friction, friction_s, frictionless, tresca, coulomb
@@ -60,6 +68,7 @@ struct ContactResult {
   std::optional<double> friction_coefficient;  ///< Coulomb
   std::optional<PairSummary> pair;             ///< two bodies: the pair (n_dofs counts both bodies)
   std::optional<ExactErrors> exact;            ///< the scene gives [exact]
+  std::optional<MultiplierBounds> bounds;      ///< every problem with bounds (not tied)
 };
 
 /// The inf-sup constant of the scene's pairing (effect infsup).

@@ -31,6 +31,7 @@ ContactResult scalar_result(const std::string& name, const contact::ContactSolut
     r.constraint_points =
         ConstraintPointCount{*std::min_element(q.begin(), q.end()), *std::max_element(q.begin(), q.end()),
                              static_cast<long long>(solution.constraint_s.size())};
+  r.bounds = MultiplierBounds{samples.bounds.relative, samples.bounds.at, samples.bounds.to_free_boundary};
   r.solver = solution.qp;
   r.seconds = {solution.seconds.assembly, solution.seconds.factorization, solution.seconds.condensation,
                solution.seconds.qp,       solution.seconds.recovery,      seconds};

@@ -53,6 +53,10 @@ json contact_json(const ContactResult& c) {
     if (c.exact->displacement) j["exact_errors"]["displacement"] = *c.exact->displacement;
     if (c.exact->pressure) j["exact_errors"]["pressure"] = *c.exact->pressure;
   }
+  if (c.bounds) {
+    j["multiplier_bounds"] = {{"violation", c.bounds->violation}, {"at", {c.bounds->at.x(), c.bounds->at.y()}}};
+    if (c.bounds->to_free_boundary) j["multiplier_bounds"]["distance_to_free_boundary"] = *c.bounds->to_free_boundary;
+  }
   if (c.pair) j["pair"] = {{"name", c.pair->name}, {"slave", c.pair->slave}, {"master", c.pair->master}};
   return j;
 }

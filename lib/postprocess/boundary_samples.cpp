@@ -61,8 +61,12 @@ BoundarySamples sample_boundary(const contact::ContactSetup& setup, const contac
   const Eigen::MatrixXd u =
       values_at(assembly::scalar_field(space, solution.u, solution.u_rows, solution.lift), points, distribution);
 
-  BoundarySamples out{io::CsvTable({"x", "u", signorini ? "obstacle" : "s", "lambda", "y", "s_arc", "zone"}), 0.0,
-                      std::vector<double>(contact.zones().size(), 0.0)};
+  BoundarySamples out{io::CsvTable({"x", "u", signorini ? "obstacle" : "s", "lambda", "y", "s_arc", "zone"}),
+                      0.0,
+                      std::vector<double>(contact.zones().size(), 0.0),
+                      {}};
+  std::vector<double> arcs, lambdas, limits;  // for the bounds: λ ≤ 0 (9), |λ| ≤ 1 (13), |λ| ≤ s (15)
+  std::vector<int> zones;
   const double lambda_scale = solution.lambda.cwiseAbs().maxCoeff();
   Eigen::Index point = 0;
   for (const auto& interval : intervals) {
@@ -77,12 +81,18 @@ BoundarySamples sample_boundary(const contact::ContactSetup& setup, const contac
       const double lambda = multipliers.basis_values(k, multipliers.local_coordinate(k, s)).dot(coefficients);
       const double data = signorini ? setup.obstacle(x) : setup.bound(x);
       out.table.add_row({x.x(), u(point, 0), data, lambda, x.y(), s, static_cast<long long>(trace.zone)});
+      arcs.push_back(s), lambdas.push_back(lambda), zones.push_back(trace.zone);
+      limits.push_back(setup.problem == contact::ContactProblem::friction ? 1.0 : data);
       if (std::abs(lambda) > 1e-10 * lambda_scale) ++in_contact;
     }
     const double in_contact_length = (interval.s_end - interval.s_begin) * in_contact / per_interval;
     out.contact_set_length += in_contact_length;
     out.zone_contact_set_length[trace.zone] += in_contact_length;
   }
+  out.bounds = bound_violation(arcs, zones, lambdas, [&](std::size_t i) {
+    return signorini ? std::pair{-std::numeric_limits<double>::infinity(), 0.0} : std::pair{-limits[i], limits[i]};
+  });
+  out.bounds.at = contact.point_at(out.bounds.s);
   return out;
 }
 

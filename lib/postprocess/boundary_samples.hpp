@@ -7,6 +7,7 @@
 #include "contact/contact_problem.hpp"
 #include "io/csv_writer.hpp"
 #include "linalg/distribution.hpp"
+#include "postprocess/bound_violation.hpp"
 #include "postprocess/point_locator.hpp"
 
 namespace hpcontact::postprocess {
@@ -16,6 +17,7 @@ struct BoundarySamples {
   io::CsvTable table;
   double contact_set_length;  ///< length of Γ_C where λ ≠ 0 (|λ| > 1e-10 max|λ|), from the samples
   std::vector<double> zone_contact_set_length;  ///< the same per zone of Γ_C
+  BoundViolation bounds;                        ///< λ outside its bounds between the constraint points
 };
 
 /// The arc length of sample j of `per_interval` equidistant ones on an interval (both ends included).

@@ -37,7 +37,9 @@ ElasticBoundarySamples sample_pressure(const contact::ElasticContactSetup& setup
                                        const std::function<std::vector<io::CsvCell>(const Sample&)>& row) {
   const auto& contact = setup.operators->contact();
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
-  ElasticBoundarySamples out{io::CsvTable(std::move(columns)), 0.0, 0.0, {}, {}};
+  ElasticBoundarySamples out{io::CsvTable(std::move(columns)), 0.0, 0.0, {}, {}, {}};
+  std::vector<double> arcs, pressures;  // for the bound: pressure ≥ 0
+  std::vector<int> zones;
   out.total_force = total_force(multipliers, solution.pressure);
   out.zone_contact_set_length.assign(contact.zones().size(), 0.0);
   for (std::size_t z = 0; z < contact.zones().size(); ++z)
@@ -60,11 +62,16 @@ ElasticBoundarySamples sample_pressure(const contact::ElasticContactSetup& setup
       cells.emplace_back(static_cast<long long>(trace.zone));
       out.table.add_row(std::move(cells));
       if (sample.pressure > 1e-10 * pressure_scale) ++in_contact;
+      arcs.push_back(sample.s), pressures.push_back(sample.pressure), zones.push_back(trace.zone);
     }
     const double in_contact_length = (interval.s_end - interval.s_begin) * in_contact / per_interval;
     out.contact_set_length += in_contact_length;
     out.zone_contact_set_length[trace.zone] += in_contact_length;
   }
+  out.bounds = bound_violation(arcs, zones, pressures, [](std::size_t) {
+    return std::pair{0.0, std::numeric_limits<double>::infinity()};
+  });
+  out.bounds.at = contact.point_at(out.bounds.s);
   return out;
 }
 

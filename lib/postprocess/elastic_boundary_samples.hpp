@@ -8,6 +8,7 @@
 #include "contact/two_body_contact.hpp"
 #include "io/csv_writer.hpp"
 #include "mesh/contact_pair_geometry.hpp"
+#include "postprocess/bound_violation.hpp"
 #include "space/multiplier_space.hpp"
 
 namespace hpcontact::postprocess {
@@ -19,6 +20,7 @@ struct ElasticBoundarySamples {
   double contact_set_length = 0.0;  ///< where pressure > 1e-10 max pressure, from the samples
   double total_force = 0.0;         ///< P = ∫_{Γ_C} pressure ds (exact, from the multiplier)
   std::vector<double> zone_contact_set_length, zone_total_force;  ///< the same per zone of Γ_C
+  BoundViolation bounds;  ///< the pressure below 0 between the constraint points
 };
 
 /// P = ∫_{Γ_C} p ds of a multiplier in M^{p_C}(T_{C,H}) (Legendre coefficients): ∫ P_0 = 2 on

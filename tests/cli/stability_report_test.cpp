@@ -72,3 +72,25 @@ TEST(StabilityReport, RefuseExitsTwoBeforeSolvingAndIgnoreIsSilent) {
   EXPECT_EQ(ignored.output.find("warning"), std::string::npos) << ignored.output;
   EXPECT_NE(ignored.output.find("UNSTABLE"), std::string::npos) << ignored.output;  // still in the report
 }
+
+// λ ≤ 0 holds at the constraint points only: summary.json says how far λ leaves it between them.
+// The unstable pairing's wrong-sign lobe is twice the stable one's, both beside the free
+// boundary; five constraint points per segment instead of p_C + 1 = 3 shrink it tenfold.
+TEST(StabilityReport, SaysHowFarTheMultiplierLeavesItsBoundsBetweenTheConstraintPoints) {
+  const auto dir = scratch("stability_bounds");
+  const auto violation = [&](const std::string& options, const std::string& name) {
+    const auto solved = run("solve " + kFigure1 + " --effects signorini --p 4 --ratio 1 " + options + " --out " +
+                            (dir / name).string());
+    EXPECT_EQ(solved.exit_code, 0) << solved.output;
+    EXPECT_NE(solved.output.find("multiplier outside its bounds by"), std::string::npos) << solved.output;
+    std::ifstream file(dir / name / "summary.json");
+    const auto bounds = nlohmann::json::parse(file).at("signorini").at("multiplier_bounds");
+    EXPECT_LT(bounds.at("distance_to_free_boundary").get<double>(), 0.1) << name;  // beside the free boundary
+    return bounds.at("violation").get<double>();
+  };
+  const double unstable = violation("--pc 3", "unstable"), stable = violation("--pc 2", "stable");
+  const double five_points = violation("--pc 2 --constraint-points 5", "five_points");
+  EXPECT_GT(unstable, 1.5 * stable);
+  EXPECT_LT(five_points, 0.2 * stable);
+  EXPECT_GT(five_points, 0.0);
+}

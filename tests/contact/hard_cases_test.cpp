@@ -16,6 +16,7 @@
 #include "linalg/sparse_cholesky.hpp"
 #include "mesh/rectangle_mesh.hpp"
 #include "operators/poisson_problem.hpp"
+#include "postprocess/bound_violation.hpp"
 #include "postprocess/fe_function.hpp"
 #include "postprocess/point_locator.hpp"
 #include "support/contact_fixture.hpp"
@@ -263,4 +264,29 @@ TEST(HardCases, SolverFailuresAreReportedWithResiduals) {
   } catch (const NumericalError& error) {
     EXPECT_NE(std::string(error.what()).find("complementarity"), std::string::npos) << error.what();
   }
+}
+
+// The bound check of the boundary samples: the largest distance outside [lower, upper] relative
+// to max |value|, where, and how far from the nearest change between zero and non-zero.
+TEST(HardCases, BoundViolationFindsTheWrongSignLobeBesideTheFreeBoundary) {
+  // λ = -1 on [0, 0.5), 0 on [0.5, 0.8), +0.1 (wrong sign) at 0.9, 0 after: zone 0; zone 1 all 0.
+  const std::vector<double> s{0.0, 0.25, 0.45, 0.55, 0.7, 0.9, 1.0, 1.1, 1.2};
+  const std::vector<int> zone{0, 0, 0, 0, 0, 0, 0, 1, 1};
+  const std::vector<double> lambda{-1.0, -1.0, -0.5, 0.0, 0.0, 0.1, 0.0, 0.0, 0.0};
+  const auto signorini = [](std::size_t) { return std::pair{-std::numeric_limits<double>::infinity(), 0.0}; };
+  const auto v = postprocess::bound_violation(s, zone, lambda, signorini);
+  EXPECT_DOUBLE_EQ(v.relative, 0.1);
+  EXPECT_DOUBLE_EQ(v.s, 0.9);
+  ASSERT_TRUE(v.to_free_boundary.has_value());
+  EXPECT_NEAR(*v.to_free_boundary, 0.05, 1e-15);  // changes at 0.5, 0.8 and 0.95: the nearest
+  const std::vector<double> inside{-1.0, -1.0, -0.5, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+  EXPECT_EQ(postprocess::bound_violation(s, zone, inside, signorini).relative, 0.0);
+  // A box |λ| ≤ 1: 1.2 is 0.2 outside, relative to max |λ| = 1.2.
+  const std::vector<double> box{0.5, 1.2, -0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+  EXPECT_NEAR(postprocess::bound_violation(s, zone, box,
+                                           [](std::size_t) {
+                                             return std::pair{-1.0, 1.0};
+                                           })
+                  .relative,
+              0.2 / 1.2, 1e-15);
 }
