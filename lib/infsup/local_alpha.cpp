@@ -119,6 +119,18 @@ Eigen::MatrixXd coupling(const TracePairing& pairing, const space::MultiplierSpa
   return out;
 }
 
+// Sorted union of breakpoint lists, points closer than `tolerance` merged. (Not
+// mesh::common_refinement: its absolute 1e-12 would keep the slivers that T_{C,H}'s breakpoints,
+// computed in the arc length, leave beside the edges' ends, and a sliver's mass matrix is singular.)
+std::vector<double> merged(std::vector<double> a, const std::vector<double>& b, double tolerance) {
+  a.insert(a.end(), b.begin(), b.end());
+  std::sort(a.begin(), a.end());
+  std::vector<double> out;
+  for (const double x : a)
+    if (out.empty() || x - out.back() > tolerance) out.push_back(x);
+  return out;
+}
+
 // α_J of one patch.
 double patch_alpha(const TracePairing& pairing, const space::MultiplierSpace& multipliers, const Patch& patch,
                    double tolerance) {
@@ -153,9 +165,7 @@ double patch_alpha(const TracePairing& pairing, const space::MultiplierSpace& mu
   // The reference for the dual norm: continuous P_{top+2} on the common refinement of edges and
   // segments in J, rich enough that no multiplier of the patch is invisible to it, and free at a
   // zone's end even where Γ_D holds the traces: ‖μ‖_{-1/2} is the dual of H^{1/2}(Γ_C), as in α.
-  const auto pieces = master_nodes.empty()
-                          ? mesh::common_refinement(edge_nodes, segment_nodes)
-                          : mesh::common_refinement(mesh::common_refinement(edge_nodes, segment_nodes), master_nodes);
+  const auto pieces = merged(merged(edge_nodes, segment_nodes, tolerance), master_nodes, tolerance);
   const int reference_degree = top + 2;
   const space::PiecewiseSpace1D trace(edge_nodes, edge_degrees, patch.free_left, patch.free_right);
   if (trace.n_dofs() == 0) return 0.0;  // one edge of degree 1 with both ends held
@@ -178,7 +188,7 @@ double patch_alpha(const TracePairing& pairing, const space::MultiplierSpace& mu
   }
   const Eigen::MatrixXd g = b_reference * inverse_half_norm(reference) * b_reference.transpose();
   // (Eigen's generalized solver does not check that g is positive definite: checked here)
-  if (Eigen::LLT<Eigen::MatrixXd>(g).info() != Eigen::Success)
+  if (!g.allFinite() || Eigen::LLT<Eigen::MatrixXd>(g).info() != Eigen::Success)
     throw NumericalError("local α: the H^{-1/2} Gram of a patch is not positive definite");
   const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eigen(s, g, Eigen::EigenvaluesOnly);
   if (eigen.info() != Eigen::Success || !eigen.eigenvalues().allFinite())
