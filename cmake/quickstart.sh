@@ -32,7 +32,7 @@ jobs=$(nproc 2>/dev/null || echo 2)
 packages=(build-essential cmake pkg-config libeigen3-dev petsc-dev slepc-dev libgsl-dev
           libmuparser-dev libcli11-dev libtomlplusplus-dev libfmt-dev nlohmann-json3-dev
           libsuitesparse-dev libptscotch-dev libgtest-dev libgmock-dev libbenchmark-dev python3-matplotlib
-          clang libclang-rt-14-dev clang-format libopenblas0-pthread openmpi-bin libgmsh-dev
+          clang libclang-rt-14-dev clang-format libopenblas0-pthread openmpi-bin libgmsh-dev gmsh
           pybind11-dev python3-dev python3-numpy python3-pytest python3-meshio python3-vtk9)
 missing=()
 for package in "${packages[@]}"; do

@@ -4,7 +4,8 @@
 Reads DIR/boundary_<effect>.csv (columns x,y,s_arc,u_n,u_t,gap,pressure,traction_t, written by
 `hpcontact solve` for the effects frictionless, tresca, coulomb) and DIR/summary.json, and writes
 DIR/boundary_elastic.png: the pressure, the tangential traction with the Coulomb cone ±F·p, and
-the tangential displacement, each against the arc length s on Γ_C, one colour per effect.
+the tangential displacement, each against the arc length s on Γ_C, one colour per effect, in the
+window S_MIN … S_MAX of s, by default the contact sets and their surroundings.
 Usage: plot_elastic_boundary.py DIR [S_MIN S_MAX]
 """
 import csv
@@ -17,6 +18,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from figure_file import save_figure  # noqa: E402
+from plot_run import contact_window  # noqa: E402
 
 STYLES = {"frictionless": ("tab:blue", "-"), "tresca": ("tab:green", "--"), "coulomb": ("tab:red", "-")}
 
@@ -34,13 +36,17 @@ def main():
     effects = [e for e in summary.get("effects", []) if (folder / f"boundary_{e}.csv").exists()]
     if not effects:
         sys.exit(f"plot_elastic_boundary.py: no boundary_<effect>.csv of an elastic effect in {folder}")
-    window = (float(sys.argv[2]), float(sys.argv[3])) if len(sys.argv) == 4 else None
+    if len(sys.argv) == 4:
+        window = (float(sys.argv[2]), float(sys.argv[3]))
+    else:  # the window that holds every effect's contact set
+        windows = [contact_window([r["s_arc"] for r in rows], [r["pressure"] for r in rows])
+                   for rows in (read(folder / f"boundary_{e}.csv") for e in effects)]
+        window = (min(w[0] for w in windows), max(w[1] for w in windows))
 
     figure, (pressure_axis, traction_axis, slip_axis) = plt.subplots(1, 3, figsize=(15, 4.4))
     for effect in effects:
         rows = read(folder / f"boundary_{effect}.csv")
-        if window:
-            rows = [r for r in rows if window[0] <= r["s_arc"] <= window[1]]
+        rows = [r for r in rows if window[0] <= r["s_arc"] <= window[1]]
         s = [r["s_arc"] for r in rows]
         colour, line = STYLES.get(effect, ("tab:grey", "-"))
         pressure_axis.plot(s, [r["pressure"] for r in rows], line, color=colour, label=effect)

@@ -61,7 +61,9 @@ def plot(folder, problem):
     left.grid(True, alpha=0.3)
     handles = left.get_legend_handles_labels()
     extra = multiplier_axis.get_legend_handles_labels()
-    left.legend(handles[0] + extra[0], handles[1] + extra[1], fontsize=8, loc="best")
+    # Below the axes: inside, the legend would hide part of the curves (λ runs everywhere).
+    left.legend(handles[0] + extra[0], handles[1] + extra[1], fontsize=8, loc="upper center",
+                bbox_to_anchor=(0.5, -0.16), ncol=4)
     px, py, triangles, fields = read_lagrange_vtu(solution_file(folder, f"solution_{problem}"))
     picture = right.tripcolor(mtri.Triangulation(px, py, triangles), fields["u"], shading="gouraud", cmap="viridis")
     figure.colorbar(picture, ax=right, label=r"$u_h$")
@@ -82,6 +84,10 @@ def main():
         if not problems:
             sys.exit(f"plot_paper.py: no boundary_<problem>.csv in {folder}")
         for problem in problems:
+            with open(folder / f"boundary_{problem}.csv", newline="") as handle:
+                if "u" not in next(csv.reader(handle), []):
+                    print(f"plot_paper.py: {problem} in {folder} is an elastic problem: plots/plot_run.py draws it")
+                    continue
             plot(folder, problem)
 
 

@@ -18,6 +18,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.colors import ListedColormap  # noqa: E402
+from matplotlib.ticker import FixedFormatter, FixedLocator, NullLocator  # noqa: E402
 from figure_file import save_figure  # noqa: E402
 
 VERDICT_CODE = {"stable": 0, "decaying": 1, "singular": 2}
@@ -95,6 +96,11 @@ def plot_alpha_vs_h(rows, folder):
         axis.set_title(panel_title(panel[0], panel[1], families), fontsize=10)
         axis.set_xlabel(r"$h_{\min}$ (shortest edge on $\Gamma_C$)")
         axis.grid(True, which="both", alpha=0.3)
+        # Ticks at the levels' h_min alone: log-scale minor labels (3×10⁻², 4×10⁻², …) overlap.
+        levels = sorted({h for key, points in groups.items() if key[2] == panel for h, _ in points})
+        axis.xaxis.set_major_locator(FixedLocator(levels))
+        axis.xaxis.set_minor_locator(NullLocator())
+        axis.xaxis.set_major_formatter(FixedFormatter([f"{h:.3g}" for h in levels]))
     axes[0][0].set_ylabel(r"inf-sup constant $\alpha$")
     # One legend for all panels, below them (the same p and p_C look the same everywhere).
     entries = [legend[key] for key in sorted(legend)]  # by p, then p_C

@@ -12,7 +12,9 @@
 #include "core/petsc_session.hpp"
 #include "driver/run_outputs.hpp"
 #include "io/atomic_file.hpp"
+#include "io/output_folder.hpp"
 #include "scene/scene_reader.hpp"
+#include "scene_set_option.hpp"
 #include "space/multiplier_family.hpp"
 #include "studies/pairing_advice.hpp"
 
@@ -23,6 +25,7 @@ struct AdviseOptions {
   std::string scene, out = "results/advice";
   std::optional<int> p;
   std::optional<double> alpha_min;
+  std::vector<std::string> set;
 };
 
 void print_candidate(const char* label, const studies::AdviceCandidate& c) {
@@ -38,8 +41,9 @@ int run_advise(const AdviseOptions& o) {
     throw InputError(where + ": runs on one rank (its candidates are small eigenproblems); start it without mpirun");
   std::vector<scene::SceneOverride> overrides;
   if (o.p) overrides.push_back({"discretization.p", static_cast<long long>(*o.p), where + " --p"});
+  for (auto& set : set_overrides(o.set, where)) overrides.push_back(std::move(set));
   const auto scene = scene::read_scene(o.scene, overrides);
-  io::check_output_directory(o.out);
+  io::check_output_folder(o.out);
 
   // 2. Predict every candidate, the global α of the best two.
   const auto advice = studies::advise_pairing(
@@ -78,6 +82,7 @@ void add_advise_command(CLI::App& app, CommandAction& action) {
       ->check(CLI::ExistingFile);
   command->add_option("--out", o->out, "Output folder (advice.csv)")->capture_default_str();
   command->add_option("--p", o->p, "Override the scene's p");
+  add_set_option(*command, o->set);
   command->add_option("--alpha-min", o->alpha_min,
                       "Admit candidates whose predicted alpha is at least this, in (0, 1]; default 0.1 times the best "
                       "candidate's and at least 0.2 (the predictor's threshold)");

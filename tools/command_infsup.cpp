@@ -20,6 +20,7 @@
 #include "postprocess/mode_samples.hpp"
 #include "scene/scene_mesh.hpp"
 #include "scene/scene_reader.hpp"
+#include "scene_set_option.hpp"
 
 namespace hpcontact::tools {
 namespace {
@@ -30,6 +31,7 @@ struct InfSupOptions {
   std::optional<double> alpha_tolerance;
   std::string eigensolver = "slepc", distributed_solver = "substructuring";
   std::string csv, mode, scene;
+  std::vector<std::string> set;
 };
 
 // The scene (a file, or the paper's §7 scene) with the options as overrides: each is checked like
@@ -48,6 +50,7 @@ scene::Scene resolve_scene(const InfSupOptions& o) {
   if (o.norm) overrides.push_back({"infsup.norm", *o.norm, where + " --norm"});
   if (o.problem) overrides.push_back({"infsup.problem", *o.problem, where + " --problem"});
   if (o.alpha_tolerance) overrides.push_back({"infsup.alpha_tol", *o.alpha_tolerance, where + " --alpha-tol"});
+  for (auto& set : set_overrides(o.set, where)) overrides.push_back(std::move(set));
   if (o.scene.empty()) return scene::parse_scene(scene::paper_scene_text(), scene::paper_scene_name, overrides);
   return scene::read_scene(o.scene, overrides);
 }
@@ -140,6 +143,7 @@ void add_infsup_command(CLI::App& app, CommandAction& action) {
   command->add_option("--alpha-tol", o->alpha_tolerance,
                       "Relative error of alpha: the H^{-1/2} reference is refined until the estimate is below it "
                       "(infsup.alpha_tol; default 1e-4)");
+  add_set_option(*command, o->set);
   command->callback([&action, o] { action = [o] { return run_infsup(*o); }; });
 }
 

@@ -14,9 +14,11 @@
 #include "core/petsc_session.hpp"
 #include "driver/scene_run.hpp"
 #include "io/atomic_file.hpp"
+#include "io/output_folder.hpp"
 #include "linalg/distribution.hpp"
 #include "scene/scene_mesh.hpp"
 #include "scene/scene_reader.hpp"
+#include "scene_set_option.hpp"
 
 namespace hpcontact::tools {
 namespace {
@@ -24,8 +26,9 @@ namespace {
 struct SolveOptions {
   std::string scene, out = "results/solve";
   std::vector<std::string> effects;  ///< empty: the scene's
-  std::optional<int> p, pc, constraint_points;
+  std::optional<int> p, pc, n, constraint_points;
   std::string ratio;
+  std::vector<std::string> set;  ///< --set KEY=VALUE
   std::string distributed_solver = "substructuring";
 };
 
@@ -96,7 +99,12 @@ int run_solve(const SolveOptions& o) {
   if (o.constraint_points)
     overrides.push_back(
         {"solve.constraint_points", static_cast<long long>(*o.constraint_points), where + " --constraint-points"});
+  if (o.n) {
+    overrides.push_back({"domain.n_x", static_cast<long long>(*o.n), where + " --n"});
+    overrides.push_back({"domain.n_y", static_cast<long long>(*o.n), where + " --n"});
+  }
   if (!o.effects.empty()) overrides.push_back({"run.effects", o.effects, where + " --effects"});
+  for (auto& set : set_overrides(o.set, where)) overrides.push_back(std::move(set));
   const auto scene = scene::read_scene(o.scene, overrides);
   if (scene.effects.empty()) {
     std::vector<std::string> names;
@@ -106,7 +114,7 @@ int run_solve(const SolveOptions& o) {
         fmt::format("a [run] table with effects = [...] (any of {}), or the option --effects", fmt::join(names, ", ")));
   }
   const auto distributed_solver = linalg::parse_distributed_solver(o.distributed_solver, where, "--distributed-solver");
-  io::check_output_directory(o.out);
+  io::check_output_folder(o.out);
 
   // 2. Run; progress goes to stderr so that stdout stays the result. Under mpirun every rank runs
   // the scene, K and A_G are factorized over the ranks, and rank 0 reports and writes.
@@ -146,9 +154,11 @@ void add_solve_command(CLI::App& app, CommandAction& action) {
       ->delimiter(',');
   command->add_option("--p", o->p, "Override the scene's p");
   command->add_option("--pc", o->pc, "Override the scene's p_C");
+  command->add_option("--n", o->n, "Override the rectangle's cells: n x n (domain.n_x, domain.n_y)");
   command->add_option("--ratio", o->ratio, "Override the scene's contact mesh: h/H, e.g. 1/2");
   command->add_option("--constraint-points", o->constraint_points,
                       "Override the scene's constraint points per segment (Remark 3; >= p_C + 1)");
+  add_set_option(*command, o->set);
   command
       ->add_option("--distributed-solver", o->distributed_solver,
                    "Under mpirun: substructuring (CHOLMOD per rank, dense interface) | mumps (MPIAIJ + MUMPS) | bddc "

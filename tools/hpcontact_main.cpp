@@ -5,6 +5,8 @@
 #include <mpi.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cctype>
 #include <iostream>
 #include <memory>
 
@@ -14,6 +16,7 @@
 #include "core/petsc_session.hpp"
 #include "core/rank_agreement.hpp"
 #include "infsup/generalized_eigen.hpp"
+#include "io/toml_reader.hpp"
 
 namespace {
 
@@ -39,6 +42,34 @@ int report(const std::exception& error) {
     MPI_Abort(MPI_COMM_WORLD, code);
   }
   return code;
+}
+
+// CLI11's "The following arguments were not expected" names no alternative: an option that is a
+// typo of one of the subcommand's (--pC for --pc) gets a "did you mean", and every scene-taking
+// command is reminded that --set reaches any scene key. Empty if no argument is such an option.
+std::string unknown_option_message(const CLI::App& app, const std::vector<std::string>& reversed_arguments) {
+  const CLI::App* command = nullptr;
+  for (auto it = reversed_arguments.rbegin(); it != reversed_arguments.rend() && !command; ++it)
+    for (const auto* sub : app.get_subcommands([](const CLI::App*) { return true; }))
+      if (sub->get_name() == *it) command = sub;
+  if (!command) return "";
+  std::vector<std::string> names;
+  bool takes_set = false;
+  for (const auto* option : command->get_options()) {
+    for (const auto& name : option->get_lnames()) names.push_back("--" + name);
+    for (const auto& name : option->get_snames()) names.push_back("-" + name);
+    takes_set = takes_set || option->check_lname("set");
+  }
+  for (auto it = reversed_arguments.rbegin(); it != reversed_arguments.rend(); ++it) {
+    if (it->size() < 2 || (*it)[0] != '-' || std::isdigit(static_cast<unsigned char>((*it)[1]))) continue;
+    const std::string name = it->substr(0, it->find('='));
+    if (std::find(names.begin(), names.end(), name) != names.end()) continue;
+    const auto nearest = hpcontact::io::nearest_name(name, names);
+    return fmt::format("hpcontact {}: unknown option '{}'{}{}; 'hpcontact {} --help' lists the options",
+                       command->get_name(), name, nearest ? fmt::format(" (did you mean '{}'?)", *nearest) : "",
+                       takes_set ? "; any scene key can be set with --set KEY=VALUE" : "", command->get_name());
+  }
+  return "";
 }
 
 }  // namespace
@@ -71,6 +102,7 @@ int main(int argc, char** argv) {
 
   // 3. Parse (CLI11 wants argv without the program name, in reverse order).
   std::vector<std::string> arguments(command_line.own.rbegin(), command_line.own.rend() - 1);
+  const std::vector<std::string> given = arguments;  // (parse consumes its argument)
   try {
     app.parse(arguments);
   } catch (const CLI::ParseError& error) {
@@ -78,6 +110,12 @@ int main(int argc, char** argv) {
     // code (MPI is not up yet, so the launcher's rank variable tells). The other ranks end quietly
     // with 0: a non-zero exit of theirs could make the launcher kill rank 0 before it printed.
     if (launcher_rank() != 0) return 0;
+    if (dynamic_cast<const CLI::ExtrasError*>(&error)) {
+      if (const auto message = unknown_option_message(app, given); !message.empty()) {
+        fmt::print(stderr, "{}\n", message);
+        return 2;
+      }
+    }
     const int code = app.exit(error);
     return code == 0 ? 0 : 2;
   }

@@ -14,7 +14,7 @@ namespace {
 
 long long largest(const std::vector<int>& degrees) { return *std::max_element(degrees.begin(), degrees.end()); }
 
-// Level k's solutions as solution_<name>_level<k>, their text built now (the level's operators
+// Level k's solutions as solution_<name>_level<k>, their arrays built now (the level's operators
 // end before the files are written); every rank builds its piece when distributed.
 void add_level_files(const Level& level, int k, const StageContext& context, RunFiles& files) {
   if (!context.writes_level_files) return;
@@ -22,7 +22,7 @@ void add_level_files(const Level& level, int k, const StageContext& context, Run
     for (const auto& solved : level.solved)
       for (const auto& solution : solved.solutions)
         files.solutions.push_back(
-            built_now({level_file_name(solved.name + solution.suffix, k), solution.fields, solution.text}));
+            built_now({level_file_name(solved.name + solution.suffix, k), solution.fields, solution.grid}));
   });
 }
 

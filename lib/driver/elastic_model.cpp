@@ -28,11 +28,14 @@ ContactResult elastic_result(const contact::ElasticContactSetup& setup, const co
   const bool tied = setup.problem == contact::ElasticContactProblem::tied;
   r.contact_set_length = tied ? setup.boundary_mesh->length() : samples.contact_set_length;
   r.total_force = samples.total_force;
+  r.tangential_force = samples.tangential_force;
+  r.contact_force = {samples.contact_force.x(), samples.contact_force.y()};
   const auto& zones = setup.boundary_mesh->zones();
   for (std::size_t z = 0; z < zones.size(); ++z)
     r.zones.push_back({zones[z].end - zones[z].begin, zones[z].closed,
                        tied ? zones[z].end - zones[z].begin : samples.zone_contact_set_length[z],
-                       samples.zone_total_force[z]});
+                       samples.zone_total_force[z], samples.zone_tangential_force[z],
+                       std::array{samples.zone_contact_force[z].x(), samples.zone_contact_force[z].y()}});
   r.solver = solution.qp;
   r.seconds = {solution.seconds.assembly, solution.seconds.factorization, solution.seconds.condensation,
                solution.seconds.qp,       solution.seconds.recovery,      seconds};
@@ -65,9 +68,9 @@ class ElasticModel final : public Model {
         {{&scene_, assembly::vector_field(operators_->vector_space(), solution->u, solution->u_rows, solution->lift),
           &operators_->mesh()}},
         setup, solution->pressure, operators_->distribution());
-    // The displacement u0 + the Dirichlet lift and its von Mises stress, on this rank's cells.
-    auto text = [this, solution] {
-      return io::elastic_vtu_text(
+    // The displacement u0 + the Dirichlet lift, its stress and von Mises stress, on this rank's cells.
+    auto grid = [this, solution] {
+      return io::elastic_vtu_grid(
           assembly::vector_field(operators_->vector_space(), solution->u, solution->u_rows, solution->lift),
           operators_->materials());
     };
@@ -75,7 +78,7 @@ class ElasticModel final : public Model {
             scene::to_string(effect),
             std::move(samples.table),
             solution->pressure,
-            {{"", io::elastic_vtu_fields(), std::move(text)}}};
+            {{"", io::elastic_vtu_fields(), std::move(grid)}}};
   }
 
   infsup::InfSupSetup infsup_setup() const override {

@@ -106,7 +106,7 @@ contact::ElasticContactSetup elastic_setup_of(const scene::Scene& scene, const S
   setup.body_force = body.body_force;
   setup.traction = body.traction;
   setup.dirichlet = body.dirichlet;
-  setup.gap = scene_function(scene, "data.g", scene.obstacle);
+  setup.gap = scene_gap(scene, operators.contact());
   if (problem == contact::ElasticContactProblem::tresca) {
     const auto bound = scene_function(scene, "data.s", scene.friction_bound);
     setup.threshold = [bound, file = scene.where("data.s"), text = scene.friction_bound](const mesh::Point& x) {

@@ -16,18 +16,19 @@
 #include "driver/scene_discretization.hpp"
 #include "infsup/infsup_operators.hpp"
 #include "io/csv_writer.hpp"
+#include "io/vtu_writer.hpp"
 #include "linalg/distribution.hpp"
 #include "scene/scene.hpp"
 
 namespace hpcontact::driver {
 
 /// One ParaView file of a solved problem: the solution on one body.
-struct SolutionText {
+struct SolutionGrid {
   std::string suffix;  ///< after solution_<name>: empty for one body, _<body> for each body of a pair
   std::vector<std::pair<std::string, int>> fields;  ///< the file's point fields
-  /// The ParaView text of the solution on this rank's cells, built when called: the model that
+  /// The solution on this rank's cells as the VTU's arrays, built when called: the model that
   /// solved it must still be alive.
-  std::function<std::string()> text;
+  std::function<io::VtuGrid()> grid;
 };
 
 /// One contact problem solved by a model, with what its outputs need.
@@ -40,7 +41,7 @@ struct SolvedProblem {
   /// The multiplier convergence errors are measured on: Legendre coefficients in the
   /// discretization's MultiplierSpace (λ for the scalar model, the pressure for elasticity).
   Eigen::VectorXd error_multiplier;
-  std::vector<SolutionText> solutions;  ///< one per body
+  std::vector<SolutionGrid> solutions;  ///< one per body
 };
 
 class Model {

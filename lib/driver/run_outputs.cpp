@@ -12,9 +12,9 @@
 #include "core/petsc_session.hpp"
 #include "core/rank_agreement.hpp"
 #include "io/atomic_file.hpp"
+#include "io/line_samples_vtu.hpp"
 #include "io/output_folder.hpp"
 #include "io/vtk_xml_document.hpp"
-#include "io/vtp_writer.hpp"
 #include "io/vtu_writer.hpp"
 
 namespace hpcontact::driver {
@@ -39,8 +39,8 @@ std::filesystem::path broadcast_path(const std::filesystem::path& path, MPI_Comm
 }  // namespace
 
 SolutionFile built_now(SolutionFile file) {
-  auto text = std::make_shared<std::string>(file.text());
-  file.text = [text] { return std::move(*text); };
+  auto grid = std::make_shared<io::VtuGrid>(file.grid());
+  file.grid = [grid] { return std::move(*grid); };
   return file;
 }
 
@@ -74,7 +74,7 @@ void write_run_outputs(const std::filesystem::path& out, const linalg::Distribut
     run_on_all_ranks_agreeing(
         [&, rank = rank] {
           for (const auto& solution : solutions)
-            io::write_file_atomically(staging / piece_name(solution.name, rank), solution.text());
+            io::write_file_atomically(staging / piece_name(solution.name, rank), io::vtu_text(solution.grid()));
         },
         ranks);
   run_on_all_ranks_agreeing(
@@ -83,7 +83,7 @@ void write_run_outputs(const std::filesystem::path& out, const linalg::Distribut
         for (const auto& solution : solutions) {
           const auto file = staging / solution_file_name(solution.name, distributed);
           if (!distributed) {
-            io::write_file_atomically(file, solution.text());
+            io::write_file_atomically(file, io::vtu_text(solution.grid()));
             continue;
           }
           std::vector<std::string> pieces;
@@ -111,7 +111,7 @@ void write_sample_files(const scene::Scene& scene, const std::filesystem::path& 
                         const io::CsvTable& samples) {
   if (scene.wants_output(scene::Output::boundary)) samples.write(folder / ("boundary_" + name + ".csv"));
   if (scene.wants_output(scene::Output::vtu))
-    io::write_file_atomically(folder / ("contact_" + name + ".vtp"), io::polyline_vtp_text(samples));
+    io::write_file_atomically(folder / ("contact_" + name + ".vtu"), io::line_samples_vtu_text(samples));
 }
 
 }  // namespace hpcontact::driver

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "io/csv_writer.hpp"
+#include "io/vtu_writer.hpp"
 #include "linalg/distribution.hpp"
 #include "scene/scene.hpp"
 
@@ -20,12 +21,12 @@ namespace hpcontact::driver {
 struct SolutionFile {
   std::string name;                                 ///< without extension: solution_file_name gives the file
   std::vector<std::pair<std::string, int>> fields;  ///< its point fields (name, components)
-  /// This rank's VTU text (the whole mesh when serial, the rank's cells when distributed), built
-  /// when the file is written (called once), so that one text at a time is held.
-  std::function<std::string()> text;
+  /// This rank's VTU arrays (the whole mesh when serial, the rank's cells when distributed),
+  /// built when the file is written (called once), so that one solution at a time is held.
+  std::function<io::VtuGrid()> grid;
 };
 
-/// `file` with its text built now, for a solution whose operators end before the files are
+/// `file` with its arrays built now, for a solution whose operators end before the files are
 /// written (a convergence level's).
 SolutionFile built_now(SolutionFile file);
 
@@ -54,7 +55,7 @@ std::string level_file_name(const std::string& problem, int level);
 OutputText level_collection(const std::string& problem, int finest, bool distributed);
 
 /// A contact problem's sample files into `folder`: boundary_<name>.csv (output "boundary") and
-/// contact_<name>.vtp (output "vtu").
+/// contact_<name>.vtu (output "vtu").
 void write_sample_files(const scene::Scene& scene, const std::filesystem::path& folder, const std::string& name,
                         const io::CsvTable& samples);
 

@@ -3,6 +3,7 @@
 // module and library programs all read these fields (summary_json.hpp writes the JSON from them).
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -16,10 +17,12 @@ namespace hpcontact::driver {
 
 /// One zone of Γ_C in a contact result.
 struct ZoneResult {
-  double length = 0.0;                ///< arc length of the zone
-  bool closed = false;                ///< a closed curve
-  double contact_set_length = 0.0;    ///< where the multiplier does not vanish, from the samples
-  std::optional<double> total_force;  ///< elastic: ∫ pressure ds over the zone
+  double length = 0.0;                                 ///< arc length of the zone
+  bool closed = false;                                 ///< a closed curve
+  double contact_set_length = 0.0;                     ///< where the multiplier does not vanish, from the samples
+  std::optional<double> total_force;                   ///< elastic: ∫ pressure ds over the zone
+  std::optional<double> tangential_force;              ///< elastic: ∫ σ_nt ds over the zone
+  std::optional<std::array<double, 2>> contact_force;  ///< elastic: ∫ (−p n + σ_nt t) ds over the zone
 };
 
 /// Constraint points of Remark 3 used per segment of T_{C,H}.
@@ -59,7 +62,11 @@ struct ContactResult {
   double energy = 0.0;  ///< E(u) = ½ a(u, u) − F(u)
   long long n_dofs = 0, nmult = 0, n_trace = 0;
   double contact_set_length = 0.0;
-  std::optional<double> total_force;  ///< elastic: P = ∫_{Γ_C} pressure ds
+  std::optional<double> total_force;       ///< elastic: P = ∫_{Γ_C} pressure ds
+  std::optional<double> tangential_force;  ///< elastic: T = ∫_{Γ_C} σ_nt ds (along increasing s)
+  /// elastic: the resultant of the contact traction on the body (the slave of a pair),
+  /// ∫_{Γ_C} (−p n + σ_nt t) ds, in x and y
+  std::optional<std::array<double, 2>> contact_force;
   std::vector<ZoneResult> zones;
   std::optional<ConstraintPointCount> constraint_points;  ///< scalar problems
   contact::QpReport solver;

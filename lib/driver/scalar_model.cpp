@@ -24,7 +24,7 @@ ContactResult scalar_result(const std::string& name, const contact::ContactSolut
   r.contact_set_length = samples.contact_set_length;
   const auto& zones = boundary_mesh.zones();
   for (std::size_t z = 0; z < zones.size(); ++z)
-    r.zones.push_back({zones[z].end - zones[z].begin, zones[z].closed, samples.zone_contact_set_length[z], {}});
+    r.zones.push_back({zones[z].end - zones[z].begin, zones[z].closed, samples.zone_contact_set_length[z], {}, {}, {}});
   // (a standard or dual family constrains its coefficients: no points per segment)
   const auto& q = solution.constraint_points;
   if (!q.empty())
@@ -57,15 +57,15 @@ class ScalarModel final : public Model {
     const double seconds = clock.seconds();
     auto samples = postprocess::sample_boundary(setup, *solution);
     // u = u0 + the Dirichlet lift on Ω, on this rank's cells.
-    auto text = [this, solution] {
-      return io::solution_vtu_text(
+    auto grid = [this, solution] {
+      return io::solution_vtu_grid(
           assembly::scalar_field(primal_.space(), solution->u, solution->u_rows, solution->lift));
     };
     return {scalar_result(scene::to_string(effect), *solution, samples, *d_.boundary_mesh, seconds),
             scene::to_string(effect),
             std::move(samples.table),
             solution->lambda_legendre,
-            {{"", io::solution_vtu_fields(), std::move(text)}}};
+            {{"", io::solution_vtu_fields(), std::move(grid)}}};
   }
 
   infsup::InfSupSetup infsup_setup() const override {

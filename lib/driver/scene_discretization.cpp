@@ -126,6 +126,11 @@ std::function<double(const mesh::Point&)> scene_function(const scene::Scene& sce
   return [expression](const mesh::Point& x) { return expression(x.x(), x.y()); };
 }
 
+std::function<double(const mesh::Point&)> scene_gap(const scene::Scene& scene, const mesh::ContactBoundary& contact) {
+  if (scene.has_rigid_obstacle()) return contact::obstacle_gap(scene.rigid_obstacle, contact);
+  return scene_function(scene, "data.g", scene.obstacle);
+}
+
 namespace {
 
 // The scene's s as the weight of B^s, keyed by its text so that the contact solve and α share B^s;
@@ -191,7 +196,7 @@ contact::ContactSetup contact_setup_of(const scene::Scene& scene, const SceneDis
     throw_bad_input(scene.where("boundary.u_D"), "boundary.u_D", scene.dirichlet_value,
                     "absent: the scene has no Γ_D (boundary.dirichlet) for the data to act on");
   if (problem == contact::ContactProblem::signorini)
-    setup.obstacle = scene_function(scene, "data.g", scene.obstacle);
+    setup.obstacle = scene_gap(scene, primal.contact());
   else
     setup.bound = scene_friction_bound(scene);
   setup.primal = &primal;

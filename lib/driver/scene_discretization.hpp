@@ -74,6 +74,9 @@ bool reads_whole_mesh_after_operators(const scene::Scene& scene);
 /// naming where the key came from; empty for empty text.
 std::function<double(const mesh::Point&)> scene_function(const scene::Scene& scene, const std::string& key,
                                                          const std::string& text);
+/// The obstacle's gap on Γ_C: data.g, or the rigid obstacle of [obstacle] along `contact`'s
+/// outward normal (`contact` must outlive the function).
+std::function<double(const mesh::Point&)> scene_gap(const scene::Scene& scene, const mesh::ContactBoundary& contact);
 
 /// The contact problem `problem` of the scene on `discretization` (data from the scene's
 /// expressions, s ≥ 0 checked where evaluated). `primal` must belong to the discretization.

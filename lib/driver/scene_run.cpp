@@ -56,6 +56,14 @@ void hand_over_tables(const Level& base, const RunResult& result, const RunFiles
     options.tables->insert_or_assign("convergence", convergence_table(result.convergence));
 }
 
+// Every solution's VTU arrays, to options.fields (the Python module's fields).
+void hand_over_fields(const Level& base, const SceneRunOptions& options) {
+  if (!options.fields || !base.scene.wants_output(scene::Output::vtu)) return;
+  for (const auto& solved : base.solved)
+    for (const auto& solution : solved.solutions)
+      options.fields->insert_or_assign(solved.name + solution.suffix, solution.grid());
+}
+
 // 6. The outputs as one set: rank 0 writes all but the pieces of the solutions' ParaView files; a
 // failure to write ends every rank the same way.
 void write_outputs(const Level& base, const RunResult& result, RunFiles& files, const SceneRunOptions& options) {
@@ -63,7 +71,7 @@ void write_outputs(const Level& base, const RunResult& result, RunFiles& files, 
   if (scene.wants_output(scene::Output::vtu))
     for (const auto& solved : base.solved)
       for (const auto& solution : solved.solutions)
-        files.solutions.push_back({"solution_" + solved.name + solution.suffix, solution.fields, solution.text});
+        files.solutions.push_back({"solution_" + solved.name + solution.suffix, solution.fields, solution.grid});
   write_run_outputs(options.out, options.distribution, files.solutions, [&](const std::filesystem::path& out) {
     for (const auto& solved : base.solved) write_sample_files(scene, out, solved.name, solved.samples);
     for (const auto& file : files.texts) io::write_file_atomically(out / file.name, file.text);
@@ -106,6 +114,7 @@ RunResult run_scene(const scene::Scene& given_scene, const SceneRunOptions& opti
   describe_run(*base, log, options.distribution, result);
   result.seconds_total = clock.seconds();
   hand_over_tables(*base, result, files, options);
+  hand_over_fields(*base, options);
   if (options.write_files) write_outputs(*base, result, files, options);
   return result;
 }

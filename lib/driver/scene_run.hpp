@@ -11,6 +11,7 @@
 
 #include "driver/run_result.hpp"
 #include "io/csv_writer.hpp"
+#include "io/vtu_writer.hpp"
 #include "linalg/distribution.hpp"
 #include "scene/scene.hpp"
 
@@ -25,6 +26,9 @@ struct SceneRunOptions {
   /// If given, receives every table the run writes, by file stem ("boundary_signorini", "mode",
   /// "convergence"), so that callers (the Python module) get the data without files.
   std::map<std::string, io::CsvTable>* tables = nullptr;
+  /// If given, receives every solution the run writes as a VTU (output "vtu"), as its arrays, by
+  /// the file's stem without "solution_" ("signorini", "frictionless_bottom"): this rank's cells.
+  std::map<std::string, io::VtuGrid>* fields = nullptr;
   /// Write the output files into `out`; false: only return the result (and fill `tables`).
   bool write_files = true;
 };
@@ -37,7 +41,7 @@ struct SceneRunOptions {
 ///                             stress (elastic) on Ω, VTK Lagrange cells of the largest p; under
 ///                             mpirun solution_<problem>.pvtu naming one piece per rank,
 ///                             solution_<problem>_rank<r>.vtu (that rank's cells)
-///   contact_<problem>.vtp     (output "vtu") the boundary samples on Γ_C, one polyline per zone
+///   contact_<problem>.vtu     (output "vtu") the boundary samples on Γ_C, line cells along each zone
 ///   solution_<problem>_level<k>.vtu (.pvtu), solution_<problem>.pvd
 ///                             (output "vtu", effect convergence) u on every level, as a series
 ///   mode.csv                  (output "mode", effect infsup) the eigenvector of α

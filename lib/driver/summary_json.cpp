@@ -36,11 +36,15 @@ json contact_json(const ContactResult& c) {
            {"recovery", c.seconds.recovery},
            {"total", c.seconds.total}}}};
   if (c.total_force) j["total_force"] = *c.total_force;
+  if (c.tangential_force) j["tangential_force"] = *c.tangential_force;
+  if (c.contact_force) j["contact_force"] = *c.contact_force;
   j["zones"] = json::array();
   for (const auto& zone : c.zones) {
     j["zones"].push_back(
         {{"length", zone.length}, {"closed", zone.closed}, {"contact_set_length", zone.contact_set_length}});
     if (zone.total_force) j["zones"].back()["total_force"] = *zone.total_force;
+    if (zone.tangential_force) j["zones"].back()["tangential_force"] = *zone.tangential_force;
+    if (zone.contact_force) j["zones"].back()["contact_force"] = *zone.contact_force;
   }
   if (c.constraint_points)
     j["constraint_points_per_segment"] = {

@@ -46,23 +46,23 @@ class TwoBodyModel final : public Model {
          {&scene_.pair->master, assembly::vector_field(master_->vector_space(), u_m.u, u_m.u_rows, u_m.lift),
           &master_->mesh()}},
         setup.slave, u_s.pressure, {});
-    // Each body's displacement u0 + its Dirichlet lift and its von Mises stress, a file each.
-    auto slave_text = [this, solution] {
+    // Each body's displacement u0 + its Dirichlet lift, its stress and von Mises stress, a file each.
+    auto slave_grid = [this, solution] {
       const auto& u = solution->contact;
-      return io::elastic_vtu_text(assembly::vector_field(slave_->vector_space(), u.u, u.u_rows, u.lift),
+      return io::elastic_vtu_grid(assembly::vector_field(slave_->vector_space(), u.u, u.u_rows, u.lift),
                                   slave_->materials());
     };
-    auto master_text = [this, solution] {
+    auto master_grid = [this, solution] {
       const auto& u = solution->master;
-      return io::elastic_vtu_text(assembly::vector_field(master_->vector_space(), u.u, u.u_rows, u.lift),
+      return io::elastic_vtu_grid(assembly::vector_field(master_->vector_space(), u.u, u.u_rows, u.lift),
                                   master_->materials());
     };
     return {std::move(result),
             scene_.pair->name + "_" + scene::to_string(effect),
             std::move(samples.table),
             solution->contact.pressure,
-            {{"_" + scene_.body, io::elastic_vtu_fields(), std::move(slave_text)},
-             {"_" + scene_.pair->master.body, io::elastic_vtu_fields(), std::move(master_text)}}};
+            {{"_" + scene_.body, io::elastic_vtu_fields(), std::move(slave_grid)},
+             {"_" + scene_.pair->master.body, io::elastic_vtu_fields(), std::move(master_grid)}}};
   }
 
   // b(μ, v) = ∫ μ (v_s − v_m∘Φ)·n_s on both bodies' displacements, μ in H^{-1/2} of the slave's Γ_C.

@@ -23,17 +23,35 @@ void ensure_writable_directory(const std::filesystem::path& directory) {
     throw InputError("output folder '" + directory.string() + "' is not writable");
 }
 
+std::filesystem::path normalized_folder(const std::filesystem::path& directory) {
+  if (directory.empty()) throw InputError("output folder '': an empty path; name a folder");
+  std::filesystem::path path = std::filesystem::absolute(directory).lexically_normal();
+  // "DIR/" and "DIR/." name DIR: its siblings (staging folders) must not land inside it.
+  if (!path.has_filename() && path.has_parent_path() && path != path.root_path()) path = path.parent_path();
+  return path;
+}
+
 void check_output_directory(const std::filesystem::path& directory) {
-  // The folder itself, or else its nearest existing ancestor, must be a writable folder.
-  std::filesystem::path existing = std::filesystem::absolute(directory);
+  const std::filesystem::path path = normalized_folder(directory);
+  if (std::filesystem::exists(path) && !std::filesystem::is_directory(path))
+    throw InputError("output folder '" + directory.string() + "' exists and is not a folder");
+  if (std::filesystem::exists(path) && access(path.c_str(), W_OK) != 0)
+    throw InputError("output folder '" + directory.string() + "' is not writable");
+  // Outputs are staged beside the folder: its parent, or else that parent's nearest existing
+  // ancestor, must take a new folder. A trial folder made and removed there says so where
+  // access() cannot (read-only mounts, /proc, quotas).
+  std::filesystem::path existing = path.parent_path();
   while (!std::filesystem::exists(existing) && existing.has_parent_path() && existing != existing.parent_path())
     existing = existing.parent_path();
   if (!std::filesystem::is_directory(existing))
     throw InputError("output folder '" + directory.string() + "' cannot be created: '" + existing.string() +
                      "' is not a folder");
-  if (access(existing.c_str(), W_OK) != 0)
-    throw InputError("output folder '" + directory.string() + "' cannot be written: '" + existing.string() +
-                     "' is not writable");
+  std::string trial = (existing / ".hpcontact-trial-XXXXXX").string();
+  errno = 0;
+  if (!mkdtemp(trial.data()))
+    throw InputError(describe_io_failure(
+        "output folder '" + directory.string() + "' cannot be written: no folder can be made in", existing.string()));
+  rmdir(trial.c_str());
 }
 
 void sync_to_disk(const std::filesystem::path& path) {

@@ -13,6 +13,9 @@ namespace hpcontact::io {
 /// nearest existing ancestor is a writable folder): commands that write only at the end call
 /// this first, so that bad input leaves no empty folder behind. @throws InputError otherwise.
 void check_output_directory(const std::filesystem::path& directory);
+/// `directory` absolute and normalized, without a trailing separator ("out/", "out/." and "out"
+/// are one folder). @throws InputError for an empty path.
+std::filesystem::path normalized_folder(const std::filesystem::path& directory);
 
 /// Creates the directory (and parents). @throws InputError naming it if that fails or it is not
 /// writable.

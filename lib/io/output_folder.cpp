@@ -15,18 +15,27 @@
 namespace hpcontact::io {
 namespace {
 constexpr const char* kMarker = ".hpcontact-output";
+
+// An existing folder is replaced whole on commit only if hpcontact wrote it.
+void check_replaceable(const std::filesystem::path& out) {
+  if (!std::filesystem::exists(out)) return;
+  if (!std::filesystem::is_directory(out))
+    throw InputError("output folder '" + out.string() + "' exists and is not a folder");
+  // (summary.json: a folder of a version before the marker)
+  if (!std::filesystem::is_empty(out) && !std::filesystem::exists(out / kMarker) &&
+      !std::filesystem::exists(out / "summary.json"))
+    throw InputError("output folder '" + out.string() + "' holds files that hpcontact did not write (no " + kMarker +
+                     "): choose a new or empty folder; a folder of an earlier run is replaced whole");
+}
 }  // namespace
 
-OutputFolder::OutputFolder(std::filesystem::path out) : out_(std::filesystem::absolute(std::move(out))) {
-  if (std::filesystem::exists(out_)) {
-    if (!std::filesystem::is_directory(out_))
-      throw InputError("output folder '" + out_.string() + "' exists and is not a folder");
-    // (summary.json: a folder of a version before the marker)
-    if (!std::filesystem::is_empty(out_) && !std::filesystem::exists(out_ / kMarker) &&
-        !std::filesystem::exists(out_ / "summary.json"))
-      throw InputError("output folder '" + out_.string() + "' holds files that hpcontact did not write (no " + kMarker +
-                       "): choose a new or empty folder; a folder of an earlier run is replaced whole");
-  }
+void check_output_folder(const std::filesystem::path& out) {
+  check_output_directory(out);
+  check_replaceable(normalized_folder(out));
+}
+
+OutputFolder::OutputFolder(std::filesystem::path out) : out_(normalized_folder(out)) {
+  check_replaceable(out_);
   staging_ = out_;
   staging_ += ".tmp-" + std::to_string(getpid());
   std::error_code error;

@@ -7,6 +7,11 @@
 
 namespace hpcontact::io {
 
+/// Checks, creating nothing that stays, that `out` can become a run's output folder: writable or
+/// creatable (io::check_output_directory) and, if it exists, a folder hpcontact wrote or an empty
+/// one. Commands that write at the end call this first. @throws InputError.
+void check_output_folder(const std::filesystem::path& out);
+
 class OutputFolder {
  public:
   /// Creates "<out>.tmp-<pid>". An existing `out` must be a folder that hpcontact wrote (it has the

@@ -4,6 +4,7 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -55,6 +56,14 @@ bool TomlTable::has(const std::string& key) const {
 }
 
 void TomlTable::fail(const std::string& key, const std::string& value, const std::string& allowed) const {
+  // A required key that is missing is often there under a misspelt name ("pc" for "pC"): name it.
+  if (value == "(missing)" && table_) {
+    std::vector<std::string> present;
+    for (const auto& [name, node] : *table_) present.emplace_back(name.str());
+    if (const auto near = nearest_name(key, present))
+      throw_bad_input(origin(key), qualified(key),
+                      "(missing; the table has '" + *near + "': did you mean '" + key + "'?)", allowed);
+  }
   throw_bad_input(origin(key), qualified(key), value, allowed);
 }
 
@@ -122,6 +131,20 @@ std::string TomlTable::string(const std::string& key, std::optional<std::string>
   const auto* node = table_->get(key);
   if (!node->is_string()) fail(key, value_text(key), "must be a string (in quotes)");
   return node->value<std::string>().value();
+}
+
+std::string TomlTable::expression(const std::string& key, std::optional<std::string> fallback) const {
+  if (!has(key)) {
+    if (fallback) return *fallback;
+    fail(key, "(missing)", "an expression (a string in quotes) or a number is required");
+  }
+  const auto* node = table_->get(key);
+  if (node->is_string()) return node->value<std::string>().value();
+  if (!(node->is_integer() || node->is_floating_point()))
+    fail(key, value_text(key), "must be an expression (a string in quotes) or a number");
+  const double value = numeric_value(*node);
+  if (!std::isfinite(value)) fail(key, value_text(key), "must be a finite number");
+  return format_full_precision(value);
 }
 
 std::string TomlTable::choice(const std::string& key, const std::vector<std::string>& allowed,
@@ -259,16 +282,28 @@ void TomlTable::reject_unknown_keys() const {
     const std::string key(key_node.str());
     if (asked_.contains(key)) continue;
     std::string message = file_ + ": unknown key '" + qualified(key) + "'";
-    const auto nearest = std::min_element(
-        asked_.begin(), asked_.end(),
-        [&key](const std::string& a, const std::string& b) { return edit_distance(key, a) < edit_distance(key, b); });
-    if (nearest != asked_.end() && edit_distance(key, *nearest) <= std::max<std::size_t>(2, key.size() / 3))
+    if (const auto nearest = nearest_name(key, {asked_.begin(), asked_.end()}))
       message += " (did you mean '" + *nearest + "'?)";
     std::string known;
     for (const auto& k : asked_) known += (known.empty() ? "" : ", ") + k;
     message += "; known keys here: " + known;
     throw InputError(message);
   }
+}
+
+std::optional<std::string> nearest_name(const std::string& name, const std::vector<std::string>& candidates) {
+  auto lower = [](std::string text) {
+    std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
+    return text;
+  };
+  for (const auto& candidate : candidates)
+    if (lower(candidate) == lower(name)) return candidate;
+  const auto nearest = std::min_element(candidates.begin(), candidates.end(), [&](const auto& a, const auto& b) {
+    return edit_distance(name, a) < edit_distance(name, b);
+  });
+  if (nearest != candidates.end() && edit_distance(name, *nearest) <= std::max<std::size_t>(2, name.size() / 3))
+    return *nearest;
+  return std::nullopt;
 }
 
 namespace {
@@ -288,8 +323,9 @@ TomlTable wrap(toml::table parsed, const std::string& name) {
 }  // namespace
 
 std::string read_text_file(const std::string& path) {
+  errno = 0;
   std::ifstream file(path);
-  if (!file) throw InputError(path + ": cannot open the file");
+  if (!file) throw InputError(describe_io_failure("cannot open the file", path));
   std::stringstream text;
   text << file.rdbuf();
   return text.str();

@@ -41,6 +41,9 @@ class TomlTable {
   long long integer(const std::string& key, long long min, long long max,
                     std::optional<long long> fallback = std::nullopt) const;
   std::string string(const std::string& key, std::optional<std::string> fallback = std::nullopt) const;
+  /// An expression's text: a string, or a number (written back at full precision, so that
+  /// `E = 210e9` and `E = "210e9"` are the same value).
+  std::string expression(const std::string& key, std::optional<std::string> fallback = std::nullopt) const;
   /// A string from a fixed set of choices.
   std::string choice(const std::string& key, const std::vector<std::string>& allowed,
                      std::optional<std::string> fallback = std::nullopt) const;
@@ -91,5 +94,9 @@ TomlTable parse_toml_string(const std::string& text, const std::string& name);
 
 /// Levenshtein distance, for suggestions.
 std::size_t edit_distance(const std::string& a, const std::string& b);
+/// The candidate closest to `name` if it is close enough to be a typo of it (an edit distance of
+/// at most max(2, a third of its length)); `name` is compared case-insensitively first, so that
+/// "pc" finds "pC".
+std::optional<std::string> nearest_name(const std::string& name, const std::vector<std::string>& candidates);
 
 }  // namespace hpcontact::io

@@ -1,4 +1,4 @@
-// VTK XML files (UnstructuredGrid, PolyData, Collection) with their arrays appended as raw binary
+// VTK XML files (UnstructuredGrid, Collection) with their arrays appended as raw binary
 // (header_type UInt64, little-endian): the XML stays readable, the numbers stay exact and small.
 #pragma once
 
@@ -11,7 +11,7 @@ namespace hpcontact::io {
 
 class VtkXmlDocument {
  public:
-  /// @param type "UnstructuredGrid" or "PolyData".
+  /// @param type the dataset type, "UnstructuredGrid".
   explicit VtkXmlDocument(std::string type);
 
   /// The <DataArray> element of an array whose values go into the appended block.

@@ -1,4 +1,4 @@
-// vtu_text and the scalar and elastic fields written through it.
+// vtu_grid, vtu_text and the scalar and elastic fields written through them.
 #include "io/vtu_writer.hpp"
 
 #include <fmt/format.h>
@@ -18,6 +18,28 @@ struct NodePattern {
   assembly::ReferencePoints points;
   std::vector<LatticeEntity> entities;
 };
+
+// The order-k cell's lattice cut into linear triangles, as local node numbers (VTK's order): two
+// per lattice square of a quadrilateral; the upward and downward triangles of a triangle.
+std::vector<std::vector<int>> lattice_triangles(mesh::CellType type, int k) {
+  const auto lattice = vtk_lagrange_lattice(type, k);
+  std::map<std::array<int, 2>, int> local;
+  for (std::size_t n = 0; n < lattice.size(); ++n) local[lattice[n]] = static_cast<int>(n);
+  auto at = [&](int i, int j) { return local.at({i, j}); };
+  std::vector<std::vector<int>> out;
+  const bool quadrilateral = type == mesh::CellType::quadrilateral;
+  for (int j = 0; j < k; ++j)
+    for (int i = 0; i < k - (quadrilateral ? 0 : j); ++i) {
+      if (quadrilateral) {
+        out.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+        out.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+        continue;
+      }
+      out.push_back({at(i, j), at(i + 1, j), at(i, j + 1)});
+      if (i + j + 2 <= k) out.push_back({at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  return out;
+}
 
 NodePattern node_pattern(mesh::CellType type, int k) {
   const auto lattice = vtk_lagrange_lattice(type, k);
@@ -68,8 +90,8 @@ class SharedPoints {
 
 }  // namespace
 
-std::string vtu_text(const space::H1Space& space, const std::vector<VtuField>& fields, int order,
-                     const assembly::LocalRows& cells) {
+VtuGrid vtu_grid(const space::H1Space& space, const std::vector<VtuField>& fields, int order,
+                 const assembly::LocalRows& cells) {
   const auto& mesh = space.mesh();
   // The whole space's largest degree, also on a rank's part: every piece at the same order.
   const int k = order > 0 ? order : std::max(1, space.max_degree());
@@ -77,14 +99,18 @@ std::string vtu_text(const space::H1Space& space, const std::vector<VtuField>& f
   std::vector<int> components;
   for (const auto& field : fields) components.push_back(field.components);
   SharedPoints points(k, components);
-  std::vector<std::int64_t> connectivity, offsets;
-  std::vector<std::uint8_t> types;
-  std::vector<std::int32_t> degrees;
+  VtuGrid grid;
+  auto& [xyz, connectivity, offsets, types, degrees, point_data, triangles] = grid;
+  std::vector<std::vector<int>> lattice_cells[2];  // per type: triangles of local nodes
   for (int c = 0; c < mesh.n_cells(); ++c) {
     if (!cells.holds(c)) continue;
     const mesh::CellType type = mesh.cell_type(c);
     auto& pattern = patterns[static_cast<int>(type)];
-    if (!pattern) pattern = node_pattern(type, k);
+    if (!pattern) {
+      pattern = node_pattern(type, k);
+      lattice_cells[static_cast<int>(type)] = lattice_triangles(type, k);
+    }
+    const auto first = static_cast<std::int64_t>(connectivity.size());
     const auto values = assembly::tabulate_cell(space, c, pattern->points);
     std::vector<Eigen::MatrixXd> field_values;
     for (const auto& field : fields) field_values.push_back(field.evaluate(c, values));
@@ -104,6 +130,9 @@ std::string vtu_text(const space::H1Space& space, const std::vector<VtuField>& f
     offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
     types.push_back(static_cast<std::uint8_t>(vtk_lagrange_cell_type(type)));
     degrees.push_back(space.cell_degree(c));
+    for (const auto& local : lattice_cells[static_cast<int>(type)])
+      triangles.push_back(
+          {connectivity[first + local[0]], connectivity[first + local[1]], connectivity[first + local[2]]});
   }
   const std::size_t n_points = points.counts.size();
   for (std::size_t f = 0; f < fields.size(); ++f) {
@@ -113,21 +142,27 @@ std::string vtu_text(const space::H1Space& space, const std::vector<VtuField>& f
       for (int j = 0; j < m; ++j) sums[m * p + j] /= points.counts[p];
   }
 
-  VtkXmlDocument document("UnstructuredGrid");
-  std::string piece =
-      fmt::format("<Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n<PointData>\n", n_points, types.size());
+  xyz = std::move(points.xyz);
   for (std::size_t f = 0; f < fields.size(); ++f)
-    piece += document.array(fields[f].name, points.sums[f], fields[f].components);
-  piece += "</PointData>\n<CellData>\n" + document.array("p", degrees) + "</CellData>\n<Points>\n" +
-           document.array("Points", points.xyz, 3) + "</Points>\n<Cells>\n" +
-           document.array("connectivity", connectivity) + document.array("offsets", offsets) +
-           document.array("types", types) + "</Cells>\n</Piece>\n";
+    point_data.push_back({fields[f].name, fields[f].components, std::move(points.sums[f])});
+  return grid;
+}
+
+std::string vtu_text(const VtuGrid& grid) {
+  VtkXmlDocument document("UnstructuredGrid");
+  std::string piece = fmt::format("<Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n<PointData>\n", grid.n_points(),
+                                  grid.types.size());
+  for (const auto& array : grid.point_data) piece += document.array(array.name, array.values, array.components);
+  piece += "</PointData>\n<CellData>\n" + document.array("p", grid.degrees) + "</CellData>\n<Points>\n" +
+           document.array("Points", grid.xyz, 3) + "</Points>\n<Cells>\n" +
+           document.array("connectivity", grid.connectivity) + document.array("offsets", grid.offsets) +
+           document.array("types", grid.types) + "</Cells>\n</Piece>\n";
   return document.text(piece);
 }
 
-std::string solution_vtu_text(const assembly::CellField& u) {
+VtuGrid solution_vtu_grid(const assembly::CellField& u) {
   const auto names = solution_vtu_fields();  // (the PVTU names the same)
-  return vtu_text(*u.space,
+  return vtu_grid(*u.space,
                   {{names[0].first, names[0].second,
                     [&](int cell, const assembly::CellValues& values) {
                       return Eigen::MatrixXd(values.values * u.coefficients(cell));
@@ -143,34 +178,49 @@ std::string solution_vtu_text(const assembly::CellField& u) {
                   0, u.rows);
 }
 
-std::string elastic_vtu_text(const assembly::CellField& u, const std::vector<assembly::Material>& materials) {
+VtuGrid elastic_vtu_grid(const assembly::CellField& u, const std::vector<assembly::Material>& materials) {
   auto displacement = [&](int cell, const assembly::CellValues& values) {
     Eigen::MatrixXd out = Eigen::MatrixXd::Zero(values.values.rows(), 3);
     out.leftCols(2) = values.values * u.coefficients(cell);
     return out;
   };
-  auto von_mises = [&](int cell, const assembly::CellValues& values) {
+  // σ = λ tr(ε) I + 2μ ε in the plane, σ_zz of the plane model: columns xx, yy, zz, xy (yz = xz = 0).
+  auto stress = [&](int cell, const assembly::CellValues& values) {
     const Eigen::MatrixXd local = u.coefficients(cell);
     const Eigen::MatrixXd dx = values.grad_x * local, dy = values.grad_y * local;  // columns: components
     const auto& m = materials[cell];
-    Eigen::MatrixXd out(values.values.rows(), 1);
+    Eigen::MatrixXd out = Eigen::MatrixXd::Zero(values.values.rows(), 6);
     for (Eigen::Index q = 0; q < out.rows(); ++q) {
       const double exx = dx(q, 0), eyy = dy(q, 1), exy = 0.5 * (dy(q, 0) + dx(q, 1));
-      const double sxx = m.lambda * (exx + eyy) + 2 * m.mu * exx, syy = m.lambda * (exx + eyy) + 2 * m.mu * eyy;
-      const double szz = m.out_of_plane * (exx + eyy), sxy = 2 * m.mu * exy;
+      out(q, 0) = m.lambda * (exx + eyy) + 2 * m.mu * exx;
+      out(q, 1) = m.lambda * (exx + eyy) + 2 * m.mu * eyy;
+      out(q, 2) = m.out_of_plane * (exx + eyy);
+      out(q, 3) = 2 * m.mu * exy;
+    }
+    return out;
+  };
+  auto von_mises = [&](int cell, const assembly::CellValues& values) {
+    const Eigen::MatrixXd s = stress(cell, values);
+    Eigen::MatrixXd out(values.values.rows(), 1);
+    for (Eigen::Index q = 0; q < out.rows(); ++q) {
+      const double sxx = s(q, 0), syy = s(q, 1), szz = s(q, 2), sxy = s(q, 3);
       out(q, 0) = std::sqrt(0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) + (szz - sxx) * (szz - sxx)) +
                             3 * sxy * sxy);
     }
     return out;
   };
   const auto names = elastic_vtu_fields();  // (the PVTU names the same)
-  return vtu_text(*u.space,
-                  {{names[0].first, names[0].second, displacement}, {names[1].first, names[1].second, von_mises}}, 0,
-                  u.rows);
+  return vtu_grid(*u.space,
+                  {{names[0].first, names[0].second, displacement},
+                   {names[1].first, names[1].second, stress},
+                   {names[2].first, names[2].second, von_mises}},
+                  0, u.rows);
 }
 
 std::vector<std::pair<std::string, int>> solution_vtu_fields() { return {{"u", 1}, {"grad_u", 3}}; }
-std::vector<std::pair<std::string, int>> elastic_vtu_fields() { return {{"displacement", 3}, {"von_mises", 1}}; }
+std::vector<std::pair<std::string, int>> elastic_vtu_fields() {
+  return {{"displacement", 3}, {"stress", 6}, {"von_mises", 1}};
+}
 
 std::string pvtu_text(const std::vector<std::string>& pieces, const std::vector<std::pair<std::string, int>>& fields) {
   std::string out =

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -45,7 +46,8 @@ std::string unsupported_cell(const gmsh_api::Session& gmsh, const std::string& p
 
 // Reads `path` into Gmsh's model; a .geo geometry is meshed there (returns whether it was one).
 bool open_in_gmsh(gmsh_api::Session& gmsh, const std::string& path, const GeoMeshing& geo) {
-  if (!std::ifstream(path)) throw InputError(path + ": cannot open the Gmsh mesh file");
+  errno = 0;
+  if (!std::ifstream(path)) throw InputError(describe_io_failure("cannot open the Gmsh mesh file", path));
   const bool geometry = std::filesystem::path(path).extension() == ".geo";
   if (geo.mesh_size && !geometry)
     throw InputError(path + ": a mesh size applies to Gmsh geometry files (.geo) only, not to a mesh file");

@@ -19,7 +19,12 @@ struct ElasticBoundarySamples {
   io::CsvTable table;
   double contact_set_length = 0.0;  ///< where pressure > 1e-10 max pressure, from the samples
   double total_force = 0.0;         ///< P = ∫_{Γ_C} pressure ds (exact, from the multiplier)
-  std::vector<double> zone_contact_set_length, zone_total_force;  ///< the same per zone of Γ_C
+  double tangential_force = 0.0;    ///< T = ∫_{Γ_C} σ_nt ds (exact, from the multiplier)
+  /// The resultant of the contact traction on the body, ∫_{Γ_C} (−p n + σ_nt t) ds (Gauss
+  /// quadrature on each interval of the common refinement, exact on straight edges).
+  Eigen::Vector2d contact_force = Eigen::Vector2d::Zero();
+  std::vector<double> zone_contact_set_length, zone_total_force, zone_tangential_force;  ///< per zone of Γ_C
+  std::vector<Eigen::Vector2d> zone_contact_force;
   BoundViolation bounds;  ///< the pressure below 0 between the constraint points
 };
 

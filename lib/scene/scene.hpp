@@ -18,6 +18,7 @@
 #include "assembly/elastic_system.hpp"
 #include "contact/contact_problem.hpp"
 #include "contact/elastic_contact.hpp"
+#include "contact/obstacle_gap.hpp"
 #include "core/error.hpp"
 #include "infsup/infsup_operators.hpp"
 #include "mesh/mesh.hpp"
@@ -96,6 +97,8 @@ struct Scene {
   std::string friction_bound;  ///< s (may be empty)
   std::string load = "-1";     ///< f
   std::string obstacle;        ///< g (may be empty)
+  // [obstacle]: a rigid obstacle as geometry, instead of g (used when obstacle.type is given).
+  contact::RigidObstacle rigid_obstacle;
   // [material] (elastic effects): Young's modulus and Poisson's ratio, expressions in x, y
   // evaluated at cell centres (so cell groups may differ), and the plane model.
   std::string young = "1", poisson = "0.3";
@@ -122,6 +125,11 @@ struct Scene {
   std::vector<Output> outputs = all_outputs();
   // [convergence]
   int convergence_refinements = 3;
+
+  /// Whether the obstacle is given as geometry ([obstacle]) rather than by g.
+  bool has_rigid_obstacle() const { return given.contains("obstacle.type"); }
+  /// Whether the contact problems have their obstacle: g or [obstacle].
+  bool has_obstacle() const { return !obstacle.empty() || has_rigid_obstacle(); }
 
   /// Dotted keys the scene (or an override) gives, and where each overridden value came from.
   std::set<std::string> given;

@@ -5,13 +5,16 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <optional>
 
 #include "core/error.hpp"
 #include "core/expression.hpp"
+#include "scene/obstacle_keys.hpp"
 
 namespace hpcontact::scene {
 namespace {
@@ -68,13 +71,13 @@ SceneKey expression_key(const char* section, const char* name, const char* fallb
                         const char* doc) {
   return {section,
           name,
-          "expression in x, y",
+          "expression in x, y (or a number)",
           fallback[0] ? fmt::format("\"{}\"", fallback) : "",
           "muparser syntax",
           doc,
           "",
           [=](const TomlTable& table, Scene& scene) {
-            scene.*member = table.string(name, fallback);
+            scene.*member = table.expression(name, fallback);
             if (!(scene.*member).empty())
               Expression(scene.*member, table.origin(name) + ": key '" + table.qualified(name) + "'");
           }};
@@ -187,6 +190,11 @@ void add_domain_keys(std::vector<SceneKey>& keys) {
          scene.mesh_file = relative ? (std::filesystem::path(scene.file).parent_path() / path).string() : path;
          if (scene.mesh_file.empty())
            throw_bad_input(table.origin("mesh"), table.qualified("mesh"), "\"\"", "a file name");
+         // Unreadable files are reported now, with the reason, before any work.
+         errno = 0;
+         if (!std::ifstream(scene.mesh_file))
+           throw_bad_input(table.origin("mesh"), table.qualified("mesh"), "\"" + path + "\"",
+                           describe_io_failure("a readable Gmsh file; cannot open", scene.mesh_file));
        }});
   add({"domain", "mesh_size", "number", "the .geo's sizes", "(0, 1e6]",
        "a .geo `mesh`: Gmsh's maximal element size (Mesh.MeshSizeMax), before the split into quadrilaterals "
@@ -406,6 +414,7 @@ std::vector<SceneKey> declare_keys() {
   add_domain_keys(keys);
   add_boundary_and_contact_mesh_keys(keys);
   add_discretization_and_data_keys(keys);
+  add_obstacle_keys(keys);
   add_run_keys(keys);
   return keys;
 }
@@ -421,6 +430,9 @@ const std::vector<SceneSection>& scene_sections() {
       {"data", false,
        "the data: f (scalar model); f_x, f_y, t_x, t_y, friction_coefficient (elastic effects); g (the obstacle, for "
        "elasticity the gap to it along the outward normal: u·n ≤ g); s"},
+      {"obstacle", false,
+       "a rigid obstacle as geometry, instead of data.g: the gap is computed along Γ_C's outward normal (exact "
+       "for the shapes, Newton for an expression)"},
       {"material", false, "the elastic body (effects frictionless, tresca, coulomb)"},
       {"exact", false,
        "a known solution the run compares with (patch tests, manufactured solutions); in a two-body scene each "

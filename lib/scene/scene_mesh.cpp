@@ -110,11 +110,16 @@ mesh::Mesh build_scene_mesh(const Scene& scene) {
     std::string value = scene.contact_predicate;
     for (const auto& group : scene.contact_groups) value += (value.empty() ? "" : ", ") + group;
     std::set<std::string> labels;
-    for (int e : mesh.boundary_edges()) labels.insert(mesh.edge_label(e));
+    for (int e : mesh.boundary_edges())
+      if (!mesh.edge_label(e).empty()) labels.insert(mesh.edge_label(e));
+    const std::string groups = labels.empty()
+                                   ? std::string(
+                                         "the mesh has no named physical group on its boundary: name one in the .geo "
+                                         "(Physical Curve(\"contact\") = {...};) or select Γ_C by boundary.contact, a "
+                                         "predicate in x, y")
+                                   : fmt::format("the mesh has: {}", fmt::join(labels, ", "));
     throw_bad_input(scene.file, by_groups ? "boundary.contact_groups" : "boundary.contact", value,
-                    by_groups ? fmt::format("it must name a physical group on the boundary (Γ_C is empty); the mesh "
-                                            "has: {}",
-                                            fmt::join(labels, ", "))
+                    by_groups ? fmt::format("it must name a physical group on the boundary (Γ_C is empty); {}", groups)
                               : "it must select at least one boundary edge (Γ_C is empty)");
   }
   try {

@@ -13,6 +13,7 @@
 
 #include "core/error.hpp"
 #include "io/toml_reader.hpp"
+#include "scene/obstacle_keys.hpp"
 #include "scene/scene_keys.hpp"
 #include "scene/scene_tree.hpp"
 
@@ -47,7 +48,15 @@ std::map<std::string, std::string> apply_overrides(toml::table& root, const std:
   for (const auto& override : overrides) {
     const KeyPlace place = place_of_key(root, override.key, override.origin);
     const SceneKey* key = find_scene_key(place.section + "." + place.key);
-    if (!key) throw_bad_input(override.origin, override.key, "", "a scene key (see docs/scene_keys.md)");
+    if (!key) {
+      std::vector<std::string> names;
+      for (const auto& known : scene_keys()) names.push_back(known.dotted());
+      const auto nearest = io::nearest_name(place.section + "." + place.key, names);
+      throw InputError(
+          fmt::format("{}: unknown scene key '{}'{}; the keys are listed in docs/scene_keys.md "
+                      "(hpcontact scene-keys)",
+                      override.origin, override.key, nearest ? fmt::format(" (did you mean '{}'?)", *nearest) : ""));
+    }
     if (!key->group.empty())
       for (const auto& other : scene_keys())
         if (other.group == key->group && other.section == key->section) place.table->erase(other.name);
@@ -170,13 +179,17 @@ void check_elastic_effects(const Scene& scene) {
   if (scene.given.contains("boundary.u_D"))
     throw_bad_input(scene.where("boundary.u_D"), "boundary.u_D", scene.dirichlet_value,
                     "absent in an elastic scene: its Dirichlet data are boundary.u_D_x, boundary.u_D_y");
+  if (!scene.body.empty() && scene.has_rigid_obstacle())
+    throw_bad_input(scene.where("obstacle.type"), "obstacle.type", to_string(scene.rigid_obstacle.type),
+                    "absent for a body of a contact pair: the other body is its obstacle");
   if (!scene.body.empty() && scene.given.contains("data.g"))
     throw_bad_input(scene.where("data.g"), "data.g", scene.obstacle,
                     "absent for a body of a contact pair: the gap is the distance between the bodies along the "
                     "slave's normal (move a body to open or close it)");
-  if (scene.body.empty() && !scene.elastic_effects().empty() && scene.obstacle.empty())
+  if (scene.body.empty() && !scene.elastic_effects().empty() && !scene.has_obstacle())
     throw_bad_input(scene.where("data.g"), "data.g", "(missing)",
-                    "the elastic contact problems need the gap g to the obstacle along the normal");
+                    "the elastic contact problems need the gap g to the obstacle along the normal, or the obstacle "
+                    "as geometry in [obstacle]");
   if (scene.exact_x.empty() != scene.exact_y.empty()) {
     const std::string missing = scene.exact_x.empty() ? "exact.u_x" : "exact.u_y";
     throw_bad_input(scene.where(missing), missing, "(missing)",
@@ -210,9 +223,10 @@ void check_effects(const Scene& scene) {
         throw_bad_input(scene.where(key), key, "(given)",
                         "only with an elastic effect (frictionless, tresca, coulomb, tied) among run.effects");
   }
-  if (scene.has_effect(Effect::signorini) && scene.obstacle.empty())
+  if (scene.has_effect(Effect::signorini) && !scene.has_obstacle())
     throw_bad_input(scene.where("data.g"), "data.g", "(missing)",
-                    "the effect 'signorini' (problem (9)) needs the obstacle g");
+                    "the effect 'signorini' (problem (9)) needs the obstacle g, or the obstacle as geometry in "
+                    "[obstacle]");
   for (Effect problem : {Effect::friction, Effect::friction_s})
     if (scene.has_effect(problem) && scene.friction_bound.empty())
       throw_bad_input(scene.where("data.s"), "data.s", "(missing)",
@@ -260,6 +274,7 @@ Scene read_scene_tree(const std::shared_ptr<toml::table>& tree, const std::strin
   }
   check_domain(scene);
   check_boundary_and_contact_mesh(scene);
+  check_obstacle(scene);
   if (scene.given.contains("run.effects") || scene.given.contains("run.outputs")) check_effects(scene);
   check_scene_size(scene);
   return scene;

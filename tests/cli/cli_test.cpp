@@ -706,30 +706,6 @@ TEST(Cli, ConvergenceEffectWritesOneRowPerLevelAndProblem) {
   }
 }
 
-// The README's tutorial runs as written: the Gmsh block (committed block.msh, made from block.geo)
-// has a partial contact set for (9), a unique λ, and on its own mesh p_C = p - 1 with h/H = 1 is
-// the pairing whose α is far below that of h/H = 1/2 (the decaying family of the sweep).
-TEST(Cli, TutorialRunsAsDocumented) {
-  const auto dir = scratch("tutorial");
-  const std::string tutorial = std::string(HPCONTACT_SOURCE_DIR) + "/studies/tutorial/";
-  const auto solved = run("solve " + tutorial + "block.toml --out " + (dir / "out").string());
-  ASSERT_EQ(solved.exit_code, 0) << solved.output;
-  std::ifstream file(dir / "out" / "summary.json");
-  const auto summary = nlohmann::json::parse(file);
-  const double contact_set = summary["signorini"]["contact_set_length"].get<double>();
-  EXPECT_GT(contact_set, 0.2);
-  EXPECT_LT(contact_set, 1.8);
-  EXPECT_LT(summary["signorini"]["solver"]["kkt_residual"].get<double>(), 1e-10);
-  EXPECT_TRUE(summary["infsup"]["lambda_unique"].get<bool>());
-  auto alpha_of = [&](const std::string& options) {
-    const auto result = run("infsup --scene " + tutorial + "block.toml " + options);
-    EXPECT_EQ(result.exit_code, 0) << result.output;
-    return std::stod(result.output.substr(result.output.find("alpha = ") + 8));
-  };
-  const double matched = alpha_of("--p 2 --pc 1 --ratio 1"), coarse = alpha_of("--p 2 --pc 1 --ratio 1/2");
-  EXPECT_LT(matched, 0.5 * coarse) << matched << " vs " << coarse;
-}
-
 // Not on a terminal (here: a pipe), long runs print a plain progress line at most every
 // HPCONTACT_PROGRESS_SECONDS (default 5 s) with the count and the time left; runs shorter than the
 // interval stay quiet.

@@ -63,6 +63,9 @@ void expect_summary_matches(const driver::RunResult& result) {
     EXPECT_EQ(summary[contact.problem]["energy"].get<double>(), contact.energy);
     EXPECT_EQ(summary[contact.problem]["solver"]["iterations"].get<int>(), contact.solver.iterations);
     EXPECT_EQ(summary[contact.problem].contains("total_force"), contact.total_force.has_value());
+    if (contact.contact_force)
+      EXPECT_EQ(summary[contact.problem]["contact_force"].get<std::vector<double>>(),
+                (std::vector<double>{contact.contact_force->at(0), contact.contact_force->at(1)}));
   }
   ASSERT_EQ(summary.contains("infsup"), result.infsup.has_value());
   if (result.infsup) {
@@ -99,6 +102,10 @@ TEST(RunPipeline, ElasticSceneRunsThroughTheSamePipeline) {
     ASSERT_TRUE(contact.total_force.has_value()) << "an elastic body reports its total force";
     EXPECT_GT(*contact.total_force, 0.0) << contact.problem;
     EXPECT_FALSE(contact.constraint_points.has_value());
+    // Γ_C is the bottom edge: n = (0, −1), t = (1, 0), so ∫ (−p n + σ_nt t) ds = (T, P).
+    ASSERT_TRUE(contact.contact_force.has_value() && contact.tangential_force.has_value());
+    EXPECT_NEAR(contact.contact_force->at(0), *contact.tangential_force, 1e-14);
+    EXPECT_NEAR(contact.contact_force->at(1), *contact.total_force, 1e-13 * *contact.total_force);
   }
   ASSERT_TRUE(result.material.has_value());
   EXPECT_EQ(result.material->model, "plane_strain");

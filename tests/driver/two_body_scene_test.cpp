@@ -42,7 +42,7 @@ TEST(TwoBodyScene, PatchTestPassesToRoundOffThroughTheCommandLine) {
     EXPECT_LT(summary["exact_errors"]["pressure"].get<double>(), 1e-10) << degrees;
     EXPECT_EQ(summary["pair"]["name"], "interface");
     for (const char* file : {"boundary_interface_frictionless.csv", "solution_interface_frictionless_top.vtu",
-                             "solution_interface_frictionless_bottom.vtu", "contact_interface_frictionless.vtp"})
+                             "solution_interface_frictionless_bottom.vtu", "contact_interface_frictionless.vtu"})
       EXPECT_TRUE(std::filesystem::exists(out / file)) << file;
     const auto csv = hpcontact::testing::read_csv(out / "boundary_interface_frictionless.csv");
     EXPECT_EQ(csv.header_line(), "x,y,s_arc,gap,pressure,traction_t,u_n_slave,u_n_master,zone");

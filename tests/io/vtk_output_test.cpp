@@ -10,9 +10,9 @@
 #include <regex>
 #include <set>
 
+#include "io/line_samples_vtu.hpp"
 #include "io/vtk_lagrange_nodes.hpp"
 #include "io/vtk_xml_document.hpp"
-#include "io/vtp_writer.hpp"
 #include "io/vtu_writer.hpp"
 #include "mesh/rectangle_mesh.hpp"
 #include "mesh/refine.hpp"
@@ -106,12 +106,27 @@ TEST(VtuWriter, MixedMeshSharesPointsByEntityAndCarriesTheField) {
   const space::H1Space space(m, degrees);
   const int k = *std::max_element(degrees.begin(), degrees.end());
   auto f = [](double x, double y) { return std::sin(3 * x) + x * y * y; };
-  const std::string file = io::vtu_text(space, {{"f", 1, [&](int, const assembly::CellValues& values) {
+  const io::VtuGrid grid = io::vtu_grid(space, {{"f", 1, [&](int, const assembly::CellValues& values) {
                                                    Eigen::MatrixXd out(values.points.rows(), 1);
                                                    for (Eigen::Index q = 0; q < out.rows(); ++q)
                                                      out(q, 0) = f(values.points(q, 0), values.points(q, 1));
                                                    return out;
                                                  }}});
+  const std::string file = io::vtu_text(grid);
+  // The linear triangles through the nodes tile the square: k² per triangle, 2k² per
+  // quadrilateral, their areas (all of one orientation) adding up to the square's 4.
+  std::size_t triangles = 0;
+  for (int c = 0; c < m.n_cells(); ++c) triangles += (m.cell_type(c) == mesh::CellType::quadrilateral ? 2 : 1) * k * k;
+  EXPECT_EQ(grid.triangles.size(), triangles);
+  double area = 0.0;
+  for (const auto& [a, b, c] : grid.triangles) {
+    const auto x = [&](std::int64_t p, int d) { return grid.xyz[static_cast<std::size_t>(3 * p + d)]; };
+    const double signed_area =
+        0.5 * ((x(b, 0) - x(a, 0)) * (x(c, 1) - x(a, 1)) - (x(c, 0) - x(a, 0)) * (x(b, 1) - x(a, 1)));
+    EXPECT_GT(signed_area, 0.0);
+    area += signed_area;
+  }
+  EXPECT_NEAR(area, 4.0, 1e-12);
   int interior = 0;
   for (int c = 0; c < m.n_cells(); ++c)
     interior += m.cell_type(c) == mesh::CellType::quadrilateral ? (k - 1) * (k - 1) : (k - 1) * (k - 2) / 2;
@@ -131,13 +146,16 @@ TEST(VtuWriter, MixedMeshSharesPointsByEntityAndCarriesTheField) {
   EXPECT_EQ(*std::max_element(connectivity.begin(), connectivity.end()), n_points - 1);
 }
 
-TEST(VtpWriter, OnePolylinePerZoneWithTheNumericColumns) {
+TEST(LineSamplesVtu, LinesJoinTheSamplesOfEachZoneWithTheNumericColumns) {
   io::CsvTable table({"x", "y", "lambda", "zone", "label"});
   for (int zone = 0; zone < 2; ++zone)
     for (int i = 0; i < 5; ++i) table.add_row({0.1 * i, 1.0 * zone, -0.5 * i, static_cast<long long>(zone), "text"});
-  const std::string file = io::polyline_vtp_text(table);
-  EXPECT_EQ(attribute(file, "NumberOfLines"), 2);
-  EXPECT_EQ(appended_array(file, "offsets"), (std::vector<double>{5, 10}));
+  const std::string file = io::line_samples_vtu_text(table);
+  // 4 lines per zone of 5 samples, none across the zones (samples 4 and 5).
+  EXPECT_EQ(attribute(file, "NumberOfCells"), 8);
+  EXPECT_EQ(appended_array(file, "connectivity"),
+            (std::vector<double>{0, 1, 1, 2, 2, 3, 3, 4, 5, 6, 6, 7, 7, 8, 8, 9}));
+  EXPECT_EQ(appended_array(file, "types"), std::vector<double>(8, 3.0));
   EXPECT_EQ(appended_array(file, "lambda")[4], -2.0);
   EXPECT_EQ(file.find("Name=\"label\""), std::string::npos);  // text columns are left out
 }

@@ -299,7 +299,7 @@ TEST(CurvedScenes, ElasticRingHasLamesUniformPressure) {
   const auto dir = hpcontact::testing::scratch("curved_ring");
   driver::SceneRunOptions options;
   options.out = dir;
-  driver::run_scene(scene::read_scene(kCurved + "ring.toml"), options);
+  const auto result = driver::run_scene(scene::read_scene(kCurved + "ring.toml"), options);
   // λ, μ of E = 1, ν = 0.3; u_r = A r + B/r with u_r(1) = 0.01, u_r(2) = 0.002.
   const double lambda = 0.3 / (1.3 * 0.4), mu = 1 / 2.6, a = (2 * 0.002 - 0.01) / 3, b = 0.01 - a;
   const double pressure = -2 * (lambda + mu) * a + mu * b / 2;  // -σ_rr(2)
@@ -311,6 +311,15 @@ TEST(CurvedScenes, ElasticRingHasLamesUniformPressure) {
     EXPECT_NEAR(row[4], 0.0, 1e-12) << "u_t: the ring expands radially";
   }
   EXPECT_GT(rows, 100);
+  // The resultants: P = p·(π/2)·2 along the arc, no tangential force, and the traction −p n on the
+  // quarter arc of radius 2 adds up to −2p (1, 1).
+  const auto& contact = result.contacts.front();
+  EXPECT_NEAR(*contact.total_force, pressure * pi, 1e-8 * pressure);
+  EXPECT_NEAR(*contact.tangential_force, 0.0, 1e-12);
+  EXPECT_NEAR(contact.contact_force->at(0), -2 * pressure, 1e-8 * pressure);
+  EXPECT_NEAR(contact.contact_force->at(1), -2 * pressure, 1e-8 * pressure);
+  ASSERT_EQ(contact.zones.size(), 1u);
+  EXPECT_EQ(contact.zones[0].contact_force, contact.contact_force);
 }
 
 TEST(CurvedScenes, GeometryKeyAndWhatCurvedMeshesRefuse) {

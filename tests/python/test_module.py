@@ -132,3 +132,17 @@ def test_an_unstable_pairing_warns_and_advise_recommends_what_infsup_confirms(tm
     cli = subprocess.run([CLI, "infsup", "--scene", FIGURE1, "--pc", str(int(best["pC"])), "--ratio", best["ratio"],
                           "--family", best["family"]], check=True, capture_output=True, text=True).stdout
     assert float(cli.split("alpha = ")[1].split()[0]) == best["alpha"]
+
+
+def test_numbers_in_expression_keys_typos_and_a_clean_namespace():
+    # An expression key takes a number as well as its text, and gives the same run.
+    as_number = hpcontact.solve(FIGURE1, {"data.f": -1.0}, effects=["signorini"])
+    as_text = hpcontact.solve(FIGURE1, {"data.f": "-1"}, effects=["signorini"])
+    assert as_number.summary["signorini"]["energy"] == as_text.summary["signorini"]["energy"]
+    # A misspelt override names the key meant.
+    with pytest.raises(hpcontact.InputError, match=r"did you mean 'discretization.pC'"):
+        hpcontact.scene(FIGURE1, {"discretization.pc": 2})
+    # The module exports its API, not the modules it uses.
+    for name in ("np", "os", "csv", "tempfile", "warnings", "dataclass", "field"):
+        assert not hasattr(hpcontact, name), name
+    assert set(hpcontact.__all__) <= set(dir(hpcontact))

@@ -109,17 +109,21 @@ def test_vtk_geometry_of_every_node_matches_the_affine_cells(tmp_path, scene, p)
     assert worst < 1e-12
 
 
-def test_vtp_carries_lambda_and_the_obstacle_on_each_contact_zone(tmp_path):
+def test_contact_vtu_carries_lambda_and_the_obstacle_for_vtk_and_meshio(tmp_path):
     out = solve_to(tmp_path, FIGURE1, 3, ["signorini"])
-    reader = vtk.vtkXMLPolyDataReader()
-    reader.SetFileName(str(out / "contact_signorini.vtp"))
+    reader = vtk.vtkXMLUnstructuredGridReader()
+    reader.SetFileName(str(out / "contact_signorini.vtu"))
     reader.Update()
-    polydata = reader.GetOutput()
+    grid = reader.GetOutput()
     samples = np.genfromtxt(out / "boundary_signorini.csv", delimiter=",", names=True)
-    assert polydata.GetNumberOfLines() == 1 and polydata.GetNumberOfPoints() == len(samples)
+    assert grid.GetNumberOfCells() == len(samples) - 1 and grid.GetNumberOfPoints() == len(samples)
     for name in ("lambda", "obstacle", "u", "s_arc"):
-        np.testing.assert_array_equal(vtk_to_numpy(polydata.GetPointData().GetArray(name)), samples[name])
-    np.testing.assert_array_equal(vtk_to_numpy(polydata.GetPoints().GetData())[:, 0], samples["x"])
+        np.testing.assert_array_equal(vtk_to_numpy(grid.GetPointData().GetArray(name)), samples[name])
+    np.testing.assert_array_equal(vtk_to_numpy(grid.GetPoints().GetData())[:, 0], samples["x"])
+    # meshio (which reads no PolyData) reads the same samples as line cells.
+    lines = meshio.read(out / "contact_signorini.vtu")
+    assert [block.type for block in lines.cells] == ["line"]
+    np.testing.assert_array_equal(lines.point_data["lambda"].ravel(), samples["lambda"])
 
 
 def test_convergence_writes_one_vtu_per_level_and_a_pvd(tmp_path):
@@ -137,7 +141,7 @@ def test_elastic_vtu_carries_the_displacement_and_von_mises_per_level(tmp_path):
     assert mesh.point_data["displacement"].shape == (len(mesh.points), 3)
     assert np.all(mesh.point_data["displacement"][:, 2] == 0)
     assert np.all(mesh.point_data["von_mises"] >= 0)
-    assert (out / "contact_frictionless.vtp").exists()
+    assert "pressure" in meshio.read(out / "contact_frictionless.vtu").point_data
     collection = ET.parse(out / "solution_frictionless.pvd").getroot()
     levels = [meshio.read(out / d.get("file")) for d in collection.iter("DataSet")]
     assert [sum(len(b.data) for b in m.cells) for m in levels][1] == 4 * len(mesh.cells[0].data)
@@ -197,3 +201,31 @@ def test_under_mpirun_each_rank_writes_its_cells_as_a_piece_of_a_pvtu(tmp_path, 
     scale = np.abs(values["serial"]).max()
     assert scale > 0
     np.testing.assert_allclose(values["parallel"], values["serial"], rtol=0, atol=1e-10 * scale)
+
+
+def test_result_fields_are_the_vtu_arrays_with_the_stress_tensor(tmp_path):
+    """Result.fields holds what solution_<problem>.vtu holds (points, cells, displacement, stress,
+    von Mises), bit for bit, and von Mises is that of the stress tensor."""
+    overrides = {"discretization.p": 2, "domain.n_x": 16, "domain.n_y": 8, "domain.grading_layers": 0,
+                 "run.outputs": ["summary", "vtu"]}
+    result = hpcontact.solve(ELASTIC, overrides, effects=["frictionless"], out=tmp_path)
+    fields = result.fields["frictionless"]
+    mesh = meshio.read(tmp_path / "solution_frictionless.vtu")
+    np.testing.assert_array_equal(fields["points"], mesh.points)
+    for name in ("displacement", "stress", "von_mises"):  # (meshio keeps one component as (n, 1))
+        np.testing.assert_array_equal(fields[name], mesh.point_data[name].reshape(fields[name].shape))
+    assert fields["stress"].shape == (len(mesh.points), 6) and np.all(fields["stress"][:, 4:] == 0)
+    sxx, syy, szz, sxy = (fields["stress"][:, k] for k in range(4))
+    von_mises = np.sqrt(0.5 * ((sxx - syy) ** 2 + (syy - szz) ** 2 + (szz - sxx) ** 2) + 3 * sxy ** 2)
+    # At a cell's interior node (the last of an order-2 quadrilateral) one cell gives both values;
+    # where cells meet both are averages, and von Mises, a norm, of the mean is at most the mean.
+    interior = fields["connectivity"][fields["offsets"] - 1]
+    np.testing.assert_allclose(fields["von_mises"][interior], von_mises[interior], rtol=1e-12, atol=1e-15)
+    assert np.all(von_mises <= fields["von_mises"] * (1 + 1e-12) + 1e-15)
+    # The cells as meshio sees them, and 2k² linear triangles per quadrilateral of order k.
+    (cells,) = mesh.cells
+    np.testing.assert_array_equal(fields["connectivity"], cells.data.ravel())
+    assert fields["types"].tolist() == [70] * len(cells.data) and fields["p"].tolist() == [2] * len(cells.data)
+    assert fields["triangles"].shape == (8 * len(cells.data), 3) and fields["triangles"].max() < len(mesh.points)
+    # Without out= no file is written, and the fields are there all the same.
+    assert "u" in hpcontact.solve(FIGURE1, {"discretization.p": 2}, effects=["signorini"]).fields["signorini"]

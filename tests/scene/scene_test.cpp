@@ -280,7 +280,8 @@ pC = 0
   EXPECT_TRUE(scene.p.rule.empty());
   EXPECT_EQ(scene.where("contact_mesh.ratio"), "--ratio");
   EXPECT_EQ(scene.where("discretization.pC"), "base.toml");
-  EXPECT_NE(override_error({"discretization.q", 1LL, "--q"}).find("--q: key 'discretization.q'"), std::string::npos);
+  EXPECT_NE(override_error({"discretization.q", 1LL, "--q"}).find("--q: unknown scene key 'discretization.q'"),
+            std::string::npos);
   EXPECT_NE(
       override_error({"contact_mesh.ratio", std::string("0"), "--ratio"}).find("--ratio: key 'contact_mesh.ratio'"),
       std::string::npos);

@@ -16,12 +16,14 @@
 #include "driver/scene_run.hpp"
 #include "driver/summary_json.hpp"
 #include "io/atomic_file.hpp"
+#include "io/output_folder.hpp"
 #include "run_result_bindings.hpp"
 #include "scene/scene_keys.hpp"
 #include "scene/scene_reader.hpp"
 #include "studies/pairing_advice.hpp"
 #include "studies/stability_sweep.hpp"
 #include "studies/sweep_verdicts.hpp"
+#include "vtu_grid_arrays.hpp"
 
 namespace py = pybind11;
 using namespace hpcontact;
@@ -184,7 +186,7 @@ void bind_scenes(py::module_& m) {
 // `hpcontact advise` for Python: advice.csv's columns (written to out/advice.csv if given), the
 // recommendation's scene edits, alpha_min.
 py::tuple run_advice(const scene::Scene& scene, std::optional<double> alpha_min, const std::filesystem::path& out) {
-  if (!out.empty()) io::check_output_directory(out);
+  if (!out.empty()) io::check_output_folder(out);
   const auto advice = [&] {
     py::gil_scoped_release release;
     return studies::advise_pairing(scene, {.alpha_min = alpha_min});
@@ -221,23 +223,26 @@ PYBIND11_MODULE(_hpcontact, m) {
       "run_scene",
       [](const scene::Scene& scene, const std::string& out) {
         std::map<std::string, io::CsvTable> tables;
+        std::map<std::string, io::VtuGrid> fields;
         driver::SceneRunOptions options;
         options.out = out;
         options.write_files = !out.empty();
         options.tables = &tables;
+        options.fields = &fields;
         driver::RunResult result;
         {
           py::gil_scoped_release release;
           result = driver::run_scene(scene, options);
         }
-        py::dict arrays;
+        py::dict arrays, grids;
         for (const auto& [name, table] : tables) arrays[py::str(name)] = columns_of(table);
+        for (const auto& [name, grid] : fields) grids[py::str(name)] = python::vtu_grid_arrays(grid);
         const auto summary = json_to_python(driver::summary_json(result));
-        return py::make_tuple(std::move(result), summary, arrays);
+        return py::make_tuple(std::move(result), summary, arrays, grids);
       },
       py::arg("scene"), py::arg("out") = "",
-      "Runs the scene's effects: (RunResult, summary dict, {table name: {column: array}}); writes files into "
-      "`out` if given");
+      "Runs the scene's effects: (RunResult, summary dict, {table name: {column: array}}, {solution name: "
+      "{array name: array}}); writes files into `out` if given");
   m.def(
       "run_sweep",
       [](const std::string& study, const std::filesystem::path& out) {

@@ -21,7 +21,9 @@ void bind_run_result(py::module_& m) {
       .def_readonly("length", &ZoneResult::length)
       .def_readonly("closed", &ZoneResult::closed)
       .def_readonly("contact_set_length", &ZoneResult::contact_set_length)
-      .def_readonly("total_force", &ZoneResult::total_force);
+      .def_readonly("total_force", &ZoneResult::total_force)
+      .def_readonly("tangential_force", &ZoneResult::tangential_force)
+      .def_readonly("contact_force", &ZoneResult::contact_force);
   py::class_<ContactResult>(m, "ContactResult", "One contact problem solved")
       .def_readonly("problem", &ContactResult::problem)
       .def_readonly("energy", &ContactResult::energy)
@@ -29,6 +31,8 @@ void bind_run_result(py::module_& m) {
       .def_readonly("nmult", &ContactResult::nmult)
       .def_readonly("contact_set_length", &ContactResult::contact_set_length)
       .def_readonly("total_force", &ContactResult::total_force)
+      .def_readonly("tangential_force", &ContactResult::tangential_force)
+      .def_readonly("contact_force", &ContactResult::contact_force)
       .def_readonly("zones", &ContactResult::zones)
       .def_readonly("solver", &ContactResult::solver)
       .def_readonly("fixed_point_changes", &ContactResult::fixed_point_changes)

@@ -11,18 +11,21 @@ with dotted-key overrides::
     result.summary["signorini"]["energy"]          # the same as summary.json's dict
     b = result.boundary["signorini"]               # numpy arrays along Γ_C
     b["s_arc"], b["u"], b["obstacle"], b["lambda"]
+    f = result.fields["signorini"]                 # the solution on Ω, the VTU's arrays
+    f["points"], f["u"], f["triangles"]            # (elastic: "displacement", "stress", "von_mises")
     hpcontact.infsup("studies/paper/figure1_signorini.toml").alpha
 
 Errors in the input raise hpcontact.InputError (a ValueError) with the command-line tool's message.
 """
 
-import csv
-import os
-import tempfile
-import warnings
-from dataclasses import dataclass, field
+# Imported under private names, so that the module's namespace holds its API alone.
+import csv as _csv
+import os as _os
+import tempfile as _tempfile
+import warnings as _warnings
+from dataclasses import dataclass as _dataclass, field as _field
 
-import numpy as np
+import numpy as _np
 
 from ._hpcontact import InputError, Scene, read_scene, scene_from_dict, scene_keys
 from . import _hpcontact
@@ -48,18 +51,26 @@ def scene(source, overrides=None, path=None):
             raise InputError("overrides apply to a scene file or dict, not to an already checked Scene")
         return source
     if isinstance(source, dict):
-        return scene_from_dict(source, path or os.path.join(os.getcwd(), "<dict>"), overrides)
-    return read_scene(os.fspath(source), overrides)
+        return scene_from_dict(source, path or _os.path.join(_os.getcwd(), "<dict>"), overrides)
+    return read_scene(_os.fspath(source), overrides)
 
 
-@dataclass
+@_dataclass
 class Result:
     """What a run computed: the typed result (`run`, a RunResult: run.contacts, run.contact(name),
-    run.infsup), the same as summary.json's dict, and its tables as numpy arrays."""
+    run.infsup), the same as summary.json's dict, its tables and its solutions on Ω as numpy
+    arrays."""
 
     run: object
     summary: dict
-    tables: dict = field(default_factory=dict)
+    tables: dict = _field(default_factory=dict)
+    fields: dict = _field(default_factory=dict)
+    """The solutions on Ω per problem (and body: "frictionless_bottom"), the arrays of the VTU files
+    (output "vtu"): "points" (n, 3); the VTK Lagrange cells "connectivity", "offsets", "types" and
+    their degrees "p"; "triangles" (m, 3), the cells cut into linear triangles through their nodes
+    (matplotlib's tripcolor(points[:, 0], points[:, 1], triangles, values)); and the point fields:
+    "u" and "grad_u" (scalar model), "displacement" (n, 3), "stress" (n, 6: xx, yy, zz, xy, yz, xz)
+    and "von_mises" (elastic)."""
 
     @property
     def boundary(self):
@@ -88,14 +99,14 @@ def solve(source, overrides=None, effects=None, out=None, path=None):
     if effects is not None:
         overrides["run.effects"] = list(effects)
     checked = scene(source, overrides, path)
-    run, summary, tables = _hpcontact.run_scene(checked, os.fspath(out) if out is not None else "")
+    run, summary, tables, fields = _hpcontact.run_scene(checked, _os.fspath(out) if out is not None else "")
     stability = summary.get("stability", {})
     if stability.get("warned"):
-        warnings.warn(stability["warning"], StabilityWarning, stacklevel=2)
-    return Result(run, summary, tables)
+        _warnings.warn(stability["warning"], StabilityWarning, stacklevel=2)
+    return Result(run, summary, tables, fields)
 
 
-@dataclass
+@_dataclass
 class InfSup:
     """The discrete inf-sup constant of a scene's pairing."""
 
@@ -119,12 +130,12 @@ def infsup(source, overrides=None, path=None):
 
 def _read_columns(path):
     with open(path, newline="") as handle:
-        rows = list(csv.DictReader(handle))
+        rows = list(_csv.DictReader(handle))
     columns = {}
     for name in (rows[0].keys() if rows else []):
         values = [row[name] for row in rows]
         try:
-            columns[name] = np.array([float(v) for v in values])
+            columns[name] = _np.array([float(v) for v in values])
         except ValueError:
             columns[name] = values
     return columns
@@ -134,13 +145,13 @@ def sweep(study, out=None):
     """Runs a stability sweep (a study file, as `hpcontact sweep`) and returns (alpha, verdicts), each
     {column: array}. With `out` the resumable alpha.csv and verdicts.csv stay there."""
     if out is None:
-        with tempfile.TemporaryDirectory(prefix="hpcontact_sweep_") as folder:
+        with _tempfile.TemporaryDirectory(prefix="hpcontact_sweep_") as folder:
             return sweep(study, folder)
-    alpha_csv, verdicts_csv = _hpcontact.run_sweep(os.fspath(study), os.fspath(out))
+    alpha_csv, verdicts_csv = _hpcontact.run_sweep(_os.fspath(study), _os.fspath(out))
     return _read_columns(alpha_csv), _read_columns(verdicts_csv)
 
 
-@dataclass
+@_dataclass
 class Advice:
     """What `hpcontact advise` finds for a scene's mesh and p: every candidate (advice.csv's
     columns as arrays: zone, p, pC, ratio, family, constraint_points, alpha_predicted, alpha,
@@ -157,7 +168,7 @@ def advise(source, overrides=None, alpha_min=None, out=None, path=None):
     α and multipliers, with the global α of the recommended one and its runner-up. With `out` the
     candidates are also written to out/advice.csv."""
     checked = scene(source, overrides, path)
-    columns, edits, minimum = _hpcontact.run_advice(checked, alpha_min, os.fspath(out) if out is not None else "")
+    columns, edits, minimum = _hpcontact.run_advice(checked, alpha_min, _os.fspath(out) if out is not None else "")
     rows = [dict(zip(columns, values)) for values in zip(*columns.values())]
     recommended = next((row for row in rows if row["recommended"] == "yes"), None)
     return Advice(columns, recommended, list(edits), minimum)

@@ -1,6 +1,7 @@
 // Samples along Γ_C (u, the obstacle or bound, λ, … from the boundary tables) as a VTK XML
-// PolyData file: one polyline per contact zone, every numeric column as point data, so ParaView
-// shows the multiplier beside the VTU of u.
+// UnstructuredGrid of line cells: consecutive samples of one contact zone joined by a VTK_LINE,
+// every numeric column as point data. ParaView shows the multiplier beside the VTU of u, and
+// meshio reads it (it reads no PolyData).
 #pragma once
 
 #include <string>
@@ -12,6 +13,6 @@ namespace hpcontact::io {
 /// @param table with numeric columns "x", "y" and "zone"; rows of one zone consecutive and in
 ///        order along it. Columns other than x, y and zone become point arrays.
 /// @throws std::logic_error if a required column is missing (a programming error).
-std::string polyline_vtp_text(const CsvTable& table);
+std::string line_samples_vtu_text(const CsvTable& table);
 
 }  // namespace hpcontact::io

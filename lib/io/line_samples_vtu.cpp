@@ -1,5 +1,5 @@
-// polyline_vtp_text.
-#include "io/vtp_writer.hpp"
+// line_samples_vtu_text.
+#include "io/line_samples_vtu.hpp"
 
 #include <fmt/format.h>
 
@@ -14,7 +14,7 @@ namespace {
 double number(const CsvCell& cell) {
   if (const auto* d = std::get_if<double>(&cell)) return *d;
   if (const auto* i = std::get_if<long long>(&cell)) return static_cast<double>(*i);
-  throw std::logic_error("polyline_vtp_text: a text cell in a numeric column");
+  throw std::logic_error("line_samples_vtu_text: a text cell in a numeric column");
 }
 
 bool numeric_column(const CsvTable& table, std::size_t column) {
@@ -24,36 +24,39 @@ bool numeric_column(const CsvTable& table, std::size_t column) {
 
 }  // namespace
 
-std::string polyline_vtp_text(const CsvTable& table) {
+std::string line_samples_vtu_text(const CsvTable& table) {
   const auto& names = table.columns();
   auto column = [&](const std::string& name) {
     const auto it = std::ranges::find(names, name);
-    if (it == names.end()) throw std::logic_error("polyline_vtp_text: no column " + name);
+    if (it == names.end()) throw std::logic_error("line_samples_vtu_text: no column " + name);
     return static_cast<std::size_t>(it - names.begin());
   };
   const std::size_t x = column("x"), y = column("y"), zone = column("zone");
   const auto& rows = table.rows();
   std::vector<double> xyz;
   std::vector<std::int64_t> connectivity, offsets;
+  std::vector<std::uint8_t> types;
+  constexpr std::uint8_t kVtkLine = 3;
   for (std::size_t r = 0; r < rows.size(); ++r) {
     xyz.insert(xyz.end(), {number(rows[r][x]), number(rows[r][y]), 0.0});
-    connectivity.push_back(static_cast<std::int64_t>(r));
-    if (r + 1 == rows.size() || number(rows[r + 1][zone]) != number(rows[r][zone]))
-      offsets.push_back(static_cast<std::int64_t>(r + 1));
+    if (r + 1 < rows.size() && number(rows[r + 1][zone]) == number(rows[r][zone])) {
+      connectivity.insert(connectivity.end(), {static_cast<std::int64_t>(r), static_cast<std::int64_t>(r + 1)});
+      offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
+      types.push_back(kVtkLine);
+    }
   }
-  VtkXmlDocument document("PolyData");
-  std::string piece = fmt::format(
-      "<Piece NumberOfPoints=\"{}\" NumberOfVerts=\"0\" NumberOfLines=\"{}\" NumberOfStrips=\"0\" "
-      "NumberOfPolys=\"0\">\n<PointData>\n",
-      rows.size(), offsets.size());
+  VtkXmlDocument document("UnstructuredGrid");
+  std::string piece =
+      fmt::format("<Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n<PointData>\n", rows.size(), types.size());
   for (std::size_t c = 0; c < names.size(); ++c) {
     if (c == x || c == y || !numeric_column(table, c)) continue;
     std::vector<double> values;
     for (const auto& row : rows) values.push_back(number(row[c]));
     piece += document.array(names[c], values);
   }
-  piece += "</PointData>\n<Points>\n" + document.array("Points", xyz, 3) + "</Points>\n<Lines>\n" +
-           document.array("connectivity", connectivity) + document.array("offsets", offsets) + "</Lines>\n</Piece>\n";
+  piece += "</PointData>\n<Points>\n" + document.array("Points", xyz, 3) + "</Points>\n<Cells>\n" +
+           document.array("connectivity", connectivity) + document.array("offsets", offsets) +
+           document.array("types", types) + "</Cells>\n</Piece>\n";
   return document.text(piece);
 }
 
