@@ -57,28 +57,31 @@ std::optional<double> plane_gap(const RigidObstacle& o, const Point& x, const Po
 }
 
 // Newton on f(t) = φ(X + t n) from t = 0, f' by central differences (their error slows the
-// iteration, it does not move the root).
-double distance_gap(const RigidObstacle& o, const Expression& phi, const Point& x, const Point& n) {
+// iteration, it does not move the root), steps relative to `length` (the size of the problem, so
+// that a body measured in micrometres gets steps of its own size). The root must lie on the side
+// φ(X) gives, as the shapes' do: ahead (t > 0) from outside, behind from inside; one on the other
+// side means the normal turns away from the obstacle there.
+std::optional<double> distance_gap(const Expression& phi, const Point& x, const Point& n, double length) {
   auto f = [&](double t) {
     const Point y = x + t * n;
     return phi(y.x(), y.y());
   };
-  const double scale = std::max(1.0, x.norm());
+  const double start = f(0.0);
+  if (start == 0.0) return 0.0;
   double t = 0.0;
   for (int iteration = 0; iteration < 60; ++iteration) {
-    const double value = f(t);
-    const double delta = 1e-6 * std::max(scale, std::abs(t));
+    const double scale = std::max(length, std::abs(t)), delta = 1e-7 * scale;
     const double slope = (f(t + delta) - f(t - delta)) / (2.0 * delta);
-    if (!(std::abs(slope) > 0.0) || !std::isfinite(slope)) break;
-    const double step = value / slope;
+    if (!(std::abs(slope) > 0.0) || !std::isfinite(slope)) return std::nullopt;
+    const double step = f(t) / slope;
     t -= step;
-    if (std::abs(step) <= 1e-14 * std::max(scale, std::abs(t))) return t;
+    if (!std::isfinite(t)) return std::nullopt;
+    if (std::abs(step) <= 1e-14 * scale) {
+      if ((start > 0.0) != (t > 0.0) || t == 0.0) return std::nullopt;
+      return t;
+    }
   }
-  throw InputError(fmt::format(
-      "{}: key 'obstacle.distance' = \"{}\": Newton on φ along the normal ({:.6g}, {:.6g}) from the point "
-      "({:.6g}, {:.6g}) of Γ_C did not converge: φ must be a signed distance-like function, > 0 on the body's side "
-      "and 0 on the obstacle's surface, that the normal crosses",
-      o.origin, o.distance, n.x(), n.y(), x.x(), x.y()));
+  return std::nullopt;
 }
 
 // Finds the edge of Γ_C holding a point, starting from the last edge found.
@@ -152,7 +155,11 @@ const char* to_string(ObstacleType type) {
   return "?";
 }
 
-double gap_along(const RigidObstacle& obstacle, const Point& x, const Point& n) {
+namespace {
+
+// The gap, or an input error naming the point where the normal misses the obstacle.
+double checked_gap(const RigidObstacle& obstacle, const Point& x, const Point& n, const Expression* phi,
+                   double length) {
   std::optional<double> gap;
   switch (obstacle.type) {
     case ObstacleType::plane:
@@ -165,23 +172,40 @@ double gap_along(const RigidObstacle& obstacle, const Point& x, const Point& n) 
       gap = parabola_gap(obstacle, x, n);
       break;
     case ObstacleType::distance:
-      return distance_gap(obstacle, Expression(obstacle.distance, obstacle.origin + ": key 'obstacle.distance'"), x, n);
+      gap = distance_gap(*phi, x, n, length);
+      break;
   }
-  if (!gap)
+  if (gap) return *gap;
+  if (obstacle.type == ObstacleType::distance)
     throw InputError(fmt::format(
-        "{}: the outward normal ({:.6g}, {:.6g}) of Γ_C at ({:.6g}, {:.6g}) does not meet the obstacle (type "
-        "\"{}\"): restrict Γ_C (boundary.contact) to the part of the boundary that faces the obstacle",
-        obstacle.origin, n.x(), n.y(), x.x(), x.y(), to_string(obstacle.type)));
-  return *gap;
+        "{}: key 'obstacle.distance' = \"{}\": along the outward normal ({:.6g}, {:.6g}) of Γ_C at ({:.6g}, {:.6g}) "
+        "Newton finds no zero of φ on the side φ there gives (ahead where φ > 0, behind where φ < 0): φ must be > 0 "
+        "on the body's side and 0 on the obstacle's surface, and the normal must meet that surface; restrict Γ_C "
+        "(boundary.contact) to the part of the boundary that faces the obstacle",
+        obstacle.origin, obstacle.distance, n.x(), n.y(), x.x(), x.y()));
+  throw InputError(
+      fmt::format("{}: the outward normal ({:.6g}, {:.6g}) of Γ_C at ({:.6g}, {:.6g}) does not meet the obstacle (type "
+                  "\"{}\"): restrict Γ_C (boundary.contact) to the part of the boundary that faces the obstacle",
+                  obstacle.origin, n.x(), n.y(), x.x(), x.y(), to_string(obstacle.type)));
+}
+
+}  // namespace
+
+double gap_along(const RigidObstacle& obstacle, const Point& x, const Point& n, double length) {
+  if (obstacle.type != ObstacleType::distance) return checked_gap(obstacle, x, n, nullptr, length);
+  const Expression phi(obstacle.distance, obstacle.origin + ": key 'obstacle.distance'");
+  return checked_gap(obstacle, x, n, &phi, length);
 }
 
 std::function<double(const Point&)> obstacle_gap(const RigidObstacle& obstacle, const mesh::ContactBoundary& contact) {
   auto locator = std::make_shared<EdgeLocator>(contact);
-  if (obstacle.type != ObstacleType::distance)
-    return [obstacle, locator](const Point& x) { return gap_along(obstacle, x, locator->normal_at(x)); };
   // φ parsed once: the Newton iteration evaluates it a few times per point.
-  const Expression phi(obstacle.distance, obstacle.origin + ": key 'obstacle.distance'");
-  return [obstacle, locator, phi](const Point& x) { return distance_gap(obstacle, phi, x, locator->normal_at(x)); };
+  std::shared_ptr<const Expression> phi;
+  if (obstacle.type == ObstacleType::distance)
+    phi = std::make_shared<const Expression>(obstacle.distance, obstacle.origin + ": key 'obstacle.distance'");
+  return [obstacle, locator, phi, length = contact.length()](const Point& x) {
+    return checked_gap(obstacle, x, locator->normal_at(x), phi.get(), length);
+  };
 }
 
 }  // namespace hpcontact::contact

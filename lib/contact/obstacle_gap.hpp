@@ -37,7 +37,9 @@ struct RigidObstacle {
 std::function<double(const mesh::Point&)> obstacle_gap(const RigidObstacle& obstacle,
                                                        const mesh::ContactBoundary& contact);
 
-/// The gap from X along the unit vector n (the part that needs no mesh; exposed for tests).
-double gap_along(const RigidObstacle& obstacle, const mesh::Point& x, const mesh::Point& n);
+/// The gap from X along the unit vector n (the part that needs no mesh; exposed for tests);
+/// `length` sets the scale of Newton's steps for a distance expression (obstacle_gap passes the
+/// length of Γ_C). @throws InputError where the normal misses the obstacle.
+double gap_along(const RigidObstacle& obstacle, const mesh::Point& x, const mesh::Point& n, double length = 1.0);
 
 }  // namespace hpcontact::contact

@@ -31,27 +31,28 @@ std::filesystem::path normalized_folder(const std::filesystem::path& directory) 
   return path;
 }
 
-void check_output_directory(const std::filesystem::path& directory) {
-  const std::filesystem::path path = normalized_folder(directory);
-  if (std::filesystem::exists(path) && !std::filesystem::is_directory(path))
-    throw InputError("output folder '" + directory.string() + "' exists and is not a folder");
-  if (std::filesystem::exists(path) && access(path.c_str(), W_OK) != 0)
-    throw InputError("output folder '" + directory.string() + "' is not writable");
-  // Outputs are staged beside the folder: its parent, or else that parent's nearest existing
-  // ancestor, must take a new folder. A trial folder made and removed there says so where
-  // access() cannot (read-only mounts, /proc, quotas).
-  std::filesystem::path existing = path.parent_path();
+void check_folder_can_be_made_in(const std::filesystem::path& path, const std::filesystem::path& given) {
+  std::filesystem::path existing = path;
   while (!std::filesystem::exists(existing) && existing.has_parent_path() && existing != existing.parent_path())
     existing = existing.parent_path();
   if (!std::filesystem::is_directory(existing))
-    throw InputError("output folder '" + directory.string() + "' cannot be created: '" + existing.string() +
+    throw InputError("output folder '" + given.string() + "' cannot be created: '" + existing.string() +
                      "' is not a folder");
+  // A trial folder made and removed says what access() cannot (read-only mounts, /proc, quotas).
   std::string trial = (existing / ".hpcontact-trial-XXXXXX").string();
   errno = 0;
   if (!mkdtemp(trial.data()))
     throw InputError(describe_io_failure(
-        "output folder '" + directory.string() + "' cannot be written: no folder can be made in", existing.string()));
+        "output folder '" + given.string() + "' cannot be written: no folder can be made in", existing.string()));
   rmdir(trial.c_str());
+}
+
+void check_output_directory(const std::filesystem::path& directory) {
+  // The files go into the folder itself: it, or else its nearest existing ancestor, must take them.
+  const std::filesystem::path path = normalized_folder(directory);
+  if (std::filesystem::exists(path) && !std::filesystem::is_directory(path))
+    throw InputError("output folder '" + directory.string() + "' exists and is not a folder");
+  check_folder_can_be_made_in(path, directory);
 }
 
 void sync_to_disk(const std::filesystem::path& path) {

@@ -9,10 +9,14 @@
 
 namespace hpcontact::io {
 
-/// Checks, creating nothing, that `directory` exists and is writable or could be created (its
-/// nearest existing ancestor is a writable folder): commands that write only at the end call
-/// this first, so that bad input leaves no empty folder behind. @throws InputError otherwise.
+/// Checks, leaving nothing behind, that files can be written into `directory`: it is a folder, or
+/// does not exist yet, and a folder can be made in it or in its nearest existing ancestor (a
+/// trial folder is made and removed there). Commands that write only at the end call this first,
+/// so that bad input leaves no empty folder behind. @throws InputError otherwise.
 void check_output_directory(const std::filesystem::path& directory);
+/// The trial of check_output_directory in `path` (or its nearest existing ancestor); `given`
+/// names the output folder in the message. @throws InputError.
+void check_folder_can_be_made_in(const std::filesystem::path& path, const std::filesystem::path& given);
 /// `directory` absolute and normalized, without a trailing separator ("out/", "out/." and "out"
 /// are one folder). @throws InputError for an empty path.
 std::filesystem::path normalized_folder(const std::filesystem::path& directory);

@@ -11,7 +11,7 @@
 namespace hpcontact::io {
 
 /// @param table with numeric columns "x", "y" and "zone"; rows of one zone consecutive and in
-///        order along it. Columns other than x, y and zone become point arrays.
+///        order along it. Every numeric column but x and y becomes a point array (zone too).
 /// @throws std::logic_error if a required column is missing (a programming error).
 std::string line_samples_vtu_text(const CsvTable& table);
 

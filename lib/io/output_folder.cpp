@@ -31,6 +31,8 @@ void check_replaceable(const std::filesystem::path& out) {
 
 void check_output_folder(const std::filesystem::path& out) {
   check_output_directory(out);
+  // The outputs are staged beside the folder, in its parent.
+  check_folder_can_be_made_in(normalized_folder(out).parent_path(), out);
   check_replaceable(normalized_folder(out));
 }
 

@@ -56,14 +56,6 @@ bool TomlTable::has(const std::string& key) const {
 }
 
 void TomlTable::fail(const std::string& key, const std::string& value, const std::string& allowed) const {
-  // A required key that is missing is often there under a misspelt name ("pc" for "pC"): name it.
-  if (value == "(missing)" && table_) {
-    std::vector<std::string> present;
-    for (const auto& [name, node] : *table_) present.emplace_back(name.str());
-    if (const auto near = nearest_name(key, present))
-      throw_bad_input(origin(key), qualified(key),
-                      "(missing; the table has '" + *near + "': did you mean '" + key + "'?)", allowed);
-  }
   throw_bad_input(origin(key), qualified(key), value, allowed);
 }
 

@@ -265,6 +265,10 @@ Scene read_scene_tree(const std::shared_ptr<toml::table>& tree, const std::strin
   root.reject_unknown_keys();
   for (const auto& section : scene_sections()) {
     const io::TomlTable table = root.table(section.name, section.required);
+    // Misspelt keys first ("pc" for "pC"): reported as such, not as the key they miss.
+    for (const auto& key : scene_keys())
+      if (key.section == section.name) table.has(key.name);
+    table.reject_unknown_keys();
     for (const auto& key : scene_keys()) {
       if (key.section != section.name) continue;
       if (table.has(key.name)) scene.given.insert(key.dotted());

@@ -73,7 +73,7 @@ TEST(NewcomerMessages, ExpressionKeysTakeNumbers) {
 
 TEST(NewcomerMessages, AMisspeltRequiredKeyIsNamed) {
   expect_mentions(run_on("pc", replaced("pC = 1", "pc = 1"), "solve", ""), 2,
-                  {"scene.toml", "discretization.pC", "the table has 'pc'", "did you mean 'pC'"});
+                  {"scene.toml", "unknown key 'discretization.pc'", "did you mean 'pC'"});
 }
 
 TEST(NewcomerMessages, AMisspeltOptionSuggestsTheOption) {

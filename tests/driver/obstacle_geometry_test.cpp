@@ -178,6 +178,19 @@ TEST(ObstacleGeometry, ANormalThatMissesTheObstacleIsAnInputErrorNamingThePoint)
   }
   contact::RigidObstacle away{contact::ObstacleType::plane, {0.0, 1.0}, {0.0, 1.0}, 1.0, "", "t.toml"};
   EXPECT_THROW(contact::gap_along(away, mesh::Point(0.0, 0.0), mesh::Point(0.0, 1.0)), InputError);
+  // The distance expression alike: φ = y is > 0 at (0, 0.5), and the normal (0, 1) runs away from
+  // its zero; Newton's root behind the point is no gap.
+  contact::RigidObstacle level{contact::ObstacleType::distance, {}, {}, 1.0, "y", "t.toml"};
+  EXPECT_THROW(contact::gap_along(level, mesh::Point(0.0, 0.5), mesh::Point(0.0, 1.0)), InputError);
+  EXPECT_NEAR(contact::gap_along(level, mesh::Point(0.0, 0.5), mesh::Point(0.0, -1.0)), 0.5, 1e-14);
+}
+
+TEST(ObstacleGeometry, NewtonOnADistanceExpressionWorksAtTheProblemsOwnScale) {
+  // A disk of radius 1e-7 m above a point 1e-8 m below it: Newton's steps scale with the length
+  // given (obstacle_gap gives Γ_C's), not with 1.
+  contact::RigidObstacle small{contact::ObstacleType::distance, {}, {}, 1.0, "sqrt(x^2 + (y - 2e-7)^2) - 1e-7", "t"};
+  const double exact = 2e-7 - std::sqrt(1e-14 - 0.25e-14);
+  EXPECT_NEAR(contact::gap_along(small, mesh::Point(0.5e-7, 0.0), mesh::Point(0.0, 1.0), 1e-6), exact, 1e-12 * exact);
 }
 
 std::string error_of(const std::string& text) {

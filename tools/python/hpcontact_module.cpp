@@ -186,7 +186,7 @@ void bind_scenes(py::module_& m) {
 // `hpcontact advise` for Python: advice.csv's columns (written to out/advice.csv if given), the
 // recommendation's scene edits, alpha_min.
 py::tuple run_advice(const scene::Scene& scene, std::optional<double> alpha_min, const std::filesystem::path& out) {
-  if (!out.empty()) io::check_output_folder(out);
+  if (!out.empty()) io::check_output_directory(out);  // (advice.csv goes into out itself)
   const auto advice = [&] {
     py::gil_scoped_release release;
     return studies::advise_pairing(scene, {.alpha_min = alpha_min});
@@ -222,6 +222,7 @@ PYBIND11_MODULE(_hpcontact, m) {
   m.def(
       "run_scene",
       [](const scene::Scene& scene, const std::string& out) {
+        if (!out.empty()) io::check_output_folder(out);  // before the work, as the command line does
         std::map<std::string, io::CsvTable> tables;
         std::map<std::string, io::VtuGrid> fields;
         driver::SceneRunOptions options;
