@@ -112,8 +112,8 @@ int run_sweep(const SweepOptions& o) {
   const auto bar = progress_bar(rank == 0);
   const auto outcome = studies::run_stability_sweep(
       sweep, alpha_csv,
-      [&](int done, int total, const std::string& label) {
-        if (bar) bar(done - 1, total, label);
+      [&](int done, int total, double work_done, const std::string& label) {
+        if (bar) bar(done - 1, total, work_done, label);
       },
       shard, sweep_ranks);
   finish_progress_bar(bar);

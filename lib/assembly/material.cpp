@@ -22,4 +22,14 @@ Material lame_parameters(double young, double poisson, PlaneModel model) {
   return {lambda, mu, model == PlaneModel::strain ? lambda : 0.0};
 }
 
+std::array<double, 4> plane_stress_of(const Material& m, double exx, double eyy, double exy) {
+  return {m.lambda * (exx + eyy) + 2 * m.mu * exx, m.lambda * (exx + eyy) + 2 * m.mu * eyy,
+          m.out_of_plane * (exx + eyy), 2 * m.mu * exy};
+}
+
+double von_mises_of(const std::array<double, 4>& s) {
+  const auto [xx, yy, zz, xy] = s;
+  return std::sqrt(0.5 * ((xx - yy) * (xx - yy) + (yy - zz) * (yy - zz) + (zz - xx) * (zz - xx)) + 3 * xy * xy);
+}
+
 }  // namespace hpcontact::assembly

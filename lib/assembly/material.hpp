@@ -2,6 +2,7 @@
 // modulus and Poisson's ratio in plane strain or plane stress.
 #pragma once
 
+#include <array>
 #include <string>
 
 namespace hpcontact::assembly {
@@ -23,5 +24,12 @@ struct Material {
 ///   plane stress  λ = Eν / (1 − ν²)            (the same μ).
 /// @throws InputError outside these ranges.
 Material lame_parameters(double young, double poisson, PlaneModel model);
+
+/// σ = λ tr(ε) I + 2μ ε of the strain (ε_xx, ε_yy, ε_xy) as (σ_xx, σ_yy, σ_zz, σ_xy), σ_zz of the
+/// plane model.
+std::array<double, 4> plane_stress_of(const Material& m, double exx, double eyy, double exy);
+
+/// The von Mises stress of (σ_xx, σ_yy, σ_zz, σ_xy).
+double von_mises_of(const std::array<double, 4>& s);
 
 }  // namespace hpcontact::assembly

@@ -22,6 +22,8 @@ class SharedCounter {
   /// The counter's value before this call adds one: 0, 1, 2, ... over all ranks, each value
   /// handed to exactly one caller.
   long take();
+  /// The same, adding `amount` (a share of work done, counted in units).
+  long take(long amount) { return add(amount); }
   /// Adds `end` (the number of units) to the counter, so that no rank takes new work: a failing
   /// rank calls it so the run ends after the units in progress. Returns the counter before, i.e.
   /// how many values below `end` were handed out.

@@ -36,7 +36,8 @@ struct SceneRunOptions {
 /// Runs the effects of `scene` (scalar model or elastic body) and writes into `out`:
 ///   summary.json              (output "summary") the RunResult (summary_json.hpp)
 ///   boundary_<problem>.csv    (output "boundary") the fields sampled on Γ_C: x,u,obstacle|s,lambda,
-///                             y,s_arc,zone (scalar); x,y,s_arc,u_n,u_t,gap,pressure,traction_t,zone (elastic)
+///                             y,s_arc,zone (scalar); x,y,s_arc,u_n,u_t,gap,pressure,traction_t,
+///                             sigma_xx,sigma_yy,sigma_zz,sigma_xy,zone (elastic)
 ///   solution_<problem>.vtu    (output "vtu") u and ∇u (scalar) or the displacement and von Mises
 ///                             stress (elastic) on Ω, VTK Lagrange cells of the largest p; under
 ///                             mpirun solution_<problem>.pvtu naming one piece per rank,

@@ -191,22 +191,16 @@ VtuGrid elastic_vtu_grid(const assembly::CellField& u, const std::vector<assembl
     const auto& m = materials[cell];
     Eigen::MatrixXd out = Eigen::MatrixXd::Zero(values.values.rows(), 6);
     for (Eigen::Index q = 0; q < out.rows(); ++q) {
-      const double exx = dx(q, 0), eyy = dy(q, 1), exy = 0.5 * (dy(q, 0) + dx(q, 1));
-      out(q, 0) = m.lambda * (exx + eyy) + 2 * m.mu * exx;
-      out(q, 1) = m.lambda * (exx + eyy) + 2 * m.mu * eyy;
-      out(q, 2) = m.out_of_plane * (exx + eyy);
-      out(q, 3) = 2 * m.mu * exy;
+      const auto s = assembly::plane_stress_of(m, dx(q, 0), dy(q, 1), 0.5 * (dy(q, 0) + dx(q, 1)));
+      for (int c = 0; c < 4; ++c) out(q, c) = s[static_cast<std::size_t>(c)];
     }
     return out;
   };
   auto von_mises = [&](int cell, const assembly::CellValues& values) {
     const Eigen::MatrixXd s = stress(cell, values);
     Eigen::MatrixXd out(values.values.rows(), 1);
-    for (Eigen::Index q = 0; q < out.rows(); ++q) {
-      const double sxx = s(q, 0), syy = s(q, 1), szz = s(q, 2), sxy = s(q, 3);
-      out(q, 0) = std::sqrt(0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) + (szz - sxx) * (szz - sxx)) +
-                            3 * sxy * sxy);
-    }
+    for (Eigen::Index q = 0; q < out.rows(); ++q)
+      out(q, 0) = assembly::von_mises_of({s(q, 0), s(q, 1), s(q, 2), s(q, 3)});
     return out;
   };
   const auto names = elastic_vtu_fields();  // (the PVTU names the same)

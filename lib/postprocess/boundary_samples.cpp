@@ -44,6 +44,23 @@ Eigen::MatrixXd values_at(const assembly::CellField& field, const std::vector<Ce
   return out;
 }
 
+Eigen::MatrixXd stresses_at(const assembly::CellField& displacement, const std::vector<assembly::Material>& materials,
+                            const std::vector<CellPoint>& points, linalg::Distribution distribution) {
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(points.size()), 4);
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const auto& point = points[k];
+    if (!displacement.rows.holds(point.cell)) continue;
+    const auto values = assembly::tabulate_cell(*displacement.space, point.cell, {{point.xi}, {point.eta}});
+    const Eigen::MatrixXd coefficients = displacement.coefficients(point.cell);
+    const Eigen::RowVectorXd dx = values.grad_x.row(0) * coefficients, dy = values.grad_y.row(0) * coefficients;
+    const auto s =
+        assembly::plane_stress_of(materials[static_cast<std::size_t>(point.cell)], dx(0), dy(1), 0.5 * (dy(0) + dx(1)));
+    for (int c = 0; c < 4; ++c) out(static_cast<Eigen::Index>(k), c) = s[static_cast<std::size_t>(c)];
+  }
+  if (distribution.distributed()) sum_over_ranks(distribution.ranks, out.data(), out.size());
+  return out;
+}
+
 BoundarySamples sample_boundary(const contact::ContactSetup& setup, const contact::ContactSolution& solution,
                                 int per_interval) {
   const bool signorini = setup.problem == contact::ContactProblem::signorini;

@@ -4,6 +4,7 @@
 
 #include "assembly/cell_field.hpp"
 #include "assembly/coupling.hpp"
+#include "assembly/material.hpp"
 #include "contact/contact_problem.hpp"
 #include "io/csv_writer.hpp"
 #include "linalg/distribution.hpp"
@@ -33,6 +34,10 @@ std::vector<CellPoint> sample_points(const mesh::ContactBoundary& contact,
 /// Collective when distributed (the cells of a distributed field are split over its ranks).
 Eigen::MatrixXd values_at(const assembly::CellField& field, const std::vector<CellPoint>& points,
                           linalg::Distribution distribution);
+/// The stress σ(u) of a displacement at every point, columns xx, yy, zz, xy (σ_zz of the plane
+/// model), from the cell the point names and its material; gathered as values_at.
+Eigen::MatrixXd stresses_at(const assembly::CellField& displacement, const std::vector<assembly::Material>& materials,
+                            const std::vector<CellPoint>& points, linalg::Distribution distribution);
 
 /// Samples every interval of the common refinement of T_h|Γ_C and T_{C,H} at `per_interval`
 /// equidistant points including both ends, so that at least that many fall in every boundary

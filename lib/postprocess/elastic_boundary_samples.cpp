@@ -116,15 +116,28 @@ ElasticBoundarySamples sample_elastic_boundary(const contact::ElasticContactSetu
   const auto& contact = ops.contact();
   const auto points = sample_points(contact, assembly::common_intervals(contact, *setup.boundary_mesh), per_interval);
   // u at the points from the ranks holding their cells (trace-sized, then the same on every rank)
-  const Eigen::MatrixXd u_at =
-      values_at(assembly::vector_field(ops.vector_space(), solution.u, solution.u_rows, solution.lift), points,
-                ops.distribution());
-  return sample_pressure(setup, solution, {"x", "y", "s_arc", "u_n", "u_t", "gap", "pressure", "traction_t", "zone"},
+  const auto u = assembly::vector_field(ops.vector_space(), solution.u, solution.u_rows, solution.lift);
+  const Eigen::MatrixXd u_at = values_at(u, points, ops.distribution());
+  // σ(u_h) from the cell beside Γ_C: the discrete stress, beside the multiplier's −σ_nn and σ_nt.
+  const Eigen::MatrixXd sigma = stresses_at(u, ops.materials(), points, ops.distribution());
+  return sample_pressure(setup, solution,
+                         {"x", "y", "s_arc", "u_n", "u_t", "gap", "pressure", "traction_t", "sigma_xx", "sigma_yy",
+                          "sigma_zz", "sigma_xy", "zone"},
                          per_interval, [&](const Sample& at) -> std::vector<io::CsvCell> {
                            const Eigen::Vector2d u = u_at.row(at.point).transpose();
-                           return {at.x.x(),         at.x.y(),          at.s,
-                                   u.dot(at.normal), u.dot(at.tangent), setup.gap(at.x) - u.dot(at.normal),
-                                   at.pressure,      at.shear};
+                           const auto s = sigma.row(at.point);
+                           return {at.x.x(),
+                                   at.x.y(),
+                                   at.s,
+                                   u.dot(at.normal),
+                                   u.dot(at.tangent),
+                                   setup.gap(at.x) - u.dot(at.normal),
+                                   at.pressure,
+                                   at.shear,
+                                   s(0),
+                                   s(1),
+                                   s(2),
+                                   s(3)};
                          });
 }
 

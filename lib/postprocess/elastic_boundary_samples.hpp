@@ -14,8 +14,10 @@
 namespace hpcontact::postprocess {
 
 struct ElasticBoundarySamples {
-  /// x,y,s_arc,u_n,u_t,gap,pressure,traction_t,zone with gap = g − u·n ≥ 0, pressure = −σ_nn ≥ 0 in
-  /// contact (the normal multiplier), traction_t = σ_nt (along increasing s), zone of Γ_C.
+  /// x,y,s_arc,u_n,u_t,gap,pressure,traction_t,sigma_xx,sigma_yy,sigma_zz,sigma_xy,zone with
+  /// gap = g − u·n ≥ 0, pressure = −σ_nn ≥ 0 in contact (the normal multiplier), traction_t = σ_nt
+  /// (along increasing s), σ(u_h) from the cell beside Γ_C (one body; a pair's samples have their
+  /// own columns), zone of Γ_C.
   io::CsvTable table;
   double contact_set_length = 0.0;  ///< where pressure > 1e-10 max pressure, from the samples
   double total_force = 0.0;         ///< P = ∫_{Γ_C} pressure ds (exact, from the multiplier)

@@ -117,8 +117,7 @@ void check_sweep_ranks(const SweepRanks& sweep_ranks, int ranks) {
 }
 
 SweepOutcome run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::path& alpha_csv,
-                                 const std::function<void(int, int, const std::string&)>& progress, SweepShard shard,
-                                 SweepRanks sweep_ranks) {
+                                 const SweepProgress& progress, SweepShard shard, SweepRanks sweep_ranks) {
   check_sweep_ranks(sweep_ranks, mpi_rank_and_size().second);
   // The groups of ranks that take units (a group's leader, its rank 0, takes them and keeps their
   // rows), the points and the rows an earlier run stored.

@@ -85,17 +85,22 @@ struct SweepOutcome {
   bool complete = false;
 };
 
+/// progress(done, total, work_done, label) before each point (see run_stability_sweep).
+using SweepProgress = std::function<void(int done, int total, double work_done, const std::string& label)>;
+
 /// Runs every point (of `shard`) not already in `alpha_csv` (resumable), rewriting the file
-/// atomically after each group of points sharing (level, p). `progress(done, total, label)` is
-/// called before each point (`done`: the points stored before and those all ranks computed so far,
-/// this one included; `total`: those stored and those to do in this run, a slice's own). Under
+/// atomically after each group of points sharing (level, p). `progress(done, total, work_done,
+/// label)` is called before each point (`done`: the points stored before and those all ranks
+/// computed so far, this one included; `total`: those stored and those to do in this run, a
+/// slice's own; `work_done`: the fraction of this run's estimated work (the plan's cost of each
+/// point) the points computed so far make up). Under
 /// mpirun the groups of `sweep_ranks` (single ranks by default) take units of groups (whole levels
 /// or single groups, longest first: sweep_work_units) as they become idle, and rank 0 writes the
 /// rows in the serial order (the file is then written once, at the end). Who computes what:
 /// SweepSchedule; what a point computes: SweepEvaluation.
 SweepOutcome run_stability_sweep(const StabilitySweep& sweep, const std::filesystem::path& alpha_csv,
-                                 const std::function<void(int, int, const std::string&)>& progress = {},
-                                 SweepShard shard = {}, SweepRanks sweep_ranks = {});
+                                 const SweepProgress& progress = {}, SweepShard shard = {},
+                                 SweepRanks sweep_ranks = {});
 
 /// The alpha.csv of every folder in `shards` (and the per-rank shards beside each) into
 /// `alpha_csv`, in the serial order: equal to a serial run's file but for the seconds column. A

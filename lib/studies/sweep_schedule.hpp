@@ -31,9 +31,6 @@ struct SweepWork {
   std::function<void(std::size_t share)> release_share;
 };
 
-/// progress(done, total, label) before each point (see run_stability_sweep).
-using SweepProgress = std::function<void(int, int, const std::string&)>;
-
 class SweepSchedule {
  public:
   /// Plans the points of `shard` that `rows` (stored by an earlier run) lacks into units of work
@@ -71,7 +68,11 @@ class SweepSchedule {
   /// The progress count: points stored before and points computed by all ranks, of those stored
   /// and those to do in this run (a slice's own).
   int stored_ = 0, total_ = 0;
-  SharedCounter next_unit_, points_computed_;
+  /// The work of each point to do in this run, in units of kWorkUnits for all of it (the plan's
+  /// cost estimates), and the units of the points all ranks computed so far.
+  static constexpr long kWorkUnits = 1000000000;
+  std::vector<long> point_work_;
+  SharedCounter next_unit_, points_computed_, work_computed_;
   std::vector<std::pair<int, infsup::InfSupRecord>> new_rows_;  ///< (point index, record) of this leader
 };
 

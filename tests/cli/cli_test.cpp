@@ -723,3 +723,21 @@ TEST(Cli, ProgressLinesWhenStderrIsNotATerminal) {
   ASSERT_EQ(quiet.exit_code, 0) << quiet.output;
   EXPECT_EQ(quiet.output.find("progress: "), std::string::npos) << "a run shorter than the interval prints none";
 }
+
+// A point that runs longer than the interval is not silent: a heartbeat line names it and how long
+// it has run (here the second point, on 128 x 128 cells at p = 4, against an interval of 0.2 s).
+TEST(Cli, ProgressHeartbeatWhileOnePointRuns) {
+  const auto dir = scratch("heartbeat");
+  std::ofstream(dir / "slow.toml") << "[sweep]\nscene = \"" << HPCONTACT_SOURCE_DIR
+                                   << "/studies/stability/square.toml\"\n"
+                                      "levels = { \"domain.n_x\" = [4, 128], \"domain.n_y\" = [4, 128] }\n"
+                                      "p = 4\npC = 0\nratio = [1]\nnorm = [\"interp\"]\nproblem = [\"signorini\"]\n"
+                                      "fit_levels = 2\n";
+  const auto run = run_command("HPCONTACT_PROGRESS_SECONDS=0.2 " + std::string(HPCONTACT_CLI) + " sweep " +
+                               (dir / "slow.toml").string() + " --out " + (dir / "out").string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto at = run.output.find("progress: 1/2 done in ");
+  ASSERT_NE(at, std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("running for ", at), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("level 2 (domain.n_x=128", at), std::string::npos) << run.output;
+}

@@ -312,11 +312,11 @@ TEST(Hertz, SolveWritesTheBoundaryColumnsWithPressureAndGapComplementary) {
   const auto result = hpcontact::testing::run("solve " + kHertzScene + " --out " + dir.string());
   ASSERT_EQ(result.exit_code, 0) << result.output;
   const auto csv = hpcontact::testing::read_csv(dir / "boundary_frictionless.csv");
-  EXPECT_EQ(csv.header_line(), "x,y,s_arc,u_n,u_t,gap,pressure,traction_t,zone");
+  EXPECT_EQ(csv.header_line(), "x,y,s_arc,u_n,u_t,gap,pressure,traction_t,sigma_xx,sigma_yy,sigma_zz,sigma_xy,zone");
   double max_pressure = 0.0, min_pressure = 0.0, min_gap = 0.0, max_product = 0.0;
   const auto rows = csv.numbers();
   for (const auto& v : rows) {
-    ASSERT_EQ(v.size(), 9u);
+    ASSERT_EQ(v.size(), 13u);
     max_pressure = std::max(max_pressure, v[6]);
     min_pressure = std::min(min_pressure, v[6]);
     min_gap = std::min(min_gap, v[5]);
@@ -363,8 +363,11 @@ TEST(ElasticScenes, PrescribedDisplacementGivesTheExactUniformPressure) {
   const double pressure = 0.0025 / (1 - 0.3 * 0.3);
   const auto rows = hpcontact::testing::read_csv(dir / "boundary_frictionless.csv").numbers();
   for (const auto& v : rows) {
-    ASSERT_EQ(v.size(), 9u);
+    ASSERT_EQ(v.size(), 13u);
     EXPECT_NEAR(v[6], pressure, 1e-12) << "x = " << v[0];
+    // The discrete stress beside Γ_C is the uniform state too: σ_yy = −p, no shear.
+    EXPECT_NEAR(v[9], -pressure, 1e-10) << "x = " << v[0];
+    EXPECT_NEAR(v[11], 0.0, 1e-10) << "x = " << v[0];
     EXPECT_NEAR(v[3], 0.0, 1e-14) << "u_n: the top stays on the plate";
   }
   EXPECT_GT(rows.size(), 100u);

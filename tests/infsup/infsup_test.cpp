@@ -211,7 +211,7 @@ eigensolver = "dense"
   }
   const std::string first = text_of(dir / "alpha.csv");
   int calls = 0;
-  studies::run_stability_sweep(sweep, dir / "alpha.csv", [&](int, int, const std::string&) { ++calls; });
+  studies::run_stability_sweep(sweep, dir / "alpha.csv", [&](int, int, double, const std::string&) { ++calls; });
   EXPECT_EQ(calls, 0);
   EXPECT_EQ(text_of(dir / "alpha.csv"), first);
 }

@@ -309,6 +309,9 @@ TEST(CurvedScenes, ElasticRingHasLamesUniformPressure) {
     EXPECT_NEAR(row[6], pressure, 1e-8 * pressure);
     EXPECT_NEAR(row[5], 0.0, 1e-12) << "gap";
     EXPECT_NEAR(row[4], 0.0, 1e-12) << "u_t: the ring expands radially";
+    // The stress of u_h beside the arc: σ_nn = n·σ·n = −p too (measured 5e-8 of p at p = 6).
+    const double nx = row[0] / 2, ny = row[1] / 2;
+    EXPECT_NEAR(nx * nx * row[8] + 2 * nx * ny * row[11] + ny * ny * row[9], -pressure, 1e-6 * pressure);
   }
   EXPECT_GT(rows, 100);
   // The resultants: P = p·(π/2)·2 along the arc, no tangential force, and the traction −p n on the
