@@ -111,7 +111,7 @@ void assemble_matrix(MPI_Comm ranks, int n, CooEntries& entries, bool with_schur
   // under mpirun with zero off-diagonal entries (PETSc 3.18.5, MUMPS 5.5: S_T off by 80 % in
   // test_07 on 2 and 3 ranks, right on one). With a Schur set the matrix is therefore declared
   // symmetric only: MUMPS's SYM = 2 LDLᵀ (with pivoting) returns S_T to 1e-14 on 1–3 ranks, in
-  // less memory and time than the LU used before (see docs/results.md). Without a Schur set it
+  // less memory and time than the LU used before (see docs/performance.md). Without a Schur set it
   // stays SYM = 1: ScaLAPACK then factorizes the root front, and only its Cholesky (SYM = 1)
   // refuses an indefinite one there; SYM = 2 would count no negative pivots in it (PETSc asks
   // for ICNTL(13) = 1 before it reports an inertia).
