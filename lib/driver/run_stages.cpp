@@ -1,8 +1,13 @@
 // The stages of a run that work on one level: discretize, build operators, solve, analyse α.
 #include "driver/run_stages.hpp"
 
-#include <algorithm>
+#include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
+#include <variant>
+
+#include "core/error.hpp"
 #include "driver/pairing_stability.hpp"
 #include "postprocess/mode_samples.hpp"
 
@@ -21,10 +26,30 @@ void build_operators(Level& level, OperatorLog* log, const StageContext& context
   if (!keep_whole_mesh) release_whole_mesh(*level.d, level.model->operators_mesh());
 }
 
+namespace {
+
+// A solve whose numbers overflowed (data near 1e154 square to infinity in the energy) is a
+// numerical failure, not a result: the energy and every sample must be finite.
+void check_finite(const SolvedProblem& solved, const std::string& where) {
+  bool finite = std::isfinite(solved.result.energy);
+  for (const auto& row : solved.samples.rows())
+    for (const auto& cell : row)
+      if (const auto* value = std::get_if<double>(&cell)) finite = finite && std::isfinite(*value);
+  if (!finite)
+    throw NumericalError(fmt::format(
+        "the {} solve{} gave non-finite numbers (energy = {}): the data overflow double precision (a load, gap or "
+        "bound near 1e150 squares to infinity); scale the problem (its units) so that f, g, s and E stay far from "
+        "1e150",
+        solved.name, where, solved.result.energy));
+}
+
+}  // namespace
+
 void solve_contact_problems(Level& level, const StageContext& context, const std::string& where) {
   for (const auto problem : level.model->problems()) {
     context.say("solving " + scene::to_string(problem) + where);
     level.solved.push_back(level.model->solve(problem));
+    check_finite(level.solved.back(), where);
   }
 }
 

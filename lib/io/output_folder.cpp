@@ -2,6 +2,7 @@
 #include "io/output_folder.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <stdio.h>
 #include <unistd.h>
 
@@ -27,6 +28,24 @@ void check_replaceable(const std::filesystem::path& out) {
     throw InputError("output folder '" + out.string() + "' holds files that hpcontact did not write (no " + kMarker +
                      "): choose a new or empty folder; a folder of an earlier run is replaced whole");
 }
+// Staging folders "<out>.tmp-<pid>" of processes that no longer run (killed before they could
+// clean up) are removed: no run of theirs can commit them any more. Those of live processes,
+// another run into the same folder, are left alone.
+void remove_stale_staging(const std::filesystem::path& out) {
+  const std::string prefix = out.filename().string() + ".tmp-";
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(out.parent_path(), error)) {
+    const std::string name = entry.path().filename().string();
+    if (!name.starts_with(prefix)) continue;
+    const std::string digits = name.substr(prefix.size());
+    if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9) continue;
+    const pid_t pid = static_cast<pid_t>(std::stol(digits));
+    if (pid == getpid() || kill(pid, 0) == 0 || errno != ESRCH) continue;
+    std::error_code ignored;
+    std::filesystem::remove_all(entry.path(), ignored);
+  }
+}
+
 }  // namespace
 
 void check_output_folder(const std::filesystem::path& out) {
@@ -38,6 +57,7 @@ void check_output_folder(const std::filesystem::path& out) {
 
 OutputFolder::OutputFolder(std::filesystem::path out) : out_(normalized_folder(out)) {
   check_replaceable(out_);
+  remove_stale_staging(out_);
   staging_ = out_;
   staging_ += ".tmp-" + std::to_string(getpid());
   std::error_code error;

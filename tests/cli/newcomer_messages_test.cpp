@@ -2,6 +2,7 @@
 // and options with the name meant, a mesh without named groups, an unreadable mesh file with the
 // reason, and any scene key set from the command line (--set) checked like the file's value.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -142,6 +143,37 @@ TEST(NewcomerMessages, TheOutputFolderIsCheckedBeforeSolvingWhateverItsSpelling)
   EXPECT_TRUE(std::filesystem::exists(dir / "out" / "summary.json"));
   for (const auto& entry : std::filesystem::directory_iterator(dir / "out"))
     EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos) << entry.path();
+}
+
+}  // namespace
+
+namespace {
+
+// Data that overflow double precision give a numerical failure (exit 3) naming the problem, not
+// an energy of NaN with exit 0 and nothing written.
+TEST(NewcomerMessages, OverflowingDataAreANumericalFailure) {
+  const auto dir = scratch("newcomer_overflow");
+  std::ofstream(dir / "scene.toml") << kScene;
+  const auto result =
+      run("solve " + (dir / "scene.toml").string() + " --set data.f_y=-1e300 --out " + (dir / "out").string());
+  expect_mentions(result, 3, {"frictionless solve gave non-finite numbers", "overflow"});
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+}
+
+// A staging folder left by a killed run (its process gone) is removed by the next run into the
+// same folder; one of a live process is not.
+TEST(NewcomerMessages, StagingFoldersOfDeadRunsAreRemoved) {
+  const auto dir = scratch("newcomer_stale");
+  std::ofstream(dir / "scene.toml") << kScene;
+  const auto stale = dir / "out.tmp-999999999", live = dir / ("out.tmp-" + std::to_string(getppid()));
+  for (const auto& folder : {stale, live}) {
+    std::filesystem::create_directories(folder);
+    std::ofstream(folder / "half_written.csv") << "x,u\n0,";
+  }
+  const auto result = run("solve " + (dir / "scene.toml").string() + " --out " + (dir / "out").string());
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_FALSE(std::filesystem::exists(stale));
+  EXPECT_TRUE(std::filesystem::exists(live / "half_written.csv"));
 }
 
 }  // namespace

@@ -139,6 +139,8 @@ def test_numbers_in_expression_keys_typos_and_a_clean_namespace():
     as_number = hpcontact.solve(FIGURE1, {"data.f": -1.0}, effects=["signorini"])
     as_text = hpcontact.solve(FIGURE1, {"data.f": "-1"}, effects=["signorini"])
     assert as_number.summary["signorini"]["energy"] == as_text.summary["signorini"]["energy"]
+    # One effect given as a name, not a list, is that effect (not its letters).
+    assert hpcontact.solve(FIGURE1, {"data.f": -1.0}, effects="signorini").summary["effects"] == ["signorini"]
     # A misspelt override names the key meant.
     with pytest.raises(hpcontact.InputError, match=r"did you mean 'discretization.pC'"):
         hpcontact.scene(FIGURE1, {"discretization.pc": 2})

@@ -97,7 +97,8 @@ def solve(source, overrides=None, effects=None, out=None, path=None):
     """
     overrides = dict(overrides or {})
     if effects is not None:
-        overrides["run.effects"] = list(effects)
+        # (one name is one effect: list("signorini") would be its letters)
+        overrides["run.effects"] = [effects] if isinstance(effects, str) else list(effects)
     checked = scene(source, overrides, path)
     run, summary, tables, fields = _hpcontact.run_scene(checked, _os.fspath(out) if out is not None else "")
     stability = summary.get("stability", {})
