@@ -9,8 +9,11 @@ namespace py = pybind11;
 
 namespace hpcontact::python {
 
-void bind_run_result(py::module_& m) {
-  using driver::ContactResult, driver::InfSupSummary, driver::RunResult, driver::ZoneResult;
+namespace {
+
+// One contact problem's result: its solver report and its zones.
+void bind_contact_result(py::module_& m) {
+  using driver::ContactResult, driver::ZoneResult;
   py::class_<contact::QpReport>(m, "SolverReport", "How the contact QP was solved")
       .def_readonly("method", &contact::QpReport::method)
       .def_readonly("converged", &contact::QpReport::converged)
@@ -39,6 +42,13 @@ void bind_run_result(py::module_& m) {
       .def("__repr__", [](const ContactResult& c) {
         return "<hpcontact.ContactResult " + c.problem + " energy=" + std::to_string(c.energy) + ">";
       });
+}
+
+}  // namespace
+
+void bind_run_result(py::module_& m) {
+  using driver::InfSupSummary, driver::RunResult;
+  bind_contact_result(m);
   // α's pairing and value live in the summary's InfSupRecord; Python reads them as attributes.
   py::class_<InfSupSummary>(m, "InfSupSummary", "The inf-sup constant of the scene's pairing")
       .def_property_readonly("alpha", [](const InfSupSummary& a) { return a.record.alpha; })
