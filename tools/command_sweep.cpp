@@ -14,7 +14,7 @@
 #include "io/atomic_file.hpp"
 #include "progress_bar.hpp"
 #include "studies/stability_sweep.hpp"
-#include "studies/sweep_rows.hpp"
+#include "studies/sweep_folder.hpp"
 
 namespace hpcontact::tools {
 namespace {
@@ -79,17 +79,13 @@ int merge_slices(const SweepOptions& o, const studies::StabilitySweep& sweep) {
   return 0;
 }
 
-// One sweep per folder at a time: rank 0 takes the lock, held until the process ends, and with
-// --restart removes the old rows before any rank reads them.
-std::unique_ptr<studies::FolderLock> lock_folder(const SweepOptions& o, const std::filesystem::path& alpha_csv) {
+// One sweep per folder at a time: rank 0 takes the lock, held until the process ends, with
+// --restart removes the old rows, and checks that stored rows are this study's, before any rank
+// reads them.
+std::unique_ptr<studies::FolderLock> open_folder(const SweepOptions& o, const studies::StabilitySweep& sweep) {
   std::unique_ptr<studies::FolderLock> lock;
   run_on_all_ranks_agreeing([&] {
-    if (mpi_rank_and_size().first != 0) return;
-    lock = std::make_unique<studies::FolderLock>(o.out_dir);
-    if (o.restart) {
-      std::filesystem::remove(alpha_csv);
-      for (const auto& shard : studies::existing_shards(alpha_csv)) std::filesystem::remove(shard);
-    }
+    if (mpi_rank_and_size().first == 0) lock = studies::open_sweep_folder(sweep, o.out_dir, o.restart);
   });
   return lock;
 }
@@ -106,7 +102,7 @@ int run_sweep(const SweepOptions& o) {
   io::ensure_writable_directory(o.out_dir);
   if (!o.merge_dirs.empty()) return merge_slices(o, sweep);
   const auto alpha_csv = std::filesystem::path(o.out_dir) / "alpha.csv";
-  const auto lock = lock_folder(o, alpha_csv);
+  const auto lock = open_folder(o, sweep);
   // 2. Run, with a progress line on stderr when it is a terminal (rank 0 only under mpirun).
   Stopwatch clock;
   const auto bar = progress_bar(rank == 0);

@@ -3,6 +3,7 @@
 // failure, 4 I/O failure, 130 interrupted (SIGINT, SIGTERM), 1 a bug.
 #include <fmt/format.h>
 #include <mpi.h>
+#include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -13,6 +14,7 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
+#include "core/memory_limit.hpp"
 #include "core/petsc_session.hpp"
 #include "core/rank_agreement.hpp"
 #include "infsup/generalized_eigen.hpp"
@@ -36,7 +38,7 @@ int report(const std::exception& error) {
                      : code == 4 ? "I/O failure"
                                  : "internal error";
   fmt::print(stderr, "hpcontact: {}{}: {}\n", kind, ranks > 1 && !agreed ? fmt::format(" on rank {}", rank) : "",
-             error.what());
+             message_of(error));
   if (ranks > 1 && !agreed) {
     std::fflush(stderr);
     MPI_Abort(MPI_COMM_WORLD, code);
@@ -76,7 +78,7 @@ std::string unknown_option_message(const CLI::App& app, const std::vector<std::s
 
 int main(int argc, char** argv) {
   using namespace hpcontact;
-  install_interrupt_handlers();
+  install_interrupt_handlers(launcher_rank() == 0);
   // 1. Separate PETSc/SLEPc options (-eps_type arpack, ...) from our own arguments.
   const SplitCommandLine command_line = split_petsc_options(argc, argv);
 
@@ -126,9 +128,16 @@ int main(int argc, char** argv) {
   // leave the message unprinted).
   std::unique_ptr<PetscSession> session;
   try {
+    reserve_library_buffers();
     const bool eager = launched_by_mpi_launcher() || command_line.petsc.size() > 1;
     session = std::make_unique<PetscSession>(command_line.petsc, eager);
     open_failure_channel();
+  } catch (const OutOfMemory& error) {
+    // Too little memory to start: an OpenBLAS thread may be retrying its buffer forever, and the
+    // library's exit handler would wait for it.
+    report(error);
+    std::fflush(stderr);
+    _exit(exit_code_of(error));
   } catch (const std::exception& error) {
     return report(error);
   }

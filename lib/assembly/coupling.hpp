@@ -42,6 +42,8 @@ class CouplingWeight {
   /// The key, else the address of the function shared by the copies (unique while they live);
   /// empty for no weight.
   std::string identity() const;
+  /// The key given at construction (e.g. the scene file and key of the data), empty if none.
+  const std::string& key() const { return key_; }
 
  private:
   std::shared_ptr<const BoundaryFunction> function_;

@@ -1,8 +1,11 @@
-// Message helpers for InputError and IoError; exit codes.
+// Message helpers for InputError and IoError; exit codes; the reported message of an exception.
 #include "core/error.hpp"
 
 #include <cerrno>
 #include <cstring>
+#include <new>
+
+#include "core/memory_limit.hpp"
 
 namespace hpcontact {
 
@@ -25,9 +28,14 @@ std::string describe_io_failure(const std::string& what, const std::string& path
 
 int exit_code_of(const std::exception& error) {
   if (dynamic_cast<const InputError*>(&error)) return 2;
-  if (dynamic_cast<const NumericalError*>(&error)) return 3;
+  if (dynamic_cast<const NumericalError*>(&error) || dynamic_cast<const std::bad_alloc*>(&error)) return 3;
   if (dynamic_cast<const IoError*>(&error)) return 4;
   return 1;
+}
+
+std::string message_of(const std::exception& error) {
+  if (dynamic_cast<const std::bad_alloc*>(&error)) return out_of_memory_message("");
+  return error.what();
 }
 
 }  // namespace hpcontact

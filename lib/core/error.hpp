@@ -20,6 +20,13 @@ class NumericalError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// An allocation that failed (a library's report of it; std::bad_alloc is treated alike): exit 3,
+/// with a message naming the memory limit (out_of_memory_message in core/memory_limit.hpp).
+class OutOfMemory : public NumericalError {
+ public:
+  using NumericalError::NumericalError;
+};
+
 /// An I/O failure on a path the input was right to name (disk full, file size limit, a folder
 /// removed under a run). The message names the path and the system's reason.
 class IoError : public std::runtime_error {
@@ -30,8 +37,13 @@ class IoError : public std::runtime_error {
 /// "<what> '<path>': <strerror(errno)>" for the current errno.
 std::string describe_io_failure(const std::string& what, const std::string& path);
 
-/// The exit code of the command line for an exception: 2, 3, 4, or 1 (a bug).
+/// The exit code of the command line for an exception: 2, 3 (std::bad_alloc included), 4, or 1 (a
+/// bug).
 int exit_code_of(const std::exception& error);
+
+/// The message of an exception as reported: what() but for std::bad_alloc, whose what() says
+/// nothing, the out-of-memory message naming the memory limit.
+std::string message_of(const std::exception& error);
 
 /// Builds the standard message "<where>: key '<key>' = <value>: <allowed>".
 std::string describe_bad_input(const std::string& where, const std::string& key, const std::string& value,

@@ -1,4 +1,4 @@
-// The interrupt handlers and their registry of files in progress.
+// The interrupt handlers and their registry of files in progress; the cancellation flag.
 #include "core/interrupt.hpp"
 
 #include <dirent.h>
@@ -42,7 +42,24 @@ void remove_folder(const char* path) {
   rmdir(path);
 }
 
-void on_interrupt(int) {
+std::atomic<bool> announce_interrupt{true};
+std::atomic<bool> cancellation_requested{false};
+
+// write(2) of a text, as the handler may (no stdio).
+void write_text(const char* text) {
+  for (std::size_t left = std::strlen(text); left > 0;) {
+    const ssize_t n = write(STDERR_FILENO, text, left);
+    if (n <= 0) return;
+    text += n;
+    left -= static_cast<std::size_t>(n);
+  }
+}
+
+void on_interrupt(int signal_number) {
+  if (announce_interrupt.load()) {
+    write_text(signal_number == SIGTERM ? "\nhpcontact: stopped by SIGTERM" : "\nhpcontact: interrupted (SIGINT)");
+    write_text("; files in progress removed, finished files kept; exit code 130\n");
+  }
   for (int slot = 0; slot < kSlots; ++slot)
     if (armed[slot].load()) is_folder[slot] ? remove_folder(paths[slot].data()) : (void)unlink(paths[slot].data());
   _exit(130);
@@ -63,7 +80,8 @@ int register_path(const std::string& path, bool folder) {
 
 }  // namespace
 
-void install_interrupt_handlers() {
+void install_interrupt_handlers(bool announce) {
+  announce_interrupt.store(announce);
   struct sigaction action {};
   action.sa_handler = on_interrupt;
   sigemptyset(&action.sa_mask);
@@ -80,6 +98,14 @@ void release_file_in_progress(int slot) {
   if (slot < 0 || slot >= kSlots) return;
   armed[slot].store(false);
   claimed[slot].store(false);
+}
+
+void request_cancellation() { cancellation_requested.store(true); }
+
+void clear_cancellation() { cancellation_requested.store(false); }
+
+void throw_if_cancelled() {
+  if (cancellation_requested.load()) throw Interrupted("interrupted: the work stopped before writing its outputs");
 }
 
 }  // namespace hpcontact

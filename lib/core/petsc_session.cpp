@@ -66,6 +66,10 @@ void PetscSession::initialize() {
   // take the cores anyway; a user's own setting is kept) makes them a function of the graph. Set
   // here, before MPI and PETSc start threads: setenv is unsafe beside a concurrent getenv.
   setenv("SCOTCH_PTHREAD_NUMBER", "1", 0);
+  // A process that no launcher started is an MPI singleton: PMIx's default store (gds ds21) puts
+  // its data in shared-memory files of several MB, so that under a file size limit (ulimit -f
+  // below about 5 MB) MPI failed to start. Its hash store keeps them in memory.
+  if (!launched_by_mpi_launcher()) setenv("PMIX_MCA_gds", "hash", 0);
   int argc = static_cast<int>(storage_.size());
   char** argv = argv_.data();
   if (SlepcInitialize(&argc, &argv, nullptr, nullptr) != 0) throw std::runtime_error("SlepcInitialize failed");

@@ -76,7 +76,7 @@ void run_on_all_ranks_agreeing(const std::function<void()>& work, MPI_Comm ranks
   } catch (const std::exception& error) {
     if (alone) throw;  // the others wait elsewhere: no reduction, the job is aborted
     code = exit_code_of(error);
-    message = error.what();
+    message = message_of(error);
   } catch (...) {  // leaving one rank alone would hang the others in the reduction below
     if (alone) throw;
     code = 1;

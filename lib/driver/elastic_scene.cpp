@@ -90,6 +90,8 @@ contact::ElasticBody elastic_body_of(const scene::Scene& scene, const operators:
 contact::ElasticContactSetup elastic_setup_of(const scene::Scene& scene, const SceneDiscretization& d,
                                               contact::ElasticContactProblem problem,
                                               const operators::ElasticOperators& operators) {
+  check_scene_has_dirichlet(scene, operators.whole_mesh().has_dirichlet() || operators.vector_space().has_rollers(),
+                            "the elastic contact problems");
   contact::ElasticContactSetup setup;
   setup.operators = &operators;
   setup.boundary_mesh = d.boundary_mesh.get();

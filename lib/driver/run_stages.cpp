@@ -8,6 +8,7 @@
 #include <variant>
 
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "driver/pairing_stability.hpp"
 #include "postprocess/mode_samples.hpp"
 
@@ -47,6 +48,7 @@ void check_finite(const SolvedProblem& solved, const std::string& where) {
 
 void solve_contact_problems(Level& level, const StageContext& context, const std::string& where) {
   for (const auto problem : level.model->problems()) {
+    throw_if_cancelled();
     context.say("solving " + scene::to_string(problem) + where);
     level.solved.push_back(level.model->solve(problem));
     check_finite(level.solved.back(), where);

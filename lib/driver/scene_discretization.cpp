@@ -146,7 +146,7 @@ assembly::CouplingWeight scene_friction_bound(const scene::Scene& scene) {
                               "the friction bound must be >= 0 on Γ_C");
             return value;
           },
-          "data.s = " + scene.friction_bound};
+          fmt::format("{}: key 'data.s' = \"{}\"", scene.where("data.s"), scene.friction_bound)};
 }
 
 }  // namespace
@@ -195,12 +195,27 @@ contact::ContactSetup contact_setup_of(const scene::Scene& scene, const SceneDis
   if (setup.dirichlet && !primal.whole_mesh().has_dirichlet())
     throw_bad_input(scene.where("boundary.u_D"), "boundary.u_D", scene.dirichlet_value,
                     "absent: the scene has no Γ_D (boundary.dirichlet) for the data to act on");
+  check_scene_has_dirichlet(scene, primal.whole_mesh().has_dirichlet(), "the contact problems (9), (13), (15)");
   if (problem == contact::ContactProblem::signorini)
     setup.obstacle = scene_gap(scene, primal.contact());
   else
     setup.bound = scene_friction_bound(scene);
   setup.primal = &primal;
   return setup;
+}
+
+void check_scene_has_dirichlet(const scene::Scene& scene, bool held, const std::string& needed_by) {
+  if (held) return;
+  const bool groups = !scene.dirichlet_groups.empty();
+  const std::string key = groups ? "boundary.dirichlet_groups" : "boundary.dirichlet";
+  const std::string value = groups ? fmt::format("[{}]", fmt::join(scene.dirichlet_groups, ", "))
+                            : scene.dirichlet_predicate.empty() ? "(missing)"
+                                                                : "\"" + scene.dirichlet_predicate + "\"";
+  throw_bad_input(
+      scene.where(key), key, value,
+      fmt::format("no boundary edge is in Γ_D{}, but {} need the body held there: u + c (a rigid "
+                  "motion, for a body) has the energy of u, so the stiffness is singular",
+                  scene.is_elastic() ? " (nor on a roller: boundary.fixed_x, boundary.fixed_y)" : "", needed_by));
 }
 
 std::function<double(double)> multiplier_error_weight(const scene::Scene& scene, const SceneDiscretization& d,

@@ -74,6 +74,9 @@ bool reads_whole_mesh_after_operators(const scene::Scene& scene);
 /// naming where the key came from; empty for empty text.
 std::function<double(const mesh::Point&)> scene_function(const scene::Scene& scene, const std::string& key,
                                                          const std::string& text);
+/// @throws InputError naming the scene's Γ_D key (boundary.dirichlet, or boundary.dirichlet_groups
+/// if given) and its file unless `held` (some edge holds the body): `needed_by` needs it held.
+void check_scene_has_dirichlet(const scene::Scene& scene, bool held, const std::string& needed_by);
 /// The obstacle's gap on Γ_C: data.g, or the rigid obstacle of [obstacle] along `contact`'s
 /// outward normal (`contact` must outlive the function).
 std::function<double(const mesh::Point&)> scene_gap(const scene::Scene& scene, const mesh::ContactBoundary& contact);

@@ -1,6 +1,7 @@
 // The run pipeline: a scene's effects in stages (run_stages.hpp), its result, its files.
 #include "driver/scene_run.hpp"
 
+#include "core/interrupt.hpp"
 #include "core/petsc_session.hpp"
 #include "core/timer.hpp"
 #include "driver/free_boundary_fit.hpp"
@@ -96,6 +97,7 @@ RunResult run_scene(const scene::Scene& given_scene, const SceneRunOptions& opti
   // 1. Meshes and degrees. 2. The model's operators, built on first use and shared by the effects.
   const auto base = discretize(scene, context);
   build_operators(*base, &log, context, reads_whole_mesh_after_operators(scene));
+  throw_if_cancelled();  // (a cancellation point between stages: core/interrupt.hpp)
   // 2b. Whether the pairing is stable, predicted before anything is solved: a refused run stops
   //     here, a warned one is told before its time is spent.
   if (!scene.contact_effects().empty() || !scene.elastic_effects().empty() || scene.has_effect(scene::Effect::infsup)) {
@@ -104,8 +106,10 @@ RunResult run_scene(const scene::Scene& given_scene, const SceneRunOptions& opti
   }
   // 3. The contact problems.
   solve_contact_problems(*base, context, "");
+  throw_if_cancelled();
   // 4. The inf-sup constant of the pairing: whether λ is unique.
   if (scene.has_effect(scene::Effect::infsup)) result.infsup = analyse_infsup(*base, context, files.mode);
+  throw_if_cancelled();
   // 5. Convergence under uniform refinement of every contact problem.
   if (scene.has_effect(scene::Effect::convergence)) result.convergence = refine_and_repeat(*base, context, log, files);
   // 6. The result, then every file at once (the factorizations freed first: the solutions'

@@ -1,6 +1,8 @@
 // assemble_infsup_operators.
 #include "infsup/infsup_operators.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -201,7 +203,9 @@ InfSupOperators assemble_infsup_operators(const InfSupSetup& setup) {
   out.basis = friction ? pencil_basis(multipliers, setup.family, 1,
                                       segments_meeting_support(contact, multipliers, setup.friction_bound.function()))
                        : all;
-  if (out.basis.cols() == 0) throw InputError("the friction bound s vanishes on all of Γ_C: no multiplier is left");
+  if (out.basis.cols() == 0)
+    throw InputError(fmt::format("{}: the friction bound s vanishes on all of Γ_C: no multiplier is left",
+                                 setup.friction_bound.key().empty() ? "data.s" : setup.friction_bound.key()));
   out.s_g = restrict(s_g, out.basis);
   out.log = primal.log();
   out.n_primal_dofs = space.n_dofs();

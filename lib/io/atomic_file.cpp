@@ -17,14 +17,14 @@ void ensure_writable_directory(const std::filesystem::path& directory) {
   std::error_code error;
   std::filesystem::create_directories(directory, error);
   if (error || !std::filesystem::is_directory(directory))
-    throw InputError("output folder '" + directory.string() +
+    throw InputError("output folder (--out) '" + directory.string() +
                      "' cannot be created: " + (error ? error.message() : "not a directory"));
   if (access(directory.c_str(), W_OK) != 0)
-    throw InputError("output folder '" + directory.string() + "' is not writable");
+    throw InputError("output folder (--out) '" + directory.string() + "' is not writable");
 }
 
 std::filesystem::path normalized_folder(const std::filesystem::path& directory) {
-  if (directory.empty()) throw InputError("output folder '': an empty path; name a folder");
+  if (directory.empty()) throw InputError("output folder (--out) '': an empty path; name a folder");
   std::filesystem::path path = std::filesystem::absolute(directory).lexically_normal();
   // "DIR/" and "DIR/." name DIR: its siblings (staging folders) must not land inside it.
   if (!path.has_filename() && path.has_parent_path() && path != path.root_path()) path = path.parent_path();
@@ -36,14 +36,15 @@ void check_folder_can_be_made_in(const std::filesystem::path& path, const std::f
   while (!std::filesystem::exists(existing) && existing.has_parent_path() && existing != existing.parent_path())
     existing = existing.parent_path();
   if (!std::filesystem::is_directory(existing))
-    throw InputError("output folder '" + given.string() + "' cannot be created: '" + existing.string() +
+    throw InputError("output folder (--out) '" + given.string() + "' cannot be created: '" + existing.string() +
                      "' is not a folder");
   // A trial folder made and removed says what access() cannot (read-only mounts, /proc, quotas).
   std::string trial = (existing / ".hpcontact-trial-XXXXXX").string();
   errno = 0;
   if (!mkdtemp(trial.data()))
     throw InputError(describe_io_failure(
-        "output folder '" + given.string() + "' cannot be written: no folder can be made in", existing.string()));
+        "output folder (--out) '" + given.string() + "' cannot be written: no folder can be made in",
+        existing.string()));
   rmdir(trial.c_str());
 }
 
@@ -51,7 +52,7 @@ void check_output_directory(const std::filesystem::path& directory) {
   // The files go into the folder itself: it, or else its nearest existing ancestor, must take them.
   const std::filesystem::path path = normalized_folder(directory);
   if (std::filesystem::exists(path) && !std::filesystem::is_directory(path))
-    throw InputError("output folder '" + directory.string() + "' exists and is not a folder");
+    throw InputError("output folder (--out) '" + directory.string() + "' exists and is not a folder");
   check_folder_can_be_made_in(path, directory);
 }
 
@@ -87,12 +88,13 @@ AtomicFile::~AtomicFile() {
 }
 
 void AtomicFile::commit() {
+  throw_if_cancelled();  // an interrupted run writes nothing
   // errno still holds the reason of a write that failed earlier (buffered writes of the caller).
   stream_.flush();
   const bool good = static_cast<bool>(stream_);
-  const std::string reason = describe_io_failure("writing output file", path_.string());
+  const std::string reason = describe_io_failure("cannot write output file", path_.string());
   stream_.close();
-  if (!good) throw IoError(reason + " failed");
+  if (!good) throw IoError(reason);
   sync_to_disk(temporary_);
   std::error_code error;
   std::filesystem::rename(temporary_, path_, error);

@@ -21,12 +21,12 @@ constexpr const char* kMarker = ".hpcontact-output";
 void check_replaceable(const std::filesystem::path& out) {
   if (!std::filesystem::exists(out)) return;
   if (!std::filesystem::is_directory(out))
-    throw InputError("output folder '" + out.string() + "' exists and is not a folder");
+    throw InputError("output folder (--out) '" + out.string() + "' exists and is not a folder");
   // (summary.json: a folder of a version before the marker)
   if (!std::filesystem::is_empty(out) && !std::filesystem::exists(out / kMarker) &&
       !std::filesystem::exists(out / "summary.json"))
-    throw InputError("output folder '" + out.string() + "' holds files that hpcontact did not write (no " + kMarker +
-                     "): choose a new or empty folder; a folder of an earlier run is replaced whole");
+    throw InputError("output folder (--out) '" + out.string() + "' holds files that hpcontact did not write (no " +
+                     kMarker + "): choose a new or empty folder; a folder of an earlier run is replaced whole");
 }
 // Staging folders "<out>.tmp-<pid>" of processes that no longer run (killed before they could
 // clean up) are removed: no run of theirs can commit them any more. Those of live processes,
@@ -77,6 +77,7 @@ OutputFolder::~OutputFolder() {
 }
 
 void OutputFolder::commit() {
+  throw_if_cancelled();  // an interrupted run writes nothing
   sync_to_disk(staging_);
   errno = 0;
   if (std::filesystem::exists(out_)) {

@@ -1,6 +1,7 @@
 // TomlTable on top of toml++.
 #include "io/toml_reader.hpp"
 
+#include <fmt/format.h>
 #include <toml++/toml.h>
 
 #include <algorithm>
@@ -96,8 +97,8 @@ double TomlTable::number(const std::string& key, std::optional<double> fallback)
 double TomlTable::number_in(const std::string& key, double min, double max, std::optional<double> fallback) const {
   const double value = number(key, fallback);
   if (!(value >= min && value <= max))
-    fail(key, format_full_precision(value),
-         "must be in [" + format_full_precision(min) + ", " + format_full_precision(max) + "]");
+    // The shortest text that reads back as the number ("0.1", not "0.10000000000000001").
+    fail(key, fmt::format("{}", value), fmt::format("must be in [{}, {}]", min, max));
   return value;
 }
 

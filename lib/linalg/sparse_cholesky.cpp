@@ -9,6 +9,7 @@
 #include <numeric>
 
 #include "core/error.hpp"
+#include "core/memory_limit.hpp"
 #include "linalg/schur_complement.hpp"
 
 namespace hpcontact::linalg {
@@ -22,7 +23,10 @@ struct SparseCholesky::Impl {
   std::vector<int> trailing_position;
   int n_trailing = 0;
 
-  Impl() { cholmod_start(&common); }
+  Impl() {
+    cholmod_start(&common);
+    common.print = 0;  // failures are reported by status, in the exception's message
+  }
   ~Impl() {
     if (factor) cholmod_free_factor(&factor, &common);
     cholmod_finish(&common);
@@ -32,6 +36,14 @@ struct SparseCholesky::Impl {
 };
 
 namespace {
+
+// A failed CHOLMOD step: out of memory (CHOLMOD_OUT_OF_MEMORY, or a size its integers cannot hold)
+// names the memory limit; any other status is a numerical failure.
+[[noreturn]] void throw_cholmod_failure(const char* step, int status, long long size) {
+  if (status == CHOLMOD_OUT_OF_MEMORY || status == CHOLMOD_TOO_LARGE)
+    throw OutOfMemory(out_of_memory_message(fmt::format("CHOLMOD's {} of a {}x{} matrix", step, size, size)));
+  throw NumericalError(fmt::format("CHOLMOD {} failed on a {}x{} matrix, status {}", step, size, size, status));
+}
 
 // A CHOLMOD view (no copy) of a compressed Eigen matrix, as symmetric with its lower triangle
 // stored (CHOLMOD ignores the upper one).
@@ -106,8 +118,7 @@ std::vector<int> interior_first_ordering(const Eigen::SparseMatrix<double>& a, c
   block.sorted = 1;
   block.packed = 1;
   std::vector<int> order(n_interior);
-  if (!cholmod_amd(&block, nullptr, 0, order.data(), &c))
-    throw NumericalError(fmt::format("CHOLMOD's AMD ordering failed, status {}", c.status));
+  if (!cholmod_amd(&block, nullptr, 0, order.data(), &c)) throw_cholmod_failure("AMD ordering", c.status, n_interior);
   std::vector<int> permutation;
   permutation.reserve(n);
   for (int k : order) permutation.push_back(interior[k]);
@@ -153,14 +164,14 @@ SparseCholesky::SparseCholesky(const Eigen::SparseMatrix<double>& matrix, const 
     c.method[0].ordering = CHOLMOD_AMD;
   }
   impl_->factor = cholmod_analyze_p(&a, permutation.empty() ? nullptr : permutation.data(), nullptr, 0, &c);
-  if (!impl_->factor) throw NumericalError(fmt::format("CHOLMOD analysis failed, status {}", c.status));
+  if (!impl_->factor) throw_cholmod_failure("analysis", c.status, size_);
   cholmod_factorize(&a, impl_->factor, &c);
   if (c.status == CHOLMOD_NOT_POSDEF || impl_->factor->minor < impl_->factor->n)
     throw NumericalError(
         fmt::format("sparse Cholesky (CHOLMOD) failed on a {0}x{0} matrix: not positive definite at column {1} "
                     "(is Γ_D empty or a cell degenerate?)",
                     size_, impl_->factor->minor));
-  if (c.status < CHOLMOD_OK) throw NumericalError(fmt::format("CHOLMOD factorization failed, status {}", c.status));
+  if (c.status < CHOLMOD_OK) throw_cholmod_failure("factorization", c.status, size_);
 
   if (permutation.empty()) return;
   // The trailing block, from the supernodes whose columns lie in it. Supernode s holds columns
@@ -219,7 +230,7 @@ Eigen::MatrixXd SparseCholesky::solve(const Eigen::MatrixXd& rhs) const {
   Eigen::MatrixXd copy = rhs;
   cholmod_dense b = view_dense(copy);
   cholmod_dense* x = cholmod_solve(CHOLMOD_A, impl_->factor, &b, &impl_->common);
-  if (!x) throw NumericalError(fmt::format("CHOLMOD solve failed, status {}", impl_->common.status));
+  if (!x) throw_cholmod_failure("solve", impl_->common.status, size_);
   Eigen::MatrixXd out = Eigen::Map<const Eigen::MatrixXd>(static_cast<const double*>(x->x), size_, rhs.cols());
   cholmod_free_dense(&x, &impl_->common);
   return out;

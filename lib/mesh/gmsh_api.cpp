@@ -32,6 +32,7 @@ struct Library {
   decltype(&::gmshModelGetType) entity_type = nullptr;
   decltype(&::gmshModelGetParametrization) parametrization = nullptr;
   decltype(&::gmshModelGetValue) value = nullptr;
+  decltype(&::gmshModelGetBoundingBox) bounding_box = nullptr;
 
   void start() const {
     int ierr = 0;
@@ -80,6 +81,7 @@ Library load() {
   resolve(handle, "gmshModelGetType", l.entity_type);
   resolve(handle, "gmshModelGetParametrization", l.parametrization);
   resolve(handle, "gmshModelGetValue", l.value);
+  resolve(handle, "gmshModelGetBoundingBox", l.bounding_box);
   l.start();
   return l;
 }
@@ -152,8 +154,25 @@ void Session::generate(const std::string& path, std::optional<double> max_size, 
                                     {"Mesh.ElementOrder", 1.0}})
     l.set_number(name, value, &ierr);
   if (max_size) l.set_number("Mesh.MeshSizeMax", *max_size, &ierr);
+  // Gmsh's mesher runs in an OpenMP region: an error it throws there (General.AbortOnError >= 2,
+  // the API's setting) ends the process. With 0 it logs the error and goes on; the log tells. The
+  // setting is restored after: the readers of open() report their errors by it.
+  double abort_on_error = 0.0;
+  l.get_number("General.AbortOnError", &abort_on_error, &ierr);
+  l.set_number("General.AbortOnError", 0.0, &ierr);
+  const std::string error_before = last_error();
   l.generate(2, &ierr);
-  if (ierr != 0) fail(path, "mesh the geometry");
+  const std::string error_after = last_error();
+  l.set_number("General.AbortOnError", abort_on_error, &ierr);
+  if (ierr != 0 || (!error_after.empty() && error_after != error_before)) fail(path, "mesh the geometry");
+}
+
+std::array<double, 4> Session::bounding_box() const {
+  double x0 = 0, y0 = 0, z0 = 0, x1 = 0, y1 = 0, z1 = 0;
+  int ierr = 0;
+  library().bounding_box(-1, -1, &x0, &y0, &z0, &x1, &y1, &z1, &ierr);
+  check(ierr, "getBoundingBox");
+  return {x0, y0, x1, y1};
 }
 
 int Session::dimension() const {

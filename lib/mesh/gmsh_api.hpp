@@ -4,6 +4,7 @@
 // resolved with dlopen/dlsym; outputs come back as std::vector.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <mutex>
 #include <optional>
@@ -45,6 +46,8 @@ class Session {
   /// 1), else kept as triangles (both options 0); elements at most `max_size` (Mesh.MeshSizeMax)
   /// before any split when given. @throws InputError with Gmsh's message.
   void generate(const std::string& path, std::optional<double> max_size, bool quadrilaterals);
+  /// The model's bounding box in the plane: x_min, y_min, x_max, y_max.
+  std::array<double, 4> bounding_box() const;
   int dimension() const;
   /// Elements of dimension `dim` on entity `tag` (-1: all).
   ElementBlocks elements(int dim, int tag = -1) const;

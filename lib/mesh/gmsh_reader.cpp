@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -44,6 +45,20 @@ std::string unsupported_cell(const gmsh_api::Session& gmsh, const std::string& p
       path, type, name);
 }
 
+// A mesh size that would fill the memory is refused before Gmsh meshes (which it would do for
+// minutes, then fail without a way back): the cells are estimated from the bounding box, an
+// upper bound of the area, so that only sizes far too small are refused.
+void check_geo_size(const gmsh_api::Session& gmsh, const GeoMeshing& geo) {
+  const auto [x0, y0, x1, y1] = gmsh.bounding_box();
+  const double size = *geo.mesh_size, cells = (x1 - x0) * (y1 - y0) / (size * size);
+  if (cells > geo.max_cells)
+    throw_bad_input(geo.size_where, geo.size_key, fmt::format("{:g}", size),
+                    fmt::format("about {:.3g} cells on the geometry's {:g} x {:g} bounding box, more than the {:.3g} "
+                                "that fit ({}): a size of at least {:.3g}",
+                                cells, x1 - x0, y1 - y0, geo.max_cells, geo.max_cells_reason,
+                                size * std::sqrt(cells / geo.max_cells)));
+}
+
 // Reads `path` into Gmsh's model; a .geo geometry is meshed there (returns whether it was one).
 bool open_in_gmsh(gmsh_api::Session& gmsh, const std::string& path, const GeoMeshing& geo) {
   errno = 0;
@@ -52,6 +67,7 @@ bool open_in_gmsh(gmsh_api::Session& gmsh, const std::string& path, const GeoMes
   if (geo.mesh_size && !geometry)
     throw InputError(path + ": a mesh size applies to Gmsh geometry files (.geo) only, not to a mesh file");
   gmsh.open(path);
+  if (geometry && geo.mesh_size) check_geo_size(gmsh, geo);
   if (geometry) gmsh.generate(path, geo.mesh_size, geo.cells == GeneratedCells::quadrilaterals);
   if (gmsh.dimension() < 2)
     throw InputError(path + ": holds no 2-D mesh (no $Nodes or $Elements of 2-D cells; is it a mesh file?)");

@@ -3,6 +3,7 @@
 // geometry curved edges.
 #pragma once
 
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -10,10 +11,15 @@
 
 namespace hpcontact::mesh {
 
-/// How a .geo geometry is meshed: Gmsh's maximal element size (its own sizes when empty), cells.
+/// How a .geo geometry is meshed: Gmsh's maximal element size (its own sizes when empty), cells;
+/// and the most cells the run can hold: a mesh_size that would give more (cells estimated as the
+/// geometry's bounding box over mesh_size²) is refused before Gmsh meshes, naming `size_key` of
+/// `size_where`.
 struct GeoMeshing {
   std::optional<double> mesh_size;
   GeneratedCells cells = GeneratedCells::quadrilaterals;
+  double max_cells = std::numeric_limits<double>::infinity();
+  std::string size_where, size_key = "mesh_size", max_cells_reason;
 };
 
 /// Reads the 2-D mesh of triangles and/or quadrilaterals of a Gmsh file (any format Gmsh reads:

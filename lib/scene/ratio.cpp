@@ -1,6 +1,8 @@
 // Parsing h/H.
 #include "scene/ratio.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <stdexcept>
 
@@ -27,6 +29,11 @@ Ratio parse_ratio(const std::string& text, const std::string& where, const std::
   }
   if (!(value > 0.0) || !std::isfinite(value))
     throw_bad_input(where, key, "\"" + text + "\"", "must be a positive number or fraction such as \"2/3\"");
+  if (value > kMaxRatio)
+    throw_bad_input(where, key, "\"" + text + "\"",
+                    fmt::format("at most {}: segments of T_{{C,H}} that many times shorter than the edges of T_h "
+                                "are far past any stable pairing (α falls like H/h) and cost memory like m = n · ratio",
+                                kMaxRatio));
   return {value, text};
 }
 

@@ -11,8 +11,11 @@ struct Ratio {
   std::string text = "1";  ///< as written, e.g. "2/3"
 };
 
-/// @throws InputError naming `where` and `key` unless `text` is a positive finite number or a
-/// fraction of a whole numerator and a number.
+/// The largest h/H accepted.
+constexpr double kMaxRatio = 64.0;
+
+/// @throws InputError naming `where` and `key` unless `text` is a number or a fraction of a whole
+/// numerator and a number, in (0, kMaxRatio].
 Ratio parse_ratio(const std::string& text, const std::string& where, const std::string& key = "ratio");
 
 }  // namespace hpcontact::scene

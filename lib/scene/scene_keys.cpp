@@ -45,7 +45,7 @@ SceneKey any_number_key(const char* section, const char* name, double fallback, 
           [=](const TomlTable& table, Scene& scene) {
             const double value = table.number(name, fallback);
             if (!std::isfinite(value))
-              throw_bad_input(table.origin(name), table.qualified(name), "inf", "a finite number");
+              throw_bad_input(table.origin(name), table.qualified(name), fmt::format("{}", value), "a finite number");
             scene.rectangle.*member = value;
           }};
 }
@@ -290,7 +290,7 @@ void add_boundary_and_contact_mesh_keys(std::vector<SceneKey>& keys) {
          if (scene.m.empty()) throw_bad_input(table.origin("m"), table.qualified("m"), "[]", "at least one value");
        }});
   add({"contact_mesh", "ratio", "number, fraction or list", "",
-       "positive, e.g. 1, 0.5, \"2/3\"; one value, or one per zone of Γ_C",
+       "(0, 64], e.g. 1, 0.5, \"2/3\"; one value, or one per zone of Γ_C",
        "h/H in each zone of Γ_C (a list: zone by zone): on a uniform T_h there m = n · ratio; on a graded one 1/k "
        "merges k edges, k splits each edge",
        size_group, [](const TomlTable& table, Scene& scene) {

@@ -14,6 +14,7 @@
 
 #include "core/error.hpp"
 #include "core/expression.hpp"
+#include "core/memory_limit.hpp"
 #include "mesh/cell_map.hpp"
 #include "mesh/contact_boundary.hpp"
 #include "mesh/gmsh_reader.hpp"
@@ -55,9 +56,22 @@ mesh::Mesh grade_towards_points(mesh::Mesh mesh, const Scene& scene) {  // by va
   return mesh::grade_towards_vertices(mesh, centres, scene.domain_grading, scene.grading_layers, origin);
 }
 
+/// How the scene's .geo is meshed, with the most cells that fit in memory at its degree (the
+/// estimate of the scene size check: 1.2 KB per unknown, p² unknowns per cell).
+mesh::GeoMeshing geo_meshing(const Scene& scene) {
+  const double p = scene.p.rule.empty() ? scene.p.value : 1.0;  // a rule: at least degree 1 everywhere
+  const MemoryLimit memory = memory_limit();
+  return {scene.mesh_size,
+          scene.cells,
+          memory.bytes / (1.2e3 * p * p),
+          scene.where("domain.mesh_size"),
+          "domain.mesh_size",
+          fmt::format("{}, 1.2 KB per unknown at p = {}", memory.describe(), p)};
+}
+
 /// The scene's mesh file with its curves (or without, for geometry = "polygonal").
 mesh::Mesh read_mesh_file(const Scene& scene) {
-  mesh::Mesh mesh = mesh::read_gmsh_mesh(scene.mesh_file, {scene.mesh_size, scene.cells});
+  mesh::Mesh mesh = mesh::read_gmsh_mesh(scene.mesh_file, geo_meshing(scene));
   if (scene.geometry == Scene::Geometry::polygonal) mesh.straighten();
   // Grading and perturbation move or add vertices off the curves.
   if (mesh.has_curved_cells())

@@ -5,13 +5,13 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <toml++/toml.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <memory>
 #include <tuple>
 
 #include "core/error.hpp"
+#include "core/memory_limit.hpp"
 #include "io/toml_reader.hpp"
 #include "scene/obstacle_keys.hpp"
 #include "scene/scene_keys.hpp"
@@ -125,17 +125,17 @@ void check_scene_size(const Scene& scene) {
                        std::pow(4.0, scene.refinements);
   const double p = scene.p.rule.empty() ? scene.p.value : 1.0;  // a rule: at least degree 1 everywhere
   const double dofs = cells * p * p, bytes = 1.2e3 * dofs;
-  const double memory = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
+  const MemoryLimit memory = memory_limit();
   const std::string size =
       fmt::format("{:.3g} cells ({} x {}{}) at p = {}: about {:.3g} unknowns", cells, scene.n_x, scene.n_y,
                   scene.refinements ? fmt::format(", {} refinements", scene.refinements) : "",
                   scene.p.rule.empty() ? std::to_string(scene.p.value) : "its rule", dofs);
   if (dofs > 2147483647.0)
     throw_bad_input(scene.file, "domain.n_x, domain.n_y", size, "at most 2^31 - 1 unknowns (32-bit indices)");
-  if (bytes > memory)
-    throw_bad_input(scene.file, "domain.n_x, domain.n_y", size,
-                    fmt::format("needs about {:.3g} GB (1.2 KB per unknown), more than this machine's {:.3g} GB",
-                                bytes / 1e9, memory / 1e9));
+  if (bytes > memory.bytes)
+    throw_bad_input(
+        scene.file, "domain.n_x, domain.n_y", size,
+        fmt::format("needs about {:.3g} GB (1.2 KB per unknown), more than {}", bytes / 1e9, memory.describe()));
 }
 
 }  // namespace

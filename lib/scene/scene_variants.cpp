@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include <algorithm>
 #include <sstream>
 
 #include "core/error.hpp"
@@ -50,6 +51,17 @@ std::string value_text(const toml::node& node) {
   return out.str();
 }
 
+// `table`'s keys as "prefix.key = value" lines, descending into tables.
+void flatten(const toml::table& table, const std::string& prefix, std::vector<std::string>& lines) {
+  for (const auto& [key, node] : table) {
+    const std::string name = prefix + std::string(key.str());
+    if (const auto* inner = node.as_table())
+      flatten(*inner, name + ".", lines);
+    else
+      lines.push_back(name + " = " + value_text(node));
+  }
+}
+
 }  // namespace
 
 std::vector<SceneVariant> scene_variants(const std::string& base_path, const io::TomlTable& set,
@@ -85,7 +97,10 @@ std::vector<SceneVariant> scene_variants(const std::string& base_path, const io:
     std::ostringstream text;
     text << scene;
     try {
-      variants.push_back({parse_scene(text.str(), base_path), label});
+      std::vector<std::string> keys;
+      flatten(scene, "", keys);
+      std::sort(keys.begin(), keys.end());
+      variants.push_back({parse_scene(text.str(), base_path), label, std::move(keys)});
     } catch (const InputError& error) {
       throw InputError(fmt::format("{}: variant {} ({}) of the scene {}: {}", where, i + 1,
                                    label.empty() ? "no varied keys" : label, base_path, error.what()));

@@ -16,6 +16,9 @@ namespace hpcontact::scene {
 struct SceneVariant {
   Scene scene;
   std::string label;  ///< the varied values, e.g. "discretization.p=3 discretization.pC=2"
+  /// Every key of the variant's scene as "section.key = value", sorted: what a stored result of it
+  /// depends on (a sweep's identity).
+  std::vector<std::string> keys;
 };
 
 /// `set` and `vary` are tables of the study file (empty tables: the base scene once); `where`

@@ -14,6 +14,7 @@
 #include "io/atomic_file.hpp"
 #include "io/toml_reader.hpp"
 #include "studies/sweep_evaluation.hpp"
+#include "studies/sweep_folder.hpp"
 #include "studies/sweep_level_facts.hpp"
 #include "studies/sweep_plan.hpp"
 #include "studies/sweep_rows.hpp"
@@ -84,11 +85,13 @@ std::vector<infsup::InfSupRecord> merge_sweep_shards(const StabilitySweep& sweep
                                                      const std::vector<std::filesystem::path>& shards,
                                                      const std::filesystem::path& alpha_csv) {
   const auto points = list_sweep_points(sweep);
+  const auto identity = sweep_identity(sweep);
   AlphaRows merged(points);
   for (const auto& folder : shards) {
     const auto file = folder / "alpha.csv";
     if (!std::filesystem::exists(file) && existing_shards(file).empty())
       throw_bad_input("command line", "--merge", folder.string(), "a folder with an alpha.csv of this sweep");
+    claim_sweep_folder(folder, identity, true);
     const auto conflicts = merged.merge_slice(file);
     if (!conflicts.empty())
       fmt::print(stderr,
@@ -104,7 +107,12 @@ std::vector<infsup::InfSupRecord> merge_sweep_shards(const StabilitySweep& sweep
                     fmt::format("{} of the {} points are in none of them (e.g. {}): run or resume the slices (--shard "
                                 "i/N) that own them, then merge again",
                                 missing.size(), points.size(), missing.front()));
+  // Rows without an identity are refused at a resume, so a merge stopped half-way leaves no rows
+  // that pass for another study's.
+  const auto folder = alpha_csv.parent_path();
+  std::filesystem::remove(identity_path(folder));
   io::write_file_atomically(alpha_csv, merged.content());
+  write_sweep_identity(folder, identity);
   return merged.records();
 }
 

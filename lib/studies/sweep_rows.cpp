@@ -21,9 +21,18 @@
 namespace hpcontact::studies {
 namespace {
 
+// Whether two rows of one point agree: the seconds differ between runs, every other number is the
+// same.
+bool same_numbers(infsup::InfSupRecord a, const infsup::InfSupRecord& b) {
+  a.seconds = b.seconds;
+  return a == b;
+}
+
+// Adds the whole rows of `file` whose point is one of `keys` to `rows`; a point stored twice with
+// other numbers goes to `conflicting`, the other rows left out to `dropped` ("file:line").
 void read_rows(const std::filesystem::path& file, bool with_header, const std::set<std::string>& keys,
-               StoredRowsUse use, std::map<std::string, infsup::InfSupRecord>& rows,
-               std::vector<std::string>& dropped) {
+               StoredRowsUse use, std::map<std::string, infsup::InfSupRecord>& rows, std::vector<std::string>& dropped,
+               std::set<std::string>& conflicting) {
   std::ifstream in(file);
   if (!in) return;
   std::string line;
@@ -48,7 +57,8 @@ void read_rows(const std::filesystem::path& file, bool with_header, const std::s
           fmt::format("{}:{}{}", file.filename().string(), number, key.empty() ? "" : " (not a point of this study)"));
       continue;
     }
-    rows[key] = *record;
+    const auto [held, inserted] = rows.emplace(key, *record);
+    if (!inserted && !same_numbers(held->second, *record)) conflicting.insert(key);
   }
 }
 
@@ -119,8 +129,15 @@ std::map<std::string, infsup::InfSupRecord> read_stored_rows(const std::filesyst
                                                              StoredRowsUse use) {
   std::map<std::string, infsup::InfSupRecord> rows;
   std::vector<std::string> dropped;
-  read_rows(alpha_csv, true, keys, use, rows, dropped);
-  for (const auto& shard : existing_shards(alpha_csv)) read_rows(shard, false, keys, use, rows, dropped);
+  std::set<std::string> conflicting;
+  read_rows(alpha_csv, true, keys, use, rows, dropped, conflicting);
+  for (const auto& shard : existing_shards(alpha_csv)) read_rows(shard, false, keys, use, rows, dropped, conflicting);
+  // Which of two rows of a point is right cannot be told: neither is kept.
+  for (const auto& key : conflicting) rows.erase(key);
+  if (warn && !conflicting.empty())
+    fmt::print(stderr, "hpcontact: warning: {} point{} stored twice with other numbers in {} (e.g. {}): {}\n",
+               conflicting.size(), conflicting.size() > 1 ? "s" : "", alpha_csv.string(), *conflicting.begin(),
+               use == StoredRowsUse::resume ? "computed again" : "left out of this folder's rows");
   if (warn && !dropped.empty()) {
     std::string list;
     for (std::size_t k = 0; k < dropped.size() && k < 10; ++k) list += (k ? ", " : "") + dropped[k];
@@ -129,7 +146,10 @@ std::map<std::string, infsup::InfSupRecord> read_stored_rows(const std::filesyst
                "hpcontact: warning: {} stored row{} of {} {} (torn, incomplete, unparsable or not of this "
                "sweep): {}\n",
                dropped.size(), dropped.size() > 1 ? "s" : "", alpha_csv.string(),
-               use == StoredRowsUse::resume ? "will be computed again" : "are left out of the merge", list);
+               use == StoredRowsUse::resume
+                   ? "will be computed again"
+                   : (dropped.size() > 1 ? "are left out of the merge" : "is left out of the merge"),
+               list);
   }
   return rows;
 }
@@ -170,7 +190,7 @@ std::vector<std::pair<int, infsup::InfSupRecord>> gather_rows_on_rank_zero(
 FolderLock::FolderLock(const std::filesystem::path& folder) {
   const auto path = folder / ".sweep.lock";
   errno = 0;
-  fd_ = open(path.c_str(), O_RDWR | O_CREAT, 0644);
+  fd_ = open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);  // (a child, e.g. MPI's, must not hold it)
   if (fd_ < 0) throw IoError(describe_io_failure("cannot create the lock file", path.string()));
   if (flock(fd_, LOCK_EX | LOCK_NB) != 0) {
     char holder[64] = {};
@@ -207,10 +227,7 @@ std::vector<std::string> AlphaRows::merge_slice(const std::filesystem::path& alp
   std::vector<std::string> conflicts;
   for (auto& [key, record] : read_stored_rows(alpha_csv, keys_, true, StoredRowsUse::merge)) {
     const auto [held, inserted] = rows_.emplace(key, record);
-    // The seconds differ between runs; every other number of a point is the same.
-    infsup::InfSupRecord timed_alike = held->second;
-    timed_alike.seconds = record.seconds;
-    if (!inserted && timed_alike != record) conflicts.push_back(key);
+    if (!inserted && !same_numbers(held->second, record)) conflicts.push_back(key);
   }
   return conflicts;
 }

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "core/petsc_session.hpp"
 #include "core/rank_agreement.hpp"
 #include "io/atomic_file.hpp"
@@ -139,6 +140,7 @@ void SweepSchedule::run_group(const SweepGroup& group, const SweepWork& work, Al
   for (std::size_t k = group.first; k < group.last; ++k) {
     const SweepPoint& point = points_[k];
     if (!group.holds(point) || rows.has(point.key())) continue;
+    throw_if_cancelled();
     if (progress && leader())
       progress(stored_ + static_cast<int>(points_computed_.value()) + 1, total_,
                static_cast<double>(work_computed_.value()) / kWorkUnits, progress_label(sweep_, point));

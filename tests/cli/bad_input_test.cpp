@@ -86,11 +86,23 @@ TEST(BadInput, CellCountOutOfRange) {
   expect_bad_input("n_zero", replaced("n_x = 4", "n_x = 0"), {"scene.toml", "domain.n_x", "0"});
 }
 
-TEST(BadInput, RatioNotPositive) {
+TEST(BadInput, RatioOutOfRange) {
   expect_bad_input("ratio_zero", replaced("ratio = \"1/2\"", "ratio = \"0\""),
                    {"scene.toml", "contact_mesh.ratio", "0"});
   expect_bad_input("ratio_negative", replaced("ratio = \"1/2\"", "ratio = \"-1/2\""),
                    {"scene.toml", "contact_mesh.ratio", "-1/2"});
+  // (It once ran for seconds and 1.8 GB before an allocation failed.)
+  expect_bad_input("ratio_huge", replaced("ratio = \"1/2\"", "ratio = 1000000"),
+                   {"scene.toml", "contact_mesh.ratio", "1000000", "at most 64"});
+}
+
+// A contact problem on a body held nowhere, and a friction bound that vanishes on all of Γ_C,
+// name the scene file and the key.
+TEST(BadInput, BodyHeldNowhereOrFrictionBoundZero) {
+  expect_bad_input("no_dirichlet", replaced("dirichlet = \"abs(y - 1) < 1e-9\"", "dirichlet = \"y > 5\""),
+                   {"scene.toml", "boundary.dirichlet", "y > 5", "no boundary edge is in Γ_D"});
+  expect_bad_input("s_zero", replaced("s = \"(1 - x)^2\"", "s = \"0\"\n[infsup]\nproblem = \"friction\""),
+                   {"scene.toml", "data.s", "vanishes on all of Γ_C"}, "--effects infsup");
 }
 
 TEST(BadInput, FewerConstraintPointsThanPcPlusOne) {

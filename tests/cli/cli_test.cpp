@@ -381,6 +381,7 @@ TEST(Cli, ShardedSweepMergesIntoTheSerialCsv) {
   const auto first_row_end = conflicting.find('\n', conflicting.find('\n') + 1);
   conflicting.insert(conflicting.rfind(',', first_row_end), "9");  // nmult of the first row, one digit more
   std::ofstream(dir / "conflict" / "alpha.csv") << conflicting;
+  std::filesystem::copy_file(dir / "shard0" / "sweep_identity.txt", dir / "conflict" / "sweep_identity.txt");
   const auto remerged = run(" sweep " + study + " --merge" + merge_dirs + " " + (dir / "conflict").string() +
                             " --out " + (dir / "remerged").string());
   ASSERT_EQ(remerged.exit_code, 0) << remerged.output;

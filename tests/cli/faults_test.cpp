@@ -23,7 +23,7 @@ using hpcontact::testing::run_command;
 using hpcontact::testing::scratch;
 using hpcontact::testing::without_seconds;
 
-const std::string kMpi = "env OPENBLAS_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ";
+const std::string& kMpi = hpcontact::testing::kMpiEnvironment;
 
 // A 16 KiB tmpfs: a disk that fills up. Unmounted by the destructor.
 struct SmallDisk {
@@ -136,7 +136,8 @@ TEST(Faults, FailuresOfEveryRankAreReportedOnceUnderMpirun) {
   }
 }
 
-// SIGINT during a run: exit 130 and no temporary file (finished files are whole).
+// SIGINT during a run: exit 130, one line saying so, and no temporary file (finished files are
+// whole).
 TEST(Faults, InterruptExitsWith130AndLeavesNoTemporaryFile) {
   const auto dir = scratch("faults_interrupt");
   const auto pid_file = dir / "pid";
@@ -145,6 +146,8 @@ TEST(Faults, InterruptExitsWith130AndLeavesNoTemporaryFile) {
                                   (dir / "out").string() + " & echo $! > " + pid_file.string() +
                                   "; sleep 2; kill -INT $!; wait $!; echo exit=$?'");
   EXPECT_NE(result.output.find("exit=130"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("hpcontact: interrupted (SIGINT); files in progress removed"), std::string::npos)
+      << result.output;
   EXPECT_FALSE(has_temporary_files(dir / "out"));
 }
 
@@ -159,6 +162,7 @@ TEST(Faults, ResumeRecomputesTornAndIncompleteRows) {
   for (std::string line; std::getline(in, line);) lines.push_back(line);
   ASSERT_GT(lines.size(), 10u);
   std::filesystem::create_directories(dir / "damaged");
+  std::filesystem::copy_file(dir / "fresh" / "sweep_identity.txt", dir / "damaged" / "sweep_identity.txt");
   {
     std::ofstream out(dir / "damaged" / "alpha.csv");
     for (std::size_t k = 0; k + 1 < lines.size(); ++k) {
@@ -255,7 +259,8 @@ TEST(Faults, MessagesNameTheInputAndWhy) {
            Case{"tiny.toml", "[domain]\n", "[domain]\nx_min = 0\nx_max = 1e-300\n", "the width 1e-300 is below"},
            Case{"equal.toml", "[domain]\n", "[domain]\nx_min = 1\nx_max = 1\n", "= 1, 1: must satisfy x_min < x_max"},
            Case{"huge.toml", "n_x = 4\nn_y = 4", "n_x = 100000\nn_y = 100000", "at most 2^31 - 1 unknowns"},
-           Case{"free.toml", "dirichlet = \"abs(y - 1) < 1e-9\"", "dirichlet = \"x > 5\"", "has no Dirichlet part"},
+           Case{"free.toml", "dirichlet = \"abs(y - 1) < 1e-9\"", "dirichlet = \"x > 5\"",
+                "no boundary edge is in Γ_D"},
            Case{"empty.toml", "contact = \"abs(y + 1) < 1e-9\"", "contact = \"abs(y + 1) < 1e-9 && x > 5\"",
                 "empty.toml: key 'boundary.contact' = abs(y + 1) < 1e-9 && x > 5: it must select at least one"},
            Case{"expression.toml", "g = \"-x^2\"", "g = \"" + huge + "+\"", "(200001 characters)"},

@@ -21,7 +21,7 @@ using hpcontact::testing::read_csv;
 using hpcontact::testing::run_command;
 using hpcontact::testing::scratch;
 
-const std::string kMpi = "env OPENBLAS_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ";
+const std::string& kMpi = hpcontact::testing::kMpiEnvironment;
 
 // A sweep of the §7 square: 2 levels, p = 1..3, both norms, ratios and pairings (BDDC's
 // iterative solves of the extension norm's references take most of its time: 18 s on 4 ranks with

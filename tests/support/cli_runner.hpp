@@ -36,6 +36,11 @@ inline Run run_command(const std::string& command_line) {
   return {WEXITSTATUS(status), output};
 }
 
+/// The environment of an mpirun command line in the tests: one BLAS thread per rank (the ranks
+/// take the cores), and mpirun allowed to run as root (containers).
+inline const std::string kMpiEnvironment =
+    "env OPENBLAS_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ";
+
 /// Runs hpcontact with `arguments`.
 inline Run run(const std::string& arguments) { return run_command(std::string(HPCONTACT_CLI) + " " + arguments); }
 

@@ -12,16 +12,19 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/memory_limit.hpp"
 #include "core/petsc_session.hpp"
 #include "driver/scene_run.hpp"
 #include "driver/summary_json.hpp"
 #include "io/atomic_file.hpp"
 #include "io/output_folder.hpp"
+#include "library_thread.hpp"
 #include "run_result_bindings.hpp"
 #include "scene/scene_keys.hpp"
 #include "scene/scene_reader.hpp"
 #include "studies/pairing_advice.hpp"
 #include "studies/stability_sweep.hpp"
+#include "studies/sweep_folder.hpp"
 #include "studies/sweep_verdicts.hpp"
 #include "vtu_grid_arrays.hpp"
 
@@ -37,22 +40,69 @@ std::unique_ptr<PetscSession>& session() {
   return instance;
 }
 
-// A Python value as a scene override (numbers, booleans, text, lists of one kind).
+// What a Python scalar is to a scene: numpy's scalars count as Python's (numpy.int64 is an integer,
+// numpy.float32 a number, numpy.bool_ a boolean).
+enum class ScalarKind { boolean, integer, number, text, other };
+
+ScalarKind kind_of(const py::handle& value) {
+  static const py::object real = py::module_::import("numbers").attr("Real");
+  const py::handle type = py::type::handle_of(value);
+  if (py::isinstance<py::bool_>(value) || (py::str(type.attr("__module__")).cast<std::string>() == "numpy" &&
+                                           py::str(type.attr("__name__")).cast<std::string>() == "bool_"))
+    return ScalarKind::boolean;
+  if (py::isinstance<py::str>(value)) return ScalarKind::text;
+  if (py::hasattr(value, "__len__")) return ScalarKind::other;  // (an array of one integer has __index__)
+  if (py::hasattr(value, "__index__")) return ScalarKind::integer;
+  if (PyObject_IsInstance(value.ptr(), real.ptr()) == 1) return ScalarKind::number;
+  return ScalarKind::other;
+}
+
+// A Python integer of any size as a 64-bit one. @throws InputError naming the key if it does not fit.
+long long integer_of(const std::string& key, const py::handle& value) {
+  PyObject* index = PyNumber_Index(value.ptr());
+  if (!index) throw py::error_already_set();
+  const py::int_ integer = py::reinterpret_steal<py::int_>(index);
+  int overflow = 0;
+  const long long result = PyLong_AsLongLongAndOverflow(integer.ptr(), &overflow);
+  if (overflow != 0)
+    throw InputError("override '" + key + "' = " + py::str(py::handle(integer)).cast<std::string>() +
+                     ": an integer between -2^63 and 2^63 - 1");
+  return result;
+}
+
+// A Python value as a scene override (numbers, booleans, text, lists or arrays of one kind).
 scene::SceneOverride::Value override_value(const std::string& key, const py::handle& value) {
-  if (py::isinstance<py::bool_>(value)) return value.cast<bool>();
-  if (py::isinstance<py::int_>(value)) return value.cast<long long>();
-  if (py::isinstance<py::float_>(value)) return value.cast<double>();
-  if (py::isinstance<py::str>(value)) return value.cast<std::string>();
-  if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
-    const auto items = value.cast<py::sequence>();
+  switch (kind_of(value)) {
+    case ScalarKind::boolean:
+      return py::bool_(value.cast<py::object>()).cast<bool>();
+    case ScalarKind::integer:
+      return integer_of(key, value);
+    case ScalarKind::number:
+      return py::float_(value.cast<py::object>()).cast<double>();
+    case ScalarKind::text:
+      return value.cast<std::string>();
+    case ScalarKind::other:
+      break;
+  }
+  if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value) ||
+      py::hasattr(value, "__array_interface__")) {
+    const auto items = py::list(value.cast<py::object>());
     bool all_int = true, all_number = true;
     for (const auto& item : items) {
-      const bool is_int = py::isinstance<py::int_>(item) && !py::isinstance<py::bool_>(item);
-      all_int = all_int && is_int;
-      all_number = all_number && (is_int || py::isinstance<py::float_>(item));
+      const ScalarKind kind = kind_of(item);
+      all_int = all_int && kind == ScalarKind::integer;
+      all_number = all_number && (kind == ScalarKind::integer || kind == ScalarKind::number);
     }
-    if (all_int) return items.cast<std::vector<long long>>();
-    if (all_number) return items.cast<std::vector<double>>();
+    if (all_int) {
+      std::vector<long long> integers;
+      for (const auto& item : items) integers.push_back(integer_of(key, item));
+      return integers;
+    }
+    if (all_number) {
+      std::vector<double> numbers;
+      for (const auto& item : items) numbers.push_back(py::float_(item.cast<py::object>()).cast<double>());
+      return numbers;
+    }
     // Text, or text and numbers mixed (ratio = ["1/2", 1]): read as text, as in a scene file.
     std::vector<std::string> texts;
     for (const auto& item : items) texts.push_back(py::str(item).cast<std::string>());
@@ -187,10 +237,8 @@ void bind_scenes(py::module_& m) {
 // recommendation's scene edits, alpha_min.
 py::tuple run_advice(const scene::Scene& scene, std::optional<double> alpha_min, const std::filesystem::path& out) {
   if (!out.empty()) io::check_output_directory(out);  // (advice.csv goes into out itself)
-  const auto advice = [&] {
-    py::gil_scoped_release release;
-    return studies::advise_pairing(scene, {.alpha_min = alpha_min});
-  }();
+  const auto advice = python::run_interruptibly(
+      [scene, alpha_min] { return studies::advise_pairing(scene, {.alpha_min = alpha_min}); });
   const auto table = studies::advice_table(advice);
   if (!out.empty()) {
     io::ensure_writable_directory(out);
@@ -200,6 +248,21 @@ py::tuple run_advice(const scene::Scene& scene, std::optional<double> alpha_min,
   if (advice.recommended)
     for (const auto& edit : advice.candidates[*advice.recommended].edits) edits.append(edit);
   return py::make_tuple(columns_of(table), edits, advice.alpha_min);
+}
+
+// `hpcontact sweep` from Python: the paths of alpha.csv and verdicts.csv.
+py::tuple run_sweep(const std::string& study, const std::filesystem::path& out, bool restart) {
+  const auto alpha_csv = out / "alpha.csv";
+  // Reading builds the levels' meshes (MPI): on the library thread too. The folder's lock is
+  // held by the work, since an interrupted call returns before the work ends.
+  const auto [outcome, fit_levels] = python::run_interruptibly([study, out, alpha_csv, restart] {
+    const auto sweep = studies::read_stability_sweep(study);
+    const auto lock = studies::open_sweep_folder(sweep, out, restart);
+    return std::pair{studies::run_stability_sweep(sweep, alpha_csv, {}), sweep.fit_levels};
+  });
+  const auto verdicts = studies::fit_verdicts(outcome.rows, fit_levels);
+  verdicts.write(out / "verdicts.csv");
+  return py::make_tuple(alpha_csv.string(), (out / "verdicts.csv").string());
 }
 
 }  // namespace
@@ -212,29 +275,42 @@ PYBIND11_MODULE(_hpcontact, m) {
       if (error) std::rethrow_exception(error);
     } catch (const InputError& e) {
       PyErr_SetString(input_error.ptr(), e.what());
+    } catch (const OutOfMemory& e) {
+      PyErr_SetString(PyExc_MemoryError, e.what());
     }
   });
   python::bind_run_result(m);
+  reserve_library_buffers();
   session() = std::make_unique<PetscSession>(std::vector<std::string>{"hpcontact-python"}, false);
-  py::module_::import("atexit").attr("register")(py::cpp_function([] { session().reset(); }));
+  // PETSc ends on the thread that started it, after the work still queued there.
+  py::module_::import("atexit").attr("register")(py::cpp_function([] {
+    py::gil_scoped_release release;
+    python::post_to_library_thread([] { session().reset(); });
+    python::stop_library_thread();
+  }));
 
   bind_scenes(m);
   m.def(
       "run_scene",
       [](const scene::Scene& scene, const std::string& out) {
         if (!out.empty()) io::check_output_folder(out);  // before the work, as the command line does
-        std::map<std::string, io::CsvTable> tables;
-        std::map<std::string, io::VtuGrid> fields;
-        driver::SceneRunOptions options;
-        options.out = out;
-        options.write_files = !out.empty();
-        options.tables = &tables;
-        options.fields = &fields;
-        driver::RunResult result;
-        {
-          py::gil_scoped_release release;
-          result = driver::run_scene(scene, options);
-        }
+        // What the run fills, owned by the work: an interrupted call returns before the work ends.
+        struct Outputs {
+          std::map<std::string, io::CsvTable> tables;
+          std::map<std::string, io::VtuGrid> fields;
+          driver::RunResult result;
+        };
+        auto outputs = std::make_shared<Outputs>();
+        python::run_interruptibly([outputs, scene, out] {
+          driver::SceneRunOptions options;
+          options.out = out;
+          options.write_files = !out.empty();
+          options.tables = &outputs->tables;
+          options.fields = &outputs->fields;
+          outputs->result = driver::run_scene(scene, options);
+          return true;
+        });
+        auto& [tables, fields, result] = *outputs;
         py::dict arrays, grids;
         for (const auto& [name, table] : tables) arrays[py::str(name)] = columns_of(table);
         for (const auto& [name, grid] : fields) grids[py::str(name)] = python::vtu_grid_arrays(grid);
@@ -244,22 +320,8 @@ PYBIND11_MODULE(_hpcontact, m) {
       py::arg("scene"), py::arg("out") = "",
       "Runs the scene's effects: (RunResult, summary dict, {table name: {column: array}}, {solution name: "
       "{array name: array}}); writes files into `out` if given");
-  m.def(
-      "run_sweep",
-      [](const std::string& study, const std::filesystem::path& out) {
-        const auto sweep = studies::read_stability_sweep(study);
-        std::filesystem::create_directories(out);
-        const auto alpha_csv = out / "alpha.csv";
-        const auto outcome = [&] {
-          py::gil_scoped_release release;
-          return studies::run_stability_sweep(sweep, alpha_csv, {});
-        }();
-        const auto verdicts = studies::fit_verdicts(outcome.rows, sweep.fit_levels);
-        verdicts.write(out / "verdicts.csv");
-        return py::make_tuple(alpha_csv.string(), (out / "verdicts.csv").string());
-      },
-      py::arg("study"), py::arg("out"),
-      "Runs a stability sweep into `out` (alpha.csv, resumable; verdicts.csv): the two file paths");
+  m.def("run_sweep", &run_sweep, py::arg("study"), py::arg("out"), py::arg("restart") = false,
+        "Runs a stability sweep into `out` (alpha.csv, resumable unless `restart`; verdicts.csv): the two file paths");
   m.def("run_advice", &run_advice, py::arg("scene"), py::arg("alpha_min") = py::none(),
         py::arg("out") = std::filesystem::path(),
         "The candidates of `hpcontact advise` as advice.csv's columns (written to out/advice.csv if given), the "

@@ -142,13 +142,14 @@ def _read_columns(path):
     return columns
 
 
-def sweep(study, out=None):
+def sweep(study, out=None, restart=False):
     """Runs a stability sweep (a study file, as `hpcontact sweep`) and returns (alpha, verdicts), each
-    {column: array}. With `out` the resumable alpha.csv and verdicts.csv stay there."""
+    {column: array}. With `out` the resumable alpha.csv and verdicts.csv stay there; `restart`
+    replaces the rows stored there (as --restart)."""
     if out is None:
         with _tempfile.TemporaryDirectory(prefix="hpcontact_sweep_") as folder:
             return sweep(study, folder)
-    alpha_csv, verdicts_csv = _hpcontact.run_sweep(_os.fspath(study), _os.fspath(out))
+    alpha_csv, verdicts_csv = _hpcontact.run_sweep(_os.fspath(study), _os.fspath(out), bool(restart))
     return _read_columns(alpha_csv), _read_columns(verdicts_csv)
 
 
