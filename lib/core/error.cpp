@@ -33,9 +33,13 @@ int exit_code_of(const std::exception& error) {
   return 1;
 }
 
-std::string message_of(const std::exception& error) {
-  if (dynamic_cast<const std::bad_alloc*>(&error)) return out_of_memory_message("");
-  return error.what();
+std::string message_of(const std::exception& error) noexcept {
+  if (!dynamic_cast<const std::bad_alloc*>(&error)) return error.what();
+  try {
+    return out_of_memory_message("");
+  } catch (...) {  // (the message itself needs memory; callers report from catch blocks)
+    return "out of memory";
+  }
 }
 
 }  // namespace hpcontact

@@ -43,7 +43,7 @@ int exit_code_of(const std::exception& error);
 
 /// The message of an exception as reported: what() but for std::bad_alloc, whose what() says
 /// nothing, the out-of-memory message naming the memory limit.
-std::string message_of(const std::exception& error);
+std::string message_of(const std::exception& error) noexcept;
 
 /// Builds the standard message "<where>: key '<key>' = <value>: <allowed>".
 std::string describe_bad_input(const std::string& where, const std::string& key, const std::string& value,

@@ -1,4 +1,5 @@
-// The interrupt handlers and their registry of files in progress; the cancellation flag.
+// The interrupt handlers and their registry of files in progress; the cancellation token each
+// thread watches.
 #include "core/interrupt.hpp"
 
 #include <dirent.h>
@@ -43,7 +44,6 @@ void remove_folder(const char* path) {
 }
 
 std::atomic<bool> announce_interrupt{true};
-std::atomic<bool> cancellation_requested{false};
 
 // write(2) of a text, as the handler may (no stdio).
 void write_text(const char* text) {
@@ -100,12 +100,15 @@ void release_file_in_progress(int slot) {
   claimed[slot].store(false);
 }
 
-void request_cancellation() { cancellation_requested.store(true); }
+namespace {
+thread_local CancellationToken watched_token;
+}  // namespace
 
-void clear_cancellation() { cancellation_requested.store(false); }
+void watch_cancellation(CancellationToken token) { watched_token = std::move(token); }
 
 void throw_if_cancelled() {
-  if (cancellation_requested.load()) throw Interrupted("interrupted: the work stopped before writing its outputs");
+  if (watched_token && watched_token->load())
+    throw Interrupted("interrupted: the work stopped before writing its outputs");
 }
 
 }  // namespace hpcontact

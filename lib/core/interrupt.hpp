@@ -4,13 +4,15 @@
 // cooperative cancellation by which another thread stops library work.
 #pragma once
 
+#include <atomic>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
 namespace hpcontact {
 
 /// Installs the handlers (once per process; the command line calls it first). With `announce` the
-/// handler prints one line ("hpcontact: interrupted by signal N ...") before it exits; under mpirun
+/// handler prints one line ("hpcontact: interrupted (SIGINT); ...") before it exits; under mpirun
 /// rank 0 alone announces, since mpirun sends the signal to every rank.
 void install_interrupt_handlers(bool announce = true);
 
@@ -30,13 +32,14 @@ class Interrupted : public std::runtime_error {
 };
 
 /// Cooperative cancellation of library work running on another thread (the Python module runs its
-/// work on a thread of its own and answers Ctrl-C at once): the work stops with Interrupted at its
-/// next cancellation point (between a sweep's points, a run's stages, and before any output is
-/// committed), so that an interrupted run writes nothing.
-void request_cancellation();
-/// Cleared before each piece of work starts.
-void clear_cancellation();
-/// @throws Interrupted if cancellation was requested since the last clear_cancellation.
+/// work on a thread of its own and answers Ctrl-C at once): the token of a piece of work, set by
+/// the thread that asked for it, makes the work stop with Interrupted at its next cancellation
+/// point (between a sweep's points, a run's stages, and before any output is committed), so that
+/// an interrupted run writes nothing.
+using CancellationToken = std::shared_ptr<std::atomic<bool>>;
+/// The token the calling thread's work checks from now on (empty: none, never cancelled).
+void watch_cancellation(CancellationToken token);
+/// @throws Interrupted if the token the calling thread watches is set.
 void throw_if_cancelled();
 
 }  // namespace hpcontact

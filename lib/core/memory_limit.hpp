@@ -18,9 +18,11 @@ struct MemoryLimit {
 /// The tightest limit on this process's memory, read afresh at each call.
 MemoryLimit memory_limit();
 
-/// The message of an allocation that failed while doing `what` (may be empty): names the limit and
-/// the way out.
-std::string out_of_memory_message(const std::string& what);
+/// The message of an allocation that failed (`what`: where, e.g. "in CHOLMOD's factorization of
+/// ...", may be empty): names the limit and the way out.
+std::string out_of_memory_message(
+    const std::string& what,
+    const std::string& advice = "use fewer cells, a lower p or fewer ranks per machine, or raise the limit");
 
 /// Makes OpenBLAS take the work buffer of the calling thread, and OpenMP (libgomp, used by CHOLMOD)
 /// start its threads, now, while memory is plentiful. OpenBLAS's allocator (0.3.21) retries a

@@ -21,7 +21,7 @@ namespace hpcontact::detail {
                         "' (" + file + ":" + std::to_string(line) + ")";
   if (generic != nullptr) message += ": " + std::string(generic);
   if (specific != nullptr && specific[0] != '\0') message += ": " + std::string(specific);
-  if (code == PETSC_ERR_MEM) throw OutOfMemory(out_of_memory_message("in PETSc") + " (" + message + ")");
+  if (code == PETSC_ERR_MEM) throw OutOfMemory(out_of_memory_message("in a PETSc call") + " (" + message + ")");
   throw NumericalError(message);
 }
 

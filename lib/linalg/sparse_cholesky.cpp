@@ -37,11 +37,16 @@ struct SparseCholesky::Impl {
 
 namespace {
 
-// A failed CHOLMOD step: out of memory (CHOLMOD_OUT_OF_MEMORY, or a size its integers cannot hold)
-// names the memory limit; any other status is a numerical failure.
+// A failed CHOLMOD step: out of memory names the memory limit; a factor too large for CHOLMOD's
+// 32-bit indices, and any other status, is a numerical failure.
 [[noreturn]] void throw_cholmod_failure(const char* step, int status, long long size) {
-  if (status == CHOLMOD_OUT_OF_MEMORY || status == CHOLMOD_TOO_LARGE)
-    throw OutOfMemory(out_of_memory_message(fmt::format("CHOLMOD's {} of a {}x{} matrix", step, size, size)));
+  if (status == CHOLMOD_OUT_OF_MEMORY)
+    throw OutOfMemory(out_of_memory_message(fmt::format("in CHOLMOD's {} of a {}x{} matrix", step, size, size)));
+  if (status == CHOLMOD_TOO_LARGE)
+    throw NumericalError(
+        fmt::format("CHOLMOD's {} of a {}x{} matrix: its factor has more entries than 32-bit "
+                    "indices count (2^31): use fewer cells or a lower p, or distribute the run",
+                    step, size, size));
   throw NumericalError(fmt::format("CHOLMOD {} failed on a {}x{} matrix, status {}", step, size, size, status));
 }
 

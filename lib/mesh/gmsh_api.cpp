@@ -161,10 +161,11 @@ void Session::generate(const std::string& path, std::optional<double> max_size, 
   l.get_number("General.AbortOnError", &abort_on_error, &ierr);
   l.set_number("General.AbortOnError", 0.0, &ierr);
   const std::string error_before = last_error();
-  l.generate(2, &ierr);
+  int meshed = 0;
+  l.generate(2, &meshed);
   const std::string error_after = last_error();
   l.set_number("General.AbortOnError", abort_on_error, &ierr);
-  if (ierr != 0 || (!error_after.empty() && error_after != error_before)) fail(path, "mesh the geometry");
+  if (meshed != 0 || (!error_after.empty() && error_after != error_before)) fail(path, "mesh the geometry");
 }
 
 std::array<double, 4> Session::bounding_box() const {

@@ -12,7 +12,7 @@
 namespace hpcontact::mesh {
 
 /// How a .geo geometry is meshed: Gmsh's maximal element size (its own sizes when empty), cells;
-/// and the most cells the run can hold: a mesh_size that would give more (cells estimated as the
+/// and the most cells the run can hold: a mesh_size that would give more (cells estimated from the
 /// geometry's bounding box over mesh_size²) is refused before Gmsh meshes, naming `size_key` of
 /// `size_where`.
 struct GeoMeshing {

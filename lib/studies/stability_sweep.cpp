@@ -111,6 +111,7 @@ std::vector<infsup::InfSupRecord> merge_sweep_shards(const StabilitySweep& sweep
   // that pass for another study's.
   const auto folder = alpha_csv.parent_path();
   std::filesystem::remove(identity_path(folder));
+  for (const auto& stale : existing_shards(alpha_csv)) std::filesystem::remove(stale);  // (superseded)
   io::write_file_atomically(alpha_csv, merged.content());
   write_sweep_identity(folder, identity);
   return merged.records();

@@ -111,9 +111,12 @@ std::vector<std::string> sweep_identity(const StabilitySweep& sweep) {
       std::replace(key.begin(), key.end(), '\n', ' ');
       lines.push_back(prefix + key);
     }
-    for (const scene::Scene* scene : {&variant.scene, variant.scene.pair ? &variant.scene.pair->master : nullptr})
-      if (scene && !scene->mesh_file.empty())
-        lines.push_back(prefix + "contents of " + scene->mesh_file + " = " + file_digest(scene->mesh_file));
+    // (Named by the key, not the path: the path is relative to where the sweep runs.)
+    if (!variant.scene.mesh_file.empty())
+      lines.push_back(prefix + "contents of domain.mesh = " + file_digest(variant.scene.mesh_file));
+    if (variant.scene.pair && !variant.scene.pair->master.mesh_file.empty())
+      lines.push_back(prefix +
+                      "contents of the master's domain.mesh = " + file_digest(variant.scene.pair->master.mesh_file));
   }
   return lines;
 }
@@ -125,12 +128,13 @@ void claim_sweep_folder(const std::filesystem::path& folder, const std::vector<s
   const bool has_rows = std::filesystem::exists(alpha_csv) || !existing_shards(alpha_csv).empty();
   const std::string way_out = merge_source ? "merge only the folders of this study's slices"
                                            : "choose another --out folder, or --restart to replace its rows";
-  if (!std::filesystem::exists(file)) {
-    if (has_rows)
-      throw InputError(
-          fmt::format("'{}' holds sweep rows without {} (another version's, or copied there): they "
-                      "cannot be matched to this study; {}",
-                      folder.string(), file.filename().string(), way_out));
+  if (!std::filesystem::exists(file) && has_rows)
+    throw InputError(
+        fmt::format("'{}' holds sweep rows without {} (another version's, or copied there): they "
+                    "cannot be matched to this study; {}",
+                    folder.string(), file.filename().string(), way_out));
+  // A folder without rows (new, or a run stopped before its first group) is this study's now.
+  if (!has_rows) {
     if (!merge_source) write_sweep_identity(folder, identity);
     return;
   }

@@ -97,6 +97,10 @@ TEST(ResourceFaults, FileSizeLimitIsAnIoFailureOfTheFileItStops) {
   const auto dir = scratch("resource_file_size");
   const auto small = run_command("sh -c 'ulimit -f 4000; " HPCONTACT_CLI " infsup --n 8'");
   EXPECT_EQ(small.exit_code, 0) << small.output;
+  // Under mpirun as the user guide says: the launcher's store in memory too.
+  const auto ranks = run_command("sh -c 'ulimit -f 4000; PMIX_MCA_gds=hash " + kMpi +
+                                 "mpirun -n 2 --oversubscribe " HPCONTACT_CLI " infsup --n 8'");
+  EXPECT_EQ(ranks.exit_code, 0) << ranks.output;
   const auto out = dir / "out";
   const auto stopped = run_command("sh -c 'ulimit -f 64; " HPCONTACT_CLI " solve " HPCONTACT_SOURCE_DIR
                                    "/studies/paper/figure1_signorini.toml --n 64 --p 4 --out " +

@@ -70,6 +70,44 @@ TEST(SweepResume, RowsWithoutIdentityAreRefused) {
   EXPECT_NE(refused.output.find("without sweep_identity.txt"), std::string::npos) << refused.output;
 }
 
+// A folder with the identity of another study but no rows yet (a run stopped before its first
+// group) takes the new study.
+TEST(SweepResume, FolderWithoutRowsTakesTheNewStudy) {
+  const auto dir = scratch("sweep_resume_no_rows");
+  const auto study = write_sweep(dir, "study.toml", "[4, 8, 16]");
+  const auto edited = write_sweep(dir, "edited.toml", "[8, 16, 32]");
+  ASSERT_EQ(run("sweep " + study.string() + " --out " + (dir / "first").string()).exit_code, 0);
+  std::filesystem::create_directories(dir / "out");
+  std::filesystem::copy_file(dir / "first" / "sweep_identity.txt", dir / "out" / "sweep_identity.txt");
+  const auto result = run("sweep " + edited.string() + " --out " + (dir / "out").string());
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+}
+
+// The identity names a mesh file by its key, not its path: the same study run from another
+// folder resumes; the file's contents edited, it is refused.
+TEST(SweepResume, MeshFileIsKnownByItsContents) {
+  const auto dir = scratch("sweep_resume_mesh");
+  const std::string geo =
+      "Point(1) = {0, 0, 0, 1};\nPoint(2) = {2, 0, 0, 1};\nPoint(3) = {2, 1, 0, 1};\n"
+      "Point(4) = {0, 1, 0, 1};\nLine(1) = {1, 2};\nLine(2) = {2, 3};\nLine(3) = {3, 4};\n"
+      "Line(4) = {4, 1};\nCurve Loop(1) = {1, 2, 3, 4};\nPlane Surface(1) = {1};\n"
+      "Physical Curve(\"contact\") = {1};\nPhysical Curve(\"top\") = {3};\n"
+      "Physical Surface(\"body\") = {1};\n";
+  std::ofstream(dir / "block.geo") << geo;
+  std::ofstream(dir / "block.toml") << "[domain]\nmesh = \"block.geo\"\n[boundary]\ncontact_groups = [\"contact\"]\n"
+                                       "dirichlet_groups = [\"top\"]\n[contact_mesh]\nratio = 1\n"
+                                       "[discretization]\np = 2\npC = 1\n";
+  std::ofstream(dir / "study.toml") << "[sweep]\nscene = \"block.toml\"\np = [2]\npC = [1]\nnorm = [\"interp\"]\n"
+                                       "levels = { \"domain.mesh_size\" = [0.5, 0.25] }\nfit_levels = 2\n";
+  ASSERT_EQ(run("sweep " + (dir / "study.toml").string() + " --out " + (dir / "out").string()).exit_code, 0);
+  const auto elsewhere = run_command("cd " + dir.string() + " && " HPCONTACT_CLI " sweep study.toml --out out");
+  EXPECT_EQ(elsewhere.exit_code, 0) << elsewhere.output;
+  std::ofstream(dir / "block.geo") << geo << "Mesh.MeshSizeFactor = 0.9;\n";
+  const auto edited = run("sweep " + (dir / "study.toml").string() + " --out " + (dir / "out").string());
+  EXPECT_EQ(edited.exit_code, 2) << edited.output;
+  EXPECT_NE(edited.output.find("contents of domain.mesh"), std::string::npos) << edited.output;
+}
+
 // Two rows of one point with other numbers: which one is right cannot be told, so the point is
 // computed again (with a warning naming it) and the file equals a fresh run's.
 TEST(SweepResume, PointStoredTwiceWithOtherNumbersIsComputedAgain) {

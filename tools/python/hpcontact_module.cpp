@@ -45,10 +45,12 @@ std::unique_ptr<PetscSession>& session() {
 enum class ScalarKind { boolean, integer, number, text, other };
 
 ScalarKind kind_of(const py::handle& value) {
-  static const py::object real = py::module_::import("numbers").attr("Real");
+  // (Never destroyed: a static py::object would be released after the interpreter ends.)
+  static const py::object& real = *new py::object(py::module_::import("numbers").attr("Real"));
   const py::handle type = py::type::handle_of(value);
-  if (py::isinstance<py::bool_>(value) || (py::str(type.attr("__module__")).cast<std::string>() == "numpy" &&
-                                           py::str(type.attr("__name__")).cast<std::string>() == "bool_"))
+  const std::string module = py::str(type.attr("__module__")), name = py::str(type.attr("__name__"));
+  // numpy.bool_ is named "bool" from NumPy 2 on.
+  if (py::isinstance<py::bool_>(value) || (module == "numpy" && (name == "bool_" || name == "bool")))
     return ScalarKind::boolean;
   if (py::isinstance<py::str>(value)) return ScalarKind::text;
   if (py::hasattr(value, "__len__")) return ScalarKind::other;  // (an array of one integer has __index__)
@@ -72,6 +74,9 @@ long long integer_of(const std::string& key, const py::handle& value) {
 
 // A Python value as a scene override (numbers, booleans, text, lists or arrays of one kind).
 scene::SceneOverride::Value override_value(const std::string& key, const py::handle& value) {
+  // A numpy array of no dimension holds one scalar.
+  if (py::hasattr(value, "ndim") && py::hasattr(value, "item") && py::int_(value.attr("ndim")).cast<int>() == 0)
+    return override_value(key, value.attr("item")());
   switch (kind_of(value)) {
     case ScalarKind::boolean:
       return py::bool_(value.cast<py::object>()).cast<bool>();
@@ -280,7 +285,11 @@ PYBIND11_MODULE(_hpcontact, m) {
     }
   });
   python::bind_run_result(m);
-  reserve_library_buffers();
+  // On the thread that will run CHOLMOD and BLAS: libgomp's threads and OpenBLAS's buffer are its.
+  python::run_interruptibly([] {
+    reserve_library_buffers();
+    return true;
+  });
   session() = std::make_unique<PetscSession>(std::vector<std::string>{"hpcontact-python"}, false);
   // PETSc ends on the thread that started it, after the work still queued there.
   py::module_::import("atexit").attr("register")(py::cpp_function([] {

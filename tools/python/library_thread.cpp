@@ -1,5 +1,5 @@
-// The library thread: a queue of jobs and the thread that runs them, each with the cancellation
-// flag cleared first.
+// The library thread: a queue of jobs and the thread that runs them, each watching its own
+// cancellation token.
 #include "library_thread.hpp"
 
 #include <condition_variable>
@@ -15,13 +15,13 @@ namespace {
 struct LibraryThread {
   std::mutex mutex;
   std::condition_variable wake;
-  std::deque<std::function<void()>> jobs;
+  std::deque<std::pair<std::function<void()>, CancellationToken>> jobs;
   bool stopping = false;
   std::thread thread;
 
   void run() {
     for (;;) {
-      std::function<void()> job;
+      std::pair<std::function<void()>, CancellationToken> job;
       {
         std::unique_lock lock(mutex);
         wake.wait(lock, [this] { return stopping || !jobs.empty(); });
@@ -29,8 +29,11 @@ struct LibraryThread {
         job = std::move(jobs.front());
         jobs.pop_front();
       }
-      clear_cancellation();
-      job();  // (a packaged task: its exception goes to its future)
+      auto& [work, token] = job;
+      if (token && token->load()) continue;  // interrupted while it waited
+      watch_cancellation(token);
+      work();  // (a packaged task: its exception goes to its future)
+      watch_cancellation({});
     }
   }
 };
@@ -42,11 +45,11 @@ LibraryThread& library_thread() {
 
 }  // namespace
 
-void post_to_library_thread(std::function<void()> job) {
+void post_to_library_thread(std::function<void()> job, CancellationToken token) {
   LibraryThread& library = library_thread();
   const std::lock_guard lock(library.mutex);
   if (!library.thread.joinable()) library.thread = std::thread([&library] { library.run(); });
-  library.jobs.push_back(std::move(job));
+  library.jobs.emplace_back(std::move(job), std::move(token));
   library.wake.notify_one();
 }
 

@@ -147,7 +147,8 @@ def sweep(study, out=None, restart=False):
     {column: array}. With `out` the resumable alpha.csv and verdicts.csv stay there; `restart`
     replaces the rows stored there (as --restart)."""
     if out is None:
-        with _tempfile.TemporaryDirectory(prefix="hpcontact_sweep_") as folder:
+        # An interrupted sweep may still be stopping in the folder when it is removed.
+        with _tempfile.TemporaryDirectory(prefix="hpcontact_sweep_", ignore_cleanup_errors=True) as folder:
             return sweep(study, folder)
     alpha_csv, verdicts_csv = _hpcontact.run_sweep(_os.fspath(study), _os.fspath(out), bool(restart))
     return _read_columns(alpha_csv), _read_columns(verdicts_csv)
