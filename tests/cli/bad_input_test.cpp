@@ -195,5 +195,22 @@ TEST(BadInput, OutputFolderThatCannotBeWritten) {
   std::ofstream(dir / "a_file") << "not a folder\n";
   const auto result = run("solve " + (dir / "scene.toml").string() + " --out " + (dir / "a_file" / "out").string());
   EXPECT_EQ(result.exit_code, 2) << result.output;
+  EXPECT_NE(result.output.find("output folder (--out) '"), std::string::npos) << result.output;
   EXPECT_NE(result.output.find("a_file"), std::string::npos) << result.output;
+}
+
+// Ranges and values in the shortest text that reads back as the number, not 17 digits; a value
+// that is not a number reads "nan", not "inf".
+TEST(BadInput, NumbersInMessagesAreShortAndTrue) {
+  const auto dir = scratch("bad_numbers");
+  const std::string graded = replaced("n_x = 4\nn_y = 4", "n_x = 4\nn_y = 4\ngrading = 0.995");
+  std::ofstream(dir / "scene.toml") << graded;
+  const auto range = run("solve " + (dir / "scene.toml").string() + " --out " + (dir / "out").string());
+  EXPECT_EQ(range.exit_code, 2) << range.output;
+  EXPECT_NE(range.output.find("'domain.grading' = 0.995: must be in [0.01, 0.99]"), std::string::npos) << range.output;
+  std::ofstream(dir / "scene.toml") << replaced("n_x = 4\nn_y = 4", "n_x = 4\nn_y = 4\nx_max = nan");
+  const auto not_a_number = run("solve " + (dir / "scene.toml").string() + " --out " + (dir / "out").string());
+  EXPECT_EQ(not_a_number.exit_code, 2) << not_a_number.output;
+  EXPECT_NE(not_a_number.output.find("'domain.x_max' = nan: a finite number"), std::string::npos)
+      << not_a_number.output;
 }

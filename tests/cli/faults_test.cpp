@@ -69,6 +69,7 @@ TEST(Faults, FullDiskIsAnIoFailure) {
   const auto result = run("infsup --p 2 --pc 1 --n 64 --mode " + (disk.path / "mode.csv").string());
   EXPECT_EQ(result.exit_code, 4) << result.output;
   EXPECT_NE(result.output.find("No space left on device"), std::string::npos) << result.output;
+  EXPECT_EQ(result.output.find("No space left on device failed"), std::string::npos) << result.output;
   EXPECT_NE(result.output.find((disk.path / "mode.csv").string()), std::string::npos) << result.output;
   EXPECT_FALSE(has_temporary_files(disk.path));
   EXPECT_FALSE(std::filesystem::exists(disk.path / "mode.csv"));
