@@ -67,8 +67,12 @@ void print_stability(const driver::StabilityReport& s) {
 void print_contact(const driver::ContactResult& result) {
   fmt::print("{}: energy = {:.17g}", result.problem, result.energy);
   if (result.total_force) fmt::print(", total force P = {:.10g}", *result.total_force);
-  fmt::print(", {} {} steps, KKT residual {:.2e}, contact set length {:.4f}{}", result.solver.iterations,
-             result.solver.method, result.solver.kkt_residual, result.contact_set_length, zone_lengths(result));
+  fmt::print(", {} {} steps, KKT residual {:.2e}", result.solver.iterations, result.solver.method,
+             result.solver.kkt_residual);
+  if (result.contact_area)
+    fmt::print(", contact area {:.4f}", *result.contact_area);
+  else
+    fmt::print(", contact set length {:.4f}{}", result.contact_set_length, zone_lengths(result));
   if (!result.fixed_point_changes.empty()) fmt::print(", {} fixed-point iterations", result.fixed_point_changes.size());
   // (between the constraint points the bounds are not imposed: how far the multiplier leaves them)
   if (result.bounds && result.bounds->violation > 1e-8)
@@ -154,7 +158,8 @@ void add_solve_command(CLI::App& app, CommandAction& action) {
       ->delimiter(',');
   command->add_option("--p", o->p, "Override the scene's p");
   command->add_option("--pc", o->pc, "Override the scene's p_C");
-  command->add_option("--n", o->n, "Override the rectangle's cells: n x n (domain.n_x, domain.n_y)");
+  command->add_option("--n", o->n,
+                      "Override the rectangle's cells: n x n (domain.n_x, domain.n_y; a box keeps its domain.n_z)");
   command->add_option("--ratio", o->ratio, "Override the scene's contact mesh: h/H, e.g. 1/2");
   command->add_option("--constraint-points", o->constraint_points,
                       "Override the scene's constraint points per segment (Remark 3; >= p_C + 1)");

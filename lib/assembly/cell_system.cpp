@@ -4,7 +4,9 @@
 #include <array>
 #include <cmath>
 
+#include "core/error.hpp"
 #include "mesh/cell_map.hpp"
+#include "mesh/cell_partition.hpp"
 #include "mesh/reference_cell.hpp"
 
 namespace hpcontact::assembly {
@@ -27,9 +29,22 @@ std::optional<CongruenceKey> affine_key(const space::H1Space& space, int cell, b
 }
 
 std::vector<int> cell_work_weights(const CellSystem& system) {
-  std::vector<int> weights(system.mesh().n_cells());
-  for (int c = 0; c < system.mesh().n_cells(); ++c) weights[c] = system.cell_size(c);
+  std::vector<int> weights(system.n_cells());
+  for (int c = 0; c < system.n_cells(); ++c) weights[c] = system.cell_size(c);
   return weights;
+}
+
+std::vector<int> PlanarCellSystem::split_cells_over_ranks(MPI_Comm ranks) const {
+  HPC_VERIFY(!mesh().is_part(), "a part's cells are split by the whole mesh's owner");
+  return mesh::split_cells_over_ranks(mesh(), cell_work_weights(*this), ranks);
+}
+
+std::vector<char> PlanarCellSystem::boundary_unknowns(int cell) const {
+  const std::vector<char> shapes = boundary_shapes(scalar_space(), cell);
+  const int fields = field_count();
+  std::vector<char> unknowns(shapes.size() * static_cast<std::size_t>(fields));
+  for (std::size_t s = 0; s < unknowns.size(); ++s) unknowns[s] = shapes[s / static_cast<std::size_t>(fields)];
+  return unknowns;
 }
 
 std::vector<char> boundary_shapes(const space::H1Space& space, int cell) {

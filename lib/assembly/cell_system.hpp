@@ -5,6 +5,8 @@
 // one condensation and one factorization (CondensedFactor).
 #pragma once
 
+#include <mpi.h>
+
 #include <Eigen/Core>
 #include <optional>
 #include <vector>
@@ -28,10 +30,16 @@ using CongruenceKey = std::vector<long long>;
 class CellSystem {
  public:
   virtual ~CellSystem() = default;
-  virtual const mesh::Mesh& mesh() const = 0;
-  /// The scalar space whose shapes carry the unknowns: the cell's unknown s is of its shape
-  /// s / field_count().
-  virtual const space::H1Space& scalar_space() const = 0;
+  /// The cells of the mesh (planar or solid) the system is assembled on.
+  virtual int n_cells() const = 0;
+  /// For a distributed factorization: the rank of `ranks` that eliminates each cell, parts of
+  /// about equal work (cell_work_weights) with few shared unknowns. Collective.
+  /// @throws InputError where the system cannot be split (a part's system, or a mesh kind that
+  /// runs serially).
+  virtual std::vector<int> split_cells_over_ranks(MPI_Comm ranks) const = 0;
+  /// Which of the cell's unknowns (in the order of cell_dofs) lie on the boundary of the mesh:
+  /// what a solver building coarse spaces (BDDC) learns of a subdomain beyond its matrix.
+  virtual std::vector<char> boundary_unknowns(int cell) const = 0;
   virtual int n_dofs() const = 0;
   /// Skeleton dofs are numbered 0 … n_skeleton_dofs() − 1, before every interior dof.
   virtual int n_skeleton_dofs() const = 0;
@@ -64,6 +72,21 @@ class CellSystem {
 /// ranks, so that parts of a mesh of mixed degrees eliminate and factorize about equal work.
 std::vector<int> cell_work_weights(const CellSystem& system);
 
+/// A cell system on a planar mesh whose unknowns are carried by the shapes of one scalar space
+/// S^p(T_h) (the scalar operators and elasticity in 2-D).
+class PlanarCellSystem : public CellSystem {
+ public:
+  virtual const mesh::Mesh& mesh() const = 0;
+  /// The scalar space whose shapes carry the unknowns: the cell's unknown s is of its shape
+  /// s / field_count().
+  virtual const space::H1Space& scalar_space() const = 0;
+  int n_cells() const final { return mesh().n_cells(); }
+  /// mesh::split_cells_over_ranks (coordinate bisection or PT-Scotch) weighted by cell_work_weights.
+  std::vector<int> split_cells_over_ranks(MPI_Comm ranks) const final;
+  /// Per unknown: its shape lies on the mesh's boundary (boundary_shapes).
+  std::vector<char> boundary_unknowns(int cell) const final;
+};
+
 /// Which of the cell's shapes lie on the boundary of the space's mesh (vertex shapes of its
 /// vertices and edge modes of its edges there; a part's cut edges are not its boundary).
 std::vector<char> boundary_shapes(const space::H1Space& space, int cell);
@@ -75,7 +98,7 @@ std::vector<char> boundary_shapes(const space::H1Space& space, int cell);
 std::optional<CongruenceKey> affine_key(const space::H1Space& space, int cell, bool enabled);
 
 /// A K + b M on S^p(T_h) (a, b ≥ 0, not both 0).
-class ScalarCellSystem final : public CellSystem {
+class ScalarCellSystem final : public PlanarCellSystem {
  public:
   ScalarCellSystem(const space::H1Space& space, double stiffness_weight, double mass_weight);
   const space::H1Space& space() const { return *space_; }

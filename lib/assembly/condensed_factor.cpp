@@ -72,18 +72,14 @@ CondensedFactor::CondensedFactor(std::unique_ptr<const CellSystem> system, const
       distribution_(distribution) {
   for (int index : trailing)
     HPC_VERIFY(index >= 0 && index < system_->n_skeleton_dofs(), "trailing set outside the skeleton dofs");
-  const int n_cells = system_->mesh().n_cells(), n_skeleton = system_->n_skeleton_dofs();
+  const int n_cells = system_->n_cells(), n_skeleton = system_->n_skeleton_dofs();
   std::vector<char> contributes(n_cells, 1);
   const bool distributed = distribution.distributed();
   MPI_Comm ranks = distribution.ranks;
   if (distributed) {
     const int rank = rank_and_size(ranks).first;
     HPC_VERIFY(part_of_cell.empty() || static_cast<int>(part_of_cell.size()) == n_cells, "one part per cell");
-    HPC_VERIFY(!part_of_cell.empty() || !system_->mesh().is_part(),
-               "a part's cells are split by the whole mesh's owner");
-    const std::vector<int> parts =
-        part_of_cell.empty() ? mesh::split_cells_over_ranks(system_->mesh(), cell_work_weights(*system_), ranks)
-                             : part_of_cell;
+    const std::vector<int> parts = part_of_cell.empty() ? system_->split_cells_over_ranks(ranks) : part_of_cell;
     for (int c = 0; c < n_cells; ++c) contributes[c] = parts[c] == rank;
   }
   // Distributed, a degenerate cell fails on the rank that owns it: every rank ends the same way.
@@ -160,14 +156,14 @@ linalg::BddcHints CondensedFactor::local_bddc_hints() const {
     if (block_of_cell_[c] < 0) continue;
     system_->cell_dofs(c, dofs);
     const Eigen::MatrixXd motions = k > 0 ? system_->null_motions(c) : Eigen::MatrixXd();
-    const std::vector<char> boundary = boundary_shapes(system_->scalar_space(), c);
+    const std::vector<char> boundary = system_->boundary_unknowns(c);
     const int* rows = cell_rows_.data() + cell_row_start_[c];
     // (a shared vertex gets the same values from each of its cells)
     for (std::size_t s = 0; s < dofs.size(); ++s) {
       if (dofs[s].dof < 0 || dofs[s].interior) continue;
       if (k > 0) hints.near_null_space.row(rows[s]) = dofs[s].sign * motions.row(s);
       if (fields > 1) hints.fields[rows[s]] = static_cast<int>(s) % fields;
-      if (boundary[s / fields]) on_boundary[rows[s]] = 1;
+      if (boundary[s]) on_boundary[rows[s]] = 1;
     }
   }
   for (int i = 0; i < n_local_skeleton_; ++i)
@@ -217,7 +213,7 @@ double CondensedFactor::dot_local(const Eigen::VectorXd& share, const Eigen::Vec
 
 std::vector<Eigen::Triplet<double>> CondensedFactor::eliminate_interiors(const std::vector<char>& contributes) {
   const CellSystem& system = *system_;
-  const int n_cells = system.mesh().n_cells();
+  const int n_cells = system.n_cells();
   std::map<CongruenceKey, int> congruent;
   block_of_cell_.assign(n_cells, -1);
   std::vector<Eigen::Triplet<double>> lower;

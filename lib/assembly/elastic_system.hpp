@@ -20,7 +20,7 @@ namespace hpcontact::assembly {
 ///
 /// With `mass_weight` b > 0 the system is a(u, v) + b (u, v) (the energy norm of the inf-sup
 /// analysis, definite without Γ_D).
-class ElasticCellSystem final : public CellSystem {
+class ElasticCellSystem final : public PlanarCellSystem {
  public:
   /// `materials`: one per cell. `centre`: the rotation's centre for null_motions, which every rank
   /// sharing a problem must use alike (default: the centroid of the mesh's vertices).
@@ -53,7 +53,7 @@ class ElasticCellSystem final : public CellSystem {
 
 /// a K + b M on each component of [S^p(T_h)]² (the vector H¹ norm for a = b = 1), numbered as
 /// ElasticCellSystem.
-class ComponentwiseCellSystem final : public CellSystem {
+class ComponentwiseCellSystem final : public PlanarCellSystem {
  public:
   ComponentwiseCellSystem(const space::VectorSpace& space, double stiffness_weight, double mass_weight);
   const mesh::Mesh& mesh() const override { return scalar_.mesh(); }

@@ -3,6 +3,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <cmath>
+#include <numbers>
 
 #include "core/error.hpp"
 
@@ -56,6 +57,23 @@ Tabulation1D tabulate_lobatto(int p, const std::vector<double>& points) {
     table.derivatives.row(i) = derivatives.transpose();
   }
   return table;
+}
+
+std::vector<double> chebyshev_lobatto_points(int q) {
+  HPC_VERIFY(q >= 1, "at least one point");
+  if (q == 1) return {0.0};
+  std::vector<double> points(q);
+  for (int k = 0; k < q; ++k) points[k] = -std::cos(std::numbers::pi * k / (q - 1));
+  return points;
+}
+
+Eigen::VectorXd lagrange_values(const std::vector<double>& nodes, double t) {
+  const Eigen::Index n = static_cast<Eigen::Index>(nodes.size());
+  Eigen::VectorXd values = Eigen::VectorXd::Ones(n);
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (Eigen::Index j = 0; j < n; ++j)
+      if (j != i) values(i) *= (t - nodes[j]) / (nodes[i] - nodes[j]);
+  return values;
 }
 
 }  // namespace hpcontact::basis

@@ -22,6 +22,13 @@ std::vector<double> gauss_lobatto_points(int p);
 /// is handled. Their conditioning grows only mildly with p (tested up to p = 16).
 void lobatto_values(int p, double t, Eigen::Ref<Eigen::VectorXd> values, Eigen::Ref<Eigen::VectorXd> derivatives);
 
+/// The q Chebyshev–Lobatto points −cos(πk/(q − 1)), k = 0 … q − 1, on [-1,1] (ascending), or the
+/// midpoint for q = 1: the nodal and constraint points of the multipliers (the paper's Remark 3).
+std::vector<double> chebyshev_lobatto_points(int q);
+
+/// The Lagrange polynomials of `nodes` (distinct) at t: ℓ_i(t), shape (nodes.size()).
+Eigen::VectorXd lagrange_values(const std::vector<double>& nodes, double t);
+
 /// Tabulation at a set of points. Both outputs shape (n_points, p+1), row = point.
 struct Tabulation1D {
   Eigen::MatrixXd values;

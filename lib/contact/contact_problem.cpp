@@ -24,13 +24,7 @@
 
 namespace hpcontact::contact {
 
-std::vector<double> constraint_points(int q) {
-  HPC_VERIFY(q >= 1, "at least one constraint point");
-  if (q == 1) return {0.0};
-  std::vector<double> points(q);
-  for (int k = 0; k < q; ++k) points[k] = -std::cos(std::numbers::pi * k / (q - 1));
-  return points;
-}
+std::vector<double> constraint_points(int q) { return basis::chebyshev_lobatto_points(q); }
 
 int segment_constraint_points(ContactProblem problem, int pc, std::optional<int> requested) {
   // For M_- and M_1 with p_C ≤ 1 the sign and box conditions at the nodal points are exact.

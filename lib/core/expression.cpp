@@ -25,29 +25,37 @@ struct Expression::Impl {
   std::string origin;
   double x = 0.0;
   double y = 0.0;
+  double z = 0.0;
+  int dimension = 2;
   mu::Parser parser;
 };
 
-Expression::Expression(const std::string& text, const std::string& origin) : impl_(std::make_shared<Impl>()) {
+Expression::Expression(const std::string& text, const std::string& origin, int dimension)
+    : impl_(std::make_shared<Impl>()) {
+  HPC_VERIFY(dimension == 2 || dimension == 3, "expressions in two or three variables");
   impl_->text = text;
   impl_->origin = origin;
+  impl_->dimension = dimension;
   try {
     impl_->parser.DefineVar("x", &impl_->x);
     impl_->parser.DefineVar("y", &impl_->y);
+    if (dimension == 3) impl_->parser.DefineVar("z", &impl_->z);
     impl_->parser.DefineConst("pi", std::numbers::pi);
     impl_->parser.DefineConst("e", std::numbers::e);
     impl_->parser.SetExpr(text);
     // muparser parses lazily: evaluate once so that syntax errors surface here.
     impl_->parser.Eval();
   } catch (const mu::Parser::exception_type& error) {
-    throw InputError(origin + ": expression \"" + shortened(text) + "\" does not parse: " + error.GetMsg() +
-                     " (variables: x, y; constants: pi, e)");
+    throw InputError(
+        origin + ": expression \"" + shortened(text) + "\" does not parse: " + error.GetMsg() +
+        (dimension == 3 ? " (variables: x, y, z; constants: pi, e)" : " (variables: x, y; constants: pi, e)"));
   }
 }
 
-double Expression::operator()(double x, double y) const {
+double Expression::operator()(double x, double y, double z) const {
   impl_->x = x;
   impl_->y = y;
+  impl_->z = z;
   double value = 0.0;
   try {
     value = impl_->parser.Eval();
@@ -56,9 +64,12 @@ double Expression::operator()(double x, double y) const {
                      "\" failed to evaluate: " + error.GetMsg());
   }
   if (!std::isfinite(value)) {
-    throw InputError(impl_->origin + ": expression \"" + shortened(impl_->text) + "\" is " + std::to_string(value) +
-                     " at (x, y) = (" + std::to_string(x) + ", " + std::to_string(y) +
-                     "): it must be finite on the whole domain");
+    throw InputError(
+        impl_->origin + ": expression \"" + shortened(impl_->text) + "\" is " + std::to_string(value) + " at " +
+        (impl_->dimension == 3
+             ? "(x, y, z) = (" + std::to_string(x) + ", " + std::to_string(y) + ", " + std::to_string(z) + ")"
+             : "(x, y) = (" + std::to_string(x) + ", " + std::to_string(y) + ")") +
+        ": it must be finite on the whole domain");
   }
   return value;
 }

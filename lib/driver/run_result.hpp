@@ -62,6 +62,7 @@ struct ContactResult {
   double energy = 0.0;  ///< E(u) = ½ a(u, u) − F(u)
   long long n_dofs = 0, nmult = 0, n_trace = 0;
   double contact_set_length = 0.0;
+  std::optional<double> contact_area;      ///< 3-D: the area of Γ_C where the multiplier does not vanish
   std::optional<double> total_force;       ///< elastic: P = ∫_{Γ_C} pressure ds
   std::optional<double> tangential_force;  ///< elastic: T = ∫_{Γ_C} σ_nt ds (along increasing s)
   /// elastic: the resultant of the contact traction on the body (the slave of a pair),
@@ -143,7 +144,9 @@ struct RunResult {
   std::string family;                ///< the multiplier family (space::to_string)
   std::optional<MaterialSummary> material;
   long long edges_on_contact = 0, m = 0, n_dofs = 0, nmult = 0;
-  std::vector<OperatorRecord> operators;  ///< every operator built, in order
+  int dimension = 2;                          ///< 3 for a box of hexahedra
+  std::optional<long long> faces_on_contact;  ///< 3-D: the trace faces on Γ_C (then m counts T_{C,H}'s cells)
+  std::vector<OperatorRecord> operators;      ///< every operator built, in order
   std::optional<FreeBoundarySummary> free_boundary;
   std::optional<StabilityReport> stability;  ///< runs with a contact problem or α
   std::vector<ContactResult> contacts;       ///< in the order the problems ran

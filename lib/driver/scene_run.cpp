@@ -8,6 +8,7 @@
 #include "driver/pairing_stability.hpp"
 #include "driver/run_outputs.hpp"
 #include "driver/run_stages.hpp"
+#include "driver/solid_run.hpp"
 #include "driver/summary_json.hpp"
 #include "io/atomic_file.hpp"
 
@@ -86,6 +87,8 @@ void write_outputs(const Level& base, const RunResult& result, RunFiles& files, 
 }  // namespace
 
 RunResult run_scene(const scene::Scene& given_scene, const SceneRunOptions& options) {
+  // A box of hexahedra has its own discretization; the outputs are the same files.
+  if (given_scene.dimension() == 3) return run_solid_scene(given_scene, options);
   Stopwatch clock;
   const StageContext context{options.distribution, options.progress,
                              given_scene.wants_output(scene::Output::vtu) && options.write_files};

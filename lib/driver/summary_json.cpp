@@ -26,7 +26,6 @@ json contact_json(const ContactResult& c) {
   json j{{"energy", c.energy},
          {"nmult", c.nmult},
          {"n_trace", c.n_trace},
-         {"contact_set_length", c.contact_set_length},
          {"solver", solver_json(c.solver)},
          {"seconds",
           {{"assembly", c.seconds.assembly},
@@ -35,6 +34,10 @@ json contact_json(const ContactResult& c) {
            {"contact_qp", c.seconds.contact_qp},
            {"recovery", c.seconds.recovery},
            {"total", c.seconds.total}}}};
+  if (c.contact_area)
+    j["contact_area"] = *c.contact_area;
+  else
+    j["contact_set_length"] = c.contact_set_length;
   if (c.total_force) j["total_force"] = *c.total_force;
   if (c.tangential_force) j["tangential_force"] = *c.tangential_force;
   if (c.contact_force) j["contact_force"] = *c.contact_force;
@@ -124,7 +127,7 @@ std::string summary_json(const RunResult& r) {
          {"p", r.p},
          {"pC", r.pc},
          {"family", r.family},
-         {"edges_on_contact", r.edges_on_contact},
+         {"dimension", r.dimension},
          {"m", r.m},
          {"ndofs", r.n_dofs},
          {"nmult", r.nmult},
@@ -132,6 +135,10 @@ std::string summary_json(const RunResult& r) {
          {"seconds_total", r.seconds_total},
          {"ranks", r.ranks},
          {"distributed_solver", r.distributed_solver}};
+  if (r.faces_on_contact)
+    j["faces_on_contact"] = *r.faces_on_contact;
+  else
+    j["edges_on_contact"] = r.edges_on_contact;
   if (r.material) j["material"] = {{"model", r.material->model}, {"E", r.material->young}, {"nu", r.material->poisson}};
   if (r.free_boundary) {
     json points = json::array();

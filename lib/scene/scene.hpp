@@ -68,6 +68,9 @@ struct Scene {
   mesh::GeneratedCells cells = mesh::GeneratedCells::quadrilaterals;
   mesh::Rectangle rectangle;  ///< when mesh_file is empty
   int n_x = 0, n_y = 0;
+  /// A box (3-D): the rectangle times [z_min, z_max] with n_z cells along z; n_z = 0: planar.
+  double z_min = 0.0, z_max = 1.0;
+  int n_z = 0;
   double perturb = 0.0;
   std::uint32_t seed = 1;
   std::vector<double> grading_x, grading_y;  ///< see mesh::graded_nodes
@@ -126,6 +129,8 @@ struct Scene {
   // [convergence]
   int convergence_refinements = 3;
 
+  /// 3 for a box (domain.n_z given), else 2: the variables of the scene's expressions.
+  int dimension() const { return n_z > 0 ? 3 : 2; }
   /// Whether the obstacle is given as geometry ([obstacle]) rather than by g.
   bool has_rigid_obstacle() const { return given.contains("obstacle.type"); }
   /// Whether the contact problems have their obstacle: g or [obstacle].

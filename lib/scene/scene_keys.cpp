@@ -66,12 +66,12 @@ SceneKey integer_key(const char* section, const char* name, long long low, long 
           }};
 }
 
-/// An expression in x, y (parsed now, so that a typo is reported before any work).
+/// An expression in x, y (x, y, z in a 3-D scene), parsed now, so that a typo is reported before any work.
 SceneKey expression_key(const char* section, const char* name, const char* fallback, std::string Scene::*member,
                         const char* doc) {
   return {section,
           name,
-          "expression in x, y (or a number)",
+          "expression in x, y (x, y, z in 3-D) or a number",
           fallback[0] ? fmt::format("\"{}\"", fallback) : "",
           "muparser syntax",
           doc,
@@ -79,7 +79,8 @@ SceneKey expression_key(const char* section, const char* name, const char* fallb
           [=](const TomlTable& table, Scene& scene) {
             scene.*member = table.expression(name, fallback);
             if (!(scene.*member).empty())
-              Expression(scene.*member, table.origin(name) + ": key '" + table.qualified(name) + "'");
+              Expression(scene.*member, table.origin(name) + ": key '" + table.qualified(name) + "'",
+                         scene.dimension());
           }};
 }
 
@@ -233,6 +234,27 @@ void add_domain_keys(std::vector<SceneKey>& keys) {
   add(any_number_key("domain", "y_max", 1.0, &mesh::Rectangle::y_max, "rectangle: top end"));
   add(integer_key("domain", "n_x", 1, 100000, std::nullopt, &Scene::n_x, "rectangle: cells along x (required)"));
   add(integer_key("domain", "n_y", 1, 100000, std::nullopt, &Scene::n_y, "rectangle: cells along y (required)"));
+  add(integer_key("domain", "n_z", 1, 100000, std::nullopt, &Scene::n_z,
+                  "box (3-D): cells along z; given, Ω is the box [x_min, x_max] × [y_min, y_max] × [z_min, z_max] "
+                  "cut into n_x × n_y × n_z hexahedra, and expressions take x, y, z"));
+  add({"domain", "z_min", "number", "0", "finite, < z_max", "box: bottom end along z", "",
+       [](const TomlTable& table, Scene& scene) {
+         scene.z_min = table.number("z_min", 0.0);
+         scene.z_max = table.number("z_max", 1.0);
+         for (const char* key : {"z_min", "z_max"}) {
+           const double value = std::string(key) == "z_min" ? scene.z_min : scene.z_max;
+           if (!std::isfinite(value))
+             throw_bad_input(table.origin(key), table.qualified(key), fmt::format("{}", value), "a finite number");
+           if (table.has(key) && scene.n_z == 0)
+             throw_bad_input(table.origin(key), table.qualified(key), fmt::format("{}", value),
+                             "only with domain.n_z (a box)");
+         }
+         if (!(scene.z_max > scene.z_min))
+           throw_bad_input(table.origin("z_max"), table.qualified("z_max"), fmt::format("{}", scene.z_max),
+                           fmt::format("a number > z_min = {}", scene.z_min));
+       }});
+  add({"domain", "z_max", "number", "1", "finite, > z_min", "box: top end along z (read with z_min)", "",
+       [](const TomlTable&, Scene&) {}});
   add(number_key("domain", "perturb", 0.0, 0.24, 0.0, &Scene::perturb,
                  "moves interior vertices randomly by up to this fraction of the local cell size"));
   add({"domain", "seed", "integer", "1", fmt::format("[0, {}]", 1u << 30), "random seed of `perturb`", "",

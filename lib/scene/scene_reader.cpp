@@ -68,7 +68,7 @@ std::map<std::string, std::string> apply_overrides(toml::table& root, const std:
 
 void check_domain(const Scene& scene) {
   if (!scene.is_rectangle()) {
-    for (const char* key : {"x_min", "x_max", "y_min", "y_max", "n_x", "n_y", "grading_x", "grading_y"})
+    for (const char* key : {"x_min", "x_max", "y_min", "y_max", "n_x", "n_y", "n_z", "grading_x", "grading_y"})
       if (scene.given.contains(fmt::format("domain.{}", key)))
         throw_bad_input(scene.where(fmt::format("domain.{}", key)), fmt::format("domain.{}", key), "(given)",
                         "applies to a rectangle, not to the Gmsh mesh of domain.mesh");
@@ -122,19 +122,21 @@ void check_scene_size(const Scene& scene) {
   const double layers = 2.0 * scene.grading_layers;
   const double cells = (scene.n_x + layers * static_cast<double>(scene.grading_x.size())) *
                        (scene.n_y + layers * static_cast<double>(scene.grading_y.size())) *
-                       std::pow(4.0, scene.refinements);
+                       std::pow(4.0, scene.refinements) * std::max(scene.n_z, 1);
   const double p = scene.p.rule.empty() ? scene.p.value : 1.0;  // a rule: at least degree 1 everywhere
-  const double dofs = cells * p * p, bytes = 1.2e3 * dofs;
+  // (In 3-D the factor's fill grows faster than the unknowns: the estimate is a lower bound there.)
+  const double dofs = cells * std::pow(p, scene.dimension()), bytes = 1.2e3 * dofs;
   const MemoryLimit memory = memory_limit();
-  const std::string size =
-      fmt::format("{:.3g} cells ({} x {}{}) at p = {}: about {:.3g} unknowns", cells, scene.n_x, scene.n_y,
-                  scene.refinements ? fmt::format(", {} refinements", scene.refinements) : "",
-                  scene.p.rule.empty() ? std::to_string(scene.p.value) : "its rule", dofs);
-  if (dofs > 2147483647.0)
-    throw_bad_input(scene.file, "domain.n_x, domain.n_y", size, "at most 2^31 - 1 unknowns (32-bit indices)");
+  const std::string counts = scene.dimension() == 3 ? fmt::format("{} x {} x {}", scene.n_x, scene.n_y, scene.n_z)
+                                                    : fmt::format("{} x {}", scene.n_x, scene.n_y);
+  const std::string keys = scene.dimension() == 3 ? "domain.n_x, domain.n_y, domain.n_z" : "domain.n_x, domain.n_y";
+  const std::string size = fmt::format("{:.3g} cells ({}{}) at p = {}: about {:.3g} unknowns", cells, counts,
+                                       scene.refinements ? fmt::format(", {} refinements", scene.refinements) : "",
+                                       scene.p.rule.empty() ? std::to_string(scene.p.value) : "its rule", dofs);
+  if (dofs > 2147483647.0) throw_bad_input(scene.file, keys, size, "at most 2^31 - 1 unknowns (32-bit indices)");
   if (bytes > memory.bytes)
     throw_bad_input(
-        scene.file, "domain.n_x, domain.n_y", size,
+        scene.file, keys, size,
         fmt::format("needs about {:.3g} GB (1.2 KB per unknown), more than {}", bytes / 1e9, memory.describe()));
 }
 

@@ -1,0 +1,132 @@
+// Trace-multiplier couplings on flat contact surfaces of hexahedral meshes.
+#include "assembly/surface_coupling.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/LU>
+#include <Eigen/SparseCore>
+#include <cmath>
+
+#include "basis/lobatto.hpp"
+#include "basis/quadrature.hpp"
+#include "core/error.hpp"
+
+namespace hpcontact::assembly {
+
+namespace {
+
+/// The local coordinates (u, v) ∈ [-1,1]² of the plane point a on a face whose corners (tensor
+/// order of its free axes) are `corners`: the inverse of the bilinear map by Newton's method
+/// (one step on a parallelogram).
+Eigen::Vector2d face_coordinates(const std::array<Eigen::Vector2d, 4>& corners, const Eigen::Vector2d& a) {
+  Eigen::Vector2d t = Eigen::Vector2d::Zero();
+  for (int step = 0; step < 30; ++step) {
+    Eigen::Vector2d x = Eigen::Vector2d::Zero();
+    Eigen::Matrix2d jacobian = Eigen::Matrix2d::Zero();
+    for (int k = 0; k < 4; ++k) {
+      const double su = (k & 1) ? 1.0 : -1.0, sv = (k & 2) ? 1.0 : -1.0;
+      const double fu = 0.5 * (1.0 + su * t(0)), fv = 0.5 * (1.0 + sv * t(1));
+      x += fu * fv * corners[k];
+      jacobian.col(0) += 0.5 * su * fv * corners[k];
+      jacobian.col(1) += 0.5 * sv * fu * corners[k];
+    }
+    const Eigen::Vector2d update = jacobian.inverse() * (a - x);
+    t += update;
+    if (update.lpNorm<Eigen::Infinity>() < 1e-15) break;
+  }
+  return t;
+}
+
+/// The corners of a trace face in plane coordinates, in the tensor order of its free axes.
+std::array<Eigen::Vector2d, 4> face_corners(const mesh::FlatContactSurface& surface, const mesh::BoundaryFace& face) {
+  const mesh::SolidMesh& mesh = surface.mesh();
+  std::array<Eigen::Vector2d, 4> corners;
+  for (int k = 0; k < 4; ++k)
+    corners[k] = surface.to_plane(mesh.vertex(mesh.cell(face.cell)[mesh::kHexFaceVertices[face.local_face][k]]));
+  return corners;
+}
+
+}  // namespace
+
+Eigen::Vector3d face_point_in_cell(const mesh::FlatContactSurface& surface, const mesh::BoundaryFace& face,
+                                   const Eigen::Vector2d& a) {
+  const Eigen::Vector2d t = face_coordinates(face_corners(surface, face), a);
+  Eigen::Vector3d xi;
+  xi(face.local_face / 2) = face.local_face % 2 == 0 ? -1.0 : 1.0;
+  xi(mesh::kHexFaceAxes[face.local_face][0]) = t(0);
+  xi(mesh::kHexFaceAxes[face.local_face][1]) = t(1);
+  return xi;
+}
+
+linalg::Coupling surface_coupling(const space::SolidH1Space& space, const space::SurfaceMultiplierSpace& multipliers,
+                                  const SolidFunction& weight) {
+  const mesh::SurfaceMultiplierMesh& multiplier_mesh = multipliers.mesh();
+  const mesh::FlatContactSurface& surface = multiplier_mesh.surface();
+  HPC_VERIFY(&surface.mesh() == &space.mesh(), "multipliers on Γ_C of the space's mesh");
+  const mesh::SolidMesh& mesh = space.mesh();
+  std::vector<Eigen::Triplet<double>> entries;
+  for (const auto& overlap : multiplier_mesh.overlaps()) {
+    const mesh::BoundaryFace& face = surface.faces()[overlap.face];
+    const int cell = face.cell, axis = face.local_face / 2, side = face.local_face % 2;
+    const auto [u_axis, v_axis] = mesh::kHexFaceAxes[face.local_face];
+    const std::array<Eigen::Vector2d, 4> corners = face_corners(surface, face);
+    // The cell's shapes that do not vanish on the face: index `side` (N_0 at −1, N_1 at +1) along its normal axis.
+    const auto shapes = space.cell_shapes(cell);
+    std::vector<int> on_face;
+    for (int s = 0; s < static_cast<int>(shapes.size()); ++s)
+      if (shapes[s].index[axis] == side && shapes[s].dof >= 0) on_face.push_back(s);
+    const int p = space.cell_degree(cell);
+    const basis::QuadratureRule2D& rule = basis::collapsed_triangle_rule(p + multipliers.degree() + 2);
+    Eigen::MatrixXd local = Eigen::MatrixXd::Zero(multipliers.per_cell(), static_cast<Eigen::Index>(on_face.size()));
+    Eigen::VectorXd along_u(p + 1), along_v(p + 1), slopes(p + 1);
+    const auto& polygon = overlap.polygon;
+    for (std::size_t k = 1; k + 1 < polygon.size(); ++k) {
+      const Eigen::Vector2d& a0 = polygon[0];
+      const Eigen::Vector2d e1 = polygon[k] - a0, e2 = polygon[k + 1] - a0;
+      const double area_factor = std::abs(e1(0) * e2(1) - e1(1) * e2(0)) / 4.0;  // reference triangle area 2
+      for (std::size_t q = 0; q < rule.weights.size(); ++q) {
+        const Eigen::Vector2d a = a0 + 0.5 * (rule.xi[q] + 1.0) * e1 + 0.5 * (rule.eta[q] + 1.0) * e2;
+        double w = rule.weights[q] * area_factor;
+        if (weight) w *= weight(surface.from_plane(a));
+        const Eigen::Vector2d t = face_coordinates(corners, a);
+        basis::lobatto_values(p, t(0), along_u, slopes);
+        basis::lobatto_values(p, t(1), along_v, slopes);
+        const Eigen::VectorXd ell = multipliers.values(overlap.cell, a);
+        for (std::size_t j = 0; j < on_face.size(); ++j) {
+          const auto& shape = shapes[on_face[j]];
+          const double phi = shape.sign * along_u(shape.index[u_axis]) * along_v(shape.index[v_axis]);
+          local.col(static_cast<Eigen::Index>(j)) += w * phi * ell;
+        }
+      }
+    }
+    const int first = multipliers.first_dof(overlap.cell);
+    for (Eigen::Index i = 0; i < local.rows(); ++i)
+      for (std::size_t j = 0; j < on_face.size(); ++j)
+        entries.emplace_back(first + static_cast<int>(i), shapes[on_face[j]].dof,
+                             local(i, static_cast<Eigen::Index>(j)));
+  }
+  linalg::Coupling b(multipliers.n_dofs(), space.n_dofs());
+  b.setFromTriplets(entries.begin(), entries.end());
+  return linalg::squeezed(std::move(b));
+}
+
+Eigen::VectorXd surface_multiplier_load(const space::SurfaceMultiplierSpace& multipliers, const SolidFunction& g) {
+  const mesh::SurfaceMultiplierMesh& multiplier_mesh = multipliers.mesh();
+  const basis::QuadratureRule1D& rule = basis::gauss_legendre(multipliers.degree() + 6);
+  Eigen::VectorXd load = Eigen::VectorXd::Zero(multipliers.n_dofs());
+  for (int c = 0; c < multiplier_mesh.n_cells(); ++c) {
+    const auto [lo, hi] = multiplier_mesh.cell_bounds(c);
+    const Eigen::Vector2d half = 0.5 * (hi - lo);
+    for (std::size_t i = 0; i < rule.points.size(); ++i)
+      for (std::size_t j = 0; j < rule.points.size(); ++j) {
+        const Eigen::Vector2d a =
+            lo + (Eigen::Array2d(rule.points[i] + 1.0, rule.points[j] + 1.0) * half.array()).matrix();
+        const double w = rule.weights[i] * rule.weights[j] * half.prod();
+        load.segment(multipliers.first_dof(c), multipliers.per_cell()) +=
+            w * g(multiplier_mesh.surface().from_plane(a)) * multipliers.values(c, a);
+      }
+  }
+  return load;
+}
+
+}  // namespace hpcontact::assembly

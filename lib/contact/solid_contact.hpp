@@ -1,0 +1,50 @@
+// The paper's scalar contact problems (9), (13), (15) on a hexahedral mesh with a flat Γ_C and a
+// surface multiplier mesh T_{C,H}, condensed onto Γ_C as in 2-D:
+//     [K  Bᵀ] [u]   [F]
+//     [B  0 ] [λ] ≤ [G]   (complementarity on the multiplier's constraint set)
+// With u = K⁻¹(F − Bᵀλ) the multiplier solves min ½ λᵀ S λ − λᵀ d, S = B K⁻¹ Bᵀ (dense, from the
+// trailing block of the condensed factor), d = B K⁻¹ F − G. Multipliers are nodal at the tensor
+// Chebyshev–Lobatto points, so the constraints are bounds on the coefficients.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "assembly/solid_load.hpp"
+#include "contact/box_qp.hpp"
+#include "contact/contact_problem.hpp"
+#include "contact/inequality_qp.hpp"
+#include "contact/qp_report.hpp"
+#include "space/solid_space.hpp"
+#include "space/surface_multiplier_space.hpp"
+
+namespace hpcontact::contact {
+
+struct SolidContactSetup {
+  const space::SolidH1Space* space = nullptr;
+  const space::SurfaceMultiplierSpace* multipliers = nullptr;
+  ContactProblem problem = ContactProblem::signorini;
+  assembly::SolidFunction f;         ///< volume load
+  assembly::SolidFunction obstacle;  ///< g: (9) only
+  assembly::SolidFunction bound;     ///< s ≥ 0: (13) and (15)
+  BoxQpOptions qp;
+  InequalityQpOptions interior_point;
+};
+
+struct SolidContactSolution {
+  Eigen::VectorXd u;             ///< coefficients on the space
+  Eigen::VectorXd lambda;        ///< λ at the nodal points of SurfaceMultiplierSpace
+  Eigen::VectorXd lower, upper;  ///< the bounds of λ
+  /// (ℓ_i, γ_C u − g) (9), (ℓ_i, s γ_C u) (13) or (ℓ_i, γ_C u) (15): the dual gradient −(Sλ − d).
+  Eigen::VectorXd gap;
+  double energy = 0.0;  ///< ½ a(u, u) − F(u)
+  int n_trace = 0;      ///< trace dofs ordered last in the factor
+  QpReport qp;
+  struct Seconds {
+    double assembly = 0.0, factorization = 0.0, condensation = 0.0, qp = 0.0, recovery = 0.0;
+  } seconds;
+};
+
+/// @throws InputError for missing data or s < 0 at a nodal point; NumericalError if the QP fails.
+SolidContactSolution solve_solid_contact(const SolidContactSetup& setup);
+
+}  // namespace hpcontact::contact

@@ -1,0 +1,186 @@
+// Flat contact surfaces of hexahedral meshes, their structured multiplier meshes and the clipped
+// overlaps of trace faces and multiplier cells.
+#include "mesh/contact_surface.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+
+namespace hpcontact::mesh {
+
+namespace {
+
+double signed_area(const std::vector<Eigen::Vector2d>& polygon) {
+  double twice = 0.0;
+  for (std::size_t k = 0; k < polygon.size(); ++k) {
+    const Eigen::Vector2d& a = polygon[k];
+    const Eigen::Vector2d& b = polygon[(k + 1) % polygon.size()];
+    twice += a(0) * b(1) - a(1) * b(0);
+  }
+  return 0.5 * twice;
+}
+
+/// The outward unit normal of a boundary face at its centre.
+Eigen::Vector3d outward_normal(const SolidMesh& mesh, const BoundaryFace& face) {
+  Eigen::Vector3d xi = Eigen::Vector3d::Zero();
+  const int axis = face.local_face / 2;
+  const double side = face.local_face % 2 == 0 ? -1.0 : 1.0;
+  xi(axis) = side;
+  const Eigen::Matrix3d j = mesh.jacobian(face.cell, xi);
+  Eigen::Vector3d n = j.col(kHexFaceAxes[face.local_face][0]).cross(j.col(kHexFaceAxes[face.local_face][1]));
+  n.normalize();
+  return n.dot(side * j.col(axis)) > 0.0 ? n : Eigen::Vector3d(-n);
+}
+
+/// The face's vertices in plane coordinates, counterclockwise.
+std::vector<Eigen::Vector2d> face_polygon(const FlatContactSurface& surface, const BoundaryFace& face) {
+  const auto& corners = kHexFaceVertices[face.local_face];
+  std::vector<Eigen::Vector2d> polygon;
+  for (int k : {0, 1, 3, 2})
+    polygon.push_back(surface.to_plane(surface.mesh().vertex(surface.mesh().cell(face.cell)[corners[k]])));
+  if (signed_area(polygon) < 0.0) std::reverse(polygon.begin(), polygon.end());
+  return polygon;
+}
+
+}  // namespace
+
+FlatContactSurface::FlatContactSurface(const SolidMesh& mesh, const std::vector<std::string>& labels,
+                                       const std::string& origin)
+    : mesh_(&mesh) {
+  for (const auto& face : mesh.boundary_faces())
+    if (std::find(labels.begin(), labels.end(), face.label) != labels.end()) faces_.push_back(face);
+  if (faces_.empty())
+    throw InputError(
+        fmt::format("{}: no boundary face is labelled {}: Γ_C is empty", origin, fmt::join(labels, " or ")));
+  normal_ = outward_normal(mesh, faces_[0]);
+  origin_ = mesh.face_centre(mesh.cell_face(faces_[0].cell, faces_[0].local_face));
+  int along = 0;
+  for (int k = 1; k < 3; ++k)
+    if (std::abs(normal_(k)) < std::abs(normal_(along)) - 1e-12) along = k;
+  e1_ = Eigen::Vector3d::Unit(along) - normal_(along) * normal_;
+  e1_.normalize();
+  e2_ = normal_.cross(e1_);
+  double size = 0.0;
+  for (const auto& face : faces_)
+    for (int v : kHexFaceVertices[face.local_face])
+      size = std::max(size, (mesh.vertex(mesh.cell(face.cell)[v]) - origin_).norm());
+  bounds_ = {Eigen::Vector2d::Constant(INFINITY), Eigen::Vector2d::Constant(-INFINITY)};
+  for (const auto& face : faces_) {
+    if (outward_normal(mesh, face).dot(normal_) < 1.0 - 1e-10)
+      throw InputError(
+          fmt::format("{}: Γ_C is not flat: the normals of its faces differ (3-D contact surfaces are "
+                      "planar for now)",
+                      origin));
+    for (int v : kHexFaceVertices[face.local_face]) {
+      const SolidPoint& x = mesh.vertex(mesh.cell(face.cell)[v]);
+      if (std::abs(normal_.dot(x - origin_)) > 1e-10 * size)
+        throw InputError(
+            fmt::format("{}: Γ_C is not flat: vertex ({}, {}, {}) lies {:.3g} off the plane of its "
+                        "first face (3-D contact surfaces are planar for now)",
+                        origin, x(0), x(1), x(2), normal_.dot(x - origin_)));
+      const Eigen::Vector2d a = to_plane(x);
+      bounds_[0] = bounds_[0].cwiseMin(a);
+      bounds_[1] = bounds_[1].cwiseMax(a);
+    }
+    area_ += signed_area(face_polygon(*this, face));
+  }
+}
+
+Eigen::Vector2d FlatContactSurface::to_plane(const SolidPoint& x) const {
+  return {e1_.dot(x - origin_), e2_.dot(x - origin_)};
+}
+
+SolidPoint FlatContactSurface::from_plane(const Eigen::Vector2d& a) const { return origin_ + a(0) * e1_ + a(1) * e2_; }
+
+bool FlatContactSurface::is_rectangle() const {
+  const Eigen::Vector2d extent = bounds_[1] - bounds_[0];
+  return std::abs(area_ - extent.prod()) <= 1e-10 * extent.prod();
+}
+
+std::vector<Eigen::Vector2d> clip_to_rectangle(const std::vector<Eigen::Vector2d>& polygon, const Eigen::Vector2d& lo,
+                                               const Eigen::Vector2d& hi) {
+  // Sutherland–Hodgman: clip against the four half-planes in turn.
+  std::vector<Eigen::Vector2d> current = polygon;
+  for (int side = 0; side < 4 && !current.empty(); ++side) {
+    const int axis = side / 2;
+    const double bound = side % 2 == 0 ? lo(axis) : hi(axis), direction = side % 2 == 0 ? 1.0 : -1.0;
+    const auto inside = [&](const Eigen::Vector2d& x) { return direction * (x(axis) - bound) >= 0.0; };
+    std::vector<Eigen::Vector2d> next;
+    for (std::size_t k = 0; k < current.size(); ++k) {
+      const Eigen::Vector2d& a = current[k];
+      const Eigen::Vector2d& b = current[(k + 1) % current.size()];
+      if (inside(a)) next.push_back(a);
+      if (inside(a) != inside(b)) {
+        const double t = (bound - a(axis)) / (b(axis) - a(axis));
+        Eigen::Vector2d crossing = a + t * (b - a);
+        crossing(axis) = bound;  // exactly on the side, so that neighbouring cells share it
+        next.push_back(crossing);
+      }
+    }
+    current = std::move(next);
+  }
+  return current;
+}
+
+SurfaceMultiplierMesh::SurfaceMultiplierMesh(const FlatContactSurface& surface, std::array<int, 2> cells,
+                                             const std::string& origin)
+    : surface_(&surface), cells_(cells) {
+  for (int k = 0; k < 2; ++k)
+    if (cells_[k] < 1)
+      throw InputError(
+          fmt::format("{}: T_{{C,H}} has {} cells along its axis {}; at least 1", origin, cells_[k], k + 1));
+  if (!surface.is_rectangle())
+    throw InputError(
+        fmt::format("{}: Γ_C (area {:.6g}) is not the rectangle that bounds it (area {:.6g}); 3-D "
+                    "multiplier meshes are grids on rectangular contact surfaces for now",
+                    origin, surface.area(), (surface.bounds()[1] - surface.bounds()[0]).prod()));
+}
+
+std::array<Eigen::Vector2d, 2> SurfaceMultiplierMesh::cell_bounds(int c) const {
+  const auto& [lo, hi] = surface_->bounds();
+  const int i = c % cells_[0], j = c / cells_[0];
+  const Eigen::Vector2d step((hi(0) - lo(0)) / cells_[0], (hi(1) - lo(1)) / cells_[1]);
+  // The last cell ends exactly at the bound (no rounding gap at the far side).
+  const Eigen::Vector2d lower(lo(0) + i * step(0), lo(1) + j * step(1));
+  const Eigen::Vector2d upper(i + 1 == cells_[0] ? hi(0) : lo(0) + (i + 1) * step(0),
+                              j + 1 == cells_[1] ? hi(1) : lo(1) + (j + 1) * step(1));
+  return {lower, upper};
+}
+
+std::vector<SurfaceMultiplierMesh::Overlap> SurfaceMultiplierMesh::overlaps() const {
+  const auto& [lo, hi] = surface_->bounds();
+  const double scale = (hi - lo).prod();
+  std::vector<Overlap> out;
+  const auto& faces = surface_->faces();
+  for (int f = 0; f < static_cast<int>(faces.size()); ++f) {
+    const std::vector<Eigen::Vector2d> polygon = face_polygon(*surface_, faces[f]);
+    Eigen::Vector2d low = polygon[0], high = polygon[0];
+    for (const auto& x : polygon) {
+      low = low.cwiseMin(x);
+      high = high.cwiseMax(x);
+    }
+    // The range of grid cells the face's bounding box meets.
+    std::array<int, 2> first{}, last{};
+    for (int k = 0; k < 2; ++k) {
+      const double step = (hi(k) - lo(k)) / cells_[k];
+      first[k] = std::clamp(static_cast<int>(std::floor((low(k) - lo(k)) / step)) - 1, 0, cells_[k] - 1);
+      last[k] = std::clamp(static_cast<int>(std::floor((high(k) - lo(k)) / step)) + 1, 0, cells_[k] - 1);
+    }
+    for (int j = first[1]; j <= last[1]; ++j)
+      for (int i = first[0]; i <= last[0]; ++i) {
+        const int c = i + cells_[0] * j;
+        const auto [cell_lo, cell_hi] = cell_bounds(c);
+        std::vector<Eigen::Vector2d> piece = clip_to_rectangle(polygon, cell_lo, cell_hi);
+        if (piece.size() < 3 || signed_area(piece) <= 1e-14 * scale) continue;
+        out.push_back({f, c, std::move(piece)});
+      }
+  }
+  return out;
+}
+
+}  // namespace hpcontact::mesh

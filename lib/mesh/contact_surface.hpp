@@ -1,0 +1,80 @@
+// A flat contact surface Γ_C of a hexahedral mesh (the boundary faces of some labels, lying in
+// one plane) in in-plane coordinates, and the multiplier mesh T_{C,H} on it: a structured grid of
+// rectangles independent of the trace faces, with each rectangle's overlaps with the trace faces
+// found by polygon clipping (Sutherland–Hodgman), where the couplings are integrated.
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+#include <string>
+#include <vector>
+
+#include "mesh/solid_mesh.hpp"
+
+namespace hpcontact::mesh {
+
+/// Γ_C: the boundary faces labelled with one of `labels`, all in one plane.
+class FlatContactSurface {
+ public:
+  /// @throws InputError naming `origin` if no boundary face has such a label, or the faces do not
+  /// lie in one plane (to 1e-10 of the surface's size).
+  FlatContactSurface(const SolidMesh& mesh, const std::vector<std::string>& labels, const std::string& origin);
+
+  const SolidMesh& mesh() const { return *mesh_; }
+  /// The boundary faces of Γ_C (entries of mesh().boundary_faces()).
+  const std::vector<BoundaryFace>& faces() const { return faces_; }
+  /// The outward unit normal n of Γ_C.
+  const Eigen::Vector3d& normal() const { return normal_; }
+  /// In-plane coordinates: x = origin + a e_1 + b e_2 (e_1, e_2, n a right-handed orthonormal
+  /// frame; e_1 along the coordinate axis most nearly in the plane, the first one on a tie).
+  Eigen::Vector2d to_plane(const SolidPoint& x) const;
+  SolidPoint from_plane(const Eigen::Vector2d& a) const;
+  /// The bounding rectangle of Γ_C in plane coordinates: (lower corner, upper corner).
+  const std::array<Eigen::Vector2d, 2>& bounds() const { return bounds_; }
+  /// The area of Γ_C (sum of its faces' areas).
+  double area() const { return area_; }
+  /// Whether Γ_C is exactly its bounding rectangle (to 1e-10 in area).
+  bool is_rectangle() const;
+
+ private:
+  const SolidMesh* mesh_;
+  std::vector<BoundaryFace> faces_;
+  Eigen::Vector3d normal_, origin_, e1_, e2_;
+  std::array<Eigen::Vector2d, 2> bounds_;
+  double area_ = 0.0;
+};
+
+/// The convex polygon (counterclockwise vertices) common to a convex counterclockwise polygon and
+/// an axis-aligned rectangle [lo, hi]; empty where they do not overlap in area.
+std::vector<Eigen::Vector2d> clip_to_rectangle(const std::vector<Eigen::Vector2d>& polygon, const Eigen::Vector2d& lo,
+                                               const Eigen::Vector2d& hi);
+
+/// T_{C,H}: an m_1 × m_2 grid of equal rectangles over the bounding rectangle of Γ_C, cell
+/// (i, j) = i + m_1 j. Γ_C must be that rectangle.
+class SurfaceMultiplierMesh {
+ public:
+  /// @throws InputError naming `origin` if m_1 or m_2 < 1 or Γ_C is not a rectangle.
+  SurfaceMultiplierMesh(const FlatContactSurface& surface, std::array<int, 2> cells, const std::string& origin);
+
+  const FlatContactSurface& surface() const { return *surface_; }
+  int n_cells() const { return cells_[0] * cells_[1]; }
+  const std::array<int, 2>& cells_per_axis() const { return cells_; }
+  /// Lower and upper corner of cell c in plane coordinates.
+  std::array<Eigen::Vector2d, 2> cell_bounds(int c) const;
+
+  /// The piece of one trace face inside one cell of T_{C,H}, where trace shapes and multipliers
+  /// are both polynomial: the couplings are integrated over these.
+  struct Overlap {
+    int face = -1;                         ///< index into surface().faces()
+    int cell = -1;                         ///< cell of T_{C,H}
+    std::vector<Eigen::Vector2d> polygon;  ///< convex, counterclockwise, plane coordinates
+  };
+  /// Every overlap of positive area (relative 1e-14), by face then cell.
+  std::vector<Overlap> overlaps() const;
+
+ private:
+  const FlatContactSurface* surface_;
+  std::array<int, 2> cells_;
+};
+
+}  // namespace hpcontact::mesh

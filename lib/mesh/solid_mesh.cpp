@@ -1,0 +1,223 @@
+// Topology (shared edges and faces, their orientation) and trilinear maps of hexahedral meshes;
+// box meshes.
+#include "mesh/solid_mesh.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <map>
+
+#include "core/error.hpp"
+
+namespace hpcontact::mesh {
+
+namespace {
+
+/// The trilinear vertex function φ_v and its gradient at ξ.
+double vertex_function(int v, const Eigen::Vector3d& xi, Eigen::Vector3d* gradient) {
+  std::array<double, 3> factor{}, slope{};
+  for (int k = 0; k < 3; ++k) {
+    const double side = ((v >> k) & 1) != 0 ? 1.0 : -1.0;
+    factor[k] = 0.5 * (1.0 + side * xi(k));
+    slope[k] = 0.5 * side;
+  }
+  if (gradient != nullptr)
+    *gradient << slope[0] * factor[1] * factor[2], factor[0] * slope[1] * factor[2], factor[0] * factor[1] * slope[2];
+  return factor[0] * factor[1] * factor[2];
+}
+
+std::array<int, 4> sorted(std::array<int, 4> quad) {
+  std::sort(quad.begin(), quad.end());
+  return quad;
+}
+
+/// The face's vertices (tensor order of the cell's face) in the face's own order: the lowest
+/// first, then the lower of its two neighbours, the higher, and the opposite corner.
+std::array<int, 4> canonical_face(const std::array<int, 4>& tensor) {
+  const int first = static_cast<int>(std::min_element(tensor.begin(), tensor.end()) - tensor.begin());
+  const int across_u = first ^ 1, across_v = first ^ 2;
+  const bool u_first = tensor[across_u] < tensor[across_v];
+  return {tensor[first], tensor[u_first ? across_u : across_v], tensor[u_first ? across_v : across_u],
+          tensor[first ^ 3]};
+}
+
+}  // namespace
+
+SolidMesh::SolidMesh(std::vector<SolidPoint> vertices, std::vector<std::array<int, 8>> cells, const std::string& origin,
+                     const std::vector<std::pair<std::array<int, 4>, std::string>>& boundary_labels)
+    : vertices_(std::move(vertices)), cells_(std::move(cells)) {
+  if (cells_.empty()) throw InputError(fmt::format("{}: the mesh has no hexahedron", origin));
+  for (std::size_t c = 0; c < cells_.size(); ++c)
+    for (int v : cells_[c])
+      if (v < 0 || v >= n_vertices())
+        throw InputError(
+            fmt::format("{}: hexahedron {} names vertex {}, outside 0 … {}", origin, c, v, n_vertices() - 1));
+  check_cells(origin);
+  build_edges();
+  build_faces(origin);
+  std::map<std::array<int, 4>, std::string> labels;
+  for (const auto& [quad, label] : boundary_labels) labels[sorted(quad)] = label;
+  for (int f = 0; f < n_faces(); ++f) {
+    if (!is_boundary_face(f)) continue;
+    const int c = face_cells_[f][0];
+    const int local =
+        static_cast<int>(std::find(cell_faces_[c].begin(), cell_faces_[c].end(), f) - cell_faces_[c].begin());
+    const auto found = labels.find(sorted(faces_[f]));
+    boundary_faces_.push_back({c, local, found == labels.end() ? std::string() : found->second});
+  }
+}
+
+void SolidMesh::check_cells(const std::string& origin) const {
+  for (int c = 0; c < n_cells(); ++c)
+    for (int v = 0; v < 8; ++v) {
+      const Eigen::Vector3d corner((v & 1) ? 1.0 : -1.0, (v & 2) ? 1.0 : -1.0, (v & 4) ? 1.0 : -1.0);
+      const Eigen::Matrix3d j = jacobian(c, corner);
+      // Relative to the cell's size, so that a tiny but valid cell passes.
+      const double scale = j.colwise().norm().prod();
+      if (!(j.determinant() > 1e-12 * scale))
+        throw InputError(fmt::format(
+            "{}: hexahedron {} is inverted or degenerate at its vertex {} (Jacobian determinant {:.3g}); its "
+            "vertices must be listed in tensor order (vertex a + 2b + 4c at corner (a, b, c)) with a positive volume",
+            origin, c, cells_[c][v], j.determinant()));
+    }
+}
+
+void SolidMesh::build_edges() {
+  std::map<std::array<int, 2>, int> index;
+  cell_edges_.resize(cells_.size());
+  for (int c = 0; c < n_cells(); ++c)
+    for (int e = 0; e < 12; ++e) {
+      int a = cells_[c][kHexEdgeVertices[e][0]], b = cells_[c][kHexEdgeVertices[e][1]];
+      if (a > b) std::swap(a, b);
+      const auto [at, added] = index.try_emplace({a, b}, n_edges());
+      if (added) edges_.push_back({a, b});
+      cell_edges_[c][e] = at->second;
+    }
+}
+
+void SolidMesh::build_faces(const std::string& origin) {
+  std::map<std::array<int, 4>, int> index;
+  cell_faces_.resize(cells_.size());
+  for (int c = 0; c < n_cells(); ++c)
+    for (int f = 0; f < 6; ++f) {
+      std::array<int, 4> tensor{};
+      for (int k = 0; k < 4; ++k) tensor[k] = cells_[c][kHexFaceVertices[f][k]];
+      const auto [at, added] = index.try_emplace(sorted(tensor), n_faces());
+      if (added) {
+        faces_.push_back(canonical_face(tensor));
+        face_cells_.push_back({c, -1});
+      } else if (face_cells_[at->second][1] >= 0) {
+        throw InputError(fmt::format("{}: the face of vertices {}, {}, {}, {} is shared by more than two hexahedra",
+                                     origin, tensor[0], tensor[1], tensor[2], tensor[3]));
+      } else {
+        face_cells_[at->second][1] = c;
+      }
+      cell_faces_[c][f] = at->second;
+    }
+}
+
+void SolidMesh::label_boundary_faces(const std::function<bool(const SolidPoint& centre)>& where,
+                                     const std::string& label) {
+  for (auto& face : boundary_faces_)
+    if (where(face_centre(cell_faces_[face.cell][face.local_face]))) face.label = label;
+}
+
+int SolidMesh::edge_sign(int c, int local_edge) const {
+  return cells_[c][kHexEdgeVertices[local_edge][0]] < cells_[c][kHexEdgeVertices[local_edge][1]] ? 1 : -1;
+}
+
+SolidMesh::FaceOrientation SolidMesh::face_orientation(int c, int local_face) const {
+  std::array<int, 4> tensor{};
+  for (int k = 0; k < 4; ++k) tensor[k] = cells_[c][kHexFaceVertices[local_face][k]];
+  const std::array<int, 4>& own = faces_[cell_faces_[c][local_face]];
+  const auto local_of = [&](int vertex) {
+    return static_cast<int>(std::find(tensor.begin(), tensor.end(), vertex) - tensor.begin());
+  };
+  const int first = local_of(own[0]), next = local_of(own[1]);
+  FaceOrientation orientation;
+  // S runs from the first corner to the next: along u if they differ in the u bit.
+  orientation.swapped = (first ^ next) == 2;
+  orientation.sign_s = (first & (orientation.swapped ? 2 : 1)) == 0 ? 1 : -1;
+  orientation.sign_t = (first & (orientation.swapped ? 1 : 2)) == 0 ? 1 : -1;
+  return orientation;
+}
+
+bool SolidMesh::is_affine(int c) const {
+  // Trilinear maps are affine exactly when each edge vector equals its three parallels.
+  const auto& x = [&](int v) -> const SolidPoint& { return vertices_[cells_[c][v]]; };
+  const double size = (x(7) - x(0)).norm();
+  for (int axis = 0; axis < 3; ++axis) {
+    const SolidPoint reference = x(kHexEdgeVertices[4 * axis][1]) - x(kHexEdgeVertices[4 * axis][0]);
+    for (int k = 1; k < 4; ++k) {
+      const auto& edge = kHexEdgeVertices[4 * axis + k];
+      if ((x(edge[1]) - x(edge[0]) - reference).norm() > 1e-13 * size) return false;
+    }
+  }
+  return true;
+}
+
+SolidPoint SolidMesh::map(int c, const Eigen::Vector3d& xi) const {
+  SolidPoint x = SolidPoint::Zero();
+  for (int v = 0; v < 8; ++v) x += vertex_function(v, xi, nullptr) * vertices_[cells_[c][v]];
+  return x;
+}
+
+Eigen::Matrix3d SolidMesh::jacobian(int c, const Eigen::Vector3d& xi) const {
+  Eigen::Matrix3d j = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d gradient;
+  for (int v = 0; v < 8; ++v) {
+    vertex_function(v, xi, &gradient);
+    j += vertices_[cells_[c][v]] * gradient.transpose();
+  }
+  return j;
+}
+
+SolidPoint SolidMesh::face_centre(int f) const {
+  SolidPoint centre = SolidPoint::Zero();
+  for (int v : faces_[f]) centre += 0.25 * vertices_[v];
+  return centre;
+}
+
+SolidMesh make_box_mesh(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, const std::array<int, 3>& n) {
+  for (int k = 0; k < 3; ++k) {
+    if (n[k] < 1) throw InputError(fmt::format("box mesh: {} cells along axis {}; at least 1", n[k], "xyz"[k]));
+    if (!(hi(k) > lo(k)))
+      throw InputError(fmt::format("box mesh: the box is empty along {} ([{}, {}])", "xyz"[k], lo(k), hi(k)));
+  }
+  const auto vertex = [&](int i, int j, int k) { return i + (n[0] + 1) * (j + (n[1] + 1) * k); };
+  std::vector<SolidPoint> vertices;
+  vertices.reserve(static_cast<std::size_t>(n[0] + 1) * (n[1] + 1) * (n[2] + 1));
+  for (int k = 0; k <= n[2]; ++k)
+    for (int j = 0; j <= n[1]; ++j)
+      for (int i = 0; i <= n[0]; ++i) {
+        const Eigen::Vector3d t(double(i) / n[0], double(j) / n[1], double(k) / n[2]);
+        vertices.push_back(lo + (hi - lo).cwiseProduct(t));
+      }
+  std::vector<std::array<int, 8>> cells;
+  for (int k = 0; k < n[2]; ++k)
+    for (int j = 0; j < n[1]; ++j)
+      for (int i = 0; i < n[0]; ++i) {
+        std::array<int, 8> cell{};
+        for (int v = 0; v < 8; ++v) cell[v] = vertex(i + (v & 1), j + ((v >> 1) & 1), k + ((v >> 2) & 1));
+        cells.push_back(cell);
+      }
+  // Label each boundary face by the side of the box it lies on.
+  static const std::array<const char*, 6> names{"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
+  std::vector<std::pair<std::array<int, 4>, std::string>> labels;
+  for (const auto& cell : cells)
+    for (int f = 0; f < 6; ++f) {
+      const int axis = f / 2;
+      const double side = f % 2 == 0 ? lo(axis) : hi(axis);
+      std::array<int, 4> quad{};
+      bool on_side = true;
+      for (int q = 0; q < 4; ++q) {
+        quad[q] = cell[kHexFaceVertices[f][q]];
+        on_side = on_side && vertices[quad[q]](axis) == side;
+      }
+      if (on_side) labels.emplace_back(quad, names[f]);
+    }
+  return SolidMesh(std::move(vertices), std::move(cells), "box mesh", labels);
+}
+
+}  // namespace hpcontact::mesh

@@ -1,0 +1,59 @@
+// Point values and ParaView grids of functions on hexahedral meshes.
+#include "postprocess/solid_field.hpp"
+
+#include <array>
+
+#include "basis/lobatto.hpp"
+
+namespace hpcontact::postprocess {
+
+double solid_value(const space::SolidH1Space& space, const Eigen::VectorXd& coefficients, int cell,
+                   const Eigen::Vector3d& xi) {
+  const int p = space.cell_degree(cell);
+  std::array<Eigen::VectorXd, 3> values;
+  Eigen::VectorXd slopes(p + 1);
+  for (int d = 0; d < 3; ++d) {
+    values[d].resize(p + 1);
+    basis::lobatto_values(p, xi(d), values[d], slopes);
+  }
+  double sum = 0.0;
+  for (const auto& shape : space.cell_shapes(cell))
+    if (shape.dof >= 0)
+      sum += shape.sign * coefficients(shape.dof) * values[0](shape.index[0]) * values[1](shape.index[1]) *
+             values[2](shape.index[2]);
+  return sum;
+}
+
+io::VtuGrid solid_vtu_grid(const space::SolidH1Space& space, const Eigen::VectorXd& coefficients) {
+  constexpr std::uint8_t kVtkHexahedron = 12;
+  io::VtuGrid grid;
+  io::VtuGrid::PointArray u{"u", 1, {}};
+  const mesh::SolidMesh& mesh = space.mesh();
+  for (int c = 0; c < mesh.n_cells(); ++c) {
+    const int p = space.cell_degree(c), first = static_cast<int>(grid.n_points());
+    const auto point = [&](int i, int j, int k) { return first + i + (p + 1) * (j + (p + 1) * k); };
+    for (int k = 0; k <= p; ++k)
+      for (int j = 0; j <= p; ++j)
+        for (int i = 0; i <= p; ++i) {
+          const Eigen::Vector3d xi(-1.0 + 2.0 * i / p, -1.0 + 2.0 * j / p, -1.0 + 2.0 * k / p);
+          const mesh::SolidPoint x = mesh.map(c, xi);
+          grid.xyz.insert(grid.xyz.end(), {x(0), x(1), x(2)});
+          u.values.push_back(solid_value(space, coefficients, c, xi));
+        }
+    for (int k = 0; k < p; ++k)
+      for (int j = 0; j < p; ++j)
+        for (int i = 0; i < p; ++i) {
+          for (const auto& [a, b] : {std::pair{0, 0}, {1, 0}, {1, 1}, {0, 1}})
+            grid.connectivity.push_back(point(i + a, j + b, k));
+          for (const auto& [a, b] : {std::pair{0, 0}, {1, 0}, {1, 1}, {0, 1}})
+            grid.connectivity.push_back(point(i + a, j + b, k + 1));
+          grid.offsets.push_back(static_cast<std::int64_t>(grid.connectivity.size()));
+          grid.types.push_back(kVtkHexahedron);
+          grid.degrees.push_back(p);
+        }
+  }
+  grid.point_data.push_back(std::move(u));
+  return grid;
+}
+
+}  // namespace hpcontact::postprocess

@@ -1,0 +1,100 @@
+// 3-D scenes through `hpcontact solve`: the extruded paper problems against the planar runs (energy
+// times the width), the boundary samples (weights summing to |Γ_C|, λ ≤ 0), the VTU of hexahedra,
+// and the keys, effects and commands 3-D scenes refuse with a message naming them.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "support/cli_runner.hpp"
+
+namespace hpcontact::testing {
+namespace {
+
+const std::string kExtruded = std::string(HPCONTACT_SOURCE_DIR) + "/studies/three_d/extruded_signorini.toml";
+const std::string kPlanar = std::string(HPCONTACT_SOURCE_DIR) + "/studies/paper/figure1_signorini.toml";
+
+nlohmann::json summary_of(const std::filesystem::path& out) {
+  std::ifstream file(out / "summary.json");
+  return nlohmann::json::parse(file);
+}
+
+TEST(SolidScene, ExtrudedSignoriniHasThePlanarEnergyTimesTheWidth) {
+  const auto dir = scratch("solid_extruded");
+  const auto solid = run("solve " + kExtruded + " --out " + (dir / "solid").string());
+  ASSERT_EQ(solid.exit_code, 0) << solid.output;
+  const auto planar = run("solve " + kPlanar + " --effects signorini --n 8 --out " + (dir / "planar").string());
+  ASSERT_EQ(planar.exit_code, 0) << planar.output;
+  const auto solid_summary = summary_of(dir / "solid"), planar_summary = summary_of(dir / "planar");
+  const double planar_energy = planar_summary.at("signorini").at("energy").get<double>();
+  EXPECT_NEAR(solid_summary.at("signorini").at("energy").get<double>(), 0.5 * planar_energy,
+              1e-10 * std::abs(planar_energy));
+  EXPECT_EQ(solid_summary.at("dimension").get<int>(), 3);
+  EXPECT_EQ(solid_summary.at("faces_on_contact").get<int>(), 8 * 2);
+  EXPECT_EQ(solid_summary.at("m").get<int>(), 4 * 1);
+  EXPECT_NE(solid.output.find("contact area"), std::string::npos) << solid.output;
+  // The samples: weights summing to |Γ_C| = 2 · 0.5, λ ≤ 0 (p_C = 1 nodal: exact between the
+  // points), the contact set a band x ∈ [−a, a] over the whole width: its area 0.5 times the planar length.
+  const CsvFile samples = read_csv(dir / "solid" / "boundary_signorini.csv");
+  EXPECT_EQ(samples.header_line(), "x,y,z,w,u,obstacle,lambda");
+  const auto columns = samples.numeric_columns();
+  double area = 0.0, largest = -INFINITY;
+  for (std::size_t k = 0; k < columns.at("w").size(); ++k) {
+    area += columns.at("w")[k];
+    largest = std::max(largest, columns.at("lambda")[k]);
+    EXPECT_NEAR(columns.at("z")[k], -1.0, 1e-14);
+  }
+  EXPECT_NEAR(area, 1.0, 1e-13);
+  EXPECT_LE(largest, 1e-12);
+  const double contact_area = solid_summary.at("signorini").at("contact_area").get<double>();
+  EXPECT_GT(contact_area, 0.1);
+  EXPECT_LT(contact_area, 1.0);
+  // The solution file: 8 · 2 · 8 cells of p³ = 8 linear hexahedra each.
+  std::ifstream vtu(dir / "solid" / "solution_signorini.vtu");
+  const std::string text((std::istreambuf_iterator<char>(vtu)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("NumberOfCells=\"1024\""), std::string::npos);
+  EXPECT_TRUE(std::filesystem::exists(dir / "solid" / "boundary_friction_s.csv"));
+}
+
+/// `hpcontact solve` of the extruded scene with one key overridden (--set KEY=VALUE).
+Run solve_with(const std::string& name, const std::string& key_value) {
+  return run("solve " + kExtruded + " --set '" + key_value + "' --out " + (scratch(name) / "out").string());
+}
+
+TEST(SolidScene, KeysEffectsAndCommandsOfPlanarScenesAreRefusedByName) {
+  const auto graded = solve_with("solid_graded", "domain.grading_x=[0.0]");
+  EXPECT_EQ(graded.exit_code, 2) << graded.output;
+  EXPECT_NE(graded.output.find("domain.grading_x"), std::string::npos) << graded.output;
+  EXPECT_NE(graded.output.find("3-D scene"), std::string::npos) << graded.output;
+  const auto infsup = solve_with("solid_infsup", "run.effects=[\"infsup\"]");
+  EXPECT_EQ(infsup.exit_code, 2) << infsup.output;
+  EXPECT_NE(infsup.output.find("signorini, friction or friction_s in a 3-D scene"), std::string::npos) << infsup.output;
+  const auto three_m = solve_with("solid_m", "contact_mesh.m=[2, 2, 2]");
+  EXPECT_EQ(three_m.exit_code, 2) << three_m.output;
+  EXPECT_NE(three_m.output.find("one or two integers"), std::string::npos) << three_m.output;
+  const auto odd_ratio = solve_with("solid_ratio", "contact_mesh.ratio=\"1/3\"");
+  EXPECT_EQ(odd_ratio.exit_code, 2) << odd_ratio.output;
+  EXPECT_NE(odd_ratio.output.find("whole cells"), std::string::npos) << odd_ratio.output;
+  const auto no_dirichlet = solve_with("solid_no_dirichlet", "boundary.dirichlet=\"z > 5\"");
+  EXPECT_EQ(no_dirichlet.exit_code, 2) << no_dirichlet.output;
+  EXPECT_NE(no_dirichlet.output.find("boundary.dirichlet"), std::string::npos) << no_dirichlet.output;
+  const auto two_sides = solve_with("solid_two_sides", "boundary.contact=\"abs(z + 1) < 1e-9 || x < -0.99\"");
+  EXPECT_EQ(two_sides.exit_code, 2) << two_sides.output;
+  EXPECT_NE(two_sides.output.find("not flat"), std::string::npos) << two_sides.output;
+  // The planar commands name the 3-D key rather than misreading the box.
+  const auto analysed = run("infsup --scene " + kExtruded);
+  EXPECT_EQ(analysed.exit_code, 2) << analysed.output;
+  EXPECT_NE(analysed.output.find("domain.n_z"), std::string::npos) << analysed.output;
+  // z is a variable of 3-D scenes only.
+  const auto dir = scratch("planar_z");
+  std::ifstream source(kPlanar);
+  std::string text((std::istreambuf_iterator<char>(source)), std::istreambuf_iterator<char>());
+  text.replace(text.find("g = \"-x^2\""), 10, "g = \"-x^2 + z\"");
+  std::ofstream(dir / "scene.toml") << text;
+  const auto planar_z = run("solve " + (dir / "scene.toml").string() + " --out " + (dir / "out").string());
+  EXPECT_EQ(planar_z.exit_code, 2) << planar_z.output;
+  EXPECT_NE(planar_z.output.find("variables: x, y;"), std::string::npos) << planar_z.output;
+}
+
+}  // namespace
+}  // namespace hpcontact::testing
