@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "assembly/element_matrices.hpp"
+#include "linalg/sparse_cholesky.hpp"
 #include "mesh/mesh.hpp"
 #include "space/h1_space.hpp"
 
@@ -62,6 +63,9 @@ class CellSystem {
   virtual Eigen::MatrixXd null_motions(int /*cell*/) const { return Eigen::MatrixXd(0, 0); }
   /// The number of columns of null_motions (the same for every cell).
   virtual int null_motion_count() const { return 0; }
+  /// The skeleton factor's fill-reducing ordering: minimum degree for planar meshes (measured
+  /// faster there), nested dissection for solid ones (far less fill in 3-D).
+  virtual linalg::FillOrdering fill_ordering() const { return linalg::FillOrdering::minimum_degree; }
   /// The fields of the unknowns (elasticity: the two displacement components), which a solver
   /// that builds coarse constraints per field (BDDC's edge averages) must tell apart: the
   /// cell's unknown s (in the order of cell_dofs) is of field s % field_count().

@@ -90,8 +90,9 @@ CondensedFactor::CondensedFactor(std::unique_ptr<const CellSystem> system, const
   else
     lower = eliminate_interiors(contributes);
   find_local_dofs(std::move(contributes));
-  skeleton_solver_ = linalg::make_skeleton_solver(n_skeleton, std::move(lower), trailing, distribution,
-                                                  [this] { return local_bddc_hints(); });
+  skeleton_solver_ = linalg::make_skeleton_solver(
+      n_skeleton, std::move(lower), trailing, distribution, [this] { return local_bddc_hints(); },
+      system_->fill_ordering());
   // The skeleton solver's local unknowns are the skeleton dofs of the rank's cells (each has its
   // diagonal entry from S_T): solve_local passes rows between the two without a lookup. (Agreed
   // over the ranks: a rank failing alone would leave the others waiting in a collective call.)

@@ -23,6 +23,8 @@ class SolidScalarCellSystem final : public CellSystem {
   int cell_size(int cell) const override { return space_->shape_count(cell); }
   Eigen::MatrixXd element_matrix(int cell) const override;
   std::optional<CongruenceKey> congruence_key(int cell) const override;
+  /// Nested dissection: in 3-D it factorizes with a fraction of minimum degree's fill.
+  linalg::FillOrdering fill_ordering() const override { return linalg::FillOrdering::nested_dissection; }
 
  private:
   const space::SolidH1Space* space_;

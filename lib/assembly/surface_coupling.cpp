@@ -63,7 +63,6 @@ linalg::Coupling surface_coupling(const space::SolidH1Space& space, const space:
   const mesh::SurfaceMultiplierMesh& multiplier_mesh = multipliers.mesh();
   const mesh::FlatContactSurface& surface = multiplier_mesh.surface();
   HPC_VERIFY(&surface.mesh() == &space.mesh(), "multipliers on Γ_C of the space's mesh");
-  const mesh::SolidMesh& mesh = space.mesh();
   std::vector<Eigen::Triplet<double>> entries;
   for (const auto& overlap : multiplier_mesh.overlaps()) {
     const mesh::BoundaryFace& face = surface.faces()[overlap.face];

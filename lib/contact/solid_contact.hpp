@@ -30,6 +30,15 @@ struct SolidContactSetup {
   InequalityQpOptions interior_point;
 };
 
+/// Wall time of a 3-D contact solve's phases (seconds).
+struct SolidSolveSeconds {
+  double assembly = 0.0;       ///< F, B, G, the bounds
+  double factorization = 0.0;  ///< K by static condensation, the trace last
+  double condensation = 0.0;   ///< S = B K⁻¹ Bᵀ and d
+  double qp = 0.0;             ///< the multiplier problem
+  double recovery = 0.0;       ///< u, the gap, the energy
+};
+
 struct SolidContactSolution {
   Eigen::VectorXd u;             ///< coefficients on the space
   Eigen::VectorXd lambda;        ///< λ at the nodal points of SurfaceMultiplierSpace
@@ -39,9 +48,7 @@ struct SolidContactSolution {
   double energy = 0.0;  ///< ½ a(u, u) − F(u)
   int n_trace = 0;      ///< trace dofs ordered last in the factor
   QpReport qp;
-  struct Seconds {
-    double assembly = 0.0, factorization = 0.0, condensation = 0.0, qp = 0.0, recovery = 0.0;
-  } seconds;
+  SolidSolveSeconds seconds;
 };
 
 /// @throws InputError for missing data or s < 0 at a nodal point; NumericalError if the QP fails.

@@ -35,14 +35,15 @@ void note_if_interface_dominates(const SubstructuredCholesky& factor) {
 
 std::unique_ptr<SkeletonSolver> make_skeleton_solver(int n, std::vector<Eigen::Triplet<double>> lower_entries,
                                                      const std::vector<int>& trailing, const Distribution& distribution,
-                                                     const std::function<BddcHints()>& bddc_hints) {
+                                                     const std::function<BddcHints()>& bddc_hints,
+                                                     FillOrdering ordering) {
   MPI_Comm ranks = distribution.ranks;
   switch (distribution.solver) {
     case DistributedSolver::serial: {
       Eigen::SparseMatrix<double> matrix(n, n);
       matrix.setFromTriplets(lower_entries.begin(), lower_entries.end());
       lower_entries = {};
-      return std::make_unique<SparseCholesky>(matrix, trailing);
+      return std::make_unique<SparseCholesky>(matrix, trailing, ordering);
     }
     case DistributedSolver::substructuring: {
       auto factor = std::make_unique<SubstructuredCholesky>(ranks, n, lower_entries, trailing);

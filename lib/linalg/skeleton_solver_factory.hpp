@@ -10,6 +10,7 @@
 #include "linalg/bddc_solver.hpp"
 #include "linalg/distribution.hpp"
 #include "linalg/skeleton_solver.hpp"
+#include "linalg/sparse_cholesky.hpp"
 
 namespace hpcontact::linalg {
 
@@ -20,10 +21,12 @@ namespace hpcontact::linalg {
 /// (row ≥ col) to A's lower triangle, summed where they meet (serially freed once the matrix is
 /// assembled, before the factorization). `trailing`: the trailing set, the same on every rank.
 /// `bddc_hints`: what the rank knows of its subdomain beyond its matrix, asked for by BDDC alone.
+/// `ordering`: the serial factor's fill-reducing ordering.
 /// Distributed: collective on distribution.ranks.
 /// @throws NumericalError if A is not positive definite (or BDDC's set-up fails).
 std::unique_ptr<SkeletonSolver> make_skeleton_solver(int n, std::vector<Eigen::Triplet<double>> lower_entries,
                                                      const std::vector<int>& trailing, const Distribution& distribution,
-                                                     const std::function<BddcHints()>& bddc_hints = {});
+                                                     const std::function<BddcHints()>& bddc_hints = {},
+                                                     FillOrdering ordering = FillOrdering::minimum_degree);
 
 }  // namespace hpcontact::linalg

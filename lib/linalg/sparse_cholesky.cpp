@@ -82,11 +82,11 @@ cholmod_dense view_dense(Eigen::MatrixXd& matrix) {
   return d;
 }
 
-// AMD ordering of the block of A outside `trailing`, followed by `trailing` (in index order).
+// The ordering (AMD or METIS) of the block of A outside `trailing`, followed by `trailing` (in index order).
 // The interior block's lower triangle is built in one pass: the index map is monotone, so columns
 // and rows stay sorted.
 std::vector<int> interior_first_ordering(const Eigen::SparseMatrix<double>& a, const std::vector<int>& trailing,
-                                         cholmod_common& c) {
+                                         FillOrdering ordering, cholmod_common& c) {
   const int n = static_cast<int>(a.rows());
   std::vector<int> position(n, 0);
   for (int index : trailing) {
@@ -123,7 +123,13 @@ std::vector<int> interior_first_ordering(const Eigen::SparseMatrix<double>& a, c
   block.sorted = 1;
   block.packed = 1;
   std::vector<int> order(n_interior);
-  if (!cholmod_amd(&block, nullptr, 0, order.data(), &c)) throw_cholmod_failure("AMD ordering", c.status, n_interior);
+  if (ordering == FillOrdering::nested_dissection) {
+    // (postordered, as AMD's order is)
+    if (!cholmod_metis(&block, nullptr, 0, 1, order.data(), &c))
+      throw_cholmod_failure("METIS ordering", c.status, n_interior);
+  } else if (!cholmod_amd(&block, nullptr, 0, order.data(), &c)) {
+    throw_cholmod_failure("AMD ordering", c.status, n_interior);
+  }
   std::vector<int> permutation;
   permutation.reserve(n);
   for (int k : order) permutation.push_back(interior[k]);
@@ -134,7 +140,8 @@ std::vector<int> interior_first_ordering(const Eigen::SparseMatrix<double>& a, c
 
 }  // namespace
 
-SparseCholesky::SparseCholesky(const Eigen::SparseMatrix<double>& matrix, const std::vector<int>& trailing)
+SparseCholesky::SparseCholesky(const Eigen::SparseMatrix<double>& matrix, const std::vector<int>& trailing,
+                               FillOrdering ordering)
     : impl_(std::make_unique<Impl>()), size_(static_cast<int>(matrix.rows())), all_unknowns_(size_) {
   HPC_VERIFY(matrix.rows() == matrix.cols(), "Cholesky of a non-square matrix");
   std::iota(all_unknowns_.begin(), all_unknowns_.end(), 0);
@@ -157,7 +164,7 @@ SparseCholesky::SparseCholesky(const Eigen::SparseMatrix<double>& matrix, const 
     // No postordering: it would move unknowns past the trailing set whenever the trailing set is
     // not connected through the interior (a rank's part in SubstructuredCholesky), and AMD's
     // order is postordered already (1e6 dofs: the factorization takes the same time).
-    permutation = interior_first_ordering(*source, trailing, c);
+    permutation = interior_first_ordering(*source, trailing, ordering, c);
     c.nmethods = 1;
     c.method[0].ordering = CHOLMOD_GIVEN;
     c.postorder = 0;
@@ -166,7 +173,7 @@ SparseCholesky::SparseCholesky(const Eigen::SparseMatrix<double>& matrix, const 
     // finite element matrices here costs more time than its smaller factor saves (1e6 dofs of
     // degree 4, condensed: 10.2 s against 7.1 s).
     c.nmethods = 1;
-    c.method[0].ordering = CHOLMOD_AMD;
+    c.method[0].ordering = ordering == FillOrdering::nested_dissection ? CHOLMOD_METIS : CHOLMOD_AMD;
   }
   impl_->factor = cholmod_analyze_p(&a, permutation.empty() ? nullptr : permutation.data(), nullptr, 0, &c);
   if (!impl_->factor) throw_cholmod_failure("analysis", c.status, size_);

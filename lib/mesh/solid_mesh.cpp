@@ -179,22 +179,25 @@ SolidPoint SolidMesh::face_centre(int f) const {
   return centre;
 }
 
-SolidMesh make_box_mesh(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, const std::array<int, 3>& n) {
+SolidMesh make_tensor_box_mesh(const std::array<std::vector<double>, 3>& nodes, const std::string& origin) {
   for (int k = 0; k < 3; ++k) {
-    if (n[k] < 1) throw InputError(fmt::format("box mesh: {} cells along axis {}; at least 1", n[k], "xyz"[k]));
-    if (!(hi(k) > lo(k)))
-      throw InputError(fmt::format("box mesh: the box is empty along {} ([{}, {}])", "xyz"[k], lo(k), hi(k)));
+    if (nodes[k].size() < 2)
+      throw InputError(fmt::format("{}: {} nodes along {}; at least 2", origin, nodes[k].size(), "xyz"[k]));
+    for (std::size_t i = 0; i + 1 < nodes[k].size(); ++i)
+      if (!(nodes[k][i + 1] > nodes[k][i]))
+        throw InputError(fmt::format("{}: the nodes along {} must increase strictly ({} then {})", origin, "xyz"[k],
+                                     nodes[k][i], nodes[k][i + 1]));
   }
+  const std::array<int, 3> n{static_cast<int>(nodes[0].size()) - 1, static_cast<int>(nodes[1].size()) - 1,
+                             static_cast<int>(nodes[2].size()) - 1};
   const auto vertex = [&](int i, int j, int k) { return i + (n[0] + 1) * (j + (n[1] + 1) * k); };
   std::vector<SolidPoint> vertices;
   vertices.reserve(static_cast<std::size_t>(n[0] + 1) * (n[1] + 1) * (n[2] + 1));
   for (int k = 0; k <= n[2]; ++k)
     for (int j = 0; j <= n[1]; ++j)
-      for (int i = 0; i <= n[0]; ++i) {
-        const Eigen::Vector3d t(double(i) / n[0], double(j) / n[1], double(k) / n[2]);
-        vertices.push_back(lo + (hi - lo).cwiseProduct(t));
-      }
+      for (int i = 0; i <= n[0]; ++i) vertices.emplace_back(nodes[0][i], nodes[1][j], nodes[2][k]);
   std::vector<std::array<int, 8>> cells;
+  cells.reserve(static_cast<std::size_t>(n[0]) * n[1] * n[2]);
   for (int k = 0; k < n[2]; ++k)
     for (int j = 0; j < n[1]; ++j)
       for (int i = 0; i < n[0]; ++i) {
@@ -208,7 +211,7 @@ SolidMesh make_box_mesh(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, co
   for (const auto& cell : cells)
     for (int f = 0; f < 6; ++f) {
       const int axis = f / 2;
-      const double side = f % 2 == 0 ? lo(axis) : hi(axis);
+      const double side = f % 2 == 0 ? nodes[axis].front() : nodes[axis].back();
       std::array<int, 4> quad{};
       bool on_side = true;
       for (int q = 0; q < 4; ++q) {
@@ -217,7 +220,18 @@ SolidMesh make_box_mesh(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, co
       }
       if (on_side) labels.emplace_back(quad, names[f]);
     }
-  return SolidMesh(std::move(vertices), std::move(cells), "box mesh", labels);
+  return SolidMesh(std::move(vertices), std::move(cells), origin, labels);
+}
+
+SolidMesh make_box_mesh(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, const std::array<int, 3>& n) {
+  std::array<std::vector<double>, 3> nodes;
+  for (int k = 0; k < 3; ++k) {
+    if (n[k] < 1) throw InputError(fmt::format("box mesh: {} cells along axis {}; at least 1", n[k], "xyz"[k]));
+    if (!(hi(k) > lo(k)))
+      throw InputError(fmt::format("box mesh: the box is empty along {} ([{}, {}])", "xyz"[k], lo(k), hi(k)));
+    for (int i = 0; i <= n[k]; ++i) nodes[k].push_back(i == n[k] ? hi(k) : lo(k) + (hi(k) - lo(k)) * i / n[k]);
+  }
+  return make_tensor_box_mesh(nodes, "box mesh");
 }
 
 }  // namespace hpcontact::mesh

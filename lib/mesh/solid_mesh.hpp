@@ -95,6 +95,11 @@ class SolidMesh {
   std::vector<BoundaryFace> boundary_faces_;
 };
 
+/// The tensor mesh of the node coordinates along x, y and z (each strictly increasing, at least two),
+/// vertices numbered x fastest; boundary faces labelled by side as make_box_mesh's.
+/// @throws InputError naming `origin` otherwise.
+SolidMesh make_tensor_box_mesh(const std::array<std::vector<double>, 3>& nodes, const std::string& origin);
+
 /// The box [lo, hi] (componentwise) cut into n[0] × n[1] × n[2] equal hexahedra, vertices
 /// numbered x fastest. Boundary faces are labelled "x_min", "x_max", "y_min", "y_max", "z_min",
 /// "z_max". @throws InputError if a count is < 1 or the box is empty.

@@ -7,15 +7,24 @@
 
 namespace hpcontact::postprocess {
 
-double solid_value(const space::SolidH1Space& space, const Eigen::VectorXd& coefficients, int cell,
-                   const Eigen::Vector3d& xi) {
-  const int p = space.cell_degree(cell);
+namespace {
+
+/// The Lobatto values of degree p at ξ along each axis.
+std::array<Eigen::VectorXd, 3> axis_values(int p, const Eigen::Vector3d& xi) {
   std::array<Eigen::VectorXd, 3> values;
   Eigen::VectorXd slopes(p + 1);
   for (int d = 0; d < 3; ++d) {
     values[d].resize(p + 1);
     basis::lobatto_values(p, xi(d), values[d], slopes);
   }
+  return values;
+}
+
+}  // namespace
+
+double solid_value(const space::SolidH1Space& space, const Eigen::VectorXd& coefficients, int cell,
+                   const Eigen::Vector3d& xi) {
+  const auto values = axis_values(space.cell_degree(cell), xi);
   double sum = 0.0;
   for (const auto& shape : space.cell_shapes(cell))
     if (shape.dof >= 0)
@@ -24,10 +33,22 @@ double solid_value(const space::SolidH1Space& space, const Eigen::VectorXd& coef
   return sum;
 }
 
-io::VtuGrid solid_vtu_grid(const space::SolidH1Space& space, const Eigen::VectorXd& coefficients) {
+Eigen::Vector3d solid_displacement(const space::SolidVectorSpace& space, const Eigen::VectorXd& coefficients, int cell,
+                                   const Eigen::Vector3d& xi) {
+  const auto values = axis_values(space.scalar().cell_degree(cell), xi);
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (const auto& shape : space.scalar().cell_shapes(cell)) {
+    const double phi = shape.sign * values[0](shape.index[0]) * values[1](shape.index[1]) * values[2](shape.index[2]);
+    for (int c = 0; c < 3; ++c)
+      if (const int dof = space.dof(shape.dof, c); dof >= 0) sum(c) += phi * coefficients(dof);
+  }
+  return sum;
+}
+
+io::VtuGrid solid_vtu_grid(const space::SolidH1Space& space, const SolidPointField& field) {
   constexpr std::uint8_t kVtkHexahedron = 12;
   io::VtuGrid grid;
-  io::VtuGrid::PointArray u{"u", 1, {}};
+  io::VtuGrid::PointArray values{field.name, field.components, {}};
   const mesh::SolidMesh& mesh = space.mesh();
   for (int c = 0; c < mesh.n_cells(); ++c) {
     const int p = space.cell_degree(c), first = static_cast<int>(grid.n_points());
@@ -38,7 +59,8 @@ io::VtuGrid solid_vtu_grid(const space::SolidH1Space& space, const Eigen::Vector
           const Eigen::Vector3d xi(-1.0 + 2.0 * i / p, -1.0 + 2.0 * j / p, -1.0 + 2.0 * k / p);
           const mesh::SolidPoint x = mesh.map(c, xi);
           grid.xyz.insert(grid.xyz.end(), {x(0), x(1), x(2)});
-          u.values.push_back(solid_value(space, coefficients, c, xi));
+          const Eigen::VectorXd value = field.evaluate(c, xi);
+          values.values.insert(values.values.end(), value.data(), value.data() + value.size());
         }
     for (int k = 0; k < p; ++k)
       for (int j = 0; j < p; ++j)
@@ -52,7 +74,7 @@ io::VtuGrid solid_vtu_grid(const space::SolidH1Space& space, const Eigen::Vector
           grid.degrees.push_back(p);
         }
   }
-  grid.point_data.push_back(std::move(u));
+  grid.point_data.push_back(std::move(values));
   return grid;
 }
 

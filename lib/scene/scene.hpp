@@ -71,9 +71,13 @@ struct Scene {
   /// A box (3-D): the rectangle times [z_min, z_max] with n_z cells along z; n_z = 0: planar.
   double z_min = 0.0, z_max = 1.0;
   int n_z = 0;
+  /// A box: its nodes along x, y, z given one by one (each replaces that axis's min, max, n and
+  /// grading); a z_nodes list makes the domain a box too.
+  std::array<std::vector<double>, 3> box_nodes;
   double perturb = 0.0;
   std::uint32_t seed = 1;
   std::vector<double> grading_x, grading_y;  ///< see mesh::graded_nodes
+  std::vector<double> grading_z;             ///< a box: planes z = c the mesh is graded towards
   std::vector<mesh::Point> grading_points;   ///< see mesh::grade_towards_vertices
   double domain_grading = 0.5;
   int grading_layers = 0;
@@ -83,6 +87,7 @@ struct Scene {
   std::vector<std::string> contact_groups, dirichlet_groups;
   /// Elastic scenes: edges where u_x = 0 (u_y = 0) alone (rollers), by predicate or Gmsh group.
   std::string fixed_x_predicate, fixed_y_predicate;
+  std::string fixed_z_predicate;  ///< a box: faces where u_z = 0 alone
   std::vector<std::string> fixed_x_groups, fixed_y_groups;
   /// Dirichlet data, expressions in x, y: u_D on Γ_D (scalar model), u_D,x and u_D,y wherever that
   /// component is fixed (Γ_D and rollers; elastic scenes). Empty: 0.
@@ -108,6 +113,7 @@ struct Scene {
   assembly::PlaneModel plane_model = assembly::PlaneModel::strain;
   // [data] of the elastic effects: body force, traction on Γ_N, Coulomb's coefficient.
   std::string body_force_x = "0", body_force_y = "0", traction_x = "0", traction_y = "0";
+  std::string body_force_z = "0";  ///< a box
   double friction_coefficient = 0.0;
   // [exact] (elastic effects): a known displacement and contact pressure, expressions in x, y that
   // the run compares its solution with; empty: none.
@@ -130,7 +136,7 @@ struct Scene {
   int convergence_refinements = 3;
 
   /// 3 for a box (domain.n_z given), else 2: the variables of the scene's expressions.
-  int dimension() const { return n_z > 0 ? 3 : 2; }
+  int dimension() const { return n_z > 0 || !box_nodes[2].empty() ? 3 : 2; }
   /// Whether the obstacle is given as geometry ([obstacle]) rather than by g.
   bool has_rigid_obstacle() const { return given.contains("obstacle.type"); }
   /// Whether the contact problems have their obstacle: g or [obstacle].

@@ -237,6 +237,29 @@ void add_domain_keys(std::vector<SceneKey>& keys) {
   add(integer_key("domain", "n_z", 1, 100000, std::nullopt, &Scene::n_z,
                   "box (3-D): cells along z; given, Ω is the box [x_min, x_max] × [y_min, y_max] × [z_min, z_max] "
                   "cut into n_x × n_y × n_z hexahedra, and expressions take x, y, z"));
+  for (int axis = 0; axis < 3; ++axis) {
+    static const std::array<const char*, 3> names{"x_nodes", "y_nodes", "z_nodes"};
+    add({"domain", names[axis], "list of numbers", "", "finite, strictly increasing, at least two",
+         axis == 2 ? "box: its nodes along z one by one (a 3-D domain; replaces z_min, z_max, n_z, grading_z)"
+                   : "box: its nodes along this axis one by one (replaces that axis's min, max, n and grading)",
+         "", [axis](const TomlTable& table, Scene& scene) {
+           const char* name = names[axis];
+           if (!table.has(name)) return;
+           std::vector<double> nodes;
+           for (const auto& text : table.string_list(name)) {
+             char* end = nullptr;
+             const double value = std::strtod(text.c_str(), &end);
+             if (text.empty() || *end != '\0' || !std::isfinite(value) || (!nodes.empty() && !(value > nodes.back())))
+               throw_bad_input(table.origin(name), table.qualified(name), text,
+                               "finite numbers, each larger than the one before");
+             nodes.push_back(value);
+           }
+           if (nodes.size() < 2)
+             throw_bad_input(table.origin(name), table.qualified(name), fmt::format("{} numbers", nodes.size()),
+                             "at least two nodes");
+           scene.box_nodes[axis] = std::move(nodes);
+         }});
+  }
   add({"domain", "z_min", "number", "0", "finite, < z_max", "box: bottom end along z", "",
        [](const TomlTable& table, Scene& scene) {
          scene.z_min = table.number("z_min", 0.0);
@@ -245,7 +268,7 @@ void add_domain_keys(std::vector<SceneKey>& keys) {
            const double value = std::string(key) == "z_min" ? scene.z_min : scene.z_max;
            if (!std::isfinite(value))
              throw_bad_input(table.origin(key), table.qualified(key), fmt::format("{}", value), "a finite number");
-           if (table.has(key) && scene.n_z == 0)
+           if (table.has(key) && scene.dimension() == 2)
              throw_bad_input(table.origin(key), table.qualified(key), fmt::format("{}", value),
                              "only with domain.n_z (a box)");
          }
@@ -265,6 +288,8 @@ void add_domain_keys(std::vector<SceneKey>& keys) {
                   "rectangle: lines x = c the mesh is graded towards (geometric layers)"));
   add(numbers_key("domain", "grading_y", "y coordinates (numbers) inside the rectangle", &Scene::grading_y,
                   "rectangle: lines y = c the mesh is graded towards"));
+  add(numbers_key("domain", "grading_z", "z coordinates (numbers) inside the box", &Scene::grading_z,
+                  "box: planes z = c the mesh is graded towards (grading_x, grading_y: planes x = c, y = c)"));
   add({"domain", "grading_points", "list of pairs [[x, y], ...]", "", "vertices of the mesh (after snapping)",
        "points whose surrounding cells get `grading_layers` local geometric layers", "",
        [](const TomlTable& table, Scene& scene) {
@@ -293,6 +318,8 @@ void add_boundary_and_contact_mesh_keys(std::vector<SceneKey>& keys) {
                      "elastic scenes: edges (midpoint predicate) where u_x = 0 alone, a roller; u_y stays free"));
   add(expression_key("boundary", "fixed_y", "", &Scene::fixed_y_predicate,
                      "elastic scenes: edges where u_y = 0 alone, a roller; u_x stays free"));
+  add(expression_key("boundary", "fixed_z", "", &Scene::fixed_z_predicate,
+                     "3-D elastic scenes: faces (centre predicate) where u_z = 0 alone, a roller"));
   add(names_key("boundary", "fixed_x_groups", &Scene::fixed_x_groups, "`fixed_x` as Gmsh physical groups"));
   add(names_key("boundary", "fixed_y_groups", &Scene::fixed_y_groups, "`fixed_y` as Gmsh physical groups"));
   add(expression_key("boundary", "u_D", "", &Scene::dirichlet_value,
@@ -353,6 +380,7 @@ void add_discretization_and_data_keys(std::vector<SceneKey>& keys) {
                      "friction bound s ≥ 0 of (13), (15) and of the pairing (22); Tresca's threshold"));
   add(expression_key("data", "f_x", "0", &Scene::body_force_x, "elastic effects: body force, x component"));
   add(expression_key("data", "f_y", "0", &Scene::body_force_y, "elastic effects: body force, y component"));
+  add(expression_key("data", "f_z", "0", &Scene::body_force_z, "3-D elastic effects: body force, z component"));
   add(expression_key("data", "t_x", "0", &Scene::traction_x, "elastic effects: traction on Γ_N, x component"));
   add(expression_key("data", "t_y", "0", &Scene::traction_y, "elastic effects: traction on Γ_N, y component"));
   add(number_key("data", "friction_coefficient", 0.0, 100.0, 0.0, &Scene::friction_coefficient,

@@ -67,6 +67,10 @@ std::map<std::string, std::string> apply_overrides(toml::table& root, const std:
 }
 
 void check_domain(const Scene& scene) {
+  if (scene.dimension() == 2)
+    for (const char* key : {"domain.grading_z", "boundary.fixed_z", "data.f_z"})
+      if (scene.given.contains(key))
+        throw_bad_input(scene.where(key), key, "(given)", "only in a 3-D scene (a box: domain.n_z given)");
   if (!scene.is_rectangle()) {
     for (const char* key : {"x_min", "x_max", "y_min", "y_max", "n_x", "n_y", "n_z", "grading_x", "grading_y"})
       if (scene.given.contains(fmt::format("domain.{}", key)))
@@ -78,11 +82,28 @@ void check_domain(const Scene& scene) {
                       "Gmsh mesh does not allow");
     return;
   }
-  for (const char* key : {"domain.n_x", "domain.n_y"})
-    if (!scene.given.contains(key))
-      throw_bad_input(scene.file, key, "(missing)", "an integer in [1, 100000] is required");
+  for (const auto& [key, nodes] :
+       {std::pair{"domain.n_x", "domain.x_nodes"}, std::pair{"domain.n_y", "domain.y_nodes"}})
+    if (!scene.given.contains(key) && !(scene.dimension() == 3 && scene.given.contains(nodes)))
+      throw_bad_input(scene.file, key, "(missing)",
+                      scene.dimension() == 3 ? fmt::format("an integer in [1, 100000], or {}", nodes)
+                                             : std::string("an integer in [1, 100000] is required"));
+  // A box's axis given by its nodes takes none of the keys they replace.
+  for (int axis = 0; axis < 3; ++axis) {
+    const std::string name = std::string(1, "xyz"[axis]);
+    const std::string nodes = "domain." + name + "_nodes";
+    if (!scene.given.contains(nodes)) continue;
+    if (scene.dimension() == 2)
+      throw_bad_input(scene.where(nodes), nodes, "(given)",
+                      "only in a 3-D scene (a box: domain.n_z or domain.z_nodes)");
+    for (const std::string& replaced : {name + "_min", name + "_max", "n_" + name, "grading_" + name})
+      if (scene.given.contains("domain." + replaced))
+        throw_bad_input(scene.where("domain." + replaced), "domain." + replaced, "(given)",
+                        fmt::format("not with {}, which gives the axis's nodes", nodes));
+  }
   const auto& r = scene.rectangle;
   for (const auto& [axis, low, high] : {std::tuple{"x", r.x_min, r.x_max}, std::tuple{"y", r.y_min, r.y_max}}) {
+    if (scene.given.contains(fmt::format("domain.{}_nodes", axis))) continue;
     const std::string key = fmt::format("domain.{}_min, domain.{}_max", axis, axis);
     const std::string value = fmt::format("{}, {}", low, high);
     if (!(high > low)) throw_bad_input(scene.file, key, value, fmt::format("must satisfy {}_min < {}_max", axis, axis));
@@ -120,14 +141,20 @@ void check_boundary_and_contact_mesh(const Scene& scene) {
 void check_scene_size(const Scene& scene) {
   if (!scene.is_rectangle()) return;  // a Gmsh mesh is as large as its file
   const double layers = 2.0 * scene.grading_layers;
-  const double cells = (scene.n_x + layers * static_cast<double>(scene.grading_x.size())) *
-                       (scene.n_y + layers * static_cast<double>(scene.grading_y.size())) *
-                       std::pow(4.0, scene.refinements) * std::max(scene.n_z, 1);
+  // Cells along an axis: a box's nodes count them, else n and the grading's layers.
+  const auto along = [&](int axis, int n, const std::vector<double>& grading) {
+    if (!scene.box_nodes[axis].empty()) return static_cast<double>(scene.box_nodes[axis].size() - 1);
+    return n + layers * static_cast<double>(grading.size());
+  };
+  const double cells = along(0, scene.n_x, scene.grading_x) * along(1, scene.n_y, scene.grading_y) *
+                       std::pow(4.0, scene.refinements) *
+                       (scene.dimension() == 3 ? along(2, scene.n_z, scene.grading_z) : 1.0);
   const double p = scene.p.rule.empty() ? scene.p.value : 1.0;  // a rule: at least degree 1 everywhere
   // (In 3-D the factor's fill grows faster than the unknowns: the estimate is a lower bound there.)
   const double dofs = cells * std::pow(p, scene.dimension()), bytes = 1.2e3 * dofs;
   const MemoryLimit memory = memory_limit();
-  const std::string counts = scene.dimension() == 3 ? fmt::format("{} x {} x {}", scene.n_x, scene.n_y, scene.n_z)
+  const std::string counts = scene.dimension() == 3 ? fmt::format("{} x {} x {}", along(0, scene.n_x, {}),
+                                                                  along(1, scene.n_y, {}), along(2, scene.n_z, {}))
                                                     : fmt::format("{} x {}", scene.n_x, scene.n_y);
   const std::string keys = scene.dimension() == 3 ? "domain.n_x, domain.n_y, domain.n_z" : "domain.n_x, domain.n_y";
   const std::string size = fmt::format("{:.3g} cells ({}{}) at p = {}: about {:.3g} unknowns", cells, counts,
@@ -151,11 +178,13 @@ const std::vector<std::string>& elastic_only_keys() {
                                              "material.model",
                                              "data.f_x",
                                              "data.f_y",
+                                             "data.f_z",
                                              "data.t_x",
                                              "data.t_y",
                                              "data.friction_coefficient",
                                              "boundary.fixed_x",
                                              "boundary.fixed_y",
+                                             "boundary.fixed_z",
                                              "boundary.fixed_x_groups",
                                              "boundary.fixed_y_groups",
                                              "boundary.u_D_x",

@@ -56,19 +56,51 @@ TEST(SolidScene, ExtrudedSignoriniHasThePlanarEnergyTimesTheWidth) {
   EXPECT_TRUE(std::filesystem::exists(dir / "solid" / "boundary_friction_s.csv"));
 }
 
+TEST(SolidScene, ExtrudedPlaneStrainHasThePlanarEnergyAndForceTimesTheWidth) {
+  // The elastic square with Γ_C its bottom edge, and its extrusion with rollers u_y = 0 on the
+  // faces y = 0, 0.5: the 3-D operator, shear terms included, against plane strain.
+  const auto dir = scratch("solid_plane_strain");
+  const auto solid = run("solve " + std::string(HPCONTACT_SOURCE_DIR) +
+                         "/studies/three_d/extruded_frictionless.toml --out " + (dir / "solid").string());
+  ASSERT_EQ(solid.exit_code, 0) << solid.output;
+  const auto planar = run("solve " + std::string(HPCONTACT_SOURCE_DIR) +
+                          "/studies/elasticity/square.toml --effects frictionless --set 'boundary.contact=\"abs(y + "
+                          "1) < 1e-9\"' --out " +
+                          (dir / "planar").string());
+  ASSERT_EQ(planar.exit_code, 0) << planar.output;
+  const auto solid_result = summary_of(dir / "solid").at("frictionless");
+  const auto planar_result = summary_of(dir / "planar").at("frictionless");
+  for (const char* key : {"energy", "total_force"}) {
+    const double expected = 0.5 * planar_result.at(key).get<double>();
+    EXPECT_NEAR(solid_result.at(key).get<double>(), expected, 1e-10 * std::abs(expected)) << key;
+  }
+  const CsvFile samples = read_csv(dir / "solid" / "boundary_frictionless.csv");
+  EXPECT_EQ(samples.header_line(), "x,y,z,w,gap,pressure,traction_1,traction_2");
+  double force = 0.0;
+  for (const auto& row : samples.records()) force += std::stod(row.at("w")) * std::stod(row.at("pressure"));
+  EXPECT_NEAR(force, solid_result.at("total_force").get<double>(), 1e-12);
+}
+
 /// `hpcontact solve` of the extruded scene with one key overridden (--set KEY=VALUE).
 Run solve_with(const std::string& name, const std::string& key_value) {
   return run("solve " + kExtruded + " --set '" + key_value + "' --out " + (scratch(name) / "out").string());
 }
 
 TEST(SolidScene, KeysEffectsAndCommandsOfPlanarScenesAreRefusedByName) {
-  const auto graded = solve_with("solid_graded", "domain.grading_x=[0.0]");
-  EXPECT_EQ(graded.exit_code, 2) << graded.output;
-  EXPECT_NE(graded.output.find("domain.grading_x"), std::string::npos) << graded.output;
-  EXPECT_NE(graded.output.find("3-D scene"), std::string::npos) << graded.output;
+  const auto refined = solve_with("solid_refined", "domain.refinements=1");
+  EXPECT_EQ(refined.exit_code, 2) << refined.output;
+  EXPECT_NE(refined.output.find("domain.refinements"), std::string::npos) << refined.output;
+  EXPECT_NE(refined.output.find("3-D scene"), std::string::npos) << refined.output;
+  // An axis given by its nodes takes none of the keys they replace.
+  const auto nodes_and_n = solve_with("solid_nodes", "domain.x_nodes=[-1.0, 0.0, 1.0]");
+  EXPECT_EQ(nodes_and_n.exit_code, 2) << nodes_and_n.output;
+  EXPECT_NE(nodes_and_n.output.find("not with domain.x_nodes"), std::string::npos) << nodes_and_n.output;
+  const auto falling = solve_with("solid_falling_nodes", "domain.z_nodes=[0.0, -1.0]");
+  EXPECT_EQ(falling.exit_code, 2) << falling.output;
+  EXPECT_NE(falling.output.find("each larger than the one before"), std::string::npos) << falling.output;
   const auto infsup = solve_with("solid_infsup", "run.effects=[\"infsup\"]");
   EXPECT_EQ(infsup.exit_code, 2) << infsup.output;
-  EXPECT_NE(infsup.output.find("signorini, friction or friction_s in a 3-D scene"), std::string::npos) << infsup.output;
+  EXPECT_NE(infsup.output.find("or frictionless (elastic) in a 3-D scene"), std::string::npos) << infsup.output;
   const auto three_m = solve_with("solid_m", "contact_mesh.m=[2, 2, 2]");
   EXPECT_EQ(three_m.exit_code, 2) << three_m.output;
   EXPECT_NE(three_m.output.find("one or two integers"), std::string::npos) << three_m.output;
@@ -94,6 +126,9 @@ TEST(SolidScene, KeysEffectsAndCommandsOfPlanarScenesAreRefusedByName) {
   const auto planar_z = run("solve " + (dir / "scene.toml").string() + " --out " + (dir / "out").string());
   EXPECT_EQ(planar_z.exit_code, 2) << planar_z.output;
   EXPECT_NE(planar_z.output.find("variables: x, y;"), std::string::npos) << planar_z.output;
+  const auto planar_f_z = run("solve " + kPlanar + " --set data.f_z=1 --out " + (dir / "out").string());
+  EXPECT_EQ(planar_f_z.exit_code, 2) << planar_f_z.output;
+  EXPECT_NE(planar_f_z.output.find("only in a 3-D scene"), std::string::npos) << planar_f_z.output;
 }
 
 }  // namespace

@@ -1,0 +1,82 @@
+// Element matrices and unknowns of 3-D elasticity on hexahedra.
+#include "assembly/solid_elastic_system.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstring>
+
+#include "assembly/solid_cell_system.hpp"
+#include "assembly/solid_cell_values.hpp"
+#include "core/error.hpp"
+
+namespace hpcontact::assembly {
+
+SolidElasticCellSystem::SolidElasticCellSystem(const space::SolidVectorSpace& space, std::vector<Material> materials)
+    : space_(&space), materials_(std::move(materials)) {
+  if (static_cast<int>(materials_.size()) != n_cells())
+    throw InputError(fmt::format("{} materials given for {} hexahedra", materials_.size(), n_cells()));
+}
+
+std::vector<int> SolidElasticCellSystem::split_cells_over_ranks(MPI_Comm /*ranks*/) const {
+  throw InputError("3-D problems are factorized on one process: run them without mpirun (or with -n 1)");
+}
+
+std::vector<char> SolidElasticCellSystem::boundary_unknowns(int cell) const {
+  const std::vector<char> shapes = SolidScalarCellSystem(space_->scalar(), 1.0, 0.0).boundary_unknowns(cell);
+  std::vector<char> out(3 * shapes.size());
+  for (std::size_t k = 0; k < out.size(); ++k) out[k] = shapes[k / 3];
+  return out;
+}
+
+void SolidElasticCellSystem::cell_dofs(int cell, std::vector<CellDof>& out) const {
+  const auto shapes = space_->scalar().cell_shapes(cell);
+  out.resize(3 * shapes.size());
+  for (std::size_t s = 0; s < shapes.size(); ++s)
+    for (int c = 0; c < 3; ++c)
+      out[3 * s + c] = {space_->dof(shapes[s].dof, c), shapes[s].sign,
+                        shapes[s].role == space::SolidShapeRole::interior};
+}
+
+Eigen::MatrixXd SolidElasticCellSystem::element_matrix(int cell) const {
+  const space::SolidH1Space& scalar = space_->scalar();
+  const SolidCellValues at = solid_cell_values(scalar, cell, solid_points_per_axis(scalar.cell_degree(cell)));
+  const Eigen::Index n = at.values.rows();
+  const Eigen::VectorXd w = at.weights;
+  // D_ab = G_a W G_bᵀ, D_ba = D_abᵀ.
+  std::array<std::array<Eigen::MatrixXd, 3>, 3> d;
+  for (int a = 0; a < 3; ++a)
+    for (int b = a; b < 3; ++b) {
+      d[a][b] = at.gradients[a] * w.asDiagonal() * at.gradients[b].transpose();
+      if (b != a) d[b][a] = d[a][b].transpose();
+    }
+  const Material& m = materials_[cell];
+  const Eigen::MatrixXd trace = d[0][0] + d[1][1] + d[2][2];
+  const auto shapes = scalar.cell_shapes(cell);
+  Eigen::MatrixXd a(3 * n, 3 * n);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      Eigen::MatrixXd block = m.lambda * d[i][j] + m.mu * d[j][i];
+      if (i == j) block += m.mu * trace;
+      for (Eigen::Index t = 0; t < n; ++t)
+        for (Eigen::Index s = 0; s < n; ++s)
+          // In the basis of the signed shapes, as CellSystem::element_matrix is defined.
+          a(3 * s + i, 3 * t + j) = shapes[s].sign * shapes[t].sign * block(s, t);
+    }
+  return a;
+}
+
+std::optional<CongruenceKey> SolidElasticCellSystem::congruence_key(int cell) const {
+  std::optional<CongruenceKey> key = SolidScalarCellSystem(space_->scalar(), 1.0, 0.0).congruence_key(cell);
+  if (!key) return key;
+  // The material, exactly: cells of different materials never share an elimination.
+  for (const double value : {materials_[cell].lambda, materials_[cell].mu}) {
+    long long bits = 0;
+    static_assert(sizeof(bits) == sizeof(value));
+    std::memcpy(&bits, &value, sizeof(bits));
+    key->push_back(bits);
+  }
+  return key;
+}
+
+}  // namespace hpcontact::assembly

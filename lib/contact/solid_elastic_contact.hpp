@@ -1,0 +1,49 @@
+// Frictionless contact of an elastic body on a hexahedral mesh against a rigid obstacle across a
+// flat Γ_C with outward normal n: the gap g is the distance to the obstacle along n, the multiplier
+// the contact pressure P ≥ 0 on T_{C,H}, the traction on the body −P n:
+//     [K    B_nᵀ] [u]   [F]        B_n,ij = ∫_{Γ_C} ℓ_i (φ_j · n),  G_i = ∫_{Γ_C} ℓ_i g,
+//     [B_n  0   ] [P] ≤ [G]        P ≥ 0, B_n u ≤ G, Pᵀ(G − B_n u) = 0 at the nodal points.
+// Condensed onto Γ_C as the scalar problems: min ½ Pᵀ S P − Pᵀ d over P ≥ 0, S = B_n K⁻¹ B_nᵀ,
+// d = B_n K⁻¹ F − G, u = K⁻¹(F − B_nᵀ P).
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+#include <vector>
+
+#include "assembly/material.hpp"
+#include "assembly/solid_load.hpp"
+#include "contact/box_qp.hpp"
+#include "contact/inequality_qp.hpp"
+#include "contact/qp_report.hpp"
+#include "contact/solid_contact.hpp"
+#include "space/solid_vector_space.hpp"
+#include "space/surface_multiplier_space.hpp"
+
+namespace hpcontact::contact {
+
+struct SolidElasticSetup {
+  const space::SolidVectorSpace* space = nullptr;
+  const space::SurfaceMultiplierSpace* multipliers = nullptr;
+  std::vector<assembly::Material> materials;          ///< one per cell
+  std::array<assembly::SolidFunction, 3> body_force;  ///< f_x, f_y, f_z (empty: 0)
+  assembly::SolidFunction gap;                        ///< g: u·n ≤ g on Γ_C
+  BoxQpOptions qp;
+  InequalityQpOptions interior_point;
+};
+
+struct SolidElasticSolution {
+  Eigen::VectorXd u;         ///< coefficients on the vector space
+  Eigen::VectorXd pressure;  ///< P at the nodal points of the multiplier space
+  Eigen::VectorXd gap;       ///< (ℓ_i, g − u·n): the dual gradient d − S P, ≥ 0
+  double energy = 0.0;       ///< ½ a(u, u) − F(u)
+  int n_trace = 0;
+  QpReport qp;
+  SolidSolveSeconds seconds;
+};
+
+/// @throws InputError for missing data; NumericalError if K is singular (no Γ_D holds the body)
+/// or the QP fails.
+SolidElasticSolution solve_solid_frictionless(const SolidElasticSetup& setup);
+
+}  // namespace hpcontact::contact

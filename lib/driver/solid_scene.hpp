@@ -1,0 +1,37 @@
+// A 3-D scene turned into its discretization: the checks of what 3-D scenes take, the box (graded
+// as the rectangle is) with its boundary parts, rollers and materials, Γ_C, T_{C,H} and the spaces.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "assembly/material.hpp"
+#include "driver/scene_run.hpp"
+#include "mesh/contact_surface.hpp"
+#include "scene/scene.hpp"
+#include "space/solid_space.hpp"
+#include "space/solid_vector_space.hpp"
+#include "space/surface_multiplier_space.hpp"
+
+namespace hpcontact::driver {
+
+/// @throws InputError for a key, effect or run setting 3-D scenes do not take, naming it and what
+/// they take.
+void check_solid_scene(const scene::Scene& scene, const SceneRunOptions& options);
+
+/// Held by pointer: its parts refer to each other.
+struct SolidDiscretization {
+  std::unique_ptr<mesh::SolidMesh> mesh;  ///< faces labelled "contact", "dirichlet"
+  std::unique_ptr<space::SolidH1Space> space;
+  std::unique_ptr<space::SolidVectorSpace> vector_space;  ///< elastic scenes
+  std::vector<assembly::Material> materials;              ///< elastic scenes: per cell
+  std::unique_ptr<mesh::FlatContactSurface> surface;
+  std::unique_ptr<mesh::SurfaceMultiplierMesh> multiplier_mesh;
+  std::unique_ptr<space::SurfaceMultiplierSpace> multipliers;
+};
+
+/// @throws InputError as the builders do, naming the scene's keys.
+std::unique_ptr<SolidDiscretization> discretize_solid_scene(const scene::Scene& scene);
+
+}  // namespace hpcontact::driver
