@@ -35,7 +35,7 @@ struct SolidElasticSetup {
 struct SolidElasticSolution {
   Eigen::VectorXd u;         ///< coefficients on the vector space
   Eigen::VectorXd pressure;  ///< P at the nodal points of the multiplier space
-  Eigen::VectorXd gap;       ///< (ℓ_i, g − u·n): the dual gradient d − S P, ≥ 0
+  Eigen::VectorXd gap;       ///< (ℓ_i, g − u·n) = S P − d (the QP's gradient), ≥ 0
   double energy = 0.0;       ///< ½ a(u, u) − F(u)
   int n_trace = 0;
   QpReport qp;

@@ -6,6 +6,7 @@
 #include <fmt/ranges.h>
 
 #include <cmath>
+#include <optional>
 #include <set>
 #include <tuple>
 
@@ -98,11 +99,16 @@ std::array<std::vector<char>, 3> scene_rollers(const scene::Scene& scene, const 
     if (text->empty()) continue;
     const Expression predicate(*text, scene.where(key) + ": key '" + key + "'", 3);
     held[c].assign(mesh.n_faces(), 0);
+    int flagged = 0;
     for (const auto& face : mesh.boundary_faces()) {
       const int f = mesh.cell_face(face.cell, face.local_face);
       const mesh::SolidPoint x = mesh.face_centre(f);
       held[c][f] = predicate(x(0), x(1), x(2)) != 0.0;
+      flagged += held[c][f];
     }
+    if (flagged == 0)
+      throw_bad_input(scene.where(key), key, "\"" + *text + "\"",
+                      "a predicate in x, y, z that holds at the centre of some boundary face");
   }
   return held;
 }
@@ -135,19 +141,25 @@ std::array<int, 2> multiplier_cells(const scene::Scene& scene, const mesh::FlatC
   if (scene.ratio.size() != 1)
     throw_bad_input(scene.where("contact_mesh.ratio"), "contact_mesh.ratio", "(a list)",
                     "one ratio h/H in a 3-D scene");
-  const mesh::BoundaryFace& face = surface.faces().front();
+  // The faces' extents along Γ_C's axes: all equal on a uniform Γ_C, which the ratio needs.
   const mesh::SolidMesh& mesh = surface.mesh();
-  Eigen::Vector2d low = Eigen::Vector2d::Constant(INFINITY), high = -low;
-  for (int v : mesh::kHexFaceVertices[face.local_face]) {
-    const Eigen::Vector2d a = surface.to_plane(mesh.vertex(mesh.cell(face.cell)[v]));
-    low = low.cwiseMin(a);
-    high = high.cwiseMax(a);
+  std::optional<Eigen::Vector2d> extent;
+  bool uniform = true;
+  for (const auto& face : surface.faces()) {
+    Eigen::Vector2d low = Eigen::Vector2d::Constant(INFINITY), high = -low;
+    for (int v : mesh::kHexFaceVertices[face.local_face]) {
+      const Eigen::Vector2d a = surface.to_plane(mesh.vertex(mesh.cell(face.cell)[v]));
+      low = low.cwiseMin(a);
+      high = high.cwiseMax(a);
+    }
+    if (!extent) extent = high - low;
+    uniform = uniform && ((high - low) - *extent).lpNorm<Eigen::Infinity>() <= 1e-9 * extent->maxCoeff();
   }
   std::array<int, 2> cells{};
   for (int k = 0; k < 2; ++k) {
-    const double faces = (surface.bounds()[1](k) - surface.bounds()[0](k)) / (high(k) - low(k));
+    const double faces = (surface.bounds()[1](k) - surface.bounds()[0](k)) / (*extent)(k);
     const double wanted = std::round(faces) * scene.ratio.front().value;
-    if (std::abs(faces - std::round(faces)) > 1e-6 || std::abs(wanted - std::round(wanted)) > 1e-9 ||
+    if (!uniform || std::abs(faces - std::round(faces)) > 1e-6 || std::abs(wanted - std::round(wanted)) > 1e-9 ||
         std::round(wanted) < 1)
       throw_bad_input(scene.where("contact_mesh.ratio"), "contact_mesh.ratio", scene.ratio.front().text,
                       fmt::format("a ratio h/H that makes whole cells of T_{{C,H}} on a uniform Γ_C: Γ_C is {:.6g} "
@@ -174,6 +186,10 @@ void check_solid_scene(const scene::Scene& scene, const SceneRunOptions& options
   if (scene.effects.empty())
     throw_bad_input(scene.where("run.effects"), "run.effects", "(none)",
                     "at least one of signorini, friction, friction_s, frictionless");
+  if (scene.pair || scene.is_master)
+    throw_bad_input(scene.where(scene.n_z > 0 ? "domain.n_z" : "domain.z_nodes"),
+                    scene.n_z > 0 ? "domain.n_z" : "domain.z_nodes", "(given)",
+                    "a one-body scene: two bodies in contact are planar");
   if (options.distribution.distributed())
     throw InputError(scene.file + ": 3-D scenes run on one process: run `hpcontact solve` without mpirun");
   if (scene.contact_predicate.empty())

@@ -173,7 +173,7 @@ SceneKey degree_key(const char* name, int low, int high, Degree Scene::*member, 
               scene.*member = Degree{static_cast<int>(table.integer(name, low, high)), {}};
               return;
             }
-            Expression(text, table.origin(name) + ": key '" + table.qualified(name) + "'");
+            Expression(text, table.origin(name) + ": key '" + table.qualified(name) + "'", scene.dimension());
             scene.*member = Degree{-1, text};  // evaluated per cell (segment) when the mesh exists
           }};
 }
@@ -307,10 +307,12 @@ void add_domain_keys(std::vector<SceneKey>& keys) {
 void add_boundary_and_contact_mesh_keys(std::vector<SceneKey>& keys) {
   auto add = [&](SceneKey key) { keys.push_back(std::move(key)); };
   add(expression_key("boundary", "contact", "", &Scene::contact_predicate,
-                     "Γ_C: edges whose midpoint makes this non-zero (its connected pieces are its zones, open or "
+                     "Γ_C: edges whose midpoint (3-D: faces whose centre) makes this non-zero (its connected pieces "
+                     "are its zones, open or "
                      "closed curves)"));
-  add(expression_key("boundary", "dirichlet", "", &Scene::dirichlet_predicate,
-                     "Γ_D (u = u_D, default 0): edges whose midpoint makes this non-zero; the rest is Γ_N"));
+  add(expression_key(
+      "boundary", "dirichlet", "", &Scene::dirichlet_predicate,
+      "Γ_D (u = u_D, default 0): edges whose midpoint (3-D: faces whose centre) makes this non-zero; the rest is Γ_N"));
   add(names_key("boundary", "contact_groups", &Scene::contact_groups,
                 "Γ_C as Gmsh physical groups (instead of `contact`)"));
   add(names_key("boundary", "dirichlet_groups", &Scene::dirichlet_groups, "Γ_D as Gmsh physical groups"));

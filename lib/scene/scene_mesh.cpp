@@ -89,10 +89,12 @@ mesh::Mesh read_mesh_file(const Scene& scene) {
 
 mesh::Mesh build_scene_mesh(const Scene& scene) {
   // Planar meshes only: every command that reaches here works on planar discretizations.
-  if (scene.dimension() == 3)
-    throw_bad_input(scene.where("domain.n_z"), "domain.n_z", std::to_string(scene.n_z),
+  if (scene.dimension() == 3) {
+    const std::string key = scene.n_z > 0 ? "domain.n_z" : "domain.z_nodes";
+    throw_bad_input(scene.where(key), key, scene.n_z > 0 ? std::to_string(scene.n_z) : "(given)",
                     "a planar scene here: 3-D scenes (a box) run with `hpcontact solve` and the effects signorini, "
-                    "friction, friction_s; infsup, sweep, advise and the studies take planar scenes");
+                    "friction, friction_s, frictionless; infsup, sweep, advise and the studies take planar scenes");
+  }
   mesh::Mesh mesh =
       grade_towards_points(scene.mesh_file.empty() ? build_rectangle(scene) : read_mesh_file(scene), scene);
   if (scene.perturb > 0) mesh::perturb_interior_vertices(mesh, scene.perturb, scene.seed);

@@ -150,8 +150,11 @@ void check_scene_size(const Scene& scene) {
                        std::pow(4.0, scene.refinements) *
                        (scene.dimension() == 3 ? along(2, scene.n_z, scene.grading_z) : 1.0);
   const double p = scene.p.rule.empty() ? scene.p.value : 1.0;  // a rule: at least degree 1 everywhere
-  // (In 3-D the factor's fill grows faster than the unknowns: the estimate is a lower bound there.)
-  const double dofs = cells * std::pow(p, scene.dimension()), bytes = 1.2e3 * dofs;
+  // Per unknown: 1.2 KB in 2-D; in 3-D, whose factors fill far more, 17.5 KB (3-D Hertz, p = 2,
+  // 191520 unknowns: 3.35 GB), three per node for an elastic box.
+  const bool solid = scene.dimension() == 3;
+  const double dofs = cells * std::pow(p, scene.dimension()) * (solid && scene.is_elastic() ? 3.0 : 1.0);
+  const double bytes = (solid ? 17.5e3 : 1.2e3) * dofs;
   const MemoryLimit memory = memory_limit();
   const std::string counts = scene.dimension() == 3 ? fmt::format("{} x {} x {}", along(0, scene.n_x, {}),
                                                                   along(1, scene.n_y, {}), along(2, scene.n_z, {}))
@@ -162,9 +165,9 @@ void check_scene_size(const Scene& scene) {
                                        scene.p.rule.empty() ? std::to_string(scene.p.value) : "its rule", dofs);
   if (dofs > 2147483647.0) throw_bad_input(scene.file, keys, size, "at most 2^31 - 1 unknowns (32-bit indices)");
   if (bytes > memory.bytes)
-    throw_bad_input(
-        scene.file, keys, size,
-        fmt::format("needs about {:.3g} GB (1.2 KB per unknown), more than {}", bytes / 1e9, memory.describe()));
+    throw_bad_input(scene.file, keys, size,
+                    fmt::format("needs about {:.3g} GB ({} KB per unknown), more than {}", bytes / 1e9,
+                                solid ? "17.5" : "1.2", memory.describe()));
 }
 
 }  // namespace

@@ -63,7 +63,9 @@ std::pair<double, double> relative_errors(const space::SolidH1Space& space, cons
 
 TEST(SolidPoisson, QuadraticSolutionIsExactUnderEveryOrientation) {
   const mesh::SolidMesh box = mesh::make_box_mesh(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones(), {3, 3, 3});
-  // Odd degrees carry the signs of reversed edges and faces ((−1)^k), even ones the swaps.
+  // p = 2 checks the numbering under shuffling (mode (2, 2) is the same under a swap and every
+  // sign is +1); p = 3 the signs of reversed edges and faces ((−1)^k) and the swapped face modes
+  // (2, 3) and (3, 2).
   for (int p : {2, 3})
     for (unsigned seed : {1U, 2U, 3U}) {
       const mesh::SolidMesh mesh = testing::shuffled(box, seed);

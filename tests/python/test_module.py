@@ -148,3 +148,19 @@ def test_numbers_in_expression_keys_typos_and_a_clean_namespace():
     for name in ("np", "os", "csv", "tempfile", "warnings", "dataclass", "field"):
         assert not hasattr(hpcontact, name), name
     assert set(hpcontact.__all__) <= set(dir(hpcontact))
+
+
+def test_a_three_dimensional_scene_gives_its_samples_and_hexahedra(tmp_path):
+    scene = os.path.join(SOURCE, "studies", "three_d", "extruded_signorini.toml")
+    result = hpcontact.solve(scene, effects=["signorini"])
+    summary, _ = cli_summary(tmp_path, scene, "--effects", "signorini")
+    assert result.run.dimension == 3 and result.run.faces_on_contact == 16
+    assert result.summary["signorini"]["energy"] == summary["signorini"]["energy"]
+    samples = result.boundary["signorini"]
+    # The weights integrate over Γ_C = [-1, 1] x [0, 0.5]; λ ≤ 0 everywhere (p_C = 1, nodal bounds).
+    assert abs(samples["w"].sum() - 1.0) < 1e-13
+    assert samples["lambda"].max() <= 1e-12
+    fields = result.fields["signorini"]
+    assert set(np.unique(fields["types"])) == {12}  # linear hexahedra, p³ per cell
+    assert len(fields["types"]) == 8 * 2 * 8 * 2**3
+    assert fields["points"].shape == (len(fields["u"]), 3)
