@@ -14,6 +14,7 @@
 
 #include "core/error.hpp"
 #include "core/expression.hpp"
+#include "scene/box_keys.hpp"
 #include "scene/obstacle_keys.hpp"
 
 namespace hpcontact::scene {
@@ -234,50 +235,7 @@ void add_domain_keys(std::vector<SceneKey>& keys) {
   add(any_number_key("domain", "y_max", 1.0, &mesh::Rectangle::y_max, "rectangle: top end"));
   add(integer_key("domain", "n_x", 1, 100000, std::nullopt, &Scene::n_x, "rectangle: cells along x (required)"));
   add(integer_key("domain", "n_y", 1, 100000, std::nullopt, &Scene::n_y, "rectangle: cells along y (required)"));
-  add(integer_key("domain", "n_z", 1, 100000, std::nullopt, &Scene::n_z,
-                  "box (3-D): cells along z; given, Ω is the box [x_min, x_max] × [y_min, y_max] × [z_min, z_max] "
-                  "cut into n_x × n_y × n_z hexahedra, and expressions take x, y, z"));
-  for (int axis = 0; axis < 3; ++axis) {
-    static const std::array<const char*, 3> names{"x_nodes", "y_nodes", "z_nodes"};
-    add({"domain", names[axis], "list of numbers", "", "finite, strictly increasing, at least two",
-         axis == 2 ? "box: its nodes along z one by one (a 3-D domain; replaces z_min, z_max, n_z, grading_z)"
-                   : "box: its nodes along this axis one by one (replaces that axis's min, max, n and grading)",
-         "", [axis](const TomlTable& table, Scene& scene) {
-           const char* name = names[axis];
-           if (!table.has(name)) return;
-           std::vector<double> nodes;
-           for (const auto& text : table.string_list(name)) {
-             char* end = nullptr;
-             const double value = std::strtod(text.c_str(), &end);
-             if (text.empty() || *end != '\0' || !std::isfinite(value) || (!nodes.empty() && !(value > nodes.back())))
-               throw_bad_input(table.origin(name), table.qualified(name), text,
-                               "finite numbers, each larger than the one before");
-             nodes.push_back(value);
-           }
-           if (nodes.size() < 2)
-             throw_bad_input(table.origin(name), table.qualified(name), fmt::format("{} numbers", nodes.size()),
-                             "at least two nodes");
-           scene.box_nodes[axis] = std::move(nodes);
-         }});
-  }
-  add({"domain", "z_min", "number", "0", "finite, < z_max", "box: bottom end along z", "",
-       [](const TomlTable& table, Scene& scene) {
-         scene.z_min = table.number("z_min", 0.0);
-         scene.z_max = table.number("z_max", 1.0);
-         for (const char* key : {"z_min", "z_max"}) {
-           const double value = std::string(key) == "z_min" ? scene.z_min : scene.z_max;
-           if (!std::isfinite(value))
-             throw_bad_input(table.origin(key), table.qualified(key), fmt::format("{}", value), "a finite number");
-           if (table.has(key) && scene.dimension() == 2)
-             throw_bad_input(table.origin(key), table.qualified(key), fmt::format("{}", value),
-                             "only with domain.n_z (a box)");
-         }
-         if (!(scene.z_max > scene.z_min))
-           throw_bad_input(table.origin("z_max"), table.qualified("z_max"), fmt::format("{}", scene.z_max),
-                           fmt::format("a number > z_min = {}", scene.z_min));
-       }});
-  add({"domain", "z_max", "number", "1", "finite, > z_min", "box: top end along z (read with z_min)", "",
-       [](const TomlTable&, Scene&) {}});
+  add_box_keys(keys);  // (after n_x, n_y: a box's keys read them)
   add(number_key("domain", "perturb", 0.0, 0.24, 0.0, &Scene::perturb,
                  "moves interior vertices randomly by up to this fraction of the local cell size"));
   add({"domain", "seed", "integer", "1", fmt::format("[0, {}]", 1u << 30), "random seed of `perturb`", "",
@@ -288,8 +246,6 @@ void add_domain_keys(std::vector<SceneKey>& keys) {
                   "rectangle: lines x = c the mesh is graded towards (geometric layers)"));
   add(numbers_key("domain", "grading_y", "y coordinates (numbers) inside the rectangle", &Scene::grading_y,
                   "rectangle: lines y = c the mesh is graded towards"));
-  add(numbers_key("domain", "grading_z", "z coordinates (numbers) inside the box", &Scene::grading_z,
-                  "box: planes z = c the mesh is graded towards (grading_x, grading_y: planes x = c, y = c)"));
   add({"domain", "grading_points", "list of pairs [[x, y], ...]", "", "vertices of the mesh (after snapping)",
        "points whose surrounding cells get `grading_layers` local geometric layers", "",
        [](const TomlTable& table, Scene& scene) {
