@@ -109,6 +109,16 @@ linalg::Coupling surface_coupling(const space::SolidH1Space& space, const space:
   return linalg::squeezed(std::move(b));
 }
 
+bool cell_meets_support(const mesh::SurfaceMultiplierMesh& mesh, int cell, const SolidFunction& s) {
+  const auto [lo, hi] = mesh.cell_bounds(cell);
+  for (double t : basis::gauss_legendre(12).points)
+    for (double u : basis::gauss_legendre(12).points) {
+      const Eigen::Vector2d a = lo + (0.5 * (Eigen::Array2d(t, u) + 1.0) * (hi - lo).array()).matrix();
+      if (s(mesh.surface().from_plane(a)) > 0.0) return true;
+    }
+  return false;
+}
+
 Eigen::VectorXd surface_multiplier_load(const space::SurfaceMultiplierSpace& multipliers, const SolidFunction& g) {
   const mesh::SurfaceMultiplierMesh& multiplier_mesh = multipliers.mesh();
   const basis::QuadratureRule1D& rule = basis::gauss_legendre(multipliers.degree() + 6);

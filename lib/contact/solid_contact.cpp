@@ -18,19 +18,6 @@ namespace hpcontact::contact {
 
 namespace {
 
-/// Whether s > 0 somewhere on cell c of T_{C,H} (sampled at 12 × 12 Gauss points): (13) keeps
-/// λ = 0 on cells outside supp s, where B^s has no entry and λ would be undetermined.
-bool meets_support(const SolidContactSetup& setup, int cell) {
-  const mesh::SurfaceMultiplierMesh& mesh = setup.multipliers->mesh();
-  const auto [lo, hi] = mesh.cell_bounds(cell);
-  for (double t : basis::gauss_legendre(12).points)
-    for (double u : basis::gauss_legendre(12).points) {
-      const Eigen::Vector2d a = lo + (0.5 * (Eigen::Array2d(t, u) + 1.0) * (hi - lo).array()).matrix();
-      if (setup.bound(mesh.surface().from_plane(a)) > 0.0) return true;
-    }
-  return false;
-}
-
 /// The bounds of λ at its nodal points: λ ≤ 0 (9); |λ| ≤ 1 on the cells meeting supp s, λ = 0 on
 /// the others (13); |λ| ≤ s (15).
 MultiplierConstraints nodal_bounds(const SolidContactSetup& setup) {
@@ -45,7 +32,8 @@ MultiplierConstraints nodal_bounds(const SolidContactSetup& setup) {
   if (setup.problem == ContactProblem::signorini) return out;
   std::vector<char> in_support;
   if (setup.problem == ContactProblem::friction)
-    for (int c = 0; c < multipliers.mesh().n_cells(); ++c) in_support.push_back(meets_support(setup, c) ? 1 : 0);
+    for (int c = 0; c < multipliers.mesh().n_cells(); ++c)
+      in_support.push_back(assembly::cell_meets_support(multipliers.mesh(), c, setup.bound) ? 1 : 0);
   for (int i = 0; i < m; ++i) {
     double bound = 1.0;
     if (setup.problem == ContactProblem::friction) bound = in_support[i / multipliers.per_cell()] ? 1.0 : 0.0;

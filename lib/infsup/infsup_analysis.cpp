@@ -78,6 +78,33 @@ std::vector<double> zone_alphas(const InfSupOperators& operators, const space::M
 
 }  // namespace
 
+LadderSolution smallest_on_ladder(const Eigen::MatrixXd& s_g, const Eigen::SparseMatrix<double>& basis, int gram_copies,
+                                  const norms::GramLadder& grams, EigenBackend backend, double tolerance,
+                                  linalg::Distribution distribution) {
+  LadderSolution out;
+  for (int level = 1;; ++level) {
+    out.gram = restrict(block_copies(grams.at(level), gram_copies), basis);
+    Stopwatch eigen_clock;
+    out.pair = backend == EigenBackend::slepc ? smallest_eigenpair_slepc(s_g, out.gram)
+                                              : smallest_eigenpair_dense(s_g, out.gram);
+    out.seconds_eigen += eigen_clock.seconds();
+    out.lambda_min = std::max(out.pair.eigenvalue, 0.0);
+    out.alpha = std::sqrt(out.lambda_min);
+    const Eigen::VectorXd& x = out.pair.eigenvector;
+    const double fine_norm = x.dot(out.gram * x);
+    const double coarse_norm = x.dot(restrict(block_copies(grams.at(level - 1), gram_copies), basis) * x);
+    out.alpha_error = out.alpha * std::abs(std::sqrt(fine_norm / coarse_norm) - 1.0);
+    out.reference_level = level;
+    out.alpha_converged = grams.geometric() && out.alpha_error <= tolerance * out.alpha;
+    int stop = out.alpha_converged || !grams.geometric() || level == grams.top_level();
+    // A distributed ladder builds its next level collectively, so every rank takes rank 0's
+    // decision. The sums over the ranks agree to the bit (sum_over_ranks); this guards the
+    // ranks' own dense work, whose bits could still differ (e.g. another BLAS thread count).
+    if (distribution.distributed()) MPI_Bcast(&stop, 1, MPI_INT, 0, distribution.ranks);
+    if (stop) return out;
+  }
+}
+
 InfSupResult analyse_infsup(const InfSupSetup& setup, EigenBackend backend) {
   if (!(setup.alpha_tolerance > 0.0 && setup.alpha_tolerance <= 0.1))
     throw_bad_input("inf-sup analysis", "alpha_tol", fmt::format("{}", setup.alpha_tolerance), "must be in (0, 0.1]");
@@ -86,33 +113,18 @@ InfSupResult analyse_infsup(const InfSupSetup& setup, EigenBackend backend) {
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
   const std::unique_ptr<norms::GramLadder> own = setup.grams ? nullptr : own_ladder(setup, multipliers);
   const norms::GramLadder& grams = setup.grams ? *setup.grams : *own;
-  const linalg::Distribution distribution = distribution_of(setup);
   const double seconds_gram_before = grams.seconds();
   InfSupResult result;
-  SmallestEigenpair pair;
-  Eigen::MatrixXd fine;
-  for (int level = 1;; ++level) {
-    fine = restrict(block_copies(grams.at(level), operators.gram_copies), operators.basis);
-    Stopwatch eigen_clock;
-    pair = backend == EigenBackend::slepc ? smallest_eigenpair_slepc(operators.s_g, fine)
-                                          : smallest_eigenpair_dense(operators.s_g, fine);
-    result.seconds_eigen += eigen_clock.seconds();
-    result.lambda_min = std::max(pair.eigenvalue, 0.0);
-    result.alpha = std::sqrt(result.lambda_min);
-    const Eigen::VectorXd& x = pair.eigenvector;
-    const double fine_norm = x.dot(fine * x);
-    const double coarse_norm =
-        x.dot(restrict(block_copies(grams.at(level - 1), operators.gram_copies), operators.basis) * x);
-    result.alpha_error = result.alpha * std::abs(std::sqrt(fine_norm / coarse_norm) - 1.0);
-    result.reference_level = level;
-    result.alpha_converged = grams.geometric() && result.alpha_error <= setup.alpha_tolerance * result.alpha;
-    int stop = result.alpha_converged || !grams.geometric() || level == grams.top_level();
-    // A distributed ladder builds its next level collectively, so every rank takes rank 0's
-    // decision. The sums over the ranks agree to the bit (sum_over_ranks); this guards the
-    // ranks' own dense work, whose bits could still differ (e.g. another BLAS thread count).
-    if (distribution.distributed()) MPI_Bcast(&stop, 1, MPI_INT, 0, distribution.ranks);
-    if (stop) break;
-  }
+  const LadderSolution solved = smallest_on_ladder(operators.s_g, operators.basis, operators.gram_copies, grams,
+                                                   backend, setup.alpha_tolerance, distribution_of(setup));
+  const SmallestEigenpair& pair = solved.pair;
+  const Eigen::MatrixXd& fine = solved.gram;
+  result.alpha = solved.alpha;
+  result.lambda_min = solved.lambda_min;
+  result.alpha_error = solved.alpha_error;
+  result.reference_level = solved.reference_level;
+  result.alpha_converged = solved.alpha_converged;
+  result.seconds_eigen = solved.seconds_eigen;
   result.zone_alpha = zone_alphas(operators, multipliers, fine);
   result.lambda_max = pair.largest_eigenvalue;
   result.singular = result.lambda_min <= kRoundOffZero * result.lambda_max;

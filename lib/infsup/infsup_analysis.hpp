@@ -51,4 +51,20 @@ struct InfSupResult {
 
 InfSupResult analyse_infsup(const InfSupSetup& setup, EigenBackend backend);
 
+/// The smallest eigenpair of (S_G, Rᵀ diag(G_ℓ, …) R) (R = `basis`, `gram_copies` blocks) on the
+/// ladder's levels ℓ = 1, 2, … until α's error estimate (header) is below `tolerance` · α, the
+/// ladder stops converging geometrically or ends: the step every α takes, in 2-D and in 3-D.
+/// Distributed, every rank takes the first rank's decision to stop.
+struct LadderSolution {
+  SmallestEigenpair pair;
+  Eigen::MatrixXd gram;  ///< the pencil's G on the final level
+  double alpha = 0.0, lambda_min = 0.0, alpha_error = 0.0;
+  int reference_level = 0;
+  bool alpha_converged = false;
+  double seconds_eigen = 0.0;
+};
+LadderSolution smallest_on_ladder(const Eigen::MatrixXd& s_g, const Eigen::SparseMatrix<double>& basis, int gram_copies,
+                                  const norms::GramLadder& grams, EigenBackend backend, double tolerance,
+                                  linalg::Distribution distribution = {});
+
 }  // namespace hpcontact::infsup

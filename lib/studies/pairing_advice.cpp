@@ -78,7 +78,10 @@ PairingAdvice advise_pairing(const scene::Scene& scene, const AdviceOptions& opt
   for (int pc = 0; pc <= base->d->largest_cell_degree; ++pc)
     for (const auto& [value, text] : kRatios)
       for (const auto& family : space::all_multiplier_families()) {
-        AdviceCandidate c{.pc = pc, .ratio = {value, text}, .family = family};
+        AdviceCandidate c;
+        c.pc = pc;
+        c.ratio = {value, text};
+        c.family = family;
         const bool discontinuous = family.kind == space::MultiplierFamilyKind::discontinuous;
         if (!discontinuous && pc == 0) continue;
         if (discontinuous) c.constraint_points = pc + 1;

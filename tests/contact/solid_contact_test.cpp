@@ -19,27 +19,13 @@ namespace {
 
 constexpr double kWidth = 0.5;
 
-/// The §7 square (x, z) ∈ (−1, 1)² extruded over y ∈ (0, width): Γ_C at z = −1, Γ_D at z = 1 and
-/// at x = 1 for z > 0.
-/// `shuffle` ≠ 0: vertex numbers and cells' vertex orders shuffled by that seed, so that the trace
-/// faces are flipped and swapped in every way (the couplings' signs and face coordinates).
-mesh::SolidMesh extruded_paper_mesh(int n, int n_y, unsigned shuffle = 0) {
-  const mesh::SolidMesh box =
-      mesh::make_box_mesh(Eigen::Vector3d(-1.0, 0.0, -1.0), Eigen::Vector3d(1.0, kWidth, 1.0), {n, n_y, n});
-  mesh::SolidMesh mesh = shuffle != 0 ? testing::shuffled(box, shuffle) : box;
-  mesh.label_boundary_faces([](const mesh::SolidPoint& x) { return x(2) > 1.0 - 1e-9; }, "dirichlet");
-  mesh.label_boundary_faces([](const mesh::SolidPoint& x) { return x(0) > 1.0 - 1e-9 && x(2) > 0.0; }, "dirichlet");
-  mesh.label_boundary_faces([](const mesh::SolidPoint& x) { return x(2) < -1.0 + 1e-9; }, "contact");
-  return mesh;
-}
-
 struct Case {
   ContactProblem problem;
   int n, p, pc, m, n_y, m_y;
   /// Whether the pairing is stable along y too, so that λ is unique: more multipliers along y
   /// than trace functions there leave λ undetermined (u and the energy stay unique).
   bool unique_lambda = true;
-  unsigned shuffle = 0;  ///< see extruded_paper_mesh
+  unsigned shuffle = 0;  ///< see testing::extruded_paper_mesh
 };
 
 TEST(SolidContact, ExtrudedPaperProblemsHaveThePlanarSolution) {
@@ -54,7 +40,7 @@ TEST(SolidContact, ExtrudedPaperProblemsHaveThePlanarSolution) {
     const std::string label = ::testing::PrintToString(
         std::vector<int>{int(c.problem), c.n, c.p, c.pc, c.m, c.n_y, c.m_y, static_cast<int>(c.shuffle)});
     const ContactSolution planar = testing::solve_paper_contact(c.problem, c.n, c.p, c.pc, c.m);
-    const mesh::SolidMesh mesh = extruded_paper_mesh(c.n, c.n_y, c.shuffle);
+    const mesh::SolidMesh mesh = testing::extruded_paper_mesh(c.n, c.n_y, kWidth, c.shuffle);
     const space::SolidH1Space space(mesh, std::vector<int>(mesh.n_cells(), c.p),
                                     space::faces_labelled(mesh, {"dirichlet"}));
     const mesh::FlatContactSurface surface(mesh, {"contact"}, "test");
@@ -96,14 +82,14 @@ TEST(SolidContact, ExtrudedPaperProblemsHaveThePlanarSolution) {
 }
 
 TEST(SolidContact, ContactSurfacesAndMultiplierMeshesRejectBadInput) {
-  const mesh::SolidMesh mesh = extruded_paper_mesh(2, 1);
+  const mesh::SolidMesh mesh = testing::extruded_paper_mesh(2, 1, kWidth);
   EXPECT_THROW(mesh::FlatContactSurface(mesh, {"nowhere"}, "scene.toml"), InputError);
   // Γ_C over two sides of the box is not flat.
   EXPECT_THROW(mesh::FlatContactSurface(mesh, {"contact", "x_min"}, "scene.toml"), InputError);
   const mesh::FlatContactSurface surface(mesh, {"contact"}, "scene.toml");
   EXPECT_THROW(mesh::SurfaceMultiplierMesh(surface, {0, 1}, "scene.toml"), InputError);
   // Three of the four bottom faces: an L, not its bounding rectangle.
-  mesh::SolidMesh l_shape = extruded_paper_mesh(2, 2);
+  mesh::SolidMesh l_shape = testing::extruded_paper_mesh(2, 2, kWidth);
   l_shape.label_boundary_faces(
       [](const mesh::SolidPoint& x) { return x(2) < -1.0 + 1e-9 && x(0) > 0.0 && x(1) > 0.25; }, "z_min");
   const mesh::FlatContactSurface l_surface(l_shape, {"contact"}, "scene.toml");

@@ -1,6 +1,6 @@
 // Hexahedral test meshes: a box mesh whose vertex numbers and cells' local vertex orders are
 // shuffled (so that every orientation of shared edges and faces occurs), and a smoothly distorted
-// one (trilinear, non-affine cells).
+// one (trilinear, non-affine cells), and the §7 square extruded.
 #pragma once
 
 #include <algorithm>
@@ -84,6 +84,20 @@ inline mesh::SolidMesh distorted_unit_cube(int n, double delta) {
     labels.emplace_back(quad, face.label);
   }
   return mesh::SolidMesh(std::move(vertices), std::move(cells), "distorted cube", labels);
+}
+
+/// The §7 square (x, z) ∈ (−1, 1)² extruded over y ∈ (0, width) with n × n_y × n cells: Γ_C
+/// ("contact") at z = −1, Γ_D ("dirichlet") at z = 1 and at x = 1 for z > 0.
+/// `shuffle` ≠ 0: vertex numbers and cells' vertex orders shuffled by that seed, so that the trace
+/// faces are flipped and swapped in every way (the couplings' signs and face coordinates).
+inline mesh::SolidMesh extruded_paper_mesh(int n, int n_y, double width, unsigned shuffle = 0) {
+  const mesh::SolidMesh box =
+      mesh::make_box_mesh(Eigen::Vector3d(-1.0, 0.0, -1.0), Eigen::Vector3d(1.0, width, 1.0), {n, n_y, n});
+  mesh::SolidMesh mesh = shuffle != 0 ? shuffled(box, shuffle) : box;
+  mesh.label_boundary_faces([](const mesh::SolidPoint& x) { return x(2) > 1.0 - 1e-9; }, "dirichlet");
+  mesh.label_boundary_faces([](const mesh::SolidPoint& x) { return x(0) > 1.0 - 1e-9 && x(2) > 0.0; }, "dirichlet");
+  mesh.label_boundary_faces([](const mesh::SolidPoint& x) { return x(2) < -1.0 + 1e-9; }, "contact");
+  return mesh;
 }
 
 }  // namespace hpcontact::testing

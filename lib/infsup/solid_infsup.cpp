@@ -1,0 +1,129 @@
+// α of 3-D pairings: S_G from A_G's trace-last factor, G from the surface interpolation ladder.
+#include "infsup/solid_infsup.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/SparseCore>
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <set>
+
+#include "assembly/solid_cell_system.hpp"
+#include "assembly/surface_coupling.hpp"
+#include "core/error.hpp"
+#include "core/timer.hpp"
+#include "norms/surface_interpolation_gram.hpp"
+#include "space/solid_vector_space.hpp"
+
+namespace hpcontact::infsup {
+
+namespace {
+
+double longest_edge(const mesh::SolidMesh& mesh) {
+  double out = 0.0;
+  for (int e = 0; e < mesh.n_edges(); ++e)
+    out = std::max(out, (mesh.vertex(mesh.edge(e)[1]) - mesh.vertex(mesh.edge(e)[0])).norm());
+  return out;
+}
+
+double longest_side(const mesh::SurfaceMultiplierMesh& mesh) {
+  double out = 0.0;
+  for (int c = 0; c < mesh.n_cells(); ++c) {
+    const auto [lo, hi] = mesh.cell_bounds(c);
+    out = std::max(out, (hi - lo).maxCoeff());
+  }
+  return out;
+}
+
+/// R: the active multiplier functions, one column each: every nodal function for Signorini, those
+/// of the cells of T_{C,H} that meet supp s for friction.
+Eigen::SparseMatrix<double> active_functions(const SolidInfSupSetup& setup) {
+  const space::SurfaceMultiplierSpace& multipliers = *setup.multipliers;
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int c = 0; c < multipliers.mesh().n_cells(); ++c) {
+    if (setup.problem == PairingProblem::friction &&
+        !assembly::cell_meets_support(multipliers.mesh(), c, setup.friction_bound))
+      continue;
+    for (int k = 0; k < multipliers.per_cell(); ++k) {
+      const int dof = multipliers.first_dof(c) + k;
+      entries.emplace_back(dof, static_cast<int>(entries.size()), 1.0);
+    }
+  }
+  if (entries.empty())
+    throw InputError("the friction pairing (22): the bound s vanishes on every cell of T_{C,H} (s ≡ 0 on Γ_C)");
+  Eigen::SparseMatrix<double> basis(multipliers.n_dofs(), static_cast<int>(entries.size()));
+  basis.setFromTriplets(entries.begin(), entries.end());
+  return basis;
+}
+
+}  // namespace
+
+assembly::CondensedFactor solid_gram_factor(const space::SolidH1Space& space, const mesh::FlatContactSurface& surface) {
+  std::set<int> trace;
+  for (const auto& face : surface.faces())
+    for (const int dof : space::dofs_on_face(space, face)) trace.insert(dof);
+  return assembly::CondensedFactor(std::make_unique<assembly::SolidScalarCellSystem>(space, 1.0, 1.0),
+                                   std::vector<int>(trace.begin(), trace.end()));
+}
+
+InfSupResult analyse_solid_infsup(const SolidInfSupSetup& setup, EigenBackend backend) {
+  if (!(setup.alpha_tolerance > 0.0 && setup.alpha_tolerance <= 0.1))
+    throw_bad_input("inf-sup analysis", "alpha_tol", fmt::format("{}", setup.alpha_tolerance), "must be in (0, 0.1]");
+  HPC_VERIFY(setup.space && setup.multipliers, "analyse_solid_infsup: the space or the multipliers are missing");
+  if (setup.problem == PairingProblem::friction && !setup.friction_bound)
+    throw InputError("the friction pairing (22) needs the friction bound s (data.s)");
+  const space::SolidH1Space& space = *setup.space;
+  const space::SurfaceMultiplierSpace& multipliers = *setup.multipliers;
+  Stopwatch clock;
+  InfSupResult result;
+
+  // 1. B (B^s for friction) and the active multiplier functions R.
+  Stopwatch phase;
+  const linalg::Coupling b = assembly::surface_coupling(
+      space, multipliers, setup.problem == PairingProblem::friction ? setup.friction_bound : assembly::SolidFunction());
+  const Eigen::SparseMatrix<double> basis = active_functions(setup);
+  result.seconds_assembly = phase.seconds();
+
+  // 2. S_G = Rᵀ B A_G⁻¹ Bᵀ R from A_G's trace-last factor.
+  phase = Stopwatch();
+  std::unique_ptr<assembly::CondensedFactor> own_factor;
+  if (!setup.gram_factor)
+    own_factor = std::make_unique<assembly::CondensedFactor>(solid_gram_factor(space, multipliers.mesh().surface()));
+  const assembly::CondensedFactor& factor = setup.gram_factor ? *setup.gram_factor : *own_factor;
+  const Eigen::MatrixXd s_g = restrict(factor.schur_complement(b), basis);
+  result.seconds_primal = phase.seconds();
+
+  // 3. G on its ladder and the smallest eigenpair.
+  std::unique_ptr<norms::GramLadder> own_ladder;
+  if (!setup.grams)
+    own_ladder = std::make_unique<norms::GramLadder>(norms::surface_interpolation_gram_ladder(multipliers));
+  const norms::GramLadder& grams = setup.grams ? *setup.grams : *own_ladder;
+  const double seconds_gram_before = grams.seconds();
+  const LadderSolution solved = smallest_on_ladder(s_g, basis, 1, grams, backend, setup.alpha_tolerance);
+  result.alpha = solved.alpha;
+  result.lambda_min = solved.lambda_min;
+  result.alpha_error = solved.alpha_error;
+  result.reference_level = solved.reference_level;
+  result.alpha_converged = solved.alpha_converged;
+  result.seconds_eigen = solved.seconds_eigen;
+  result.seconds_gram = grams.seconds() - seconds_gram_before;
+  result.lambda_max = solved.pair.largest_eigenvalue;
+  result.singular = result.lambda_min <= kRoundOffZero * result.lambda_max;
+  result.mode = basis * solved.pair.eigenvector;
+  result.method = solved.pair.method;
+  result.residual = solved.pair.residual;
+
+  // 4. What the record reports of the pairing.
+  result.h = longest_edge(space.mesh());
+  result.H = longest_side(multipliers.mesh());
+  int smallest_p = space.cell_degree(0);
+  for (int c = 0; c < space.mesh().n_cells(); ++c) smallest_p = std::min(smallest_p, space.cell_degree(c));
+  result.pi = stability_indicator(result.h, result.H, smallest_p, multipliers.degree());
+  result.n_primal_dofs = space.n_dofs();
+  result.n_multiplier_dofs = multipliers.n_dofs();
+  result.seconds = clock.seconds();
+  return result;
+}
+
+}  // namespace hpcontact::infsup

@@ -1,0 +1,41 @@
+// The inf-sup constant α(h, H, p, p_C) of a 3-D pairing: S^p(T_h) on hexahedra with M^{p_C}(T_{C,H})
+// on a flat rectangular Γ_C,
+//   α² = λ_min of  S_G x = λ G x,   S_G = B A_G⁻¹ Bᵀ,   A_G = K + M,
+// with B the coupling (Signorini, (11)) or B^s with the multipliers of the cells of T_{C,H} that
+// meet supp s (friction, (22)), and G the interpolation norm of H^{-1/2}(Γ_C)
+// (norms/surface_interpolation_gram.hpp), refined on its ladder until α's error estimate is below
+// the tolerance, as in 2-D (infsup/infsup_analysis.hpp). S_G is dense: B A_G⁻¹ Bᵀ from the trailing
+// block of A_G's factor with Γ_C's trace last.
+#pragma once
+
+#include "assembly/condensed_factor.hpp"
+#include "assembly/solid_load.hpp"
+#include "infsup/infsup_analysis.hpp"
+#include "mesh/contact_surface.hpp"
+#include "space/solid_space.hpp"
+#include "space/surface_multiplier_space.hpp"
+
+namespace hpcontact::infsup {
+
+/// A_G = K + M on `space` with every dof of Γ_C (`surface`) last: one factor serves every
+/// multiplier space on Γ_C (a sweep's p_C and H on one T_h).
+assembly::CondensedFactor solid_gram_factor(const space::SolidH1Space& space, const mesh::FlatContactSurface& surface);
+
+struct SolidInfSupSetup {
+  const space::SolidH1Space* space = nullptr;
+  const space::SurfaceMultiplierSpace* multipliers = nullptr;  ///< on Γ_C of the space's mesh
+  PairingProblem problem = PairingProblem::signorini;
+  assembly::SolidFunction friction_bound;  ///< s, required for the friction problem
+  double alpha_tolerance = 1e-4;           ///< in (0, 0.1]
+  /// Optional, built when absent: solid_gram_factor of (space, Γ_C), and the ladder of
+  /// `multipliers` (surface_interpolation_gram_ladder).
+  const assembly::CondensedFactor* gram_factor = nullptr;
+  const norms::GramLadder* grams = nullptr;
+};
+
+/// α with the fields of InfSupResult: h the longest edge of T_h, H the longest side of the cells
+/// of T_{C,H}, the mode in the multipliers' nodal coefficients (0 off supp s), no zones.
+/// @throws InputError for a bad tolerance, a friction problem without s or with s ≡ 0 on Γ_C.
+InfSupResult analyse_solid_infsup(const SolidInfSupSetup& setup, EigenBackend backend);
+
+}  // namespace hpcontact::infsup

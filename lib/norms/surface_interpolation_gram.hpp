@@ -1,0 +1,34 @@
+// The interpolation-norm Gram matrix of the multipliers on a flat rectangular Γ_C (3-D), by the
+// fractional power of the surface Laplacian in its own eigenbasis.
+//
+// H^{1/2}(Γ_C) = [L², H¹]_{1/2} on the rectangle R = [0, L₁] × [0, L₂] (no boundary conditions on
+// its sides) is the Hilbert scale of T = I − Δ with natural (Neumann) conditions, whose
+// eigenfunctions are the cosine products φ_{jk}(a) = c_j(a₁) c_k(a₂), c_0 = 1/√L, c_j =
+// √(2/L) cos(jπa/L), with eigenvalues 1 + (jπ/L₁)² + (kπ/L₂)². So the dual norm is
+//     ‖μ‖²_{-1/2} = (μ, T^{-1/2} μ) = Σ_{j,k} (μ, φ_{jk})² (1 + (jπ/L₁)² + (kπ/L₂)²)^{-1/2}.
+// T_{C,H} is a tensor grid and its multipliers tensor Lagrange polynomials, so (ℓ_i, φ_{jk})
+// factors into one-dimensional moments, and G is two matrix products of the moments.
+// Truncating the sum at j < N₁, k < N₂ drops positive terms only: the truncations increase
+// towards G (the ladder's levels double N and are ordered, as norms/gram_ladder.hpp asks), and a
+// piecewise polynomial with jumps has moments O(1/j), so the dropped part decays like 1/N²
+// (a factor 4 per level).
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+
+#include "norms/gram_ladder.hpp"
+#include "space/surface_multiplier_space.hpp"
+
+namespace hpcontact::norms {
+
+/// G with the cosine modes j < modes[0], k < modes[1]: dense, symmetric positive semi-definite
+/// (definite once the modes outnumber the multipliers along each axis), shape (n_dofs, n_dofs)
+/// in the multipliers' own numbering.
+Eigen::MatrixXd surface_interpolation_gram(const space::SurfaceMultiplierSpace& multipliers, std::array<int, 2> modes);
+
+/// Level ℓ keeps 8 · 2^ℓ cosine modes per multiplier function along each axis ((p_C + 1) m_k per
+/// axis k), levels 0 … 5. `multipliers` must outlive the ladder.
+GramLadder surface_interpolation_gram_ladder(const space::SurfaceMultiplierSpace& multipliers);
+
+}  // namespace hpcontact::norms

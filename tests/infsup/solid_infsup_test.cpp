@@ -1,0 +1,163 @@
+// α of 3-D pairings: the surface interpolation norm (exact on constants, increasing and converging
+// by a factor 4 per level of its ladder), the §7 pairing extruded in y against the planar α, the
+// 3-D analogue of Figure 2 (ratio 1 decays, 1/2 stays bounded), SLEPc against the dense path, and
+// the friction pairing (22) restricted to supp s.
+#include "infsup/solid_infsup.hpp"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "norms/surface_interpolation_gram.hpp"
+#include "support/paper_alpha.hpp"
+#include "support/slepc_test_environment.hpp"
+#include "support/solid_meshes.hpp"
+
+using namespace hpcontact;
+
+namespace {
+
+/// The §7 pairing extruded over y ∈ (0, width): n × n_y × n cells of degree p, T_{C,H} an m × m_y
+/// grid of degree p_C.
+struct Extruded {
+  int n, n_y, p, pc, m, m_y;
+  double width = 0.5;
+  infsup::PairingProblem problem = infsup::PairingProblem::signorini;
+};
+
+struct Built {
+  explicit Built(const Extruded& c)
+      : mesh(hpcontact::testing::extruded_paper_mesh(c.n, c.n_y, c.width)),
+        space(mesh, std::vector<int>(mesh.n_cells(), c.p), space::faces_labelled(mesh, {"dirichlet"})),
+        surface(mesh, {"contact"}, "test"),
+        multiplier_mesh(surface, {c.m, c.m_y}, "test"),
+        multipliers(multiplier_mesh, c.pc) {}
+  mesh::SolidMesh mesh;
+  space::SolidH1Space space;
+  mesh::FlatContactSurface surface;
+  mesh::SurfaceMultiplierMesh multiplier_mesh;
+  space::SurfaceMultiplierSpace multipliers;
+};
+
+infsup::InfSupResult alpha(const Extruded& c, infsup::EigenBackend backend = infsup::EigenBackend::dense,
+                           double tolerance = 1e-4) {
+  const Built built(c);
+  infsup::SolidInfSupSetup setup;
+  setup.space = &built.space;
+  setup.multipliers = &built.multipliers;
+  setup.problem = c.problem;
+  setup.friction_bound = [](const mesh::SolidPoint& x) { return std::max(0.0, -x(0)); };
+  setup.alpha_tolerance = tolerance;
+  return infsup::analyse_solid_infsup(setup, backend);
+}
+
+}  // namespace
+
+// One constant multiplier on the whole rectangle: only the mode φ_00 = 1/√(L₁L₂) meets it, so
+// G = (∫ 1 · φ_00)² = L₁ L₂ exactly, with any number of modes.
+TEST(SolidInfSup, GramOfAConstantIsTheArea) {
+  const Built built({2, 1, 1, 0, 1, 1, 0.5});
+  for (int modes : {1, 7, 64}) {
+    const Eigen::MatrixXd gram = norms::surface_interpolation_gram(built.multipliers, {modes, modes + 3});
+    ASSERT_EQ(gram.rows(), 1);
+    EXPECT_NEAR(gram(0, 0), 2.0 * 0.5, 1e-12) << modes;
+  }
+}
+
+// The truncations grow towards G (each adds positive terms) and the dropped part decays like 1/N²:
+// α on the ladder's levels decreases, by a factor about 4 less per level.
+TEST(SolidInfSup, LadderIncreasesAndConvergesByAFactorFourPerLevel) {
+  const Built built({4, 2, 2, 1, 4, 2});
+  const assembly::CondensedFactor factor = infsup::solid_gram_factor(built.space, built.surface);
+  const norms::GramLadder ladder = norms::surface_interpolation_gram_ladder(built.multipliers);
+  std::vector<double> alphas;
+  for (int level = 0; level <= 4; ++level) {
+    infsup::SolidInfSupSetup setup;
+    setup.space = &built.space;
+    setup.multipliers = &built.multipliers;
+    setup.gram_factor = &factor;
+    // (a ladder of this level alone: its top is `level`)
+    const norms::GramLadder up_to([&ladder, level](int l, bool*) { return ladder.at(std::min(l, level)); },
+                                  std::max(level, 1));
+    setup.grams = &up_to;
+    setup.alpha_tolerance = 1e-12;  // (never met: α on the top level)
+    alphas.push_back(infsup::analyse_solid_infsup(setup, infsup::EigenBackend::dense).alpha);
+  }
+  for (int level = 0; level < 4; ++level) {
+    const Eigen::MatrixXd difference = ladder.at(level + 1) - ladder.at(level);
+    EXPECT_GT(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(difference).eigenvalues().minCoeff(),
+              -1e-12 * ladder.at(level).norm())
+        << level;
+    EXPECT_LE(alphas[level + 1], alphas[level] * (1 + 1e-12)) << level;
+  }
+  for (int level = 1; level < 4; ++level)
+    EXPECT_GT((alphas[level - 1] - alphas[level]) / (alphas[level] - alphas[level + 1]), 3.0) << level;
+}
+
+// One cell of T_h and of T_{C,H} along y with p_C = 0: the multipliers are μ(x) ⊗ 1, A_G⁻¹Bᵀμ is
+// constant in y, and the cosine modes along y other than the constant do not meet μ, so S_G and G
+// are the planar ones times the width and α is the planar α (the planar interpolation norm is
+// realized by its kernel: an independent path).
+TEST(SolidInfSup, ExtrudedPairingHasThePlanarAlpha) {
+  struct Case {
+    int n, p, m;
+  };
+  for (const Case& c : {Case{8, 1, 8}, Case{8, 1, 4}, Case{4, 2, 4}, Case{4, 3, 8}}) {
+    const double planar = hpcontact::testing::paper_alpha(c.n, c.p, 0, c.m).alpha;
+    const infsup::InfSupResult solid = alpha({c.n, 1, c.p, 0, c.m, 1, 0.7}, infsup::EigenBackend::dense, 1e-6);
+    EXPECT_TRUE(solid.alpha_converged || solid.alpha_error < 1e-5 * solid.alpha) << c.n << " " << c.p << " " << c.m;
+    EXPECT_NEAR(solid.alpha, planar, 1e-5 * planar) << c.n << " " << c.p << " " << c.m;
+  }
+}
+
+// Figure 2 in 3-D, on the extruded square with n_y = n: p = 1, p_C = 0 with H = h decays at least
+// like h (faster than in 2-D: the surface checkerboard meets Bᵀ only at the corners of Γ_C), and
+// p = 2, p_C = 0 with H = 2h stays bounded.
+TEST(SolidInfSup, RatioOneDecaysRatioOneHalfStaysBounded) {
+  const auto at = [](int n, int p, int m) { return alpha({n, n, p, 0, m, m, 2.0}).alpha; };
+  const double unstable[3] = {at(2, 1, 2), at(4, 1, 4), at(8, 1, 8)};
+  EXPECT_LT(unstable[1] / unstable[0], 0.55);
+  EXPECT_LT(unstable[2] / unstable[1], 0.55);
+  const double stable[2] = {at(4, 2, 2), at(8, 2, 4)};
+  EXPECT_NEAR(stable[1] / stable[0], 1.0, 0.01);
+  EXPECT_GT(stable[1], 0.9);
+}
+
+TEST(SolidInfSup, SlepcAgreesWithDensePath) {
+  for (const Extruded& c : {Extruded{4, 2, 2, 1, 4, 2}, Extruded{4, 4, 1, 0, 4, 4}, Extruded{2, 2, 3, 2, 2, 2}}) {
+    const auto dense = alpha(c, infsup::EigenBackend::dense), slepc = alpha(c, infsup::EigenBackend::slepc);
+    EXPECT_NEAR(slepc.alpha, dense.alpha, 1e-8 * std::max(1.0, dense.alpha)) << c.n << " " << c.p << " " << c.pc;
+    EXPECT_EQ(slepc.reference_level, dense.reference_level);
+  }
+}
+
+// (22): with s ≡ 1 it is the Signorini pairing (11); with s = max(0, −x) the multipliers of the
+// T_{C,H} cells in x > 0 are dropped (the mode is 0 there); with s ≡ 0 it is refused.
+TEST(SolidInfSup, FrictionPairingKeepsTheCellsOfSuppS) {
+  const Extruded c{4, 2, 2, 1, 4, 2};
+  const Built built(c);
+  const auto friction = [&](assembly::SolidFunction s) {
+    infsup::SolidInfSupSetup setup;
+    setup.space = &built.space;
+    setup.multipliers = &built.multipliers;
+    setup.problem = infsup::PairingProblem::friction;
+    setup.friction_bound = std::move(s);
+    return infsup::analyse_solid_infsup(setup, infsup::EigenBackend::dense);
+  };
+  EXPECT_NEAR(friction([](const mesh::SolidPoint&) { return 1.0; }).alpha, alpha(c).alpha, 1e-10);
+  const infsup::InfSupResult half = friction([](const mesh::SolidPoint& x) { return std::max(0.0, -x(0)); });
+  ASSERT_EQ(half.mode.size(), built.multipliers.n_dofs());
+  int dropped = 0;
+  for (int dof = 0; dof < built.multipliers.n_dofs(); ++dof) {
+    const auto [lo, hi] = built.multiplier_mesh.cell_bounds(dof / built.multipliers.per_cell());
+    if (built.surface.from_plane(0.5 * (lo + hi))(0) > 0.0) {
+      EXPECT_EQ(half.mode(dof), 0.0) << dof;
+      ++dropped;
+    }
+  }
+  EXPECT_EQ(dropped, built.multipliers.n_dofs() / 2);
+  EXPECT_GT(half.alpha, 0.0);
+  EXPECT_THROW(friction([](const mesh::SolidPoint&) { return 0.0; }), InputError);
+}
