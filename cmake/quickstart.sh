@@ -162,6 +162,11 @@ build/bin/hpcontact sweep studies/elasticity/stability.toml --out results/elasti
 "$python" plots/plot_stability.py results/elastic_stability
 publish results/elastic_stability/stable_map.png studies/elasticity/stable_map.png
 publish results/elastic_stability/stable_map_friction_interp.png studies/elasticity/stable_map_friction.png
+section "3-D stability sweep: studies/three_d/stability.toml -> results/stability3d"
+build/bin/hpcontact sweep studies/three_d/stability.toml --out results/stability3d --restart
+"$python" plots/plot_stability.py results/stability3d
+publish results/stability3d/stable_map.png studies/three_d/stable_map.png
+publish results/stability3d/alpha_vs_h.png studies/three_d/alpha_vs_h.png
 section "two bodies: studies/two_bodies/{stability,families}.toml -> results/two_body_*"
 for study in stability families; do
   build/bin/hpcontact sweep "studies/two_bodies/$study.toml" --out "results/two_body_$study" --restart

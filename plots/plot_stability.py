@@ -106,7 +106,7 @@ def plot_alpha_vs_h(rows, folder):
     entries = [legend[key] for key in sorted(legend)]  # by p, then p_C
     figure.legend([line for _, line in entries], [label for label, _ in entries], loc="lower center",
                   ncol=columns, fontsize=8, bbox_to_anchor=(0.5, 0.0))
-    figure.suptitle(r"inf-sup constant $\alpha$ against $h_{\min}$ (slope 1: an unstable pairing)")
+    figure.suptitle(r"inf-sup constant $\alpha$ against $h_{\min}$ (a positive slope: an unstable pairing)")
     figure.tight_layout(rect=(0, (0.28 * legend_rows + 0.1) / height, 1, 1))
     save(figure, folder / "alpha_vs_h.png")
 

@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "core/petsc_session.hpp"
 #include "driver/run_stages.hpp"
+#include "driver/solid_pairing.hpp"
 #include "infsup/infsup_analysis.hpp"
 #include "infsup/infsup_record.hpp"
 #include "io/atomic_file.hpp"
@@ -55,6 +56,20 @@ scene::Scene resolve_scene(const InfSupOptions& o) {
   return scene::read_scene(o.scene, overrides);
 }
 
+// α of a 3-D scene: one process, no spurious-mode samples (they are planar).
+driver::InfSupSummary solid_infsup(const InfSupOptions& o, const scene::Scene& scene, infsup::EigenBackend backend,
+                                   int ranks) {
+  if (ranks > 1) throw InputError(scene.file + ": α of a 3-D scene runs on one process: run it without mpirun");
+  if (!o.mode.empty())
+    throw InputError(
+        fmt::format("hpcontact infsup --mode {}: the spurious mode is sampled on planar Γ_C only; {} is "
+                    "a 3-D scene",
+                    o.mode, scene.file));
+  driver::check_solid_scene(scene, {});
+  const auto d = driver::discretize_solid_scene(scene);
+  return driver::solid_scene_alpha(scene, *d, backend).summary;
+}
+
 int run_infsup(const InfSupOptions& o) {
   // 1. Check the input.
   const std::string where = "hpcontact infsup";
@@ -66,20 +81,27 @@ int run_infsup(const InfSupOptions& o) {
 
   // 2. Build T_h (under mpirun by rank 0 alone, which sends each rank its part) and T_{C,H}, and
   // solve the eigenproblem. Under mpirun A_G is factorized over the ranks, and rank 0 reports and
-  // writes.
-  const int rank = mpi_rank_and_size().first;
-  // The run's own stages: an elastic scene pairs the normal (and tangential) multipliers with
-  // [S^p(T_h)]². Distributed, the operators hold the rank's part: the whole mesh is kept only for
-  // the extension norm's references, which refine it.
-  const driver::StageContext context{linalg::distribution_over(MPI_COMM_WORLD, distributed_solver), {}};
-  const auto level = driver::discretize(scene, context);
-  driver::build_operators(*level, nullptr, context, scene.norm == infsup::GramNorm::extension);
-  const auto setup = level->model->infsup_setup();
-  const auto result = infsup::analyse_infsup(setup, backend);
-  if (rank != 0) return 0;
+  // writes. A 3-D scene runs on one process.
+  const auto [rank, size] = mpi_rank_and_size();
+  driver::InfSupSummary summary;
+  if (scene.dimension() == 3) {
+    summary = solid_infsup(o, scene, backend, size);
+  } else {
+    // The run's own stages: an elastic scene pairs the normal (and tangential) multipliers with
+    // [S^p(T_h)]². Distributed, the operators hold the rank's part: the whole mesh is kept only
+    // for the extension norm's references, which refine it.
+    const driver::StageContext context{linalg::distribution_over(MPI_COMM_WORLD, distributed_solver), {}};
+    const auto level = driver::discretize(scene, context);
+    driver::build_operators(*level, nullptr, context, scene.norm == infsup::GramNorm::extension);
+    const auto setup = level->model->infsup_setup();
+    const auto result = infsup::analyse_infsup(setup, backend);
+    if (rank != 0) return 0;
+    summary = driver::infsup_summary(*level, setup, result);
+    if (!o.mode.empty())
+      postprocess::sample_mode(*level->d->contact, *level->d->multipliers, result.mode).write(o.mode);
+  }
 
   // 3. Report and save: the α record of the run's stages, the CSV row a sweep's alpha.csv has.
-  const auto summary = driver::infsup_summary(*level, setup, result);
   const auto& record = summary.record;
   fmt::print("alpha = {:.17g}\n", record.alpha);
   for (std::size_t z = 0; z < summary.zone_alpha.size(); ++z)
@@ -96,8 +118,11 @@ int run_infsup(const InfSupOptions& o) {
              infsup::to_string(record.problem), infsup::to_string(record.norm), record.p, record.pc, record.n, record.m,
              scene.ratio.size() == 1 ? scene.ratio.front().text : fmt::format("{}", record.ratio), record.pi,
              record.ndofs, record.nmult);
-  fmt::print("# alpha_predicted {:.6g} (the local predictor, docs/stability.md: stable at >= 0.2)\n",
-             record.alpha_predicted);
+  if (std::isnan(record.alpha_predicted))
+    fmt::print("# alpha_predicted: none (the local predictor is planar)\n");
+  else
+    fmt::print("# alpha_predicted {:.6g} (the local predictor, docs/stability.md: stable at >= 0.2)\n",
+               record.alpha_predicted);
   fmt::print("# lambda_min {:.6e} lambda_max {:.6e}{} solver {} residual {:.2e} seconds {:.3f}\n", summary.lambda_min,
              summary.lambda_max, summary.lambda_unique ? "" : " (singular to working precision: alpha = 0)",
              summary.eigensolver, summary.residual, record.seconds);
@@ -106,7 +131,6 @@ int run_infsup(const InfSupOptions& o) {
     io::add_alpha_row(row, record);
     io::append_csv_rows(o.csv, row);
   }
-  if (!o.mode.empty()) postprocess::sample_mode(*level->d->contact, *level->d->multipliers, result.mode).write(o.mode);
   return 0;
 }
 

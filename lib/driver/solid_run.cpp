@@ -12,6 +12,7 @@
 #include "core/interrupt.hpp"
 #include "core/timer.hpp"
 #include "driver/run_outputs.hpp"
+#include "driver/solid_pairing.hpp"
 #include "driver/solid_scene.hpp"
 #include "driver/summary_json.hpp"
 #include "io/atomic_file.hpp"
@@ -55,12 +56,6 @@ double multiplier_at(const space::SurfaceMultiplierSpace& multipliers, const Eig
   return multipliers.values(cell, a).dot(coefficients.segment(multipliers.first_dof(cell), multipliers.per_cell()));
 }
 
-assembly::SolidFunction scene_function(const scene::Scene& scene, const std::string& text, const char* key) {
-  if (text.empty()) return {};
-  const Expression expression(text, scene.where(key) + ": key '" + key + "'", 3);
-  return [expression](const mesh::SolidPoint& x) { return expression(x(0), x(1), x(2)); };
-}
-
 /// What every 3-D contact result holds of its solution (beside the samples' area and force).
 template <class Solution>
 ContactResult solid_result(scene::Effect effect, const Solution& solution, long long n_dofs, long long nmult,
@@ -87,9 +82,9 @@ SolvedSolid solve_scalar(const scene::Scene& scene, const SolidDiscretization& d
   setup.problem = effect == scene::Effect::friction     ? contact::ContactProblem::friction
                   : effect == scene::Effect::friction_s ? contact::ContactProblem::friction_s
                                                         : contact::ContactProblem::signorini;
-  setup.f = scene_function(scene, scene.load, "data.f");
-  setup.obstacle = scene_function(scene, scene.obstacle, "data.g");
-  setup.bound = scene_function(scene, scene.friction_bound, "data.s");
+  setup.f = solid_scene_function(scene, scene.load, "data.f");
+  setup.obstacle = solid_scene_function(scene, scene.obstacle, "data.g");
+  setup.bound = solid_scene_function(scene, scene.friction_bound, "data.s");
   auto solution = std::make_shared<const contact::SolidContactSolution>(contact::solve_solid_contact(setup));
   const bool signorini = effect == scene::Effect::signorini;
   const assembly::SolidFunction& data = signorini ? setup.obstacle : setup.bound;
@@ -120,10 +115,10 @@ SolvedSolid solve_elastic(const scene::Scene& scene, const SolidDiscretization& 
   setup.space = d.vector_space.get();
   setup.multipliers = d.multipliers.get();
   setup.materials = d.materials;
-  setup.body_force = {scene_function(scene, scene.body_force_x, "data.f_x"),
-                      scene_function(scene, scene.body_force_y, "data.f_y"),
-                      scene_function(scene, scene.body_force_z, "data.f_z")};
-  setup.gap = scene_function(scene, scene.obstacle, "data.g");
+  setup.body_force = {solid_scene_function(scene, scene.body_force_x, "data.f_x"),
+                      solid_scene_function(scene, scene.body_force_y, "data.f_y"),
+                      solid_scene_function(scene, scene.body_force_z, "data.f_z")};
+  setup.gap = solid_scene_function(scene, scene.obstacle, "data.g");
   if (!setup.gap) throw_bad_input(scene.where("data.g"), "data.g", "(missing)", "the gap to the obstacle along n");
   auto solution = std::make_shared<const contact::SolidElasticSolution>(contact::solve_solid_frictionless(setup));
   SolvedSolid out{{}, io::CsvTable({"x", "y", "z", "w", "gap", "pressure", "traction_1", "traction_2"}), {}};
@@ -170,9 +165,14 @@ RunResult run_solid_scene(const scene::Scene& scene, const SceneRunOptions& opti
   result.m = d->multiplier_mesh->n_cells();
   result.n_dofs = d->vector_space ? d->vector_space->n_dofs() : d->space->n_dofs();
   result.nmult = d->multipliers->n_dofs();
-  // 2. The contact problems.
+  // 2. α of the pairing (effect infsup), then the contact problems.
+  if (scene.has_effect(scene::Effect::infsup)) {
+    say("inf-sup constant");
+    result.infsup = solid_scene_alpha(scene, *d, infsup::EigenBackend::slepc).summary;
+  }
   std::vector<SolvedSolid> solved;
   for (const auto effect : scene.effects) {
+    if (effect == scene::Effect::infsup) continue;
     say("solving " + scene::to_string(effect));
     solved.push_back(effect == scene::Effect::frictionless ? solve_elastic(scene, *d)
                                                            : solve_scalar(scene, *d, effect));

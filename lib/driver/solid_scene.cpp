@@ -45,6 +45,9 @@ const std::set<std::string>& solid_scene_keys() {
                                           "contact_mesh.ratio",
                                           "discretization.p",
                                           "discretization.pC",
+                                          "infsup.norm",
+                                          "infsup.problem",
+                                          "infsup.alpha_tol",
                                           "data.f",
                                           "data.g",
                                           "data.s",
@@ -132,8 +135,8 @@ std::vector<assembly::Material> scene_materials(const scene::Scene& scene, const
 /// or two), or the trace faces along each axis times contact_mesh.ratio (h/H), which must give
 /// whole numbers (Γ_C uniform along the axis: its width over a face's).
 std::array<int, 2> multiplier_cells(const scene::Scene& scene, const mesh::FlatContactSurface& surface) {
-  if (scene.given.contains("contact_mesh.m")) {
-    if (scene.m.size() > 2)
+  if (scene.ratio.empty()) {  // (a scene gives one of m and ratio; a sweep's ratio replaces m)
+    if (scene.m.empty() || scene.m.size() > 2)
       throw_bad_input(scene.where("contact_mesh.m"), "contact_mesh.m", fmt::format("{}", fmt::join(scene.m, ", ")),
                       "one or two integers in a 3-D scene: the cells of T_{C,H} along Γ_C's two axes");
     return {scene.m.front(), scene.m.back()};
@@ -180,12 +183,13 @@ void check_solid_scene(const scene::Scene& scene, const SceneRunOptions& options
                                   fmt::join(solid_scene_keys(), ", ")));
   for (const auto effect : scene.effects)
     if (effect != scene::Effect::signorini && effect != scene::Effect::friction &&
-        effect != scene::Effect::friction_s && effect != scene::Effect::frictionless)
+        effect != scene::Effect::friction_s && effect != scene::Effect::frictionless && effect != scene::Effect::infsup)
       throw_bad_input(scene.where("run.effects"), "run.effects", scene::to_string(effect),
-                      "signorini, friction or friction_s (scalar), or frictionless (elastic) in a 3-D scene");
+                      "signorini, friction or friction_s (scalar), frictionless (elastic), or infsup (α of the "
+                      "scalar pairing) in a 3-D scene");
   if (scene.effects.empty())
     throw_bad_input(scene.where("run.effects"), "run.effects", "(none)",
-                    "at least one of signorini, friction, friction_s, frictionless");
+                    "at least one of signorini, friction, friction_s, frictionless, infsup");
   if (scene.pair || scene.is_master)
     throw_bad_input(scene.where(scene.n_z > 0 ? "domain.n_z" : "domain.z_nodes"),
                     scene.n_z > 0 ? "domain.n_z" : "domain.z_nodes", "(given)",
@@ -198,6 +202,18 @@ void check_solid_scene(const scene::Scene& scene, const SceneRunOptions& options
     throw_bad_input(scene.where(scene.p.rule.empty() ? "discretization.pC" : "discretization.p"),
                     scene.p.rule.empty() ? "discretization.pC" : "discretization.p",
                     scene.p.rule.empty() ? scene.pc.rule : scene.p.rule, "an integer in a 3-D scene");
+}
+
+assembly::SolidFunction solid_scene_function(const scene::Scene& scene, const std::string& text, const char* key) {
+  if (text.empty()) return {};
+  const Expression expression(text, scene.where(key) + ": key '" + key + "'", 3);
+  return [expression](const mesh::SolidPoint& x) { return expression(x(0), x(1), x(2)); };
+}
+
+std::unique_ptr<mesh::SurfaceMultiplierMesh> solid_multiplier_mesh(const scene::Scene& scene,
+                                                                   const mesh::FlatContactSurface& surface) {
+  return std::make_unique<mesh::SurfaceMultiplierMesh>(surface, multiplier_cells(scene, surface),
+                                                       scene.where("boundary.contact") + ": key 'boundary.contact'");
 }
 
 std::unique_ptr<SolidDiscretization> discretize_solid_scene(const scene::Scene& scene) {
@@ -221,8 +237,7 @@ std::unique_ptr<SolidDiscretization> discretize_solid_scene(const scene::Scene& 
   }
   const std::string origin = scene.where("boundary.contact") + ": key 'boundary.contact'";
   d->surface = std::make_unique<mesh::FlatContactSurface>(*d->mesh, std::vector<std::string>{"contact"}, origin);
-  d->multiplier_mesh =
-      std::make_unique<mesh::SurfaceMultiplierMesh>(*d->surface, multiplier_cells(scene, *d->surface), origin);
+  d->multiplier_mesh = solid_multiplier_mesh(scene, *d->surface);
   d->multipliers = std::make_unique<space::SurfaceMultiplierSpace>(*d->multiplier_mesh, scene.pc.value);
   return d;
 }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "assembly/material.hpp"
+#include "assembly/solid_load.hpp"
 #include "driver/scene_run.hpp"
 #include "mesh/contact_surface.hpp"
 #include "scene/scene.hpp"
@@ -33,5 +34,13 @@ struct SolidDiscretization {
 
 /// @throws InputError as the builders do, naming the scene's keys.
 std::unique_ptr<SolidDiscretization> discretize_solid_scene(const scene::Scene& scene);
+
+/// The scene's expression `text` (key `key`, in x, y, z) as a function; empty for an empty text.
+assembly::SolidFunction solid_scene_function(const scene::Scene& scene, const std::string& text, const char* key);
+
+/// T_{C,H} of the scene on Γ_C: contact_mesh.m (one or two counts) or contact_mesh.ratio.
+/// @throws InputError naming the key.
+std::unique_ptr<mesh::SurfaceMultiplierMesh> solid_multiplier_mesh(const scene::Scene& scene,
+                                                                   const mesh::FlatContactSurface& surface);
 
 }  // namespace hpcontact::driver

@@ -9,6 +9,8 @@
 #include "driver/elastic_scene.hpp"
 #include "driver/pairing_stability.hpp"
 #include "driver/scene_discretization.hpp"
+#include "driver/solid_pairing.hpp"
+#include "infsup/solid_infsup.hpp"
 #include "mesh/boundary_mesh.hpp"
 #include "mesh/contact_boundary.hpp"
 #include "mesh/contact_pair_geometry.hpp"
@@ -26,10 +28,13 @@ namespace hpcontact::studies {
 class SweepEvaluation::Group {
  public:
   Group(const scene::Scene& level_scene, std::size_t group_share, linalg::Distribution distribution)
-      : scene(level_scene),
-        share(group_share),
-        built(driver::build_scene_mesh_on_first_rank(scene, distribution)),
-        contact(*built.contact_cells) {
+      : scene(level_scene), share(group_share) {
+    if (scene.dimension() == 3) {
+      build_solid(distribution);
+      return;
+    }
+    built = driver::build_scene_mesh_on_first_rank(scene, distribution);
+    contact.emplace(*built.contact_cells);
     if (scene.is_elastic())
       elastic = driver::scene_elastic_operators(scene, built.mesh.get(), built.cell_degrees, nullptr, distribution);
     else
@@ -40,7 +45,7 @@ class SweepEvaluation::Group {
   scene::Scene scene;
   std::size_t share;
   driver::SceneMesh built;
-  mesh::ContactBoundary contact;
+  std::optional<mesh::ContactBoundary> contact;  ///< planar levels
   /// The operators of the scalar model, or of an elastic scene (its α pairs [S^p(T_h)]² with the
   /// normal and tangential multipliers): one of the two, each split over the group's ranks once.
   std::unique_ptr<operators::PrimalOperators> primal;
@@ -49,8 +54,21 @@ class SweepEvaluation::Group {
   driver::SceneMesh master_built;
   std::unique_ptr<operators::ElasticOperators> master;
   std::unique_ptr<mesh::MasterProjection> projection;
+  /// A 3-D level: the box, Γ_C and the space, and A_G with Γ_C's trace last (every point's p_C and
+  /// T_{C,H} share it).
+  std::unique_ptr<driver::SolidDiscretization> solid;
+  std::unique_ptr<assembly::CondensedFactor> solid_gram;
 
  private:
+  void build_solid(linalg::Distribution distribution) {
+    if (distribution.distributed())
+      throw InputError(scene.file +
+                       ": α of a 3-D scene is computed on one process: run the sweep with --ranks-per-unit 1 "
+                       "(each rank then takes whole groups)");
+    solid = driver::discretize_solid_scene(scene);
+    solid_gram = std::make_unique<assembly::CondensedFactor>(infsup::solid_gram_factor(*solid->space, *solid->surface));
+  }
+
   void build_master(linalg::Distribution distribution) {
     if (distribution.distributed())
       throw InputError(scene.file +
@@ -127,7 +145,7 @@ const SweepEvaluation::EnvelopeGram& SweepEvaluation::envelope_of(const SweepPoi
   std::vector<int> degrees(boundary.n_segments(), 0);
   for (const auto pc : degrees_used_.at({point.level, point.ratio})) {
     const auto at_pc = scene::scene_segment_degrees(point_scene(level_scene, {.pc = pc, .ratio = ratios_[point.ratio]}),
-                                                    group.contact, boundary);
+                                                    *group.contact, boundary);
     for (std::size_t k = 0; k < degrees.size(); ++k) degrees[k] = std::max(degrees[k], at_pc[k]);
   }
   envelope.multipliers = std::make_unique<space::MultiplierSpace>(*envelope.boundary, std::move(degrees));
@@ -143,11 +161,20 @@ const SweepEvaluation::EnvelopeGram& SweepEvaluation::envelope_of(const SweepPoi
 
 infsup::InfSupRecord SweepEvaluation::evaluate_point(const SweepPoint& point, const Group& group) {
   const auto& ratio = ratios_[point.ratio];
+  if (group.solid) {
+    scene::Scene scene = point_scene(
+        group.scene,
+        {.pc = point.pc, .ratio = ratio, .problem = point.pairing, .norm = point.gram, .family = point.family});
+    scene.alpha_tolerance = sweep_.alpha_tolerance;
+    return driver::solid_scene_alpha(scene, *group.solid, backend_, group.solid_gram.get(),
+                                     static_cast<int>(point.level) + 1)
+        .summary.record;
+  }
   const scene::Scene scene = point_scene(
       group.scene,
       {.pc = point.pc, .ratio = ratio, .problem = point.pairing, .norm = point.gram, .family = point.family});
-  const auto boundary = scene::build_scene_boundary_mesh(scene, group.contact);
-  auto segment_degrees = scene::scene_segment_degrees(scene, group.contact, boundary);
+  const auto boundary = scene::build_scene_boundary_mesh(scene, *group.contact);
+  auto segment_degrees = scene::scene_segment_degrees(scene, *group.contact, boundary);
   auto setup = group.elastic ? driver::infsup_setup_of(scene, group.built.mesh.get(), group.built.cell_degrees,
                                                        boundary, std::move(segment_degrees), *group.elastic)
                              : driver::infsup_setup_of(scene, group.built.mesh.get(), group.built.cell_degrees,
@@ -172,7 +199,7 @@ infsup::InfSupRecord SweepEvaluation::evaluate_point(const SweepPoint& point, co
                                      .ratio = ratio ? std::optional<double>(ratio->value) : std::nullopt};
   auto record = infsup::make_infsup_record(pairing, infsup::analyse_infsup(setup, backend_));
   record.alpha_predicted =
-      infsup::predict_alpha(driver::trace_pairing_of(scene, group.contact, group.built.held_zone_ends, boundary,
+      infsup::predict_alpha(driver::trace_pairing_of(scene, *group.contact, group.built.held_zone_ends, boundary,
                                                      setup.segment_degrees, group.projection.get()))
           .alpha;
   return record;

@@ -9,6 +9,7 @@
 
 #include "core/byte_buffer.hpp"
 #include "core/error.hpp"
+#include "driver/solid_pairing.hpp"
 #include "infsup/infsup_record.hpp"
 #include "mesh/boundary_mesh.hpp"
 #include "mesh/contact_boundary.hpp"
@@ -40,11 +41,44 @@ void check_families(const StabilitySweep& sweep, const scene::Scene& at_ratio, c
     }
 }
 
+// A 3-D level: its box and Γ_C, T_{C,H} at every ratio; every norm, problem and family the sweep lists
+// checked on it (α of 3-D scenes takes the interpolation norm and the discontinuous family).
+LevelFacts facts_of_solid_level(const StabilitySweep& sweep, const scene::Scene& scene,
+                                const std::vector<std::optional<scene::Ratio>>& ratios) {
+  driver::check_solid_scene(scene, {});
+  for (const auto norm : sweep.norms)
+    for (const auto problem : sweep.problems)
+      driver::check_solid_pairing(point_scene(scene, {.problem = problem, .norm = norm}));
+  for (const auto& family : sweep.families)
+    if (family.kind != space::MultiplierFamilyKind::discontinuous)
+      throw_bad_input(sweep.file, "sweep.family", space::to_string(family),
+                      "discontinuous in a sweep of a 3-D scene: its multipliers are discontinuous Q_pC");
+  const auto d = driver::discretize_solid_scene(scene);
+  LevelFacts facts;
+  facts.cells = d->mesh->n_cells();
+  facts.scene_p = scene.p.value;
+  for (const auto& ratio : ratios) {
+    const auto at_point = point_scene(scene, {.ratio = ratio});
+    try {
+      const driver::SolidPairingFacts pairing = driver::solid_pairing_facts(at_point, *d);
+      facts.contact_edges = pairing.faces;
+      facts.contact_h_min = pairing.h_min;
+      facts.segments.push_back(pairing.multiplier_cells);
+    } catch (const InputError& error) {
+      if (!ratio) throw;
+      throw InputError(fmt::format("with sweep.ratio = {}: {}", ratio->text, error.what()));
+    }
+    facts.scene_pc.push_back(scene.pc.value);
+  }
+  return facts;
+}
+
 LevelFacts facts_of_level(const StabilitySweep& sweep, const scene::Scene& scene,
                           const std::vector<std::optional<scene::Ratio>>& ratios, bool friction) {
   if (friction && scene.friction_bound.empty() && !scene.is_elastic())
     throw_bad_input(scene.file, "data.s", "(missing)",
                     "the friction pairing (22) of sweep.problem needs the friction bound s");
+  if (scene.dimension() == 3) return facts_of_solid_level(sweep, scene, ratios);
   const auto mesh = scene::build_scene_mesh(scene);
   const mesh::ContactBoundary contact(mesh);
   LevelFacts facts;

@@ -98,9 +98,10 @@ TEST(SolidScene, KeysEffectsAndCommandsOfPlanarScenesAreRefusedByName) {
   const auto falling = solve_with("solid_falling_nodes", "domain.z_nodes=[0.0, -1.0]");
   EXPECT_EQ(falling.exit_code, 2) << falling.output;
   EXPECT_NE(falling.output.find("each larger than the one before"), std::string::npos) << falling.output;
-  const auto infsup = solve_with("solid_infsup", "run.effects=[\"infsup\"]");
-  EXPECT_EQ(infsup.exit_code, 2) << infsup.output;
-  EXPECT_NE(infsup.output.find("or frictionless (elastic) in a 3-D scene"), std::string::npos) << infsup.output;
+  const auto convergence = solve_with("solid_convergence", "run.effects=[\"signorini\", \"convergence\"]");
+  EXPECT_EQ(convergence.exit_code, 2) << convergence.output;
+  EXPECT_NE(convergence.output.find("or infsup (α of the scalar pairing) in a 3-D scene"), std::string::npos)
+      << convergence.output;
   const auto three_m = solve_with("solid_m", "contact_mesh.m=[2, 2, 2]");
   EXPECT_EQ(three_m.exit_code, 2) << three_m.output;
   EXPECT_NE(three_m.output.find("one or two integers"), std::string::npos) << three_m.output;
@@ -114,9 +115,9 @@ TEST(SolidScene, KeysEffectsAndCommandsOfPlanarScenesAreRefusedByName) {
   EXPECT_EQ(two_sides.exit_code, 2) << two_sides.output;
   EXPECT_NE(two_sides.output.find("not flat"), std::string::npos) << two_sides.output;
   // The planar commands name the 3-D key rather than misreading the box.
-  const auto analysed = run("infsup --scene " + kExtruded);
-  EXPECT_EQ(analysed.exit_code, 2) << analysed.output;
-  EXPECT_NE(analysed.output.find("domain.n_z"), std::string::npos) << analysed.output;
+  const auto advised = run("advise " + kExtruded + " --out " + (scratch("solid_advise") / "out").string());
+  EXPECT_EQ(advised.exit_code, 2) << advised.output;
+  EXPECT_NE(advised.output.find("domain.n_z"), std::string::npos) << advised.output;
   // z is a variable of 3-D scenes only.
   const auto dir = scratch("planar_z");
   std::ifstream source(kPlanar);

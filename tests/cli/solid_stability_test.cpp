@@ -1,0 +1,110 @@
+// α of 3-D scenes through the command line: `hpcontact infsup --scene` of the extruded §7 scene
+// against the planar scene's α, the effect infsup of a 3-D solve, a 3-D stability sweep (rows,
+// verdicts, resumed without recomputing), and what α of a 3-D scene refuses by name.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <regex>
+
+#include "support/cli_runner.hpp"
+#include "support/csv_file.hpp"
+
+namespace hpcontact::testing {
+namespace {
+
+const std::string kExtruded = std::string(HPCONTACT_SOURCE_DIR) + "/studies/three_d/extruded_signorini.toml";
+const std::string kPlanar = std::string(HPCONTACT_SOURCE_DIR) + "/studies/paper/figure1_signorini.toml";
+const std::string kCube = std::string(HPCONTACT_SOURCE_DIR) + "/studies/three_d/cube.toml";
+const std::string kHertz = std::string(HPCONTACT_SOURCE_DIR) + "/studies/three_d/hertz.toml";
+
+double alpha_printed(const Run& run) {
+  std::smatch match;
+  const std::regex line("alpha = ([-+0-9.eE]+)");
+  if (!std::regex_search(run.output, match, line)) ADD_FAILURE() << run.output;
+  return match.empty() ? NAN : std::stod(match[1]);
+}
+
+// p_C = 0 on a T_{C,H} with one cell across the width: the multipliers are constant in y, and α is
+// the planar α of the same n, p and h/H (tests/infsup/solid_infsup_test.cpp says why).
+TEST(SolidStability, ExtrudedSceneHasThePlanarAlpha) {
+  const auto solid = run("infsup --scene " + kExtruded + " --set discretization.pC=0 --set infsup.alpha_tol=1e-6");
+  ASSERT_EQ(solid.exit_code, 0) << solid.output;
+  const auto planar = run("infsup --scene " + kPlanar + " --n 8 --p 2 --pc 0 --ratio 1/2 --alpha-tol 1e-6");
+  ASSERT_EQ(planar.exit_code, 0) << planar.output;
+  const double expected = alpha_printed(planar);
+  EXPECT_NEAR(alpha_printed(solid), expected, 1e-5 * expected) << solid.output << planar.output;
+  EXPECT_NE(solid.output.find("n 16 m 4"), std::string::npos) << solid.output;  // trace faces, cells of T_{C,H}
+  EXPECT_NE(solid.output.find("alpha_predicted: none"), std::string::npos) << solid.output;
+}
+
+TEST(SolidStability, SolveReportsAlphaOfItsPairing) {
+  const auto dir = scratch("solid_solve_infsup");
+  const auto solved = run("solve " + kCube + " --set 'run.effects=[\"signorini\", \"infsup\"]' --out " + dir.string());
+  ASSERT_EQ(solved.exit_code, 0) << solved.output;
+  const auto analysed = run("infsup --scene " + kCube);
+  ASSERT_EQ(analysed.exit_code, 0) << analysed.output;
+  std::ifstream file(dir / "summary.json");
+  const auto summary = nlohmann::json::parse(file);
+  EXPECT_NEAR(summary.at("infsup").at("alpha").get<double>(), alpha_printed(analysed), 1e-12);
+  EXPECT_TRUE(summary.contains("signorini"));
+}
+
+// Two levels, p ≤ 2, p_C < p, h/H ∈ {1, 1/2}: 3 pairings × 2 ratios × 2 levels. The unstable
+// pairings at h/H = 1 (p_C = p − 1) lose α with h; the others keep it.
+TEST(SolidStability, SweepWritesTheMapAndResumes) {
+  const auto dir = scratch("solid_sweep");
+  std::ofstream(dir / "cube.toml") << std::ifstream(kCube).rdbuf();
+  std::ofstream(dir / "sweep.toml") << "[sweep]\nscene = \"cube.toml\"\n"
+                                       "levels = { \"domain.n_x\" = [2, 4], \"domain.n_y\" = [2, 4], "
+                                       "\"domain.n_z\" = [2, 4] }\n"
+                                       "p = \"1..2\"\npC = \"0..1\"\nratio = [1, \"1/2\"]\nfit_levels = 2\n"
+                                       "alpha_tol = 1e-3\n";
+  const auto swept = run("sweep " + (dir / "sweep.toml").string() + " --out " + (dir / "out").string());
+  ASSERT_EQ(swept.exit_code, 0) << swept.output;
+  const CsvFile alpha = read_csv(dir / "out" / "alpha.csv");
+  ASSERT_EQ(alpha.records().size(), 12u);
+  const CsvFile verdicts = read_csv(dir / "out" / "verdicts.csv");
+  ASSERT_EQ(verdicts.records().size(), 6u);
+  for (const auto& row : verdicts.records()) {
+    const bool unstable = row.at("ratio") == "1" && std::stoi(row.at("pC")) == std::stoi(row.at("p")) - 1;
+    EXPECT_EQ(row.at("verdict"), unstable ? "decaying" : "stable") << row.at("p") << " " << row.at("pC");
+  }
+  // One point against `hpcontact infsup` of its scene: the same α.
+  int found = 0;
+  for (const auto& row : alpha.records())
+    if (row.at("p") == "2" && row.at("pC") == "1" && row.at("level") == "2" && row.at("ratio") == "0.5") {
+      ++found;
+      const auto point = run("infsup --scene " + kCube +
+                             " --p 2 --pc 1 --ratio 1/2 --alpha-tol 1e-3 --set domain.n_x=4 --set domain.n_y=4");
+      ASSERT_EQ(point.exit_code, 0) << point.output;
+      EXPECT_NEAR(std::stod(row.at("alpha")), alpha_printed(point), 1e-12);
+    }
+  EXPECT_EQ(found, 1);
+  const std::string before = without_seconds(dir / "out" / "alpha.csv");
+  const auto resumed = run("sweep " + (dir / "sweep.toml").string() + " --out " + (dir / "out").string());
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
+  EXPECT_EQ(without_seconds(dir / "out" / "alpha.csv"), before);
+}
+
+TEST(SolidStability, WhatThreeDimensionalAlphaDoesNotTakeIsRefusedByName) {
+  const auto extension = run("infsup --scene " + kCube + " --norm extension");
+  EXPECT_EQ(extension.exit_code, 2) << extension.output;
+  EXPECT_NE(extension.output.find("infsup.norm"), std::string::npos) << extension.output;
+  const auto mode = run("infsup --scene " + kCube + " --mode " + (scratch("solid_mode") / "mode.csv").string());
+  EXPECT_EQ(mode.exit_code, 2) << mode.output;
+  EXPECT_NE(mode.output.find("--mode"), std::string::npos) << mode.output;
+  const auto elastic = run("infsup --scene " + kHertz);
+  EXPECT_EQ(elastic.exit_code, 2) << elastic.output;
+  EXPECT_NE(elastic.output.find("run.effects"), std::string::npos) << elastic.output;
+  const auto dir = scratch("solid_sweep_family");
+  std::ofstream(dir / "cube.toml") << std::ifstream(kCube).rdbuf();
+  std::ofstream(dir / "sweep.toml") << "[sweep]\nscene = \"cube.toml\"\nlevels = { \"domain.n_z\" = [2, 4] }\n"
+                                       "family = [\"standard\"]\n";
+  const auto family = run("sweep " + (dir / "sweep.toml").string() + " --out " + (dir / "out").string());
+  EXPECT_EQ(family.exit_code, 2) << family.output;
+  EXPECT_NE(family.output.find("sweep.family"), std::string::npos) << family.output;
+}
+
+}  // namespace
+}  // namespace hpcontact::testing
