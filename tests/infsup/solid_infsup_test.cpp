@@ -66,6 +66,19 @@ TEST(SolidInfSup, GramOfAConstantIsTheArea) {
   }
 }
 
+// The two summations of the double sum over the modes agree to the exponential sum's accuracy.
+TEST(SolidInfSup, ExponentialSumEqualsTheDirectSum) {
+  const Built built({4, 2, 2, 2, 3, 2, 0.7});
+  for (const std::array<int, 2> modes :
+       {std::array<int, 2>{9, 6}, std::array<int, 2>{96, 48}, std::array<int, 2>{1536, 768}}) {
+    const Eigen::MatrixXd direct =
+        norms::surface_interpolation_gram(built.multipliers, modes, norms::GramSummation::direct);
+    const Eigen::MatrixXd sum =
+        norms::surface_interpolation_gram(built.multipliers, modes, norms::GramSummation::exponential_sum);
+    EXPECT_LT((sum - direct).norm(), 1e-12 * direct.norm()) << modes[0];
+  }
+}
+
 // The truncations grow towards G (each adds positive terms) and the dropped part decays like 1/N²:
 // α on the ladder's levels decreases, by a factor about 4 less per level.
 TEST(SolidInfSup, LadderIncreasesAndConvergesByAFactorFourPerLevel) {
