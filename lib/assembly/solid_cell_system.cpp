@@ -22,36 +22,11 @@ std::vector<int> SolidScalarCellSystem::split_cells_over_ranks(MPI_Comm /*ranks*
 
 std::vector<char> SolidScalarCellSystem::boundary_unknowns(int cell) const {
   const mesh::SolidMesh& mesh = space_->mesh();
-  std::array<char, 8> vertex_on{};
-  std::array<char, 12> edge_on{};
-  std::array<char, 6> face_on{};
-  for (int f = 0; f < 6; ++f) {
-    if (!mesh.is_boundary_face(mesh.cell_face(cell, f))) continue;
-    face_on[f] = 1;
-    const auto& corners = mesh::kHexFaceVertices[f];
-    for (int v : corners) vertex_on[v] = 1;
-    for (int e = 0; e < 12; ++e) {
-      const auto& ends = mesh::kHexEdgeVertices[e];
-      if (std::count(corners.begin(), corners.end(), ends[0]) != 0 &&
-          std::count(corners.begin(), corners.end(), ends[1]) != 0)
-        edge_on[e] = 1;
-    }
-  }
   const auto shapes = space_->cell_shapes(cell);
   std::vector<char> on(shapes.size(), 0);
-  for (std::size_t s = 0; s < shapes.size(); ++s) switch (shapes[s].role) {
-      case space::SolidShapeRole::vertex:
-        on[s] = vertex_on[shapes[s].entity];
-        break;
-      case space::SolidShapeRole::edge:
-        on[s] = edge_on[shapes[s].entity];
-        break;
-      case space::SolidShapeRole::face:
-        on[s] = face_on[shapes[s].entity];
-        break;
-      case space::SolidShapeRole::interior:
-        break;
-    }
+  for (int f = 0; f < 6; ++f)
+    if (mesh.is_boundary_face(mesh.cell_face(cell, f)))
+      for (std::size_t s = 0; s < shapes.size(); ++s) on[s] = on[s] || space::shape_on_face(shapes[s], f);
   return on;
 }
 

@@ -139,6 +139,7 @@ SurfaceMultiplierMesh::SurfaceMultiplierMesh(const FlatContactSurface& surface, 
         fmt::format("{}: Γ_C (area {:.6g}) is not the rectangle that bounds it (area {:.6g}); 3-D "
                     "multiplier meshes are grids on rectangular contact surfaces for now",
                     origin, surface.area(), (surface.bounds()[1] - surface.bounds()[0]).prod()));
+  overlaps_ = clip_faces();
 }
 
 std::array<Eigen::Vector2d, 2> SurfaceMultiplierMesh::cell_bounds(int c) const {
@@ -152,7 +153,7 @@ std::array<Eigen::Vector2d, 2> SurfaceMultiplierMesh::cell_bounds(int c) const {
   return {lower, upper};
 }
 
-std::vector<SurfaceMultiplierMesh::Overlap> SurfaceMultiplierMesh::overlaps() const {
+std::vector<SurfaceMultiplierMesh::Overlap> SurfaceMultiplierMesh::clip_faces() const {
   const auto& [lo, hi] = surface_->bounds();
   const double scale = (hi - lo).prod();
   std::vector<Overlap> out;

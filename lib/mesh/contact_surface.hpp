@@ -69,12 +69,15 @@ class SurfaceMultiplierMesh {
     int cell = -1;                         ///< cell of T_{C,H}
     std::vector<Eigen::Vector2d> polygon;  ///< convex, counterclockwise, plane coordinates
   };
-  /// Every overlap of positive area (relative 1e-14), by face then cell.
-  std::vector<Overlap> overlaps() const;
+  /// Every overlap of positive area (relative 1e-14), by face then cell (clipped once, when the
+  /// mesh is built).
+  const std::vector<Overlap>& overlaps() const { return overlaps_; }
 
  private:
+  std::vector<Overlap> clip_faces() const;
   const FlatContactSurface* surface_;
   std::array<int, 2> cells_;
+  std::vector<Overlap> overlaps_;
 };
 
 }  // namespace hpcontact::mesh

@@ -17,10 +17,7 @@ SolidErrors solid_errors(const space::SolidH1Space& space, const Eigen::VectorXd
   for (int c = 0; c < space.mesh().n_cells(); ++c) {
     const auto at =
         assembly::solid_cell_values(space, c, assembly::solid_points_per_axis(space.cell_degree(c)) + extra_points);
-    const auto shapes = space.cell_shapes(c);
-    Eigen::VectorXd local = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(shapes.size()));
-    for (std::size_t s = 0; s < shapes.size(); ++s)
-      if (shapes[s].dof >= 0) local(static_cast<Eigen::Index>(s)) = shapes[s].sign * coefficients(shapes[s].dof);
+    const Eigen::VectorXd local = space::local_coefficients(space, c, coefficients);
     const Eigen::VectorXd values = at.values.transpose() * local;
     Eigen::MatrixXd gradients(values.size(), 3);
     for (int d = 0; d < 3; ++d) gradients.col(d) = at.gradients[d].transpose() * local;

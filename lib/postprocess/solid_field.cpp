@@ -25,11 +25,12 @@ std::array<Eigen::VectorXd, 3> axis_values(int p, const Eigen::Vector3d& xi) {
 double solid_value(const space::SolidH1Space& space, const Eigen::VectorXd& coefficients, int cell,
                    const Eigen::Vector3d& xi) {
   const auto values = axis_values(space.cell_degree(cell), xi);
+  const Eigen::VectorXd local = space::local_coefficients(space, cell, coefficients);
   double sum = 0.0;
-  for (const auto& shape : space.cell_shapes(cell))
-    if (shape.dof >= 0)
-      sum += shape.sign * coefficients(shape.dof) * values[0](shape.index[0]) * values[1](shape.index[1]) *
-             values[2](shape.index[2]);
+  for (Eigen::Index s = 0; s < local.size(); ++s) {
+    const auto& index = space.cell_shapes(cell)[static_cast<std::size_t>(s)].index;
+    sum += local(s) * values[0](index[0]) * values[1](index[1]) * values[2](index[2]);
+  }
   return sum;
 }
 

@@ -148,6 +148,30 @@ void SolidH1Space::append_shapes(int cell, int first_interior) {
       }
 }
 
+Eigen::VectorXd local_coefficients(const SolidH1Space& space, int cell, const Eigen::VectorXd& coefficients) {
+  const auto shapes = space.cell_shapes(cell);
+  Eigen::VectorXd local = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(shapes.size()));
+  for (std::size_t s = 0; s < shapes.size(); ++s)
+    if (shapes[s].dof >= 0) local(static_cast<Eigen::Index>(s)) = shapes[s].sign * coefficients(shapes[s].dof);
+  return local;
+}
+
+bool shape_on_face(const SolidShape& shape, int local_face) {
+  const auto& corners = mesh::kHexFaceVertices[local_face];
+  const auto has = [&](int v) { return std::find(corners.begin(), corners.end(), v) != corners.end(); };
+  switch (shape.role) {
+    case SolidShapeRole::vertex:
+      return has(shape.entity);
+    case SolidShapeRole::edge:
+      return has(mesh::kHexEdgeVertices[shape.entity][0]) && has(mesh::kHexEdgeVertices[shape.entity][1]);
+    case SolidShapeRole::face:
+      return shape.entity == local_face;
+    case SolidShapeRole::interior:
+      return false;
+  }
+  return false;
+}
+
 std::vector<char> faces_labelled(const mesh::SolidMesh& mesh, const std::vector<std::string>& labels) {
   std::vector<char> flagged(mesh.n_faces(), 0);
   for (const auto& boundary : mesh.boundary_faces())

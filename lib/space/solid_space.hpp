@@ -4,6 +4,7 @@
 // cell with the minimum rule on edges and faces; Dirichlet dofs on Γ_D eliminated.
 #pragma once
 
+#include <Eigen/Core>
 #include <array>
 #include <cstdint>
 #include <span>
@@ -75,6 +76,14 @@ class SolidH1Space {
   int n_skeleton_dofs_ = 0;
   int max_degree_ = 1;
 };
+
+/// A function's coefficients on `cell`'s local shapes: sign · coefficients(dof), 0 where the dof is
+/// held (Γ_D), shape (space.shape_count(cell)).
+Eigen::VectorXd local_coefficients(const SolidH1Space& space, int cell, const Eigen::VectorXd& coefficients);
+
+/// Whether a cell's shape can be nonzero on its local face `local_face`: the face's vertex and edge
+/// modes and its own face modes (what a trace on that face holds).
+bool shape_on_face(const SolidShape& shape, int local_face);
 
 /// Flags the boundary faces whose label is one of `labels` (for SolidH1Space's Γ_D).
 std::vector<char> faces_labelled(const mesh::SolidMesh& mesh, const std::vector<std::string>& labels);

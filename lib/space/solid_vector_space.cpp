@@ -10,26 +10,9 @@
 namespace hpcontact::space {
 
 std::vector<int> dofs_on_face(const SolidH1Space& space, const mesh::BoundaryFace& face) {
-  const auto& corners = mesh::kHexFaceVertices[face.local_face];
-  const auto has = [&](int v) { return std::find(corners.begin(), corners.end(), v) != corners.end(); };
   std::vector<int> dofs;
-  for (const auto& shape : space.cell_shapes(face.cell)) {
-    bool on = false;
-    switch (shape.role) {
-      case SolidShapeRole::vertex:
-        on = has(shape.entity);
-        break;
-      case SolidShapeRole::edge:
-        on = has(mesh::kHexEdgeVertices[shape.entity][0]) && has(mesh::kHexEdgeVertices[shape.entity][1]);
-        break;
-      case SolidShapeRole::face:
-        on = shape.entity == face.local_face;
-        break;
-      case SolidShapeRole::interior:
-        break;
-    }
-    if (on && shape.dof >= 0) dofs.push_back(shape.dof);
-  }
+  for (const auto& shape : space.cell_shapes(face.cell))
+    if (shape.dof >= 0 && shape_on_face(shape, face.local_face)) dofs.push_back(shape.dof);
   return dofs;
 }
 

@@ -2,6 +2,7 @@
 // code; fresh scratch folders (support/scratch.hpp).
 #pragma once
 
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 
 #include <array>
@@ -43,6 +44,12 @@ inline const std::string kMpiEnvironment =
 
 /// Runs hpcontact with `arguments`.
 inline Run run(const std::string& arguments) { return run_command(std::string(HPCONTACT_CLI) + " " + arguments); }
+
+/// A run refused as bad input (exit code 2) with a message that contains `text`.
+inline void expect_refused(const Run& refused, const std::string& text) {
+  EXPECT_EQ(refused.exit_code, 2) << refused.output;
+  EXPECT_NE(refused.output.find(text), std::string::npos) << "no \"" << text << "\" in: " << refused.output;
+}
 
 // Waits (up to 30 s) until no process holds `folder`'s sweep lock (rank 0 of a run holds it): a
 // stopped mpirun may return before its rank 0 has exited. Whether the lock came free.
