@@ -167,6 +167,19 @@ build/bin/hpcontact sweep studies/three_d/stability.toml --out results/stability
 "$python" plots/plot_stability.py results/stability3d
 publish results/stability3d/stable_map.png studies/three_d/stable_map.png
 publish results/stability3d/alpha_vs_h.png studies/three_d/alpha_vs_h.png
+# Spurious modes of 3-D pairings on the cube: the unstable p = 1, p_C = 0 at H = h and its stable neighbour (n = 16),
+# and the unstable p = 3, p_C = 2 at H = h (n = 8).
+for pairing in "1 0 1 16" "1 0 1/2 16" "3 2 1 8"; do
+  set -- $pairing
+  build/bin/hpcontact infsup --scene studies/three_d/cube.toml --p "$1" --pc "$2" --ratio "$3" \
+    --set "domain.n_x=$4" --set "domain.n_y=$4" --set "domain.n_z=$4" \
+    --mode "results/stability3d/mode_p$1_pC$2_hH${3//\//-}.vtu" > /dev/null
+done
+"$python" plots/three_d_mode.py results/stability3d/modes3d.png \
+  "p = 1, pC = 0, h/H = 1=results/stability3d/mode_p1_pC0_hH1.vtu" \
+  "p = 1, pC = 0, h/H = 1/2=results/stability3d/mode_p1_pC0_hH1-2.vtu" \
+  "p = 3, pC = 2, h/H = 1 (n = 8)=results/stability3d/mode_p3_pC2_hH1.vtu"
+publish results/stability3d/modes3d.png studies/three_d/modes3d.png
 section "two bodies: studies/two_bodies/{stability,families}.toml -> results/two_body_*"
 for study in stability families; do
   build/bin/hpcontact sweep "studies/two_bodies/$study.toml" --out "results/two_body_$study" --restart

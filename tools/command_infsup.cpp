@@ -19,6 +19,7 @@
 #include "io/infsup_record_csv.hpp"
 #include "linalg/distribution.hpp"
 #include "postprocess/mode_samples.hpp"
+#include "postprocess/surface_multiplier_vtu.hpp"
 #include "scene/scene_mesh.hpp"
 #include "scene/scene_reader.hpp"
 #include "scene_set_option.hpp"
@@ -56,18 +57,22 @@ scene::Scene resolve_scene(const InfSupOptions& o) {
   return scene::read_scene(o.scene, overrides);
 }
 
-// α of a 3-D scene: one process, no spurious-mode samples (they are planar).
+// α of a 3-D scene on one process; the spurious mode (--mode) as a VTU of T_{C,H}'s cells.
 driver::InfSupSummary solid_infsup(const InfSupOptions& o, const scene::Scene& scene, infsup::EigenBackend backend,
                                    int ranks) {
   if (ranks > 1) throw InputError(scene.file + ": α of a 3-D scene runs on one process: run it without mpirun");
-  if (!o.mode.empty())
+  if (!o.mode.empty() && std::filesystem::path(o.mode).extension() != ".vtu")
     throw InputError(
-        fmt::format("hpcontact infsup --mode {}: the spurious mode is sampled on planar Γ_C only; {} is "
-                    "a 3-D scene",
-                    o.mode, scene.file));
+        fmt::format("hpcontact infsup --mode {}: the spurious mode of a 3-D scene is written as a VTU of "
+                    "the cells of T_C,H: give a file name ending in .vtu",
+                    o.mode));
   driver::check_solid_scene(scene, {});
   const auto d = driver::discretize_solid_scene(scene);
-  return driver::solid_scene_alpha(scene, *d, backend).summary;
+  const auto alpha = driver::solid_scene_alpha(scene, *d, backend);
+  if (!o.mode.empty())
+    io::write_file_atomically(
+        o.mode, io::vtu_text(postprocess::surface_multiplier_vtu_grid(*d->multipliers, alpha.result.mode, "mode")));
+  return alpha.summary;
 }
 
 int run_infsup(const InfSupOptions& o) {
@@ -163,7 +168,9 @@ void add_infsup_command(CLI::App& app, CommandAction& action) {
                    "(MATIS + CG with PCBDDC)")
       ->capture_default_str();
   command->add_option("--csv", o->csv, "Append one row to this CSV file (the columns of a sweep's alpha.csv)");
-  command->add_option("--mode", o->mode, "Write the spurious mode as CSV x,mu (20 samples/segment)");
+  command->add_option(
+      "--mode", o->mode,
+      "Write the spurious mode as CSV x,mu (20 samples/segment); a 3-D scene: as a VTU of T_C,H (FILE.vtu)");
   command->add_option("--alpha-tol", o->alpha_tolerance,
                       "Relative error of alpha: the H^{-1/2} reference is refined until the estimate is below it "
                       "(infsup.alpha_tol; default 1e-4)");

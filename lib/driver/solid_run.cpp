@@ -17,6 +17,7 @@
 #include "driver/summary_json.hpp"
 #include "io/atomic_file.hpp"
 #include "postprocess/solid_field.hpp"
+#include "postprocess/surface_multiplier_vtu.hpp"
 
 namespace hpcontact::driver {
 namespace {
@@ -26,6 +27,8 @@ struct SolvedSolid {
   ContactResult result;
   io::CsvTable samples;                ///< boundary_<problem>.csv
   postprocess::SolidPointField field;  ///< the solution's VTU field (it holds the coefficients)
+  std::string multiplier_name;         ///< "lambda" or "pressure"
+  Eigen::VectorXd multiplier;          ///< its nodal coefficients on T_{C,H}
 };
 
 /// visit(face, cell of T_{C,H}, plane point, point, weight) at the collapsed Gauss points of
@@ -88,7 +91,11 @@ SolvedSolid solve_scalar(const scene::Scene& scene, const SolidDiscretization& d
   auto solution = std::make_shared<const contact::SolidContactSolution>(contact::solve_solid_contact(setup));
   const bool signorini = effect == scene::Effect::signorini;
   const assembly::SolidFunction& data = signorini ? setup.obstacle : setup.bound;
-  SolvedSolid out{{}, io::CsvTable({"x", "y", "z", "w", "u", signorini ? "obstacle" : "s", "lambda"}), {}};
+  SolvedSolid out{{},
+                  io::CsvTable({"x", "y", "z", "w", "u", signorini ? "obstacle" : "s", "lambda"}),
+                  {},
+                  "lambda",
+                  solution->lambda};
   const double scale = solution->lambda.lpNorm<Eigen::Infinity>();
   double area = 0.0;
   for_each_contact_sample(*d.multipliers, [&](const mesh::BoundaryFace& face, int cell, const Eigen::Vector2d& a,
@@ -121,7 +128,11 @@ SolvedSolid solve_elastic(const scene::Scene& scene, const SolidDiscretization& 
   setup.gap = solid_scene_function(scene, scene.obstacle, "data.g");
   if (!setup.gap) throw_bad_input(scene.where("data.g"), "data.g", "(missing)", "the gap to the obstacle along n");
   auto solution = std::make_shared<const contact::SolidElasticSolution>(contact::solve_solid_frictionless(setup));
-  SolvedSolid out{{}, io::CsvTable({"x", "y", "z", "w", "gap", "pressure", "traction_1", "traction_2"}), {}};
+  SolvedSolid out{{},
+                  io::CsvTable({"x", "y", "z", "w", "gap", "pressure", "traction_1", "traction_2"}),
+                  {},
+                  "pressure",
+                  solution->pressure};
   const Eigen::Vector3d normal = d.surface->normal();
   const double scale = solution->pressure.lpNorm<Eigen::Infinity>();
   double area = 0.0, force = 0.0;
@@ -190,10 +201,15 @@ RunResult run_solid_scene(const scene::Scene& scene, const SceneRunOptions& opti
   // 3. The files, as one set.
   std::vector<SolutionFile> files;
   if (vtu)
-    for (const auto& s : solved)
+    for (const auto& s : solved) {
       files.push_back({"solution_" + s.result.problem,
                        {{s.field.name, s.field.components}},
                        [&space = *d->space, &field = s.field] { return postprocess::solid_vtu_grid(space, field); }});
+      files.push_back(
+          {"multiplier_" + s.result.problem, {{s.multiplier_name, 1}}, [&multipliers = *d->multipliers, &s] {
+             return postprocess::surface_multiplier_vtu_grid(multipliers, s.multiplier, s.multiplier_name);
+           }});
+    }
   write_run_outputs(options.out, options.distribution, files, [&](const std::filesystem::path& out) {
     if (scene.wants_output(scene::Output::boundary))
       for (const auto& s : solved) s.samples.write(out / ("boundary_" + s.result.problem + ".csv"));

@@ -14,6 +14,8 @@ namespace hpcontact::driver {
 ///   boundary_<problem>.csv  x,y,z,w,u,obstacle|s,lambda on Γ_C at quadrature points of the overlaps of
 ///                           trace faces and T_{C,H} (Σ w·lambda = ∫ λ)
 ///   solution_<problem>.vtu  u on every cell's lattice of linear hexahedra
+///   multiplier_<problem>.vtu λ (scalar) or the pressure (elastic) on T_{C,H}'s cells, each cut into
+///                           linear quadrilaterals through its lattice
 /// @throws InputError for a key, effect or run setting 3-D scenes do not take (named, with the
 /// keys they take), and as the solver does.
 RunResult run_solid_scene(const scene::Scene& scene, const SceneRunOptions& options);

@@ -3,12 +3,14 @@
 // verdicts, resumed without recomputing), and what α of a 3-D scene refuses by name.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <regex>
 
 #include "support/cli_runner.hpp"
 #include "support/csv_file.hpp"
+#include "support/vtu_arrays.hpp"
 
 namespace hpcontact::testing {
 namespace {
@@ -87,11 +89,62 @@ TEST(SolidStability, SweepWritesTheMapAndResumes) {
   EXPECT_EQ(without_seconds(dir / "out" / "alpha.csv"), before);
 }
 
+// The spurious mode of p = 1, p_C = 0 with H = h on 8 × 8 × 8 cells (--mode FILE.vtu, one quadrilateral
+// per cell of T_{C,H} at p_C = 0): a checkerboard, μ_ij (−1)^{i+j} of one sign on every cell, under an
+// envelope largest at the centre of Γ_C and smallest at its corners, where alone the checkerboard
+// meets Bᵀ (why α decays faster than h in 3-D).
+TEST(SolidStability, SpuriousModeOfTheUnstablePairingIsACheckerboard) {
+  const auto file = scratch("solid_mode") / "mode.vtu";
+  const auto analysed =
+      run("infsup --scene " + kCube +
+          " --p 1 --pc 0 --ratio 1 --set domain.n_x=8 --set domain.n_y=8 --set domain.n_z=8 --mode " + file.string());
+  ASSERT_EQ(analysed.exit_code, 0) << analysed.output;
+  std::ifstream stream(file, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(stream)), std::istreambuf_iterator<char>());
+  const auto mode = appended_array(text, "mode"), points = appended_array(text, "Points");
+  ASSERT_EQ(mode.size(), 64u * 4u);
+  double centre = 0.0, corner = INFINITY;
+  int sign = 0;
+  for (std::size_t c = 0; c < 64; ++c) {
+    // (the cell's four points: its value, constant, and its centre's grid indices)
+    double x = 0.0, y = 0.0;
+    for (std::size_t k = 4 * c; k < 4 * c + 4; ++k) {
+      EXPECT_NEAR(mode[k], mode[4 * c], 1e-12);
+      x += points[3 * k] / 4.0, y += points[3 * k + 1] / 4.0;
+    }
+    const int i = static_cast<int>(std::floor((x + 1.0) * 4.0)), j = static_cast<int>(std::floor((y + 1.0) * 4.0));
+    const int here = (mode[4 * c] * ((i + j) % 2 == 0 ? 1.0 : -1.0)) > 0.0 ? 1 : -1;
+    if (sign == 0) sign = here;
+    EXPECT_EQ(here, sign) << "cell " << i << ", " << j;
+    if ((i == 3 || i == 4) && (j == 3 || j == 4)) centre = std::max(centre, std::abs(mode[4 * c]));
+    if ((i == 0 || i == 7) && (j == 0 || j == 7)) corner = std::min(corner, std::abs(mode[4 * c]));
+  }
+  EXPECT_GT(centre, 10.0 * corner);
+}
+
+TEST(SolidStability, SolveWritesTheMultiplierOnItsSurfaceMesh) {
+  const auto dir = scratch("solid_multiplier_vtu");
+  const auto solved = run("solve " + kCube + " --out " + dir.string());
+  ASSERT_EQ(solved.exit_code, 0) << solved.output;
+  std::ifstream stream(dir / "multiplier_signorini.vtu", std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(stream)), std::istreambuf_iterator<char>());
+  const auto lambda = appended_array(text, "lambda"), points = appended_array(text, "Points");
+  // cube.toml: 4 × 4 faces on Γ_C, h/H = 1/2, p_C = 1: 2 × 2 cells of 2 × 2 points each.
+  ASSERT_EQ(lambda.size(), 16u);
+  double smallest = INFINITY;
+  for (std::size_t k = 0; k < lambda.size(); ++k) {
+    EXPECT_LE(lambda[k], 1e-12);  // λ ≤ 0 at the nodal points (the corners of the lattice at p_C = 1)
+    EXPECT_NEAR(points[3 * k + 2], -1.0, 1e-14);
+    smallest = std::min(smallest, lambda[k]);
+  }
+  EXPECT_LT(smallest, 0.0);
+}
+
 TEST(SolidStability, WhatThreeDimensionalAlphaDoesNotTakeIsRefusedByName) {
   const auto extension = run("infsup --scene " + kCube + " --norm extension");
   expect_refused(extension, "infsup.norm");
   const auto mode = run("infsup --scene " + kCube + " --mode " + (scratch("solid_mode") / "mode.csv").string());
-  expect_refused(mode, "--mode");
+  expect_refused(mode, "ending in .vtu");
   const auto elastic = run("infsup --scene " + kHertz);
   expect_refused(elastic, "run.effects");
   const auto dir = scratch("solid_sweep_family");
