@@ -18,6 +18,12 @@ SolidElasticCellSystem::SolidElasticCellSystem(const space::SolidVectorSpace& sp
     throw InputError(fmt::format("{} materials given for {} hexahedra", materials_.size(), n_cells()));
 }
 
+SolidElasticCellSystem SolidElasticCellSystem::vector_h1(const space::SolidVectorSpace& space) {
+  SolidElasticCellSystem out(space, std::vector<Material>(space.scalar().mesh().n_cells()));
+  out.materials_.clear();
+  return out;
+}
+
 std::vector<int> SolidElasticCellSystem::split_cells_over_ranks(MPI_Comm /*ranks*/) const {
   throw InputError("3-D problems are factorized on one process: run them without mpirun (or with -n 1)");
 }
@@ -40,6 +46,12 @@ void SolidElasticCellSystem::cell_dofs(int cell, std::vector<CellDof>& out) cons
 
 Eigen::MatrixXd SolidElasticCellSystem::element_matrix(int cell) const {
   const space::SolidH1Space& scalar = space_->scalar();
+  if (materials_.empty()) {  // vector H¹: the scalar K + M on each component (signed basis already)
+    const Eigen::MatrixXd e = SolidScalarCellSystem(scalar, 1.0, 1.0).element_matrix(cell);
+    Eigen::MatrixXd a = Eigen::MatrixXd::Zero(3 * e.rows(), 3 * e.cols());
+    for (int c = 0; c < 3; ++c) a(Eigen::seqN(c, e.rows(), 3), Eigen::seqN(c, e.cols(), 3)) = e;
+    return a;
+  }
   const SolidCellValues at = solid_cell_values(scalar, cell, solid_points_per_axis(scalar.cell_degree(cell)));
   const Eigen::Index n = at.values.rows();
   const Eigen::VectorXd w = at.weights;
@@ -69,6 +81,10 @@ Eigen::MatrixXd SolidElasticCellSystem::element_matrix(int cell) const {
 std::optional<CongruenceKey> SolidElasticCellSystem::congruence_key(int cell) const {
   std::optional<CongruenceKey> key = SolidScalarCellSystem(space_->scalar(), 1.0, 0.0).congruence_key(cell);
   if (!key) return key;
+  if (materials_.empty()) {  // (the vector H¹ system's cells never meet an elastic one's: one form per system)
+    key->push_back(-1);
+    return key;
+  }
   // The material, exactly: cells of different materials never share an elimination.
   for (const double value : {materials_[cell].lambda, materials_[cell].mu}) {
     long long bits = 0;

@@ -1,6 +1,7 @@
 // Linear elasticity on [S^p(T_h)]³ of a hexahedral mesh as a cell system: a(u, v) = (λ div u, div v)
 // + (2μ ε(u), ε(v)), Lamé parameters per cell, so that static condensation and the trace-last
-// factorization serve it as they serve the planar operators.
+// factorization serve it as they serve the planar operators; or the vector H¹ inner product
+// Σ_c (∇u_c, ∇v_c) + (u_c, v_c), the Gram matrix of α's primal norm on the same space.
 #pragma once
 
 #include <vector>
@@ -19,6 +20,8 @@ class SolidElasticCellSystem final : public CellSystem {
   /// `materials`: one per cell (λ, μ of 3-D elasticity: lame_parameters' plane-strain values).
   /// @throws InputError on a size mismatch.
   SolidElasticCellSystem(const space::SolidVectorSpace& space, std::vector<Material> materials);
+  /// The vector H¹ inner product instead (no material).
+  static SolidElasticCellSystem vector_h1(const space::SolidVectorSpace& space);
   int n_cells() const override { return space_->scalar().mesh().n_cells(); }
   /// @throws InputError: solid meshes are factorized on one process.
   std::vector<int> split_cells_over_ranks(MPI_Comm ranks) const override;
@@ -35,7 +38,7 @@ class SolidElasticCellSystem final : public CellSystem {
 
  private:
   const space::SolidVectorSpace* space_;
-  std::vector<Material> materials_;
+  std::vector<Material> materials_;  ///< empty for the vector H¹ inner product
 };
 
 }  // namespace hpcontact::assembly

@@ -109,6 +109,21 @@ linalg::Coupling surface_coupling(const space::SolidH1Space& space, const space:
   return linalg::squeezed(std::move(b));
 }
 
+linalg::Coupling directional_coupling(const space::SolidVectorSpace& space, const linalg::Coupling& scalar,
+                                      const Eigen::Vector3d& direction) {
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int row = 0; row < scalar.outerSize(); ++row)
+    for (linalg::Coupling::InnerIterator it(scalar, row); it; ++it)
+      for (int c = 0; c < 3; ++c) {
+        const int dof = space.dof(static_cast<int>(it.col()), c);
+        // (components along which d vanishes add nothing: keep them out of the trace)
+        if (dof >= 0 && direction(c) != 0.0) entries.emplace_back(row, dof, direction(c) * it.value());
+      }
+  linalg::Coupling b(scalar.rows(), space.n_dofs());
+  b.setFromTriplets(entries.begin(), entries.end());
+  return linalg::squeezed(std::move(b));
+}
+
 bool cell_meets_support(const mesh::SurfaceMultiplierMesh& mesh, int cell, const SolidFunction& s) {
   const auto [lo, hi] = mesh.cell_bounds(cell);
   for (double t : basis::gauss_legendre(12).points)

@@ -8,6 +8,7 @@
 #include "assembly/solid_load.hpp"
 #include "linalg/coupling_matrix.hpp"
 #include "space/solid_space.hpp"
+#include "space/solid_vector_space.hpp"
 #include "space/surface_multiplier_space.hpp"
 
 namespace hpcontact::assembly {
@@ -25,6 +26,11 @@ Eigen::Vector3d face_point_in_cell(const mesh::FlatContactSurface& surface, cons
 /// that of a degree-two margin. The multiplier space must live on Γ_C of the space's mesh.
 linalg::Coupling surface_coupling(const space::SolidH1Space& space, const space::SurfaceMultiplierSpace& multipliers,
                                   const SolidFunction& weight = {});
+
+/// The coupling of the multipliers with v·d on the vector space from the scalar B:
+/// B_d(i, dof(j, c)) = d_c B(i, j) (components along which d vanishes, or held, add nothing).
+linalg::Coupling directional_coupling(const space::SolidVectorSpace& space, const linalg::Coupling& scalar,
+                                      const Eigen::Vector3d& direction);
 
 /// Whether s > 0 somewhere on cell c of T_{C,H} (sampled at 12 × 12 Gauss points): the friction
 /// problem (13) and its pairing (22) keep only the multipliers of such cells (B^s has no entry on

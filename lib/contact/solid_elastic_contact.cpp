@@ -12,26 +12,6 @@
 
 namespace hpcontact::contact {
 
-namespace {
-
-/// B_n from the scalar coupling B: B_n(i, dof(j, c)) = n_c B(i, j).
-linalg::Coupling normal_coupling(const space::SolidVectorSpace& space, const linalg::Coupling& scalar,
-                                 const Eigen::Vector3d& normal) {
-  std::vector<Eigen::Triplet<double>> entries;
-  for (int row = 0; row < scalar.outerSize(); ++row)
-    for (linalg::Coupling::InnerIterator it(scalar, row); it; ++it)
-      for (int c = 0; c < 3; ++c) {
-        const int dof = space.dof(static_cast<int>(it.col()), c);
-        // (components along which n vanishes add nothing: keep them out of the trace)
-        if (dof >= 0 && normal(c) != 0.0) entries.emplace_back(row, dof, normal(c) * it.value());
-      }
-  linalg::Coupling b(scalar.rows(), space.n_dofs());
-  b.setFromTriplets(entries.begin(), entries.end());
-  return linalg::squeezed(std::move(b));
-}
-
-}  // namespace
-
 SolidElasticSolution solve_solid_frictionless(const SolidElasticSetup& setup) {
   if (setup.space == nullptr || setup.multipliers == nullptr || !setup.gap)
     throw InputError("3-D elastic contact: the space, the multipliers or the gap g is missing");
@@ -49,7 +29,8 @@ SolidElasticSolution solve_solid_frictionless(const SolidElasticSetup& setup) {
       if (const int dof = space.dof(d, c); dof >= 0) load(dof) = component(d);
   }
   const Eigen::Vector3d normal = setup.multipliers->mesh().surface().normal();
-  const linalg::Coupling b = normal_coupling(space, assembly::surface_coupling(scalar, *setup.multipliers), normal);
+  const linalg::Coupling b =
+      assembly::directional_coupling(space, assembly::surface_coupling(scalar, *setup.multipliers), normal);
   const Eigen::VectorXd g = assembly::surface_multiplier_load(*setup.multipliers, setup.gap);
   const int m = setup.multipliers->n_dofs();
   MultiplierConstraints constraints;

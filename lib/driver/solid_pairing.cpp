@@ -17,12 +17,8 @@ void check_solid_pairing(const scene::Scene& scene) {
                     "interp in a 3-D scene: α takes the interpolation norm of the flat Γ_C");
   if (scene.given.contains("infsup.primal_norm"))
     throw_bad_input(scene.where("infsup.primal_norm"), "infsup.primal_norm", "(given)",
-                    "a key of planar elastic scenes: α of a 3-D scene is that of the scalar pairing");
-  if (scene.is_elastic())
-    throw_bad_input(scene.where("run.effects"), "run.effects", "frictionless",
-                    "signorini, friction or friction_s for α of a 3-D scene: its pairing is the scalar one (11) or "
-                    "(22); the elastic pairing of the normal multiplier with u·n is planar only");
-  if (scene.problem == infsup::PairingProblem::friction && scene.friction_bound.empty())
+                    "a key of planar elastic scenes: α of a 3-D elastic scene is in the vector H¹ norm");
+  if (scene.problem == infsup::PairingProblem::friction && scene.friction_bound.empty() && !scene.is_elastic())
     throw_bad_input(scene.where("data.s"), "data.s", "(missing)",
                     "the friction pairing (22) of infsup.problem needs the friction bound s");
 }
@@ -50,6 +46,7 @@ SolidAlpha solid_scene_alpha(const scene::Scene& scene, const SolidDiscretizatio
   const space::SurfaceMultiplierSpace multipliers(*multiplier_mesh, scene.pc.value);
   infsup::SolidInfSupSetup setup;
   setup.space = d.space.get();
+  setup.vector_space = d.vector_space.get();  // (elastic scenes: the elastic pairing)
   setup.multipliers = &multipliers;
   setup.problem = scene.problem;
   setup.friction_bound = solid_scene_function(scene, scene.friction_bound, "data.s");

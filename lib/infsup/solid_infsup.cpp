@@ -10,6 +10,7 @@
 #include <set>
 
 #include "assembly/solid_cell_system.hpp"
+#include "assembly/solid_elastic_system.hpp"
 #include "assembly/surface_coupling.hpp"
 #include "core/error.hpp"
 #include "core/timer.hpp"
@@ -57,7 +58,43 @@ Eigen::SparseMatrix<double> active_functions(const SolidInfSupSetup& setup) {
   return basis;
 }
 
+Eigen::SparseMatrix<double> identity(int n) {
+  Eigen::SparseMatrix<double> out(n, n);
+  out.setIdentity();
+  return out;
+}
+
+/// The elastic pairing's B: B_n (n the outward normal of Γ_C), then B_1 and B_2 along Γ_C's axes
+/// when `copies` is 3, each multipliers.n_dofs() rows.
+linalg::Coupling elastic_coupling(const SolidInfSupSetup& setup, int copies) {
+  const auto& surface = setup.multipliers->mesh().surface();
+  const linalg::Coupling scalar = assembly::surface_coupling(setup.vector_space->scalar(), *setup.multipliers);
+  const std::array<Eigen::Vector3d, 3> directions{surface.normal(), surface.axis(0), surface.axis(1)};
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int k = 0; k < copies; ++k) {
+    const linalg::Coupling part = assembly::directional_coupling(*setup.vector_space, scalar, directions[k]);
+    for (int row = 0; row < part.outerSize(); ++row)
+      for (linalg::Coupling::InnerIterator it(part, row); it; ++it)
+        entries.emplace_back(k * static_cast<int>(scalar.rows()) + row, static_cast<int>(it.col()), it.value());
+  }
+  linalg::Coupling b(copies * scalar.rows(), setup.vector_space->n_dofs());
+  b.setFromTriplets(entries.begin(), entries.end());
+  return b;
+}
+
 }  // namespace
+
+assembly::CondensedFactor solid_gram_factor(const space::SolidVectorSpace& space,
+                                            const mesh::FlatContactSurface& surface) {
+  std::set<int> trace;
+  for (const auto& face : surface.faces())
+    for (const int scalar : space::dofs_on_face(space.scalar(), face))
+      for (int c = 0; c < 3; ++c)
+        if (const int dof = space.dof(scalar, c); dof >= 0) trace.insert(dof);
+  return assembly::CondensedFactor(
+      std::make_unique<assembly::SolidElasticCellSystem>(assembly::SolidElasticCellSystem::vector_h1(space)),
+      std::vector<int>(trace.begin(), trace.end()));
+}
 
 assembly::CondensedFactor solid_gram_factor(const space::SolidH1Space& space, const mesh::FlatContactSurface& surface) {
   std::set<int> trace;
@@ -71,25 +108,33 @@ InfSupResult analyse_solid_infsup(const SolidInfSupSetup& setup, EigenBackend ba
   if (!(setup.alpha_tolerance > 0.0 && setup.alpha_tolerance <= 0.1))
     throw_bad_input("inf-sup analysis", "alpha_tol", fmt::format("{}", setup.alpha_tolerance), "must be in (0, 0.1]");
   HPC_VERIFY(setup.space && setup.multipliers, "analyse_solid_infsup: the space or the multipliers are missing");
-  if (setup.problem == PairingProblem::friction && !setup.friction_bound)
+  if (setup.problem == PairingProblem::friction && !setup.friction_bound && !setup.vector_space)
     throw InputError("the friction pairing (22) needs the friction bound s (data.s)");
   const space::SolidH1Space& space = *setup.space;
   const space::SurfaceMultiplierSpace& multipliers = *setup.multipliers;
   Stopwatch clock;
   InfSupResult result;
 
-  // 1. B (B^s for friction) and the active multiplier functions R.
+  // 1. B (B^s for friction; the elastic pairings' rows of B_n, B_1, B_2) and the active multiplier
+  // functions R.
   Stopwatch phase;
-  const linalg::Coupling b = assembly::surface_coupling(
-      space, multipliers, setup.problem == PairingProblem::friction ? setup.friction_bound : assembly::SolidFunction());
-  const Eigen::SparseMatrix<double> basis = active_functions(setup);
+  const bool elastic = setup.vector_space != nullptr;
+  const int copies = elastic && setup.problem == PairingProblem::friction ? 3 : 1;
+  const linalg::Coupling b =
+      elastic ? elastic_coupling(setup, copies)
+              : assembly::surface_coupling(
+                    space, multipliers,
+                    setup.problem == PairingProblem::friction ? setup.friction_bound : assembly::SolidFunction());
+  const Eigen::SparseMatrix<double> basis = elastic ? identity(copies * multipliers.n_dofs()) : active_functions(setup);
   result.seconds_assembly = phase.seconds();
 
   // 2. S_G = Rᵀ B A_G⁻¹ Bᵀ R from A_G's trace-last factor.
   phase = Stopwatch();
   std::unique_ptr<assembly::CondensedFactor> own_factor;
   if (!setup.gram_factor)
-    own_factor = std::make_unique<assembly::CondensedFactor>(solid_gram_factor(space, multipliers.mesh().surface()));
+    own_factor = std::make_unique<assembly::CondensedFactor>(
+        elastic ? solid_gram_factor(*setup.vector_space, multipliers.mesh().surface())
+                : solid_gram_factor(space, multipliers.mesh().surface()));
   const assembly::CondensedFactor& factor = setup.gram_factor ? *setup.gram_factor : *own_factor;
   const Eigen::MatrixXd s_g = restrict(factor.schur_complement(b), basis);
   result.seconds_primal = phase.seconds();
@@ -100,7 +145,7 @@ InfSupResult analyse_solid_infsup(const SolidInfSupSetup& setup, EigenBackend ba
     own_ladder = std::make_unique<norms::GramLadder>(norms::surface_interpolation_gram_ladder(multipliers));
   const norms::GramLadder& grams = setup.grams ? *setup.grams : *own_ladder;
   const double seconds_gram_before = grams.seconds();
-  const LadderSolution solved = smallest_on_ladder(s_g, basis, 1, grams, backend, setup.alpha_tolerance);
+  const LadderSolution solved = smallest_on_ladder(s_g, basis, copies, grams, backend, setup.alpha_tolerance);
   result.alpha = solved.alpha;
   result.lambda_min = solved.lambda_min;
   result.alpha_error = solved.alpha_error;
@@ -120,8 +165,8 @@ InfSupResult analyse_solid_infsup(const SolidInfSupSetup& setup, EigenBackend ba
   int smallest_p = space.cell_degree(0);
   for (int c = 0; c < space.mesh().n_cells(); ++c) smallest_p = std::min(smallest_p, space.cell_degree(c));
   result.pi = stability_indicator(result.h, result.H, smallest_p, multipliers.degree());
-  result.n_primal_dofs = space.n_dofs();
-  result.n_multiplier_dofs = multipliers.n_dofs();
+  result.n_primal_dofs = elastic ? setup.vector_space->n_dofs() : space.n_dofs();
+  result.n_multiplier_dofs = copies * multipliers.n_dofs();
   result.seconds = clock.seconds();
   return result;
 }

@@ -2,7 +2,9 @@
 // on a flat rectangular Γ_C,
 //   α² = λ_min of  S_G x = λ G x,   S_G = B A_G⁻¹ Bᵀ,   A_G = K + M,
 // with B the coupling (Signorini, (11)) or B^s with the multipliers of the cells of T_{C,H} that
-// meet supp s (friction, (22)), and G the interpolation norm of H^{-1/2}(Γ_C)
+// meet supp s (friction, (22)); or, on [Q_p]³ with the vector H¹ Gram matrix A_G, the pairing of
+// the normal multiplier with v·n (signorini), or of the normal and the two tangential ones with
+// (v·n, v·e_1, v·e_2) (friction; G = diag(G, G, G)); and G the interpolation norm of H^{-1/2}(Γ_C)
 // (norms/surface_interpolation_gram.hpp), refined on its ladder until α's error estimate is below
 // the tolerance, as in 2-D (infsup/infsup_analysis.hpp). S_G is dense: B A_G⁻¹ Bᵀ from the trailing
 // block of A_G's factor with Γ_C's trace last.
@@ -13,6 +15,7 @@
 #include "infsup/infsup_analysis.hpp"
 #include "mesh/contact_surface.hpp"
 #include "space/solid_space.hpp"
+#include "space/solid_vector_space.hpp"
 #include "space/surface_multiplier_space.hpp"
 
 namespace hpcontact::infsup {
@@ -20,21 +23,27 @@ namespace hpcontact::infsup {
 /// A_G = K + M on `space` with every dof of Γ_C (`surface`) last: one factor serves every
 /// multiplier space on Γ_C (a sweep's p_C and H on one T_h).
 assembly::CondensedFactor solid_gram_factor(const space::SolidH1Space& space, const mesh::FlatContactSurface& surface);
+/// The same for the vector H¹ Gram matrix on [Q_p]³ (every component of the dofs of Γ_C last).
+assembly::CondensedFactor solid_gram_factor(const space::SolidVectorSpace& space,
+                                            const mesh::FlatContactSurface& surface);
 
 struct SolidInfSupSetup {
   const space::SolidH1Space* space = nullptr;
+  /// The elastic pairing when given (on [space]³ with its rollers; s is then not used).
+  const space::SolidVectorSpace* vector_space = nullptr;
   const space::SurfaceMultiplierSpace* multipliers = nullptr;  ///< on Γ_C of the space's mesh
   PairingProblem problem = PairingProblem::signorini;
   assembly::SolidFunction friction_bound;  ///< s, required for the friction problem
   double alpha_tolerance = 1e-4;           ///< in (0, 0.1]
-  /// Optional, built when absent: solid_gram_factor of (space, Γ_C), and the ladder of
+  /// Optional, built when absent: solid_gram_factor of (space or vector_space, Γ_C), and the ladder of
   /// `multipliers` (surface_interpolation_gram_ladder).
   const assembly::CondensedFactor* gram_factor = nullptr;
   const norms::GramLadder* grams = nullptr;
 };
 
 /// α with the fields of InfSupResult: h the longest edge of T_h, H the longest side of the cells
-/// of T_{C,H}, the mode in the multipliers' nodal coefficients (0 off supp s), no zones.
+/// of T_{C,H}, the mode in the multipliers' nodal coefficients (0 off supp s; the elastic friction
+/// pairing: normal, then e_1, then e_2 blocks), no zones.
 /// @throws InputError for a bad tolerance, a friction problem without s or with s ≡ 0 on Γ_C.
 InfSupResult analyse_solid_infsup(const SolidInfSupSetup& setup, EigenBackend backend);
 

@@ -25,6 +25,8 @@ class FlatContactSurface {
   const std::vector<BoundaryFace>& faces() const { return faces_; }
   /// The outward unit normal n of Γ_C.
   const Eigen::Vector3d& normal() const { return normal_; }
+  /// The in-plane axes e_1 (k = 0) and e_2 (k = 1) (below).
+  const Eigen::Vector3d& axis(int k) const { return k == 0 ? e1_ : e2_; }
   /// In-plane coordinates: x = origin + a e_1 + b e_2 (e_1, e_2, n a right-handed orthonormal
   /// frame; e_1 along the coordinate axis most nearly in the plane, the first one on a tie).
   Eigen::Vector2d to_plane(const SolidPoint& x) const;

@@ -2,6 +2,7 @@
 #include "postprocess/surface_multiplier_vtu.hpp"
 
 #include <cstdint>
+#include <string>
 
 #include "core/error.hpp"
 
@@ -9,22 +10,29 @@ namespace hpcontact::postprocess {
 
 io::VtuGrid surface_multiplier_vtu_grid(const space::SurfaceMultiplierSpace& multipliers,
                                         const Eigen::VectorXd& coefficients, const std::string& name) {
-  HPC_VERIFY(coefficients.size() == multipliers.n_dofs(), "surface_multiplier_vtu_grid: one coefficient per dof");
+  const auto n = static_cast<Eigen::Index>(multipliers.n_dofs());
+  const auto copies = n > 0 ? coefficients.size() / n : 0;
+  HPC_VERIFY(copies >= 1 && coefficients.size() == copies * n,
+             "surface_multiplier_vtu_grid: a whole number of multipliers");
   constexpr std::uint8_t kVtkQuad = 9;
   const auto& mesh = multipliers.mesh();
   const int q = std::max(multipliers.degree(), 1);
   io::VtuGrid grid;
-  io::VtuGrid::PointArray values{name, 1, {}};
+  std::vector<io::VtuGrid::PointArray> fields;
+  for (Eigen::Index k = 0; k < copies; ++k)
+    fields.push_back({copies == 1 ? name : name + "_" + std::to_string(k + 1), 1, {}});
   for (int c = 0; c < mesh.n_cells(); ++c) {
     const auto [lo, hi] = mesh.cell_bounds(c);
     const auto first = static_cast<std::int64_t>(grid.n_points());
-    const Eigen::VectorXd local = coefficients.segment(multipliers.first_dof(c), multipliers.per_cell());
     for (int j = 0; j <= q; ++j)
       for (int i = 0; i <= q; ++i) {
         const Eigen::Vector2d a = lo + (Eigen::Array2d(double(i) / q, double(j) / q) * (hi - lo).array()).matrix();
         const mesh::SolidPoint x = mesh.surface().from_plane(a);
         grid.xyz.insert(grid.xyz.end(), {x(0), x(1), x(2)});
-        values.values.push_back(multipliers.values(c, a).dot(local));
+        const Eigen::VectorXd shapes = multipliers.values(c, a);
+        for (Eigen::Index k = 0; k < copies; ++k)
+          fields[static_cast<std::size_t>(k)].values.push_back(
+              shapes.dot(coefficients.segment(k * n + multipliers.first_dof(c), multipliers.per_cell())));
       }
     for (int j = 0; j < q; ++j)
       for (int i = 0; i < q; ++i) {
@@ -35,7 +43,7 @@ io::VtuGrid surface_multiplier_vtu_grid(const space::SurfaceMultiplierSpace& mul
         grid.degrees.push_back(multipliers.degree());
       }
   }
-  grid.point_data.push_back(std::move(values));
+  for (auto& field : fields) grid.point_data.push_back(std::move(field));
   return grid;
 }
 

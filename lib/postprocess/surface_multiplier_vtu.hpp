@@ -13,7 +13,8 @@
 namespace hpcontact::postprocess {
 
 /// `coefficients` (nodal, shape (multipliers.n_dofs())) as the point field `name`, the cell data
-/// "p" being p_C.
+/// "p" being p_C; k · n_dofs coefficients (several multipliers, one after the other) as the
+/// fields name_1 … name_k.
 io::VtuGrid surface_multiplier_vtu_grid(const space::SurfaceMultiplierSpace& multipliers,
                                         const Eigen::VectorXd& coefficients, const std::string& name);
 

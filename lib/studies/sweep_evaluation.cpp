@@ -66,7 +66,9 @@ class SweepEvaluation::Group {
                        ": α of a 3-D scene is computed on one process: run the sweep with --ranks-per-unit 1 "
                        "(each rank then takes whole groups)");
     solid = driver::discretize_solid_scene(scene);
-    solid_gram = std::make_unique<assembly::CondensedFactor>(infsup::solid_gram_factor(*solid->space, *solid->surface));
+    solid_gram = std::make_unique<assembly::CondensedFactor>(
+        solid->vector_space ? infsup::solid_gram_factor(*solid->vector_space, *solid->surface)
+                            : infsup::solid_gram_factor(*solid->space, *solid->surface));
   }
 
   void build_master(linalg::Distribution distribution) {

@@ -40,6 +40,22 @@ TEST(SolidStability, ExtrudedSceneHasThePlanarAlpha) {
   EXPECT_NE(solid.output.find("alpha_predicted: none"), std::string::npos) << solid.output;
 }
 
+// The elastic pairing (normal multiplier, vector H¹ norm) of the plane-strain square extruded in y
+// (studies/three_d/extruded_frictionless.toml) with p_C = 0 and one cell of T_{C,H} across the width:
+// the planar elastic α of the square in the same norm.
+TEST(SolidStability, ExtrudedElasticSceneHasThePlanarAlpha) {
+  const std::string source = HPCONTACT_SOURCE_DIR;
+  const auto solid = run("infsup --scene " + source + "/studies/three_d/extruded_frictionless.toml" +
+                         " --pc 0 --ratio 1/2 --alpha-tol 1e-6");
+  ASSERT_EQ(solid.exit_code, 0) << solid.output;
+  const auto planar = run("infsup --scene " + source +
+                          "/studies/elasticity/square.toml --set 'boundary.contact=\"abs(y + 1) < 1e-9\"' --set "
+                          "'infsup.primal_norm=\"h1\"' --pc 0 --ratio 1/2 --alpha-tol 1e-6");
+  ASSERT_EQ(planar.exit_code, 0) << planar.output;
+  const double expected = alpha_printed(planar);
+  EXPECT_NEAR(alpha_printed(solid), expected, 1e-5 * expected) << solid.output << planar.output;
+}
+
 TEST(SolidStability, SolveReportsAlphaOfItsPairing) {
   const auto dir = scratch("solid_solve_infsup");
   const auto solved = run("solve " + kCube + " --set 'run.effects=[\"signorini\", \"infsup\"]' --out " + dir.string());
@@ -145,8 +161,8 @@ TEST(SolidStability, WhatThreeDimensionalAlphaDoesNotTakeIsRefusedByName) {
   expect_refused(extension, "infsup.norm");
   const auto mode = run("infsup --scene " + kCube + " --mode " + (scratch("solid_mode") / "mode.csv").string());
   expect_refused(mode, "ending in .vtu");
-  const auto elastic = run("infsup --scene " + kHertz);
-  expect_refused(elastic, "run.effects");
+  const auto energy = run("infsup --scene " + kHertz + " --set 'infsup.primal_norm=\"energy\"'");
+  expect_refused(energy, "infsup.primal_norm");
   const auto dir = scratch("solid_sweep_family");
   std::ofstream(dir / "cube.toml") << std::ifstream(kCube).rdbuf();
   std::ofstream(dir / "sweep.toml") << "[sweep]\nscene = \"cube.toml\"\nlevels = { \"domain.n_z\" = [2, 4] }\n"

@@ -7,10 +7,12 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.hpp"
 #include "norms/surface_interpolation_gram.hpp"
+#include "space/solid_vector_space.hpp"
 #include "support/paper_alpha.hpp"
 #include "support/slepc_test_environment.hpp"
 #include "support/solid_meshes.hpp"
@@ -173,4 +175,41 @@ TEST(SolidInfSup, FrictionPairingKeepsTheCellsOfSuppS) {
   EXPECT_EQ(dropped, built.multipliers.n_dofs() / 2);
   EXPECT_GT(half.alpha, 0.0);
   EXPECT_THROW(friction([](const mesh::SolidPoint&) { return 0.0; }), InputError);
+}
+
+// The elastic pairings in the vector H¹ norm: A_G is K + M on each component, so the normal
+// multiplier meets v·n = −v_z alone and α is the scalar α of the z component's space; the
+// friction pairing (normal, e_1 = x, e_2 = −y) is the smallest of the three components' α. Each
+// component's space holds it where Γ_D clamps the body and where its rollers hold it (x on x = −1,
+// y on y = 0): three scalar runs against the vector one.
+TEST(SolidInfSup, ElasticPairingIsTheScalarPairingOfEachComponent) {
+  const Built built({4, 2, 2, 1, 2, 1, 0.5});
+  const std::array<const char*, 3> roller{"x_min", "y_min", ""};
+  std::array<std::vector<char>, 3> held;
+  for (int c = 0; c < 2; ++c) held[c] = space::faces_labelled(built.mesh, {roller[c]});
+  const space::SolidVectorSpace vector_space(built.space, held);
+  const auto vector_alpha = [&](infsup::PairingProblem problem) {
+    infsup::SolidInfSupSetup setup;
+    setup.space = &built.space;
+    setup.vector_space = &vector_space;
+    setup.multipliers = &built.multipliers;
+    setup.problem = problem;
+    setup.alpha_tolerance = 1e-7;
+    return infsup::analyse_solid_infsup(setup, infsup::EigenBackend::dense).alpha;
+  };
+  std::array<double, 3> component{};
+  for (int c = 0; c < 3; ++c) {
+    const space::SolidH1Space held_space(built.mesh, std::vector<int>(built.mesh.n_cells(), 2),
+                                         space::faces_labelled(built.mesh, {"dirichlet", roller[c]}));
+    infsup::SolidInfSupSetup setup;
+    setup.space = &held_space;
+    setup.multipliers = &built.multipliers;
+    setup.alpha_tolerance = 1e-7;
+    component[c] = infsup::analyse_solid_infsup(setup, infsup::EigenBackend::dense).alpha;
+  }
+  EXPECT_NEAR(vector_alpha(infsup::PairingProblem::signorini), component[2], 1e-6 * component[2]);
+  const double smallest = *std::min_element(component.begin(), component.end());
+  EXPECT_NEAR(vector_alpha(infsup::PairingProblem::friction), smallest, 1e-6 * smallest);
+  // (the rollers make the components differ: the test would not see a swapped direction otherwise)
+  EXPECT_GT(std::abs(component[0] - component[2]), 1e-3 * component[2]);
 }
