@@ -13,6 +13,7 @@ Writes into OUT: predictor_check.csv (one row per sweep and the total) and predi
 Usage: plot_predictor_check.py OUT SWEEP_DIR [SWEEP_DIR ...]
 """
 import csv
+import math
 import sys
 from pathlib import Path
 
@@ -46,6 +47,8 @@ def check(folder):
     points = []
     for row in read(folder / "alpha.csv"):
         alpha, predicted = float(row["alpha"]), float(row["alpha_predicted"])
+        if math.isnan(predicted):
+            continue  # a 3-D pairing: the local predictor is planar and predicts nothing there
         unstable, predicted_unstable = alpha < ALPHA_MIN, predicted < PREDICTED_MIN
         counts["configurations"] += 1
         counts["unstable"] += unstable

@@ -41,7 +41,7 @@ struct InfSupOptions {
 scene::Scene resolve_scene(const InfSupOptions& o) {
   const std::string where = "hpcontact infsup";
   std::vector<scene::SceneOverride> overrides;
-  if (o.n) {
+  if (o.n) {  // (a 3-D box keeps its domain.n_z)
     overrides.push_back({"domain.n_x", static_cast<long long>(*o.n), where + " --n"});
     overrides.push_back({"domain.n_y", static_cast<long long>(*o.n), where + " --n"});
   }
@@ -66,7 +66,7 @@ driver::InfSupSummary solid_infsup(const InfSupOptions& o, const scene::Scene& s
         fmt::format("hpcontact infsup --mode {}: the spurious mode of a 3-D scene is written as a VTU of "
                     "the cells of T_C,H: give a file name ending in .vtu",
                     o.mode));
-  driver::check_solid_scene(scene, {});
+  driver::check_solid_scene(scene, {}, false);
   const auto d = driver::discretize_solid_scene(scene);
   const auto alpha = driver::solid_scene_alpha(scene, *d, backend);
   if (!o.mode.empty())
@@ -149,7 +149,8 @@ void add_infsup_command(CLI::App& app, CommandAction& action) {
       ->check(CLI::ExistingFile);
   command->add_option("--p", o->p, "Polynomial degree p of S^p(T_h) (scene key discretization.p; §7 scene: 1)");
   command->add_option("--pc", o->pc, "Multiplier degree p_C (discretization.pC; §7 scene: 0)");
-  command->add_option("--n", o->n, "n x n cells (domain.n_x, domain.n_y; §7 scene: 8, h = 2/n)");
+  command->add_option("--n", o->n,
+                      "n x n cells (domain.n_x, domain.n_y; §7 scene: 8, h = 2/n; a box keeps its domain.n_z)");
   command->add_option("--ratio", o->ratio,
                       "h/H, e.g. 1/2: T_{C,H} has m = n * ratio segments (contact_mesh.ratio; §7 scene: 1)");
   command->add_option("--family", o->family,

@@ -15,9 +15,6 @@ void check_solid_pairing(const scene::Scene& scene) {
   if (scene.norm == infsup::GramNorm::extension)
     throw_bad_input(scene.where("infsup.norm"), "infsup.norm", "extension",
                     "interp in a 3-D scene: α takes the interpolation norm of the flat Γ_C");
-  if (scene.given.contains("infsup.primal_norm"))
-    throw_bad_input(scene.where("infsup.primal_norm"), "infsup.primal_norm", "(given)",
-                    "a key of planar elastic scenes: α of a 3-D elastic scene is in the vector H¹ norm");
   if (scene.problem == infsup::PairingProblem::friction && scene.friction_bound.empty() && !scene.is_elastic())
     throw_bad_input(scene.where("data.s"), "data.s", "(missing)",
                     "the friction pairing (22) of infsup.problem needs the friction bound s");
@@ -49,7 +46,8 @@ SolidAlpha solid_scene_alpha(const scene::Scene& scene, const SolidDiscretizatio
   setup.vector_space = d.vector_space.get();  // (elastic scenes: the elastic pairing)
   setup.multipliers = &multipliers;
   setup.problem = scene.problem;
-  setup.friction_bound = solid_scene_function(scene, scene.friction_bound, "data.s");
+  if (scene.problem == infsup::PairingProblem::friction && !d.vector_space)  // (s only where (22) reads it)
+    setup.friction_bound = solid_scene_function(scene, scene.friction_bound, "data.s");
   setup.alpha_tolerance = scene.alpha_tolerance;
   setup.gram_factor = gram_factor;
   SolidAlpha out;
@@ -65,7 +63,9 @@ SolidAlpha solid_scene_alpha(const scene::Scene& scene, const SolidDiscretizatio
       .n = facts.faces,
       .m = multiplier_mesh->n_cells(),
       .h_min = facts.h_min,
-      .ratio = scene.ratio.size() == 1 ? std::optional<double>(scene.ratio.front().value) : std::nullopt};
+      // (without a ratio: √(cells of T_{C,H} / trace faces), h/H on uniform grids; m / n would be its square)
+      .ratio = scene.ratio.size() == 1 ? scene.ratio.front().value
+                                       : std::sqrt(double(multiplier_mesh->n_cells()) / facts.faces)};
   InfSupSummary& s = out.summary;
   s.record = infsup::make_infsup_record(pairing, out.result);
   s.record.alpha_predicted = std::numeric_limits<double>::quiet_NaN();

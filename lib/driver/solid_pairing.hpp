@@ -13,16 +13,18 @@
 namespace hpcontact::driver {
 
 /// @throws InputError naming the key for what α of a 3-D scene does not take: infsup.norm =
-/// extension, infsup.primal_norm (an elastic scene's α is in the vector H¹ norm), the scalar
-/// friction pairing without data.s.
+/// extension, the scalar friction pairing without data.s. (infsup.primal_norm is refused with
+/// the keys of planar scenes: an elastic scene's α is in the vector H¹ norm.)
 void check_solid_pairing(const scene::Scene& scene);
 
-/// α of `scene`'s pairing on `d` (the scene's own, or one with the same T_h and p) and the record
-/// `hpcontact infsup` prints and a sweep stores (`level`: the sweep's, from 1). An elastic scene
-/// pairs the normal (signorini) or the normal and tangential (friction) multipliers with [Q_p]³. The record's n is
-/// the number of trace faces on Γ_C, m the number of cells of T_{C,H}, h_min the shortest edge of
-/// a trace face; alpha_predicted is NaN (the local predictor is planar). `gram_factor`: A_G of
-/// (d.space, Γ_C) when shared (infsup::solid_gram_factor), built otherwise.
+/// α of `scene`'s pairing on `d` (the scene's own, or one with the same T_h and p; its T_{C,H} is
+/// not used: the scene's own is built) and the record `hpcontact infsup` prints and a sweep stores
+/// (`level`: the sweep's, from 1). An elastic scene pairs the normal (signorini) or the normal and
+/// tangential (friction) multipliers with [Q_p]³. The record's n is the number of trace faces on
+/// Γ_C, m the number of cells of T_{C,H}, h_min the shortest edge of a trace face, ratio the
+/// scene's h/H or else √(m / n); alpha_predicted is NaN (the local predictor is planar).
+/// `gram_factor`: A_G of (d.space or d.vector_space, Γ_C) when shared (infsup::solid_gram_factor),
+/// built otherwise.
 struct SolidAlpha {
   infsup::InfSupResult result;
   InfSupSummary summary;

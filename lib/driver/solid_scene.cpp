@@ -175,7 +175,7 @@ std::array<int, 2> multiplier_cells(const scene::Scene& scene, const mesh::FlatC
 
 }  // namespace
 
-void check_solid_scene(const scene::Scene& scene, const SceneRunOptions& options) {
+void check_solid_scene(const scene::Scene& scene, const SceneRunOptions& options, bool needs_effects) {
   for (const auto& key : scene.given)
     if (!solid_scene_keys().contains(key))
       throw_bad_input(scene.where(key), key, "(given)",
@@ -186,8 +186,8 @@ void check_solid_scene(const scene::Scene& scene, const SceneRunOptions& options
         effect != scene::Effect::friction_s && effect != scene::Effect::frictionless && effect != scene::Effect::infsup)
       throw_bad_input(scene.where("run.effects"), "run.effects", scene::to_string(effect),
                       "signorini, friction or friction_s (scalar), frictionless (elastic), or infsup (α of the "
-                      "scalar pairing) in a 3-D scene");
-  if (scene.effects.empty())
+                      "pairing) in a 3-D scene");
+  if (scene.effects.empty() && needs_effects)
     throw_bad_input(scene.where("run.effects"), "run.effects", "(none)",
                     "at least one of signorini, friction, friction_s, frictionless, infsup");
   if (scene.pair || scene.is_master)
@@ -216,7 +216,7 @@ std::unique_ptr<mesh::SurfaceMultiplierMesh> solid_multiplier_mesh(const scene::
                                                        scene.where("boundary.contact") + ": key 'boundary.contact'");
 }
 
-std::unique_ptr<SolidDiscretization> discretize_solid_scene(const scene::Scene& scene) {
+std::unique_ptr<SolidDiscretization> discretize_solid_scene(const scene::Scene& scene, bool multipliers) {
   auto d = std::make_unique<SolidDiscretization>();
   d->mesh = std::make_unique<mesh::SolidMesh>(scene_box(scene));
   const std::vector<char> dirichlet = space::faces_labelled(*d->mesh, {"dirichlet"});
@@ -237,6 +237,7 @@ std::unique_ptr<SolidDiscretization> discretize_solid_scene(const scene::Scene& 
   }
   const std::string origin = scene.where("boundary.contact") + ": key 'boundary.contact'";
   d->surface = std::make_unique<mesh::FlatContactSurface>(*d->mesh, std::vector<std::string>{"contact"}, origin);
+  if (!multipliers) return d;
   d->multiplier_mesh = solid_multiplier_mesh(scene, *d->surface);
   d->multipliers = std::make_unique<space::SurfaceMultiplierSpace>(*d->multiplier_mesh, scene.pc.value);
   return d;

@@ -18,8 +18,9 @@
 namespace hpcontact::driver {
 
 /// @throws InputError for a key, effect or run setting 3-D scenes do not take, naming it and what
-/// they take.
-void check_solid_scene(const scene::Scene& scene, const SceneRunOptions& options);
+/// they take; `needs_effects`: a scene without run.effects is refused too (a solve; α does not
+/// need them).
+void check_solid_scene(const scene::Scene& scene, const SceneRunOptions& options, bool needs_effects = true);
 
 /// Held by pointer: its parts refer to each other.
 struct SolidDiscretization {
@@ -32,8 +33,9 @@ struct SolidDiscretization {
   std::unique_ptr<space::SurfaceMultiplierSpace> multipliers;
 };
 
-/// @throws InputError as the builders do, naming the scene's keys.
-std::unique_ptr<SolidDiscretization> discretize_solid_scene(const scene::Scene& scene);
+/// @throws InputError as the builders do, naming the scene's keys. Without `multipliers`, T_{C,H}
+/// and its space are not built (a sweep's points build their own on Γ_C).
+std::unique_ptr<SolidDiscretization> discretize_solid_scene(const scene::Scene& scene, bool multipliers = true);
 
 /// The scene's expression `text` (key `key`, in x, y, z) as a function; empty for an empty text.
 assembly::SolidFunction solid_scene_function(const scene::Scene& scene, const std::string& text, const char* key);

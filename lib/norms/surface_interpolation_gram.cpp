@@ -105,9 +105,9 @@ namespace {
 /// The weights (1 + a_j + b_k)^{-1/2} as Σ_r c_r e^{-s_r} e^{-s_r a_j} e^{-s_r b_k}: the trapezoidal
 /// rule, step 1/4, for x^{-1/2} = π^{-1/2} ∫ e^{v/2 − x e^v} dv (x = 1 + a + b ∈ [1, largest]).
 /// The integrand is analytic in the strip |Im v| < π/2, so the rule's relative error is about
-/// 3.3 e^{-2π·1.2·4} < 1e-13; the left end is cut where the neglected tail 2 e^{v/2}/√π is 1e-14 of
-/// largest^{-1/2}; the terms with largest · e^v < 1e-17 have e^{-x e^v} = 1 to round-off and are
-/// summed into one constant term (s = 0).
+/// 3.3 e^{-2π·1.2·4} ≈ 2.6e-13 at most (measured: 1e-14); the left end is cut where the neglected tail 2 e^{v/2}/√π is
+/// 1e-14 of largest^{-1/2}; the terms with largest · e^v < 1e-17 have e^{-x e^v} = 1 to round-off and are summed into
+/// one constant term (s = 0).
 struct ExponentialSum {
   std::vector<double> coefficient, rate;  ///< c_r, s_r
 };

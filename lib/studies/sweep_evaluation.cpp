@@ -65,7 +65,7 @@ class SweepEvaluation::Group {
       throw InputError(scene.file +
                        ": α of a 3-D scene is computed on one process: run the sweep with --ranks-per-unit 1 "
                        "(each rank then takes whole groups)");
-    solid = driver::discretize_solid_scene(scene);
+    solid = driver::discretize_solid_scene(scene, false);  // (each point builds its T_{C,H})
     solid_gram = std::make_unique<assembly::CondensedFactor>(
         solid->vector_space ? infsup::solid_gram_factor(*solid->vector_space, *solid->surface)
                             : infsup::solid_gram_factor(*solid->space, *solid->surface));

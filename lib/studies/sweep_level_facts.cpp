@@ -45,7 +45,7 @@ void check_families(const StabilitySweep& sweep, const scene::Scene& at_ratio, c
 // checked on it (α of 3-D scenes takes the interpolation norm and the discontinuous family).
 LevelFacts facts_of_solid_level(const StabilitySweep& sweep, const scene::Scene& scene,
                                 const std::vector<std::optional<scene::Ratio>>& ratios) {
-  driver::check_solid_scene(scene, {});
+  driver::check_solid_scene(scene, {}, false);
   for (const auto norm : sweep.norms)
     for (const auto problem : sweep.problems)
       driver::check_solid_pairing(point_scene(scene, {.problem = problem, .norm = norm}));
@@ -53,7 +53,7 @@ LevelFacts facts_of_solid_level(const StabilitySweep& sweep, const scene::Scene&
     if (family.kind != space::MultiplierFamilyKind::discontinuous)
       throw_bad_input(sweep.file, "sweep.family", space::to_string(family),
                       "discontinuous in a sweep of a 3-D scene: its multipliers are discontinuous Q_pC");
-  const auto d = driver::discretize_solid_scene(scene);
+  const auto d = driver::discretize_solid_scene(scene, false);  // (T_{C,H} per ratio below)
   LevelFacts facts;
   facts.cells = d->mesh->n_cells();
   facts.scene_p = scene.p.value;

@@ -96,7 +96,7 @@ TEST(SolidScene, KeysEffectsAndCommandsOfPlanarScenesAreRefusedByName) {
   const auto falling = solve_with("solid_falling_nodes", "domain.z_nodes=[0.0, -1.0]");
   expect_refused(falling, "each larger than the one before");
   const auto convergence = solve_with("solid_convergence", "run.effects=[\"signorini\", \"convergence\"]");
-  expect_refused(convergence, "or infsup (α of the scalar pairing) in a 3-D scene");
+  expect_refused(convergence, "or infsup (α of the pairing) in a 3-D scene");
   const auto three_m = solve_with("solid_m", "contact_mesh.m=[2, 2, 2]");
   expect_refused(three_m, "one or two integers");
   const auto odd_ratio = solve_with("solid_ratio", "contact_mesh.ratio=\"1/3\"");

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "basis/quadrature.hpp"
 #include "core/error.hpp"
 #include "norms/surface_interpolation_gram.hpp"
 #include "space/solid_vector_space.hpp"
@@ -65,6 +66,53 @@ TEST(SolidInfSup, GramOfAConstantIsTheArea) {
     const Eigen::MatrixXd gram = norms::surface_interpolation_gram(built.multipliers, {modes, modes + 3});
     ASSERT_EQ(gram.rows(), 1);
     EXPECT_NEAR(gram(0, 0), 2.0 * 0.5, 1e-12) << modes;
+  }
+}
+
+// G against its definition summed by brute force: the moments (ℓ_i, c_j c_k) by composite Gauss
+// quadrature on each cell of T_{C,H} from the multiplier space's own values, on a non-square Γ_C with a
+// 3 × 2 grid at p_C = 2 and modes reaching κ = ωH/2 ≈ 21 (the moments' summation by parts).
+TEST(SolidInfSup, GramEqualsItsDefinitionByQuadrature) {
+  const Built built({6, 4, 2, 2, 3, 2, 0.7});
+  const std::array<int, 2> modes{40, 30};
+  const auto& [lo, hi] = built.surface.bounds();
+  const Eigen::Vector2d length = hi - lo;
+  // (composite: 4 × 4 pieces of 20 × 20 Gauss points per cell, at most 11 radians of the last
+  // cosine over a piece; GSL's rules of many points are accurate to about 1e-10 only)
+  const auto& rule = basis::gauss_legendre(20);
+  constexpr int kPieces = 4;
+  const int n = built.multipliers.n_dofs();
+  Eigen::MatrixXd moments = Eigen::MatrixXd::Zero(modes[0] * modes[1], n);  // row j + modes[0] k
+  const auto mode = [&](int i, int axis, double x) {
+    return i == 0 ? 1.0 / std::sqrt(length(axis))
+                  : std::sqrt(2.0 / length(axis)) * std::cos(i * M_PI * (x - lo(axis)) / length(axis));
+  };
+  for (int c = 0; c < built.multiplier_mesh.n_cells(); ++c) {
+    const auto [cell_lo, cell_hi] = built.multiplier_mesh.cell_bounds(c);
+    const Eigen::Vector2d piece = (cell_hi - cell_lo) / kPieces;
+    for (int pi = 0; pi < kPieces * kPieces; ++pi)
+      for (std::size_t q = 0; q < rule.points.size(); ++q)
+        for (std::size_t r = 0; r < rule.points.size(); ++r) {
+          const Eigen::Vector2d t(rule.points[q], rule.points[r]);
+          const Eigen::Vector2d corner = cell_lo + Eigen::Vector2d(pi % kPieces, pi / kPieces).cwiseProduct(piece);
+          const Eigen::Vector2d a = corner + (0.5 * (t.array() + 1.0) * piece.array()).matrix();
+          const double weight = 0.25 * piece.prod() * rule.weights[q] * rule.weights[r];
+          const Eigen::VectorXd values = built.multipliers.values(c, a);
+          for (int k = 0; k < modes[1]; ++k)
+            for (int j = 0; j < modes[0]; ++j)
+              moments.row(j + modes[0] * k).segment(built.multipliers.first_dof(c), values.size()) +=
+                  (weight * mode(j, 0, a(0)) * mode(k, 1, a(1))) * values.transpose();
+        }
+  }
+  Eigen::VectorXd weights(modes[0] * modes[1]);
+  for (int k = 0; k < modes[1]; ++k)
+    for (int j = 0; j < modes[0]; ++j)
+      weights(j + modes[0] * k) =
+          1.0 / std::sqrt(1.0 + std::pow(j * M_PI / length(0), 2) + std::pow(k * M_PI / length(1), 2));
+  const Eigen::MatrixXd expected = moments.transpose() * weights.asDiagonal() * moments;
+  for (const auto summation : {norms::GramSummation::direct, norms::GramSummation::exponential_sum}) {
+    const Eigen::MatrixXd gram = norms::surface_interpolation_gram(built.multipliers, modes, summation);
+    EXPECT_LT((gram - expected).norm(), 1e-12 * expected.norm()) << static_cast<int>(summation);
   }
 }
 
