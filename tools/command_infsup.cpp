@@ -70,8 +70,11 @@ driver::InfSupSummary solid_infsup(const InfSupOptions& o, const scene::Scene& s
   const auto d = driver::discretize_solid_scene(scene);
   const auto alpha = driver::solid_scene_alpha(scene, *d, backend);
   if (!o.mode.empty())
-    io::write_file_atomically(
-        o.mode, io::vtu_text(postprocess::surface_multiplier_vtu_grid(*d->multipliers, alpha.result.mode, "mode")));
+    io::write_file_atomically(o.mode, io::vtu_text(postprocess::surface_multiplier_vtu_grid(
+                                          *d->multipliers, alpha.result.mode,
+                                          alpha.result.mode.size() == d->multipliers->n_dofs()
+                                              ? std::vector<std::string>{"mode"}
+                                              : std::vector<std::string>{"mode_normal", "mode_e1", "mode_e2"})));
   return alpha.summary;
 }
 

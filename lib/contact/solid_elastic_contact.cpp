@@ -1,18 +1,22 @@
 // Frictionless elastic contact on hexahedral meshes: the normal coupling, condensation, QP, recovery.
 #include "contact/solid_elastic_contact.hpp"
 
+#include <fmt/format.h>
+
+#include <array>
 #include <limits>
 
 #include "assembly/condensed_factor.hpp"
 #include "assembly/solid_elastic_system.hpp"
 #include "assembly/surface_coupling.hpp"
+#include "contact/disc_qp.hpp"
 #include "contact/multiplier_qp.hpp"
 #include "core/error.hpp"
 #include "core/timer.hpp"
 
 namespace hpcontact::contact {
 
-SolidElasticSolution solve_solid_frictionless(const SolidElasticSetup& setup) {
+SolidElasticSolution solve_solid_elastic_contact(const SolidElasticSetup& setup) {
   if (setup.space == nullptr || setup.multipliers == nullptr || !setup.gap)
     throw InputError("3-D elastic contact: the space, the multipliers or the gap g is missing");
   const space::SolidVectorSpace& space = *setup.space;
@@ -28,11 +32,31 @@ SolidElasticSolution solve_solid_frictionless(const SolidElasticSetup& setup) {
     for (int d = 0; d < scalar.n_dofs(); ++d)
       if (const int dof = space.dof(d, c); dof >= 0) load(dof) = component(d);
   }
-  const Eigen::Vector3d normal = setup.multipliers->mesh().surface().normal();
-  const linalg::Coupling b =
-      assembly::directional_coupling(space, assembly::surface_coupling(scalar, *setup.multipliers), normal);
-  const Eigen::VectorXd g = assembly::surface_multiplier_load(*setup.multipliers, setup.gap);
-  const int m = setup.multipliers->n_dofs();
+  const auto& surface = setup.multipliers->mesh().surface();
+  const bool tresca = static_cast<bool>(setup.threshold);
+  const int m = setup.multipliers->n_dofs(), blocks = tresca ? 3 : 1;
+  const linalg::Coupling scalar_b = assembly::surface_coupling(scalar, *setup.multipliers);
+  // B = B_n, or [B_n; B_1; B_2] for Tresca
+  std::vector<Eigen::Triplet<double>> entries;
+  const std::array<Eigen::Vector3d, 3> directions{surface.normal(), surface.axis(0), surface.axis(1)};
+  for (int k = 0; k < blocks; ++k) {
+    const linalg::Coupling part = assembly::directional_coupling(space, scalar_b, directions[k]);
+    for (int row = 0; row < part.outerSize(); ++row)
+      for (linalg::Coupling::InnerIterator it(part, row); it; ++it)
+        entries.emplace_back(k * m + row, static_cast<int>(it.col()), it.value());
+  }
+  linalg::Coupling b(blocks * m, space.n_dofs());
+  b.setFromTriplets(entries.begin(), entries.end());
+  Eigen::VectorXd g = Eigen::VectorXd::Zero(blocks * m);
+  g.head(m) = assembly::surface_multiplier_load(*setup.multipliers, setup.gap);
+  Eigen::VectorXd radius(tresca ? m : 0);
+  for (Eigen::Index i = 0; i < radius.size(); ++i) {
+    const mesh::SolidPoint x = surface.from_plane(setup.multipliers->nodal_point(static_cast<int>(i)));
+    radius(i) = setup.threshold(x);
+    if (!(radius(i) >= 0.0))
+      throw InputError(fmt::format("Tresca's threshold s is {} at ({}, {}, {}) on Γ_C; it must be ≥ 0", radius(i), x(0),
+                                   x(1), x(2)));
+  }
   MultiplierConstraints constraints;
   constraints.to_nodal = Eigen::MatrixXd::Identity(m, m);
   constraints.matrix = Eigen::MatrixXd::Identity(m, m);
@@ -54,17 +78,27 @@ SolidElasticSolution solve_solid_frictionless(const SolidElasticSetup& setup) {
   const Eigen::VectorXd d = b * factor.solve(load) - g;
   out.seconds.condensation = clock.seconds();
 
-  // 4. The pressure: min ½ Pᵀ S P − Pᵀ d over P ≥ 0.
+  // 4. The multipliers: min ½ λᵀ S λ − λᵀ d over P ≥ 0 (and the discs |(t₁, t₂)| ≤ s).
   clock = Stopwatch();
-  MultiplierQpSolution qp = solve_multiplier_qp(s, d, constraints, setup.qp, setup.interior_point);
-  out.pressure = std::move(qp.x);
-  out.qp = std::move(qp.report);
+  Eigen::VectorXd lambda;
+  if (tresca) {
+    DiscQpSolution qp = solve_disc_qp(s, d, radius);
+    lambda = std::move(qp.x);
+    out.qp = std::move(qp.report);
+  } else {
+    MultiplierQpSolution qp = solve_multiplier_qp(s, d, constraints, setup.qp, setup.interior_point);
+    lambda = std::move(qp.x);
+    out.qp = std::move(qp.report);
+  }
+  out.pressure = lambda.head(m);
+  out.traction_1 = tresca ? Eigen::VectorXd(lambda.segment(m, m)) : Eigen::VectorXd::Zero(m);
+  out.traction_2 = tresca ? Eigen::VectorXd(lambda.tail(m)) : Eigen::VectorXd::Zero(m);
   out.seconds.qp = clock.seconds();
 
   // 5. u = K⁻¹(F − B_nᵀ P), the gap (ℓ_i, g − u·n), the energy.
   clock = Stopwatch();
-  out.u = factor.solve(Eigen::VectorXd(load - b.transpose() * out.pressure));
-  out.gap = g - b * out.u;
+  out.u = factor.solve(Eigen::VectorXd(load - b.transpose() * lambda));
+  out.gap = (g - b * out.u).head(m);
   out.energy = 0.5 * factor.quadratic_form(out.u) - load.dot(out.u);
   out.seconds.recovery = clock.seconds();
   return out;

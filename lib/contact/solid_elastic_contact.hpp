@@ -5,6 +5,9 @@
 //     [B_n  0   ] [P] ≤ [G]        P ≥ 0, B_n u ≤ G, Pᵀ(G − B_n u) = 0 at the nodal points.
 // Condensed onto Γ_C as the scalar problems: min ½ Pᵀ S P − Pᵀ d over P ≥ 0, S = B_n K⁻¹ B_nᵀ,
 // d = B_n K⁻¹ F − G, u = K⁻¹(F − B_nᵀ P).
+// Tresca friction with threshold s adds the tangential multipliers t₁, t₂ along Γ_C's axes e₁, e₂
+// (traction on the body −P n − t₁ e₁ − t₂ e₂): λ = (P; t₁; t₂), B = [B_n; B_1; B_2], and at every
+// nodal point P ≥ 0 and |(t₁, t₂)| ≤ s, a disc (contact/disc_qp.hpp).
 #pragma once
 
 #include <Eigen/Core>
@@ -28,6 +31,7 @@ struct SolidElasticSetup {
   std::vector<assembly::Material> materials;          ///< one per cell
   std::array<assembly::SolidFunction, 3> body_force;  ///< f_x, f_y, f_z (empty: 0)
   assembly::SolidFunction gap;                        ///< g: u·n ≤ g on Γ_C
+  assembly::SolidFunction threshold;                  ///< Tresca's s ≥ 0 (empty: frictionless)
   BoxQpOptions qp;
   InequalityQpOptions interior_point;
 };
@@ -35,15 +39,18 @@ struct SolidElasticSetup {
 struct SolidElasticSolution {
   Eigen::VectorXd u;         ///< coefficients on the vector space
   Eigen::VectorXd pressure;  ///< P at the nodal points of the multiplier space
-  Eigen::VectorXd gap;       ///< (ℓ_i, g − u·n) = S P − d (the QP's gradient), ≥ 0
-  double energy = 0.0;       ///< ½ a(u, u) − F(u)
+  /// Tresca: t₁, t₂ at the nodal points (tangential tractions along e₁, e₂); zero without friction
+  Eigen::VectorXd traction_1, traction_2;
+  Eigen::VectorXd gap;  ///< (ℓ_i, g − u·n) = S P − d (the QP's gradient), ≥ 0
+  double energy = 0.0;  ///< ½ a(u, u) − F(u)
   int n_trace = 0;
   QpReport qp;
   SolidSolveSeconds seconds;
 };
 
-/// @throws InputError for missing data; NumericalError if K is singular (no Γ_D holds the body)
-/// or the QP fails.
-SolidElasticSolution solve_solid_frictionless(const SolidElasticSetup& setup);
+/// Frictionless, or Tresca where `threshold` is given.
+/// @throws InputError for missing data or s < 0; NumericalError if K is singular (no Γ_D holds the
+/// body) or the QP fails.
+SolidElasticSolution solve_solid_elastic_contact(const SolidElasticSetup& setup);
 
 }  // namespace hpcontact::contact

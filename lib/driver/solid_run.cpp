@@ -25,10 +25,10 @@ namespace {
 /// A contact problem solved on a 3-D scene, with what its outputs need.
 struct SolvedSolid {
   ContactResult result;
-  io::CsvTable samples;                ///< boundary_<problem>.csv
-  postprocess::SolidPointField field;  ///< the solution's VTU field (it holds the coefficients)
-  std::string multiplier_name;         ///< "lambda" or "pressure"
-  Eigen::VectorXd multiplier;          ///< its nodal coefficients on T_{C,H}
+  io::CsvTable samples;                       ///< boundary_<problem>.csv
+  postprocess::SolidPointField field;         ///< the solution's VTU field (it holds the coefficients)
+  std::vector<std::string> multiplier_names;  ///< "lambda", or "pressure" (and the Tresca tractions)
+  Eigen::VectorXd multiplier;                 ///< their nodal coefficients on T_{C,H}, one after the other
 };
 
 /// visit(face, cell of T_{C,H}, plane point, point, weight) at the collapsed Gauss points of
@@ -94,7 +94,7 @@ SolvedSolid solve_scalar(const scene::Scene& scene, const SolidDiscretization& d
   SolvedSolid out{{},
                   io::CsvTable({"x", "y", "z", "w", "u", signorini ? "obstacle" : "s", "lambda"}),
                   {},
-                  "lambda",
+                  {"lambda"},
                   solution->lambda};
   const double scale = solution->lambda.lpNorm<Eigen::Infinity>();
   double area = 0.0;
@@ -114,9 +114,10 @@ SolvedSolid solve_scalar(const scene::Scene& scene, const SolidDiscretization& d
   return out;
 }
 
-/// Frictionless contact of the elastic box: samples x,y,z,w,gap,pressure,traction_1,traction_2
-/// (gap = g − u·n; the tangential tractions vanish), the total force P = Σ w · pressure.
-SolvedSolid solve_elastic(const scene::Scene& scene, const SolidDiscretization& d) {
+/// Frictionless or Tresca contact of the elastic box: samples x,y,z,w,gap,pressure,traction_1,
+/// traction_2 (gap = g − u·n; the tangential tractions along Γ_C's axes e_1, e_2, zero without
+/// friction), the total force P = Σ w · pressure.
+SolvedSolid solve_elastic(const scene::Scene& scene, const SolidDiscretization& d, scene::Effect effect) {
   Stopwatch clock;
   contact::SolidElasticSetup setup;
   setup.space = d.vector_space.get();
@@ -127,12 +128,18 @@ SolvedSolid solve_elastic(const scene::Scene& scene, const SolidDiscretization& 
                       solid_scene_function(scene, scene.body_force_z, "data.f_z")};
   setup.gap = solid_scene_function(scene, scene.obstacle, "data.g");
   if (!setup.gap) throw_bad_input(scene.where("data.g"), "data.g", "(missing)", "the gap to the obstacle along n");
-  auto solution = std::make_shared<const contact::SolidElasticSolution>(contact::solve_solid_frictionless(setup));
+  if (effect == scene::Effect::tresca) {
+    setup.threshold = solid_scene_function(scene, scene.friction_bound, "data.s");
+    if (!setup.threshold)
+      throw_bad_input(scene.where("data.s"), "data.s", "(missing)", "Tresca's threshold s ≥ 0 (effect tresca)");
+  }
+  auto solution = std::make_shared<const contact::SolidElasticSolution>(contact::solve_solid_elastic_contact(setup));
   SolvedSolid out{{},
                   io::CsvTable({"x", "y", "z", "w", "gap", "pressure", "traction_1", "traction_2"}),
                   {},
-                  "pressure",
-                  solution->pressure};
+                  {"pressure", "traction_1", "traction_2"},
+                  Eigen::VectorXd(3 * solution->pressure.size())};
+  out.multiplier << solution->pressure, solution->traction_1, solution->traction_2;
   const Eigen::Vector3d normal = d.surface->normal();
   const double scale = solution->pressure.lpNorm<Eigen::Infinity>();
   double area = 0.0, force = 0.0;
@@ -141,12 +148,14 @@ SolvedSolid solve_elastic(const scene::Scene& scene, const SolidDiscretization& 
     const double pressure = multiplier_at(*d.multipliers, solution->pressure, cell, a);
     const Eigen::Vector3d u = postprocess::solid_displacement(*d.vector_space, solution->u, face.cell,
                                                               assembly::face_point_in_cell(*d.surface, face, a));
-    out.samples.add_row({x(0), x(1), x(2), w, setup.gap(x) - u.dot(normal), pressure, 0.0, 0.0});
+    out.samples.add_row({x(0), x(1), x(2), w, setup.gap(x) - u.dot(normal), pressure,
+                         multiplier_at(*d.multipliers, solution->traction_1, cell, a),
+                         multiplier_at(*d.multipliers, solution->traction_2, cell, a)});
     force += w * pressure;
     if (std::abs(pressure) > 1e-10 * scale) area += w;
   });
-  out.result = solid_result(scene::Effect::frictionless, *solution, d.vector_space->n_dofs(), d.multipliers->n_dofs(),
-                            area, clock.seconds());
+  out.result =
+      solid_result(effect, *solution, d.vector_space->n_dofs(), d.multipliers->n_dofs(), area, clock.seconds());
   out.result.total_force = force;
   out.field = {"displacement", 3, [space = d.vector_space.get(), solution](int c, const Eigen::Vector3d& xi) {
                  return Eigen::VectorXd(postprocess::solid_displacement(*space, solution->u, c, xi));
@@ -185,8 +194,8 @@ RunResult run_solid_scene(const scene::Scene& scene, const SceneRunOptions& opti
   for (const auto effect : scene.effects) {
     if (effect == scene::Effect::infsup) continue;
     say("solving " + scene::to_string(effect));
-    solved.push_back(effect == scene::Effect::frictionless ? solve_elastic(scene, *d)
-                                                           : solve_scalar(scene, *d, effect));
+    const bool elastic = effect == scene::Effect::frictionless || effect == scene::Effect::tresca;
+    solved.push_back(elastic ? solve_elastic(scene, *d, effect) : solve_scalar(scene, *d, effect));
     result.contacts.push_back(solved.back().result);
     throw_if_cancelled();
   }
@@ -205,10 +214,10 @@ RunResult run_solid_scene(const scene::Scene& scene, const SceneRunOptions& opti
       files.push_back({"solution_" + s.result.problem,
                        {{s.field.name, s.field.components}},
                        [&space = *d->space, &field = s.field] { return postprocess::solid_vtu_grid(space, field); }});
-      files.push_back(
-          {"multiplier_" + s.result.problem, {{s.multiplier_name, 1}}, [&multipliers = *d->multipliers, &s] {
-             return postprocess::surface_multiplier_vtu_grid(multipliers, s.multiplier, s.multiplier_name);
-           }});
+      files.push_back({"multiplier_" + s.result.problem, {}, [&multipliers = *d->multipliers, &s] {
+                         return postprocess::surface_multiplier_vtu_grid(multipliers, s.multiplier, s.multiplier_names);
+                       }});
+      for (const auto& name : s.multiplier_names) files.back().fields.push_back({name, 1});
     }
   write_run_outputs(options.out, options.distribution, files, [&](const std::filesystem::path& out) {
     if (scene.wants_output(scene::Output::boundary))

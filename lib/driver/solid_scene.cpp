@@ -183,13 +183,14 @@ void check_solid_scene(const scene::Scene& scene, const SceneRunOptions& options
                                   fmt::join(solid_scene_keys(), ", ")));
   for (const auto effect : scene.effects)
     if (effect != scene::Effect::signorini && effect != scene::Effect::friction &&
-        effect != scene::Effect::friction_s && effect != scene::Effect::frictionless && effect != scene::Effect::infsup)
+        effect != scene::Effect::friction_s && effect != scene::Effect::frictionless &&
+        effect != scene::Effect::tresca && effect != scene::Effect::infsup)
       throw_bad_input(scene.where("run.effects"), "run.effects", scene::to_string(effect),
-                      "signorini, friction or friction_s (scalar), frictionless (elastic), or infsup (α of the "
-                      "pairing) in a 3-D scene");
+                      "signorini, friction or friction_s (scalar), frictionless or tresca (elastic), or infsup (α "
+                      "of the pairing) in a 3-D scene");
   if (scene.effects.empty() && needs_effects)
     throw_bad_input(scene.where("run.effects"), "run.effects", "(none)",
-                    "at least one of signorini, friction, friction_s, frictionless, infsup");
+                    "at least one of signorini, friction, friction_s, frictionless, tresca, infsup");
   if (scene.pair || scene.is_master)
     throw_bad_input(scene.where(scene.n_z > 0 ? "domain.n_z" : "domain.z_nodes"),
                     scene.n_z > 0 ? "domain.n_z" : "domain.z_nodes", "(given)",

@@ -9,18 +9,16 @@
 namespace hpcontact::postprocess {
 
 io::VtuGrid surface_multiplier_vtu_grid(const space::SurfaceMultiplierSpace& multipliers,
-                                        const Eigen::VectorXd& coefficients, const std::string& name) {
+                                        const Eigen::VectorXd& coefficients, const std::vector<std::string>& names) {
   const auto n = static_cast<Eigen::Index>(multipliers.n_dofs());
-  const auto copies = n > 0 ? coefficients.size() / n : 0;
-  HPC_VERIFY(copies >= 1 && coefficients.size() == copies * n,
-             "surface_multiplier_vtu_grid: a whole number of multipliers");
+  const auto copies = static_cast<Eigen::Index>(names.size());
+  HPC_VERIFY(copies >= 1 && coefficients.size() == copies * n, "surface_multiplier_vtu_grid: one multiplier per name");
   constexpr std::uint8_t kVtkQuad = 9;
   const auto& mesh = multipliers.mesh();
   const int q = std::max(multipliers.degree(), 1);
   io::VtuGrid grid;
   std::vector<io::VtuGrid::PointArray> fields;
-  for (Eigen::Index k = 0; k < copies; ++k)
-    fields.push_back({copies == 1 ? name : name + "_" + std::to_string(k + 1), 1, {}});
+  for (const auto& name : names) fields.push_back({name, 1, {}});
   for (int c = 0; c < mesh.n_cells(); ++c) {
     const auto [lo, hi] = mesh.cell_bounds(c);
     const auto first = static_cast<std::int64_t>(grid.n_points());

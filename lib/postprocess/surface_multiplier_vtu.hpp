@@ -6,16 +6,16 @@
 
 #include <Eigen/Core>
 #include <string>
+#include <vector>
 
 #include "io/vtu_writer.hpp"
 #include "space/surface_multiplier_space.hpp"
 
 namespace hpcontact::postprocess {
 
-/// `coefficients` (nodal, shape (multipliers.n_dofs())) as the point field `name`, the cell data
-/// "p" being p_C; k · n_dofs coefficients (several multipliers, one after the other) as the
-/// fields name_1 … name_k.
+/// `coefficients`: one multiplier per name, one after the other (nodal, multipliers.n_dofs() each),
+/// as the point fields `names`; the cell data "p" is p_C.
 io::VtuGrid surface_multiplier_vtu_grid(const space::SurfaceMultiplierSpace& multipliers,
-                                        const Eigen::VectorXd& coefficients, const std::string& name);
+                                        const Eigen::VectorXd& coefficients, const std::vector<std::string>& names);
 
 }  // namespace hpcontact::postprocess

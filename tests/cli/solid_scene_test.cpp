@@ -3,10 +3,12 @@
 // and the keys, effects and commands 3-D scenes refuse with a message naming them.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "support/cli_runner.hpp"
+#include "support/vtu_arrays.hpp"
 
 namespace hpcontact::testing {
 namespace {
@@ -79,6 +81,73 @@ TEST(SolidScene, ExtrudedPlaneStrainHasThePlanarEnergyAndForceTimesTheWidth) {
   double force = 0.0;
   for (const auto& row : samples.records()) force += std::stod(row.at("w")) * std::stod(row.at("pressure"));
   EXPECT_NEAR(force, solid_result.at("total_force").get<double>(), 1e-12);
+}
+
+// Tresca in 3-D (a disc |(t₁, t₂)| ≤ s per nodal point) on the plane-strain square extruded in y:
+// with y-independent data and rollers u_y = 0 the solution is the planar one at every y, t₂ = 0, and
+// the disc acts as the planar bound |t₁| ≤ s: energy and P are the planar ones times the width,
+// with stick and slip on Γ_C.
+TEST(SolidScene, ExtrudedTrescaHasThePlanarEnergyAndForceTimesTheWidth) {
+  const auto dir = scratch("solid_tresca");
+  const std::string friction = " --set 'data.f_x=\"0.05\"' --set 'data.s=\"0.1\"' ";
+  const auto solid = run("solve " + std::string(HPCONTACT_SOURCE_DIR) +
+                         "/studies/three_d/extruded_frictionless.toml --set 'run.effects=[\"tresca\"]'" + friction +
+                         "--out " + (dir / "solid").string());
+  ASSERT_EQ(solid.exit_code, 0) << solid.output;
+  const auto planar = run("solve " + std::string(HPCONTACT_SOURCE_DIR) +
+                          "/studies/elasticity/square.toml --effects tresca --set 'boundary.contact=\"abs(y + "
+                          "1) < 1e-9\"'" +
+                          friction + "--out " + (dir / "planar").string());
+  ASSERT_EQ(planar.exit_code, 0) << planar.output;
+  const auto solid_result = summary_of(dir / "solid").at("tresca");
+  const auto planar_result = summary_of(dir / "planar").at("tresca");
+  for (const char* key : {"energy", "total_force"}) {
+    const double expected = 0.5 * planar_result.at(key).get<double>();
+    EXPECT_NEAR(solid_result.at(key).get<double>(), expected, 1e-9 * std::abs(expected)) << key;
+  }
+  const CsvFile samples = read_csv(dir / "solid" / "boundary_tresca.csv");
+  int stick = 0, slip = 0;
+  for (const auto& row : samples.records()) {
+    const double t1 = std::stod(row.at("traction_1")), t2 = std::stod(row.at("traction_2"));
+    EXPECT_LT(std::abs(t2), 1e-10);
+    EXPECT_LE(std::abs(t1), 0.1 * (1 + 1e-9));
+    (std::abs(t1) > 0.1 * (1 - 1e-6) ? slip : stick) += 1;
+  }
+  EXPECT_GT(stick, 0);
+  EXPECT_GT(slip, 0);
+  EXPECT_TRUE(std::filesystem::exists(dir / "solid" / "multiplier_tresca.vtu"));
+  const auto no_threshold = run("solve " + std::string(HPCONTACT_SOURCE_DIR) +
+                                "/studies/three_d/extruded_frictionless.toml --set 'run.effects=[\"tresca\"]' --out " +
+                                (dir / "none").string());
+  expect_refused(no_threshold, "data.s");
+}
+
+// A body force along the diagonal of Γ_C's plane pulls every node of T_{C,H} into slip along the
+// diagonal: at the nodal points (the lattice of multiplier_tresca.vtu at p_C = 1) |(t₁, t₂)| = s with
+// both components well inside (−s, s). A box |t₁|, |t₂| ≤ s holds no such point on its boundary
+// and would let |(t₁, t₂)| reach s√2.
+TEST(SolidScene, TrescaBoundIsADiscNotABox) {
+  const auto dir = scratch("solid_tresca_disc");
+  std::ofstream(dir / "scene.toml")
+      << "[domain]\nx_min = -1.0\nx_max = 1.0\ny_min = -1.0\ny_max = 1.0\n"
+         "z_min = -1.0\nz_max = 1.0\nn_x = 4\nn_y = 4\nn_z = 4\n"
+         "[boundary]\ncontact = \"abs(z + 1) < 1e-9\"\ndirichlet = \"abs(z - 1) < 1e-9\"\n"
+         "[contact_mesh]\nratio = \"1/2\"\n[discretization]\np = 2\npC = 1\n"
+         "[material]\nE = \"1\"\nnu = \"0.3\"\n"
+         "[data]\nf_x = \"0.1\"\nf_y = \"0.1\"\nf_z = \"-1\"\n"
+         "g = \"0.02 + 0.1 * (x^2 + y^2)\"\ns = \"0.1\"\n[run]\neffects = [\"tresca\"]\n";
+  const auto solved = run("solve " + (dir / "scene.toml").string() + " --out " + (dir / "out").string());
+  ASSERT_EQ(solved.exit_code, 0) << solved.output;
+  std::ifstream stream(dir / "out" / "multiplier_tresca.vtu", std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(stream)), std::istreambuf_iterator<char>());
+  const auto t1 = appended_array(text, "traction_1"), t2 = appended_array(text, "traction_2");
+  ASSERT_EQ(t1.size(), 16u);
+  for (std::size_t k = 0; k < t1.size(); ++k) {
+    EXPECT_NEAR(std::hypot(t1[k], t2[k]), 0.1, 1e-9) << k;
+    // (both components well inside (−s, s): a box would not hold such a point on its boundary)
+    EXPECT_GT(std::min(std::abs(t1[k]), std::abs(t2[k])), 0.03) << k;
+    EXPECT_LT(std::max(std::abs(t1[k]), std::abs(t2[k])), 0.097) << k;
+  }
 }
 
 /// `hpcontact solve` of the extruded scene with one key overridden (--set KEY=VALUE).

@@ -53,7 +53,7 @@ void solve_column(const Column& column, int p, int pc, int n, int m,
   setup.materials.assign(mesh.n_cells(), column.material);
   setup.body_force[2] = [&](const mesh::SolidPoint&) { return -column.rho; };
   setup.gap = [&](const mesh::SolidPoint&) { return column.delta; };
-  check(space, solve_solid_frictionless(setup));
+  check(space, solve_solid_elastic_contact(setup));
 }
 
 TEST(SolidElasticContact, ColumnOnAFloorIsExactForPAtLeastTwo) {

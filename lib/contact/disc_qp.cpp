@@ -1,0 +1,87 @@
+// FISTA with adaptive restart for the sign-and-disc constrained dual of 3-D Tresca contact.
+#include "contact/disc_qp.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+
+namespace hpcontact::contact {
+
+namespace {
+
+/// The nearest point of the set: P_i clamped at 0, (t₁_i, t₂_i) scaled into the disc of radius s_i.
+void project(Eigen::Ref<Eigen::VectorXd> x, const Eigen::VectorXd& radius) {
+  const Eigen::Index m = radius.size();
+  for (Eigen::Index i = 0; i < m; ++i) {
+    x(i) = std::max(x(i), 0.0);
+    const double length = std::hypot(x(m + i), x(2 * m + i));
+    if (length > radius(i)) {
+      const double scale = length > 0.0 ? radius(i) / length : 0.0;
+      x(m + i) *= scale;
+      x(2 * m + i) *= scale;
+    }
+  }
+}
+
+}  // namespace
+
+DiscQpSolution solve_disc_qp(const Eigen::MatrixXd& s, const Eigen::VectorXd& d, const Eigen::VectorXd& radius,
+                             const DiscQpOptions& options) {
+  const Eigen::Index m = radius.size();
+  HPC_VERIFY(s.rows() == 3 * m && s.cols() == 3 * m && d.size() == 3 * m, "solve_disc_qp: sizes");
+  if ((radius.array() < 0.0).any() || !radius.allFinite())
+    throw InputError("Tresca's threshold s must be finite and ≥ 0 at every nodal point of T_{C,H}");
+  DiscQpSolution out;
+  out.report.method = "projected-gradient";
+  const double lipschitz =
+      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(s, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(3 * m);
+  if (!(lipschitz > 0.0)) {  // S = 0: nothing couples the multipliers to the body
+    out.x = x;
+    out.report.converged = true;
+    return out;
+  }
+  const double s_max = s.cwiseAbs().maxCoeff();
+  const auto residual = [&](const Eigen::VectorXd& at) {
+    Eigen::VectorXd step = at - (s * at - d);
+    project(step, radius);
+    const double scale = std::max({d.lpNorm<Eigen::Infinity>(), s_max * at.lpNorm<Eigen::Infinity>(), 1e-300});
+    return (at - step).lpNorm<Eigen::Infinity>() / scale;
+  };
+  Eigen::VectorXd y = x, previous = x;
+  double momentum = 1.0;
+  for (int k = 1; k <= options.max_iterations; ++k) {
+    previous = x;
+    x = y - (s * y - d) / lipschitz;
+    project(x, radius);
+    // Restart where the step goes against the gradient at y: the momentum overshot.
+    if ((s * y - d).dot(x - previous) > 0.0) {
+      momentum = 1.0;
+      y = x;
+    } else {
+      const double next = 0.5 * (1.0 + std::sqrt(1.0 + 4.0 * momentum * momentum));
+      y = x + ((momentum - 1.0) / next) * (x - previous);
+      momentum = next;
+    }
+    if (k % 25 != 0 && k != options.max_iterations) continue;
+    const double r = residual(x);
+    out.report.iterations = k;
+    out.report.kkt_residual = r;
+    if (k % 100 == 0 || r <= options.tolerance) out.report.log.push_back({k, 0, r});
+    if (r <= options.tolerance) {
+      out.report.converged = true;
+      out.x = std::move(x);
+      return out;
+    }
+  }
+  throw NumericalError(
+      fmt::format("Tresca's multiplier problem: the projected gradient method reached a KKT "
+                  "residual of {:.3e} after {} steps, not {:.1e}",
+                  out.report.kkt_residual, options.max_iterations, options.tolerance));
+}
+
+}  // namespace hpcontact::contact
