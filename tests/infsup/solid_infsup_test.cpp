@@ -75,8 +75,8 @@ TEST(SolidInfSup, GramOfAConstantIsTheArea) {
 TEST(SolidInfSup, GramEqualsItsDefinitionByQuadrature) {
   const Built built({6, 4, 2, 2, 3, 2, 0.7});
   const std::array<int, 2> modes{40, 30};
-  const auto& [lo, hi] = built.surface.bounds();
-  const Eigen::Vector2d length = hi - lo;
+  // (named, not bound: a lambda below uses the lower corner)
+  const Eigen::Vector2d lo = built.surface.bounds()[0], length = built.surface.bounds()[1] - lo;
   // (composite: 4 × 4 pieces of 20 × 20 Gauss points per cell, at most 11 radians of the last
   // cosine over a piece; GSL's rules of many points are accurate to about 1e-10 only)
   const auto& rule = basis::gauss_legendre(20);
