@@ -67,8 +67,12 @@ void print_stability(const driver::StabilityReport& s) {
 void print_contact(const driver::ContactResult& result) {
   fmt::print("{}: energy = {:.17g}", result.problem, result.energy);
   if (result.total_force) fmt::print(", total force P = {:.10g}", *result.total_force);
-  fmt::print(", {} {} steps, KKT residual {:.2e}", result.solver.iterations, result.solver.method,
-             result.solver.kkt_residual);
+  if (result.solver.trace_operator == "products")
+    fmt::print(", {} with {} products by S, KKT residual {:.2e}", result.solver.method, result.solver.products,
+               result.solver.kkt_residual);
+  else
+    fmt::print(", {} {} steps, KKT residual {:.2e}", result.solver.iterations, result.solver.method,
+               result.solver.kkt_residual);
   if (result.contact_area)
     fmt::print(", contact area {:.4f}", *result.contact_area);
   else

@@ -340,6 +340,11 @@ Eigen::MatrixXd CondensedFactor::solve_local(const Eigen::MatrixXd& partial_rhs)
   return out;
 }
 
+Eigen::MatrixXd CondensedFactor::solve_skeleton(const Eigen::MatrixXd& rhs) const {
+  HPC_VERIFY(rhs.rows() == n_skeleton(), "skeleton right-hand side of the wrong size");
+  return skeleton_solver_->solve(rhs);
+}
+
 Eigen::VectorXd CondensedFactor::solve(const Eigen::VectorXd& rhs) const { return solve(Eigen::MatrixXd(rhs)).col(0); }
 
 Eigen::MatrixXd CondensedFactor::schur_complement(const linalg::Coupling& b) const {

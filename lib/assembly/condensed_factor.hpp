@@ -72,6 +72,10 @@ class CondensedFactor {
   /// A⁻¹ rhs, shape (n) or (n, k). Distributed: collective, rhs and result the same on every rank.
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const;
   Eigen::MatrixXd solve(const Eigen::MatrixXd& rhs) const;
+  /// A⁻¹ rhs on the skeleton for a right-hand side without interior entries (a trace coupling's
+  /// Bᵀ x): the skeleton Schur complement's solve alone, shape (n_skeleton, k). Distributed:
+  /// collective, replicated.
+  Eigen::MatrixXd solve_skeleton(const Eigen::MatrixXd& rhs) const;
   /// The dofs of this rank's cells (ascending, so the skeleton dofs first): the rows of
   /// solve_local and quadratic_form_local. Serial: every dof.
   const std::vector<int>& local_dofs() const { return rows_.dofs(); }

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contact/trace_operator.hpp"
 #include "core/error.hpp"
 
 namespace hpcontact::contact {
@@ -27,39 +28,35 @@ void project(Eigen::Ref<Eigen::VectorXd> x, const Eigen::VectorXd& radius) {
   }
 }
 
-}  // namespace
-
-DiscQpSolution solve_disc_qp(const Eigen::MatrixXd& s, const Eigen::VectorXd& d, const Eigen::VectorXd& radius,
-                             const DiscQpOptions& options) {
+/// FISTA with adaptive restart from x = 0; `s_scale` sets the residual's scale, max(‖d‖_∞, s_scale ‖x‖_∞).
+DiscQpSolution accelerated_projected_gradient(const TraceOperator& s, const Eigen::VectorXd& d,
+                                              const Eigen::VectorXd& radius, double lipschitz, double s_scale,
+                                              const DiscQpOptions& options) {
   const Eigen::Index m = radius.size();
-  HPC_VERIFY(s.rows() == 3 * m && s.cols() == 3 * m && d.size() == 3 * m, "solve_disc_qp: sizes");
-  if ((radius.array() < 0.0).any() || !radius.allFinite())
-    throw InputError("Tresca's threshold s must be finite and ≥ 0 at every nodal point of T_{C,H}");
   DiscQpSolution out;
   out.report.method = "projected-gradient";
-  const double lipschitz =
-      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(s, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
   Eigen::VectorXd x = Eigen::VectorXd::Zero(3 * m);
   if (!(lipschitz > 0.0)) {  // S = 0: nothing couples the multipliers to the body
     out.x = x;
     out.report.converged = true;
     return out;
   }
-  const double s_max = s.cwiseAbs().maxCoeff();
+  const long first_products = s.products();
   const auto residual = [&](const Eigen::VectorXd& at) {
-    Eigen::VectorXd step = at - (s * at - d);
+    Eigen::VectorXd step = at - (s(at) - d);
     project(step, radius);
-    const double scale = std::max({d.lpNorm<Eigen::Infinity>(), s_max * at.lpNorm<Eigen::Infinity>(), 1e-300});
+    const double scale = std::max({d.lpNorm<Eigen::Infinity>(), s_scale * at.lpNorm<Eigen::Infinity>(), 1e-300});
     return (at - step).lpNorm<Eigen::Infinity>() / scale;
   };
   Eigen::VectorXd y = x, previous = x;
   double momentum = 1.0;
   for (int k = 1; k <= options.max_iterations; ++k) {
     previous = x;
-    x = y - (s * y - d) / lipschitz;
+    const Eigen::VectorXd gradient = s(y) - d;
+    x = y - gradient / lipschitz;
     project(x, radius);
     // Restart where the step goes against the gradient at y: the momentum overshot.
-    if ((s * y - d).dot(x - previous) > 0.0) {
+    if (gradient.dot(x - previous) > 0.0) {
       momentum = 1.0;
       y = x;
     } else {
@@ -74,6 +71,7 @@ DiscQpSolution solve_disc_qp(const Eigen::MatrixXd& s, const Eigen::VectorXd& d,
     if (k % 100 == 0 || r <= options.tolerance) out.report.log.push_back({k, 0, r});
     if (r <= options.tolerance) {
       out.report.converged = true;
+      out.products = s.products() - first_products;
       out.x = std::move(x);
       return out;
     }
@@ -82,6 +80,33 @@ DiscQpSolution solve_disc_qp(const Eigen::MatrixXd& s, const Eigen::VectorXd& d,
       fmt::format("Tresca's multiplier problem: the projected gradient method reached a KKT "
                   "residual of {:.3e} after {} steps, not {:.1e}",
                   out.report.kkt_residual, options.max_iterations, options.tolerance));
+}
+
+void check_radius(const Eigen::VectorXd& radius) {
+  if ((radius.array() < 0.0).any() || !radius.allFinite())
+    throw InputError("Tresca's threshold s must be finite and ≥ 0 at every nodal point of T_{C,H}");
+}
+
+}  // namespace
+
+DiscQpSolution solve_disc_qp(const Eigen::MatrixXd& s, const Eigen::VectorXd& d, const Eigen::VectorXd& radius,
+                             const DiscQpOptions& options) {
+  const Eigen::Index m = radius.size();
+  HPC_VERIFY(s.rows() == 3 * m && s.cols() == 3 * m && d.size() == 3 * m, "solve_disc_qp: sizes");
+  check_radius(radius);
+  const double lipschitz =
+      m == 0 ? 0.0 : Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(s, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
+  const double s_max = m == 0 ? 0.0 : s.cwiseAbs().maxCoeff();
+  return accelerated_projected_gradient(TraceOperator::dense(s), d, radius, lipschitz, s_max, options);
+}
+
+DiscQpSolution solve_disc_qp_by_products(const TraceOperator& s, const Eigen::VectorXd& d,
+                                         const Eigen::VectorXd& radius, const DiscQpOptions& options) {
+  const Eigen::Index m = radius.size();
+  HPC_VERIFY(s.size() == 3 * m && d.size() == 3 * m, "solve_disc_qp_by_products: sizes");
+  check_radius(radius);
+  const double lipschitz = 1.01 * largest_eigenvalue_bound(s);
+  return accelerated_projected_gradient(s, d, radius, lipschitz, lipschitz, options);
 }
 
 }  // namespace hpcontact::contact

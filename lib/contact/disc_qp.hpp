@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 
 #include "contact/qp_report.hpp"
+#include "contact/trace_operator.hpp"
 
 namespace hpcontact::contact {
 
@@ -23,7 +24,8 @@ struct DiscQpOptions {
 
 struct DiscQpSolution {
   Eigen::VectorXd x;
-  QpReport report;  ///< method "projected-gradient"; the log holds every 100th step and the last
+  QpReport report;    ///< method "projected-gradient"; the log holds every 100th step and the last
+  long products = 0;  ///< products by S
 };
 
 /// @param s  shape (3m, 3m), symmetric positive semi-definite
@@ -33,5 +35,10 @@ struct DiscQpSolution {
 ///         tolerance within max_iterations.
 DiscQpSolution solve_disc_qp(const Eigen::MatrixXd& s, const Eigen::VectorXd& d, const Eigen::VectorXd& radius,
                              const DiscQpOptions& options = {});
+
+/// The same with products by S only (contact/trace_operator.hpp): L from the Lanczos bound, and
+/// L in place of ‖S‖_max in the residual's scale.
+DiscQpSolution solve_disc_qp_by_products(const TraceOperator& s, const Eigen::VectorXd& d,
+                                         const Eigen::VectorXd& radius, const DiscQpOptions& options = {});
 
 }  // namespace hpcontact::contact

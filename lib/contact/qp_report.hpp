@@ -17,7 +17,7 @@ struct QpIteration {
 };
 
 struct QpReport {
-  std::string method;  ///< "active-set", "active-set+proximal" or "interior-point"
+  std::string method;  ///< "active-set", "active-set+proximal", "interior-point", "projected-gradient" or "mprgp"
   bool converged = false;
   double kkt_residual = 0.0;
   int iterations = 0;      ///< active-set steps or interior-point iterations
@@ -26,6 +26,10 @@ struct QpReport {
   /// Why the active-set method gave way to the interior-point method on a bound-constrained
   /// problem (its error message); empty when the first method succeeded.
   std::string fallback_reason;
+  /// How S was applied: "dense" (formed from the factor's trailing block) or "products" (one
+  /// solve with K's factor per product, S never formed; 3-D scenes, contact/trace_operator.hpp).
+  std::string trace_operator = "dense";
+  long products = 0;  ///< products by S on the products path
 };
 
 }  // namespace hpcontact::contact

@@ -11,6 +11,7 @@
 #include "assembly/surface_coupling.hpp"
 #include "basis/quadrature.hpp"
 #include "contact/multiplier_qp.hpp"
+#include "contact/solid_trace_qp.hpp"
 #include "core/error.hpp"
 #include "core/timer.hpp"
 
@@ -19,14 +20,17 @@ namespace hpcontact::contact {
 namespace {
 
 /// The bounds of λ at its nodal points: λ ≤ 0 (9); |λ| ≤ 1 on the cells meeting supp s, λ = 0 on
-/// the others (13); |λ| ≤ s (15).
-MultiplierConstraints nodal_bounds(const SolidContactSetup& setup) {
+/// the others (13); |λ| ≤ s (15). C = I is formed only for the dense path's interior-point fallback
+/// (`identity_rows`): on the products path it would be the dense m × m matrix the path avoids.
+MultiplierConstraints nodal_bounds(const SolidContactSetup& setup, bool identity_rows) {
   const space::SurfaceMultiplierSpace& multipliers = *setup.multipliers;
   const int m = multipliers.n_dofs();
   constexpr double infinity = std::numeric_limits<double>::infinity();
   MultiplierConstraints out;
-  out.to_nodal = Eigen::MatrixXd::Identity(m, m);
-  out.matrix = Eigen::MatrixXd::Identity(m, m);
+  if (identity_rows) {
+    out.to_nodal = Eigen::MatrixXd::Identity(m, m);
+    out.matrix = Eigen::MatrixXd::Identity(m, m);
+  }
   out.lower = Eigen::VectorXd::Constant(m, -infinity);
   out.upper = Eigen::VectorXd::Zero(m);
   if (setup.problem == ContactProblem::signorini) return out;
@@ -70,26 +74,27 @@ SolidContactSolution solve_solid_contact(const SolidContactSetup& setup) {
   const Eigen::VectorXd g = setup.problem == ContactProblem::signorini
                                 ? assembly::surface_multiplier_load(*setup.multipliers, setup.obstacle)
                                 : Eigen::VectorXd::Zero(setup.multipliers->n_dofs());
-  const MultiplierConstraints constraints = nodal_bounds(setup);
-  const std::vector<int> trace = linalg::nonzero_columns(b);
-  out.n_trace = static_cast<int>(trace.size());
+  const bool products = uses_products(setup.trace_solve, b.rows(), b.cols());
+  const MultiplierConstraints constraints = nodal_bounds(setup, !products);
+  out.n_trace = static_cast<int>(linalg::nonzero_columns(b).size());
   out.seconds.assembly = clock.seconds();
 
-  // 2. Factorize K by static condensation, the trace dofs last.
+  // 2. Factorize K by static condensation (the trace dofs last on the dense path).
   clock = Stopwatch();
-  const assembly::CondensedFactor factor(std::make_unique<assembly::SolidScalarCellSystem>(space, 1.0, 0.0), trace);
+  const assembly::CondensedFactor factor(std::make_unique<assembly::SolidScalarCellSystem>(space, 1.0, 0.0),
+                                         trailing_dofs(products, b));
   out.seconds.factorization = clock.seconds();
 
-  // 3. S = B K⁻¹ Bᵀ from the trailing block, d = B K⁻¹ F − G.
+  // 3. S = B K⁻¹ Bᵀ (from the trailing block, or as products), d = B K⁻¹ F − G.
   clock = Stopwatch();
-  const Eigen::MatrixXd s = factor.schur_complement(b);
+  const SolidTraceOperator s = condensed_operator(factor, b, products);
   const Eigen::VectorXd u_free = factor.solve(load);
   const Eigen::VectorXd d = b * u_free - g;
   out.seconds.condensation = clock.seconds();
 
   // 4. The multiplier QP.
   clock = Stopwatch();
-  MultiplierQpSolution qp = solve_multiplier_qp(s, d, constraints, setup.qp, setup.interior_point);
+  MultiplierQpSolution qp = solve_bounded_trace_qp(s, d, constraints, setup.qp, setup.interior_point);
   out.lambda = std::move(qp.x);
   out.qp = std::move(qp.report);
   out.lower = constraints.lower;

@@ -3,7 +3,8 @@
 //     [K  Bᵀ] [u]   [F]
 //     [B  0 ] [λ] ≤ [G]   (complementarity on the multiplier's constraint set)
 // With u = K⁻¹(F − Bᵀλ) the multiplier solves min ½ λᵀ S λ − λᵀ d, S = B K⁻¹ Bᵀ (dense, from the
-// trailing block of the condensed factor), d = B K⁻¹ F − G. Multipliers are nodal at the tensor
+// trailing block of the condensed factor, or applied by products: contact/solid_trace_qp.hpp),
+// d = B K⁻¹ F − G. Multipliers are nodal at the tensor
 // Chebyshev–Lobatto points, so the constraints are bounds on the coefficients.
 #pragma once
 
@@ -14,6 +15,7 @@
 #include "contact/contact_problem.hpp"
 #include "contact/inequality_qp.hpp"
 #include "contact/qp_report.hpp"
+#include "contact/trace_operator.hpp"
 #include "space/solid_space.hpp"
 #include "space/surface_multiplier_space.hpp"
 
@@ -28,13 +30,14 @@ struct SolidContactSetup {
   assembly::SolidFunction bound;     ///< s ≥ 0: (13) and (15)
   BoxQpOptions qp;
   InequalityQpOptions interior_point;
+  SchurPath trace_solve = SchurPath::automatic;  ///< S dense or by products (trace_operator.hpp)
 };
 
 /// Wall time of a 3-D contact solve's phases (seconds).
 struct SolidSolveSeconds {
   double assembly = 0.0;       ///< F, B, G, the bounds
   double factorization = 0.0;  ///< K by static condensation, the trace last
-  double condensation = 0.0;   ///< S = B K⁻¹ Bᵀ and d
+  double condensation = 0.0;   ///< S = B K⁻¹ Bᵀ (dense path) and d
   double qp = 0.0;             ///< the multiplier problem
   double recovery = 0.0;       ///< u, the gap, the energy
 };

@@ -11,6 +11,7 @@
 #include "assembly/surface_coupling.hpp"
 #include "contact/disc_qp.hpp"
 #include "contact/multiplier_qp.hpp"
+#include "contact/solid_trace_qp.hpp"
 #include "core/error.hpp"
 #include "core/timer.hpp"
 
@@ -57,24 +58,26 @@ SolidElasticSolution solve_solid_elastic_contact(const SolidElasticSetup& setup)
       throw InputError(fmt::format("Tresca's threshold s is {} at ({}, {}, {}) on Γ_C; it must be ≥ 0", radius(i), x(0),
                                    x(1), x(2)));
   }
+  const bool products = uses_products(setup.trace_solve, b.rows(), b.cols());
   MultiplierConstraints constraints;
-  constraints.to_nodal = Eigen::MatrixXd::Identity(m, m);
-  constraints.matrix = Eigen::MatrixXd::Identity(m, m);
+  if (!products) {  // C = I for the dense path's interior-point fallback only
+    constraints.to_nodal = Eigen::MatrixXd::Identity(m, m);
+    constraints.matrix = Eigen::MatrixXd::Identity(m, m);
+  }
   constraints.lower = Eigen::VectorXd::Zero(m);
   constraints.upper = Eigen::VectorXd::Constant(m, std::numeric_limits<double>::infinity());
-  const std::vector<int> trace = linalg::nonzero_columns(b);
-  out.n_trace = static_cast<int>(trace.size());
+  out.n_trace = static_cast<int>(linalg::nonzero_columns(b).size());
   out.seconds.assembly = clock.seconds();
 
-  // 2. K by static condensation, the trace last.
+  // 2. K by static condensation (the trace last on the dense path).
   clock = Stopwatch();
   const assembly::CondensedFactor factor(std::make_unique<assembly::SolidElasticCellSystem>(space, setup.materials),
-                                         trace);
+                                         trailing_dofs(products, b));
   out.seconds.factorization = clock.seconds();
 
-  // 3. S and d.
+  // 3. S (dense or as products) and d.
   clock = Stopwatch();
-  const Eigen::MatrixXd s = factor.schur_complement(b);
+  const SolidTraceOperator s = condensed_operator(factor, b, products);
   const Eigen::VectorXd d = b * factor.solve(load) - g;
   out.seconds.condensation = clock.seconds();
 
@@ -82,11 +85,11 @@ SolidElasticSolution solve_solid_elastic_contact(const SolidElasticSetup& setup)
   clock = Stopwatch();
   Eigen::VectorXd lambda;
   if (tresca) {
-    DiscQpSolution qp = solve_disc_qp(s, d, radius);
+    DiscQpSolution qp = solve_disc_trace_qp(s, d, radius);
     lambda = std::move(qp.x);
     out.qp = std::move(qp.report);
   } else {
-    MultiplierQpSolution qp = solve_multiplier_qp(s, d, constraints, setup.qp, setup.interior_point);
+    MultiplierQpSolution qp = solve_bounded_trace_qp(s, d, constraints, setup.qp, setup.interior_point);
     lambda = std::move(qp.x);
     out.qp = std::move(qp.report);
   }

@@ -34,6 +34,7 @@ struct SolidElasticSetup {
   assembly::SolidFunction threshold;                  ///< Tresca's s ≥ 0 (empty: frictionless)
   BoxQpOptions qp;
   InequalityQpOptions interior_point;
+  SchurPath trace_solve = SchurPath::automatic;  ///< S dense or by products (trace_operator.hpp)
 };
 
 struct SolidElasticSolution {

@@ -88,6 +88,7 @@ SolvedSolid solve_scalar(const scene::Scene& scene, const SolidDiscretization& d
   setup.f = solid_scene_function(scene, scene.load, "data.f");
   setup.obstacle = solid_scene_function(scene, scene.obstacle, "data.g");
   setup.bound = solid_scene_function(scene, scene.friction_bound, "data.s");
+  setup.trace_solve = scene.trace_solve;
   auto solution = std::make_shared<const contact::SolidContactSolution>(contact::solve_solid_contact(setup));
   const bool signorini = effect == scene::Effect::signorini;
   const assembly::SolidFunction& data = signorini ? setup.obstacle : setup.bound;
@@ -123,6 +124,7 @@ SolvedSolid solve_elastic(const scene::Scene& scene, const SolidDiscretization& 
   setup.space = d.vector_space.get();
   setup.multipliers = d.multipliers.get();
   setup.materials = d.materials;
+  setup.trace_solve = scene.trace_solve;
   setup.body_force = {solid_scene_function(scene, scene.body_force_x, "data.f_x"),
                       solid_scene_function(scene, scene.body_force_y, "data.f_y"),
                       solid_scene_function(scene, scene.body_force_z, "data.f_z")};

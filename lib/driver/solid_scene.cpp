@@ -56,6 +56,7 @@ const std::set<std::string>& solid_scene_keys() {
                                           "data.f_z",
                                           "material.E",
                                           "material.nu",
+                                          "solve.trace_operator",
                                           "run.effects",
                                           "run.outputs"};
   return keys;

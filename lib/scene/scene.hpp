@@ -19,6 +19,7 @@
 #include "contact/contact_problem.hpp"
 #include "contact/elastic_contact.hpp"
 #include "contact/obstacle_gap.hpp"
+#include "contact/trace_operator.hpp"
 #include "core/error.hpp"
 #include "infsup/infsup_operators.hpp"
 #include "mesh/mesh.hpp"
@@ -129,6 +130,7 @@ struct Scene {
   bool fit_free_boundary = false;
   /// What a solve does when its pairing is predicted unstable (infsup/local_alpha.hpp).
   enum class StabilityPolicy { warn, refuse, ignore } stability = StabilityPolicy::warn;
+  contact::SchurPath trace_solve = contact::SchurPath::automatic;  ///< solve.trace_operator (3-D)
   // [run]: empty effects when the scene has no [run] table (`solve` then needs --effects).
   std::vector<Effect> effects;
   std::vector<Output> outputs = all_outputs();

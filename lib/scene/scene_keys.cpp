@@ -15,147 +15,13 @@
 #include "core/error.hpp"
 #include "core/expression.hpp"
 #include "scene/box_keys.hpp"
+#include "scene/key_builders.hpp"
 #include "scene/obstacle_keys.hpp"
 
 namespace hpcontact::scene {
 namespace {
 
 using io::TomlTable;
-
-SceneKey number_key(const char* section, const char* name, double low, double high, double fallback,
-                    double Scene::*member, const char* doc) {
-  return {section,
-          name,
-          "number",
-          fmt::format("{:g}", fallback),
-          fmt::format("[{:g}, {:g}]", low, high),
-          doc,
-          "",
-          [=](const TomlTable& table, Scene& scene) { scene.*member = table.number_in(name, low, high, fallback); }};
-}
-
-SceneKey any_number_key(const char* section, const char* name, double fallback, double mesh::Rectangle::*member,
-                        const char* doc) {
-  return {section,
-          name,
-          "number",
-          fmt::format("{:g}", fallback),
-          "finite",
-          doc,
-          "",
-          [=](const TomlTable& table, Scene& scene) {
-            const double value = table.number(name, fallback);
-            if (!std::isfinite(value))
-              throw_bad_input(table.origin(name), table.qualified(name), fmt::format("{}", value), "a finite number");
-            scene.rectangle.*member = value;
-          }};
-}
-
-/// An integer; `fallback` empty: no default (the member keeps its value; rules elsewhere say when
-/// the key is required).
-SceneKey integer_key(const char* section, const char* name, long long low, long long high,
-                     std::optional<long long> fallback, int Scene::*member, const char* doc) {
-  return {section,
-          name,
-          "integer",
-          fallback ? std::to_string(*fallback) : "",
-          fmt::format("[{}, {}]", low, high),
-          doc,
-          "",
-          [=](const TomlTable& table, Scene& scene) {
-            if (fallback || table.has(name)) scene.*member = static_cast<int>(table.integer(name, low, high, fallback));
-          }};
-}
-
-/// An expression in x, y (x, y, z in a 3-D scene), parsed now, so that a typo is reported before any work.
-SceneKey expression_key(const char* section, const char* name, const char* fallback, std::string Scene::*member,
-                        const char* doc) {
-  return {section,
-          name,
-          "expression in x, y (x, y, z in 3-D) or a number",
-          fallback[0] ? fmt::format("\"{}\"", fallback) : "",
-          "muparser syntax",
-          doc,
-          "",
-          [=](const TomlTable& table, Scene& scene) {
-            scene.*member = table.expression(name, fallback);
-            if (!(scene.*member).empty())
-              Expression(scene.*member, table.origin(name) + ": key '" + table.qualified(name) + "'",
-                         scene.dimension());
-          }};
-}
-
-SceneKey names_key(const char* section, const char* name, std::vector<std::string> Scene::*member, const char* doc) {
-  return {
-      section, name, "list of strings", "", "Gmsh physical names", doc, "", [=](const TomlTable& table, Scene& scene) {
-        scene.*member = table.string_list(name, std::vector<std::string>{});
-      }};
-}
-
-/// Finite numbers (numbers or their text), each checked by `valid`.
-SceneKey numbers_key(const char* section, const char* name, const char* allowed, std::vector<double> Scene::*member,
-                     const char* doc, std::function<bool(double)> valid = {}, const char* group = "") {
-  return {section, name, "list of numbers", "", allowed, doc, group, [=](const TomlTable& table, Scene& scene) {
-            std::vector<double> values;
-            for (const auto& text : table.string_list(name, std::vector<std::string>{})) {
-              char* end = nullptr;
-              const double value = std::strtod(text.c_str(), &end);
-              if (text.empty() || *end != '\0' || !std::isfinite(value) || (valid && !valid(value)))
-                throw_bad_input(table.origin(name), table.qualified(name), text, allowed);
-              values.push_back(value);
-            }
-            scene.*member = values;
-          }};
-}
-
-template <typename Enum>
-std::vector<std::string> choice_names(const std::vector<std::pair<std::string, Enum>>& choices) {
-  std::vector<std::string> names;
-  for (const auto& [text, value] : choices) names.push_back(text);
-  return names;
-}
-
-template <typename Enum>
-SceneKey choice_key(const char* section, const char* name, std::vector<std::pair<std::string, Enum>> choices,
-                    Enum fallback, Enum Scene::*member, const char* doc) {
-  std::string fallback_text;
-  for (const auto& [text, value] : choices)
-    if (value == fallback && fallback_text.empty()) fallback_text = text;
-  return {section,
-          name,
-          "string",
-          fmt::format("\"{}\"", fallback_text),
-          fmt::format("{}", fmt::join(choice_names(choices), ", ")),
-          doc,
-          "",
-          [=, names = choice_names(choices)](const TomlTable& table, Scene& scene) {
-            const std::string chosen = table.choice(name, names, fallback_text);
-            for (const auto& [text, value] : choices)
-              if (text == chosen) scene.*member = value;
-          }};
-}
-
-/// A list of names from a fixed set (effects, outputs), each at most once.
-template <typename Enum>
-SceneKey enum_list_key(const char* section, const char* name, const std::vector<Enum>& all,
-                       std::vector<Enum> Scene::*member, const char* default_text, const char* doc) {
-  std::vector<std::string> names;
-  for (Enum value : all) names.push_back(to_string(value));
-  const std::string allowed = fmt::format("any of {}", fmt::join(names, ", "));
-  return {section, name, "list of strings", default_text, allowed, doc, "", [=](const TomlTable& table, Scene& scene) {
-            if (!table.has(name)) return;
-            std::vector<Enum> values;
-            for (const auto& text : table.string_list(name)) {
-              const auto found = std::find(names.begin(), names.end(), text);
-              if (found == names.end()) throw_bad_input(table.origin(name), table.qualified(name), text, allowed);
-              const Enum value = all[static_cast<std::size_t>(found - names.begin())];
-              if (std::find(values.begin(), values.end(), value) != values.end())
-                throw_bad_input(table.origin(name), table.qualified(name), text, "each at most once");
-              values.push_back(value);
-            }
-            scene.*member = values;
-          }};
-}
 
 /// An integer in [low, high], or a rule (an expression in x, y; a string).
 SceneKey degree_key(const char* name, int low, int high, Degree Scene::*member, const char* doc) {
@@ -407,6 +273,22 @@ void add_run_keys(std::vector<SceneKey>& keys) {
       Scene::StabilityPolicy::warn, &Scene::stability,
       "a pairing predicted unstable (local α below 0.2): warn and name a stable alternative, refuse to solve (exit "
       "2), or say nothing (the prediction is in the summary either way)"));
+  SceneKey trace = choice_key<contact::SchurPath>(
+      "solve", "trace_operator",
+      {{"auto", contact::SchurPath::automatic},
+       {"dense", contact::SchurPath::dense},
+       {"products", contact::SchurPath::products}},
+      contact::SchurPath::automatic, &Scene::trace_solve,
+      "3-D scenes: S = B K⁻¹ Bᵀ formed densely from the factor's trailing block, or applied by products (one solve "
+      "with K's factor each; MPRGP, FISTA), never formed; auto: products above a quarter of (primal unknowns)^(2/3) "
+      "multipliers, where they cost less");
+  trace.read = [read = trace.read](const TomlTable& table, Scene& scene) {
+    if (table.has("trace_operator") && scene.dimension() == 2)
+      throw_bad_input(table.origin("trace_operator"), table.qualified("trace_operator"),
+                      table.string("trace_operator", ""), "only in a 3-D scene (domain.n_z or domain.z_nodes)");
+    read(table, scene);
+  };
+  add(trace);
   // [run]
   add(enum_list_key<Effect>("run", "effects", all_effects(), &Scene::effects, "",
                             "what the run computes; absent: `solve` needs --effects"));

@@ -25,6 +25,7 @@
 #include "operators/primal_operators.hpp"
 #include "scene/ratio.hpp"
 #include "scene/scene_reader.hpp"
+#include "studies/solid_benchmark.hpp"
 #include "studies/startup_benchmark.hpp"
 #include "studies/two_body_benchmark.hpp"
 
@@ -45,15 +46,15 @@ PerformanceBenchmark read_performance_benchmark(const std::string& path) {
       throw_bad_input(path, "benchmark.n", std::to_string(n), "even, with n · ratio a whole number >= 1");
     out.levels.push_back(static_cast<int>(n));
   }
-  const std::vector<std::string> allowed{"signorini",       "friction",  "friction_s", "alpha",    "alpha_predicted",
-                                         "alpha_extension", "assembled", "elastic",    "two_body", "startup"};
+  const std::vector<std::string> allowed{"signorini",       "friction",        "friction_s", "alpha",
+                                         "alpha_predicted", "alpha_extension", "assembled",  "elastic",
+                                         "two_body",        "three_d",         "startup"};
   out.kinds = table.string_list("kinds", allowed);
   for (const auto& kind : out.kinds)
     if (std::find(allowed.begin(), allowed.end(), kind) == allowed.end())
       throw_bad_input(path, "benchmark.kinds", kind,
                       "any of signorini, friction, friction_s, alpha, alpha_predicted, alpha_extension, assembled, "
-                      "elastic, two_body, "
-                      "startup");
+                      "elastic, two_body, three_d, startup");
   table.reject_unknown_keys();
   root.reject_unknown_keys();
   return out;
@@ -252,7 +253,7 @@ std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& 
 
     for (const auto& kind : benchmark.kinds)
       if (kind != "alpha" && kind != "alpha_predicted" && kind != "alpha_extension" && kind != "assembled" &&
-          kind != "elastic" && kind != "two_body" && kind != "startup")
+          kind != "elastic" && kind != "two_body" && kind != "three_d" && kind != "startup")
         add(contact_row(kind, scene, *discretization, base, linear_k));
     BenchmarkRow linear_ag = base;
     linear_ag.kind = "linear_AG";
@@ -273,6 +274,7 @@ std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& 
       for (const bool mass : {false, true}) add(assembled_row(mass, space, load, base, mass ? linear_ag : linear_k));
     if (has("elastic")) add_elastic_rows(benchmark, scene, base, add);
     if (has("two_body")) add_two_body_rows(benchmark, base, add);
+    if (has("three_d")) add_solid_rows(benchmark, base, add);
   }
   return rows;
 }

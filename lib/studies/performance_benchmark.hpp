@@ -18,7 +18,8 @@ namespace hpcontact::studies {
 ///               CHOLMOD on the assembled K and A_G, as ratios to the condensed solves, and
 ///               "elastic": an elastic body on the same mesh, its frictionless and Coulomb contact
 ///               solves against one linear solve with the elasticity matrix A, "two_body": two
-///               elastic blocks on non-matching meshes (two_body_benchmark.hpp), "startup": a tiny
+///               elastic blocks on non-matching meshes (two_body_benchmark.hpp), "three_d": an
+///               elastic cube on n³ hexahedra on both paths of S (solid_benchmark.hpp), "startup": a tiny
 ///               whole-process solve against `--version`, once, before the levels)
 struct PerformanceBenchmark {
   std::string file;
@@ -35,7 +36,8 @@ PerformanceBenchmark read_performance_benchmark(const std::string& path);
 struct BenchmarkRow {
   std::string kind;  ///< "linear_K", "linear_AG", a contact problem, "alpha", "linear_K_assembled",
                      ///< "linear_AG_assembled", "linear_A", "elastic_frictionless", "elastic_coulomb",
-                     ///< "linear_A_two_body", "two_body_frictionless", "startup"
+                     ///< "linear_A_two_body", "two_body_frictionless", "linear_A_3d",
+                     ///< "three_d_frictionless_dense", "three_d_frictionless_products", "startup"
   int p = 0, pc = 0, n = 0, m = 0, ndofs = 0, nmult = 0, n_trace = 0;
   double seconds_assembly = 0.0;  ///< not part of either side of the ratio
   double seconds_baseline = 0.0;  ///< one linear solve of the same matrix

@@ -19,7 +19,9 @@ void bind_contact_result(py::module_& m) {
       .def_readonly("converged", &contact::QpReport::converged)
       .def_readonly("kkt_residual", &contact::QpReport::kkt_residual)
       .def_readonly("iterations", &contact::QpReport::iterations)
-      .def_readonly("proximal_steps", &contact::QpReport::proximal_steps);
+      .def_readonly("proximal_steps", &contact::QpReport::proximal_steps)
+      .def_readonly("trace_operator", &contact::QpReport::trace_operator)
+      .def_readonly("products", &contact::QpReport::products);
   py::class_<ZoneResult>(m, "ZoneResult", "One zone of Γ_C in a contact result")
       .def_readonly("length", &ZoneResult::length)
       .def_readonly("closed", &ZoneResult::closed)
