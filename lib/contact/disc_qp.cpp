@@ -29,9 +29,10 @@ void project(Eigen::Ref<Eigen::VectorXd> x, const Eigen::VectorXd& radius) {
 }
 
 /// FISTA with adaptive restart from x = 0; `s_scale` sets the residual's scale, max(‖d‖_∞, s_scale ‖x‖_∞).
+/// `estimated`: L is an estimate, raised to 1.01 × any Rayleigh quotient of S that exceeds it.
 DiscQpSolution accelerated_projected_gradient(const TraceOperator& s, const Eigen::VectorXd& d,
                                               const Eigen::VectorXd& radius, double lipschitz, double s_scale,
-                                              const DiscQpOptions& options) {
+                                              bool estimated, const DiscQpOptions& options) {
   const Eigen::Index m = radius.size();
   DiscQpSolution out;
   out.report.method = "projected-gradient";
@@ -41,7 +42,6 @@ DiscQpSolution accelerated_projected_gradient(const TraceOperator& s, const Eige
     out.report.converged = true;
     return out;
   }
-  const long first_products = s.products();
   const auto residual = [&](const Eigen::VectorXd& at) {
     Eigen::VectorXd step = at - (s(at) - d);
     project(step, radius);
@@ -52,7 +52,9 @@ DiscQpSolution accelerated_projected_gradient(const TraceOperator& s, const Eige
   double momentum = 1.0;
   for (int k = 1; k <= options.max_iterations; ++k) {
     previous = x;
-    const Eigen::VectorXd gradient = s(y) - d;
+    const Eigen::VectorXd sy = s(y);
+    if (estimated && y.squaredNorm() > 0.0) lipschitz = std::max(lipschitz, 1.01 * y.dot(sy) / y.squaredNorm());
+    const Eigen::VectorXd gradient = sy - d;
     x = y - gradient / lipschitz;
     project(x, radius);
     // Restart where the step goes against the gradient at y: the momentum overshot.
@@ -66,12 +68,13 @@ DiscQpSolution accelerated_projected_gradient(const TraceOperator& s, const Eige
     }
     if (k % 25 != 0 && k != options.max_iterations) continue;
     const double r = residual(x);
+    if (!std::isfinite(r))
+      throw NumericalError(fmt::format("Tresca's multiplier problem: the KKT residual is {} after {} steps", r, k));
     out.report.iterations = k;
     out.report.kkt_residual = r;
     if (k % 100 == 0 || r <= options.tolerance) out.report.log.push_back({k, 0, r});
     if (r <= options.tolerance) {
       out.report.converged = true;
-      out.products = s.products() - first_products;
       out.x = std::move(x);
       return out;
     }
@@ -97,7 +100,7 @@ DiscQpSolution solve_disc_qp(const Eigen::MatrixXd& s, const Eigen::VectorXd& d,
   const double lipschitz =
       m == 0 ? 0.0 : Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(s, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
   const double s_max = m == 0 ? 0.0 : s.cwiseAbs().maxCoeff();
-  return accelerated_projected_gradient(TraceOperator::dense(s), d, radius, lipschitz, s_max, options);
+  return accelerated_projected_gradient(TraceOperator::dense(s), d, radius, lipschitz, s_max, false, options);
 }
 
 DiscQpSolution solve_disc_qp_by_products(const TraceOperator& s, const Eigen::VectorXd& d,
@@ -106,7 +109,8 @@ DiscQpSolution solve_disc_qp_by_products(const TraceOperator& s, const Eigen::Ve
   HPC_VERIFY(s.size() == 3 * m && d.size() == 3 * m, "solve_disc_qp_by_products: sizes");
   check_radius(radius);
   const double lipschitz = 1.01 * largest_eigenvalue_bound(s);
-  return accelerated_projected_gradient(s, d, radius, lipschitz, lipschitz, options);
+  if (!std::isfinite(lipschitz)) throw NumericalError("Tresca's multiplier problem: S x is not finite");
+  return accelerated_projected_gradient(s, d, radius, lipschitz, lipschitz, true, options);
 }
 
 }  // namespace hpcontact::contact

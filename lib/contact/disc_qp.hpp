@@ -24,8 +24,7 @@ struct DiscQpOptions {
 
 struct DiscQpSolution {
   Eigen::VectorXd x;
-  QpReport report;    ///< method "projected-gradient"; the log holds every 100th step and the last
-  long products = 0;  ///< products by S
+  QpReport report;  ///< method "projected-gradient"; the log holds every 100th step and the last
 };
 
 /// @param s  shape (3m, 3m), symmetric positive semi-definite
@@ -36,8 +35,9 @@ struct DiscQpSolution {
 DiscQpSolution solve_disc_qp(const Eigen::MatrixXd& s, const Eigen::VectorXd& d, const Eigen::VectorXd& radius,
                              const DiscQpOptions& options = {});
 
-/// The same with products by S only (contact/trace_operator.hpp): L from the Lanczos bound, and
-/// L in place of ‖S‖_max in the residual's scale.
+/// The same with products by S only (contact/trace_operator.hpp): L from the Lanczos estimate,
+/// raised whenever a step's Rayleigh quotient exceeds it, and L in place of max |S_ij| in the
+/// residual's scale (L ≥ max S_ii, so the stop is up to L / max S_ii looser in the dense measure).
 DiscQpSolution solve_disc_qp_by_products(const TraceOperator& s, const Eigen::VectorXd& d,
                                          const Eigen::VectorXd& radius, const DiscQpOptions& options = {});
 

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "core/error.hpp"
 
@@ -58,10 +59,10 @@ struct Box {
     return std::max(t, 0.0);
   }
   Eigen::VectorXd project(const Eigen::VectorXd& x) const { return x.cwiseMax(lo).cwiseMin(hi); }
-  int active_count(const Eigen::VectorXd& x) const {
-    int n = 0;
-    for (Eigen::Index i = 0; i < x.size(); ++i) n += !is_free(x, i);
-    return n;
+  std::vector<char> free_mask(const Eigen::VectorXd& x) const {
+    std::vector<char> out(static_cast<std::size_t>(x.size()));
+    for (Eigen::Index i = 0; i < x.size(); ++i) out[static_cast<std::size_t>(i)] = is_free(x, i) ? 1 : 0;
+    return out;
   }
 };
 
@@ -75,10 +76,19 @@ struct Iterate {
 
 /// A conjugate gradient step along p where it stays in the box; else an expansion step: to the
 /// box's boundary along p, then a projected step of length ᾱ along the free gradient.
+/// Curvature vᵀSv at or below round-off of the products (relative to L ‖v‖², L = 1/step) counts
+/// as none: a null direction of S carries noise, and a CG step of 1e16 along it is no step.
+bool has_curvature(double curvature, const Eigen::VectorXd& v, double step) {
+  return curvature > 1e-14 * v.squaredNorm() / step;
+}
+
 void free_step(const TraceOperator& s, const Eigen::VectorXd& d, const Box& box, double step, Iterate& it) {
+  // (round-off can turn p against the gradient after many steps: restart from the free gradient)
+  if (!(it.g.dot(it.p) > 0.0)) it.p = box.free_gradient(it.x, it.g);
   const Eigen::VectorXd sp = s(it.p);
   const double curvature = it.p.dot(sp);
-  const double cg_step = curvature > 0.0 ? it.g.dot(it.p) / curvature : infinity;
+  const bool curved = has_curvature(curvature, it.p, step);
+  const double cg_step = curved ? it.g.dot(it.p) / curvature : infinity;
   const double feasible = box.feasible_step(it.x, it.p);
   if (cg_step <= feasible) {
     it.x = box.project(it.x - cg_step * it.p);
@@ -96,10 +106,11 @@ void free_step(const TraceOperator& s, const Eigen::VectorXd& d, const Box& box,
 }
 
 /// A proportioning step off the active bounds along −β (exact line search, kept in the box).
-void proportioning_step(const TraceOperator& s, const Box& box, const Eigen::VectorXd& chopped, Iterate& it) {
+void proportioning_step(const TraceOperator& s, const Box& box, double step, const Eigen::VectorXd& chopped,
+                        Iterate& it) {
   const Eigen::VectorXd sb = s(chopped);
   const double curvature = chopped.dot(sb);
-  const double exact = curvature > 0.0 ? it.g.dot(chopped) / curvature : infinity;
+  const double exact = has_curvature(curvature, chopped, step) ? it.g.dot(chopped) / curvature : infinity;
   const double t = std::min(exact, box.feasible_step(it.x, chopped));
   if (!std::isfinite(t)) throw NumericalError(kUnbounded);
   it.x = box.project(it.x - t * chopped);
@@ -122,10 +133,14 @@ BoxQpResult solve_box_qp_by_products(const TraceOperator& s, const Eigen::Vector
   it.x = box.project(Eigen::VectorXd::Zero(n));
   const long first_products = s.products();
   const double lipschitz = 1.01 * largest_eigenvalue_bound(s);
-  if (!(lipschitz > 0.0)) {  // S = 0: nothing couples the multipliers to the body
+  if (!std::isfinite(lipschitz)) throw NumericalError("contact QP (MPRGP): S x is not finite");
+  if (!(lipschitz > 0.0)) {  // S = 0: min −dᵀx, each x_i at the bound d_i points to
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (d(i) != 0.0) it.x(i) = d(i) > 0.0 ? hi(i) : lo(i);
+    if (!it.x.allFinite()) throw NumericalError(kUnbounded);
     result.x = it.x;
-    result.report.converged = (d.array() == 0.0).all();
-    if (!result.report.converged) throw NumericalError("contact QP: S = 0 and d ≠ 0, the objective is unbounded");
+    result.report.converged = true;
+    result.report.products = s.products() - first_products;
     return result;
   }
   const double step = 1.0 / lipschitz;  // ᾱ ∈ (0, 2/‖S‖]
@@ -138,16 +153,20 @@ BoxQpResult solve_box_qp_by_products(const TraceOperator& s, const Eigen::Vector
   it.g = s(it.x) - d;
   it.p = box.free_gradient(it.x, it.g);
   const double gamma2 = options.proportioning * options.proportioning;
-  int active = box.active_count(it.x);
-  for (long k = 1;; ++k) {
+  std::vector<char> was_free = box.free_mask(it.x);
+  int flips = 0;  // bounds taken or released since the last log entry
+  long k = 1;
+  for (;; ++k) {
     double r = residual(it.x, it.g);
+    if (!std::isfinite(r))
+      throw NumericalError(fmt::format("contact QP (MPRGP): the KKT residual is {} at step {}", r, k));
     if (r <= options.tolerance) {
       it.g = s(it.x) - d;  // the recurrence's gradient drifts: confirm on the true one
       r = residual(it.x, it.g);
       if (r <= options.tolerance) {
         result.report.converged = true;
         result.report.kkt_residual = r;
-        result.report.log.push_back({static_cast<int>(k), 0, r});
+        result.report.log.push_back({static_cast<int>(k), flips, r});
         break;
       }
       it.p = box.free_gradient(it.x, it.g);
@@ -158,16 +177,21 @@ BoxQpResult solve_box_qp_by_products(const TraceOperator& s, const Eigen::Vector
     if (chopped.squaredNorm() <= gamma2 * box.reduced_dot_free(it.x, it.g, step))
       free_step(s, d, box, step, it);
     else
-      proportioning_step(s, box, chopped, it);
-    const int now_active = box.active_count(it.x);
-    if (k % 50 == 0) result.report.log.push_back({static_cast<int>(k), std::abs(now_active - active), r});
-    active = now_active;
+      proportioning_step(s, box, step, chopped, it);
+    const std::vector<char> now_free = box.free_mask(it.x);
+    for (std::size_t i = 0; i < now_free.size(); ++i) flips += now_free[i] != was_free[i];
+    was_free = now_free;
+    if (k % 50 == 0) {
+      result.report.log.push_back({static_cast<int>(k), flips, r});
+      flips = 0;
+    }
   }
-  result.report.iterations = static_cast<int>(s.products() - first_products);
+  result.report.iterations = static_cast<int>(k);
+  result.report.products = s.products() - first_products;
   if (!result.report.converged)
     throw NumericalError(
         fmt::format("contact QP (MPRGP, products by S): the KKT residual is {:.3e} after {} products, not {:.1e}",
-                    result.report.kkt_residual, result.report.iterations, options.tolerance));
+                    result.report.kkt_residual, result.report.products, options.tolerance));
   result.x = std::move(it.x);
   return result;
 }

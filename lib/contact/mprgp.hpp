@@ -17,7 +17,8 @@ namespace hpcontact::contact {
 
 struct MprgpOptions {
   /// On the relative KKT residual ‖x − P(x − c (S x − d))‖_∞ / (‖x‖_∞ + c ‖d‖_∞), c = 1/L: the
-  /// dense active-set method's residual with L in place of ‖S‖_∞ (BoxQpResult).
+  /// form of the dense active-set method's residual (BoxQpResult), with L in place of ‖S‖_∞ and
+  /// on the unscaled problem (the dense method scales by diag(S)^{-1/2}, which products do not give).
   double tolerance = 1e-12;
   long max_products = 200000;
   /// Γ: a proportioning step when ‖β‖² > Γ² φ̃ᵀφ (chopped against reduced free gradient).
@@ -26,8 +27,9 @@ struct MprgpOptions {
 
 /// @param s  S as products, symmetric positive semi-definite, size n
 /// @param d, lo, hi  shape (n), lo ≤ hi
-/// @return x and the report: method "mprgp", iterations the products by S, the log every 50th
-///         step and the last (active_set_changes: bounds taken or released in the step)
+/// @return x and the report: method "mprgp", iterations its steps, products those by S (the
+///         Lanczos estimate's included), the log every 50th step and the last
+///         (active_set_changes: bounds taken or released since the entry before)
 /// @throws NumericalError with the residual reached if it does not converge within max_products,
 ///         or if the objective is unbounded below on the box (a direction of zero curvature that
 ///         no bound stops).

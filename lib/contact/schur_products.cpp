@@ -14,7 +14,8 @@ TraceOperator schur_products(const assembly::CondensedFactor& factor, const lina
   for (int row = 0; row < b.outerSize(); ++row)
     for (linalg::Coupling::InnerIterator it(b, row); it; ++it)
       HPC_VERIFY(it.col() < n_skeleton || it.value() == 0.0, "B K⁻¹ Bᵀ by products: B has interior columns");
-  auto skeleton_b = std::make_shared<const linalg::Coupling>(b.leftCols(n_skeleton));
+  auto skeleton_b =
+      std::make_shared<const linalg::Coupling>(linalg::squeezed<linalg::Coupling>(b.leftCols(n_skeleton)));
   return {b.rows(), [&factor, skeleton_b](const Eigen::VectorXd& x) {
             const Eigen::MatrixXd rhs = skeleton_b->transpose() * x;
             return Eigen::VectorXd(*skeleton_b * factor.solve_skeleton(rhs).col(0));

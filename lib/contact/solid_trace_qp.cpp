@@ -26,13 +26,11 @@ MultiplierQpSolution solve_bounded_trace_qp(const SolidTraceOperator& s, const E
   if (!s.products) return solve_multiplier_qp(s.dense, d, constraints, box, interior_point);
   MprgpOptions options;
   options.tolerance = box.tolerance;
-  const long before = s.products->products();
   BoxQpResult qp = solve_box_qp_by_products(*s.products, d, constraints.lower, constraints.upper, options);
   MultiplierQpSolution out;
   out.x = std::move(qp.x);
   out.report = std::move(qp.report);
   out.report.trace_operator = "products";
-  out.report.products = s.products->products() - before;
   return out;
 }
 

@@ -5,10 +5,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/error.hpp"
+
 namespace hpcontact::contact {
 
 double largest_eigenvalue_bound(const TraceOperator& s, int steps) {
   const Eigen::Index n = s.size();
+  HPC_VERIFY(steps >= 1, "largest_eigenvalue_bound: at least one Lanczos step");
   if (n == 0) return 0.0;
   steps = static_cast<int>(std::min<Eigen::Index>(steps, n));
   // A fixed start with every component present (λ_max's eigenvector is not missed by symmetry):

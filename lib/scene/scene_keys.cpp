@@ -273,22 +273,15 @@ void add_run_keys(std::vector<SceneKey>& keys) {
       Scene::StabilityPolicy::warn, &Scene::stability,
       "a pairing predicted unstable (local α below 0.2): warn and name a stable alternative, refuse to solve (exit "
       "2), or say nothing (the prediction is in the summary either way)"));
-  SceneKey trace = choice_key<contact::SchurPath>(
+  add(choice_key<contact::SchurPath>(
       "solve", "trace_operator",
       {{"auto", contact::SchurPath::automatic},
        {"dense", contact::SchurPath::dense},
        {"products", contact::SchurPath::products}},
       contact::SchurPath::automatic, &Scene::trace_solve,
       "3-D scenes: S = B K⁻¹ Bᵀ formed densely from the factor's trailing block, or applied by products (one solve "
-      "with K's factor each; MPRGP, FISTA), never formed; auto: products above a quarter of (primal unknowns)^(2/3) "
-      "multipliers, where they cost less");
-  trace.read = [read = trace.read](const TomlTable& table, Scene& scene) {
-    if (table.has("trace_operator") && scene.dimension() == 2)
-      throw_bad_input(table.origin("trace_operator"), table.qualified("trace_operator"),
-                      table.string("trace_operator", ""), "only in a 3-D scene (domain.n_z or domain.z_nodes)");
-    read(table, scene);
-  };
-  add(trace);
+      "with K's factor each; MPRGP, FISTA), never formed; auto: products from 1e4 primal unknowns when the "
+      "multipliers exceed a quarter of (primal unknowns)^(2/3), where they cost less"));
   // [run]
   add(enum_list_key<Effect>("run", "effects", all_effects(), &Scene::effects, "",
                             "what the run computes; absent: `solve` needs --effects"));

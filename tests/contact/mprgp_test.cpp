@@ -60,7 +60,7 @@ TEST(Mprgp, EqualsTheActiveSetMethodWhereSIsDefinite) {
       const BoxQpResult products = solve_box_qp_by_products(op, d, b.lo, b.hi);
       ASSERT_TRUE(products.report.converged) << b.name << " n " << n;
       EXPECT_EQ(products.report.method, "mprgp");
-      EXPECT_EQ(products.report.iterations, op.products());
+      EXPECT_EQ(products.report.products, op.products());
       EXPECT_LT((products.x - dense.x).lpNorm<Eigen::Infinity>(), 1e-8 * (1.0 + dense.x.lpNorm<Eigen::Infinity>()))
           << b.name << " n " << n;
       EXPECT_TRUE(((products.x - b.lo).array() >= 0.0).all() && ((b.hi - products.x).array() >= 0.0).all()) << b.name;
@@ -86,6 +86,7 @@ TEST(Mprgp, ReachesTheMinimumWhereSIsSingular) {
     const BoxQpResult products = solve_box_qp_by_products(TraceOperator::dense(s), d, b.lo, b.hi);
     const double dense_min = objective(s, d, dense.x);
     EXPECT_NEAR(objective(s, d, products.x), dense_min, 1e-9 * (1.0 + std::abs(dense_min))) << b.name;
+    EXPECT_TRUE(((products.x - b.lo).array() >= 0.0).all() && ((b.hi - products.x).array() >= 0.0).all()) << b.name;
   }
 }
 
@@ -97,18 +98,35 @@ TEST(Mprgp, RefusesAnObjectiveUnboundedOnTheBox) {
   const Eigen::VectorXd d = Eigen::Vector2d(0.0, -1.0);
   const Eigen::VectorXd lo = Eigen::Vector2d(0.0, -kInfinity), hi = Eigen::Vector2d::Constant(kInfinity);
   EXPECT_THROW(solve_box_qp_by_products(TraceOperator::dense(s), d, lo, hi), NumericalError);
+  // The same with the null direction's curvature at round-off, as products give it: still refused,
+  // not a step of 1e16 reported as converged.
+  s(1, 1) = 1e-18;
+  EXPECT_THROW(solve_box_qp_by_products(TraceOperator::dense(s), d, lo, hi), NumericalError);
+}
+
+TEST(Mprgp, PutsEachUnknownAtTheBoundItsLoadPointsToWhereSVanishes) {
+  const Eigen::MatrixXd s = Eigen::MatrixXd::Zero(3, 3);
+  const Eigen::VectorXd d = Eigen::Vector3d(1.0, -2.0, 0.0);
+  const Eigen::VectorXd lo = Eigen::Vector3d::Constant(-0.5), hi = Eigen::Vector3d::Constant(0.25);
+  const BoxQpResult result = solve_box_qp_by_products(TraceOperator::dense(s), d, lo, hi);
+  EXPECT_EQ(result.x, Eigen::VectorXd(Eigen::Vector3d(0.25, -0.5, 0.0)));
+  const Eigen::VectorXd open = Eigen::Vector3d::Constant(kInfinity);
+  EXPECT_THROW(solve_box_qp_by_products(TraceOperator::dense(s), d, lo, open), NumericalError);
 }
 
 TEST(Mprgp, LanczosBoundsTheLargestEigenvalueFromAbove) {
   std::mt19937 random(3);
-  for (int n : {3, 30, 300}) {
-    const Eigen::MatrixXd s = random_s(n, n, 0.0, random);
+  // (n = 300 of rank 10: the Lanczos basis breaks down after 10 steps; n = 300 of full rank: 30
+  // steps of 300, the estimate not exact)
+  for (const auto [n, rank] : {std::pair{3, 3}, std::pair{300, 10}, std::pair{300, 300}}) {
+    const Eigen::MatrixXd s = random_s(n, rank, 0.0, random);
     const double largest = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(s).eigenvalues().maxCoeff();
     const double bound = largest_eigenvalue_bound(TraceOperator::dense(s));
     EXPECT_GE(bound, largest * (1 - 1e-12)) << n;
     EXPECT_LE(bound, largest * 1.05) << n;
   }
-  EXPECT_EQ(largest_eigenvalue_bound(TraceOperator::dense(Eigen::MatrixXd::Zero(4, 4))), 0.0);
+  const Eigen::MatrixXd zero = Eigen::MatrixXd::Zero(4, 4);
+  EXPECT_EQ(largest_eigenvalue_bound(TraceOperator::dense(zero)), 0.0);
 }
 
 }  // namespace
