@@ -16,6 +16,33 @@
 #include "core/timer.hpp"
 
 namespace hpcontact::contact {
+namespace {
+
+/// Tresca's threshold s at the nodal points of T_{C,H}, each checked ≥ 0.
+Eigen::VectorXd tresca_radius(const SolidElasticSetup& setup) {
+  const auto& surface = setup.multipliers->mesh().surface();
+  Eigen::VectorXd radius(setup.multipliers->n_dofs());
+  for (Eigen::Index i = 0; i < radius.size(); ++i) {
+    const mesh::SolidPoint x = surface.from_plane(setup.multipliers->nodal_point(static_cast<int>(i)));
+    radius(i) = setup.threshold(x);
+    if (!(radius(i) >= 0.0))
+      throw InputError(fmt::format("Tresca's threshold s is {} at ({}, {}, {}) on Γ_C; it must be ≥ 0", radius(i), x(0),
+                                   x(1), x(2)));
+  }
+  return radius;
+}
+
+/// P ≥ 0 at the m nodal points; C = I formed only for the dense path's interior-point fallback
+/// (`identity_rows`).
+MultiplierConstraints pressure_bounds(int m, bool identity_rows) {
+  MultiplierConstraints out;
+  if (identity_rows) out.to_nodal = out.matrix = Eigen::MatrixXd::Identity(m, m);
+  out.lower = Eigen::VectorXd::Zero(m);
+  out.upper = Eigen::VectorXd::Constant(m, std::numeric_limits<double>::infinity());
+  return out;
+}
+
+}  // namespace
 
 SolidElasticSolution solve_solid_elastic_contact(const SolidElasticSetup& setup) {
   if (setup.space == nullptr || setup.multipliers == nullptr || !setup.gap)
@@ -50,22 +77,9 @@ SolidElasticSolution solve_solid_elastic_contact(const SolidElasticSetup& setup)
   b.setFromTriplets(entries.begin(), entries.end());
   Eigen::VectorXd g = Eigen::VectorXd::Zero(blocks * m);
   g.head(m) = assembly::surface_multiplier_load(*setup.multipliers, setup.gap);
-  Eigen::VectorXd radius(tresca ? m : 0);
-  for (Eigen::Index i = 0; i < radius.size(); ++i) {
-    const mesh::SolidPoint x = surface.from_plane(setup.multipliers->nodal_point(static_cast<int>(i)));
-    radius(i) = setup.threshold(x);
-    if (!(radius(i) >= 0.0))
-      throw InputError(fmt::format("Tresca's threshold s is {} at ({}, {}, {}) on Γ_C; it must be ≥ 0", radius(i), x(0),
-                                   x(1), x(2)));
-  }
+  const Eigen::VectorXd radius = tresca ? tresca_radius(setup) : Eigen::VectorXd();
   const bool products = uses_products(setup.trace_solve, b.rows(), b.cols());
-  MultiplierConstraints constraints;
-  if (!products) {  // C = I for the dense path's interior-point fallback only
-    constraints.to_nodal = Eigen::MatrixXd::Identity(m, m);
-    constraints.matrix = Eigen::MatrixXd::Identity(m, m);
-  }
-  constraints.lower = Eigen::VectorXd::Zero(m);
-  constraints.upper = Eigen::VectorXd::Constant(m, std::numeric_limits<double>::infinity());
+  const MultiplierConstraints constraints = pressure_bounds(m, !products);
   out.n_trace = static_cast<int>(linalg::nonzero_columns(b).size());
   out.seconds.assembly = clock.seconds();
 
