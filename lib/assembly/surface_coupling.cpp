@@ -46,6 +46,30 @@ std::array<Eigen::Vector2d, 4> face_corners(const mesh::FlatContactSurface& surf
   return corners;
 }
 
+/// Points (plane coordinates) and weights of a rule on cell c of T_{C,H}: the n × n Gauss rule on
+/// a rectangle, the n² collapsed rule on a triangle.
+std::vector<std::pair<Eigen::Vector2d, double>> cell_quadrature(const mesh::SurfaceMultiplierMesh& mesh, int c, int n) {
+  std::vector<std::pair<Eigen::Vector2d, double>> out;
+  if (!mesh.is_grid()) {
+    const std::vector<Eigen::Vector2d> v = mesh.cell_polygon(c);
+    const Eigen::Vector2d e1 = v[1] - v[0], e2 = v[2] - v[0];
+    const double area_factor = std::abs(e1(0) * e2(1) - e1(1) * e2(0)) / 4.0;  // reference triangle area 2
+    const basis::QuadratureRule2D& rule = basis::collapsed_triangle_rule(n);
+    for (std::size_t q = 0; q < rule.weights.size(); ++q)
+      out.emplace_back(v[0] + 0.5 * (rule.xi[q] + 1.0) * e1 + 0.5 * (rule.eta[q] + 1.0) * e2,
+                       rule.weights[q] * area_factor);
+    return out;
+  }
+  const auto [lo, hi] = mesh.cell_bounds(c);
+  const Eigen::Vector2d half = 0.5 * (hi - lo);
+  const basis::QuadratureRule1D& rule = basis::gauss_legendre(n);
+  for (std::size_t i = 0; i < rule.points.size(); ++i)
+    for (std::size_t j = 0; j < rule.points.size(); ++j)
+      out.emplace_back(lo + (Eigen::Array2d(rule.points[i] + 1.0, rule.points[j] + 1.0) * half.array()).matrix(),
+                       rule.weights[i] * rule.weights[j] * half.prod());
+  return out;
+}
+
 }  // namespace
 
 Eigen::Vector3d face_point_in_cell(const mesh::FlatContactSurface& surface, const mesh::BoundaryFace& face,
@@ -125,31 +149,18 @@ linalg::Coupling directional_coupling(const space::SolidVectorSpace& space, cons
 }
 
 bool cell_meets_support(const mesh::SurfaceMultiplierMesh& mesh, int cell, const SolidFunction& s) {
-  const auto [lo, hi] = mesh.cell_bounds(cell);
-  for (double t : basis::gauss_legendre(12).points)
-    for (double u : basis::gauss_legendre(12).points) {
-      const Eigen::Vector2d a = lo + (0.5 * (Eigen::Array2d(t, u) + 1.0) * (hi - lo).array()).matrix();
-      if (s(mesh.surface().from_plane(a)) > 0.0) return true;
-    }
+  for (const auto& [a, w] : cell_quadrature(mesh, cell, 12))
+    if (s(mesh.surface().from_plane(a)) > 0.0) return true;
   return false;
 }
 
 Eigen::VectorXd surface_multiplier_load(const space::SurfaceMultiplierSpace& multipliers, const SolidFunction& g) {
   const mesh::SurfaceMultiplierMesh& multiplier_mesh = multipliers.mesh();
-  const basis::QuadratureRule1D& rule = basis::gauss_legendre(multipliers.degree() + 6);
   Eigen::VectorXd load = Eigen::VectorXd::Zero(multipliers.n_dofs());
-  for (int c = 0; c < multiplier_mesh.n_cells(); ++c) {
-    const auto [lo, hi] = multiplier_mesh.cell_bounds(c);
-    const Eigen::Vector2d half = 0.5 * (hi - lo);
-    for (std::size_t i = 0; i < rule.points.size(); ++i)
-      for (std::size_t j = 0; j < rule.points.size(); ++j) {
-        const Eigen::Vector2d a =
-            lo + (Eigen::Array2d(rule.points[i] + 1.0, rule.points[j] + 1.0) * half.array()).matrix();
-        const double w = rule.weights[i] * rule.weights[j] * half.prod();
-        load.segment(multipliers.first_dof(c), multipliers.per_cell()) +=
-            w * g(multiplier_mesh.surface().from_plane(a)) * multipliers.values(c, a);
-      }
-  }
+  for (int c = 0; c < multiplier_mesh.n_cells(); ++c)
+    for (const auto& [a, w] : cell_quadrature(multiplier_mesh, c, multipliers.degree() + 6))
+      load.segment(multipliers.first_dof(c), multipliers.per_cell()) +=
+          w * g(multiplier_mesh.surface().from_plane(a)) * multipliers.values(c, a);
   return load;
 }
 

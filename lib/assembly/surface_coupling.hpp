@@ -32,13 +32,14 @@ linalg::Coupling surface_coupling(const space::SolidH1Space& space, const space:
 linalg::Coupling directional_coupling(const space::SolidVectorSpace& space, const linalg::Coupling& scalar,
                                       const Eigen::Vector3d& direction);
 
-/// Whether s > 0 somewhere on cell c of T_{C,H} (sampled at 12 × 12 Gauss points): the friction
+/// Whether s > 0 somewhere on cell c of T_{C,H} (sampled at 12 × 12 Gauss points, or the 144
+/// collapsed points of a triangle): the friction
 /// problem (13) and its pairing (22) keep only the multipliers of such cells (B^s has no entry on
 /// the others, where λ would be undetermined).
 bool cell_meets_support(const mesh::SurfaceMultiplierMesh& mesh, int cell, const SolidFunction& s);
 
 /// G_i = ∫ ℓ_i g over Γ_C, shape (multipliers.n_dofs()): tensor Gauss rule of p_C + 6 points per
-/// axis on each rectangle of T_{C,H}.
+/// axis on each rectangle of T_{C,H}, the collapsed rule of (p_C + 6)² points on each triangle.
 Eigen::VectorXd surface_multiplier_load(const space::SurfaceMultiplierSpace& multipliers, const SolidFunction& g);
 
 }  // namespace hpcontact::assembly

@@ -12,6 +12,10 @@
 namespace hpcontact::driver {
 
 void check_solid_pairing(const scene::Scene& scene) {
+  if (!scene.contact_mesh_file.empty())
+    throw_bad_input(scene.where("contact_mesh.mesh"), "contact_mesh.mesh", scene.contact_mesh_file,
+                    "m or ratio for α in a 3-D scene: its interpolation norm is computed on a grid T_{C,H} (the "
+                    "cosine moments of tensor multipliers); a triangle T_{C,H} solves contact problems only");
   if (scene.norm == infsup::GramNorm::extension)
     throw_bad_input(scene.where("infsup.norm"), "infsup.norm", "extension",
                     "interp in a 3-D scene: α takes the interpolation norm of the flat Γ_C");

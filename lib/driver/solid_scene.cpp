@@ -12,6 +12,8 @@
 
 #include "core/error.hpp"
 #include "core/expression.hpp"
+#include "driver/solid_pairing.hpp"
+#include "mesh/gmsh_surface.hpp"
 #include "mesh/rectangle_mesh.hpp"
 
 namespace hpcontact::driver {
@@ -43,6 +45,8 @@ const std::set<std::string>& solid_scene_keys() {
                                           "boundary.fixed_z",
                                           "contact_mesh.m",
                                           "contact_mesh.ratio",
+                                          "contact_mesh.mesh",
+                                          "contact_mesh.mesh_size",
                                           "discretization.p",
                                           "discretization.pC",
                                           "infsup.norm",
@@ -196,6 +200,11 @@ void check_solid_scene(const scene::Scene& scene, const SceneRunOptions& options
     throw_bad_input(scene.where(scene.n_z > 0 ? "domain.n_z" : "domain.z_nodes"),
                     scene.n_z > 0 ? "domain.n_z" : "domain.z_nodes", "(given)",
                     "a one-body scene: two bodies in contact are planar");
+  if (scene.has_effect(scene::Effect::infsup)) check_solid_pairing(scene);  // (before any work)
+  if (!scene.contact_mesh_file.empty() && scene.pc.value > 1)
+    throw_bad_input(scene.where("discretization.pC"), "discretization.pC", std::to_string(scene.pc.value),
+                    "0 or 1 with the triangles of contact_mesh.mesh (P_0 at the centroid, P_1 at the vertices: the "
+                    "Lagrange bases whose functions all have positive integrals); higher p_C needs m or ratio");
   if (options.distribution.distributed())
     throw InputError(scene.file + ": 3-D scenes run on one process: run `hpcontact solve` without mpirun");
   if (scene.contact_predicate.empty())
@@ -214,6 +223,13 @@ assembly::SolidFunction solid_scene_function(const scene::Scene& scene, const st
 
 std::unique_ptr<mesh::SurfaceMultiplierMesh> solid_multiplier_mesh(const scene::Scene& scene,
                                                                    const mesh::FlatContactSurface& surface) {
+  if (!scene.contact_mesh_file.empty()) {
+    const auto [vertices, triangles] =
+        mesh::read_gmsh_surface_triangles(scene.contact_mesh_file, scene.contact_mesh_size);
+    return std::make_unique<mesh::SurfaceMultiplierMesh>(
+        surface, vertices, triangles,
+        scene.where("contact_mesh.mesh") + ": key 'contact_mesh.mesh' (" + scene.contact_mesh_file + ")");
+  }
   return std::make_unique<mesh::SurfaceMultiplierMesh>(surface, multiplier_cells(scene, surface),
                                                        scene.where("boundary.contact") + ": key 'boundary.contact'");
 }

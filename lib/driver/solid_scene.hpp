@@ -40,7 +40,8 @@ std::unique_ptr<SolidDiscretization> discretize_solid_scene(const scene::Scene& 
 /// The scene's expression `text` (key `key`, in x, y, z) as a function; empty for an empty text.
 assembly::SolidFunction solid_scene_function(const scene::Scene& scene, const std::string& text, const char* key);
 
-/// T_{C,H} of the scene on Γ_C: contact_mesh.m (one or two counts) or contact_mesh.ratio.
+/// T_{C,H} of the scene on Γ_C: contact_mesh.m (one or two counts), contact_mesh.ratio, or the
+/// triangles of contact_mesh.mesh.
 /// @throws InputError naming the key.
 std::unique_ptr<mesh::SurfaceMultiplierMesh> solid_multiplier_mesh(const scene::Scene& scene,
                                                                    const mesh::FlatContactSurface& surface);

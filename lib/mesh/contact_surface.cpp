@@ -1,5 +1,5 @@
-// Flat contact surfaces of hexahedral meshes, their structured multiplier meshes and the clipped
-// overlaps of trace faces and multiplier cells.
+// Flat contact surfaces of hexahedral meshes, their multiplier meshes (grids of rectangles or
+// triangles) and the clipped overlaps of trace faces and multiplier cells.
 #include "mesh/contact_surface.hpp"
 
 #include <fmt/format.h>
@@ -127,6 +127,30 @@ std::vector<Eigen::Vector2d> clip_to_rectangle(const std::vector<Eigen::Vector2d
   return current;
 }
 
+std::vector<Eigen::Vector2d> clip_convex(const std::vector<Eigen::Vector2d>& subject,
+                                         const std::vector<Eigen::Vector2d>& clip) {
+  std::vector<Eigen::Vector2d> current = subject;
+  for (std::size_t side = 0; side < clip.size() && !current.empty(); ++side) {
+    const Eigen::Vector2d& from = clip[side];
+    const Eigen::Vector2d edge = clip[(side + 1) % clip.size()] - from;
+    // (left of the side, or on it: inside a counterclockwise polygon)
+    const auto height = [&](const Eigen::Vector2d& x) {
+      const Eigen::Vector2d d = x - from;
+      return edge(0) * d(1) - edge(1) * d(0);
+    };
+    std::vector<Eigen::Vector2d> next;
+    for (std::size_t k = 0; k < current.size(); ++k) {
+      const Eigen::Vector2d& a = current[k];
+      const Eigen::Vector2d& b = current[(k + 1) % current.size()];
+      const double ha = height(a), hb = height(b);
+      if (ha >= 0.0) next.push_back(a);
+      if ((ha >= 0.0) != (hb >= 0.0)) next.push_back(a + ha / (ha - hb) * (b - a));
+    }
+    current = std::move(next);
+  }
+  return current;
+}
+
 SurfaceMultiplierMesh::SurfaceMultiplierMesh(const FlatContactSurface& surface, std::array<int, 2> cells,
                                              const std::string& origin)
     : surface_(&surface), cells_(cells) {
@@ -142,7 +166,61 @@ SurfaceMultiplierMesh::SurfaceMultiplierMesh(const FlatContactSurface& surface, 
   overlaps_ = clip_faces();
 }
 
+SurfaceMultiplierMesh::SurfaceMultiplierMesh(const FlatContactSurface& surface, const std::vector<SolidPoint>& vertices,
+                                             const std::vector<std::array<int, 3>>& triangles,
+                                             const std::string& origin)
+    : surface_(&surface), shape_(CellShape::triangle) {
+  if (triangles.empty()) throw InputError(origin + ": T_{C,H} has no triangles");
+  const auto& [lo, hi] = surface.bounds();
+  const double size = (hi - lo).norm(), scale = (hi - lo).prod();
+  for (const SolidPoint& x : vertices) {
+    const double off = surface.normal().dot(x - surface.from_plane(surface.to_plane(x)));
+    if (std::abs(off) > 1e-9 * size)
+      throw InputError(fmt::format("{}: vertex ({}, {}, {}) of T_{{C,H}} lies {:.3g} off the plane of Γ_C", origin,
+                                   x(0), x(1), x(2), off));
+  }
+  double area = 0.0;
+  for (const auto& triangle : triangles) {
+    std::array<Eigen::Vector2d, 3> corners;
+    for (int k = 0; k < 3; ++k) corners[k] = surface.to_plane(vertices.at(static_cast<std::size_t>(triangle[k])));
+    double twice = (corners[1] - corners[0])(0) * (corners[2] - corners[0])(1) -
+                   (corners[1] - corners[0])(1) * (corners[2] - corners[0])(0);
+    if (std::abs(twice) <= 1e-14 * scale)
+      throw InputError(fmt::format("{}: triangle {} of T_{{C,H}} has no area", origin, triangles_.size()));
+    if (twice < 0.0) std::swap(corners[1], corners[2]);
+    area += 0.5 * std::abs(twice);
+    triangles_.push_back(corners);
+  }
+  overlaps_ = clip_triangles();
+  double covered = 0.0;
+  for (const auto& overlap : overlaps_) covered += signed_area(overlap.polygon);
+  if (std::abs(area - surface.area()) > 1e-9 * surface.area() ||
+      std::abs(covered - surface.area()) > 1e-9 * surface.area())
+    throw InputError(
+        fmt::format("{}: the triangles of T_{{C,H}} do not cover Γ_C once: their area is {:.10g}, the part "
+                    "of Γ_C they cover {:.10g}, Γ_C's area {:.10g}",
+                    origin, area, covered, surface.area()));
+}
+
+const std::array<int, 2>& SurfaceMultiplierMesh::cells_per_axis() const {
+  HPC_VERIFY(is_grid(), "cells_per_axis of a grid T_{C,H}");
+  return cells_;
+}
+
+std::vector<Eigen::Vector2d> SurfaceMultiplierMesh::cell_polygon(int c) const {
+  if (!is_grid()) {
+    const auto& t = triangles_[static_cast<std::size_t>(c)];
+    return {t[0], t[1], t[2]};
+  }
+  const auto [lo, hi] = cell_bounds(c);
+  return {lo, Eigen::Vector2d(hi(0), lo(1)), hi, Eigen::Vector2d(lo(0), hi(1))};
+}
+
 std::array<Eigen::Vector2d, 2> SurfaceMultiplierMesh::cell_bounds(int c) const {
+  if (!is_grid()) {
+    const auto& t = triangles_[static_cast<std::size_t>(c)];
+    return {t[0].cwiseMin(t[1]).cwiseMin(t[2]), t[0].cwiseMax(t[1]).cwiseMax(t[2])};
+  }
   const auto& [lo, hi] = surface_->bounds();
   const int i = c % cells_[0], j = c / cells_[0];
   const Eigen::Vector2d step((hi(0) - lo(0)) / cells_[0], (hi(1) - lo(1)) / cells_[1]);
@@ -181,6 +259,52 @@ std::vector<SurfaceMultiplierMesh::Overlap> SurfaceMultiplierMesh::clip_faces() 
         out.push_back({f, c, std::move(piece)});
       }
   }
+  return out;
+}
+
+std::vector<SurfaceMultiplierMesh::Overlap> SurfaceMultiplierMesh::clip_triangles() const {
+  // The faces binned by their bounding boxes on a grid of about one face per bin, so that each
+  // triangle is clipped only against the faces near it.
+  const auto& [lo, hi] = surface_->bounds();
+  const auto& faces = surface_->faces();
+  const int bins = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(faces.size()))));
+  const Eigen::Vector2d step = (hi - lo) / bins;
+  const auto bin_of = [&](const Eigen::Vector2d& a, int k) {
+    return std::clamp(static_cast<int>(std::floor((a(k) - lo(k)) / step(k))), 0, bins - 1);
+  };
+  std::vector<std::vector<Eigen::Vector2d>> polygons;
+  std::vector<std::vector<int>> binned(static_cast<std::size_t>(bins * bins));
+  for (int f = 0; f < static_cast<int>(faces.size()); ++f) {
+    polygons.push_back(face_polygon(*surface_, faces[f]));
+    Eigen::Vector2d low = polygons.back()[0], high = low;
+    for (const auto& x : polygons.back()) {
+      low = low.cwiseMin(x);
+      high = high.cwiseMax(x);
+    }
+    for (int j = bin_of(low, 1); j <= bin_of(high, 1); ++j)
+      for (int i = bin_of(low, 0); i <= bin_of(high, 0); ++i)
+        binned[static_cast<std::size_t>(i + bins * j)].push_back(f);
+  }
+  const double scale = (hi - lo).prod();
+  std::vector<Overlap> out;
+  for (int c = 0; c < n_cells(); ++c) {
+    const auto [low, high] = cell_bounds(c);
+    std::vector<int> near;
+    for (int j = bin_of(low, 1); j <= bin_of(high, 1); ++j)
+      for (int i = bin_of(low, 0); i <= bin_of(high, 0); ++i) {
+        const auto& in_bin = binned[static_cast<std::size_t>(i + bins * j)];
+        near.insert(near.end(), in_bin.begin(), in_bin.end());
+      }
+    std::sort(near.begin(), near.end());
+    near.erase(std::unique(near.begin(), near.end()), near.end());
+    for (int f : near) {
+      std::vector<Eigen::Vector2d> piece = clip_convex(cell_polygon(c), polygons[static_cast<std::size_t>(f)]);
+      if (piece.size() < 3 || signed_area(piece) <= 1e-14 * scale) continue;
+      out.push_back({f, c, std::move(piece)});
+    }
+  }
+  std::sort(out.begin(), out.end(),
+            [](const Overlap& a, const Overlap& b) { return std::pair(a.face, a.cell) < std::pair(b.face, b.cell); });
   return out;
 }
 

@@ -1,7 +1,8 @@
 // A flat contact surface Γ_C of a hexahedral mesh (the boundary faces of some labels, lying in
-// one plane) in in-plane coordinates, and the multiplier mesh T_{C,H} on it: a structured grid of
-// rectangles independent of the trace faces, with each rectangle's overlaps with the trace faces
-// found by polygon clipping (Sutherland–Hodgman), where the couplings are integrated.
+// one plane) in in-plane coordinates, and the multiplier mesh T_{C,H} on it, independent of the
+// trace faces: a structured grid of rectangles or a mesh of triangles, with each cell's overlaps
+// with the trace faces found by polygon clipping (Sutherland–Hodgman), where the couplings are
+// integrated.
 #pragma once
 
 #include <Eigen/Core>
@@ -51,18 +52,38 @@ class FlatContactSurface {
 std::vector<Eigen::Vector2d> clip_to_rectangle(const std::vector<Eigen::Vector2d>& polygon, const Eigen::Vector2d& lo,
                                                const Eigen::Vector2d& hi);
 
-/// T_{C,H}: an m_1 × m_2 grid of equal rectangles over the bounding rectangle of Γ_C, cell
-/// (i, j) = i + m_1 j. Γ_C must be that rectangle.
+/// The convex polygon common to two convex counterclockwise polygons (Sutherland–Hodgman: `subject`
+/// clipped by each side of `clip` in turn); empty where they do not overlap in area.
+std::vector<Eigen::Vector2d> clip_convex(const std::vector<Eigen::Vector2d>& subject,
+                                         const std::vector<Eigen::Vector2d>& clip);
+
+/// T_{C,H}: either an m_1 × m_2 grid of equal rectangles over the bounding rectangle of Γ_C, cell
+/// (i, j) = i + m_1 j (Γ_C must be that rectangle), or a mesh of triangles covering Γ_C (any
+/// shape of Γ_C; from a Gmsh surface mesh).
 class SurfaceMultiplierMesh {
  public:
-  /// @throws InputError naming `origin` if m_1 or m_2 < 1 or Γ_C is not a rectangle.
+  enum class CellShape { rectangle, triangle };
+
+  /// The grid. @throws InputError naming `origin` if m_1 or m_2 < 1 or Γ_C is not a rectangle.
   SurfaceMultiplierMesh(const FlatContactSurface& surface, std::array<int, 2> cells, const std::string& origin);
+  /// Triangles (vertex indices into `vertices`, points in space on Γ_C's plane; either
+  /// orientation). @throws InputError naming `origin` if a vertex lies off the plane of Γ_C (by
+  /// more than 1e-9 of Γ_C's size), a triangle is degenerate, or the triangles do not cover Γ_C
+  /// once (their area, and their overlaps' area with Γ_C, equal to Γ_C's to 1e-9 relative).
+  SurfaceMultiplierMesh(const FlatContactSurface& surface, const std::vector<SolidPoint>& vertices,
+                        const std::vector<std::array<int, 3>>& triangles, const std::string& origin);
 
   const FlatContactSurface& surface() const { return *surface_; }
-  int n_cells() const { return cells_[0] * cells_[1]; }
-  const std::array<int, 2>& cells_per_axis() const { return cells_; }
-  /// Lower and upper corner of cell c in plane coordinates.
+  CellShape shape() const { return shape_; }
+  bool is_grid() const { return shape_ == CellShape::rectangle; }
+  int n_cells() const { return is_grid() ? cells_[0] * cells_[1] : static_cast<int>(triangles_.size()); }
+  /// The grid's cells along Γ_C's two axes (a grid only).
+  const std::array<int, 2>& cells_per_axis() const;
+  /// Lower and upper corner of cell c's bounding rectangle in plane coordinates (on a grid: the cell).
   std::array<Eigen::Vector2d, 2> cell_bounds(int c) const;
+  /// Cell c's corners in plane coordinates, counterclockwise (a rectangle from its lower left
+  /// corner; a triangle from its first vertex).
+  std::vector<Eigen::Vector2d> cell_polygon(int c) const;
 
   /// The piece of one trace face inside one cell of T_{C,H}, where trace shapes and multipliers
   /// are both polynomial: the couplings are integrated over these.
@@ -77,8 +98,11 @@ class SurfaceMultiplierMesh {
 
  private:
   std::vector<Overlap> clip_faces() const;
+  std::vector<Overlap> clip_triangles() const;
   const FlatContactSurface* surface_;
-  std::array<int, 2> cells_;
+  CellShape shape_ = CellShape::rectangle;
+  std::array<int, 2> cells_{};
+  std::vector<std::array<Eigen::Vector2d, 3>> triangles_;  ///< counterclockwise, plane coordinates
   std::vector<Overlap> overlaps_;
 };
 

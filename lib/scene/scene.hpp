@@ -93,11 +93,14 @@ struct Scene {
   /// Dirichlet data, expressions in x, y: u_D on Γ_D (scalar model), u_D,x and u_D,y wherever that
   /// component is fixed (Γ_D and rollers; elastic scenes). Empty: 0.
   std::string dirichlet_value, dirichlet_x, dirichlet_y;
-  // [contact_mesh]: exactly one of m, ratio (= h/H), breakpoints. m and ratio hold one value for
-  // every zone of Γ_C or one per zone (in the zones' order, ContactBoundary); empty: not given.
+  // [contact_mesh]: exactly one of m, ratio (= h/H), breakpoints, mesh (3-D). m and ratio hold one
+  // value for every zone of Γ_C or one per zone (in the zones' order, ContactBoundary); empty: not
+  // given.
   std::vector<int> m;
   std::vector<Ratio> ratio;
   std::vector<double> breakpoints;
+  std::string contact_mesh_file;            ///< a 3-D T_{C,H} of triangles from Gmsh; empty: none
+  std::optional<double> contact_mesh_size;  ///< a .geo contact_mesh_file: Gmsh's maximal element size
   double grading = 1.0;
   space::MultiplierFamily family;  ///< the multiplier family on T_{C,H}
   // [discretization]

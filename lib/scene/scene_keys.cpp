@@ -45,36 +45,43 @@ SceneKey degree_key(const char* name, int low, int high, Degree Scene::*member, 
           }};
 }
 
+/// `mesh`: a Gmsh file, relative to the scene file; unreadable files are reported now, with the
+/// reason, before any work.
+void read_mesh_path(const TomlTable& table, const Scene& scene, std::string& file) {
+  if (!table.has("mesh")) return;
+  const std::string path = table.string("mesh");
+  const bool relative = !path.empty() && path.front() != '/';
+  file = relative ? (std::filesystem::path(scene.file).parent_path() / path).string() : path;
+  if (file.empty()) throw_bad_input(table.origin("mesh"), table.qualified("mesh"), "\"\"", "a file name");
+  errno = 0;
+  if (!std::ifstream(file))
+    throw_bad_input(table.origin("mesh"), table.qualified("mesh"), "\"" + path + "\"",
+                    describe_io_failure("a readable Gmsh file; cannot open", file));
+}
+
+/// `mesh_size`: Gmsh's maximal element size for the .geo `file` of `file_key`.
+void read_mesh_size(const TomlTable& table, const std::string& file, std::optional<double>& size,
+                    const char* file_key) {
+  if (!table.has("mesh_size")) return;
+  size = table.number_in("mesh_size", 0.0, 1e6);
+  if (!(*size > 0.0)) throw_bad_input(table.origin("mesh_size"), table.qualified("mesh_size"), "0", "a number > 0");
+  if (std::filesystem::path(file).extension() != ".geo")
+    throw_bad_input(table.origin("mesh_size"), table.qualified("mesh_size"), fmt::format("{}", *size),
+                    fmt::format("only with a Gmsh geometry file (.geo) as {}", file_key));
+}
+
 void add_domain_keys(std::vector<SceneKey>& keys) {
   auto add = [&](SceneKey key) { keys.push_back(std::move(key)); };
   add({"domain", "mesh", "string", "",
        "a Gmsh mesh file of triangles and/or quadrilaterals (MSH 2.2 or 4, ASCII or binary) or a Gmsh geometry (.geo)",
        "Gmsh mesh, or geometry meshed on the fly (see `cells`), relative to the scene file; absent: the "
        "rectangle below",
-       "", [](const TomlTable& table, Scene& scene) {
-         if (!table.has("mesh")) return;
-         const std::string path = table.string("mesh");
-         const bool relative = !path.empty() && path.front() != '/';
-         scene.mesh_file = relative ? (std::filesystem::path(scene.file).parent_path() / path).string() : path;
-         if (scene.mesh_file.empty())
-           throw_bad_input(table.origin("mesh"), table.qualified("mesh"), "\"\"", "a file name");
-         // Unreadable files are reported now, with the reason, before any work.
-         errno = 0;
-         if (!std::ifstream(scene.mesh_file))
-           throw_bad_input(table.origin("mesh"), table.qualified("mesh"), "\"" + path + "\"",
-                           describe_io_failure("a readable Gmsh file; cannot open", scene.mesh_file));
-       }});
+       "", [](const TomlTable& table, Scene& scene) { read_mesh_path(table, scene, scene.mesh_file); }});
   add({"domain", "mesh_size", "number", "the .geo's sizes", "(0, 1e6]",
        "a .geo `mesh`: Gmsh's maximal element size (Mesh.MeshSizeMax), before the split into quadrilaterals "
        "(which halves it) when cells = \"quadrilaterals\"",
        "", [](const TomlTable& table, Scene& scene) {
-         if (!table.has("mesh_size")) return;
-         scene.mesh_size = table.number_in("mesh_size", 0.0, 1e6);
-         if (!(*scene.mesh_size > 0.0))
-           throw_bad_input(table.origin("mesh_size"), table.qualified("mesh_size"), "0", "a number > 0");
-         if (std::filesystem::path(scene.mesh_file).extension() != ".geo")
-           throw_bad_input(table.origin("mesh_size"), table.qualified("mesh_size"), fmt::format("{}", *scene.mesh_size),
-                           "only with a Gmsh geometry file (.geo) as domain.mesh");
+         read_mesh_size(table, scene.mesh_file, scene.mesh_size, "domain.mesh");
        }});
   add(choice_key<Scene::Geometry>(
       "domain", "geometry", {{"curved", Scene::Geometry::curved}, {"polygonal", Scene::Geometry::polygonal}},
@@ -180,6 +187,16 @@ void add_boundary_and_contact_mesh_keys(std::vector<SceneKey>& keys) {
       "the interior and last breakpoints of T_{C,H} by arc length (the zones of Γ_C one after the other; their ends "
       "are added)",
       [](double v) { return v > 0.0; }, size_group));
+  add({"contact_mesh", "mesh", "string", "",
+       "a Gmsh mesh file of triangles (MSH 2.2 or 4) or a Gmsh geometry (.geo) of Γ_C; 3-D scenes",
+       "T_{C,H} of a 3-D scene: triangles covering Γ_C (nodes in x, y, z on its plane), relative to the scene file; "
+       "a .geo is meshed into triangles on the fly",
+       size_group,
+       [](const TomlTable& table, Scene& scene) { read_mesh_path(table, scene, scene.contact_mesh_file); }});
+  add({"contact_mesh", "mesh_size", "number", "the .geo's sizes", "(0, 1e6]",
+       "a .geo `mesh`: Gmsh's maximal triangle size (Mesh.MeshSizeMax)", "", [](const TomlTable& table, Scene& scene) {
+         read_mesh_size(table, scene.contact_mesh_file, scene.contact_mesh_size, "contact_mesh.mesh");
+       }});
   add(number_key("contact_mesh", "grading", 1e-3, 1.0, 1.0, &Scene::grading,
                  "with `m`: each segment this times the previous one (1: uniform)"));
   std::vector<std::pair<std::string, space::MultiplierFamily>> families;

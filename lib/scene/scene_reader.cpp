@@ -68,7 +68,8 @@ std::map<std::string, std::string> apply_overrides(toml::table& root, const std:
 
 void check_domain(const Scene& scene) {
   if (scene.dimension() == 2)
-    for (const char* key : {"domain.grading_z", "boundary.fixed_z", "data.f_z", "solve.trace_operator"})
+    for (const char* key : {"domain.grading_z", "boundary.fixed_z", "data.f_z", "solve.trace_operator",
+                            "contact_mesh.mesh", "contact_mesh.mesh_size"})
       if (scene.given.contains(key))
         throw_bad_input(scene.where(key), key, "(given)", "only in a 3-D scene (a box: domain.n_z given)");
   if (!scene.is_rectangle()) {
@@ -125,11 +126,11 @@ void check_boundary_and_contact_mesh(const Scene& scene) {
     throw_bad_input(scene.where("boundary.contact_groups"), "boundary.contact_groups", "",
                     "needs a Gmsh mesh in domain.mesh");
   int given = 0;
-  for (const char* key : {"contact_mesh.m", "contact_mesh.ratio", "contact_mesh.breakpoints"})
+  for (const char* key : {"contact_mesh.m", "contact_mesh.ratio", "contact_mesh.breakpoints", "contact_mesh.mesh"})
     given += scene.given.contains(key) ? 1 : 0;
   if (given != 1)
-    throw_bad_input(scene.file, "contact_mesh", fmt::format("({} of m, ratio, breakpoints given)", given),
-                    "give exactly one of m, ratio, breakpoints");
+    throw_bad_input(scene.file, "contact_mesh", fmt::format("({} of m, ratio, breakpoints, mesh given)", given),
+                    "give exactly one of m, ratio, breakpoints (and mesh in 3-D)");
   // (The elastic friction pairing, normal and tangential multipliers, has no weight s.)
   if (scene.problem == infsup::PairingProblem::friction && scene.friction_bound.empty() && !scene.is_elastic())
     throw_bad_input(scene.where("data.s"), "data.s", "(missing)", "the friction problem needs the friction bound s");

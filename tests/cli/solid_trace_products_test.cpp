@@ -1,7 +1,8 @@
 // The products path of 3-D solves (solve.trace_operator = "products": S = B K⁻¹ Bᵀ applied by one
 // solve each, MPRGP or FISTA, S never formed) against the dense path (S from the factor's trailing
 // block, the active-set method) through `hpcontact solve`: the same energy, multiplier samples and
-// gap for the scalar problems (9), (15), frictionless and Tresca contact; the summary names the
+// gap for the scalar problems (9), (15), frictionless and Tresca contact (and on a T_{C,H} of
+// triangles); the summary names the
 // path and counts the products; planar scenes refuse the key by name.
 #include <gtest/gtest.h>
 
@@ -15,6 +16,7 @@ namespace hpcontact::testing {
 namespace {
 
 const std::string kStudies = std::string(HPCONTACT_SOURCE_DIR) + "/studies/";
+const std::string kTriangles = std::string(HPCONTACT_SOURCE_DIR) + "/tests/data/extruded_contact.geo";
 
 struct Case {
   const char* name;
@@ -43,7 +45,11 @@ TEST(SolidTraceProducts, ProductsPathEqualsTheDensePath) {
       {"cube",
        kStudies + "three_d/cube.toml --set domain.n_x=8 --set domain.n_y=8 --set domain.n_z=8 --set "
                   "'contact_mesh.ratio=\"1\"' --set discretization.pC=0",
-       "signorini", "lambda"}};
+       "signorini", "lambda"},
+      // T_{C,H} of triangles from Gmsh (P_1 at the vertices), scalar and elastic
+      {"triangles_signorini", extruded + " --set 'contact_mesh.mesh=\"" + kTriangles + "\"'", "signorini", "lambda"},
+      {"triangles_frictionless", elastic + " --set 'contact_mesh.mesh=\"" + kTriangles + "\"'", "frictionless",
+       "pressure"}};
   for (const Case& c : cases) {
     const auto dir = scratch(std::string("trace_products_") + c.name);
     const auto dense = solve_on_path(c, "dense", dir / "dense");
@@ -86,6 +92,19 @@ TEST(SolidTraceProducts, PlanarScenesRefuseTheKey) {
                             "'solve.trace_operator=\"sparse\"' --out " +
                             (scratch("trace_products_misspelt") / "out").string());
   expect_refused(misspelt, "auto, dense, products");
+}
+
+TEST(SolidTraceProducts, TriangleMultiplierMeshesRefuseWhatTheyCannotDo) {
+  const std::string scene =
+      kStudies + "three_d/extruded_signorini.toml --set 'contact_mesh.mesh=\"" + kTriangles + "\"'";
+  const auto quadratic =
+      run("solve " + scene + " --set discretization.pC=2 --out " + (scratch("triangles_quadratic") / "out").string());
+  expect_refused(quadratic, "discretization.pC");
+  const auto alpha = run("solve " + scene + " --effects infsup --out " + (scratch("triangles_alpha") / "out").string());
+  expect_refused(alpha, "contact_mesh.mesh");
+  const auto planar = run("solve " + kStudies + "paper/figure1_signorini.toml --set 'contact_mesh.mesh=\"" +
+                          kTriangles + "\"' --out " + (scratch("triangles_planar") / "out").string());
+  expect_refused(planar, "contact_mesh.mesh");
 }
 
 }  // namespace
