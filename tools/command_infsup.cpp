@@ -67,6 +67,7 @@ driver::InfSupSummary solid_infsup(const InfSupOptions& o, const scene::Scene& s
                     "the cells of T_C,H: give a file name ending in .vtu",
                     o.mode));
   driver::check_solid_scene(scene, {}, false);
+  driver::check_solid_pairing(scene);  // (before the box is meshed)
   const auto d = driver::discretize_solid_scene(scene);
   const auto alpha = driver::solid_scene_alpha(scene, *d, backend);
   if (!o.mode.empty())

@@ -224,8 +224,22 @@ assembly::SolidFunction solid_scene_function(const scene::Scene& scene, const st
 std::unique_ptr<mesh::SurfaceMultiplierMesh> solid_multiplier_mesh(const scene::Scene& scene,
                                                                    const mesh::FlatContactSurface& surface) {
   if (!scene.contact_mesh_file.empty()) {
-    const auto [vertices, triangles] =
-        mesh::read_gmsh_surface_triangles(scene.contact_mesh_file, scene.contact_mesh_size);
+    // Gmsh meshes for minutes before it fails on a size that would not fit: refused before, at
+    // about 2.3 triangles per size² (the planar meshes' measured density) and 1e6 triangles.
+    const double estimate =
+        scene.contact_mesh_size ? 2.3 * surface.area() / std::pow(*scene.contact_mesh_size, 2) : 0.0;
+    if (estimate > 1e6)
+      throw_bad_input(scene.where("contact_mesh.mesh_size"), "contact_mesh.mesh_size",
+                      fmt::format("{}", *scene.contact_mesh_size),
+                      fmt::format("a size that gives at most 1e6 triangles on Γ_C (area {:.6g}): at least {:.3g}",
+                                  surface.area(), std::sqrt(2.3 * surface.area() / 1e6)));
+    mesh::SurfaceTriangles read;
+    try {
+      read = mesh::read_gmsh_surface_triangles(scene.contact_mesh_file, scene.contact_mesh_size);
+    } catch (const InputError& error) {
+      throw InputError(scene.where("contact_mesh.mesh") + ": key 'contact_mesh.mesh': " + error.what());
+    }
+    const auto& [vertices, triangles] = read;
     return std::make_unique<mesh::SurfaceMultiplierMesh>(
         surface, vertices, triangles,
         scene.where("contact_mesh.mesh") + ": key 'contact_mesh.mesh' (" + scene.contact_mesh_file + ")");

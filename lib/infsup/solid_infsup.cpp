@@ -108,6 +108,10 @@ InfSupResult analyse_solid_infsup(const SolidInfSupSetup& setup, EigenBackend ba
   if (!(setup.alpha_tolerance > 0.0 && setup.alpha_tolerance <= 0.1))
     throw_bad_input("inf-sup analysis", "alpha_tol", fmt::format("{}", setup.alpha_tolerance), "must be in (0, 0.1]");
   HPC_VERIFY(setup.space && setup.multipliers, "analyse_solid_infsup: the space or the multipliers are missing");
+  if (!setup.multipliers->mesh().is_grid())
+    throw InputError(
+        "α of a 3-D pairing needs a grid T_{C,H}: its interpolation norm is computed from the cosine moments of "
+        "tensor multipliers, which triangles do not have");
   if (setup.problem == PairingProblem::friction && !setup.friction_bound && !setup.vector_space)
     throw InputError("the friction pairing (22) needs the friction bound s (data.s)");
   const space::SolidH1Space& space = *setup.space;

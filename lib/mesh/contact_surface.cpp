@@ -8,6 +8,8 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <utility>
 
 #include "core/error.hpp"
 
@@ -160,8 +162,8 @@ SurfaceMultiplierMesh::SurfaceMultiplierMesh(const FlatContactSurface& surface, 
           fmt::format("{}: T_{{C,H}} has {} cells along its axis {}; at least 1", origin, cells_[k], k + 1));
   if (!surface.is_rectangle())
     throw InputError(
-        fmt::format("{}: Γ_C (area {:.6g}) is not the rectangle that bounds it (area {:.6g}); 3-D "
-                    "multiplier meshes are grids on rectangular contact surfaces for now",
+        fmt::format("{}: Γ_C (area {:.6g}) is not the rectangle that bounds it (area {:.6g}): a "
+                    "grid T_{{C,H}} needs a rectangular Γ_C: give its triangles in contact_mesh.mesh",
                     origin, surface.area(), (surface.bounds()[1] - surface.bounds()[0]).prod()));
   overlaps_ = clip_faces();
 }
@@ -175,7 +177,7 @@ SurfaceMultiplierMesh::SurfaceMultiplierMesh(const FlatContactSurface& surface, 
   const double size = (hi - lo).norm(), scale = (hi - lo).prod();
   for (const SolidPoint& x : vertices) {
     const double off = surface.normal().dot(x - surface.from_plane(surface.to_plane(x)));
-    if (std::abs(off) > 1e-9 * size)
+    if (!(std::abs(off) <= 1e-9 * size))  // (a NaN coordinate fails too)
       throw InputError(fmt::format("{}: vertex ({}, {}, {}) of T_{{C,H}} lies {:.3g} off the plane of Γ_C", origin,
                                    x(0), x(1), x(2), off));
   }
@@ -185,7 +187,7 @@ SurfaceMultiplierMesh::SurfaceMultiplierMesh(const FlatContactSurface& surface, 
     for (int k = 0; k < 3; ++k) corners[k] = surface.to_plane(vertices.at(static_cast<std::size_t>(triangle[k])));
     double twice = (corners[1] - corners[0])(0) * (corners[2] - corners[0])(1) -
                    (corners[1] - corners[0])(1) * (corners[2] - corners[0])(0);
-    if (std::abs(twice) <= 1e-14 * scale)
+    if (!(std::abs(twice) > 1e-14 * scale))
       throw InputError(fmt::format("{}: triangle {} of T_{{C,H}} has no area", origin, triangles_.size()));
     if (twice < 0.0) std::swap(corners[1], corners[2]);
     area += 0.5 * std::abs(twice);
@@ -194,12 +196,41 @@ SurfaceMultiplierMesh::SurfaceMultiplierMesh(const FlatContactSurface& surface, 
   overlaps_ = clip_triangles();
   double covered = 0.0;
   for (const auto& overlap : overlaps_) covered += signed_area(overlap.polygon);
-  if (std::abs(area - surface.area()) > 1e-9 * surface.area() ||
-      std::abs(covered - surface.area()) > 1e-9 * surface.area())
+  // Inside Γ_C (covered = area) and nowhere twice (no two triangles overlap), with the area of Γ_C:
+  // then they cover it once.
+  if (!(std::abs(area - surface.area()) <= 1e-9 * surface.area()) ||
+      !(std::abs(covered - surface.area()) <= 1e-9 * surface.area()))
     throw InputError(
         fmt::format("{}: the triangles of T_{{C,H}} do not cover Γ_C once: their area is {:.10g}, the part "
                     "of Γ_C they cover {:.10g}, Γ_C's area {:.10g}",
                     origin, area, covered, surface.area()));
+  if (const auto pair = overlapping_triangles(1e-9 * surface.area()))
+    throw InputError(fmt::format("{}: triangles {} and {} of T_{{C,H}} overlap: they do not cover Γ_C once", origin,
+                                 pair->first, pair->second));
+}
+
+std::optional<std::pair<int, int>> SurfaceMultiplierMesh::overlapping_triangles(double tolerance) const {
+  // The triangles binned by their bounding boxes, about one per bin: only neighbours are clipped.
+  const Eigen::Vector2d lo = surface_->bounds()[0], hi = surface_->bounds()[1];
+  const int bins = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(n_cells()))));
+  const Eigen::Vector2d step = (hi - lo) / bins;
+  const auto bin_of = [&](const Eigen::Vector2d& a, int k) {
+    return std::clamp(static_cast<int>(std::floor((a(k) - lo(k)) / step(k))), 0, bins - 1);
+  };
+  std::vector<std::vector<int>> binned(static_cast<std::size_t>(bins * bins));
+  for (int c = 0; c < n_cells(); ++c) {
+    const auto [low, high] = cell_bounds(c);
+    for (int j = bin_of(low, 1); j <= bin_of(high, 1); ++j)
+      for (int i = bin_of(low, 0); i <= bin_of(high, 0); ++i)
+        binned[static_cast<std::size_t>(i + bins * j)].push_back(c);
+  }
+  for (const auto& in_bin : binned)
+    for (std::size_t a = 0; a < in_bin.size(); ++a)
+      for (std::size_t b = a + 1; b < in_bin.size(); ++b) {
+        const auto piece = clip_convex(cell_polygon(in_bin[a]), cell_polygon(in_bin[b]));
+        if (piece.size() >= 3 && signed_area(piece) > tolerance) return std::pair(in_bin[a], in_bin[b]);
+      }
+  return std::nullopt;
 }
 
 const std::array<int, 2>& SurfaceMultiplierMesh::cells_per_axis() const {
@@ -221,7 +252,7 @@ std::array<Eigen::Vector2d, 2> SurfaceMultiplierMesh::cell_bounds(int c) const {
     const auto& t = triangles_[static_cast<std::size_t>(c)];
     return {t[0].cwiseMin(t[1]).cwiseMin(t[2]), t[0].cwiseMax(t[1]).cwiseMax(t[2])};
   }
-  const auto& [lo, hi] = surface_->bounds();
+  const Eigen::Vector2d lo = surface_->bounds()[0], hi = surface_->bounds()[1];
   const int i = c % cells_[0], j = c / cells_[0];
   const Eigen::Vector2d step((hi(0) - lo(0)) / cells_[0], (hi(1) - lo(1)) / cells_[1]);
   // The last cell ends exactly at the bound (no rounding gap at the far side).
@@ -232,7 +263,7 @@ std::array<Eigen::Vector2d, 2> SurfaceMultiplierMesh::cell_bounds(int c) const {
 }
 
 std::vector<SurfaceMultiplierMesh::Overlap> SurfaceMultiplierMesh::clip_faces() const {
-  const auto& [lo, hi] = surface_->bounds();
+  const Eigen::Vector2d lo = surface_->bounds()[0], hi = surface_->bounds()[1];  // (lambdas capture them)
   const double scale = (hi - lo).prod();
   std::vector<Overlap> out;
   const auto& faces = surface_->faces();
@@ -265,7 +296,7 @@ std::vector<SurfaceMultiplierMesh::Overlap> SurfaceMultiplierMesh::clip_faces() 
 std::vector<SurfaceMultiplierMesh::Overlap> SurfaceMultiplierMesh::clip_triangles() const {
   // The faces binned by their bounding boxes on a grid of about one face per bin, so that each
   // triangle is clipped only against the faces near it.
-  const auto& [lo, hi] = surface_->bounds();
+  const Eigen::Vector2d lo = surface_->bounds()[0], hi = surface_->bounds()[1];  // (lambdas capture them)
   const auto& faces = surface_->faces();
   const int bins = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(faces.size()))));
   const Eigen::Vector2d step = (hi - lo) / bins;

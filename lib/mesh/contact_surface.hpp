@@ -7,7 +7,9 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "mesh/solid_mesh.hpp"
@@ -99,6 +101,8 @@ class SurfaceMultiplierMesh {
  private:
   std::vector<Overlap> clip_faces() const;
   std::vector<Overlap> clip_triangles() const;
+  /// Two triangles whose common part has an area above `tolerance`, if any.
+  std::optional<std::pair<int, int>> overlapping_triangles(double tolerance) const;
   const FlatContactSurface* surface_;
   CellShape shape_ = CellShape::rectangle;
   std::array<int, 2> cells_{};

@@ -153,7 +153,8 @@ void Session::generate(const std::string& path, std::optional<double> max_size, 
                                     {"Mesh.SubdivisionAlgorithm", recombine},
                                     {"Mesh.ElementOrder", 1.0}})
     l.set_number(name, value, &ierr);
-  if (max_size) l.set_number("Mesh.MeshSizeMax", *max_size, &ierr);
+  // (reset without a size: Gmsh's options outlive the model, and a size of an earlier file would stay)
+  l.set_number("Mesh.MeshSizeMax", max_size ? *max_size : 1e22, &ierr);
   // Gmsh's mesher runs in an OpenMP region: an error it throws there (General.AbortOnError >= 2,
   // the API's setting) ends the process. With 0 it logs the error and goes on; the log tells. The
   // setting is restored after: the readers of open() report their errors by it.

@@ -59,7 +59,11 @@ std::map<std::string, std::string> apply_overrides(toml::table& root, const std:
     }
     if (!key->group.empty())
       for (const auto& other : scene_keys())
-        if (other.group == key->group && other.section == key->section) place.table->erase(other.name);
+        if (other.group == key->group && other.section == key->section) {
+          place.table->erase(other.name);
+          // (a .geo's size goes with it: another size key would leave it without its file)
+          if (other.name == "mesh" && key->name != "mesh") place.table->erase("mesh_size");
+        }
     assign(*place.table, key->name, override.value);
     origins[override.key] = override.origin;
   }

@@ -8,7 +8,7 @@ const std::vector<SceneSection>& scene_sections() {
   static const std::vector<SceneSection> sections{
       {"domain", true, "Ω and T_h: a rectangle or a Gmsh mesh"},
       {"boundary", true, "the boundary parts Γ_C and Γ_D"},
-      {"contact_mesh", true, "T_{C,H}: exactly one of m, ratio, breakpoints"},
+      {"contact_mesh", true, "T_{C,H}: exactly one of m, ratio, breakpoints, mesh (3-D)"},
       {"discretization", true, "the degrees p and p_C"},
       {"data", false,
        "the data: f (scalar model); f_x, f_y, t_x, t_y, friction_coefficient (elastic effects); g (the obstacle, for "

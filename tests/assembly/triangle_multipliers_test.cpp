@@ -1,9 +1,9 @@
 // T_{C,H} of triangles on a flat Γ_C of a hexahedral mesh, against the grid T_{C,H}: a multiplier
 // that both spaces hold (a constant for p_C = 0, an affine function for p_C = 1) has the same
 // coupling row sums cᵀB = ∫ μ φ_j and the same load ∫ μ g, on triangles that cut across the trace
-// faces; the clipped overlaps tile Γ_C; a triangle mesh that misses part of Γ_C, leaves its plane
-// or has a flat triangle is refused; the Signorini problem (9) solved on triangles satisfies its
-// KKT conditions at the vertices.
+// faces; the clipped overlaps tile Γ_C; a triangle mesh that misses part of Γ_C, covers part of it
+// twice, leaves its plane or has a flat triangle is refused; an L-shaped Γ_C takes triangles; the Signorini problem (9)
+// solved on triangles satisfies its KKT conditions at the vertices.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -100,12 +100,38 @@ TEST(TriangleMultipliers, MeshesThatDoNotCoverTheSurfaceOnceAreRefused) {
   Triangulation twice = triangulate(0.0, 1.0, 0.0, 0.8, 0.5, 2, 0.0);
   twice.triangles.push_back(twice.triangles.front());
   EXPECT_THROW(mesh::SurfaceMultiplierMesh(f.surface, twice.vertices, twice.triangles, "test"), InputError);
+  // (the right area, all inside Γ_C, but overlapping each other over what they leave bare)
+  const std::vector<mesh::SolidPoint> corners{{0, 0, 0.5}, {1, 0, 0.5}, {1, 0.8, 0.5}, {0, 0.8, 0.5}};
+  EXPECT_THROW(mesh::SurfaceMultiplierMesh(f.surface, corners, {{0, 1, 2}, {1, 2, 3}}, "test"), InputError);
+  EXPECT_NO_THROW(mesh::SurfaceMultiplierMesh(f.surface, corners, {{0, 1, 2}, {0, 2, 3}}, "test"));
   Triangulation lifted = triangulate(0.0, 1.0, 0.0, 0.8, 0.5, 2, 0.0);
   lifted.vertices[4](2) += 0.01;
   EXPECT_THROW(mesh::SurfaceMultiplierMesh(f.surface, lifted.vertices, lifted.triangles, "test"), InputError);
   Triangulation flat = triangulate(0.0, 1.0, 0.0, 0.8, 0.5, 2, 0.0);
   flat.triangles.push_back({0, 1, 2});  // three vertices on the edge y = 0
   EXPECT_THROW(mesh::SurfaceMultiplierMesh(f.surface, flat.vertices, flat.triangles, "test"), InputError);
+}
+
+TEST(TriangleMultipliers, AnLShapedSurfaceTakesTheTrianglesThatCoverIt) {
+  mesh::SolidMesh box = mesh::make_box_mesh(Eigen::Vector3d::Zero(), Eigen::Vector3d(1.0, 0.8, 0.5), {3, 4, 2});
+  const auto on_l = [](const mesh::SolidPoint& x) { return x(2) > 0.5 - 1e-9 && (x(0) < 2.0 / 3.0 || x(1) < 0.4); };
+  box.label_boundary_faces(on_l, "contact");
+  const mesh::FlatContactSurface surface(box, {"contact"}, "test");
+  EXPECT_NEAR(surface.area(), 0.8 - 0.4 / 3.0, 1e-14);
+  EXPECT_THROW(mesh::SurfaceMultiplierMesh(surface, {2, 2}, "test"), InputError);  // (a grid needs a rectangle)
+  const Triangulation full = triangulate(0.0, 1.0, 0.0, 0.8, 0.5, 6, 0.0);
+  EXPECT_THROW(mesh::SurfaceMultiplierMesh(surface, full.vertices, full.triangles, "test"), InputError);
+  Triangulation l = full;
+  l.triangles.clear();
+  for (const auto& t : full.triangles) {
+    const mesh::SolidPoint centre = (full.vertices[t[0]] + full.vertices[t[1]] + full.vertices[t[2]]) / 3.0;
+    if (on_l(centre)) l.triangles.push_back(t);
+  }
+  const mesh::SurfaceMultiplierMesh triangles(surface, l.vertices, l.triangles, "test");
+  const space::SurfaceMultiplierSpace multipliers(triangles, 1);
+  const Eigen::VectorXd integrals = surface_multiplier_load(multipliers, [](const mesh::SolidPoint&) { return 1.0; });
+  EXPECT_NEAR(integrals.sum(), surface.area(), 1e-14);
+  EXPECT_EQ(triangles.n_cells(), 72 - 12);  // (6 × 6 squares less 2 × 3 of them, two triangles each)
 }
 
 TEST(TriangleMultipliers, ClippingTwoConvexPolygons) {

@@ -2,8 +2,8 @@
 // (Σ w p r² / Σ w p = 2a²/5) against Hertz's a³ = 3PR/(4E*) for the run's own P, and the pressure
 // against Hertz's in L²(Γ_C), over the whole of Γ_C and inside r < 0.8 a. On the grid T_{C,H} of
 // studies/three_d/hertz.toml the free boundary, a circle across the grid, is smeared over a cell;
-// the triangles of studies/three_d/hertz_aligned.toml follow it. Solves of 35 s / 3.3 GB and
-// 170 s / 6.3 GB: Release builds only.
+// the triangles of studies/three_d/hertz_aligned.toml follow it. Solves of 90 s / 3.3 GB and
+// 250 s / 6.3 GB on one thread: Release builds only.
 #include <gtest/gtest.h>
 
 #include <cmath>

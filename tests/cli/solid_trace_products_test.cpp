@@ -102,6 +102,13 @@ TEST(SolidTraceProducts, TriangleMultiplierMeshesRefuseWhatTheyCannotDo) {
   expect_refused(quadratic, "discretization.pC");
   const auto alpha = run("solve " + scene + " --effects infsup --out " + (scratch("triangles_alpha") / "out").string());
   expect_refused(alpha, "contact_mesh.mesh");
+  const auto fine = run("solve " + scene + " --set contact_mesh.mesh_size=1e-4 --out " +
+                        (scratch("triangles_fine") / "out").string());
+  expect_refused(fine, "contact_mesh.mesh_size");
+  const auto quads = run("solve " + kStudies + "three_d/extruded_signorini.toml --set 'contact_mesh.mesh=\"" +
+                         std::string(HPCONTACT_SOURCE_DIR) + "/tests/data/square_2x2.msh\"' --out " +
+                         (scratch("triangles_quads") / "out").string());
+  expect_refused(quads, "contact_mesh.mesh");
   const auto planar = run("solve " + kStudies + "paper/figure1_signorini.toml --set 'contact_mesh.mesh=\"" +
                           kTriangles + "\"' --out " + (scratch("triangles_planar") / "out").string());
   expect_refused(planar, "contact_mesh.mesh");
