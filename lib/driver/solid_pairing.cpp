@@ -54,6 +54,7 @@ SolidAlpha solid_scene_alpha(const scene::Scene& scene, const SolidDiscretizatio
     setup.friction_bound = solid_scene_function(scene, scene.friction_bound, "data.s");
   setup.alpha_tolerance = scene.alpha_tolerance;
   setup.gram_factor = gram_factor;
+  setup.path = scene.alpha_operator;
   SolidAlpha out;
   out.result = infsup::analyse_solid_infsup(setup, backend);
   const SolidPairingFacts facts = solid_pairing_facts(scene, d);

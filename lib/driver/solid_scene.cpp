@@ -52,6 +52,7 @@ const std::set<std::string>& solid_scene_keys() {
                                           "infsup.norm",
                                           "infsup.problem",
                                           "infsup.alpha_tol",
+                                          "infsup.operator",
                                           "data.f",
                                           "data.g",
                                           "data.s",

@@ -38,9 +38,11 @@ void check_petsc_options(const std::vector<std::string>& arguments, const std::s
   // must not print PETSc's traceback here.
   HPC_PETSC_CALL(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr));
   std::string bad;
-  for (const std::string& extra : {std::string(), std::string("max_")}) {
+  // (the products' EPS is a Generalized Davidson, whose own options only a GD reads: infsup/products_eigen.hpp)
+  for (const std::string& extra : {std::string(), std::string("max_"), std::string("products_")}) {
     EPS eps = nullptr;
     PetscErrorCode code = EPSCreate(PETSC_COMM_SELF, &eps);
+    if (!code && extra == "products_") code = EPSSetType(eps, EPSGD);
     if (!code) code = EPSSetOptionsPrefix(eps, (options_prefix + extra).c_str());
     if (!code) code = EPSSetFromOptions(eps);
     if (code && bad.empty()) {

@@ -12,8 +12,10 @@
 #include "assembly/solid_cell_system.hpp"
 #include "assembly/solid_elastic_system.hpp"
 #include "assembly/surface_coupling.hpp"
+#include "contact/schur_products.hpp"
 #include "core/error.hpp"
 #include "core/timer.hpp"
+#include "infsup/surface_products_ladder.hpp"
 #include "norms/surface_interpolation_gram.hpp"
 #include "space/solid_vector_space.hpp"
 
@@ -85,7 +87,7 @@ linalg::Coupling elastic_coupling(const SolidInfSupSetup& setup, int copies) {
 }  // namespace
 
 assembly::CondensedFactor solid_gram_factor(const space::SolidVectorSpace& space,
-                                            const mesh::FlatContactSurface& surface) {
+                                            const mesh::FlatContactSurface& surface, bool trace_last) {
   std::set<int> trace;
   for (const auto& face : surface.faces())
     for (const int scalar : space::dofs_on_face(space.scalar(), face))
@@ -93,15 +95,16 @@ assembly::CondensedFactor solid_gram_factor(const space::SolidVectorSpace& space
         if (const int dof = space.dof(scalar, c); dof >= 0) trace.insert(dof);
   return assembly::CondensedFactor(
       std::make_unique<assembly::SolidElasticCellSystem>(assembly::SolidElasticCellSystem::vector_h1(space)),
-      std::vector<int>(trace.begin(), trace.end()));
+      trace_last ? std::vector<int>(trace.begin(), trace.end()) : std::vector<int>());
 }
 
-assembly::CondensedFactor solid_gram_factor(const space::SolidH1Space& space, const mesh::FlatContactSurface& surface) {
+assembly::CondensedFactor solid_gram_factor(const space::SolidH1Space& space, const mesh::FlatContactSurface& surface,
+                                            bool trace_last) {
   std::set<int> trace;
   for (const auto& face : surface.faces())
     for (const int dof : space::dofs_on_face(space, face)) trace.insert(dof);
   return assembly::CondensedFactor(std::make_unique<assembly::SolidScalarCellSystem>(space, 1.0, 1.0),
-                                   std::vector<int>(trace.begin(), trace.end()));
+                                   trace_last ? std::vector<int>(trace.begin(), trace.end()) : std::vector<int>());
 }
 
 InfSupResult analyse_solid_infsup(const SolidInfSupSetup& setup, EigenBackend backend) {
@@ -132,31 +135,41 @@ InfSupResult analyse_solid_infsup(const SolidInfSupSetup& setup, EigenBackend ba
   const Eigen::SparseMatrix<double> basis = elastic ? identity(copies * multipliers.n_dofs()) : active_functions(setup);
   result.seconds_assembly = phase.seconds();
 
-  // 2. S_G = Rᵀ B A_G⁻¹ Bᵀ R from A_G's trace-last factor.
+  // 2. A_G's factor; 3. the smallest eigenpair on G's ladder, S_G and G dense or by products.
   phase = Stopwatch();
+  const bool products = uses_alpha_products(setup.path, b.rows());
   std::unique_ptr<assembly::CondensedFactor> own_factor;
-  if (!setup.gram_factor)
+  if (!setup.gram_factor) {
+    // (the products need no trailing trace block: they solve on the skeleton)
+    const bool trace_last = !products;
     own_factor = std::make_unique<assembly::CondensedFactor>(
-        elastic ? solid_gram_factor(*setup.vector_space, multipliers.mesh().surface())
-                : solid_gram_factor(space, multipliers.mesh().surface()));
+        elastic ? solid_gram_factor(*setup.vector_space, multipliers.mesh().surface(), trace_last)
+                : solid_gram_factor(space, multipliers.mesh().surface(), trace_last));
+  }
   const assembly::CondensedFactor& factor = setup.gram_factor ? *setup.gram_factor : *own_factor;
-  const Eigen::MatrixXd s_g = restrict(factor.schur_complement(b), basis);
-  result.seconds_primal = phase.seconds();
-
-  // 3. G on its ladder and the smallest eigenpair.
-  std::unique_ptr<norms::GramLadder> own_ladder;
-  if (!setup.grams)
-    own_ladder = std::make_unique<norms::GramLadder>(norms::surface_interpolation_gram_ladder(multipliers));
-  const norms::GramLadder& grams = setup.grams ? *setup.grams : *own_ladder;
-  const double seconds_gram_before = grams.seconds();
-  const LadderSolution solved = smallest_on_ladder(s_g, basis, copies, grams, backend, setup.alpha_tolerance);
+  LadderSolution solved;
+  if (products) {
+    const contact::TraceOperator s_g = contact::schur_products(factor, b);
+    result.seconds_primal = phase.seconds();
+    solved = smallest_on_products_ladder(s_g, basis, copies, multipliers, setup.alpha_tolerance);
+    result.seconds_eigen = solved.seconds_eigen;
+  } else {
+    const Eigen::MatrixXd s_g = restrict(factor.schur_complement(b), basis);
+    result.seconds_primal = phase.seconds();
+    std::unique_ptr<norms::GramLadder> own_ladder;
+    if (!setup.grams)
+      own_ladder = std::make_unique<norms::GramLadder>(norms::surface_interpolation_gram_ladder(multipliers));
+    const norms::GramLadder& grams = setup.grams ? *setup.grams : *own_ladder;
+    const double seconds_gram_before = grams.seconds();
+    solved = smallest_on_ladder(s_g, basis, copies, grams, backend, setup.alpha_tolerance);
+    result.seconds_eigen = solved.seconds_eigen;
+    result.seconds_gram = grams.seconds() - seconds_gram_before;
+  }
   result.alpha = solved.alpha;
   result.lambda_min = solved.lambda_min;
   result.alpha_error = solved.alpha_error;
   result.reference_level = solved.reference_level;
   result.alpha_converged = solved.alpha_converged;
-  result.seconds_eigen = solved.seconds_eigen;
-  result.seconds_gram = grams.seconds() - seconds_gram_before;
   result.lambda_max = solved.pair.largest_eigenvalue;
   result.singular = result.lambda_min <= kRoundOffZero * result.lambda_max;
   result.mode = basis * solved.pair.eigenvector;

@@ -6,12 +6,13 @@
 // the normal multiplier with v·n (signorini), or of the normal and the two tangential ones with
 // (v·n, v·e_1, v·e_2) (friction; G = diag(G, G, G)); and G the interpolation norm of H^{-1/2}(Γ_C)
 // (norms/surface_interpolation_gram.hpp), refined on its ladder until α's error estimate is below
-// the tolerance, as in 2-D (infsup/infsup_analysis.hpp). S_G is dense: B A_G⁻¹ Bᵀ from the trailing
-// block of A_G's factor with Γ_C's trace last.
+// the tolerance, as in 2-D (infsup/infsup_analysis.hpp). S_G is dense, B A_G⁻¹ Bᵀ from the trailing
+// block of A_G's factor with Γ_C's trace last, or applied by products with G (many multipliers).
 #pragma once
 
 #include "assembly/condensed_factor.hpp"
 #include "assembly/solid_load.hpp"
+#include "contact/trace_operator.hpp"
 #include "infsup/infsup_analysis.hpp"
 #include "mesh/contact_surface.hpp"
 #include "space/solid_space.hpp"
@@ -20,12 +21,23 @@
 
 namespace hpcontact::infsup {
 
-/// A_G = K + M on `space` with every dof of Γ_C (`surface`) last: one factor serves every
-/// multiplier space on Γ_C (a sweep's p_C and H on one T_h).
-assembly::CondensedFactor solid_gram_factor(const space::SolidH1Space& space, const mesh::FlatContactSurface& surface);
+/// A_G = K + M on `space` with every dof of Γ_C (`surface`) last (`trace_last`; the dense S_G is
+/// its trailing block, the products need no such order): one factor serves every multiplier space
+/// on Γ_C (a sweep's p_C and H on one T_h).
+assembly::CondensedFactor solid_gram_factor(const space::SolidH1Space& space, const mesh::FlatContactSurface& surface,
+                                            bool trace_last = true);
 /// The same for the vector H¹ Gram matrix on [Q_p]³ (every component of the dofs of Γ_C last).
 assembly::CondensedFactor solid_gram_factor(const space::SolidVectorSpace& space,
-                                            const mesh::FlatContactSurface& surface);
+                                            const mesh::FlatContactSurface& surface, bool trace_last = true);
+
+/// Whether α takes the products path (surface_products_ladder.hpp) for `multipliers` rows of B:
+/// `automatic` from kAlphaProductsFrom multipliers on, where the dense path's n solves, n² memory
+/// and n³ eigensolve cost more (docs/three_d.md, "α by products").
+inline constexpr long kAlphaProductsFrom = 1500;
+inline bool uses_alpha_products(contact::SchurPath path, Eigen::Index multipliers) {
+  if (path != contact::SchurPath::automatic) return path == contact::SchurPath::products;
+  return multipliers >= kAlphaProductsFrom;
+}
 
 struct SolidInfSupSetup {
   const space::SolidH1Space* space = nullptr;
@@ -39,6 +51,9 @@ struct SolidInfSupSetup {
   /// `multipliers` (surface_interpolation_gram_ladder).
   const assembly::CondensedFactor* gram_factor = nullptr;
   const norms::GramLadder* grams = nullptr;
+  /// S_G and G formed densely, or applied by products (uses_alpha_products); the products ignore
+  /// `grams` and the backend, and need a factor with or without the trace last.
+  contact::SchurPath path = contact::SchurPath::automatic;
 };
 
 /// α with the fields of InfSupResult: h the longest edge of T_h, H the longest side of the cells

@@ -35,8 +35,12 @@ enum class GramSummation { cheaper, direct, exponential_sum };
 Eigen::MatrixXd surface_interpolation_gram(const space::SurfaceMultiplierSpace& multipliers, std::array<int, 2> modes,
                                            GramSummation summation = GramSummation::cheaper);
 
-/// Level ℓ keeps 8 · 2^ℓ cosine modes per multiplier function along each axis ((p_C + 1) m_k per
-/// axis k), levels 0 … 5. `multipliers` must outlive the ladder.
+/// The ladder's levels: ℓ = 0 … kSurfaceGramTopLevel, level ℓ keeping 8 · 2^ℓ cosine modes per
+/// multiplier function along each axis ((p_C + 1) m_k functions along axis k).
+inline constexpr int kSurfaceGramTopLevel = 5;
+std::array<int, 2> surface_gram_modes(const space::SurfaceMultiplierSpace& multipliers, int level);
+
+/// G on the levels of surface_gram_modes. `multipliers` must outlive the ladder.
 GramLadder surface_interpolation_gram_ladder(const space::SurfaceMultiplierSpace& multipliers);
 
 }  // namespace hpcontact::norms

@@ -127,6 +127,7 @@ struct Scene {
   infsup::PairingProblem problem = infsup::PairingProblem::signorini;
   operators::PrimalNorm primal_norm = operators::PrimalNorm::h1;  ///< elastic scenes: h1 or energy
   double alpha_tolerance = 1e-4;
+  contact::SchurPath alpha_operator = contact::SchurPath::automatic;  ///< infsup.operator (3-D)
   // [solve]
   /// |𝒞| per segment (Remark 3): one value, or one per zone of Γ_C; empty: p_C + 1.
   std::vector<int> constraint_points;

@@ -264,6 +264,15 @@ void add_run_keys(std::vector<SceneKey>& keys) {
       "norm of the displacement in α of an elastic scene: vector H¹, or the energy a(v, v) + ‖v‖² (depends on E, ν)"));
   add(number_key("infsup", "alpha_tol", 1e-12, 0.1, 1e-4, &Scene::alpha_tolerance,
                  "relative error of α: the H^{-1/2} reference is refined until the estimate is below it"));
+  add(choice_key<contact::SchurPath>(
+      "infsup", "operator",
+      {{"auto", contact::SchurPath::automatic},
+       {"dense", contact::SchurPath::dense},
+       {"products", contact::SchurPath::products}},
+      contact::SchurPath::automatic, &Scene::alpha_operator,
+      "3-D scenes: α from S_G = B A_G⁻¹ Bᵀ and G formed densely, or from products only (Davidson; S_G one solve "
+      "with A_G's factor per product, G by its cosine moments; memory linear in the multipliers); auto: products "
+      "from 1500 multipliers"));
   // [solve]
   add({"solve", "constraint_points", "integer or list", "p_C + 1",
        "[1, 64], at least p_C + 1; one value, or one per zone of Γ_C",

@@ -73,7 +73,7 @@ std::map<std::string, std::string> apply_overrides(toml::table& root, const std:
 void check_domain(const Scene& scene) {
   if (scene.dimension() == 2)
     for (const char* key : {"domain.grading_z", "boundary.fixed_z", "data.f_z", "solve.trace_operator",
-                            "contact_mesh.mesh", "contact_mesh.mesh_size"})
+                            "infsup.operator", "contact_mesh.mesh", "contact_mesh.mesh_size"})
       if (scene.given.contains(key))
         throw_bad_input(scene.where(key), key, "(given)", "only in a 3-D scene (a box: domain.n_z given)");
   if (!scene.is_rectangle()) {
