@@ -137,7 +137,7 @@ InfSupResult analyse_solid_infsup(const SolidInfSupSetup& setup, EigenBackend ba
 
   // 2. A_G's factor; 3. the smallest eigenpair on G's ladder, S_G and G dense or by products.
   phase = Stopwatch();
-  const bool products = uses_alpha_products(setup.path, b.rows());
+  const bool products = uses_alpha_products(setup.path, b.rows(), backend);
   std::unique_ptr<assembly::CondensedFactor> own_factor;
   if (!setup.gram_factor) {
     // (the products need no trailing trace block: they solve on the skeleton)

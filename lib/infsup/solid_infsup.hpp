@@ -31,12 +31,15 @@ assembly::CondensedFactor solid_gram_factor(const space::SolidVectorSpace& space
                                             const mesh::FlatContactSurface& surface, bool trace_last = true);
 
 /// Whether α takes the products path (surface_products_ladder.hpp) for `multipliers` rows of B:
-/// `automatic` from kAlphaProductsFrom multipliers on, where the dense path's n solves, n² memory
-/// and n³ eigensolve cost more (docs/three_d.md, "α by products").
-inline constexpr long kAlphaProductsFrom = 1500;
-inline bool uses_alpha_products(contact::SchurPath path, Eigen::Index multipliers) {
+/// `automatic` with the SLEPc backend from kAlphaProductsFrom multipliers on (the dense backend is
+/// the LAPACK-type reference and keeps S_G and G dense). Measured on the cube of
+/// studies/three_d/cube.toml (n³ hexahedra, p = 2, p_C = 1, H = 2h, one thread): 0.41 s on both
+/// paths at 16 multipliers, 0.59 s against 1.09 s at 64, 1.44 s against 3.19 s at 144
+/// (docs/three_d.md, "α by products").
+inline constexpr long kAlphaProductsFrom = 64;
+inline bool uses_alpha_products(contact::SchurPath path, Eigen::Index multipliers, EigenBackend backend) {
   if (path != contact::SchurPath::automatic) return path == contact::SchurPath::products;
-  return multipliers >= kAlphaProductsFrom;
+  return backend == EigenBackend::slepc && multipliers >= kAlphaProductsFrom;
 }
 
 struct SolidInfSupSetup {

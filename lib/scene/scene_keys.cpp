@@ -272,7 +272,7 @@ void add_run_keys(std::vector<SceneKey>& keys) {
       contact::SchurPath::automatic, &Scene::alpha_operator,
       "3-D scenes: α from S_G = B A_G⁻¹ Bᵀ and G formed densely, or from products only (Davidson; S_G one solve "
       "with A_G's factor per product, G by its cosine moments; memory linear in the multipliers); auto: products "
-      "from 1500 multipliers"));
+      "from 64 multipliers unless --eigensolver dense"));
   // [solve]
   add({"solve", "constraint_points", "integer or list", "p_C + 1",
        "[1, 64], at least p_C + 1; one value, or one per zone of Γ_C",

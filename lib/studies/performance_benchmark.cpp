@@ -48,13 +48,13 @@ PerformanceBenchmark read_performance_benchmark(const std::string& path) {
   }
   const std::vector<std::string> allowed{"signorini",       "friction",        "friction_s", "alpha",
                                          "alpha_predicted", "alpha_extension", "assembled",  "elastic",
-                                         "two_body",        "three_d",         "startup"};
+                                         "two_body",        "three_d",         "three_d_alpha",   "startup"};
   out.kinds = table.string_list("kinds", allowed);
   for (const auto& kind : out.kinds)
     if (std::find(allowed.begin(), allowed.end(), kind) == allowed.end())
       throw_bad_input(path, "benchmark.kinds", kind,
                       "any of signorini, friction, friction_s, alpha, alpha_predicted, alpha_extension, assembled, "
-                      "elastic, two_body, three_d, startup");
+                      "elastic, two_body, three_d, three_d_alpha, startup");
   table.reject_unknown_keys();
   root.reject_unknown_keys();
   return out;
@@ -253,7 +253,8 @@ std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& 
 
     for (const auto& kind : benchmark.kinds)
       if (kind != "alpha" && kind != "alpha_predicted" && kind != "alpha_extension" && kind != "assembled" &&
-          kind != "elastic" && kind != "two_body" && kind != "three_d" && kind != "startup")
+          kind != "elastic" && kind != "two_body" && kind != "three_d" && kind != "three_d_alpha" &&
+          kind != "startup")
         add(contact_row(kind, scene, *discretization, base, linear_k));
     BenchmarkRow linear_ag = base;
     linear_ag.kind = "linear_AG";
@@ -275,6 +276,7 @@ std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& 
     if (has("elastic")) add_elastic_rows(benchmark, scene, base, add);
     if (has("two_body")) add_two_body_rows(benchmark, base, add);
     if (has("three_d")) add_solid_rows(benchmark, base, add);
+    if (has("three_d_alpha")) add_solid_alpha_rows(benchmark, base, add);
   }
   return rows;
 }

@@ -37,7 +37,8 @@ struct BenchmarkRow {
   std::string kind;  ///< "linear_K", "linear_AG", a contact problem, "alpha", "linear_K_assembled",
                      ///< "linear_AG_assembled", "linear_A", "elastic_frictionless", "elastic_coulomb",
                      ///< "linear_A_two_body", "two_body_frictionless", "linear_A_3d",
-                     ///< "three_d_frictionless_dense", "three_d_frictionless_products", "startup"
+                     ///< "three_d_frictionless_dense", "three_d_frictionless_products", "linear_AG_3d",
+                     ///< "alpha_3d_products", "alpha_3d_dense", "startup"
   int p = 0, pc = 0, n = 0, m = 0, ndofs = 0, nmult = 0, n_trace = 0;
   double seconds_assembly = 0.0;  ///< not part of either side of the ratio
   double seconds_baseline = 0.0;  ///< one linear solve of the same matrix

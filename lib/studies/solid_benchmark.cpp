@@ -1,17 +1,21 @@
-// add_solid_rows: the elastic cube at level n, the baseline and the contact solve on both paths.
+// add_solid_rows: the elastic cube at level n, the baseline and the contact solve on both paths;
+// add_solid_alpha_rows: the scalar slab, the baseline and α on both paths.
 #include "studies/solid_benchmark.hpp"
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "assembly/condensed_factor.hpp"
+#include "assembly/solid_cell_system.hpp"
 #include "assembly/solid_elastic_system.hpp"
 #include "contact/solid_elastic_contact.hpp"
 #include "core/error.hpp"
 #include "core/timer.hpp"
 #include "driver/solid_scene.hpp"
+#include "infsup/solid_infsup.hpp"
 #include "scene/scene_reader.hpp"
 
 namespace hpcontact::studies {
@@ -48,7 +52,88 @@ g = "0.02 + 0.1 * (x^2 + y^2)"
 effects = ["frictionless"]
 )toml";
 
+// The scalar slab (−1, 1)² × (−1, −1 + 2 n_z / n) of cubes, clamped on top, Γ_C its bottom: the
+// pairing (11) of the stability study on a box whose trace carries many multipliers.
+const char* const kSlab = R"toml(
+[domain]
+x_min = -1.0
+x_max = 1.0
+y_min = -1.0
+y_max = 1.0
+z_min = -1.0
+z_max = 1.0
+n_x = 4
+n_y = 4
+n_z = 4
+[boundary]
+contact = "abs(z + 1) < 1e-9"
+dirichlet = "z > -1 + 1e-9 && abs(z - z_top) < 1e-9"
+[contact_mesh]
+ratio = "1/2"
+[discretization]
+p = 2
+pC = 1
+[data]
+f = "-1"
+g = "0"
+[run]
+effects = ["infsup"]
+)toml";
+
 }  // namespace
+
+void add_solid_alpha_rows(const PerformanceBenchmark& benchmark, BenchmarkRow base,
+                          const std::function<void(BenchmarkRow)>& add) {
+  const std::string origin = benchmark.file + ": kind 'three_d_alpha'";
+  const long long n = base.n, n_z = std::max(2LL, n / 16);
+  const double z_top = -1.0 + 2.0 * static_cast<double>(n_z) / static_cast<double>(n);
+  std::string text = kSlab;
+  text.replace(text.find("z_top"), 5, fmt::format("({:.17g})", z_top));
+  const auto scene = scene::parse_scene(text, "3-D α benchmark scene",
+                                        {{"domain.n_x", n, origin},
+                                         {"domain.n_y", n, origin},
+                                         {"domain.n_z", n_z, origin},
+                                         {"domain.z_max", z_top, origin},
+                                         {"contact_mesh.ratio", benchmark.ratio, origin},
+                                         {"discretization.p", static_cast<long long>(benchmark.p), origin},
+                                         {"discretization.pC", static_cast<long long>(benchmark.pc), origin}});
+  const auto d = driver::discretize_solid_scene(scene);
+  base.ndofs = d->space->n_dofs();
+  base.m = d->multiplier_mesh->n_cells();
+  base.nmult = d->multipliers->n_dofs();
+
+  BenchmarkRow linear = base;
+  linear.kind = "linear_AG_3d";
+  {
+    Stopwatch clock;
+    const assembly::CondensedFactor factor(std::make_unique<assembly::SolidScalarCellSystem>(*d->space, 1.0, 1.0));
+    HPC_VERIFY(factor.solve(Eigen::VectorXd(Eigen::VectorXd::Ones(factor.size()))).allFinite(),
+               "baseline solve gave a non-finite result");
+    linear.seconds_baseline = linear.seconds = clock.seconds();
+  }
+  add(linear);
+  infsup::SolidInfSupSetup setup;
+  setup.space = d->space.get();
+  setup.multipliers = d->multipliers.get();
+  double products_alpha = 0.0;
+  // (the dense path up to kDenseAlphaUpTo multipliers: its n² memory and n³ time are what the
+  // products avoid)
+  for (const auto path : {contact::SchurPath::products, contact::SchurPath::dense}) {
+    if (path == contact::SchurPath::dense && base.nmult > kDenseAlphaUpTo) continue;
+    setup.path = path;
+    Stopwatch clock;
+    const infsup::InfSupResult result = infsup::analyse_solid_infsup(setup, infsup::EigenBackend::slepc);
+    BenchmarkRow row = linear;
+    row.kind = path == contact::SchurPath::dense ? "alpha_3d_dense" : "alpha_3d_products";
+    row.seconds = clock.seconds();
+    if (path == contact::SchurPath::products) products_alpha = result.alpha;
+    // (one α on both paths: a benchmark of a wrong answer measures nothing)
+    if (!(std::abs(result.alpha - products_alpha) <= 1e-7 * products_alpha))
+      throw NumericalError(fmt::format("3-D α benchmark at n = {}: the dense path's α {} differs from the products' {}",
+                                       n, result.alpha, products_alpha));
+    add(row);
+  }
+}
 
 void add_solid_rows(const PerformanceBenchmark& benchmark, BenchmarkRow base,
                     const std::function<void(BenchmarkRow)>& add) {

@@ -1,6 +1,7 @@
-// The benchmark's kind "three_d": frictionless contact of an elastic cube on n × n × n hexahedra
+// The benchmark's kinds "three_d": frictionless contact of an elastic cube on n × n × n hexahedra
 // against a paraboloid obstacle, on both paths of S (dense from the factor's trailing block, and by
-// products), against one linear solve of the same elasticity matrix.
+// products), against one linear solve of the same elasticity matrix; and "three_d_alpha": α of a
+// scalar slab's pairing on both paths against one linear solve with A_G.
 #pragma once
 
 #include <functional>
@@ -14,5 +15,16 @@ namespace hpcontact::studies {
 /// (p, p_C, h/H of T_{C,H} on Γ_C); `base` carries p, p_C and n.
 void add_solid_rows(const PerformanceBenchmark& benchmark, BenchmarkRow base,
                     const std::function<void(BenchmarkRow)>& add);
+
+/// Multipliers up to which kind "three_d_alpha" also runs the dense path.
+inline constexpr int kDenseAlphaUpTo = 2500;
+
+/// Kind "three_d_alpha": the scalar slab (−1, 1)² × (−1, −1 + 2 n_z/n) on n × n × n_z cubes
+/// (n_z = max(2, n/16)), Γ_C the bottom, Γ_D the top, T_{C,H} by `benchmark`'s ratio and p_C. Rows
+/// "linear_AG_3d" (the baseline: factorization of A_G = K + M and one solve), "alpha_3d_products"
+/// (α by products, the factorization included) and, up to kDenseAlphaUpTo multipliers,
+/// "alpha_3d_dense". @throws NumericalError if the two α differ by more than 1e-7 relative.
+void add_solid_alpha_rows(const PerformanceBenchmark& benchmark, BenchmarkRow base,
+                          const std::function<void(BenchmarkRow)>& add);
 
 }  // namespace hpcontact::studies
