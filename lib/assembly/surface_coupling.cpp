@@ -52,13 +52,7 @@ std::vector<std::pair<Eigen::Vector2d, double>> cell_quadrature(const mesh::Surf
   std::vector<std::pair<Eigen::Vector2d, double>> out;
   if (!mesh.is_grid()) {
     const std::vector<Eigen::Vector2d> v = mesh.cell_polygon(c);
-    const Eigen::Vector2d e1 = v[1] - v[0], e2 = v[2] - v[0];
-    const double area_factor = std::abs(e1(0) * e2(1) - e1(1) * e2(0)) / 4.0;  // reference triangle area 2
-    const basis::QuadratureRule2D& rule = basis::collapsed_triangle_rule(n);
-    for (std::size_t q = 0; q < rule.weights.size(); ++q)
-      out.emplace_back(v[0] + 0.5 * (rule.xi[q] + 1.0) * e1 + 0.5 * (rule.eta[q] + 1.0) * e2,
-                       rule.weights[q] * area_factor);
-    return out;
+    return basis::plane_triangle_rule(v[0], v[1], v[2], n);
   }
   const auto [lo, hi] = mesh.cell_bounds(c);
   const Eigen::Vector2d half = 0.5 * (hi - lo);
@@ -99,17 +93,12 @@ linalg::Coupling surface_coupling(const space::SolidH1Space& space, const space:
     for (int s = 0; s < static_cast<int>(shapes.size()); ++s)
       if (shapes[s].index[axis] == side && shapes[s].dof >= 0) on_face.push_back(s);
     const int p = space.cell_degree(cell);
-    const basis::QuadratureRule2D& rule = basis::collapsed_triangle_rule(p + multipliers.degree() + 2);
     Eigen::MatrixXd local = Eigen::MatrixXd::Zero(multipliers.per_cell(), static_cast<Eigen::Index>(on_face.size()));
     Eigen::VectorXd along_u(p + 1), along_v(p + 1), slopes(p + 1);
     const auto& polygon = overlap.polygon;
     for (std::size_t k = 1; k + 1 < polygon.size(); ++k) {
-      const Eigen::Vector2d& a0 = polygon[0];
-      const Eigen::Vector2d e1 = polygon[k] - a0, e2 = polygon[k + 1] - a0;
-      const double area_factor = std::abs(e1(0) * e2(1) - e1(1) * e2(0)) / 4.0;  // reference triangle area 2
-      for (std::size_t q = 0; q < rule.weights.size(); ++q) {
-        const Eigen::Vector2d a = a0 + 0.5 * (rule.xi[q] + 1.0) * e1 + 0.5 * (rule.eta[q] + 1.0) * e2;
-        double w = rule.weights[q] * area_factor;
+      for (auto [a, w] :
+           basis::plane_triangle_rule(polygon[0], polygon[k], polygon[k + 1], p + multipliers.degree() + 2)) {
         if (weight) w *= weight(surface.from_plane(a));
         const Eigen::Vector2d t = face_coordinates(corners, a);
         basis::lobatto_values(p, t(0), along_u, slopes);

@@ -4,6 +4,7 @@
 
 #include <gsl/gsl_integration.h>
 
+#include <cmath>
 #include <map>
 #include <mutex>
 
@@ -44,6 +45,20 @@ const QuadratureRule2D& collapsed_triangle_rule(int n) {
       rule.weights.push_back(line.weights[a] * line.weights[b] * 0.5 * (1.0 - v));
     }
   return rule;
+}
+
+std::vector<std::pair<Eigen::Vector2d, double>> plane_triangle_rule(const Eigen::Vector2d& a0,
+                                                                    const Eigen::Vector2d& a1,
+                                                                    const Eigen::Vector2d& a2, int n) {
+  const Eigen::Vector2d e1 = a1 - a0, e2 = a2 - a0;
+  const double area_factor = std::abs(e1(0) * e2(1) - e1(1) * e2(0)) / 4.0;  // (the reference triangle's area is 2)
+  const QuadratureRule2D& rule = collapsed_triangle_rule(n);
+  std::vector<std::pair<Eigen::Vector2d, double>> out;
+  out.reserve(rule.weights.size());
+  for (std::size_t q = 0; q < rule.weights.size(); ++q)
+    out.emplace_back(a0 + 0.5 * (rule.xi[q] + 1.0) * e1 + 0.5 * (rule.eta[q] + 1.0) * e2,
+                     rule.weights[q] * area_factor);
+  return out;
 }
 
 }  // namespace hpcontact::basis

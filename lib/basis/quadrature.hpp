@@ -1,7 +1,9 @@
 // Gauss–Legendre quadrature on [-1,1] (GSL), and the collapsed (Duffy) rule on the reference
-// triangle (-1,-1), (1,-1), (-1,1) built from it.
+// triangle (-1,-1), (1,-1), (-1,1) built from it, also mapped onto any plane triangle.
 #pragma once
 
+#include <Eigen/Core>
+#include <utility>
 #include <vector>
 
 namespace hpcontact::basis {
@@ -24,6 +26,12 @@ struct QuadratureRule2D {
 /// mapped by ξ = (1 + u)(1 − v)/2 − 1, η = v, weights times (1 − v)/2. Exact for polynomials of
 /// total degree ≤ 2n − 2. Cached like gauss_legendre.
 const QuadratureRule2D& collapsed_triangle_rule(int n);
+
+/// collapsed_triangle_rule(n) mapped affinely onto the plane triangle (a0, a1, a2) (either
+/// orientation): (point, weight) pairs whose weights sum to its area.
+std::vector<std::pair<Eigen::Vector2d, double>> plane_triangle_rule(const Eigen::Vector2d& a0,
+                                                                    const Eigen::Vector2d& a1,
+                                                                    const Eigen::Vector2d& a2, int n);
 
 /// Number of Gauss points that integrates polynomials of degree `degree` exactly.
 inline int gauss_points_for_degree(int degree) { return degree / 2 + 1; }

@@ -39,17 +39,12 @@ void for_each_contact_sample(const space::SurfaceMultiplierSpace& multipliers,
                                                       const mesh::SolidPoint&, double)>& visit) {
   const mesh::SurfaceMultiplierMesh& multiplier_mesh = multipliers.mesh();
   const mesh::FlatContactSurface& surface = multiplier_mesh.surface();
-  const basis::QuadratureRule2D& rule = basis::collapsed_triangle_rule(multipliers.degree() + 2);
   for (const auto& overlap : multiplier_mesh.overlaps()) {
     const auto& polygon = overlap.polygon;
-    for (std::size_t k = 1; k + 1 < polygon.size(); ++k) {
-      const Eigen::Vector2d e1 = polygon[k] - polygon[0], e2 = polygon[k + 1] - polygon[0];
-      const double area_factor = std::abs(e1(0) * e2(1) - e1(1) * e2(0)) / 4.0;  // reference triangle area 2
-      for (std::size_t q = 0; q < rule.weights.size(); ++q) {
-        const Eigen::Vector2d a = polygon[0] + 0.5 * (rule.xi[q] + 1.0) * e1 + 0.5 * (rule.eta[q] + 1.0) * e2;
-        visit(surface.faces()[overlap.face], overlap.cell, a, surface.from_plane(a), rule.weights[q] * area_factor);
-      }
-    }
+    for (std::size_t k = 1; k + 1 < polygon.size(); ++k)
+      for (const auto& [a, w] :
+           basis::plane_triangle_rule(polygon[0], polygon[k], polygon[k + 1], multipliers.degree() + 2))
+        visit(surface.faces()[overlap.face], overlap.cell, a, surface.from_plane(a), w);
   }
 }
 

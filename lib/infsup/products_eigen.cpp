@@ -101,19 +101,19 @@ void rethrow_callback_errors(const Operators& operators) {
     if (callback->error) std::rethrow_exception(callback->error);
 }
 
-/// Generalized Davidson (or the -…eps_type given) for one end of the spectrum; `scale` > 0 makes the test relative to
-/// it, else to |λ|.
-Eigensolve run_eigensolver(Operators& operators, EPSWhich which, double tolerance, double scale,
-                           const Eigen::VectorXd& start, const std::string& prefix) {
+/// Generalized Davidson (or the -…eps_type given) for the smallest eigenvalue, its residual norm
+/// tested relative to `scale` (λ_max ‖G‖).
+Eigensolve run_eigensolver(Operators& operators, double tolerance, double scale, const Eigen::VectorXd& start,
+                           const std::string& prefix) {
   EpsHandle eps;
   HPC_PETSC_CALL(EPSCreate(PETSC_COMM_SELF, eps.out()));
   HPC_PETSC_CALL(EPSSetOperators(eps.get(), operators.s_matrix.get(), operators.g_matrix.get()));
   HPC_PETSC_CALL(EPSSetProblemType(eps.get(), EPS_GHEP));
   HPC_PETSC_CALL(EPSSetType(eps.get(), EPSGD));
-  HPC_PETSC_CALL(EPSSetWhichEigenpairs(eps.get(), which));
+  HPC_PETSC_CALL(EPSSetWhichEigenpairs(eps.get(), EPS_SMALLEST_REAL));
   HPC_PETSC_CALL(EPSSetDimensions(eps.get(), 1, PETSC_DEFAULT, PETSC_DEFAULT));
   HPC_PETSC_CALL(EPSSetTolerances(eps.get(), tolerance, 2000));
-  if (scale > 0.0) HPC_PETSC_CALL(EPSSetConvergenceTestFunction(eps.get(), relative_to_scale, &scale, nullptr));
+  HPC_PETSC_CALL(EPSSetConvergenceTestFunction(eps.get(), relative_to_scale, &scale, nullptr));
   ST st = nullptr;
   KSP ksp = nullptr;
   PC pc = nullptr;
@@ -132,7 +132,10 @@ Eigensolve run_eigensolver(Operators& operators, EPSWhich which, double toleranc
   HPC_PETSC_CALL(EPSSetInitialSpace(eps.get(), 1, &initial_vec));
   HPC_PETSC_CALL(EPSSetOptionsPrefix(eps.get(), prefix.c_str()));
   HPC_PETSC_CALL(EPSSetFromOptions(eps.get()));
+  // (a callback's exception ends the solve with an error code: returned quietly, then rethrown)
+  HPC_PETSC_CALL(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr));
   const PetscErrorCode solved = EPSSolve(eps.get());
+  PetscPopErrorHandler();
   rethrow_callback_errors(operators);
   HPC_PETSC_CALL(solved);
   PetscInt converged = 0, iterations = 0;
@@ -143,10 +146,9 @@ Eigensolve run_eigensolver(Operators& operators, EPSWhich which, double toleranc
     PetscInt max_iterations = 0;
     HPC_PETSC_CALL(EPSGetTolerances(eps.get(), &tol, &max_iterations));
     throw NumericalError(
-        fmt::format("α by products: the eigensolver for the {} eigenvalue of (S_G, G) did not converge in {} "
-                    "iterations (tolerance {:.1e}; "
-                    "raise -{}eps_max_it or -{}eps_tol)",
-                    which == EPS_SMALLEST_REAL ? "smallest" : "largest", iterations, tol, prefix, prefix));
+        fmt::format("α by products: the eigensolver for the smallest eigenvalue of (S_G, G) did not converge in {} "
+                    "iterations (tolerance {:.1e}; raise -{}eps_max_it or -{}eps_tol)",
+                    iterations, tol, prefix, prefix));
   }
   Eigensolve out;
   VecHandle vector;
@@ -185,23 +187,30 @@ RitzEstimate krylov_ritz_estimate(const PencilProducts& pencil, int max_steps) {
     const Eigen::MatrixXd b = basis.leftCols(used).transpose() * g_basis.leftCols(used);
     const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> ritz(0.5 * (a + a.transpose()),
                                                                          0.5 * (b + b.transpose()));
+    if (ritz.info() != Eigen::Success) {
+      if (k == 0) throw NumericalError("α by products: vᵀ G v ≤ 0 for the start vector: G is not positive definite");
+      break;  // (a nearly dependent basis: keep the previous step's estimate)
+    }
     out.largest = ritz.eigenvalues()(k);
+    out.g_norm = std::max(out.g_norm, b.selfadjointView<Eigen::Lower>().eigenvalues().maxCoeff());
     out.smallest_vector = basis.leftCols(used) * ritz.eigenvectors().col(0);
     out.steps = used;
     if (k > 2 && std::abs(out.largest - previous) <= 1e-6 * std::abs(out.largest)) break;
     previous = out.largest;
     // the next direction T S v, orthonormalized against the basis (twice: it stays orthonormal)
     Eigen::VectorXd w = pencil.preconditioner(s_basis.col(k));
+    const double before = w.norm();
     for (int pass = 0; pass < 2; ++pass) w -= basis.leftCols(used) * (basis.leftCols(used).transpose() * w);
     const double norm = w.norm();
-    if (!(norm > 1e-12 * std::max(1.0, w.cwiseAbs().maxCoeff()))) break;  // an invariant subspace
+    if (!(norm > 1e-10 * before)) break;  // an invariant subspace
     v = w / norm;
   }
   return out;
 }
 
-SmallestEigenpair smallest_eigenpair_products(const PencilProducts& pencil, const Eigen::VectorXd& initial,
-                                              double scale, double tolerance, const std::string& options_prefix) {
+SmallestEigenpair smallest_eigenpair_products(const PencilProducts& pencil, const RitzEstimate& estimate,
+                                              const Eigen::VectorXd& initial, double tolerance,
+                                              const std::string& options_prefix) {
   HPC_VERIFY(pencil.size > 0 && pencil.s && pencil.g && pencil.preconditioner,
              "smallest_eigenpair_products: an empty pencil or a missing product");
   HPC_VERIFY(initial.size() == 0 || initial.size() == pencil.size, "smallest_eigenpair_products: start of wrong size");
@@ -214,16 +223,11 @@ SmallestEigenpair smallest_eigenpair_products(const PencilProducts& pencil, cons
   make_shell_matrix(pencil.size, operators.s, operators.s_matrix);
   make_shell_matrix(pencil.size, operators.g, operators.g_matrix);
   const std::string prefix = options_prefix + "products_";
-  Eigen::VectorXd start = initial;
-  double lambda_max = scale;
-  if (start.size() == 0 || !(lambda_max > 0.0)) {
-    const RitzEstimate ritz = krylov_ritz_estimate(pencil);
-    if (!(lambda_max > 0.0)) lambda_max = ritz.largest;
-    if (start.size() == 0) start = ritz.smallest_vector;
-  }
-  if (!(lambda_max > 0.0))
+  const double lambda_max = estimate.largest;
+  if (!(lambda_max > 0.0) || !(estimate.g_norm > 0.0))
     throw NumericalError(fmt::format("α by products: λ_max of (S_G, G) is {:.3e}: S_G vanishes", lambda_max));
-  Eigensolve smallest = run_eigensolver(operators, EPS_SMALLEST_REAL, tolerance, lambda_max, start, prefix);
+  const Eigen::VectorXd& start = initial.size() > 0 ? initial : estimate.smallest_vector;
+  Eigensolve smallest = run_eigensolver(operators, tolerance, lambda_max * estimate.g_norm, start, prefix);
   double lambda = smallest.lambda;
   if (lambda < 0.0) {
     // As the dense paths: a zero eigenvalue moved by round-off is 0, a clearly negative one an error.

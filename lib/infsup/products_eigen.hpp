@@ -27,6 +27,7 @@ struct PencilProducts {
 /// few digits are all it needs.)
 struct RitzEstimate {
   double largest = 0.0;
+  double g_norm = 0.0;  ///< ‖G‖₂ from below: the largest Ritz value of G on the same space
   Eigen::VectorXd smallest_vector;
   int steps = 0;
 };
@@ -34,20 +35,19 @@ RitzEstimate krylov_ritz_estimate(const PencilProducts& pencil, int max_steps = 
 
 /// EPS on PETSC_COMM_SELF with MATSHELL operators, problem type GHEP, Generalized Davidson (EPSGD:
 /// each product enters its search space once; LOBPCG, -infsup_products_eps_type lobpcg, took 3.7×
-/// the products on the 3-D cube of docs/three_d.md) preconditioned by T through STPRECOND +
-/// PCSHELL, smallest real part; converged when Davidson's residual norm is below `tolerance` · λ_max
-/// (a test that holds for a singular S too, where one relative to λ would never; 1e-12 gives
-/// ‖S x − λ G x‖ / (λ_max ‖G x‖) about 1e-7, and α to 1e-11 of the dense path's, on the cubes of
-/// tests/infsup). λ_max is `scale` when positive (a nearby pencil's, the
-/// ladder's previous level), else krylov_ritz_estimate's. `initial` (optional, size rows) starts
-/// the iteration: the eigenvector of a nearby pencil; without it, krylov_ritz_estimate's smallest
-/// Ritz vector. Then EPSSetFromOptions with `options_prefix` + "products_",
-/// e.g. -infsup_products_eps_max_it, -infsup_products_eps_view. The residual reported is
-/// ‖S x − λ G x‖₂ / (λ_max ‖G x‖₂) (no ‖S‖_F without S). SLEPc must be initialized.
-/// @throws NumericalError if an eigensolve does not converge (with its estimates), λ_min < −kRoundOffZero λ_max, or
+/// the products of Davidson on the 3-D cube of docs/three_d.md) preconditioned by T through
+/// STPRECOND + PCSHELL, smallest real part; converged when Davidson's residual norm is below
+/// `tolerance` · λ_max ‖G‖ (`estimate`: krylov_ritz_estimate of this pencil or of a nearby one, the
+/// ladder's first level; a test in the pencil's own units that holds for a singular S too, where
+/// one relative to λ would never). `initial` (optional, size rows) starts the iteration: the
+/// eigenvector of a nearby pencil; without it, the estimate's smallest Ritz vector. Then
+/// EPSSetFromOptions with `options_prefix` + "products_", e.g. -infsup_products_eps_max_it,
+/// -infsup_products_eps_view. The residual reported is ‖S x − λ G x‖₂ / (λ_max ‖G x‖₂) (no ‖S‖_F
+/// without S), λ_max the estimate's. SLEPc must be initialized.
+/// @throws NumericalError if the eigensolve does not converge, λ_min < −kRoundOffZero λ_max, or
 ///         xᵀ G x ≤ 0.
-SmallestEigenpair smallest_eigenpair_products(const PencilProducts& pencil, const Eigen::VectorXd& initial = {},
-                                              double scale = 0.0, double tolerance = 1e-12,
+SmallestEigenpair smallest_eigenpair_products(const PencilProducts& pencil, const RitzEstimate& estimate,
+                                              const Eigen::VectorXd& initial = {}, double tolerance = 1e-10,
                                               const std::string& options_prefix = "infsup_");
 
 }  // namespace hpcontact::infsup

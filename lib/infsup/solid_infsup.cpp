@@ -84,6 +84,32 @@ linalg::Coupling elastic_coupling(const SolidInfSupSetup& setup, int copies) {
   return b;
 }
 
+/// Stage 3 of analyse_solid_infsup: the ladder on S_G and G dense (setup.grams or its own), or by
+/// products; the seconds of S_G (from `phase`'s start), G and the eigensolves into `result`.
+LadderSolution solve_pencil(const SolidInfSupSetup& setup, const assembly::CondensedFactor& factor,
+                            const linalg::Coupling& b, const Eigen::SparseMatrix<double>& basis, int copies,
+                            bool products, EigenBackend backend, const Stopwatch& phase, InfSupResult& result) {
+  const space::SurfaceMultiplierSpace& multipliers = *setup.multipliers;
+  LadderSolution solved;
+  if (products) {
+    const contact::TraceOperator s_g = contact::schur_products(factor, b);
+    result.seconds_primal = phase.seconds();
+    solved = smallest_on_products_ladder(s_g, basis, copies, multipliers, setup.alpha_tolerance);
+  } else {
+    const Eigen::MatrixXd s_g = restrict(factor.schur_complement(b), basis);
+    result.seconds_primal = phase.seconds();
+    std::unique_ptr<norms::GramLadder> own_ladder;
+    if (!setup.grams)
+      own_ladder = std::make_unique<norms::GramLadder>(norms::surface_interpolation_gram_ladder(multipliers));
+    const norms::GramLadder& grams = setup.grams ? *setup.grams : *own_ladder;
+    const double seconds_gram_before = grams.seconds();
+    solved = smallest_on_ladder(s_g, basis, copies, grams, backend, setup.alpha_tolerance);
+    result.seconds_gram = grams.seconds() - seconds_gram_before;
+  }
+  result.seconds_eigen = solved.seconds_eigen;
+  return solved;
+}
+
 }  // namespace
 
 assembly::CondensedFactor solid_gram_factor(const space::SolidVectorSpace& space,
@@ -137,7 +163,10 @@ InfSupResult analyse_solid_infsup(const SolidInfSupSetup& setup, EigenBackend ba
 
   // 2. A_G's factor; 3. the smallest eigenpair on G's ladder, S_G and G dense or by products.
   phase = Stopwatch();
-  const bool products = uses_alpha_products(setup.path, b.rows(), backend);
+  // (a ladder given by the caller is one of dense G: `automatic` keeps it)
+  const bool products = uses_alpha_products(setup.path, b.rows(), backend) &&
+                        (setup.grams == nullptr || setup.path == contact::SchurPath::products);
+  HPC_VERIFY(!(products && setup.grams), "analyse_solid_infsup: a ladder of dense G given to the products path");
   std::unique_ptr<assembly::CondensedFactor> own_factor;
   if (!setup.gram_factor) {
     // (the products need no trailing trace block: they solve on the skeleton)
@@ -147,24 +176,7 @@ InfSupResult analyse_solid_infsup(const SolidInfSupSetup& setup, EigenBackend ba
                 : solid_gram_factor(space, multipliers.mesh().surface(), trace_last));
   }
   const assembly::CondensedFactor& factor = setup.gram_factor ? *setup.gram_factor : *own_factor;
-  LadderSolution solved;
-  if (products) {
-    const contact::TraceOperator s_g = contact::schur_products(factor, b);
-    result.seconds_primal = phase.seconds();
-    solved = smallest_on_products_ladder(s_g, basis, copies, multipliers, setup.alpha_tolerance);
-    result.seconds_eigen = solved.seconds_eigen;
-  } else {
-    const Eigen::MatrixXd s_g = restrict(factor.schur_complement(b), basis);
-    result.seconds_primal = phase.seconds();
-    std::unique_ptr<norms::GramLadder> own_ladder;
-    if (!setup.grams)
-      own_ladder = std::make_unique<norms::GramLadder>(norms::surface_interpolation_gram_ladder(multipliers));
-    const norms::GramLadder& grams = setup.grams ? *setup.grams : *own_ladder;
-    const double seconds_gram_before = grams.seconds();
-    solved = smallest_on_ladder(s_g, basis, copies, grams, backend, setup.alpha_tolerance);
-    result.seconds_eigen = solved.seconds_eigen;
-    result.seconds_gram = grams.seconds() - seconds_gram_before;
-  }
+  const LadderSolution solved = solve_pencil(setup, factor, b, basis, copies, products, backend, phase, result);
   result.alpha = solved.alpha;
   result.lambda_min = solved.lambda_min;
   result.alpha_error = solved.alpha_error;

@@ -35,7 +35,9 @@ assembly::CondensedFactor solid_gram_factor(const space::SolidVectorSpace& space
 /// the LAPACK-type reference and keeps S_G and G dense). Measured on the cube of
 /// studies/three_d/cube.toml (n³ hexahedra, p = 2, p_C = 1, H = 2h, one thread): 0.41 s on both
 /// paths at 16 multipliers, 0.59 s against 1.09 s at 64, 1.44 s against 3.19 s at 144
-/// (docs/three_d.md, "α by products").
+/// (docs/three_d.md, "α by products"). The rule ignores the unknowns: on a thin slab of 4 356
+/// unknowns the dense path was faster at 256 multipliers (0.22 s against 0.38 s), where each
+/// product is a large part of a cheap solve.
 inline constexpr long kAlphaProductsFrom = 64;
 inline bool uses_alpha_products(contact::SchurPath path, Eigen::Index multipliers, EigenBackend backend) {
   if (path != contact::SchurPath::automatic) return path == contact::SchurPath::products;
@@ -51,11 +53,12 @@ struct SolidInfSupSetup {
   assembly::SolidFunction friction_bound;  ///< s, required for the friction problem
   double alpha_tolerance = 1e-4;           ///< in (0, 0.1]
   /// Optional, built when absent: solid_gram_factor of (space or vector_space, Γ_C), and the ladder of
-  /// `multipliers` (surface_interpolation_gram_ladder).
+  /// `multipliers` (surface_interpolation_gram_ladder; given, it keeps `automatic` on the dense
+  /// path, and the products path refuses it).
   const assembly::CondensedFactor* gram_factor = nullptr;
   const norms::GramLadder* grams = nullptr;
   /// S_G and G formed densely, or applied by products (uses_alpha_products); the products ignore
-  /// `grams` and the backend, and need a factor with or without the trace last.
+  /// the backend, and take a factor with or without the trace last.
   contact::SchurPath path = contact::SchurPath::automatic;
 };
 

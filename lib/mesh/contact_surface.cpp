@@ -49,6 +49,47 @@ std::vector<Eigen::Vector2d> face_polygon(const FlatContactSurface& surface, con
   return polygon;
 }
 
+/// Items binned by their bounding boxes on a uniform grid of bins × bins over [lo, hi], so that
+/// only items whose boxes share a bin are compared (about one item per bin when bins² ≈ items).
+class BoxBins {
+ public:
+  BoxBins(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, std::size_t items)
+      : lo_(lo),
+        bins_(std::max(1, static_cast<int>(std::sqrt(static_cast<double>(items))))),
+        step_((hi - lo) / bins_),
+        contents_(static_cast<std::size_t>(bins_ * bins_)) {}
+  void add(int item, const Eigen::Vector2d& low, const Eigen::Vector2d& high) {
+    for (const int bin : bins_meeting(low, high)) contents_[static_cast<std::size_t>(bin)].push_back(item);
+  }
+  /// The items in the bins the box [low, high] meets, ascending, each once.
+  std::vector<int> near(const Eigen::Vector2d& low, const Eigen::Vector2d& high) const {
+    std::vector<int> out;
+    for (const int bin : bins_meeting(low, high)) {
+      const auto& in_bin = contents_[static_cast<std::size_t>(bin)];
+      out.insert(out.end(), in_bin.begin(), in_bin.end());
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+  }
+  const std::vector<std::vector<int>>& contents() const { return contents_; }
+
+ private:
+  int bin_along(const Eigen::Vector2d& a, int k) const {
+    return std::clamp(static_cast<int>(std::floor((a(k) - lo_(k)) / step_(k))), 0, bins_ - 1);
+  }
+  std::vector<int> bins_meeting(const Eigen::Vector2d& low, const Eigen::Vector2d& high) const {
+    std::vector<int> out;
+    for (int j = bin_along(low, 1); j <= bin_along(high, 1); ++j)
+      for (int i = bin_along(low, 0); i <= bin_along(high, 0); ++i) out.push_back(i + bins_ * j);
+    return out;
+  }
+  Eigen::Vector2d lo_;
+  int bins_;
+  Eigen::Vector2d step_;
+  std::vector<std::vector<int>> contents_;
+};
+
 }  // namespace
 
 FlatContactSurface::FlatContactSurface(const SolidMesh& mesh, const std::vector<std::string>& labels,
@@ -211,20 +252,12 @@ SurfaceMultiplierMesh::SurfaceMultiplierMesh(const FlatContactSurface& surface, 
 
 std::optional<std::pair<int, int>> SurfaceMultiplierMesh::overlapping_triangles(double tolerance) const {
   // The triangles binned by their bounding boxes, about one per bin: only neighbours are clipped.
-  const Eigen::Vector2d lo = surface_->bounds()[0], hi = surface_->bounds()[1];
-  const int bins = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(n_cells()))));
-  const Eigen::Vector2d step = (hi - lo) / bins;
-  const auto bin_of = [&](const Eigen::Vector2d& a, int k) {
-    return std::clamp(static_cast<int>(std::floor((a(k) - lo(k)) / step(k))), 0, bins - 1);
-  };
-  std::vector<std::vector<int>> binned(static_cast<std::size_t>(bins * bins));
+  BoxBins bins(surface_->bounds()[0], surface_->bounds()[1], static_cast<std::size_t>(n_cells()));
   for (int c = 0; c < n_cells(); ++c) {
-    const auto [low, high] = cell_bounds(c);
-    for (int j = bin_of(low, 1); j <= bin_of(high, 1); ++j)
-      for (int i = bin_of(low, 0); i <= bin_of(high, 0); ++i)
-        binned[static_cast<std::size_t>(i + bins * j)].push_back(c);
+    const auto bounds = cell_bounds(c);
+    bins.add(c, bounds[0], bounds[1]);
   }
-  for (const auto& in_bin : binned)
+  for (const auto& in_bin : bins.contents())
     for (std::size_t a = 0; a < in_bin.size(); ++a)
       for (std::size_t b = a + 1; b < in_bin.size(); ++b) {
         const auto piece = clip_convex(cell_polygon(in_bin[a]), cell_polygon(in_bin[b]));
@@ -296,15 +329,10 @@ std::vector<SurfaceMultiplierMesh::Overlap> SurfaceMultiplierMesh::clip_faces() 
 std::vector<SurfaceMultiplierMesh::Overlap> SurfaceMultiplierMesh::clip_triangles() const {
   // The faces binned by their bounding boxes on a grid of about one face per bin, so that each
   // triangle is clipped only against the faces near it.
-  const Eigen::Vector2d lo = surface_->bounds()[0], hi = surface_->bounds()[1];  // (lambdas capture them)
+  const Eigen::Vector2d lo = surface_->bounds()[0], hi = surface_->bounds()[1];
   const auto& faces = surface_->faces();
-  const int bins = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(faces.size()))));
-  const Eigen::Vector2d step = (hi - lo) / bins;
-  const auto bin_of = [&](const Eigen::Vector2d& a, int k) {
-    return std::clamp(static_cast<int>(std::floor((a(k) - lo(k)) / step(k))), 0, bins - 1);
-  };
+  BoxBins bins(lo, hi, faces.size());
   std::vector<std::vector<Eigen::Vector2d>> polygons;
-  std::vector<std::vector<int>> binned(static_cast<std::size_t>(bins * bins));
   for (int f = 0; f < static_cast<int>(faces.size()); ++f) {
     polygons.push_back(face_polygon(*surface_, faces[f]));
     Eigen::Vector2d low = polygons.back()[0], high = low;
@@ -312,23 +340,13 @@ std::vector<SurfaceMultiplierMesh::Overlap> SurfaceMultiplierMesh::clip_triangle
       low = low.cwiseMin(x);
       high = high.cwiseMax(x);
     }
-    for (int j = bin_of(low, 1); j <= bin_of(high, 1); ++j)
-      for (int i = bin_of(low, 0); i <= bin_of(high, 0); ++i)
-        binned[static_cast<std::size_t>(i + bins * j)].push_back(f);
+    bins.add(f, low, high);
   }
   const double scale = (hi - lo).prod();
   std::vector<Overlap> out;
   for (int c = 0; c < n_cells(); ++c) {
-    const auto [low, high] = cell_bounds(c);
-    std::vector<int> near;
-    for (int j = bin_of(low, 1); j <= bin_of(high, 1); ++j)
-      for (int i = bin_of(low, 0); i <= bin_of(high, 0); ++i) {
-        const auto& in_bin = binned[static_cast<std::size_t>(i + bins * j)];
-        near.insert(near.end(), in_bin.begin(), in_bin.end());
-      }
-    std::sort(near.begin(), near.end());
-    near.erase(std::unique(near.begin(), near.end()), near.end());
-    for (int f : near) {
+    const auto bounds = cell_bounds(c);
+    for (const int f : bins.near(bounds[0], bounds[1])) {
       std::vector<Eigen::Vector2d> piece = clip_convex(cell_polygon(c), polygons[static_cast<std::size_t>(f)]);
       if (piece.size() < 3 || signed_area(piece) <= 1e-14 * scale) continue;
       out.push_back({f, c, std::move(piece)});

@@ -46,9 +46,9 @@ PerformanceBenchmark read_performance_benchmark(const std::string& path) {
       throw_bad_input(path, "benchmark.n", std::to_string(n), "even, with n · ratio a whole number >= 1");
     out.levels.push_back(static_cast<int>(n));
   }
-  const std::vector<std::string> allowed{"signorini",       "friction",        "friction_s", "alpha",
-                                         "alpha_predicted", "alpha_extension", "assembled",  "elastic",
-                                         "two_body",        "three_d",         "three_d_alpha",   "startup"};
+  const std::vector<std::string> allowed{"signorini",       "friction",        "friction_s",    "alpha",
+                                         "alpha_predicted", "alpha_extension", "assembled",     "elastic",
+                                         "two_body",        "three_d",         "three_d_alpha", "startup"};
   out.kinds = table.string_list("kinds", allowed);
   for (const auto& kind : out.kinds)
     if (std::find(allowed.begin(), allowed.end(), kind) == allowed.end())
@@ -253,8 +253,7 @@ std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& 
 
     for (const auto& kind : benchmark.kinds)
       if (kind != "alpha" && kind != "alpha_predicted" && kind != "alpha_extension" && kind != "assembled" &&
-          kind != "elastic" && kind != "two_body" && kind != "three_d" && kind != "three_d_alpha" &&
-          kind != "startup")
+          kind != "elastic" && kind != "two_body" && kind != "three_d" && kind != "three_d_alpha" && kind != "startup")
         add(contact_row(kind, scene, *discretization, base, linear_k));
     BenchmarkRow linear_ag = base;
     linear_ag.kind = "linear_AG";

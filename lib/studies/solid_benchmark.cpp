@@ -128,7 +128,9 @@ void add_solid_alpha_rows(const PerformanceBenchmark& benchmark, BenchmarkRow ba
     row.seconds = clock.seconds();
     if (path == contact::SchurPath::products) products_alpha = result.alpha;
     // (one α on both paths: a benchmark of a wrong answer measures nothing)
-    if (!(std::abs(result.alpha - products_alpha) <= 1e-7 * products_alpha))
+    // (relative 1e-7, or 1e-9 of √λ_max for an α of zero)
+    if (!(std::abs(result.alpha - products_alpha) <=
+          1e-7 * std::max(products_alpha, 1e-2 * std::sqrt(result.lambda_max))))
       throw NumericalError(fmt::format("3-D α benchmark at n = {}: the dense path's α {} differs from the products' {}",
                                        n, result.alpha, products_alpha));
     add(row);

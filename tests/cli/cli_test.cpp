@@ -213,7 +213,8 @@ TEST(Cli, BenchmarkWritesRatiosAgainstTheBaselineOfTheSameRun) {
   const auto dir = scratch("benchmark");
   std::ofstream(dir / "bench.toml")
       << "[benchmark]\np = 2\npC = 1\nratio = \"1/2\"\nn = [4, 8]\n"
-         "kinds = [\"signorini\", \"alpha\", \"alpha_extension\", \"assembled\", \"two_body\", \"startup\"]\n";
+         "kinds = [\"signorini\", \"alpha\", \"alpha_extension\", \"assembled\", \"two_body\", \"three_d_alpha\", "
+         "\"startup\"]\n";
   const auto result = run("benchmark " + (dir / "bench.toml").string() + " --out " + (dir / "out").string());
   ASSERT_EQ(result.exit_code, 0) << result.output;
   const auto csv = read_csv(dir / "out" / "benchmark.csv");
@@ -238,7 +239,10 @@ TEST(Cli, BenchmarkWritesRatiosAgainstTheBaselineOfTheSameRun) {
                                        "linear_K_assembled",
                                        "linear_AG_assembled",
                                        "linear_A_two_body",
-                                       "two_body_frictionless"};
+                                       "two_body_frictionless",
+                                       "linear_AG_3d",
+                                       "alpha_3d_products",
+                                       "alpha_3d_dense"};
   std::vector<std::string> expected{"startup"};  // whole processes, once, before the levels
   expected.insert(expected.end(), level.begin(), level.end());
   expected.insert(expected.end(), level.begin(), level.end());

@@ -220,6 +220,24 @@ TEST(SolidInfSup, ProductsAgreeWithTheDensePath) {
   }
 }
 
+// `automatic` takes the products from 64 multipliers with SLEPc, never with the dense backend.
+TEST(SolidInfSup, AutomaticPathTakesProductsFromSixtyFourMultipliers) {
+  using contact::SchurPath;
+  EXPECT_FALSE(infsup::uses_alpha_products(SchurPath::automatic, 63, infsup::EigenBackend::slepc));
+  EXPECT_TRUE(infsup::uses_alpha_products(SchurPath::automatic, 64, infsup::EigenBackend::slepc));
+  EXPECT_FALSE(infsup::uses_alpha_products(SchurPath::automatic, 1 << 20, infsup::EigenBackend::dense));
+  EXPECT_TRUE(infsup::uses_alpha_products(SchurPath::products, 1, infsup::EigenBackend::dense));
+  EXPECT_FALSE(infsup::uses_alpha_products(SchurPath::dense, 1 << 20, infsup::EigenBackend::slepc));
+  const Extruded c{8, 4, 1, 0, 8, 4};  // 32 multipliers at p_C = 0, 128 at p_C = 1
+  Extruded many = c;
+  many.pc = 1;
+  const auto below = alpha(c, infsup::EigenBackend::slepc, 1e-4, SchurPath::automatic);
+  const auto above = alpha(many, infsup::EigenBackend::slepc, 1e-4, SchurPath::automatic);
+  EXPECT_EQ(below.method.find("products only"), std::string::npos) << below.method;
+  EXPECT_NE(above.method.find("products only"), std::string::npos) << above.method;
+  EXPECT_NEAR(above.alpha, alpha(many).alpha, 1e-8);
+}
+
 // (22): with s ≡ 1 it is the Signorini pairing (11); with s = max(0, −x) the multipliers of the
 // T_{C,H} cells in x > 0 are dropped (the mode is 0 there); with s ≡ 0 it is refused.
 TEST(SolidInfSup, FrictionPairingKeepsTheCellsOfSuppS) {
