@@ -21,6 +21,7 @@
 #include "core/petsc_check.hpp"
 #include "core/petsc_handle.hpp"
 #include "core/petsc_session.hpp"
+#include "core/petsc_vector.hpp"
 
 namespace hpcontact::infsup {
 namespace {
@@ -144,16 +145,6 @@ MatHandle dense_matrix(const Eigen::MatrixXd& a, bool positive_definite) {
   HPC_PETSC_CALL(MatSetOption(matrix.get(), MAT_SYMMETRY_ETERNAL, PETSC_TRUE));
   if (positive_definite) HPC_PETSC_CALL(MatSetOption(matrix.get(), MAT_SPD, PETSC_TRUE));
   return matrix;
-}
-
-Eigen::VectorXd to_eigen(Vec v) {
-  PetscInt n = 0;
-  HPC_PETSC_CALL(VecGetLocalSize(v, &n));
-  const PetscScalar* values = nullptr;
-  HPC_PETSC_CALL(VecGetArrayRead(v, &values));
-  Eigen::VectorXd out = Eigen::Map<const Eigen::VectorXd>(values, static_cast<Eigen::Index>(n));
-  HPC_PETSC_CALL(VecRestoreArrayRead(v, &values));
-  return out;
 }
 
 /// The spectral transformation solves with one dense factorization: KSPPREONLY + PCCHOLESKY.

@@ -15,6 +15,7 @@
 #include "core/petsc_check.hpp"
 #include "core/petsc_handle.hpp"
 #include "core/petsc_session.hpp"
+#include "core/petsc_vector.hpp"
 
 namespace hpcontact::infsup {
 namespace {
@@ -28,23 +29,6 @@ struct Callback {
   const PencilProducts::Product* product = nullptr;
   std::exception_ptr error;
 };
-
-Eigen::VectorXd to_eigen(Vec v) {
-  PetscInt n = 0;
-  HPC_PETSC_CALL(VecGetLocalSize(v, &n));
-  const PetscScalar* values = nullptr;
-  HPC_PETSC_CALL(VecGetArrayRead(v, &values));
-  Eigen::VectorXd out = Eigen::Map<const Eigen::VectorXd>(values, static_cast<Eigen::Index>(n));
-  HPC_PETSC_CALL(VecRestoreArrayRead(v, &values));
-  return out;
-}
-
-void copy_into(const Eigen::VectorXd& from, Vec to) {
-  PetscScalar* values = nullptr;
-  HPC_PETSC_CALL(VecGetArrayWrite(to, &values));
-  std::copy_n(from.data(), from.size(), values);
-  HPC_PETSC_CALL(VecRestoreArrayWrite(to, &values));
-}
 
 PetscErrorCode apply(Callback& callback, Vec x, Vec y) {
   try {

@@ -6,7 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <string>
+#include <utility>
 
 #include "assembly/condensed_factor.hpp"
 #include "assembly/solid_cell_system.hpp"
@@ -80,6 +82,15 @@ g = "0"
 effects = ["infsup"]
 )toml";
 
+/// The baseline of a row: the factorization of `system` and one solve, in seconds.
+double seconds_of_one_solve(std::unique_ptr<const assembly::CellSystem> system) {
+  Stopwatch clock;
+  const assembly::CondensedFactor factor(std::move(system));
+  HPC_VERIFY(factor.solve(Eigen::VectorXd(Eigen::VectorXd::Ones(factor.size()))).allFinite(),
+             "baseline solve gave a non-finite result");
+  return clock.seconds();
+}
+
 }  // namespace
 
 void add_solid_alpha_rows(const PerformanceBenchmark& benchmark, BenchmarkRow base,
@@ -104,13 +115,8 @@ void add_solid_alpha_rows(const PerformanceBenchmark& benchmark, BenchmarkRow ba
 
   BenchmarkRow linear = base;
   linear.kind = "linear_AG_3d";
-  {
-    Stopwatch clock;
-    const assembly::CondensedFactor factor(std::make_unique<assembly::SolidScalarCellSystem>(*d->space, 1.0, 1.0));
-    HPC_VERIFY(factor.solve(Eigen::VectorXd(Eigen::VectorXd::Ones(factor.size()))).allFinite(),
-               "baseline solve gave a non-finite result");
-    linear.seconds_baseline = linear.seconds = clock.seconds();
-  }
+  linear.seconds_baseline = linear.seconds =
+      seconds_of_one_solve(std::make_unique<assembly::SolidScalarCellSystem>(*d->space, 1.0, 1.0));
   add(linear);
   infsup::SolidInfSupSetup setup;
   setup.space = d->space.get();
@@ -155,14 +161,8 @@ void add_solid_rows(const PerformanceBenchmark& benchmark, BenchmarkRow base,
 
   BenchmarkRow linear = base;
   linear.kind = "linear_A_3d";
-  {
-    Stopwatch clock;
-    const assembly::CondensedFactor factor(
-        std::make_unique<assembly::SolidElasticCellSystem>(*d->vector_space, d->materials));
-    HPC_VERIFY(factor.solve(Eigen::VectorXd(Eigen::VectorXd::Ones(factor.size()))).allFinite(),
-               "baseline solve gave a non-finite result");
-    linear.seconds_baseline = linear.seconds = clock.seconds();
-  }
+  linear.seconds_baseline = linear.seconds =
+      seconds_of_one_solve(std::make_unique<assembly::SolidElasticCellSystem>(*d->vector_space, d->materials));
   add(linear);
   contact::SolidElasticSetup setup;
   setup.space = d->vector_space.get();
