@@ -1,8 +1,10 @@
-// Frictionless elastic contact on hexahedral meshes: the normal coupling, condensation, QP, recovery.
+// Elastic contact on hexahedral meshes (frictionless, Tresca, Coulomb): the coupling, condensation,
+// the QP (Coulomb: its fixed point), recovery.
 #include "contact/solid_elastic_contact.hpp"
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <limits>
 
@@ -32,6 +34,27 @@ Eigen::VectorXd tresca_radius(const SolidElasticSetup& setup) {
   return radius;
 }
 
+/// Coulomb: the Tresca problems on S, d with radii F P_k at the nodal points, P_k the pressure of
+/// the previous iterate (P_0 = 0), until max |Δλ| / max |λ| ≤ the tolerance.
+DiscQpSolution solve_coulomb_fixed_point(const SolidElasticSetup& setup, const SolidTraceOperator& s,
+                                         const Eigen::VectorXd& d, std::vector<double>& changes) {
+  const double coefficient = *setup.friction_coefficient;
+  const Eigen::Index m = d.size() / 3;
+  Eigen::VectorXd previous = Eigen::VectorXd::Zero(d.size());
+  for (int k = 1; k <= setup.max_fixed_point_iterations; ++k) {
+    DiscQpSolution qp = solve_disc_trace_qp(s, d, coefficient * previous.head(m).cwiseMax(0.0));
+    const double scale = std::max(qp.x.lpNorm<Eigen::Infinity>(), std::numeric_limits<double>::min());
+    changes.push_back((qp.x - previous).lpNorm<Eigen::Infinity>() / scale);
+    previous = qp.x;
+    if (changes.back() <= setup.fixed_point_tolerance) return qp;
+  }
+  throw NumericalError(
+      fmt::format("Coulomb friction (F = {}): the fixed point on the Tresca problem did not converge in {} iterations "
+                  "(relative changes of λ, first and last: {:.3e}, {:.3e}; tolerance {:.1e}); a smaller F, or a finer "
+                  "T_{{C,H}} where the pressure varies, may help",
+                  coefficient, changes.size(), changes.front(), changes.back(), setup.fixed_point_tolerance));
+}
+
 /// P ≥ 0 at the m nodal points; C = I formed only for the dense path's interior-point fallback
 /// (`identity_rows`).
 MultiplierConstraints pressure_bounds(int m, bool identity_rows) {
@@ -47,6 +70,11 @@ MultiplierConstraints pressure_bounds(int m, bool identity_rows) {
 SolidElasticSolution solve_solid_elastic_contact(const SolidElasticSetup& setup) {
   if (setup.space == nullptr || setup.multipliers == nullptr || !setup.gap)
     throw InputError("3-D elastic contact: the space, the multipliers or the gap g is missing");
+  if (setup.friction_coefficient && (setup.threshold || !(*setup.friction_coefficient >= 0.0)))
+    throw InputError(
+        fmt::format("3-D Coulomb friction: the friction coefficient F = {} must be ≥ 0 and come "
+                    "without Tresca's threshold s",
+                    *setup.friction_coefficient));
   const space::SolidVectorSpace& space = *setup.space;
   const space::SolidH1Space& scalar = space.scalar();
   SolidElasticSolution out;
@@ -61,7 +89,8 @@ SolidElasticSolution solve_solid_elastic_contact(const SolidElasticSetup& setup)
       if (const int dof = space.dof(d, c); dof >= 0) load(dof) = component(d);
   }
   const auto& surface = setup.multipliers->mesh().surface();
-  const bool tresca = static_cast<bool>(setup.threshold);
+  // (Coulomb: Tresca problems, whose discs the fixed point sizes)
+  const bool tresca = setup.threshold || setup.friction_coefficient;
   const int m = setup.multipliers->n_dofs(), blocks = tresca ? 3 : 1;
   const linalg::Coupling scalar_b = assembly::surface_coupling(scalar, *setup.multipliers);
   // B = B_n, or [B_n; B_1; B_2] for Tresca
@@ -77,7 +106,7 @@ SolidElasticSolution solve_solid_elastic_contact(const SolidElasticSetup& setup)
   b.setFromTriplets(entries.begin(), entries.end());
   Eigen::VectorXd g = Eigen::VectorXd::Zero(blocks * m);
   g.head(m) = assembly::surface_multiplier_load(*setup.multipliers, setup.gap);
-  const Eigen::VectorXd radius = tresca ? tresca_radius(setup) : Eigen::VectorXd();
+  const Eigen::VectorXd radius = setup.threshold ? tresca_radius(setup) : Eigen::VectorXd();
   const bool products = uses_products(setup.trace_solve, b.rows(), b.cols());
   const MultiplierConstraints constraints = pressure_bounds(m, !products);
   out.n_trace = static_cast<int>(linalg::nonzero_columns(b).size());
@@ -95,11 +124,13 @@ SolidElasticSolution solve_solid_elastic_contact(const SolidElasticSetup& setup)
   const Eigen::VectorXd d = b * factor.solve(load) - g;
   out.seconds.condensation = clock.seconds();
 
-  // 4. The multipliers: min ½ λᵀ S λ − λᵀ d over P ≥ 0 (and the discs |(t₁, t₂)| ≤ s).
+  // 4. The multipliers: min ½ λᵀ S λ − λᵀ d over P ≥ 0 (and the discs |(t₁, t₂)| ≤ s, for
+  //    Coulomb s = F P by the fixed point).
   clock = Stopwatch();
   Eigen::VectorXd lambda;
   if (tresca) {
-    DiscQpSolution qp = solve_disc_trace_qp(s, d, radius);
+    DiscQpSolution qp = setup.friction_coefficient ? solve_coulomb_fixed_point(setup, s, d, out.fixed_point_changes)
+                                                   : solve_disc_trace_qp(s, d, radius);
     lambda = std::move(qp.x);
     out.qp = std::move(qp.report);
   } else {

@@ -7,11 +7,13 @@
 // d = B_n K⁻¹ F − G, u = K⁻¹(F − B_nᵀ P).
 // Tresca friction with threshold s adds the tangential multipliers t₁, t₂ along Γ_C's axes e₁, e₂
 // (traction on the body −P n − t₁ e₁ − t₂ e₂): λ = (P; t₁; t₂), B = [B_n; B_1; B_2], and at every
-// nodal point P ≥ 0 and |(t₁, t₂)| ≤ s, a disc (contact/disc_qp.hpp).
+// nodal point P ≥ 0 and |(t₁, t₂)| ≤ s, a disc (contact/disc_qp.hpp). Coulomb friction with
+// coefficient F: the Tresca problems with s = F P at the nodal points, P that of the previous one.
 #pragma once
 
 #include <Eigen/Core>
 #include <array>
+#include <optional>
 #include <vector>
 
 #include "assembly/material.hpp"
@@ -32,6 +34,11 @@ struct SolidElasticSetup {
   std::array<assembly::SolidFunction, 3> body_force;  ///< f_x, f_y, f_z (empty: 0)
   assembly::SolidFunction gap;                        ///< g: u·n ≤ g on Γ_C
   assembly::SolidFunction threshold;                  ///< Tresca's s ≥ 0 (empty: frictionless)
+  /// Coulomb's F ≥ 0 (in place of `threshold`): the discs' radii F P at the nodal points, by the
+  /// fixed point s_{k+1} = F P(λ_k) from s_0 = 0 on Tresca problems
+  std::optional<double> friction_coefficient;
+  int max_fixed_point_iterations = 100;  ///< Coulomb
+  double fixed_point_tolerance = 1e-10;  ///< Coulomb: on max |Δλ| / max |λ| between iterates
   BoxQpOptions qp;
   InequalityQpOptions interior_point;
   SchurPath trace_solve = SchurPath::automatic;  ///< S dense or by products (trace_operator.hpp)
@@ -45,13 +52,14 @@ struct SolidElasticSolution {
   Eigen::VectorXd gap;  ///< (ℓ_i, g − u·n) = S P − d (the QP's gradient), ≥ 0
   double energy = 0.0;  ///< ½ a(u, u) − F(u)
   int n_trace = 0;
-  QpReport qp;
+  QpReport qp;                              ///< the last QP's (Coulomb: of the last fixed-point iterate)
+  std::vector<double> fixed_point_changes;  ///< Coulomb: max |Δλ| / max |λ| per iteration
   SolidSolveSeconds seconds;
 };
 
-/// Frictionless, or Tresca where `threshold` is given.
-/// @throws InputError for missing data or s < 0; NumericalError if K is singular (no Γ_D holds the
-/// body) or the QP fails.
+/// Frictionless, Tresca where `threshold` is given, Coulomb where `friction_coefficient` is.
+/// @throws InputError for missing data, s < 0, F < 0 or both s and F; NumericalError if K is singular
+/// (no Γ_D holds the body), the QP fails or Coulomb's fixed point does not converge.
 SolidElasticSolution solve_solid_elastic_contact(const SolidElasticSetup& setup);
 
 }  // namespace hpcontact::contact

@@ -110,26 +110,12 @@ SolvedSolid solve_scalar(const scene::Scene& scene, const SolidDiscretization& d
   return out;
 }
 
-/// Frictionless or Tresca contact of the elastic box: samples x,y,z,w,gap,pressure,traction_1,
+/// Frictionless, Tresca or Coulomb contact of the elastic box: samples x,y,z,w,gap,pressure,traction_1,
 /// traction_2 (gap = g − u·n; the tangential tractions along Γ_C's axes e_1, e_2, zero without
 /// friction), the total force P = Σ w · pressure.
 SolvedSolid solve_elastic(const scene::Scene& scene, const SolidDiscretization& d, scene::Effect effect) {
   Stopwatch clock;
-  contact::SolidElasticSetup setup;
-  setup.space = d.vector_space.get();
-  setup.multipliers = d.multipliers.get();
-  setup.materials = d.materials;
-  setup.trace_solve = scene.trace_solve;
-  setup.body_force = {solid_scene_function(scene, scene.body_force_x, "data.f_x"),
-                      solid_scene_function(scene, scene.body_force_y, "data.f_y"),
-                      solid_scene_function(scene, scene.body_force_z, "data.f_z")};
-  setup.gap = solid_scene_function(scene, scene.obstacle, "data.g");
-  if (!setup.gap) throw_bad_input(scene.where("data.g"), "data.g", "(missing)", "the gap to the obstacle along n");
-  if (effect == scene::Effect::tresca) {
-    setup.threshold = solid_scene_function(scene, scene.friction_bound, "data.s");
-    if (!setup.threshold)
-      throw_bad_input(scene.where("data.s"), "data.s", "(missing)", "Tresca's threshold s ≥ 0 (effect tresca)");
-  }
+  const contact::SolidElasticSetup setup = solid_elastic_setup(scene, d, effect);
   auto solution = std::make_shared<const contact::SolidElasticSolution>(contact::solve_solid_elastic_contact(setup));
   SolvedSolid out{{},
                   io::CsvTable({"x", "y", "z", "w", "gap", "pressure", "traction_1", "traction_2"}),
@@ -154,6 +140,8 @@ SolvedSolid solve_elastic(const scene::Scene& scene, const SolidDiscretization& 
   out.result =
       solid_result(effect, *solution, d.vector_space->n_dofs(), d.multipliers->n_dofs(), area, clock.seconds());
   out.result.total_force = force;
+  out.result.fixed_point_changes = solution->fixed_point_changes;
+  out.result.friction_coefficient = setup.friction_coefficient;
   out.field = {"displacement", 3, [space = d.vector_space.get(), solution](int c, const Eigen::Vector3d& xi) {
                  return Eigen::VectorXd(postprocess::solid_displacement(*space, solution->u, c, xi));
                }};
@@ -191,7 +179,8 @@ RunResult run_solid_scene(const scene::Scene& scene, const SceneRunOptions& opti
   for (const auto effect : scene.effects) {
     if (effect == scene::Effect::infsup) continue;
     say("solving " + scene::to_string(effect));
-    const bool elastic = effect == scene::Effect::frictionless || effect == scene::Effect::tresca;
+    const bool elastic =
+        effect == scene::Effect::frictionless || effect == scene::Effect::tresca || effect == scene::Effect::coulomb;
     solved.push_back(elastic ? solve_elastic(scene, *d, effect) : solve_scalar(scene, *d, effect));
     result.contacts.push_back(solved.back().result);
     throw_if_cancelled();

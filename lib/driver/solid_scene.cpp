@@ -56,6 +56,7 @@ const std::set<std::string>& solid_scene_keys() {
                                           "data.f",
                                           "data.g",
                                           "data.s",
+                                          "data.friction_coefficient",
                                           "data.f_x",
                                           "data.f_y",
                                           "data.f_z",
@@ -190,13 +191,13 @@ void check_solid_scene(const scene::Scene& scene, const SceneRunOptions& options
   for (const auto effect : scene.effects)
     if (effect != scene::Effect::signorini && effect != scene::Effect::friction &&
         effect != scene::Effect::friction_s && effect != scene::Effect::frictionless &&
-        effect != scene::Effect::tresca && effect != scene::Effect::infsup)
+        effect != scene::Effect::tresca && effect != scene::Effect::coulomb && effect != scene::Effect::infsup)
       throw_bad_input(scene.where("run.effects"), "run.effects", scene::to_string(effect),
-                      "signorini, friction or friction_s (scalar), frictionless or tresca (elastic), or infsup (α "
-                      "of the pairing) in a 3-D scene");
+                      "signorini, friction or friction_s (scalar), frictionless, tresca or coulomb (elastic), or "
+                      "infsup (α of the pairing) in a 3-D scene");
   if (scene.effects.empty() && needs_effects)
     throw_bad_input(scene.where("run.effects"), "run.effects", "(none)",
-                    "at least one of signorini, friction, friction_s, frictionless, tresca, infsup");
+                    "at least one of signorini, friction, friction_s, frictionless, tresca, coulomb, infsup");
   if (scene.pair || scene.is_master)
     throw_bad_input(scene.where(scene.n_z > 0 ? "domain.n_z" : "domain.z_nodes"),
                     scene.n_z > 0 ? "domain.n_z" : "domain.z_nodes", "(given)",
@@ -220,6 +221,27 @@ assembly::SolidFunction solid_scene_function(const scene::Scene& scene, const st
   if (text.empty()) return {};
   const Expression expression(text, scene.where(key) + ": key '" + key + "'", 3);
   return [expression](const mesh::SolidPoint& x) { return expression(x(0), x(1), x(2)); };
+}
+
+contact::SolidElasticSetup solid_elastic_setup(const scene::Scene& scene, const SolidDiscretization& d,
+                                               scene::Effect effect) {
+  contact::SolidElasticSetup setup;
+  setup.space = d.vector_space.get();
+  setup.multipliers = d.multipliers.get();
+  setup.materials = d.materials;
+  setup.trace_solve = scene.trace_solve;
+  setup.body_force = {solid_scene_function(scene, scene.body_force_x, "data.f_x"),
+                      solid_scene_function(scene, scene.body_force_y, "data.f_y"),
+                      solid_scene_function(scene, scene.body_force_z, "data.f_z")};
+  setup.gap = solid_scene_function(scene, scene.obstacle, "data.g");
+  if (!setup.gap) throw_bad_input(scene.where("data.g"), "data.g", "(missing)", "the gap to the obstacle along n");
+  if (effect == scene::Effect::tresca) {
+    setup.threshold = solid_scene_function(scene, scene.friction_bound, "data.s");
+    if (!setup.threshold)
+      throw_bad_input(scene.where("data.s"), "data.s", "(missing)", "Tresca's threshold s ≥ 0 (effect tresca)");
+  }
+  if (effect == scene::Effect::coulomb) setup.friction_coefficient = scene.friction_coefficient;
+  return setup;
 }
 
 std::unique_ptr<mesh::SurfaceMultiplierMesh> solid_multiplier_mesh(const scene::Scene& scene,

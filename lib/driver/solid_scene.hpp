@@ -8,6 +8,7 @@
 
 #include "assembly/material.hpp"
 #include "assembly/solid_load.hpp"
+#include "contact/solid_elastic_contact.hpp"
 #include "driver/scene_run.hpp"
 #include "mesh/contact_surface.hpp"
 #include "scene/scene.hpp"
@@ -39,6 +40,12 @@ std::unique_ptr<SolidDiscretization> discretize_solid_scene(const scene::Scene& 
 
 /// The scene's expression `text` (key `key`, in x, y, z) as a function; empty for an empty text.
 assembly::SolidFunction solid_scene_function(const scene::Scene& scene, const std::string& text, const char* key);
+
+/// The elastic contact problem of `scene` on `d` for `effect` (frictionless, Tresca or Coulomb):
+/// materials, body force, gap, Tresca's threshold or Coulomb's coefficient, the scene's path of S.
+/// @throws InputError naming data.g or data.s where the effect needs them and they are missing.
+contact::SolidElasticSetup solid_elastic_setup(const scene::Scene& scene, const SolidDiscretization& d,
+                                               scene::Effect effect);
 
 /// T_{C,H} of the scene on Γ_C: contact_mesh.m (one or two counts), contact_mesh.ratio, or the
 /// triangles of contact_mesh.mesh.

@@ -1,9 +1,9 @@
 // 3-D Hertz through `hpcontact solve`: the contact radius from the pressure's second moment
 // (Σ w p r² / Σ w p = 2a²/5) against Hertz's a³ = 3PR/(4E*) for the run's own P, and the pressure
-// against Hertz's in L²(Γ_C), over the whole of Γ_C and inside r < 0.8 a. On the grid T_{C,H} of
-// studies/three_d/hertz.toml the free boundary, a circle across the grid, is smeared over a cell;
-// the triangles of studies/three_d/hertz_aligned.toml follow it. Solves of 90 s / 3.3 GB and
-// 250 s / 6.3 GB on one thread: Release builds only.
+// against Hertz's in L²(Γ_C), over the whole of Γ_C and inside r < 0.8 a. The triangles of
+// T_{C,H} in studies/three_d/hertz.toml follow the free boundary; on the grid T_{C,H} of
+// studies/three_d/hertz_grid.toml the free boundary, a circle across the grid, is smeared over a
+// cell. Solves of 250 s / 6.3 GB and 90 s / 3.3 GB on one thread: Release builds only.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -56,18 +56,18 @@ HertzErrors solve_hertz(const std::string& scene) {
   return out_errors;
 }
 
-TEST(SolidHertz, ContactRadiusAndPressureOfTheSphere) {
+TEST(SolidHertz, GridContactMeshGivesTheContactRadius) {
   if (HPCONTACT_SANITIZED) GTEST_SKIP() << "a 190k-unknown 3-D solve: Release builds only";
-  const HertzErrors grid = solve_hertz("hertz");
+  const HertzErrors grid = solve_hertz("hertz_grid");
   EXPECT_LT(std::abs(grid.a_moment / grid.a_hertz - 1.0), 0.01) << grid.a_moment << " against " << grid.a_hertz;
   // Measured: 8.6 % over Γ_C (the free boundary smeared over one cell of T_{C,H}), 2.0 % inside.
   EXPECT_LT(grid.pressure, 0.10);
   EXPECT_LT(grid.inside, 0.03);
 }
 
-TEST(SolidHertz, TrianglesAlongTheFreeBoundaryGiveTheProfileWithinTwoPercent) {
+TEST(SolidHertz, ContactRadiusWithinOnePercentAndProfileWithinTwoPercent) {
   if (HPCONTACT_SANITIZED) GTEST_SKIP() << "a 316k-unknown 3-D solve: Release builds only";
-  const HertzErrors aligned = solve_hertz("hertz_aligned");
+  const HertzErrors aligned = solve_hertz("hertz");
   // Measured: a 0.010 % apart, 1.8 % over Γ_C, 0.32 % inside.
   EXPECT_LT(std::abs(aligned.a_moment / aligned.a_hertz - 1.0), 0.001)
       << aligned.a_moment << " against " << aligned.a_hertz;

@@ -3,6 +3,7 @@
 // and the keys, effects and commands 3-D scenes refuse with a message naming them.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -120,6 +121,45 @@ TEST(SolidScene, ExtrudedTrescaHasThePlanarEnergyAndForceTimesTheWidth) {
                                 "/studies/three_d/extruded_frictionless.toml --set 'run.effects=[\"tresca\"]' --out " +
                                 (dir / "none").string());
   expect_refused(no_threshold, "data.s");
+}
+
+// Coulomb in 3-D (the Tresca discs of radius F P, by the fixed point from s = 0; F = 0.2) on the same
+// extruded square: the planar Coulomb solution at every y, so energy and P are the planar ones times
+// the width; t₂ = 0, |t₁| ≤ F P with stick and slip; the fixed point's iterations are reported.
+TEST(SolidScene, ExtrudedCoulombHasThePlanarEnergyAndForceTimesTheWidth) {
+  const auto dir = scratch("solid_coulomb");
+  const std::string friction = " --set 'data.f_x=\"0.05\"' --set data.friction_coefficient=0.2 ";
+  const auto solid = run("solve " + std::string(HPCONTACT_SOURCE_DIR) +
+                         "/studies/three_d/extruded_frictionless.toml --set 'run.effects=[\"coulomb\"]'" + friction +
+                         "--out " + (dir / "solid").string());
+  ASSERT_EQ(solid.exit_code, 0) << solid.output;
+  const auto planar = run("solve " + std::string(HPCONTACT_SOURCE_DIR) +
+                          "/studies/elasticity/square.toml --effects coulomb --set 'boundary.contact=\"abs(y + "
+                          "1) < 1e-9\"'" +
+                          friction + "--out " + (dir / "planar").string());
+  ASSERT_EQ(planar.exit_code, 0) << planar.output;
+  const auto solid_result = summary_of(dir / "solid").at("coulomb");
+  const auto planar_result = summary_of(dir / "planar").at("coulomb");
+  for (const char* key : {"energy", "total_force"}) {
+    const double expected = 0.5 * planar_result.at(key).get<double>();
+    EXPECT_NEAR(solid_result.at(key).get<double>(), expected, 1e-8 * std::abs(expected)) << key;
+  }
+  EXPECT_GT(solid_result.at("fixed_point").at("iterations").get<int>(), 1);
+  EXPECT_LE(solid_result.at("fixed_point").at("changes").back().get<double>(), 1e-10);
+  EXPECT_DOUBLE_EQ(solid_result.at("friction_coefficient").get<double>(), 0.2);
+  const CsvFile samples = read_csv(dir / "solid" / "boundary_coulomb.csv");
+  int stick = 0, slip = 0;
+  double scale = 0.0;
+  for (const auto& row : samples.records()) scale = std::max(scale, 1e-9 * std::abs(std::stod(row.at("pressure"))));
+  for (const auto& row : samples.records()) {
+    const double t1 = std::stod(row.at("traction_1")), t2 = std::stod(row.at("traction_2"));
+    const double bound = 0.2 * std::stod(row.at("pressure"));
+    EXPECT_LT(std::abs(t2), 1e-10);
+    EXPECT_LE(std::abs(t1), bound + scale);
+    if (bound > 1e3 * scale) (std::abs(t1) > bound * (1 - 1e-6) ? slip : stick) += 1;
+  }
+  EXPECT_GT(stick, 0);
+  EXPECT_GT(slip, 0);
 }
 
 // A body force along the diagonal of Γ_C's plane pulls every node of T_{C,H} into slip along the

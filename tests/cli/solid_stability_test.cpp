@@ -18,7 +18,7 @@ namespace {
 const std::string kExtruded = std::string(HPCONTACT_SOURCE_DIR) + "/studies/three_d/extruded_signorini.toml";
 const std::string kPlanar = std::string(HPCONTACT_SOURCE_DIR) + "/studies/paper/figure1_signorini.toml";
 const std::string kCube = std::string(HPCONTACT_SOURCE_DIR) + "/studies/three_d/cube.toml";
-const std::string kHertz = std::string(HPCONTACT_SOURCE_DIR) + "/studies/three_d/hertz.toml";
+const std::string kHertz = std::string(HPCONTACT_SOURCE_DIR) + "/studies/three_d/hertz_grid.toml";
 
 double alpha_printed(const Run& run) {
   std::smatch match;
