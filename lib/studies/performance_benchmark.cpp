@@ -6,6 +6,7 @@
 #include <sys/resource.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 
@@ -40,21 +41,36 @@ PerformanceBenchmark read_performance_benchmark(const std::string& path) {
   out.pc = static_cast<int>(table.integer("pC", 0, 19));
   out.ratio = table.string_list("ratio", std::vector<std::string>{"1/2"}).front();
   const double ratio = scene::parse_ratio(out.ratio, path, "benchmark.ratio").value;
-  for (long long n : table.integer_list("n", 2, 4096)) {
+  // (no levels: a benchmark of kinds that run once, "three_d_scene" and "startup")
+  for (long long n : table.integer_list("n", 2, 4096, std::vector<long long>{})) {
     const double m = n * ratio;
     if (n % 2 != 0 || std::abs(m - std::round(m)) > 1e-9 || m < 1)
       throw_bad_input(path, "benchmark.n", std::to_string(n), "even, with n · ratio a whole number >= 1");
     out.levels.push_back(static_cast<int>(n));
   }
-  const std::vector<std::string> allowed{"signorini",       "friction",        "friction_s",    "alpha",
-                                         "alpha_predicted", "alpha_extension", "assembled",     "elastic",
-                                         "two_body",        "three_d",         "three_d_alpha", "startup"};
+  const std::vector<std::string> allowed{
+      "signorini", "friction", "friction_s", "alpha",         "alpha_predicted", "alpha_extension", "assembled",
+      "elastic",   "two_body", "three_d",    "three_d_alpha", "three_d_scene",   "startup"};
   out.kinds = table.string_list("kinds", allowed);
   for (const auto& kind : out.kinds)
     if (std::find(allowed.begin(), allowed.end(), kind) == allowed.end())
       throw_bad_input(path, "benchmark.kinds", kind,
                       "any of signorini, friction, friction_s, alpha, alpha_predicted, alpha_extension, assembled, "
-                      "elastic, two_body, three_d, three_d_alpha, startup");
+                      "elastic, two_body, three_d, three_d_alpha, three_d_scene, startup");
+  const bool scene_kind = std::find(out.kinds.begin(), out.kinds.end(), "three_d_scene") != out.kinds.end();
+  if (scene_kind || table.has("scene")) {
+    const std::string scene = table.string("scene", std::string("(missing)"));
+    out.scene = (std::filesystem::path(path).parent_path() / scene).string();
+    if (!scene_kind || !std::filesystem::exists(out.scene))
+      throw_bad_input(
+          path, "benchmark.scene", scene,
+          scene_kind ? "an existing 3-D scene file (relative to the benchmark file)" : "only with kind three_d_scene");
+  }
+  const bool levels_needed = std::any_of(out.kinds.begin(), out.kinds.end(), [](const std::string& kind) {
+    return kind != "three_d_scene" && kind != "startup";
+  });
+  if (levels_needed && out.levels.empty())
+    throw_bad_input(path, "benchmark.n", "(missing)", "the levels (cells per side) of kinds other than three_d_scene");
   table.reject_unknown_keys();
   root.reject_unknown_keys();
   return out;
@@ -221,6 +237,7 @@ std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& 
       throw InputError(benchmark.file + ": kind startup needs the hpcontact executable");
     add(startup_row(benchmark.executable));
   }
+  if (has("three_d_scene")) add_solid_scene_rows(benchmark, add);
   for (int n : benchmark.levels) {
     // The built-in §7 scene at this level: n × n cells, T_{C,H} with the benchmark's h/H.
     const std::string where = benchmark.file + ": key 'benchmark.n' = " + std::to_string(n);
@@ -253,7 +270,8 @@ std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& 
 
     for (const auto& kind : benchmark.kinds)
       if (kind != "alpha" && kind != "alpha_predicted" && kind != "alpha_extension" && kind != "assembled" &&
-          kind != "elastic" && kind != "two_body" && kind != "three_d" && kind != "three_d_alpha" && kind != "startup")
+          kind != "elastic" && kind != "two_body" && kind != "three_d" && kind != "three_d_alpha" &&
+          kind != "three_d_scene" && kind != "startup")
         add(contact_row(kind, scene, *discretization, base, linear_k));
     BenchmarkRow linear_ag = base;
     linear_ag.kind = "linear_AG";
@@ -282,11 +300,11 @@ std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& 
 
 io::CsvTable benchmark_table(const std::vector<BenchmarkRow>& rows) {
   io::CsvTable table({"kind", "p", "pC", "n", "m", "ndofs", "nmult", "n_trace", "seconds_assembly", "seconds_baseline",
-                      "seconds", "ratio", "peak_rss_mb"});
+                      "seconds", "ratio", "peak_rss_mb", "products"});
   for (const auto& r : rows)
     table.add_row({r.kind, (long long)r.p, (long long)r.pc, (long long)r.n, (long long)r.m, (long long)r.ndofs,
                    (long long)r.nmult, (long long)r.n_trace, r.seconds_assembly, r.seconds_baseline, r.seconds, r.ratio,
-                   r.peak_rss_mb});
+                   r.peak_rss_mb, (long long)r.products});
   return table;
 }
 

@@ -1,5 +1,6 @@
 // add_solid_rows: the elastic cube at level n, the baseline and the contact solve on both paths;
-// add_solid_alpha_rows: the scalar slab, the baseline and α on both paths.
+// add_solid_alpha_rows: the scalar slab, the baseline and α on both paths; add_solid_scene_rows:
+// a scene file's baseline and contact solve by products.
 #include "studies/solid_benchmark.hpp"
 
 #include <fmt/format.h>
@@ -184,11 +185,46 @@ void add_solid_rows(const PerformanceBenchmark& benchmark, BenchmarkRow base,
     BenchmarkRow row = linear;
     row.kind = path == contact::SchurPath::dense ? "three_d_frictionless_dense" : "three_d_frictionless_products";
     row.n_trace = solution.n_trace;
+    row.products = solution.qp.products;
     row.seconds_assembly = solution.seconds.assembly;
     row.seconds = solution.seconds.factorization + solution.seconds.condensation + solution.seconds.qp +
                   solution.seconds.recovery;
     add(row);
   }
+}
+
+void add_solid_scene_rows(const PerformanceBenchmark& benchmark, const std::function<void(BenchmarkRow)>& add) {
+  auto scene = scene::read_scene(
+      benchmark.scene,
+      {{"discretization.p", static_cast<long long>(benchmark.p), benchmark.file + ": key 'benchmark.p'"},
+       {"discretization.pC", static_cast<long long>(benchmark.pc), benchmark.file + ": key 'benchmark.pC'"}});
+  const auto effects = scene.elastic_effects();
+  if (scene.dimension() != 3 || effects.empty() || !scene.is_elastic())
+    throw_bad_input(benchmark.file, "benchmark.scene", benchmark.scene,
+                    "a 3-D elastic scene (domain.n_z or z_nodes, [material], a contact effect)");
+  scene.trace_solve = contact::SchurPath::products;  // (the path whose cost the kind measures)
+  driver::check_solid_scene(scene, {});
+  const auto d = driver::discretize_solid_scene(scene);
+  BenchmarkRow linear;
+  linear.p = benchmark.p;
+  linear.pc = benchmark.pc;
+  linear.ndofs = d->vector_space->n_dofs();
+  linear.m = d->multiplier_mesh->n_cells();
+  linear.nmult = d->multipliers->n_dofs();
+  linear.kind = "linear_A_3d_scene";
+  linear.seconds_baseline = linear.seconds =
+      seconds_of_one_solve(std::make_unique<assembly::SolidElasticCellSystem>(*d->vector_space, d->materials));
+  add(linear);
+  const auto solution =
+      contact::solve_solid_elastic_contact(driver::solid_elastic_setup(scene, *d, scene::effect_of(effects.front())));
+  BenchmarkRow row = linear;
+  row.kind = "three_d_scene_products";
+  row.n_trace = solution.n_trace;
+  row.products = solution.qp.products;
+  row.seconds_assembly = solution.seconds.assembly;
+  row.seconds =
+      solution.seconds.factorization + solution.seconds.condensation + solution.seconds.qp + solution.seconds.recovery;
+  add(row);
 }
 
 }  // namespace hpcontact::studies

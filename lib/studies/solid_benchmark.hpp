@@ -1,7 +1,8 @@
 // The benchmark's kinds "three_d": frictionless contact of an elastic cube on n × n × n hexahedra
 // against a paraboloid obstacle, on both paths of S (dense from the factor's trailing block, and by
 // products), against one linear solve of the same elasticity matrix; and "three_d_alpha": α of a
-// scalar slab's pairing on both paths against one linear solve with A_G.
+// scalar slab's pairing on both paths against one linear solve with A_G; "three_d_scene": an
+// elastic 3-D scene file's contact solve by products against one linear solve of its K.
 #pragma once
 
 #include <functional>
@@ -15,6 +16,13 @@ namespace hpcontact::studies {
 /// (p, p_C, h/H of T_{C,H} on Γ_C); `base` carries p, p_C and n.
 void add_solid_rows(const PerformanceBenchmark& benchmark, BenchmarkRow base,
                     const std::function<void(BenchmarkRow)>& add);
+
+/// Kind "three_d_scene": the elastic 3-D scene `benchmark.scene` (its T_{C,H} and first effect,
+/// frictionless or Tresca) at benchmark.p and benchmark.pC. Rows "linear_A_3d_scene" (the baseline:
+/// factorization of K with a free ordering and one solve) and "three_d_scene_products" (the contact
+/// solve with S by products, factorization included, assembly excluded), n = 0.
+/// @throws InputError for a scene that is not 3-D and elastic, naming benchmark.scene.
+void add_solid_scene_rows(const PerformanceBenchmark& benchmark, const std::function<void(BenchmarkRow)>& add);
 
 /// Multipliers up to which kind "three_d_alpha" also runs the dense path.
 inline constexpr int kDenseAlphaUpTo = 2500;

@@ -219,14 +219,14 @@ TEST(Cli, BenchmarkWritesRatiosAgainstTheBaselineOfTheSameRun) {
   ASSERT_EQ(result.exit_code, 0) << result.output;
   const auto csv = read_csv(dir / "out" / "benchmark.csv");
   EXPECT_EQ(csv.header_line(),
-            "kind,p,pC,n,m,ndofs,nmult,n_trace,seconds_assembly,seconds_baseline,seconds,ratio,peak_rss_mb");
+            "kind,p,pC,n,m,ndofs,nmult,n_trace,seconds_assembly,seconds_baseline,seconds,ratio,peak_rss_mb,products");
   std::vector<std::string> kinds;
   for (const auto& row : csv.rows) {
     // ratio = seconds / seconds_baseline, both positive
     const std::string line = line_of(row);
     std::vector<double> cells;
     for (std::size_t k = 1; k < row.size(); ++k) cells.push_back(std::stod(row[k]));
-    ASSERT_EQ(cells.size(), 12u) << line;
+    ASSERT_EQ(cells.size(), 13u) << line;
     EXPECT_GT(cells[8], 0.0) << line;
     kinds.push_back(row.front());
     EXPECT_NEAR(cells[10], cells[9] / cells[8], 1e-12 * cells[10]) << line;
