@@ -6,6 +6,7 @@
 
 #include "assembly/solid_cell_values.hpp"
 #include "core/error.hpp"
+#include "mesh/cell_partition.hpp"
 
 namespace hpcontact::assembly {
 
@@ -16,8 +17,11 @@ SolidScalarCellSystem::SolidScalarCellSystem(const space::SolidH1Space& space, d
              "a K + b M with a, b ≥ 0, not both 0");
 }
 
-std::vector<int> SolidScalarCellSystem::split_cells_over_ranks(MPI_Comm /*ranks*/) const {
-  throw InputError("3-D problems are factorized on one process: run them without mpirun (or with -n 1)");
+std::vector<int> SolidScalarCellSystem::split_cells_over_ranks(MPI_Comm ranks) const {
+  int size = 1;
+  HPC_VERIFY(MPI_Comm_size(ranks, &size) == MPI_SUCCESS, "the number of ranks");
+  // (every rank holds the box whole and bisects it alike: no broadcast)
+  return mesh::bisect_solid_cells(space_->mesh(), size, cell_work_weights(*this));
 }
 
 std::vector<char> SolidScalarCellSystem::boundary_unknowns(int cell) const {

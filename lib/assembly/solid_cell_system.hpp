@@ -14,7 +14,7 @@ class SolidScalarCellSystem final : public CellSystem {
   SolidScalarCellSystem(const space::SolidH1Space& space, double stiffness_weight, double mass_weight);
   const space::SolidH1Space& space() const { return *space_; }
   int n_cells() const override { return space_->mesh().n_cells(); }
-  /// @throws InputError: solid meshes are factorized on one process.
+  /// Coordinate bisection of the hexahedra by work (mesh::bisect_solid_cells), the same on every rank.
   std::vector<int> split_cells_over_ranks(MPI_Comm ranks) const override;
   std::vector<char> boundary_unknowns(int cell) const override;
   int n_dofs() const override { return space_->n_dofs(); }

@@ -9,6 +9,7 @@
 #include "assembly/solid_cell_system.hpp"
 #include "assembly/solid_cell_values.hpp"
 #include "core/error.hpp"
+#include "mesh/cell_partition.hpp"
 
 namespace hpcontact::assembly {
 
@@ -24,8 +25,11 @@ SolidElasticCellSystem SolidElasticCellSystem::vector_h1(const space::SolidVecto
   return out;
 }
 
-std::vector<int> SolidElasticCellSystem::split_cells_over_ranks(MPI_Comm /*ranks*/) const {
-  throw InputError("3-D problems are factorized on one process: run them without mpirun (or with -n 1)");
+std::vector<int> SolidElasticCellSystem::split_cells_over_ranks(MPI_Comm ranks) const {
+  int size = 1;
+  HPC_VERIFY(MPI_Comm_size(ranks, &size) == MPI_SUCCESS, "the number of ranks");
+  // (every rank holds the box whole and bisects it alike: no broadcast)
+  return mesh::bisect_solid_cells(space_->scalar().mesh(), size, cell_work_weights(*this));
 }
 
 std::vector<char> SolidElasticCellSystem::boundary_unknowns(int cell) const {

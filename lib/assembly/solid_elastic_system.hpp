@@ -23,7 +23,7 @@ class SolidElasticCellSystem final : public CellSystem {
   /// The vector H¹ inner product instead (no material).
   static SolidElasticCellSystem vector_h1(const space::SolidVectorSpace& space);
   int n_cells() const override { return space_->scalar().mesh().n_cells(); }
-  /// @throws InputError: solid meshes are factorized on one process.
+  /// Coordinate bisection of the hexahedra by work (mesh::bisect_solid_cells), the same on every rank.
   std::vector<int> split_cells_over_ranks(MPI_Comm ranks) const override;
   std::vector<char> boundary_unknowns(int cell) const override;
   int n_dofs() const override { return space_->n_dofs(); }

@@ -82,7 +82,7 @@ SolidContactSolution solve_solid_contact(const SolidContactSetup& setup) {
   // 2. Factorize K by static condensation (the trace dofs last on the dense path).
   clock = Stopwatch();
   const assembly::CondensedFactor factor(std::make_unique<assembly::SolidScalarCellSystem>(space, 1.0, 0.0),
-                                         trailing_dofs(products, b));
+                                         trailing_dofs(products, b), setup.distribution);
   out.seconds.factorization = clock.seconds();
 
   // 3. S = B K⁻¹ Bᵀ (from the trailing block, or as products), d = B K⁻¹ F − G.

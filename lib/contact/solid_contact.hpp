@@ -16,6 +16,7 @@
 #include "contact/inequality_qp.hpp"
 #include "contact/qp_report.hpp"
 #include "contact/trace_operator.hpp"
+#include "linalg/distribution.hpp"
 #include "space/solid_space.hpp"
 #include "space/surface_multiplier_space.hpp"
 
@@ -31,6 +32,9 @@ struct SolidContactSetup {
   BoxQpOptions qp;
   InequalityQpOptions interior_point;
   SchurPath trace_solve = SchurPath::automatic;  ///< S dense or by products (trace_operator.hpp)
+  /// K factorized over these ranks (each eliminates its part of the box; every rank makes the same
+  /// calls and receives the whole solution), or serial
+  linalg::Distribution distribution;
 };
 
 /// Wall time of a 3-D contact solve's phases (seconds).

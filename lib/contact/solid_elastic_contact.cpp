@@ -115,7 +115,7 @@ SolidElasticSolution solve_solid_elastic_contact(const SolidElasticSetup& setup)
   // 2. K by static condensation (the trace last on the dense path).
   clock = Stopwatch();
   const assembly::CondensedFactor factor(std::make_unique<assembly::SolidElasticCellSystem>(space, setup.materials),
-                                         trailing_dofs(products, b));
+                                         trailing_dofs(products, b), setup.distribution);
   out.seconds.factorization = clock.seconds();
 
   // 3. S (dense or as products) and d.

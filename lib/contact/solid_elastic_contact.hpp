@@ -22,6 +22,7 @@
 #include "contact/inequality_qp.hpp"
 #include "contact/qp_report.hpp"
 #include "contact/solid_contact.hpp"
+#include "linalg/distribution.hpp"
 #include "space/solid_vector_space.hpp"
 #include "space/surface_multiplier_space.hpp"
 
@@ -42,6 +43,9 @@ struct SolidElasticSetup {
   BoxQpOptions qp;
   InequalityQpOptions interior_point;
   SchurPath trace_solve = SchurPath::automatic;  ///< S dense or by products (trace_operator.hpp)
+  /// K factorized over these ranks (each eliminates its part of the box; every rank makes the same
+  /// calls and receives the whole solution), or serial
+  linalg::Distribution distribution;
 };
 
 struct SolidElasticSolution {

@@ -10,6 +10,7 @@
 #include "contact/solid_elastic_contact.hpp"
 #include "core/expression.hpp"
 #include "core/interrupt.hpp"
+#include "core/petsc_session.hpp"
 #include "core/timer.hpp"
 #include "driver/run_outputs.hpp"
 #include "driver/solid_pairing.hpp"
@@ -72,7 +73,8 @@ ContactResult solid_result(scene::Effect effect, const Solution& solution, long 
 }
 
 /// (9), (13) or (15) on the scalar space: samples x,y,z,w,u,obstacle|s,lambda.
-SolvedSolid solve_scalar(const scene::Scene& scene, const SolidDiscretization& d, scene::Effect effect) {
+SolvedSolid solve_scalar(const scene::Scene& scene, const SolidDiscretization& d, scene::Effect effect,
+                         const linalg::Distribution& distribution) {
   Stopwatch clock;
   contact::SolidContactSetup setup;
   setup.space = d.space.get();
@@ -84,6 +86,7 @@ SolvedSolid solve_scalar(const scene::Scene& scene, const SolidDiscretization& d
   setup.obstacle = solid_scene_function(scene, scene.obstacle, "data.g");
   setup.bound = solid_scene_function(scene, scene.friction_bound, "data.s");
   setup.trace_solve = scene.trace_solve;
+  setup.distribution = distribution;
   auto solution = std::make_shared<const contact::SolidContactSolution>(contact::solve_solid_contact(setup));
   const bool signorini = effect == scene::Effect::signorini;
   const assembly::SolidFunction& data = signorini ? setup.obstacle : setup.bound;
@@ -113,9 +116,11 @@ SolvedSolid solve_scalar(const scene::Scene& scene, const SolidDiscretization& d
 /// Frictionless, Tresca or Coulomb contact of the elastic box: samples x,y,z,w,gap,pressure,traction_1,
 /// traction_2 (gap = g − u·n; the tangential tractions along Γ_C's axes e_1, e_2, zero without
 /// friction), the total force P = Σ w · pressure.
-SolvedSolid solve_elastic(const scene::Scene& scene, const SolidDiscretization& d, scene::Effect effect) {
+SolvedSolid solve_elastic(const scene::Scene& scene, const SolidDiscretization& d, scene::Effect effect,
+                          const linalg::Distribution& distribution) {
   Stopwatch clock;
-  const contact::SolidElasticSetup setup = solid_elastic_setup(scene, d, effect);
+  contact::SolidElasticSetup setup = solid_elastic_setup(scene, d, effect);
+  setup.distribution = distribution;
   auto solution = std::make_shared<const contact::SolidElasticSolution>(contact::solve_solid_elastic_contact(setup));
   SolvedSolid out{{},
                   io::CsvTable({"x", "y", "z", "w", "gap", "pressure", "traction_1", "traction_2"}),
@@ -170,6 +175,8 @@ RunResult run_solid_scene(const scene::Scene& scene, const SceneRunOptions& opti
   result.m = d->multiplier_mesh->n_cells();
   result.n_dofs = d->vector_space ? d->vector_space->n_dofs() : d->space->n_dofs();
   result.nmult = d->multipliers->n_dofs();
+  result.ranks = mpi_rank_and_size().second;
+  result.distributed_solver = linalg::to_string(options.distribution.solver);
   // 2. α of the pairing (effect infsup), then the contact problems.
   if (scene.has_effect(scene::Effect::infsup)) {
     say("inf-sup constant");
@@ -181,7 +188,8 @@ RunResult run_solid_scene(const scene::Scene& scene, const SceneRunOptions& opti
     say("solving " + scene::to_string(effect));
     const bool elastic =
         effect == scene::Effect::frictionless || effect == scene::Effect::tresca || effect == scene::Effect::coulomb;
-    solved.push_back(elastic ? solve_elastic(scene, *d, effect) : solve_scalar(scene, *d, effect));
+    solved.push_back(elastic ? solve_elastic(scene, *d, effect, options.distribution)
+                             : solve_scalar(scene, *d, effect, options.distribution));
     result.contacts.push_back(solved.back().result);
     throw_if_cancelled();
   }

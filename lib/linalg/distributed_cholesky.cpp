@@ -126,8 +126,9 @@ std::vector<int> touched_unknowns(const std::vector<PetscInt>& rows) {
   return touched;
 }
 
-// MUMPS's factor `f` of `a`, with `trailing` as its Schur set.
-void factorize_by_mumps(MPI_Comm ranks, Mat a, const std::vector<int>& trailing, Mat* f) {
+// One attempt at MUMPS's factor `f` of `a`, with `trailing` as its Schur set and `extra_workspace`
+// as ICNTL(14) (percent; 0: MUMPS's default). INFOG(1) afterwards (0: factorized).
+PetscInt try_mumps_factor(MPI_Comm ranks, Mat a, const std::vector<int>& trailing, PetscInt extra_workspace, Mat* f) {
   HPC_PETSC_CALL(MatGetFactor(a, MATSOLVERMUMPS, MAT_FACTOR_CHOLESKY, f));
   if (!trailing.empty()) {
     // PETSc's MUMPS interface takes a parallel Schur set only when rank 0 holds all of it: S_T
@@ -143,10 +144,30 @@ void factorize_by_mumps(MPI_Comm ranks, Mat a, const std::vector<int>& trailing,
   // Null pivots counted (INFOG(28)), not passed over: SYM = 2 with a Schur set otherwise replaces
   // a zero pivot of A_II by a static pivot and factorizes a singular matrix without complaint.
   HPC_PETSC_CALL(MatMumpsSetIcntl(*f, 24, 1));
+  if (extra_workspace > 0) HPC_PETSC_CALL(MatMumpsSetIcntl(*f, 14, extra_workspace));
   MatFactorInfo info;
   HPC_PETSC_CALL(MatFactorInfoInitialize(&info));
   HPC_PETSC_CALL(MatCholeskyFactorSymbolic(*f, a, nullptr, &info));
   HPC_PETSC_CALL(MatCholeskyFactorNumeric(*f, a, &info));
+  MatFactorError error = MAT_FACTOR_NOERROR;
+  HPC_PETSC_CALL(MatFactorGetError(*f, &error));
+  PetscInt infog1 = 0;
+  if (error != MAT_FACTOR_NOERROR) HPC_PETSC_CALL(MatMumpsGetInfog(*f, 1, &infog1));
+  return infog1;
+}
+
+// MUMPS's factor `f` of `a`, with `trailing` as its Schur set. Where the workspace was too small
+// (INFOG(1) = -8 or -9: the analysis underestimates the fill of 3-D fronts; seen on 3-D Hertz on
+// two ranks), MUMPS's own remedy: ICNTL(14) doubled from 40 % and the factor made again (PETSc's
+// interface refuses a second numerical factorization after a failed one), at most four times.
+void factorize_by_mumps(MPI_Comm ranks, Mat a, const std::vector<int>& trailing, Mat* f) {
+  PetscInt extra_workspace = 0;
+  for (int attempt = 0; attempt < 5; ++attempt) {
+    const PetscInt infog1 = try_mumps_factor(ranks, a, trailing, extra_workspace, f);
+    if ((infog1 != -8 && infog1 != -9) || attempt == 4) return;
+    HPC_PETSC_CALL(MatDestroy(f));
+    extra_workspace = extra_workspace == 0 ? 40 : 2 * extra_workspace;
+  }
 }
 
 // What MUMPS's error code INFOG(1) means for the user.
@@ -154,7 +175,8 @@ const char* mumps_failure_meaning(PetscInt infog1) {
   if (infog1 == -10 || infog1 == -40) return "the matrix is not positive definite, or singular";
   if (infog1 == -6) return "the matrix is singular";
   if (infog1 == -8 || infog1 == -9 || infog1 == -14 || infog1 == -15 || infog1 == -17)
-    return "its workspace was too small: raise -mat_mumps_icntl_14 (percent of extra space)";
+    return "its workspace was too small, also with ICNTL(14) (percent of extra space) raised to 320: raise "
+           "-mat_mumps_icntl_14 further, or run on more ranks";
   if (infog1 == -13) return "out of memory";
   if (infog1 == -38)
     return "parallel analysis (-mat_mumps_icntl_28 2) needs PT-Scotch or ParMETIS, which this MUMPS lacks";

@@ -1,4 +1,4 @@
-// bisect_cells: recursive coordinate bisection on cell centroids; partition_interface: the edges
+// bisect_cells, bisect_solid_cells: recursive coordinate bisection on cell centroids; partition_interface: the edges
 // and vertices shared between parts; split_cells_on_first_rank: the shorter cut of bisection and
 // PT-Scotch.
 #include "mesh/cell_partition.hpp"
@@ -14,16 +14,19 @@ namespace hpcontact::mesh {
 
 namespace {
 
-// Assigns parts [first_part, first_part + parts) to cells[begin, end).
-void bisect(const std::vector<Point>& centroids, const std::vector<int>& weight, std::vector<int>& cells, int begin,
+// Assigns parts [first_part, first_part + parts) to cells[begin, end); planar or solid centroids.
+template <class Centroid>
+void bisect(const std::vector<Centroid>& centroids, const std::vector<int>& weight, std::vector<int>& cells, int begin,
             int end, int first_part, int parts, std::vector<int>& part_of_cell) {
   if (parts == 1 || end - begin <= 1) {
     for (int k = begin; k < end; ++k) part_of_cell[cells[k]] = first_part;
     return;
   }
-  Point low = centroids[cells[begin]], high = low;
+  Centroid low = centroids[cells[begin]], high = low;
   for (int k = begin; k < end; ++k) low = low.cwiseMin(centroids[cells[k]]), high = high.cwiseMax(centroids[cells[k]]);
-  const int axis = (high - low)(0) >= (high - low)(1) ? 0 : 1;
+  int axis = 0;  // the longest side, the first on a tie
+  for (int a = 1; a < static_cast<int>(low.size()); ++a)
+    if ((high - low)(a) > (high - low)(axis)) axis = a;
   std::sort(cells.begin() + begin, cells.begin() + end, [&](int a, int b) {
     const double xa = centroids[a](axis), xb = centroids[b](axis);
     return xa < xb || (xa == xb && a < b);
@@ -43,23 +46,42 @@ void bisect(const std::vector<Point>& centroids, const std::vector<int>& weight,
   bisect(centroids, weight, cells, middle, end, first_part + left_parts, parts - left_parts, part_of_cell);
 }
 
+template <class Centroid>
+std::vector<int> bisect_centroids(const std::vector<Centroid>& centroids, int parts,
+                                  const std::vector<int>& cell_weights) {
+  HPC_VERIFY(parts >= 1, "a partition needs at least one part");
+  HPC_VERIFY(cell_weights.size() == centroids.size(), "one weight per cell");
+  const int n = static_cast<int>(centroids.size());
+  std::vector<int> cells(n);
+  for (int c = 0; c < n; ++c) {
+    HPC_VERIFY(cell_weights[c] > 0, "cell weights must be positive");
+    cells[c] = c;
+  }
+  std::vector<int> part_of_cell(n, 0);
+  bisect(centroids, cell_weights, cells, 0, n, 0, parts, part_of_cell);
+  return part_of_cell;
+}
+
 }  // namespace
 
 std::vector<int> bisect_cells(const Mesh& mesh, int parts, const std::vector<int>& cell_weights) {
-  HPC_VERIFY(parts >= 1, "a partition needs at least one part");
-  HPC_VERIFY(static_cast<int>(cell_weights.size()) == mesh.n_cells(), "one weight per cell");
   std::vector<Point> centroids(mesh.n_cells());
-  std::vector<int> cells(mesh.n_cells());
   for (int c = 0; c < mesh.n_cells(); ++c) {
-    HPC_VERIFY(cell_weights[c] > 0, "cell weights must be positive");
     Point sum = Point::Zero();
     for (int v : mesh.cell(c)) sum += mesh.vertex(v);
     centroids[c] = sum / mesh.cell_size(c);
-    cells[c] = c;
   }
-  std::vector<int> part_of_cell(mesh.n_cells(), 0);
-  bisect(centroids, cell_weights, cells, 0, mesh.n_cells(), 0, parts, part_of_cell);
-  return part_of_cell;
+  return bisect_centroids(centroids, parts, cell_weights);
+}
+
+std::vector<int> bisect_solid_cells(const SolidMesh& mesh, int parts, const std::vector<int>& cell_weights) {
+  std::vector<SolidPoint> centroids(mesh.n_cells());
+  for (int c = 0; c < mesh.n_cells(); ++c) {
+    SolidPoint sum = SolidPoint::Zero();
+    for (int v : mesh.cell(c)) sum += mesh.vertex(v);
+    centroids[c] = sum / 8.0;
+  }
+  return bisect_centroids(centroids, parts, cell_weights);
 }
 
 PartitionInterface partition_interface(const Mesh& mesh, const std::vector<int>& part_of_cell) {

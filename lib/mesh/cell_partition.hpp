@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "mesh/mesh.hpp"
+#include "mesh/solid_mesh.hpp"
 
 namespace hpcontact::mesh {
 
@@ -19,6 +20,9 @@ namespace hpcontact::mesh {
 /// by cell index, so every process computes the same partition. Part weights differ by at most
 /// one cell's weight per bisection level (equal weights: the median split, sizes within one cell).
 std::vector<int> bisect_cells(const Mesh& mesh, int parts, const std::vector<int>& cell_weights);
+/// The same on hexahedra (centroids in space, the longest of three sides); every process that
+/// holds the mesh computes the same parts, so no communication is needed.
+std::vector<int> bisect_solid_cells(const SolidMesh& mesh, int parts, const std::vector<int>& cell_weights);
 
 /// A partition's cut: the mesh edges and vertices that cells of two or more parts share (each cut
 /// edge carries p - 1 interface unknowns at degree p, each vertex one).

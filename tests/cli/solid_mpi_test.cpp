@@ -1,0 +1,81 @@
+// 3-D solves under mpirun: K factorized over two ranks (each eliminates its half of the box) by
+// each distributed solver, on the dense and the products path of S, give the serial run's energy
+// and boundary samples; α (effect infsup) is refused under mpirun by name.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "support/cli_runner.hpp"
+
+namespace hpcontact::testing {
+namespace {
+
+const std::string kStudies = std::string(HPCONTACT_SOURCE_DIR) + "/studies/three_d/";
+
+nlohmann::json summary_at(const std::filesystem::path& out) {
+  return nlohmann::json::parse(std::ifstream(out / "summary.json"));
+}
+
+// The largest difference of column `name` between two boundary CSVs of one discretization,
+// relative to its largest value.
+double relative_difference(const std::filesystem::path& a, const std::filesystem::path& b, const std::string& name) {
+  const auto rows_a = read_csv(a).records(), rows_b = read_csv(b).records();
+  EXPECT_EQ(rows_a.size(), rows_b.size());
+  double largest = 0.0, difference = 0.0;
+  for (std::size_t k = 0; k < std::min(rows_a.size(), rows_b.size()); ++k) {
+    const double x = std::stod(rows_a[k].at(name)), y = std::stod(rows_b[k].at(name));
+    largest = std::max(largest, std::abs(x));
+    difference = std::max(difference, std::abs(x - y));
+  }
+  return difference / std::max(largest, 1e-300);
+}
+
+TEST(SolidMpi, TwoRanksGiveTheSerialSolveWithEverySolverOnBothPaths) {
+  struct Case {
+    const char* name;
+    std::string scene;
+    const char* effect;
+    const char* column;
+  };
+  const std::vector<Case> cases{{"frictionless", kStudies + "extruded_frictionless.toml", "frictionless", "pressure"},
+                                {"signorini", kStudies + "extruded_signorini.toml", "signorini", "lambda"}};
+  for (const Case& c : cases)
+    for (const char* path : {"dense", "products"}) {
+      const std::string keys = " --effects " + std::string(c.effect) + " --set 'solve.trace_operator=\"" + path + "\"'";
+      const auto dir = scratch(std::string("solid_mpi_") + c.name + "_" + path);
+      const auto serial = run_command("env OPENBLAS_NUM_THREADS=1 " HPCONTACT_CLI " solve " + c.scene + keys +
+                                      " --out " + (dir / "serial").string());
+      ASSERT_EQ(serial.exit_code, 0) << serial.output;
+      const double energy = summary_at(dir / "serial").at(c.effect).at("energy").get<double>();
+      for (const char* solver : {"substructuring", "mumps", "bddc"}) {
+        const std::string what = std::string(c.name) + ", " + path + ", " + solver;
+        const auto out = dir / solver;
+        const auto parallel = run_command(
+            kMpiEnvironment + "mpirun -n 2 --oversubscribe -x OPENBLAS_NUM_THREADS=1 " HPCONTACT_CLI " solve " +
+            c.scene + keys + " --distributed-solver " + solver + " --out " + out.string());
+        ASSERT_EQ(parallel.exit_code, 0) << what << ": " << parallel.output;
+        const auto summary = summary_at(out);
+        EXPECT_EQ(summary.at("ranks").get<int>(), 2) << what;
+        EXPECT_EQ(summary.at("distributed_solver").get<std::string>(), solver) << what;
+        EXPECT_EQ(summary.at(c.effect).at("solver").at("trace_operator").get<std::string>(), path) << what;
+        EXPECT_NEAR(summary.at(c.effect).at("energy").get<double>(), energy, 1e-9 * std::abs(energy)) << what;
+        const std::string csv = std::string("boundary_") + c.effect + ".csv";
+        EXPECT_LT(relative_difference(dir / "serial" / csv, out / csv, c.column), 1e-7) << what;
+      }
+    }
+}
+
+TEST(SolidMpi, AlphaUnderMpirunIsRefusedByName) {
+  const auto dir = scratch("solid_mpi_alpha");
+  const auto refused =
+      run_command(kMpiEnvironment + "mpirun -n 2 --oversubscribe " HPCONTACT_CLI " solve " + kStudies +
+                  "extruded_signorini.toml --effects signorini,infsup --out " + (dir / "out").string());
+  EXPECT_EQ(refused.exit_code, 2) << refused.output;
+  EXPECT_NE(refused.output.find("run.effects"), std::string::npos) << refused.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+}
+
+}  // namespace
+}  // namespace hpcontact::testing
