@@ -34,19 +34,48 @@ Eigen::VectorXd tresca_radius(const SolidElasticSetup& setup) {
   return radius;
 }
 
+/// B = B_n (`blocks` = 1), or [B_n; B_1; B_2] (3): the couplings of u·n, u·e₁, u·e₂ with the
+/// multipliers.
+linalg::Coupling stacked_coupling(const space::SolidVectorSpace& space,
+                                  const space::SurfaceMultiplierSpace& multipliers, int blocks) {
+  const auto& surface = multipliers.mesh().surface();
+  const int m = multipliers.n_dofs();
+  const linalg::Coupling scalar_b = assembly::surface_coupling(space.scalar(), multipliers);
+  std::vector<Eigen::Triplet<double>> entries;
+  const std::array<Eigen::Vector3d, 3> directions{surface.normal(), surface.axis(0), surface.axis(1)};
+  for (int k = 0; k < blocks; ++k) {
+    const linalg::Coupling part = assembly::directional_coupling(space, scalar_b, directions[k]);
+    for (int row = 0; row < part.outerSize(); ++row)
+      for (linalg::Coupling::InnerIterator it(part, row); it; ++it)
+        entries.emplace_back(k * m + row, static_cast<int>(it.col()), it.value());
+  }
+  linalg::Coupling b(blocks * m, space.n_dofs());
+  b.setFromTriplets(entries.begin(), entries.end());
+  return b;
+}
+
 /// Coulomb: the Tresca problems on S, d with radii F P_k at the nodal points, P_k the pressure of
-/// the previous iterate (P_0 = 0), until max |Δλ| / max |λ| ≤ the tolerance.
+/// the previous iterate (P_0 = 0), until max |Δλ| / max |λ| ≤ the tolerance. The report is the
+/// last QP's, with the steps and products of all of them.
 DiscQpSolution solve_coulomb_fixed_point(const SolidElasticSetup& setup, const SolidTraceOperator& s,
                                          const Eigen::VectorXd& d, std::vector<double>& changes) {
   const double coefficient = *setup.friction_coefficient;
   const Eigen::Index m = d.size() / 3;
   Eigen::VectorXd previous = Eigen::VectorXd::Zero(d.size());
+  int steps = 0;
+  long products = 0;
   for (int k = 1; k <= setup.max_fixed_point_iterations; ++k) {
     DiscQpSolution qp = solve_disc_trace_qp(s, d, coefficient * previous.head(m).cwiseMax(0.0));
+    steps += qp.report.iterations;
+    products += qp.report.products;
     const double scale = std::max(qp.x.lpNorm<Eigen::Infinity>(), std::numeric_limits<double>::min());
     changes.push_back((qp.x - previous).lpNorm<Eigen::Infinity>() / scale);
     previous = qp.x;
-    if (changes.back() <= setup.fixed_point_tolerance) return qp;
+    if (changes.back() <= setup.fixed_point_tolerance) {
+      qp.report.iterations = steps;
+      qp.report.products = products;
+      return qp;
+    }
   }
   throw NumericalError(
       fmt::format("Coulomb friction (F = {}): the fixed point on the Tresca problem did not converge in {} iterations "
@@ -88,23 +117,11 @@ SolidElasticSolution solve_solid_elastic_contact(const SolidElasticSetup& setup)
     for (int d = 0; d < scalar.n_dofs(); ++d)
       if (const int dof = space.dof(d, c); dof >= 0) load(dof) = component(d);
   }
-  const auto& surface = setup.multipliers->mesh().surface();
   // (Coulomb: Tresca problems, whose discs the fixed point sizes)
   const bool tresca = setup.threshold || setup.friction_coefficient;
-  const int m = setup.multipliers->n_dofs(), blocks = tresca ? 3 : 1;
-  const linalg::Coupling scalar_b = assembly::surface_coupling(scalar, *setup.multipliers);
-  // B = B_n, or [B_n; B_1; B_2] for Tresca
-  std::vector<Eigen::Triplet<double>> entries;
-  const std::array<Eigen::Vector3d, 3> directions{surface.normal(), surface.axis(0), surface.axis(1)};
-  for (int k = 0; k < blocks; ++k) {
-    const linalg::Coupling part = assembly::directional_coupling(space, scalar_b, directions[k]);
-    for (int row = 0; row < part.outerSize(); ++row)
-      for (linalg::Coupling::InnerIterator it(part, row); it; ++it)
-        entries.emplace_back(k * m + row, static_cast<int>(it.col()), it.value());
-  }
-  linalg::Coupling b(blocks * m, space.n_dofs());
-  b.setFromTriplets(entries.begin(), entries.end());
-  Eigen::VectorXd g = Eigen::VectorXd::Zero(blocks * m);
+  const int m = setup.multipliers->n_dofs();
+  const linalg::Coupling b = stacked_coupling(space, *setup.multipliers, tresca ? 3 : 1);
+  Eigen::VectorXd g = Eigen::VectorXd::Zero(b.rows());
   g.head(m) = assembly::surface_multiplier_load(*setup.multipliers, setup.gap);
   const Eigen::VectorXd radius = setup.threshold ? tresca_radius(setup) : Eigen::VectorXd();
   const bool products = uses_products(setup.trace_solve, b.rows(), b.cols());

@@ -34,7 +34,7 @@ struct SolidElasticSetup {
   std::vector<assembly::Material> materials;          ///< one per cell
   std::array<assembly::SolidFunction, 3> body_force;  ///< f_x, f_y, f_z (empty: 0)
   assembly::SolidFunction gap;                        ///< g: u·n ≤ g on Γ_C
-  assembly::SolidFunction threshold;                  ///< Tresca's s ≥ 0 (empty: frictionless)
+  assembly::SolidFunction threshold;                  ///< Tresca's s ≥ 0 (empty: frictionless or Coulomb)
   /// Coulomb's F ≥ 0 (in place of `threshold`): the discs' radii F P at the nodal points, by the
   /// fixed point s_{k+1} = F P(λ_k) from s_0 = 0 on Tresca problems
   std::optional<double> friction_coefficient;

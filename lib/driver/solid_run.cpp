@@ -1,5 +1,5 @@
-// The 3-D run: the scene's discretization (solid_scene.hpp), its contact problems (scalar or
-// frictionless elastic), their samples on Γ_C and their files.
+// The 3-D run: the scene's discretization (solid_scene.hpp), its contact problems (scalar, or
+// elastic: frictionless, Tresca, Coulomb), their samples on Γ_C and their files.
 #include "driver/solid_run.hpp"
 
 #include <functional>
@@ -213,7 +213,8 @@ RunResult run_solid_scene(const scene::Scene& scene, const SceneRunOptions& opti
                        }});
       for (const auto& name : s.multiplier_names) files.back().fields.push_back({name, 1});
     }
-  write_run_outputs(options.out, options.distribution, files, [&](const std::filesystem::path& out) {
+  // (every rank holds the whole box and solution: rank 0 writes one VTU, not a piece per rank)
+  write_run_outputs(options.out, linalg::Distribution{}, files, [&](const std::filesystem::path& out) {
     if (scene.wants_output(scene::Output::boundary))
       for (const auto& s : solved) s.samples.write(out / ("boundary_" + s.result.problem + ".csv"));
     if (scene.wants_output(scene::Output::summary))

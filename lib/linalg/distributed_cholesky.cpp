@@ -157,14 +157,17 @@ PetscInt try_mumps_factor(MPI_Comm ranks, Mat a, const std::vector<int>& trailin
 }
 
 // MUMPS's factor `f` of `a`, with `trailing` as its Schur set. Where the workspace was too small
-// (INFOG(1) = -8 or -9: the analysis underestimates the fill of 3-D fronts; seen on 3-D Hertz on
+// (INFOG(1) = -8, -9 or -17: the analysis underestimates the fill of 3-D fronts; seen on 3-D Hertz on
 // two ranks), MUMPS's own remedy: ICNTL(14) doubled from 40 % and the factor made again (PETSc's
 // interface refuses a second numerical factorization after a failed one), at most four times.
 void factorize_by_mumps(MPI_Comm ranks, Mat a, const std::vector<int>& trailing, Mat* f) {
+  // (a user's -mat_mumps_icntl_14 overrides ours in every attempt: no retry then)
+  PetscBool user_workspace = PETSC_FALSE;
+  HPC_PETSC_CALL(PetscOptionsHasName(nullptr, nullptr, "-mat_mumps_icntl_14", &user_workspace));
   PetscInt extra_workspace = 0;
   for (int attempt = 0; attempt < 5; ++attempt) {
     const PetscInt infog1 = try_mumps_factor(ranks, a, trailing, extra_workspace, f);
-    if ((infog1 != -8 && infog1 != -9) || attempt == 4) return;
+    if ((infog1 != -8 && infog1 != -9 && infog1 != -17) || attempt == 4 || user_workspace) return;
     HPC_PETSC_CALL(MatDestroy(f));
     extra_workspace = extra_workspace == 0 ? 40 : 2 * extra_workspace;
   }
@@ -175,8 +178,8 @@ const char* mumps_failure_meaning(PetscInt infog1) {
   if (infog1 == -10 || infog1 == -40) return "the matrix is not positive definite, or singular";
   if (infog1 == -6) return "the matrix is singular";
   if (infog1 == -8 || infog1 == -9 || infog1 == -14 || infog1 == -15 || infog1 == -17)
-    return "its workspace was too small, also with ICNTL(14) (percent of extra space) raised to 320: raise "
-           "-mat_mumps_icntl_14 further, or run on more ranks";
+    return "its workspace was too small: raise -mat_mumps_icntl_14 (percent of extra space; the value used is "
+           "ICNTL(14) above), or run on more ranks";
   if (infog1 == -13) return "out of memory";
   if (infog1 == -38)
     return "parallel analysis (-mat_mumps_icntl_28 2) needs PT-Scotch or ParMETIS, which this MUMPS lacks";
@@ -194,9 +197,11 @@ void check_mumps_factor(Mat f, int n) {
     PetscInt infog1 = 0, infog2 = 0;
     HPC_PETSC_CALL(MatMumpsGetInfog(f, 1, &infog1));
     HPC_PETSC_CALL(MatMumpsGetInfog(f, 2, &infog2));
-    throw NumericalError(
-        fmt::format("MUMPS's factorization of a {0}x{0} matrix failed: INFOG(1) = {1}, INFOG(2) = {2} ({3})", n, infog1,
-                    infog2, mumps_failure_meaning(infog1)));
+    PetscInt extra_workspace = 0;
+    HPC_PETSC_CALL(MatMumpsGetIcntl(f, 14, &extra_workspace));
+    throw NumericalError(fmt::format(
+        "MUMPS's factorization of a {0}x{0} matrix failed: INFOG(1) = {1}, INFOG(2) = {2}, ICNTL(14) = {3} ({4})", n,
+        infog1, infog2, extra_workspace, mumps_failure_meaning(infog1)));
   }
   // MUMPS's LDLᵀ runs to the end over negative and null pivots and only counts them (INFOG(12) and
   // INFOG(28), the same on every rank). With a Schur set the root front is S_T itself, not

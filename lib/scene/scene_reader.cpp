@@ -155,8 +155,10 @@ void check_scene_size(const Scene& scene) {
                        std::pow(4.0, scene.refinements) *
                        (scene.dimension() == 3 ? along(2, scene.n_z, scene.grading_z) : 1.0);
   const double p = scene.p.rule.empty() ? scene.p.value : 1.0;  // a rule: at least degree 1 everywhere
-  // Per unknown: 1.2 KB in 2-D; in 3-D, whose factors fill far more, 17.5 KB (3-D Hertz, p = 2,
-  // 191520 unknowns: 3.35 GB), three per node for an elastic box.
+  // Per unknown: 1.2 KB in 2-D; in 3-D, whose factors fill far more, 17.5 KB (3-D Hertz on the grid
+  // T_{C,H}, hertz_grid.toml, p = 2, 191520 unknowns: 3.35 GB; the triangles of hertz.toml on the
+  // finer box measure 19.9 KB: the estimate is a guide, not a bound), three per node for an
+  // elastic box.
   const bool solid = scene.dimension() == 3;
   const double dofs = cells * std::pow(p, scene.dimension()) * (solid && scene.is_elastic() ? 3.0 : 1.0);
   const double bytes = (solid ? 17.5e3 : 1.2e3) * dofs;

@@ -18,7 +18,8 @@ void add_solid_rows(const PerformanceBenchmark& benchmark, BenchmarkRow base,
                     const std::function<void(BenchmarkRow)>& add);
 
 /// Kind "three_d_scene": the elastic 3-D scene `benchmark.scene` (its T_{C,H} and first effect,
-/// frictionless or Tresca) at benchmark.p and benchmark.pC. Rows "linear_A_3d_scene" (the baseline:
+/// frictionless, Tresca or Coulomb: products summed over the fixed point) at benchmark.p and
+/// benchmark.pC. Rows "linear_A_3d_scene" (the baseline:
 /// factorization of K with a free ordering and one solve) and "three_d_scene_products" (the contact
 /// solve with S by products, factorization included, assembly excluded), n = 0.
 /// @throws InputError for a scene that is not 3-D and elastic, naming benchmark.scene.

@@ -63,6 +63,9 @@ TEST(SolidMpi, TwoRanksGiveTheSerialSolveWithEverySolverOnBothPaths) {
         EXPECT_NEAR(summary.at(c.effect).at("energy").get<double>(), energy, 1e-9 * std::abs(energy)) << what;
         const std::string csv = std::string("boundary_") + c.effect + ".csv";
         EXPECT_LT(relative_difference(dir / "serial" / csv, out / csv, c.column), 1e-7) << what;
+        // (each rank holds the whole solution: one VTU from rank 0, no pieces)
+        EXPECT_TRUE(std::filesystem::exists(out / (std::string("solution_") + c.effect + ".vtu"))) << what;
+        EXPECT_FALSE(std::filesystem::exists(out / (std::string("solution_") + c.effect + ".pvtu"))) << what;
       }
     }
 }
