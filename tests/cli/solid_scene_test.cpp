@@ -7,6 +7,7 @@
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <utility>
 
 #include "support/cli_runner.hpp"
 #include "support/vtu_arrays.hpp"
@@ -84,6 +85,22 @@ TEST(SolidScene, ExtrudedPlaneStrainHasThePlanarEnergyAndForceTimesTheWidth) {
   EXPECT_NEAR(force, solid_result.at("total_force").get<double>(), 1e-12);
 }
 
+// The extruded square's 3-D solve of the friction effect `effect` and the planar square's, with the
+// same `friction` keys, into dir/solid and dir/planar: their results in summary.json.
+std::pair<nlohmann::json, nlohmann::json> extruded_and_planar(const std::filesystem::path& dir, const char* effect,
+                                                              const std::string& friction) {
+  const auto solid = run("solve " + std::string(HPCONTACT_SOURCE_DIR) +
+                         "/studies/three_d/extruded_frictionless.toml --set 'run.effects=[\"" + effect + "\"]'" +
+                         friction + "--out " + (dir / "solid").string());
+  EXPECT_EQ(solid.exit_code, 0) << solid.output;
+  const auto planar =
+      run("solve " + std::string(HPCONTACT_SOURCE_DIR) + "/studies/elasticity/square.toml --effects " + effect +
+          " --set 'boundary.contact=\"abs(y + 1) < 1e-9\"'" + friction + "--out " + (dir / "planar").string());
+  EXPECT_EQ(planar.exit_code, 0) << planar.output;
+  if (solid.exit_code != 0 || planar.exit_code != 0) return {};
+  return {summary_of(dir / "solid").at(effect), summary_of(dir / "planar").at(effect)};
+}
+
 // Tresca in 3-D (a disc |(t₁, t₂)| ≤ s per nodal point) on the plane-strain square extruded in y:
 // with y-independent data and rollers u_y = 0 the solution is the planar one at every y, t₂ = 0, and
 // the disc acts as the planar bound |t₁| ≤ s: energy and P are the planar ones times the width,
@@ -91,17 +108,8 @@ TEST(SolidScene, ExtrudedPlaneStrainHasThePlanarEnergyAndForceTimesTheWidth) {
 TEST(SolidScene, ExtrudedTrescaHasThePlanarEnergyAndForceTimesTheWidth) {
   const auto dir = scratch("solid_tresca");
   const std::string friction = " --set 'data.f_x=\"0.05\"' --set 'data.s=\"0.1\"' ";
-  const auto solid = run("solve " + std::string(HPCONTACT_SOURCE_DIR) +
-                         "/studies/three_d/extruded_frictionless.toml --set 'run.effects=[\"tresca\"]'" + friction +
-                         "--out " + (dir / "solid").string());
-  ASSERT_EQ(solid.exit_code, 0) << solid.output;
-  const auto planar = run("solve " + std::string(HPCONTACT_SOURCE_DIR) +
-                          "/studies/elasticity/square.toml --effects tresca --set 'boundary.contact=\"abs(y + "
-                          "1) < 1e-9\"'" +
-                          friction + "--out " + (dir / "planar").string());
-  ASSERT_EQ(planar.exit_code, 0) << planar.output;
-  const auto solid_result = summary_of(dir / "solid").at("tresca");
-  const auto planar_result = summary_of(dir / "planar").at("tresca");
+  const auto [solid_result, planar_result] = extruded_and_planar(dir, "tresca", friction);
+  if (HasFailure()) return;
   for (const char* key : {"energy", "total_force"}) {
     const double expected = 0.5 * planar_result.at(key).get<double>();
     EXPECT_NEAR(solid_result.at(key).get<double>(), expected, 1e-9 * std::abs(expected)) << key;
@@ -129,17 +137,8 @@ TEST(SolidScene, ExtrudedTrescaHasThePlanarEnergyAndForceTimesTheWidth) {
 TEST(SolidScene, ExtrudedCoulombHasThePlanarEnergyAndForceTimesTheWidth) {
   const auto dir = scratch("solid_coulomb");
   const std::string friction = " --set 'data.f_x=\"0.05\"' --set data.friction_coefficient=0.2 ";
-  const auto solid = run("solve " + std::string(HPCONTACT_SOURCE_DIR) +
-                         "/studies/three_d/extruded_frictionless.toml --set 'run.effects=[\"coulomb\"]'" + friction +
-                         "--out " + (dir / "solid").string());
-  ASSERT_EQ(solid.exit_code, 0) << solid.output;
-  const auto planar = run("solve " + std::string(HPCONTACT_SOURCE_DIR) +
-                          "/studies/elasticity/square.toml --effects coulomb --set 'boundary.contact=\"abs(y + "
-                          "1) < 1e-9\"'" +
-                          friction + "--out " + (dir / "planar").string());
-  ASSERT_EQ(planar.exit_code, 0) << planar.output;
-  const auto solid_result = summary_of(dir / "solid").at("coulomb");
-  const auto planar_result = summary_of(dir / "planar").at("coulomb");
+  const auto [solid_result, planar_result] = extruded_and_planar(dir, "coulomb", friction);
+  if (HasFailure()) return;
   for (const char* key : {"energy", "total_force"}) {
     const double expected = 0.5 * planar_result.at(key).get<double>();
     EXPECT_NEAR(solid_result.at(key).get<double>(), expected, 1e-8 * std::abs(expected)) << key;
