@@ -2,7 +2,7 @@
 # One-command set-up and run on Debian 12: installs the missing Debian packages (apt-get, through
 # sudo when not root), configures and builds with CMake (Release, build/), then runs
 #   study    the main job: the studies (convergence, stability, the paper's §7 figures, work-precision,
-#            curved boundaries, elasticity), writing CSV and PNG into results/ only
+#            curved boundaries, hp-adaptivity, elasticity), writing CSV and PNG into results/ only
 #   figures  the same, then copies the pictures and tables the docs show from results/ into
 #            studies/ (the committed ones; for developers)
 #   test   a formatting check (.clang-format), the GoogleTest suite through CTest; then the same
@@ -153,6 +153,11 @@ build/bin/hpcontact work-precision studies/work_precision/study.toml --out resul
 publish results/work_precision/work_precision.png studies/work_precision/work_precision.png
 publish results/work_precision/cheapest.csv studies/work_precision/cheapest.csv
 publish results/work_precision/reference.csv studies/work_precision/reference.csv
+section "hp-adaptivity of (9) from a uniform 4 x 4 start: studies/adaptive/signorini.toml -> results/adaptive"
+build/bin/hpcontact solve studies/adaptive/signorini.toml --out results/adaptive/signorini
+"$python" plots/plot_adaptive.py results/adaptive/signorini results/work_precision/cheapest.csv
+publish results/adaptive/signorini/adaptive.png studies/adaptive/signorini.png
+publish results/adaptive/signorini/adapt.csv studies/adaptive/signorini_adapt.csv
 section "Hertz validation of the elastic contact solver: studies/elasticity/hertz_study.toml -> results/hertz"
 build/bin/hpcontact hertz studies/elasticity/hertz_study.toml --out results/hertz
 "$python" plots/plot_hertz.py results/hertz

@@ -117,11 +117,11 @@ void add_master_traces(infsup::TracePairing& pairing, const scene::Scene& master
 infsup::TracePairing trace_pairing_of(const scene::Scene& scene, const mesh::ContactBoundary& contact,
                                       const std::vector<std::array<bool, 2>>& held_zone_ends,
                                       const mesh::BoundaryMesh& boundary_mesh, std::vector<int> segment_degrees,
-                                      const mesh::MasterProjection* projection) {
+                                      const mesh::MasterProjection* projection, const std::vector<int>& trace_degrees) {
   infsup::TracePairing pairing;
   pairing.held_zone_ends = held_zone_ends;
   for (const auto& edge : contact.edges()) pairing.edges.push_back({edge.s_begin, edge.s_end});
-  pairing.edge_degrees = scene::scene_trace_degrees(scene, contact);
+  pairing.edge_degrees = trace_degrees.empty() ? scene::scene_trace_degrees(scene, contact) : trace_degrees;
   const auto& mesh = contact.mesh();
   for (const auto& edge : contact.edges()) {
     // The cell's extent normal to the edge's chord.
@@ -171,8 +171,8 @@ StabilityReport predict_stability(const scene::Scene& scene, const SceneDiscreti
   report.threshold = infsup::kStablePatchAlpha;
   infsup::PredictedAlpha predicted;
   try {
-    predicted = infsup::predict_alpha(
-        trace_pairing_of(scene, *d.contact, d.held_zone_ends, *d.boundary_mesh, d.segment_degrees, projection));
+    predicted = infsup::predict_alpha(trace_pairing_of(scene, *d.contact, d.held_zone_ends, *d.boundary_mesh,
+                                                       d.segment_degrees, projection, d.trace_degrees));
   } catch (const NumericalError& error) {
     // No prediction is no reason to stop the run: the report says why it is missing.
     report.failure = error.what();

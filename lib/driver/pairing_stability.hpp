@@ -15,10 +15,12 @@ namespace hpcontact::driver {
 /// pairing ([infsup] problem = "friction"), the weight s. The trace degrees are the scene's p.
 /// A two-body scene with `projection` (Φ onto the master's Γ_C) adds the master's traces.
 /// `held_zone_ends` (SceneMesh::held_zone_ends) tells where Γ_D holds a zone's end.
+/// `trace_degrees` (SceneDiscretization::trace_degrees), when not empty, replaces the scene's p.
 infsup::TracePairing trace_pairing_of(const scene::Scene& scene, const mesh::ContactBoundary& contact,
                                       const std::vector<std::array<bool, 2>>& held_zone_ends,
                                       const mesh::BoundaryMesh& boundary_mesh, std::vector<int> segment_degrees,
-                                      const mesh::MasterProjection* projection = nullptr);
+                                      const mesh::MasterProjection* projection = nullptr,
+                                      const std::vector<int>& trace_degrees = {});
 
 /// The prediction for the scene's pairing on `d`; when it is not stable, the stable candidate
 /// with the most multipliers among p_C lowered (a number p_C only) and T_{C,H} coarsened by 2

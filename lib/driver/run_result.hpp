@@ -114,6 +114,27 @@ struct FreeBoundarySummary {
   double moved = 0.0, seconds = 0.0;
 };
 
+/// One step of an adaptive run ([adapt]): the discretization solved, its estimate, what the step
+/// then refined (adapt.csv, summary.json).
+struct AdaptStep {
+  int step = 0;
+  long long unknowns = 0, multipliers = 0;
+  double estimate = 0.0;  ///< η²/2, the estimated error in the energy
+  double energy = 0.0;
+  double alpha = 0.0;    ///< the predicted α of the step's pairing (NaN where the predictor failed)
+  double seconds = 0.0;  ///< since the adaptivity began, this step's solve and estimate included
+  int largest_degree = 0, deepest_level = 0;  ///< of T_h's cells
+  int split = 0, raised = 0;                  ///< leaves split, degrees raised after the step
+};
+
+/// An adaptive run's steps and why it stopped.
+struct AdaptSummary {
+  std::vector<AdaptStep> steps;
+  std::string stopped;  ///< "target", "max_unknowns" or "max_steps"
+  double target = 0.0;
+  std::optional<double> reference_energy;  ///< adapt.reference_energy
+};
+
 /// A change of the scene that the predictor finds stable: the nearest to the scene's pairing
 /// (the most multipliers among the stable candidates).
 struct StableAlternative {
@@ -148,6 +169,7 @@ struct RunResult {
   std::optional<long long> faces_on_contact;  ///< 3-D: the trace faces on Γ_C (then m counts T_{C,H}'s cells)
   std::vector<OperatorRecord> operators;      ///< every operator built, in order
   std::optional<FreeBoundarySummary> free_boundary;
+  std::optional<AdaptSummary> adapt;         ///< an adaptive scene: its steps (the effects ran on the last)
   std::optional<StabilityReport> stability;  ///< runs with a contact problem or α
   std::vector<ContactResult> contacts;       ///< in the order the problems ran
   std::optional<InfSupSummary> infsup;

@@ -74,7 +74,7 @@ InfSupSummary infsup_summary(const Level& level, const infsup::InfSupSetup& setu
   s.record = infsup::make_infsup_record(pairing, alpha);
   s.record.alpha_predicted =
       infsup::predict_alpha(trace_pairing_of(level.scene, *d.contact, d.held_zone_ends, *d.boundary_mesh,
-                                             d.segment_degrees, level.model->master_projection()))
+                                             d.segment_degrees, level.model->master_projection(), d.trace_degrees))
           .alpha;
   s.reference_level = alpha.reference_level;
   s.lambda_unique = !alpha.singular;

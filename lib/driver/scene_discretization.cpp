@@ -109,6 +109,27 @@ std::unique_ptr<SceneDiscretization> discretize_scene(const scene::Scene& scene,
   return d;
 }
 
+std::unique_ptr<SceneDiscretization> discretize_adapted(const scene::Scene& scene, mesh::Mesh mesh,
+                                                        std::vector<int> cell_degrees, int degree_drop) {
+  auto d = std::make_unique<SceneDiscretization>();
+  d->mesh = std::make_unique<mesh::Mesh>(std::move(mesh));
+  d->cell_degrees = std::move(cell_degrees);
+  d->contact_cells = contact_cells_of(*d->mesh);
+  d->held_zone_ends = held_zone_ends_of(*d->mesh);
+  d->contact = std::make_unique<mesh::ContactBoundary>(*d->contact_cells);
+  d->boundary_mesh = std::make_unique<mesh::BoundaryMesh>(d->contact->edge_mesh());
+  const auto [smallest, largest] = std::minmax_element(d->cell_degrees.begin(), d->cell_degrees.end());
+  d->smallest_cell_degree = *smallest, d->largest_cell_degree = *largest;
+  for (const auto& edge : d->contact->edges()) {
+    const int p = d->cell_degrees[static_cast<std::size_t>(d->contact_cells->global_cell(edge.cell))];
+    d->trace_degrees.push_back(p);
+    d->segment_degrees.push_back(std::max(p - degree_drop, 0));
+  }
+  scene::check_family_fits(scene, *d->boundary_mesh, d->segment_degrees);
+  d->multipliers = std::make_unique<space::MultiplierSpace>(*d->boundary_mesh, d->segment_degrees);
+  return d;
+}
+
 void release_whole_mesh(SceneDiscretization& d, const mesh::Mesh& operators_mesh) {
   if (&operators_mesh == d.mesh.get()) return;
   d.mesh.reset();

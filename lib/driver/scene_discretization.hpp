@@ -37,6 +37,9 @@ struct SceneDiscretization {
   int smallest_cell_degree = 0, largest_cell_degree = 0;  ///< of cell_degrees, on every rank
   std::vector<int> segment_degrees;
   std::unique_ptr<space::MultiplierSpace> multipliers;  ///< M^{p_C}(T_{C,H}), refers to boundary_mesh
+  /// p_T of the cell of each edge of Γ_C (contact->edges()' order) where the cells' degrees are not
+  /// the scene's (an adapted mesh); empty: the scene's (scene::scene_trace_degrees).
+  std::vector<int> trace_degrees;
 };
 
 /// T_h with its degrees, and Γ_C's cells of T_h as a part of it (mesh::Mesh::extract).
@@ -60,6 +63,12 @@ SceneMesh build_scene_mesh_on_first_rank(const scene::Scene& scene, const linalg
 /// on every rank. @throws InputError as the scene's builders do, on every rank alike.
 std::unique_ptr<SceneDiscretization> discretize_scene(const scene::Scene& scene,
                                                       const linalg::Distribution& distribution = {});
+
+/// The discretization of an adapted T_h (serial): `mesh` with `cell_degrees`, T_{C,H} its trace on
+/// Γ_C (a segment per edge), p_C = max(p_T − `degree_drop`, 0) on each segment.
+/// @throws InputError as the scene's builders do.
+std::unique_ptr<SceneDiscretization> discretize_adapted(const scene::Scene& scene, mesh::Mesh mesh,
+                                                        std::vector<int> cell_degrees, int degree_drop);
 
 /// Frees the whole T_h of `discretization` and its cells' degrees when the operators built on it
 /// live on a part of it (`operators_mesh`, the space's mesh: a distributed run), so that no rank

@@ -1,9 +1,13 @@
 // The run pipeline: a scene's effects in stages (run_stages.hpp), its result, its files.
 #include "driver/scene_run.hpp"
 
+#include <fmt/format.h>
+
+#include "core/error.hpp"
 #include "core/interrupt.hpp"
 #include "core/petsc_session.hpp"
 #include "core/timer.hpp"
+#include "driver/adaptive_run.hpp"
 #include "driver/free_boundary_fit.hpp"
 #include "driver/pairing_stability.hpp"
 #include "driver/run_outputs.hpp"
@@ -24,6 +28,25 @@ scene::Scene fitted_scene(const scene::Scene& scene, const StageContext& context
                        : fit_free_boundary(scene, scene.contact_effects());
   result.free_boundary = FreeBoundarySummary{fit.points, fit.solves, fit.moved, clock.seconds()};
   return fit.scene;
+}
+
+// 1. An adaptive scene's discretization: the last of its adaptive steps (serial).
+std::unique_ptr<Level> adapted_level(const scene::Scene& scene, const StageContext& context, RunResult& result) {
+  if (context.distribution.distributed())
+    throw InputError(scene.file + ": an adaptive scene (adapt.target given) runs serially: run it without mpirun");
+  context.say("adapting T_h and T_{C,H}");
+  auto adapted = adapt_discretization(scene, context.progress);
+  result.adapt = std::move(adapted.summary);
+  const auto& last = result.adapt->steps.back();
+  if (result.adapt->stopped != "target")
+    context.say(
+        fmt::format("warning: the adaptivity stopped at {} with the estimate {:.3g} above adapt.target = {:.3g}",
+                    result.adapt->stopped == "max_steps" ? "adapt.max_steps" : "adapt.max_unknowns", last.estimate,
+                    result.adapt->target));
+  auto level = std::make_unique<Level>();
+  level->scene = scene;
+  level->d = std::move(adapted.d);
+  return level;
 }
 
 // What the result says of the run as a whole: the scene, its discretization, the operators built.
@@ -79,6 +102,7 @@ void write_outputs(const Level& base, const RunResult& result, RunFiles& files, 
     for (const auto& file : files.texts) io::write_file_atomically(out / file.name, file.text);
     if (files.mode) files.mode->write(out / "mode.csv");
     if (!result.convergence.empty()) convergence_table(result.convergence).write(out / "convergence.csv");
+    if (result.adapt) adapt_table(*result.adapt).write(out / "adapt.csv");
     if (scene.wants_output(scene::Output::summary))
       io::write_file_atomically(out / "summary.json", summary_json(result));
   });
@@ -97,8 +121,9 @@ RunResult run_scene(const scene::Scene& given_scene, const SceneRunOptions& opti
   RunFiles files;
   // 0. Optionally the mesh graded towards the free boundary; the effects then run on that mesh.
   const scene::Scene scene = given_scene.fit_free_boundary ? fitted_scene(given_scene, context, result) : given_scene;
-  // 1. Meshes and degrees. 2. The model's operators, built on first use and shared by the effects.
-  const auto base = discretize(scene, context);
+  // 1. Meshes and degrees (an adaptive scene's: adapted). 2. The model's operators, built on first
+  //    use and shared by the effects.
+  const auto base = scene.is_adaptive() ? adapted_level(scene, context, result) : discretize(scene, context);
   build_operators(*base, &log, context, reads_whole_mesh_after_operators(scene));
   throw_if_cancelled();  // (a cancellation point between stages: core/interrupt.hpp)
   // 2b. Whether the pairing is stable, predicted before anything is solved: a refused run stops

@@ -146,6 +146,13 @@ std::string summary_json(const RunResult& r) {
                           {"moved", r.free_boundary->moved},
                           {"seconds", r.free_boundary->seconds}};
   }
+  if (r.adapt) {
+    const auto& last = r.adapt->steps.back();
+    j["adapt"] = {{"steps", r.adapt->steps.size()},   {"stopped", r.adapt->stopped},
+                  {"target", r.adapt->target},        {"estimate", last.estimate},
+                  {"largest_p", last.largest_degree}, {"deepest_level", last.deepest_level},
+                  {"seconds", last.seconds},          {"file", "adapt.csv"}};
+  }
   if (r.stability) j["stability"] = stability_json(*r.stability);
   for (const auto& contact : r.contacts) j[contact.problem] = contact_json(contact);
   if (r.infsup) j["infsup"] = infsup_json(*r.infsup);

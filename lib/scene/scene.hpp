@@ -51,6 +51,17 @@ struct Degree {
 
 struct ContactPair;
 
+/// [adapt]: hp-adaptivity of T_h and T_{C,H} from the residual estimator (driver/adaptive_run.hpp).
+struct AdaptSettings {
+  double target = 0.0;  ///< stop at an estimated error in the energy η²/2 ≤ target; 0: not adaptive
+  long long max_unknowns = 200000;
+  int max_steps = 60;
+  double fraction = 0.5;    ///< Dörfler's share of η² that the marked leaves hold
+  double smoothness = 0.5;  ///< Legendre decay ratio up to which a marked cell gets p + 1 rather than split
+  int max_degree = 14;
+  std::optional<double> reference_energy;  ///< the exact energy, for the error and effectivity columns
+};
+
 struct Scene {
   std::string file;  ///< the scene file (or the name of a built-in scene)
   // Two-body scenes ([[body]] and [[pair]] tables): each body is read as a scene of its own; the
@@ -140,6 +151,10 @@ struct Scene {
   std::vector<Output> outputs = all_outputs();
   // [convergence]
   int convergence_refinements = 3;
+  // [adapt]
+  AdaptSettings adapt;
+  /// Whether the run adapts T_h and T_{C,H} (adapt.target given).
+  bool is_adaptive() const { return adapt.target > 0.0; }
 
   /// 3 for a box (domain.n_z given), else 2: the variables of the scene's expressions.
   int dimension() const { return n_z > 0 || !box_nodes[2].empty() ? 3 : 2; }

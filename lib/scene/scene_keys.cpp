@@ -14,6 +14,7 @@
 
 #include "core/error.hpp"
 #include "core/expression.hpp"
+#include "scene/adapt_keys.hpp"
 #include "scene/box_keys.hpp"
 #include "scene/key_builders.hpp"
 #include "scene/obstacle_keys.hpp"
@@ -325,6 +326,7 @@ std::vector<SceneKey> declare_keys() {
   add_discretization_and_data_keys(keys);
   add_obstacle_keys(keys);
   add_run_keys(keys);
+  add_adapt_keys(keys);
   return keys;
 }
 

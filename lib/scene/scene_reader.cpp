@@ -13,6 +13,7 @@
 #include "core/error.hpp"
 #include "core/memory_limit.hpp"
 #include "io/toml_reader.hpp"
+#include "scene/adapt_keys.hpp"
 #include "scene/obstacle_keys.hpp"
 #include "scene/scene_keys.hpp"
 #include "scene/scene_tree.hpp"
@@ -321,6 +322,7 @@ Scene read_scene_tree(const std::shared_ptr<toml::table>& tree, const std::strin
   check_boundary_and_contact_mesh(scene);
   check_obstacle(scene);
   if (scene.given.contains("run.effects") || scene.given.contains("run.outputs")) check_effects(scene);
+  check_adapt(scene);
   check_scene_size(scene);
   return scene;
 }

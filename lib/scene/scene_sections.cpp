@@ -23,7 +23,9 @@ const std::vector<SceneSection>& scene_sections() {
       {"infsup", false, "the inf-sup constant α (effect infsup, `hpcontact infsup`)"},
       {"solve", false, "the contact solve"},
       {"run", false, "effects and outputs of `hpcontact solve`"},
-      {"convergence", false, "the convergence effect"}};
+      {"convergence", false, "the convergence effect"},
+      {"adapt", false,
+       "hp-adaptivity of T_h and T_{C,H} from the residual error estimator (adapt.target makes a scene adaptive)"}};
   return sections;
 }
 
