@@ -5,17 +5,22 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
+#include <optional>
 
+#include "adapt/elastic_residual_estimator.hpp"
 #include "adapt/legendre_decay.hpp"
 #include "adapt/residual_estimator.hpp"
 #include "assembly/cell_field.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
 #include "core/timer.hpp"
+#include "driver/elastic_scene.hpp"
 #include "driver/pairing_stability.hpp"
 #include "mesh/adaptive_mesh.hpp"
 #include "operators/primal_operators.hpp"
+#include "postprocess/moment_half_width.hpp"
 #include "scene/scene_mesh.hpp"
 #include "space/multiplier_family.hpp"
 
@@ -49,6 +54,53 @@ double predicted_alpha(const scene::Scene& scene, const SceneDiscretization& d) 
   } catch (const NumericalError&) {
     return NAN;  // no prediction is no reason to stop adapting: the column says it is missing
   }
+}
+
+// What a step's solve leaves for the marking and for adapt.csv: η_T² and θ_T per cell of T_h.
+struct SolvedStep {
+  long long unknowns = 0;
+  double energy = 0.0, estimate = 0.0, moment_half_width = NAN;
+  std::vector<double> eta2, theta;
+};
+
+// Step 2 of the loop on a scalar scene; nullopt (nothing solved) where T_h has more than `limit`
+// unknowns.
+std::optional<SolvedStep> solve_scalar_step(const scene::Scene& scene, const SceneDiscretization& d, long long limit) {
+  const operators::PrimalOperators primal(*d.mesh, d.cell_degrees);
+  if (primal.space().n_dofs() > limit) return std::nullopt;
+  const auto setup = contact_setup_of(scene, d, scene.contact_effects().front(), primal);
+  const auto solution = contact::solve_contact(setup);
+  const auto indicators = adapt::residual_indicators(setup, solution, primal.space());
+  const auto field = assembly::scalar_field(primal.space(), solution.u, solution.u_rows, solution.lift);
+  SolvedStep out{primal.space().n_dofs(),
+                 solution.energy,
+                 0.5 * indicators.squared(),
+                 NAN,
+                 indicators.cell,
+                 adapt::legendre_decay(primal.space(), field)};
+  if (setup.problem == contact::ContactProblem::signorini)  // λ ≤ 0 where in contact
+    out.moment_half_width = postprocess::moment_half_width(*d.multipliers, -solution.lambda_legendre);
+  return out;
+}
+
+// The same on an elastic scene (its one contact problem against the rigid obstacle).
+std::optional<SolvedStep> solve_elastic_step(const scene::Scene& scene, const SceneDiscretization& d, long long limit) {
+  const auto operators = scene_elastic_operators(scene, d.mesh.get(), d.cell_degrees);
+  if (operators->n_dofs() > limit) return std::nullopt;
+  const auto setup = elastic_setup_of(scene, d, scene.elastic_effects().front(), *operators);
+  const auto solution = contact::solve_elastic_contact(setup);
+  const auto indicators =
+      adapt::elastic_residual_indicators(setup, solution, scene::scene_fixed_components(scene, *d.mesh));
+  const auto field = assembly::vector_field(operators->vector_space(), solution.u, solution.u_rows, solution.lift);
+  SolvedStep out{operators->n_dofs(),
+                 solution.energy,
+                 0.5 * indicators.squared(),
+                 NAN,
+                 indicators.cell,
+                 adapt::legendre_decay(operators->space(), field)};
+  if (setup.problem != contact::ElasticContactProblem::tied)
+    out.moment_half_width = postprocess::moment_half_width(*d.multipliers, solution.pressure);
+  return out;
 }
 
 // What the forest and its degrees are between steps.
@@ -88,7 +140,6 @@ AdaptedDiscretization adapt_discretization(const scene::Scene& scene,
   HPC_VERIFY(scene.is_adaptive(), "adapt_discretization of a scene without adapt.target");
   Stopwatch clock;
   const auto& settings = scene.adapt;
-  const auto problem = scene.contact_effects().front();
   const mesh::Mesh coarse = scene::build_scene_mesh(scene);
   Forest forest{mesh::AdaptiveMesh(coarse, scene.file), scene::scene_cell_degrees(scene, coarse)};
   AdaptedDiscretization out;
@@ -107,20 +158,19 @@ AdaptedDiscretization adapt_discretization(const scene::Scene& scene,
       row.deepest_level = std::max(row.deepest_level, forest.leaves.level(leaf_of_cell[c]));
     }
     auto d = discretize_adapted(scene, std::move(mesh), std::move(degrees), scene.p.value - scene.pc.value);
-    const operators::PrimalOperators primal(*d->mesh, d->cell_degrees);
-    if (step > 0 && primal.space().n_dofs() > settings.max_unknowns) {
+    // 2. Solve and estimate.
+    const long long limit = step > 0 ? settings.max_unknowns : std::numeric_limits<long long>::max();
+    auto solved = scene.is_elastic() ? solve_elastic_step(scene, *d, limit) : solve_scalar_step(scene, *d, limit);
+    if (!solved) {
       out.summary.stopped = "max_unknowns";
       break;
     }
-    // 2. Solve and estimate.
-    const auto setup = contact_setup_of(scene, *d, problem, primal);
-    const auto solution = contact::solve_contact(setup);
-    const auto indicators = adapt::residual_indicators(setup, solution, primal.space());
     row.step = step;
-    row.unknowns = primal.space().n_dofs();
+    row.unknowns = solved->unknowns;
     row.multipliers = space::multiplier_function_count(*d->multipliers, scene.family);
-    row.estimate = 0.5 * indicators.squared();
-    row.energy = solution.energy;
+    row.estimate = solved->estimate;
+    row.energy = solved->energy;
+    row.moment_half_width = solved->moment_half_width;
     row.alpha = predicted_alpha(scene, *d);
     row.seconds = clock.seconds();
     if (say)
@@ -135,8 +185,7 @@ AdaptedDiscretization adapt_discretization(const scene::Scene& scene,
       break;
     }
     // 4. Mark and refine.
-    const auto field = assembly::scalar_field(primal.space(), solution.u, solution.u_rows, solution.lift);
-    refine_marked(scene, forest, leaf_of_cell, indicators.cell, adapt::legendre_decay(primal.space(), field), row);
+    refine_marked(scene, forest, leaf_of_cell, solved->eta2, solved->theta, row);
     out.summary.steps.push_back(row);
     out.d = std::move(d);
   }
@@ -145,7 +194,7 @@ AdaptedDiscretization adapt_discretization(const scene::Scene& scene,
 
 io::CsvTable adapt_table(const AdaptSummary& summary) {
   std::vector<std::string> columns{"step",    "unknowns",  "multipliers",   "estimate", "energy", "alpha",
-                                   "seconds", "largest_p", "deepest_level", "split",    "raised"};
+                                   "seconds", "largest_p", "deepest_level", "split",    "raised", "moment_half_width"};
   const auto& reference = summary.reference_energy;
   if (reference) columns.insert(columns.end(), {"error_energy", "effectivity"});
   io::CsvTable table(columns);
@@ -160,7 +209,8 @@ io::CsvTable adapt_table(const AdaptSummary& summary) {
                                  static_cast<long long>(r.largest_degree),
                                  static_cast<long long>(r.deepest_level),
                                  static_cast<long long>(r.split),
-                                 static_cast<long long>(r.raised)};
+                                 static_cast<long long>(r.raised),
+                                 r.moment_half_width};
     if (reference) {
       const double error = std::abs(r.energy - *reference);
       row.insert(row.end(), {error, std::sqrt(r.estimate / error)});

@@ -1,5 +1,5 @@
-// hp-adaptivity of T_h and T_{C,H} for the scalar contact problems: solve, estimate
-// (adapt/residual_estimator.hpp), mark, refine (mesh/adaptive_mesh.hpp) or raise p
+// hp-adaptivity of T_h and T_{C,H} for the scalar contact problems and elastic contact against a
+// rigid obstacle: solve, estimate (adapt/residual_estimator.hpp, adapt/elastic_residual_estimator.hpp), mark, refine (mesh/adaptive_mesh.hpp) or raise p
 // (adapt/legendre_decay.hpp), until the estimate meets [adapt] target. The run's effects then run
 // on the last discretization (scene_run.cpp).
 #pragma once
@@ -35,7 +35,7 @@ AdaptedDiscretization adapt_discretization(const scene::Scene& scene,
                                            const std::function<void(const std::string&)>& say);
 
 /// adapt.csv: step,unknowns,multipliers,estimate,energy,alpha,seconds,largest_p,deepest_level,split,
-/// raised, and error_energy,effectivity (|E − E_ref| and √(estimate / |E − E_ref|)) with a reference
+/// raised,moment_half_width, and error_energy,effectivity (|E − E_ref| and √(estimate / |E − E_ref|)) with a reference
 /// energy.
 io::CsvTable adapt_table(const AdaptSummary& summary);
 

@@ -7,6 +7,7 @@
 #include "driver/exact_check.hpp"
 #include "io/vtu_writer.hpp"
 #include "postprocess/elastic_boundary_samples.hpp"
+#include "postprocess/moment_half_width.hpp"
 
 namespace hpcontact::driver {
 
@@ -27,6 +28,9 @@ ContactResult elastic_result(const contact::ElasticContactSetup& setup, const co
   // Tied contact bonds all of Γ_C whatever the sign of the traction: its contact set is Γ_C.
   const bool tied = setup.problem == contact::ElasticContactProblem::tied;
   r.contact_set_length = tied ? setup.boundary_mesh->length() : samples.contact_set_length;
+  if (!tied)
+    r.moment_half_width = postprocess::moment_half_width(
+        space::MultiplierSpace(*setup.boundary_mesh, setup.segment_degrees), solution.pressure);
   r.total_force = samples.total_force;
   r.tangential_force = samples.tangential_force;
   r.contact_force = {samples.contact_force.x(), samples.contact_force.y()};

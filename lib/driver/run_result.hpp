@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -62,6 +63,9 @@ struct ContactResult {
   double energy = 0.0;  ///< E(u) = ½ a(u, u) − F(u)
   long long n_dofs = 0, nmult = 0, n_trace = 0;
   double contact_set_length = 0.0;
+  /// elastic against a rigid obstacle (not tied): the contact set's half-width as a moment of the
+  /// pressure (postprocess/moment_half_width.hpp) — a on Hertz
+  std::optional<double> moment_half_width;
   std::optional<double> contact_area;      ///< 3-D: the area of Γ_C where the multiplier does not vanish
   std::optional<double> total_force;       ///< elastic: P = ∫_{Γ_C} pressure ds
   std::optional<double> tangential_force;  ///< elastic: T = ∫_{Γ_C} σ_nt ds (along increasing s)
@@ -125,6 +129,9 @@ struct AdaptStep {
   double seconds = 0.0;  ///< since the adaptivity began, this step's solve and estimate included
   int largest_degree = 0, deepest_level = 0;  ///< of T_h's cells
   int split = 0, raised = 0;                  ///< leaves split, degrees raised after the step
+  /// The contact set's half-width as a moment of the pressure (−λ for (9);
+  /// postprocess/moment_half_width.hpp): a on the Hertz problem; NaN for (13), (15) and tied contact.
+  double moment_half_width = NAN;
 };
 
 /// An adaptive run's steps and why it stopped.

@@ -1,6 +1,7 @@
 // summary.json written from RunResult.
 #include "driver/summary_json.hpp"
 
+#include <cmath>
 #include <nlohmann/json.hpp>
 
 namespace hpcontact::driver {
@@ -36,6 +37,7 @@ json contact_json(const ContactResult& c) {
     j["contact_area"] = *c.contact_area;
   else
     j["contact_set_length"] = c.contact_set_length;
+  if (c.moment_half_width) j["moment_half_width"] = *c.moment_half_width;
   if (c.total_force) j["total_force"] = *c.total_force;
   if (c.tangential_force) j["tangential_force"] = *c.tangential_force;
   if (c.contact_force) j["contact_force"] = *c.contact_force;
@@ -152,6 +154,7 @@ std::string summary_json(const RunResult& r) {
                   {"target", r.adapt->target},        {"estimate", last.estimate},
                   {"largest_p", last.largest_degree}, {"deepest_level", last.deepest_level},
                   {"seconds", last.seconds},          {"file", "adapt.csv"}};
+    if (!std::isnan(last.moment_half_width)) j["adapt"]["moment_half_width"] = last.moment_half_width;
   }
   if (r.stability) j["stability"] = stability_json(*r.stability);
   for (const auto& contact : r.contacts) j[contact.problem] = contact_json(contact);

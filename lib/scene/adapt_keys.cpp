@@ -60,12 +60,13 @@ void check_adapt(const Scene& scene) {
     throw_bad_input(scene.where(key), key, value, allowed + " in an adaptive scene (adapt.target given)");
   };
   if (scene.dimension() == 3) refuse("adapt.target", "(given)", "a planar scene: 3-D scenes do not adapt yet");
-  if (scene.is_elastic())
-    refuse("run.effects", to_string(scene.effects.front()),
-           "one of the scalar problems signorini, friction, friction_s (the elastic ones do not adapt yet)");
-  if (scene.contact_effects().size() != 1)
-    refuse("run.effects", fmt::format("({} contact problems)", scene.contact_effects().size()),
-           "exactly one of signorini, friction, friction_s, which the mesh adapts to");
+  if (!scene.body.empty())
+    refuse("adapt.target", "(given)", "a scene of one body against a rigid obstacle: two bodies do not adapt yet");
+  const auto problems = scene.is_elastic() ? scene.elastic_effects().size() : scene.contact_effects().size();
+  if (problems != 1)
+    refuse("run.effects", fmt::format("({} contact problems)", problems),
+           "exactly one contact problem (signorini, friction, friction_s; frictionless, tresca, coulomb, tied), "
+           "which the mesh adapts to");
   if (scene.has_effect(Effect::convergence)) refuse("run.effects", "convergence", "no convergence effect");
   if (scene.fit_free_boundary)
     refuse("solve.fit_free_boundary", "true", "false (the adaptivity finds the free boundary itself)");

@@ -1,13 +1,15 @@
 // hp-adaptivity through `hpcontact solve`: studies/adaptive/signorini.toml reaches the reference
 // energy of (9) to 1e-9 from a uniform 4 × 4 start, adapt.csv holds its steps (unknowns growing,
-// estimate and error falling, effectivity bounded), and scenes adaptivity does not serve are refused
-// by name.
+// estimate and error falling, effectivity bounded); studies/adaptive/hertz.toml finds the elastic
+// Hertz half-width of a hand-graded solve to 1e-5 without grading points; scenes adaptivity does
+// not serve are refused by name.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <regex>
 
 #include "support/cli_runner.hpp"
 
@@ -79,11 +81,64 @@ TEST(Adaptive, SignoriniReachesTheReferenceEnergyFromAUniformStart) {
   EXPECT_TRUE(std::filesystem::exists(out / "boundary_signorini.csv"));
 }
 
+namespace {
+// The least-squares slope of y against x and their correlation coefficient.
+std::pair<double, double> line_fit(const std::vector<double>& x, const std::vector<double>& y) {
+  const double n = static_cast<double>(x.size());
+  double mx = 0.0, my = 0.0;
+  for (std::size_t k = 0; k < x.size(); ++k) mx += x[k] / n, my += y[k] / n;
+  double sxy = 0.0, sxx = 0.0, syy = 0.0;
+  for (std::size_t k = 0; k < x.size(); ++k)
+    sxy += (x[k] - mx) * (y[k] - my), sxx += (x[k] - mx) * (x[k] - mx), syy += (y[k] - my) * (y[k] - my);
+  return {sxy / sxx, sxy / std::sqrt(sxx * syy)};
+}
+}  // namespace
+
+TEST(Adaptive, ElasticHertzFindsTheHalfWidthOfAHandGradedSolveWithoutGradingPoints) {
+  if (HPCONTACT_SANITIZED) GTEST_SKIP() << "thirty elastic solves up to p = 11: Release builds only";
+  const auto out = scratch("adaptive_hertz") / "out";
+  const std::string source(HPCONTACT_SOURCE_DIR);
+  const auto solve = run("solve " + source + "/studies/adaptive/hertz.toml --out " + out.string());
+  ASSERT_EQ(solve.exit_code, 0) << solve.output;
+  const auto columns = read_csv(out / "adapt.csv").numeric_columns();
+  const double a = columns.at("moment_half_width").back();
+  // The independent path: studies/elasticity/hertz.toml graded by hand (12 layers) towards the
+  // located ±a, p = 6, p_C = 4 (44 256 unknowns, more than the adaptive run's last step).
+  std::ifstream hand_scene(source + "/studies/elasticity/hertz.toml");
+  const std::string text((std::istreambuf_iterator<char>(hand_scene)), {});
+  const auto graded_scene = out.parent_path() / "graded.toml";
+  std::ofstream(graded_scene) << std::regex_replace(
+      text, std::regex("grading_points = .*"),
+      "grading_points = [[" + std::to_string(-a) + ", 0], [" + std::to_string(a) + ", 0]]");
+  const auto graded_out = out.parent_path() / "graded";
+  const auto graded = run("solve " + graded_scene.string() +
+                          " --set domain.grading_layers=12 --set discretization.p=6 --set discretization.pC=4 --out " +
+                          graded_out.string());
+  ASSERT_EQ(graded.exit_code, 0) << graded.output;
+  std::ifstream summary(graded_out / "summary.json");
+  const auto root_json = nlohmann::json::parse(summary);
+  const auto& json = root_json.at("frictionless");
+  EXPECT_NEAR(a, json.at("moment_half_width").get<double>(), 1e-5);
+  EXPECT_NEAR(columns.at("energy").back(), json.at("energy").get<double>(), 2e-8);
+  EXPECT_LT(columns.at("unknowns").back(), root_json.at("ndofs").get<double>());
+  // The energy error falls exponentially in unknowns^(1/3): log |E − E_ref| on a line of negative
+  // slope (down to the reference's own accuracy, 1e-11).
+  std::vector<double> root, log_error;
+  const auto& error = columns.at("error_energy");
+  for (std::size_t k = 0; k < error.size(); ++k)
+    if (error[k] > 1e-11) root.push_back(std::cbrt(columns.at("unknowns")[k])), log_error.push_back(std::log(error[k]));
+  ASSERT_GE(root.size(), 10u);
+  const auto [slope, correlation] = line_fit(root, log_error);
+  EXPECT_LT(slope, -0.3);
+  EXPECT_LT(correlation, -0.9);
+  EXPECT_LT(error.back(), 1e-9);
+}
+
 TEST(Adaptive, ScenesItDoesNotServeAreRefusedByName) {
   expect_refused(run("solve " + kScene + " --set 'contact_mesh.ratio=\"1/2\"'"), "contact_mesh");
   expect_refused(run("solve " + kScene + " --set 'discretization.pC=2'"), "discretization.pC");
   expect_refused(run("solve " + kScene + " --set 'run.effects=[\"signorini\", \"friction_s\"]' --set 'data.s=\"1\"'"),
-                 "exactly one of signorini, friction, friction_s");
+                 "exactly one contact problem");
   expect_refused(run("solve " + kScene + " --set 'solve.fit_free_boundary=true'"), "solve.fit_free_boundary");
   expect_refused(run("solve " + kScene + " --set 'adapt.fraction=0'"), "adapt.fraction");
   expect_refused(run("solve " + kScene + " --set 'adapt.target=0'"), "adapt.target");
