@@ -158,6 +158,11 @@ build/bin/hpcontact solve studies/adaptive/signorini.toml --out results/adaptive
 "$python" plots/plot_adaptive.py results/adaptive/signorini results/work_precision/cheapest.csv
 publish results/adaptive/signorini/adaptive.png studies/adaptive/signorini.png
 publish results/adaptive/signorini/adapt.csv studies/adaptive/signorini_adapt.csv
+section "hp-adaptivity of elastic Hertz without grading points: studies/adaptive/hertz.toml -> results/adaptive"
+build/bin/hpcontact solve studies/adaptive/hertz.toml --out results/adaptive/hertz
+"$python" plots/plot_adaptive.py results/adaptive/hertz --at 0.2992,-0.01 --width 0.04
+publish results/adaptive/hertz/adaptive.png studies/adaptive/hertz.png
+publish results/adaptive/hertz/adapt.csv studies/adaptive/hertz_adapt.csv
 section "Hertz validation of the elastic contact solver: studies/elasticity/hertz_study.toml -> results/hertz"
 build/bin/hpcontact hertz studies/elasticity/hertz_study.toml --out results/hertz
 "$python" plots/plot_hertz.py results/hertz

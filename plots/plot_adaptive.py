@@ -6,12 +6,13 @@ each tolerance) to compare with. Writes DIR/adaptive.png:
   left    the energy error |E - E_ref| and the estimate (eta^2/2) against unknowns^(1/3): a
           straight line is exponential convergence, the rate of hp-FEM in 2-D;
   middle  the last T_h, each cell coloured by its degree p;
-  right   the same in a window 1e-2 of the domain wide around its finest cell.
-Usage: plot_adaptive.py DIR [CHEAPEST_CSV]
+  right   the same in a window 1e-2 of the domain wide around its finest cell, or around
+          --at X,Y (the Hertz free boundary, say), --width wide.
+Usage: plot_adaptive.py DIR [CHEAPEST_CSV] [--at X,Y] [--width W]
 """
+import argparse
 import csv
 import json
-import sys
 from pathlib import Path
 
 import matplotlib
@@ -50,10 +51,18 @@ def draw_mesh(axis, polygons, degrees, limits, title):
     return collection
 
 
+def arguments():
+    parser = argparse.ArgumentParser(usage=__doc__)
+    parser.add_argument("folder", type=Path)
+    parser.add_argument("cheapest", nargs="?")
+    parser.add_argument("--at", help="X,Y: the centre of the zoomed window (default: the finest cell)")
+    parser.add_argument("--width", type=float, help="the zoomed window's width (default: 1e-2 of the domain)")
+    return parser.parse_args()
+
+
 def main():
-    if len(sys.argv) not in (2, 3):
-        sys.exit(__doc__)
-    folder = Path(sys.argv[1])
+    args = arguments()
+    folder = args.folder
     rows = read(folder / "adapt.csv")
     summary = json.loads((folder / "summary.json").read_text())
     problem = summary["effects"][0]
@@ -63,8 +72,8 @@ def main():
     if "error_energy" in rows[0]:
         axis.semilogy(unknowns ** (1 / 3), [float(r["error_energy"]) for r in rows], "o-", label="error |E - E_ref|")
     axis.semilogy(unknowns ** (1 / 3), [float(r["estimate"]) for r in rows], "s--", label=r"estimate $\eta^2/2$")
-    if len(sys.argv) == 3:
-        hand = [r for r in read(sys.argv[2]) if r["problem"] == problem and r["family"] == "hp geometric"]
+    if args.cheapest:
+        hand = [r for r in read(args.cheapest) if r["problem"] == problem and r["family"] == "hp geometric"]
         axis.semilogy([float(r["ndofs"]) ** (1 / 3) for r in hand], [float(r["error_energy"]) for r in hand], "k^",
                       markersize=9, label="hand-graded hp (cheapest to 1e-3, 1e-6, 1e-9)")
     axis.axhline(1e-9, color="grey", lw=0.8, ls=":")
@@ -78,14 +87,17 @@ def main():
     whole = [(points[:, 0].min(), points[:, 0].max()), (points[:, 1].min(), points[:, 1].max())]
     collection = draw_mesh(axes[1], polygons, degrees, whole, f"last $T_h$: {len(polygons)} cells, p per cell")
     figure.colorbar(collection, ax=axes[1], label="p")
-    # A window 1e-2 of the domain wide around the finest cell, moved inside the domain.
-    sizes = [np.ptp(polygon[:, 0]) for polygon in polygons]
-    centre = polygons[int(np.argmin(sizes))].mean(axis=0)
-    half = 5e-3 * max(np.ptp(points[:, 0]), np.ptp(points[:, 1]))
+    # A window 1e-2 of the domain wide around the finest cell (or as asked), moved inside the domain.
+    if args.at:
+        centre = np.array([float(v) for v in args.at.split(",")])
+    else:
+        sizes = [np.ptp(polygon[:, 0]) for polygon in polygons]
+        centre = polygons[int(np.argmin(sizes))].mean(axis=0)
+    half = 0.5 * args.width if args.width else 5e-3 * max(np.ptp(points[:, 0]), np.ptp(points[:, 1]))
     window = [(min(max(c - half, low), high - 2 * half), min(max(c - half, low), high - 2 * half) + 2 * half)
               for c, (low, high) in zip(centre, whole)]
-    draw_mesh(axes[2], polygons, degrees, window,
-              f"1e-2 wide, at the finest cell ({centre[0]:.3g}, {centre[1]:.3g})")
+    where = "at" if args.at else "at the finest cell"
+    draw_mesh(axes[2], polygons, degrees, window, f"{2 * half:.3g} wide, {where} ({centre[0]:.4g}, {centre[1]:.4g})")
     figure.tight_layout()
     save_figure(figure, folder / "adaptive.png")
 
