@@ -5,22 +5,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <numeric>
-#include <optional>
 
-#include "adapt/elastic_residual_estimator.hpp"
-#include "adapt/legendre_decay.hpp"
-#include "adapt/residual_estimator.hpp"
-#include "assembly/cell_field.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
 #include "core/timer.hpp"
-#include "driver/elastic_scene.hpp"
+#include "driver/model.hpp"
 #include "driver/pairing_stability.hpp"
 #include "mesh/adaptive_mesh.hpp"
-#include "operators/primal_operators.hpp"
-#include "postprocess/moment_half_width.hpp"
 #include "scene/scene_mesh.hpp"
 #include "space/multiplier_family.hpp"
 
@@ -56,53 +48,6 @@ double predicted_alpha(const scene::Scene& scene, const SceneDiscretization& d) 
   }
 }
 
-// What a step's solve leaves for the marking and for adapt.csv: η_T² and θ_T per cell of T_h.
-struct SolvedStep {
-  long long unknowns = 0;
-  double energy = 0.0, estimate = 0.0, moment_half_width = NAN;
-  std::vector<double> eta2, theta;
-};
-
-// Step 2 of the loop on a scalar scene; nullopt (nothing solved) where T_h has more than `limit`
-// unknowns.
-std::optional<SolvedStep> solve_scalar_step(const scene::Scene& scene, const SceneDiscretization& d, long long limit) {
-  const operators::PrimalOperators primal(*d.mesh, d.cell_degrees);
-  if (primal.space().n_dofs() > limit) return std::nullopt;
-  const auto setup = contact_setup_of(scene, d, scene.contact_effects().front(), primal);
-  const auto solution = contact::solve_contact(setup);
-  const auto indicators = adapt::residual_indicators(setup, solution, primal.space());
-  const auto field = assembly::scalar_field(primal.space(), solution.u, solution.u_rows, solution.lift);
-  SolvedStep out{primal.space().n_dofs(),
-                 solution.energy,
-                 0.5 * indicators.squared(),
-                 NAN,
-                 indicators.cell,
-                 adapt::legendre_decay(primal.space(), field)};
-  if (setup.problem == contact::ContactProblem::signorini)  // λ ≤ 0 where in contact
-    out.moment_half_width = postprocess::moment_half_width(*d.multipliers, -solution.lambda_legendre);
-  return out;
-}
-
-// The same on an elastic scene (its one contact problem against the rigid obstacle).
-std::optional<SolvedStep> solve_elastic_step(const scene::Scene& scene, const SceneDiscretization& d, long long limit) {
-  const auto operators = scene_elastic_operators(scene, d.mesh.get(), d.cell_degrees);
-  if (operators->n_dofs() > limit) return std::nullopt;
-  const auto setup = elastic_setup_of(scene, d, scene.elastic_effects().front(), *operators);
-  const auto solution = contact::solve_elastic_contact(setup);
-  const auto indicators =
-      adapt::elastic_residual_indicators(setup, solution, scene::scene_fixed_components(scene, *d.mesh));
-  const auto field = assembly::vector_field(operators->vector_space(), solution.u, solution.u_rows, solution.lift);
-  SolvedStep out{operators->n_dofs(),
-                 solution.energy,
-                 0.5 * indicators.squared(),
-                 NAN,
-                 indicators.cell,
-                 adapt::legendre_decay(operators->space(), field)};
-  if (setup.problem != contact::ElasticContactProblem::tied)
-    out.moment_half_width = postprocess::moment_half_width(*d.multipliers, solution.pressure);
-  return out;
-}
-
 // What the forest and its degrees are between steps.
 struct Forest {
   mesh::AdaptiveMesh leaves;
@@ -135,14 +80,13 @@ void refine_marked(const scene::Scene& scene, Forest& forest, const std::vector<
 
 }  // namespace
 
-AdaptedDiscretization adapt_discretization(const scene::Scene& scene,
-                                           const std::function<void(const std::string&)>& say) {
-  HPC_VERIFY(scene.is_adaptive(), "adapt_discretization of a scene without adapt.target");
+AdaptedLevel adapt_level(const scene::Scene& scene, const std::function<void(const std::string&)>& say) {
+  HPC_VERIFY(scene.is_adaptive(), "adapt_level of a scene without adapt.target");
   Stopwatch clock;
   const auto& settings = scene.adapt;
   const mesh::Mesh coarse = scene::build_scene_mesh(scene);
   Forest forest{mesh::AdaptiveMesh(coarse, scene.file), scene::scene_cell_degrees(scene, coarse)};
-  AdaptedDiscretization out;
+  AdaptedLevel out;
   out.summary.target = settings.target;
   out.summary.reference_energy = settings.reference_energy;
   for (int step = 0;; ++step) {
@@ -157,21 +101,24 @@ AdaptedDiscretization adapt_discretization(const scene::Scene& scene,
       row.largest_degree = std::max(row.largest_degree, degrees[c]);
       row.deepest_level = std::max(row.deepest_level, forest.leaves.level(leaf_of_cell[c]));
     }
-    auto d = discretize_adapted(scene, std::move(mesh), std::move(degrees), scene.p.value - scene.pc.value);
-    // 2. Solve and estimate.
-    const long long limit = step > 0 ? settings.max_unknowns : std::numeric_limits<long long>::max();
-    auto solved = scene.is_elastic() ? solve_elastic_step(scene, *d, limit) : solve_scalar_step(scene, *d, limit);
-    if (!solved) {
+    auto level = std::make_unique<Level>();
+    level->scene = scene;
+    level->d = discretize_adapted(scene, std::move(mesh), std::move(degrees), scene.p.value - scene.pc.value);
+    // 2. The model, its solve and estimate.
+    level->model = build_model(level->scene, *level->d, &level->log, linalg::Distribution{});
+    if (step > 0 && level->model->n_dofs() > settings.max_unknowns) {
       out.summary.stopped = "max_unknowns";
       break;
     }
+    const auto& solved = level->solved.emplace_back(level->model->solve(level->model->problems().front()));
+    HPC_VERIFY(solved.indicators, "an adaptive scene's solve without indicators");
     row.step = step;
-    row.unknowns = solved->unknowns;
-    row.multipliers = space::multiplier_function_count(*d->multipliers, scene.family);
-    row.estimate = solved->estimate;
-    row.energy = solved->energy;
-    row.moment_half_width = solved->moment_half_width;
-    row.alpha = predicted_alpha(scene, *d);
+    row.unknowns = level->model->n_dofs();
+    row.multipliers = space::multiplier_function_count(*level->d->multipliers, scene.family);
+    row.estimate = 0.5 * solved.indicators->residual.squared();
+    row.energy = solved.result.energy;
+    row.moment_half_width = solved.result.moment_half_width.value_or(NAN);
+    row.alpha = predicted_alpha(scene, *level->d);
     row.seconds = clock.seconds();
     if (say)
       say(fmt::format("adapt step {}: {} unknowns, {} multipliers, p ≤ {}, estimate {:.3e}, energy {:.12g}, α {:.3f}",
@@ -181,13 +128,15 @@ AdaptedDiscretization adapt_discretization(const scene::Scene& scene,
     if (reached || last) {
       out.summary.steps.push_back(row);
       out.summary.stopped = reached ? "target" : "max_steps";
-      out.d = std::move(d);
+      out.level = std::move(level);
       break;
     }
     // 4. Mark and refine.
-    refine_marked(scene, forest, leaf_of_cell, solved->eta2, solved->theta, row);
+    refine_marked(scene, forest, leaf_of_cell, solved.indicators->residual.cell, solved.indicators->theta, row);
     out.summary.steps.push_back(row);
-    out.d = std::move(d);
+    // Kept in case the next step exceeds max_unknowns, without its factorizations (rebuilt on use).
+    level->model->release_factors();
+    out.level = std::move(level);
   }
   return out;
 }

@@ -1,6 +1,8 @@
 // The elastic model: its operators, contact problems and results.
 #include "driver/elastic_model.hpp"
 
+#include "adapt/elastic_residual_estimator.hpp"
+#include "adapt/legendre_decay.hpp"
 #include "assembly/cell_field.hpp"
 #include "core/timer.hpp"
 #include "driver/elastic_scene.hpp"
@@ -8,6 +10,7 @@
 #include "io/vtu_writer.hpp"
 #include "postprocess/elastic_boundary_samples.hpp"
 #include "postprocess/moment_half_width.hpp"
+#include "scene/scene_mesh.hpp"
 
 namespace hpcontact::driver {
 
@@ -78,11 +81,20 @@ class ElasticModel final : public Model {
           assembly::vector_field(operators_->vector_space(), solution->u, solution->u_rows, solution->lift),
           operators_->materials());
     };
-    return {std::move(result),
-            scene::to_string(effect),
-            std::move(samples.table),
-            solution->pressure,
-            {{"", io::elastic_vtu_fields(), std::move(grid)}}};
+    SolvedProblem solved{std::move(result),
+                         scene::to_string(effect),
+                         std::move(samples.table),
+                         solution->pressure,
+                         {{"", io::elastic_vtu_fields(), std::move(grid)}},
+                         std::nullopt};
+    if (scene_.is_adaptive()) {
+      const auto field =
+          assembly::vector_field(operators_->vector_space(), solution->u, solution->u_rows, solution->lift);
+      solved.indicators = AdaptIndicators{
+          adapt::elastic_residual_indicators(setup, *solution, scene::scene_fixed_components(scene_, *d_.mesh)),
+          adapt::legendre_decay(operators_->space(), field)};
+    }
+    return solved;
   }
 
   infsup::InfSupSetup infsup_setup() const override {

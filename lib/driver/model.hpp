@@ -7,10 +7,12 @@
 #include <Eigen/Core>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "adapt/residual_estimator.hpp"
 #include "core/operator_log.hpp"
 #include "driver/run_result.hpp"
 #include "driver/scene_discretization.hpp"
@@ -31,6 +33,13 @@ struct SolutionGrid {
   std::function<io::VtuGrid()> grid;
 };
 
+/// What the adaptivity reads of a solve (adaptive_run.hpp): η_T² per cell of T_h with the sums of
+/// its terms, and θ_T, the smoothness of u_h per cell (adapt/legendre_decay.hpp).
+struct AdaptIndicators {
+  adapt::ResidualIndicators residual;
+  std::vector<double> theta;
+};
+
 /// One contact problem solved by a model, with what its outputs need.
 struct SolvedProblem {
   ContactResult result;
@@ -42,6 +51,8 @@ struct SolvedProblem {
   /// discretization's MultiplierSpace (λ for the scalar model, the pressure for elasticity).
   Eigen::VectorXd error_multiplier;
   std::vector<SolutionGrid> solutions;  ///< one per body
+  /// An adaptive scene's (scene.is_adaptive(), serial): the estimator's indicators of this solve.
+  std::optional<AdaptIndicators> indicators;
 };
 
 class Model {

@@ -63,8 +63,8 @@ struct ContactResult {
   double energy = 0.0;  ///< E(u) = ½ a(u, u) − F(u)
   long long n_dofs = 0, nmult = 0, n_trace = 0;
   double contact_set_length = 0.0;
-  /// elastic against a rigid obstacle (not tied): the contact set's half-width as a moment of the
-  /// pressure (postprocess/moment_half_width.hpp) — a on Hertz
+  /// (9) and elastic against a rigid obstacle (not tied): the contact set's half-width as a moment
+  /// of the pressure (−λ for (9); postprocess/moment_half_width.hpp) — a on Hertz
   std::optional<double> moment_half_width;
   std::optional<double> contact_area;      ///< 3-D: the area of Γ_C where the multiplier does not vanish
   std::optional<double> total_force;       ///< elastic: P = ∫_{Γ_C} pressure ds

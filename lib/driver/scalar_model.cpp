@@ -3,11 +3,14 @@
 
 #include <algorithm>
 
+#include "adapt/legendre_decay.hpp"
+#include "adapt/residual_estimator.hpp"
 #include "assembly/cell_field.hpp"
 #include "core/timer.hpp"
 #include "io/vtu_writer.hpp"
 #include "operators/primal_operators.hpp"
 #include "postprocess/boundary_samples.hpp"
+#include "postprocess/moment_half_width.hpp"
 
 namespace hpcontact::driver {
 namespace {
@@ -61,11 +64,21 @@ class ScalarModel final : public Model {
       return io::solution_vtu_grid(
           assembly::scalar_field(primal_.space(), solution->u, solution->u_rows, solution->lift));
     };
-    return {scalar_result(scene::to_string(effect), *solution, samples, *d_.boundary_mesh, seconds),
-            scene::to_string(effect),
-            std::move(samples.table),
-            solution->lambda_legendre,
-            {{"", io::solution_vtu_fields(), std::move(grid)}}};
+    auto result = scalar_result(scene::to_string(effect), *solution, samples, *d_.boundary_mesh, seconds);
+    if (setup.problem == contact::ContactProblem::signorini)  // λ ≤ 0 where in contact
+      result.moment_half_width = postprocess::moment_half_width(*d_.multipliers, -solution->lambda_legendre);
+    SolvedProblem solved{std::move(result),
+                         scene::to_string(effect),
+                         std::move(samples.table),
+                         solution->lambda_legendre,
+                         {{"", io::solution_vtu_fields(), std::move(grid)}},
+                         std::nullopt};
+    if (scene_.is_adaptive()) {
+      const auto field = assembly::scalar_field(primal_.space(), solution->u, solution->u_rows, solution->lift);
+      solved.indicators = AdaptIndicators{adapt::residual_indicators(setup, *solution, primal_.space()),
+                                          adapt::legendre_decay(primal_.space(), field)};
+    }
+    return solved;
   }
 
   infsup::InfSupSetup infsup_setup() const override {

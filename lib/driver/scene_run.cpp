@@ -30,12 +30,12 @@ scene::Scene fitted_scene(const scene::Scene& scene, const StageContext& context
   return fit.scene;
 }
 
-// 1. An adaptive scene's discretization: the last of its adaptive steps (serial).
+// 1–3. An adaptive scene's level: the last of its adaptive steps, solved (serial).
 std::unique_ptr<Level> adapted_level(const scene::Scene& scene, const StageContext& context, RunResult& result) {
   if (context.distribution.distributed())
     throw InputError(scene.file + ": an adaptive scene (adapt.target given) runs serially: run it without mpirun");
   context.say("adapting T_h and T_{C,H}");
-  auto adapted = adapt_discretization(scene, context.progress);
+  auto adapted = adapt_level(scene, context.progress);
   result.adapt = std::move(adapted.summary);
   const auto& last = result.adapt->steps.back();
   if (result.adapt->stopped != "target")
@@ -43,10 +43,7 @@ std::unique_ptr<Level> adapted_level(const scene::Scene& scene, const StageConte
         fmt::format("warning: the adaptivity stopped at {} with the estimate {:.3g} above adapt.target = {:.3g}",
                     result.adapt->stopped == "max_steps" ? "adapt.max_steps" : "adapt.max_unknowns", last.estimate,
                     result.adapt->target));
-  auto level = std::make_unique<Level>();
-  level->scene = scene;
-  level->d = std::move(adapted.d);
-  return level;
+  return std::move(adapted.level);
 }
 
 // What the result says of the run as a whole: the scene, its discretization, the operators built.
@@ -124,7 +121,7 @@ RunResult run_scene(const scene::Scene& given_scene, const SceneRunOptions& opti
   // 1. Meshes and degrees (an adaptive scene's: adapted). 2. The model's operators, built on first
   //    use and shared by the effects.
   const auto base = scene.is_adaptive() ? adapted_level(scene, context, result) : discretize(scene, context);
-  build_operators(*base, &log, context, reads_whole_mesh_after_operators(scene));
+  if (!base->model) build_operators(*base, &log, context, reads_whole_mesh_after_operators(scene));
   throw_if_cancelled();  // (a cancellation point between stages: core/interrupt.hpp)
   // 2b. Whether the pairing is stable, predicted before anything is solved: a refused run stops
   //     here, a warned one is told before its time is spent.
@@ -132,8 +129,8 @@ RunResult run_scene(const scene::Scene& given_scene, const SceneRunOptions& opti
     result.stability = predict_stability(scene, *base->d, base->model->master_projection());
     act_on_stability(scene, *result.stability, context.progress);
   }
-  // 3. The contact problems.
-  solve_contact_problems(*base, context, "");
+  // 3. The contact problems (an adaptive level's solved already).
+  if (base->solved.empty()) solve_contact_problems(*base, context, "");
   throw_if_cancelled();
   // 4. The inf-sup constant of the pairing: whether λ is unique.
   if (scene.has_effect(scene::Effect::infsup)) result.infsup = analyse_infsup(*base, context, files.mode);
@@ -143,7 +140,7 @@ RunResult run_scene(const scene::Scene& given_scene, const SceneRunOptions& opti
   // 6. The result, then every file at once (the factorizations freed first: the solutions'
   //    ParaView text is built beside them otherwise).
   base->model->release_factors();
-  describe_run(*base, log, options.distribution, result);
+  describe_run(*base, scene.is_adaptive() ? base->log : log, options.distribution, result);
   result.seconds_total = clock.seconds();
   hand_over_tables(*base, result, files, options);
   hand_over_fields(*base, options);
