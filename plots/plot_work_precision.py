@@ -4,7 +4,8 @@
 Reads DIR/work_precision.csv, DIR/reference.csv and DIR/cheapest.csv written by
 `hpcontact work-precision`; writes DIR/work_precision.png with one row per contact problem:
 the energy error |E(u_h) - E_ref| (left) and the multiplier error (right) against seconds. The
-grey band is the reference's own estimated accuracy: errors inside it are not resolved.
+grey band is the reference's own estimated accuracy: errors inside it are not resolved. An adaptive
+family (black stars) has one point per step at the time of every solve and estimate up to it.
 Usage: plot_work_precision.py DIR
 """
 import csv
@@ -51,6 +52,9 @@ def main():
             for family, points in curves.items():
                 points.sort()
                 errors = [max(p[1 + column], 1e-16) for p in points]
+                if family.startswith("adaptive"):  # each step at the time spent to reach it
+                    axis.loglog([p[0] for p in points], errors, "k*-", markersize=5, linewidth=1.5, label=family)
+                    continue
                 style = "o-" if family.startswith("h,") else ("s-" if family.startswith("p") else "D-")
                 axis.loglog([p[0] for p in points], errors, style, markersize=3.5, linewidth=1.2, label=family)
             accuracy = float(reference[key])

@@ -80,7 +80,8 @@ void refine_marked(const scene::Scene& scene, Forest& forest, const std::vector<
 
 }  // namespace
 
-AdaptedLevel adapt_level(const scene::Scene& scene, const std::function<void(const std::string&)>& say) {
+AdaptedLevel adapt_level(const scene::Scene& scene, const std::function<void(const std::string&)>& say,
+                         const AdaptStepVisitor& visit) {
   HPC_VERIFY(scene.is_adaptive(), "adapt_level of a scene without adapt.target");
   Stopwatch clock;
   const auto& settings = scene.adapt;
@@ -123,6 +124,7 @@ AdaptedLevel adapt_level(const scene::Scene& scene, const std::function<void(con
     if (say)
       say(fmt::format("adapt step {}: {} unknowns, {} multipliers, p ≤ {}, estimate {:.3e}, energy {:.12g}, α {:.3f}",
                       step, row.unknowns, row.multipliers, row.largest_degree, row.estimate, row.energy, row.alpha));
+    if (visit) visit(row, *level);
     // 3. Stop?
     const bool reached = row.estimate <= settings.target, last = step + 1 >= settings.max_steps;
     if (reached || last) {

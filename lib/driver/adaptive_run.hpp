@@ -32,9 +32,14 @@ struct AdaptedLevel {
   AdaptSummary summary;
 };
 
+/// What a caller may read of each step once it is solved and estimated (before its refinement):
+/// its row of adapt.csv and its level (a study measures the step's error against a reference).
+using AdaptStepVisitor = std::function<void(const AdaptStep& row, const Level& level)>;
+
 /// @pre scene.is_adaptive() (scene::check_adapt has passed). `say` (may be empty) gets one line per
 /// step. @throws InputError as the scene's builders do; NumericalError if a solve fails.
-AdaptedLevel adapt_level(const scene::Scene& scene, const std::function<void(const std::string&)>& say);
+AdaptedLevel adapt_level(const scene::Scene& scene, const std::function<void(const std::string&)>& say,
+                         const AdaptStepVisitor& visit = {});
 
 /// adapt.csv: step,unknowns,multipliers,estimate,energy,alpha,seconds,largest_p,deepest_level,split,
 /// raised,moment_half_width, and error_energy,effectivity (|E − E_ref| and √(estimate / |E − E_ref|))

@@ -18,7 +18,8 @@ namespace hpcontact::studies {
 ///   [study]      scene (base scene, relative to the study file), problems, tolerances, repeats
 ///   [[reference]] problem, set (scene keys), coarser (scene keys of the accuracy estimate; default
 ///                one refinement less), fit_free_boundary
-///   [[family]]   name, problems (default: all), set, vary (see scene/scene_variants.hpp)
+///   [[family]]   name, problems (default: all), set, vary (see scene/scene_variants.hpp); a family whose
+///                set gives adapt.target runs the adaptivity (driver/adaptive_run.hpp): one row per step
 struct WorkPrecisionStudy {
   std::string file;
   std::vector<std::string> problems;
@@ -48,7 +49,8 @@ WorkPrecisionStudy read_work_precision_study(const std::string& path);
 ///   work_precision.csv  problem,p,pC,n,m,ndofs,nmult,error_energy,error_lambda,seconds,family,energy
 ///                       (n: edges of T_h on Γ_C, m: segments of T_{C,H}; error_energy = |E(u_h) − E_ref|,
 ///                       error_lambda = ‖λ_H − λ_ref‖_{L²(Γ_C)} for (9), (15), ‖s(λ_H − λ_ref)‖_{L²(Γ_C)} for (13)
-///                       (driver::multiplier_error_weight); seconds: wall time meshes → u)
+///                       (driver::multiplier_error_weight); seconds: wall time meshes → u, an adaptive
+///                       step's since the adaptivity began; p, pC of an adaptive step: its largest)
 ///   reference.csv       problem,energy,energy_coarser,accuracy_energy,accuracy_lambda,ndofs,seconds,
 ///                       free_boundary (fitted points "x y" separated by ";"), free_boundary_moved
 ///   cheapest.csv        problem,tolerance,verdict,family,p,pC,n,ndofs,error_energy,seconds: the fastest

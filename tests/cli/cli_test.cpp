@@ -263,7 +263,9 @@ TEST(Cli, WorkPrecisionFitsTheReferenceAndEstimatesItsAccuracy) {
   const std::string head =
       "[study]\nscene = \"" + std::string(HPCONTACT_SOURCE_DIR) +
       "/studies/work_precision/base.toml\"\nproblems = [\"signorini\"]\ntolerances = [1e-3]\nrepeats = 1\n"
-      "[[family]]\nname = \"p\"\nvary = { \"discretization.p\" = [2, 3], \"discretization.pC\" = [1, 2] }\n";
+      "[[family]]\nname = \"p\"\nvary = { \"discretization.p\" = [2, 3], \"discretization.pC\" = [1, 2] }\n"
+      "[[family]]\nname = \"adaptive\"\nset = { domain = { n_x = 4, n_y = 4 }, discretization = { p = 2, pC = 0 }, "
+      "contact_mesh = { ratio = 1 }, run = { effects = [\"signorini\"] }, adapt = { target = 1e-5 } }\n";
   std::ofstream(dir / "study.toml") << head << "[[reference]]\nproblem = \"signorini\"\nfit_free_boundary = true\n"
                                     << "set = { domain = { grading_points = [[1, 0]], grading = 0.2, grading_layers = "
                                        "8 }, contact_mesh = { ratio = 1 } }\n"
@@ -282,6 +284,16 @@ TEST(Cli, WorkPrecisionFitsTheReferenceAndEstimatesItsAccuracy) {
   EXPECT_LT(accuracy, 1e-7) << "p 6 -> 8 on the fitted mesh";
   EXPECT_EQ(std::count(cells[7].begin(), cells[7].end(), ';'), 1) << "two ends of the contact set: " << cells[7];
   EXPECT_LE(std::stod(cells[8]), 2e-6);
+  // The adaptive family: one row per step, its time the adaptivity's so far, its error falling.
+  const auto runs = read_csv(dir / "out" / "work_precision.csv");
+  std::vector<double> adaptive_seconds, adaptive_errors;
+  for (const auto& row : runs.rows)
+    if (row.at(10) == "adaptive")
+      adaptive_seconds.push_back(std::stod(row.at(9))), adaptive_errors.push_back(std::stod(row.at(7)));
+  ASSERT_GE(adaptive_errors.size(), 3u);
+  EXPECT_TRUE(std::is_sorted(adaptive_seconds.begin(), adaptive_seconds.end()));
+  EXPECT_LT(adaptive_errors.back(), 1e-2 * adaptive_errors.front());
+  EXPECT_LT(adaptive_errors.back(), 1e-4);
 
   std::ofstream(dir / "bad.toml") << head
                                   << "[[reference]]\nproblem = \"signorini\"\nset = { discretization = { p = 4 } }\n";
