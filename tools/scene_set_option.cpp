@@ -8,19 +8,31 @@
 namespace hpcontact::tools {
 namespace {
 
-/// The elements of a TOML array as one of the override's list types, if they are all of one kind.
+/// The numbers of a TOML array, if every element is one.
+std::optional<std::vector<double>> number_list(const toml::array& array) {
+  std::vector<double> numbers;
+  for (const auto& element : array)
+    if (auto x = element.value<double>()) numbers.push_back(*x);
+  if (numbers.size() != array.size()) return std::nullopt;
+  return numbers;
+}
+
+/// The elements of a TOML array as one of the override's list types, if they are all of one kind
+/// (numbers, integers, texts, or lists of numbers).
 std::optional<scene::SceneOverride::Value> list_value(const toml::array& array) {
   std::vector<long long> integers;
-  std::vector<double> numbers;
   std::vector<std::string> texts;
+  std::vector<std::vector<double>> number_lists;
   for (const auto& element : array) {
     if (auto i = element.value_exact<std::int64_t>()) integers.push_back(*i);
-    if (auto x = element.value<double>()) numbers.push_back(*x);
     if (auto s = element.value_exact<std::string>()) texts.push_back(*s);
+    if (const auto* inner = element.as_array())
+      if (auto numbers = number_list(*inner)) number_lists.push_back(std::move(*numbers));
   }
   if (integers.size() == array.size()) return integers;
-  if (numbers.size() == array.size()) return numbers;
+  if (auto numbers = number_list(array)) return *numbers;
   if (texts.size() == array.size()) return texts;
+  if (number_lists.size() == array.size()) return number_lists;
   return std::nullopt;
 }
 

@@ -36,6 +36,14 @@ void assign(toml::table& section, const std::string& name, const SceneOverride::
           toml::array list;
           for (const auto& element : v) list.push_back(element);
           section.insert_or_assign(name, std::move(list));
+        } else if constexpr (std::is_same_v<T, std::vector<std::vector<double>>>) {
+          toml::array list;
+          for (const auto& inner : v) {
+            toml::array numbers;
+            for (double x : inner) numbers.push_back(x);
+            list.push_back(std::move(numbers));
+          }
+          section.insert_or_assign(name, std::move(list));
         } else {
           section.insert_or_assign(name, v);
         }

@@ -16,8 +16,9 @@ namespace hpcontact::scene {
 /// where it came from ("hpcontact solve --p"). Setting a key of an exclusive group
 /// (contact_mesh.m, .ratio, .breakpoints) removes the others.
 struct SceneOverride {
+  /// A scalar, a list of one kind, or a list of number lists (domain.grading_points = [[x, y], ...]).
   using Value = std::variant<long long, double, bool, std::string, std::vector<std::string>, std::vector<long long>,
-                             std::vector<double>>;
+                             std::vector<double>, std::vector<std::vector<double>>>;
   std::string key;
   Value value;
   std::string origin;

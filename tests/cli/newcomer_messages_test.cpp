@@ -1,6 +1,7 @@
 // What a newcomer types and what it gets: numbers where expressions are expected, misspelt keys
 // and options with the name meant, a mesh without named groups, an unreadable mesh file with the
-// reason, and any scene key set from the command line (--set) checked like the file's value.
+// reason, and any scene key set from the command line (--set, lists of pairs too) checked like the
+// file's value.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -94,6 +95,23 @@ TEST(NewcomerMessages, SetReachesAnySceneKeyAndIsCheckedLikeTheFile) {
   expect_mentions(run_on("set_form", kScene, "solve", "--set p"), 2, {"--set", "KEY=VALUE"});
   expect_mentions(run_on("set_infsup", kScene, "infsup --scene", "--set contact_mesh.ratio=0"), 2,
                   {"hpcontact infsup --set contact_mesh.ratio", "contact_mesh.ratio"});
+}
+
+// A list of pairs set from the command line is the file's list: the same mesh, the same solve.
+TEST(NewcomerMessages, SetTakesAListOfPairs) {
+  const std::string points = "grading_points = [[-1.0, -1.0], [1.0, -1.0]]\ngrading_layers = 2\n";
+  const auto in_file = run_on("pairs_file", replaced("n_y = 2\n", "n_y = 2\n" + points), "solve", "");
+  const auto by_set = run_on("pairs_set", replaced("n_y = 2\n", "n_y = 2\ngrading_layers = 2\n"), "solve",
+                             "--set 'domain.grading_points=[[-1.0, -1.0], [1.0, -1.0]]'");
+  const auto ungraded = run_on("pairs_none", kScene, "solve", "");
+  ASSERT_EQ(in_file.exit_code, 0) << in_file.output;
+  ASSERT_EQ(by_set.exit_code, 0) << by_set.output;
+  auto energy = [](const std::string& output) { return output.substr(output.find("energy"), 40); };
+  ASSERT_NE(by_set.output.find("energy"), std::string::npos) << by_set.output;
+  EXPECT_EQ(energy(by_set.output), energy(in_file.output));
+  EXPECT_NE(energy(by_set.output), energy(ungraded.output));  // (the points did grade the mesh)
+  expect_mentions(run_on("pairs_bad", kScene, "solve", "--set 'domain.grading_points=[[0.5], [1, 2]]'"), 2,
+                  {"domain.grading_points", "list of pairs"});
 }
 
 TEST(NewcomerMessages, SolveTakesTheCellCount) {

@@ -117,6 +117,21 @@ def test_list_overrides_reach_the_scene_per_zone():
         hpcontact.solve(two_zones, {"contact_mesh.ratio": [1, 1, 1]}, effects=["signorini"])
 
 
+def test_a_list_of_pairs_override_grades_the_mesh_as_the_file_does(tmp_path):
+    # domain.grading_points as a list of lists and as a 2-D numpy array, against the same key in the file.
+    scene = os.path.join(SOURCE, "studies", "paper", "figure1_signorini.toml")
+    text = open(scene).read().replace("[domain]\n", "[domain]\ngrading_points = [[0.5, -1.0]]\ngrading_layers = 3\n", 1)
+    graded = tmp_path / "graded.toml"
+    graded.write_text(text)
+    in_file = hpcontact.solve(str(graded), effects=["signorini"]).summary["signorini"]["energy"]
+    for points in ([[0.5, -1.0]], np.array([[0.5, -1.0]])):
+        result = hpcontact.solve(scene, {"domain.grading_points": points, "domain.grading_layers": 3},
+                                 effects=["signorini"])
+        assert result.summary["signorini"]["energy"] == in_file
+    ungraded = hpcontact.solve(scene, effects=["signorini"]).summary["signorini"]["energy"]
+    assert ungraded != in_file
+
+
 def test_an_unstable_pairing_warns_and_advise_recommends_what_infsup_confirms(tmp_path):
     # p = 4, p_C = 3 on T_h's edges: predicted unstable, a StabilityWarning naming the alternative.
     with pytest.warns(hpcontact.StabilityWarning, match=r"Stable alternative: \[discretization\] pC = 2"):

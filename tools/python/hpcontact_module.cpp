@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include "core/error.hpp"
@@ -72,7 +73,29 @@ long long integer_of(const std::string& key, const py::handle& value) {
   return result;
 }
 
-// A Python value as a scene override (numbers, booleans, text, lists or arrays of one kind).
+bool is_sequence(const py::handle& value) {
+  return py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value) ||
+         py::hasattr(value, "__array_interface__");
+}
+
+// Items that are all sequences of numbers ([[x, y], ...], a 2-D array) as lists of numbers.
+std::optional<std::vector<std::vector<double>>> number_lists_of(const py::list& items) {
+  std::vector<std::vector<double>> lists;
+  for (const auto& item : items) {
+    if (!is_sequence(item)) return std::nullopt;
+    std::vector<double>& numbers = lists.emplace_back();
+    for (const auto& element : py::list(item.cast<py::object>())) {
+      const ScalarKind kind = kind_of(element);
+      if (kind != ScalarKind::integer && kind != ScalarKind::number) return std::nullopt;
+      numbers.push_back(py::float_(element.cast<py::object>()).cast<double>());
+    }
+  }
+  if (lists.empty()) return std::nullopt;
+  return lists;
+}
+
+// A Python value as a scene override (numbers, booleans, text, lists or arrays of one kind, lists
+// of number lists).
 scene::SceneOverride::Value override_value(const std::string& key, const py::handle& value) {
   // A numpy array of no dimension holds one scalar.
   if (py::hasattr(value, "ndim") && py::hasattr(value, "item") && py::int_(value.attr("ndim")).cast<int>() == 0)
@@ -89,9 +112,9 @@ scene::SceneOverride::Value override_value(const std::string& key, const py::han
     case ScalarKind::other:
       break;
   }
-  if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value) ||
-      py::hasattr(value, "__array_interface__")) {
+  if (is_sequence(value)) {
     const auto items = py::list(value.cast<py::object>());
+    if (auto lists = number_lists_of(items)) return *lists;
     bool all_int = true, all_number = true;
     for (const auto& item : items) {
       const ScalarKind kind = kind_of(item);
@@ -113,7 +136,8 @@ scene::SceneOverride::Value override_value(const std::string& key, const py::han
     for (const auto& item : items) texts.push_back(py::str(item).cast<std::string>());
     return texts;
   }
-  throw InputError("override '" + key + "': a number, a boolean, a string or a list of them, not " +
+  throw InputError("override '" + key +
+                   "': a number, a boolean, a string, a list of them or a list of number lists, not " +
                    py::str(py::type::handle_of(value)).cast<std::string>());
 }
 
