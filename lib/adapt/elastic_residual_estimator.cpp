@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
 
 #include "adapt/residual_terms.hpp"
 #include "assembly/cell_field.hpp"
@@ -39,10 +38,6 @@ double volume_term(const space::H1Space& space, const assembly::CellField& u, in
   const double scale = cell_diameter(space.mesh(), c) / space.cell_degree(c);
   return scale * scale * sum / (2.0 * m.mu);
 }
-
-struct BoundaryTerms {
-  double flux = 0.0, contact = 0.0;
-};
 
 // What a boundary edge adds to its cell (header). `trace_edge` ≥ 0 on Γ_C.
 BoundaryTerms boundary_terms(const contact::ElasticContactSetup& setup, const contact::ElasticContactSolution& solution,
@@ -110,42 +105,27 @@ ResidualIndicators elastic_residual_indicators(const contact::ElasticContactSetu
   const auto& ops = *setup.operators;
   const auto& space = ops.space();
   HPC_VERIFY(space.whole(), "the residual estimator runs on a whole (serial) space");
-  const auto& mesh = space.mesh();
   const auto u = assembly::vector_field(ops.vector_space(), solution.u, solution.u_rows, solution.lift);
   const auto& contact = ops.contact();
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
-  std::unordered_map<int, int> trace_edge_of;  // mesh edge → index in contact.edges()
-  for (std::size_t k = 0; k < contact.edges().size(); ++k) trace_edge_of[contact.edges()[k].edge] = static_cast<int>(k);
   const auto& materials = ops.materials();
-  // σ(u_h)n / √(2μ_T): the jump of the scaled traction is the term of the header.
-  const NormalFlux scaled_traction = [&](int cell, const Eigen::MatrixXd& gradient, const mesh::Point& normal) {
-    const auto& m = materials[static_cast<std::size_t>(cell)];
-    return Eigen::VectorXd(stress(m, gradient) * normal / std::sqrt(2.0 * m.mu));
-  };
-
-  ResidualIndicators out;
-  out.cell.assign(mesh.n_cells(), 0.0);
-  for (int c = 0; c < mesh.n_cells(); ++c) {
-    const double volume = volume_term(space, u, c, materials[static_cast<std::size_t>(c)], setup.body_force);
-    out.cell[c] += volume, out.volume += volume;
-  }
-  for (int e = 0; e < mesh.n_edges(); ++e) {
-    const auto& cells = mesh.edge_cells(e);
-    if (!mesh.is_boundary_edge(e)) {
-      const double share = jump_share(space, u, e, scaled_traction);
-      out.cell[cells[0]] += share, out.cell[cells[1]] += share, out.jumps += 2 * share;
-      continue;
-    }
-    if (mesh.edge_part(e) == mesh::BoundaryPart::dirichlet) continue;
-    std::array<bool, space::kComponents> free{};
-    for (int k = 0; k < space::kComponents; ++k) free[k] = fixed[k].empty() || !fixed[k][static_cast<std::size_t>(e)];
-    const auto found = trace_edge_of.find(e);
-    const auto terms =
-        boundary_terms(setup, solution, u, multipliers, free, e, found == trace_edge_of.end() ? -1 : found->second);
-    out.cell[cells[0]] += terms.flux + terms.contact;
-    out.flux += terms.flux, out.contact += terms.contact;
-  }
-  return out;
+  const ResidualTerms terms{
+      .volume =
+          [&](int c) { return volume_term(space, u, c, materials[static_cast<std::size_t>(c)], setup.body_force); },
+      // σ(u_h)n / √(2μ_T): the jump of the scaled traction is the term of the header.
+      .flux =
+          [&](int cell, const Eigen::MatrixXd& gradient, const mesh::Point& normal) {
+            const auto& m = materials[static_cast<std::size_t>(cell)];
+            return Eigen::VectorXd(stress(m, gradient) * normal / std::sqrt(2.0 * m.mu));
+          },
+      .boundary =
+          [&](int e, int trace_edge) {
+            std::array<bool, space::kComponents> free{};
+            for (int k = 0; k < space::kComponents; ++k)
+              free[k] = fixed[k].empty() || !fixed[k][static_cast<std::size_t>(e)];
+            return boundary_terms(setup, solution, u, multipliers, free, e, trace_edge);
+          }};
+  return sum_indicators(space, u, contact, terms);
 }
 
 }  // namespace hpcontact::adapt

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
 
 #include "adapt/residual_terms.hpp"
 #include "assembly/cell_field.hpp"
@@ -31,9 +30,6 @@ double volume_term(const space::H1Space& space, const assembly::CellField& u, in
 
 // What a boundary edge adds to its cell: the flux mismatch on Γ_N and Γ_C, and on Γ_C the
 // problem's contact terms (header).
-struct BoundaryTerms {
-  double flux = 0.0, contact = 0.0;
-};
 BoundaryTerms boundary_terms(const contact::ContactSetup& setup, const contact::ContactSolution& solution,
                              const space::H1Space& space, const assembly::CellField& u,
                              const mesh::ContactBoundary& contact, const space::MultiplierSpace& multipliers, int e,
@@ -96,34 +92,14 @@ ResidualIndicators residual_indicators(const contact::ContactSetup& setup, const
   const auto u = assembly::scalar_field(space, solution.u, solution.u_rows, solution.lift);
   const mesh::ContactBoundary contact(mesh);
   const space::MultiplierSpace multipliers(*setup.boundary_mesh, setup.segment_degrees);
-  std::unordered_map<int, int> trace_edge_of;  // mesh edge → index in contact.edges()
-  for (std::size_t k = 0; k < contact.edges().size(); ++k) trace_edge_of[contact.edges()[k].edge] = static_cast<int>(k);
-
-  const NormalFlux normal_derivative = [](int, const Eigen::MatrixXd& gradient, const mesh::Point& normal) {
-    return Eigen::VectorXd(gradient * normal);
-  };
-  ResidualIndicators out;
-  out.cell.assign(mesh.n_cells(), 0.0);
-  for (int c = 0; c < mesh.n_cells(); ++c) {
-    const double volume = volume_term(space, u, c, setup.f);
-    out.cell[c] += volume, out.volume += volume;
-  }
-  for (int e = 0; e < mesh.n_edges(); ++e) {
-    const auto& cells = mesh.edge_cells(e);
-    if (!mesh.is_boundary_edge(e)) {
-      const double share = jump_share(space, u, e, normal_derivative);
-      out.cell[cells[0]] += share, out.cell[cells[1]] += share, out.jumps += 2 * share;
-      continue;
-    }
-    const auto part = mesh.edge_part(e);
-    if (part == mesh::BoundaryPart::dirichlet) continue;
-    const auto found = trace_edge_of.find(e);
-    const auto terms = boundary_terms(setup, solution, space, u, contact, multipliers, e,
-                                      found == trace_edge_of.end() ? -1 : found->second);
-    out.cell[cells[0]] += terms.flux + terms.contact;
-    out.flux += terms.flux, out.contact += terms.contact;
-  }
-  return out;
+  const ResidualTerms terms{.volume = [&](int c) { return volume_term(space, u, c, setup.f); },
+                            .flux = [](int, const Eigen::MatrixXd& gradient,
+                                       const mesh::Point& normal) { return Eigen::VectorXd(gradient * normal); },
+                            .boundary =
+                                [&](int e, int trace_edge) {
+                                  return boundary_terms(setup, solution, space, u, contact, multipliers, e, trace_edge);
+                                }};
+  return sum_indicators(space, u, contact, terms);
 }
 
 }  // namespace hpcontact::adapt

@@ -1,9 +1,11 @@
-// The shared pieces of the residual estimators: second derivatives, edge traces, flux jumps.
+// The shared pieces of the residual estimators: second derivatives, edge traces, flux jumps, the
+// sum over T_h.
 #include "adapt/residual_terms.hpp"
 
 #include <Eigen/LU>
 #include <algorithm>
 #include <array>
+#include <unordered_map>
 
 #include "assembly/cell_values.hpp"
 #include "basis/quadrature.hpp"
@@ -101,6 +103,33 @@ double jump_share(const space::H1Space& space, const assembly::CellField& u, int
     sum += rule.weights[q] * edge_speed(mesh, e, t) * jump.squaredNorm();
   }
   return 0.5 * 0.5 * mesh.edge_length(e) / p * sum;
+}
+
+ResidualIndicators sum_indicators(const space::H1Space& space, const assembly::CellField& u,
+                                  const mesh::ContactBoundary& contact, const ResidualTerms& terms) {
+  const auto& mesh = space.mesh();
+  std::unordered_map<int, int> trace_edge_of;  // mesh edge → index in contact.edges()
+  for (std::size_t k = 0; k < contact.edges().size(); ++k) trace_edge_of[contact.edges()[k].edge] = static_cast<int>(k);
+  ResidualIndicators out;
+  out.cell.assign(mesh.n_cells(), 0.0);
+  for (int c = 0; c < mesh.n_cells(); ++c) {
+    const double volume = terms.volume(c);
+    out.cell[c] += volume, out.volume += volume;
+  }
+  for (int e = 0; e < mesh.n_edges(); ++e) {
+    const auto& cells = mesh.edge_cells(e);
+    if (!mesh.is_boundary_edge(e)) {
+      const double share = jump_share(space, u, e, terms.flux);
+      out.cell[cells[0]] += share, out.cell[cells[1]] += share, out.jumps += 2 * share;
+      continue;
+    }
+    if (mesh.edge_part(e) == mesh::BoundaryPart::dirichlet) continue;
+    const auto found = trace_edge_of.find(e);
+    const auto boundary = terms.boundary(e, found == trace_edge_of.end() ? -1 : found->second);
+    out.cell[cells[0]] += boundary.flux + boundary.contact;
+    out.flux += boundary.flux, out.contact += boundary.contact;
+  }
+  return out;
 }
 
 }  // namespace hpcontact::adapt
