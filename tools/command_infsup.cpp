@@ -57,20 +57,20 @@ scene::Scene resolve_scene(const InfSupOptions& o) {
   return scene::read_scene(o.scene, overrides);
 }
 
-// α of a 3-D scene on one process; the spurious mode (--mode) as a VTU of T_{C,H}'s cells.
+// α of a 3-D scene, A_G factorized over the ranks of `distribution` (each rank holds the box and
+// gets the same α); rank 0 writes the spurious mode (--mode) as a VTU of T_{C,H}'s cells.
 driver::InfSupSummary solid_infsup(const InfSupOptions& o, const scene::Scene& scene, infsup::EigenBackend backend,
-                                   int ranks) {
-  if (ranks > 1) throw InputError(scene.file + ": α of a 3-D scene runs on one process: run it without mpirun");
+                                   const linalg::Distribution& distribution) {
   if (!o.mode.empty() && std::filesystem::path(o.mode).extension() != ".vtu")
     throw InputError(
         fmt::format("hpcontact infsup --mode {}: the spurious mode of a 3-D scene is written as a VTU of "
                     "the cells of T_C,H: give a file name ending in .vtu",
                     o.mode));
-  driver::check_solid_scene(scene, {}, false);
+  driver::check_solid_scene(scene, false);
   driver::check_solid_pairing(scene);  // (before the box is meshed)
   const auto d = driver::discretize_solid_scene(scene);
-  const auto alpha = driver::solid_scene_alpha(scene, *d, backend);
-  if (!o.mode.empty())
+  const auto alpha = driver::solid_scene_alpha(scene, *d, backend, nullptr, 1, distribution);
+  if (!o.mode.empty() && mpi_rank_and_size().first == 0)
     io::write_file_atomically(o.mode, io::vtu_text(postprocess::surface_multiplier_vtu_grid(
                                           *d->multipliers, alpha.result.mode,
                                           alpha.result.mode.size() == d->multipliers->n_dofs()
@@ -90,11 +90,12 @@ int run_infsup(const InfSupOptions& o) {
 
   // 2. Build T_h (under mpirun by rank 0 alone, which sends each rank its part) and T_{C,H}, and
   // solve the eigenproblem. Under mpirun A_G is factorized over the ranks, and rank 0 reports and
-  // writes. A 3-D scene runs on one process.
-  const auto [rank, size] = mpi_rank_and_size();
+  // writes.
+  const int rank = mpi_rank_and_size().first;
   driver::InfSupSummary summary;
   if (scene.dimension() == 3) {
-    summary = solid_infsup(o, scene, backend, size);
+    summary = solid_infsup(o, scene, backend, linalg::distribution_over(MPI_COMM_WORLD, distributed_solver));
+    if (rank != 0) return 0;
   } else {
     // The run's own stages: an elastic scene pairs the normal (and tangential) multipliers with
     // [S^p(T_h)]². Distributed, the operators hold the rank's part: the whole mesh is kept only

@@ -41,7 +41,8 @@ SolidPairingFacts solid_pairing_facts(const scene::Scene& scene, const SolidDisc
 }
 
 SolidAlpha solid_scene_alpha(const scene::Scene& scene, const SolidDiscretization& d, infsup::EigenBackend backend,
-                             const assembly::CondensedFactor* gram_factor, int level) {
+                             const assembly::CondensedFactor* gram_factor, int level,
+                             const linalg::Distribution& distribution) {
   check_solid_pairing(scene);
   const auto multiplier_mesh = solid_multiplier_mesh(scene, *d.surface);
   const space::SurfaceMultiplierSpace multipliers(*multiplier_mesh, scene.pc.value);
@@ -55,6 +56,7 @@ SolidAlpha solid_scene_alpha(const scene::Scene& scene, const SolidDiscretizatio
   setup.alpha_tolerance = scene.alpha_tolerance;
   setup.gram_factor = gram_factor;
   setup.path = scene.alpha_operator;
+  setup.distribution = distribution;
   SolidAlpha out;
   out.result = infsup::analyse_solid_infsup(setup, backend);
   const SolidPairingFacts facts = solid_pairing_facts(scene, d);

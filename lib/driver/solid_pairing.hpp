@@ -24,13 +24,14 @@ void check_solid_pairing(const scene::Scene& scene);
 /// Γ_C, m the number of cells of T_{C,H}, h_min the shortest edge of a trace face, ratio the
 /// scene's h/H or else √(m / n); alpha_predicted is NaN (the local predictor is planar).
 /// `gram_factor`: A_G of (d.space or d.vector_space, Γ_C) when shared (infsup::solid_gram_factor),
-/// built otherwise.
+/// built otherwise, over the ranks of `distribution` (collective; every rank gets the same α).
 struct SolidAlpha {
   infsup::InfSupResult result;
   InfSupSummary summary;
 };
 SolidAlpha solid_scene_alpha(const scene::Scene& scene, const SolidDiscretization& d, infsup::EigenBackend backend,
-                             const assembly::CondensedFactor* gram_factor = nullptr, int level = 1);
+                             const assembly::CondensedFactor* gram_factor = nullptr, int level = 1,
+                             const linalg::Distribution& distribution = {});
 
 /// The facts of a 3-D scene's pairing a sweep needs before anything is solved: trace faces on
 /// Γ_C, the shortest edge of one, cells of T_{C,H}.

@@ -157,7 +157,7 @@ SolvedSolid solve_elastic(const scene::Scene& scene, const SolidDiscretization& 
 
 RunResult run_solid_scene(const scene::Scene& scene, const SceneRunOptions& options) {
   Stopwatch total;
-  check_solid_scene(scene, options);
+  check_solid_scene(scene);
   const auto say = [&](const std::string& line) {
     if (options.progress) options.progress(line);
   };
@@ -180,7 +180,7 @@ RunResult run_solid_scene(const scene::Scene& scene, const SceneRunOptions& opti
   // 2. α of the pairing (effect infsup), then the contact problems.
   if (scene.has_effect(scene::Effect::infsup)) {
     say("inf-sup constant");
-    result.infsup = solid_scene_alpha(scene, *d, infsup::EigenBackend::slepc).summary;
+    result.infsup = solid_scene_alpha(scene, *d, infsup::EigenBackend::slepc, nullptr, 1, options.distribution).summary;
   }
   std::vector<SolvedSolid> solved;
   for (const auto effect : scene.effects) {

@@ -182,7 +182,7 @@ std::array<int, 2> multiplier_cells(const scene::Scene& scene, const mesh::FlatC
 
 }  // namespace
 
-void check_solid_scene(const scene::Scene& scene, const SceneRunOptions& options, bool needs_effects) {
+void check_solid_scene(const scene::Scene& scene, bool needs_effects) {
   for (const auto& key : scene.given)
     if (!solid_scene_keys().contains(key))
       throw_bad_input(scene.where(key), key, "(given)",
@@ -207,11 +207,6 @@ void check_solid_scene(const scene::Scene& scene, const SceneRunOptions& options
     throw_bad_input(scene.where("discretization.pC"), "discretization.pC", std::to_string(scene.pc.value),
                     "0 or 1 with the triangles of contact_mesh.mesh (P_0 at the centroid, P_1 at the vertices: the "
                     "Lagrange bases whose functions all have positive integrals); higher p_C needs m or ratio");
-  // (a distributed solve factorizes K over the ranks; α's eigensolver runs on one process)
-  if (options.distribution.distributed() && scene.has_effect(scene::Effect::infsup))
-    throw_bad_input(scene.where("run.effects"), "run.effects", "infsup",
-                    "the contact effects only under mpirun: α of a 3-D pairing runs on one process (a sweep "
-                    "spreads its points over the ranks)");
   if (scene.contact_predicate.empty())
     throw_bad_input(scene.where("boundary.contact"), "boundary.contact", "(missing)", "a predicate in x, y, z");
   if (!scene.p.rule.empty() || !scene.pc.rule.empty())

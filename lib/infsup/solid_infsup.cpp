@@ -113,7 +113,8 @@ LadderSolution solve_pencil(const SolidInfSupSetup& setup, const assembly::Conde
 }  // namespace
 
 assembly::CondensedFactor solid_gram_factor(const space::SolidVectorSpace& space,
-                                            const mesh::FlatContactSurface& surface, bool trace_last) {
+                                            const mesh::FlatContactSurface& surface, bool trace_last,
+                                            linalg::Distribution distribution) {
   std::set<int> trace;
   for (const auto& face : surface.faces())
     for (const int scalar : space::dofs_on_face(space.scalar(), face))
@@ -121,16 +122,17 @@ assembly::CondensedFactor solid_gram_factor(const space::SolidVectorSpace& space
         if (const int dof = space.dof(scalar, c); dof >= 0) trace.insert(dof);
   return assembly::CondensedFactor(
       std::make_unique<assembly::SolidElasticCellSystem>(assembly::SolidElasticCellSystem::vector_h1(space)),
-      trace_last ? std::vector<int>(trace.begin(), trace.end()) : std::vector<int>());
+      trace_last ? std::vector<int>(trace.begin(), trace.end()) : std::vector<int>(), std::move(distribution));
 }
 
 assembly::CondensedFactor solid_gram_factor(const space::SolidH1Space& space, const mesh::FlatContactSurface& surface,
-                                            bool trace_last) {
+                                            bool trace_last, linalg::Distribution distribution) {
   std::set<int> trace;
   for (const auto& face : surface.faces())
     for (const int dof : space::dofs_on_face(space, face)) trace.insert(dof);
   return assembly::CondensedFactor(std::make_unique<assembly::SolidScalarCellSystem>(space, 1.0, 1.0),
-                                   trace_last ? std::vector<int>(trace.begin(), trace.end()) : std::vector<int>());
+                                   trace_last ? std::vector<int>(trace.begin(), trace.end()) : std::vector<int>(),
+                                   std::move(distribution));
 }
 
 InfSupResult analyse_solid_infsup(const SolidInfSupSetup& setup, EigenBackend backend) {
@@ -172,8 +174,8 @@ InfSupResult analyse_solid_infsup(const SolidInfSupSetup& setup, EigenBackend ba
     // (the products need no trailing trace block: they solve on the skeleton)
     const bool trace_last = !products;
     own_factor = std::make_unique<assembly::CondensedFactor>(
-        elastic ? solid_gram_factor(*setup.vector_space, multipliers.mesh().surface(), trace_last)
-                : solid_gram_factor(space, multipliers.mesh().surface(), trace_last));
+        elastic ? solid_gram_factor(*setup.vector_space, multipliers.mesh().surface(), trace_last, setup.distribution)
+                : solid_gram_factor(space, multipliers.mesh().surface(), trace_last, setup.distribution));
   }
   const assembly::CondensedFactor& factor = setup.gram_factor ? *setup.gram_factor : *own_factor;
   const LadderSolution solved = solve_pencil(setup, factor, b, basis, copies, products, backend, phase, result);

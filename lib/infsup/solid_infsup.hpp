@@ -23,12 +23,14 @@ namespace hpcontact::infsup {
 
 /// A_G = K + M on `space` with every dof of Γ_C (`surface`) last (`trace_last`; the dense S_G is
 /// its trailing block, the products need no such order): one factor serves every multiplier space
-/// on Γ_C (a sweep's p_C and H on one T_h).
+/// on Γ_C (a sweep's p_C and H on one T_h). `distribution`: factorized over its ranks, as K of a
+/// distributed 3-D solve (every rank holds the box and makes the same calls), or serial.
 assembly::CondensedFactor solid_gram_factor(const space::SolidH1Space& space, const mesh::FlatContactSurface& surface,
-                                            bool trace_last = true);
+                                            bool trace_last = true, linalg::Distribution distribution = {});
 /// The same for the vector H¹ Gram matrix on [Q_p]³ (every component of the dofs of Γ_C last).
 assembly::CondensedFactor solid_gram_factor(const space::SolidVectorSpace& space,
-                                            const mesh::FlatContactSurface& surface, bool trace_last = true);
+                                            const mesh::FlatContactSurface& surface, bool trace_last = true,
+                                            linalg::Distribution distribution = {});
 
 /// Whether α takes the products path (surface_products_ladder.hpp) for `multipliers` rows of B:
 /// `automatic` with the SLEPc backend from kAlphaProductsFrom multipliers on (the dense backend is
@@ -60,6 +62,10 @@ struct SolidInfSupSetup {
   /// S_G and G formed densely, or applied by products (uses_alpha_products); the products ignore
   /// the backend, and take a factor with or without the trace last.
   contact::SchurPath path = contact::SchurPath::automatic;
+  /// The ranks that factorize A_G when it is built here (collective: every rank makes the same
+  /// calls; the solves return the same vectors on all, so each runs the same eigensolver on its
+  /// own process and gets the same α), or serial.
+  linalg::Distribution distribution;
 };
 
 /// α with the fields of InfSupResult: h the longest edge of T_h, H the longest side of the cells

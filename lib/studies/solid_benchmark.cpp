@@ -203,7 +203,7 @@ void add_solid_scene_rows(const PerformanceBenchmark& benchmark, const std::func
     throw_bad_input(benchmark.file, "benchmark.scene", benchmark.scene,
                     "a 3-D elastic scene (domain.n_z or z_nodes, [material], a contact effect)");
   scene.trace_solve = contact::SchurPath::products;  // (the path whose cost the kind measures)
-  driver::check_solid_scene(scene, {});
+  driver::check_solid_scene(scene);
   const auto d = driver::discretize_solid_scene(scene);
   BenchmarkRow linear;
   linear.p = benchmark.p;

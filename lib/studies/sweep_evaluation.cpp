@@ -60,15 +60,12 @@ class SweepEvaluation::Group {
   std::unique_ptr<assembly::CondensedFactor> solid_gram;
 
  private:
+  // (a group of ranks: each holds the box, A_G is factorized over them, and all compute every point)
   void build_solid(linalg::Distribution distribution) {
-    if (distribution.distributed())
-      throw InputError(scene.file +
-                       ": α of a 3-D scene is computed on one process: run the sweep with --ranks-per-unit 1 "
-                       "(each rank then takes whole groups)");
     solid = driver::discretize_solid_scene(scene, false);  // (each point builds its T_{C,H})
     solid_gram = std::make_unique<assembly::CondensedFactor>(
-        solid->vector_space ? infsup::solid_gram_factor(*solid->vector_space, *solid->surface)
-                            : infsup::solid_gram_factor(*solid->space, *solid->surface));
+        solid->vector_space ? infsup::solid_gram_factor(*solid->vector_space, *solid->surface, true, distribution)
+                            : infsup::solid_gram_factor(*solid->space, *solid->surface, true, distribution));
   }
 
   void build_master(linalg::Distribution distribution) {

@@ -45,7 +45,7 @@ void check_families(const StabilitySweep& sweep, const scene::Scene& at_ratio, c
 // checked on it (α of 3-D scenes takes the interpolation norm and the discontinuous family).
 LevelFacts facts_of_solid_level(const StabilitySweep& sweep, const scene::Scene& scene,
                                 const std::vector<std::optional<scene::Ratio>>& ratios) {
-  driver::check_solid_scene(scene, {}, false);
+  driver::check_solid_scene(scene, false);
   for (const auto norm : sweep.norms)
     for (const auto problem : sweep.problems)
       driver::check_solid_pairing(point_scene(scene, {.problem = problem, .norm = norm}));
