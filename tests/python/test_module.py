@@ -130,6 +130,14 @@ def test_a_list_of_pairs_override_grades_the_mesh_as_the_file_does(tmp_path):
         assert result.summary["signorini"]["energy"] == in_file
     ungraded = hpcontact.solve(scene, effects=["signorini"]).summary["signorini"]["energy"]
     assert ungraded != in_file
+    # One-dimensional arrays and numpy scalars in a list stay lists of numbers.
+    two_zones = os.path.join(SOURCE, "studies", "zones", "two_zones.toml")
+    for points in (np.array([2, 2]), [np.int64(2), 2]):
+        result = hpcontact.solve(two_zones, {"solve.constraint_points": points}, effects=["signorini"])
+        assert result.summary["signorini"]["nmult"] > 0
+    result = hpcontact.solve(scene, {"domain.grading_points": [np.array([0.5, -1.0])], "domain.grading_layers": 3},
+                             effects=["signorini"])
+    assert result.summary["signorini"]["energy"] == in_file
 
 
 def test_an_unstable_pairing_warns_and_advise_recommends_what_infsup_confirms(tmp_path):

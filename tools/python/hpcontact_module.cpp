@@ -73,9 +73,12 @@ long long integer_of(const std::string& key, const py::handle& value) {
   return result;
 }
 
+// A list, a tuple or a numpy array of one dimension or more (numpy's scalars have
+// __array_interface__ too, with no dimension).
 bool is_sequence(const py::handle& value) {
-  return py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value) ||
-         py::hasattr(value, "__array_interface__");
+  if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) return true;
+  return py::hasattr(value, "__array_interface__") && py::hasattr(value, "ndim") &&
+         py::int_(value.attr("ndim")).cast<int>() >= 1;
 }
 
 // Items that are all sequences of numbers ([[x, y], ...], a 2-D array) as lists of numbers.
