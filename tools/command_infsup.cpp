@@ -88,9 +88,9 @@ int run_infsup(const InfSupOptions& o) {
   for (const auto& file : {o.csv, o.mode})
     if (!file.empty()) io::ensure_writable_directory(std::filesystem::absolute(file).parent_path());
 
-  // 2. Build T_h (under mpirun by rank 0 alone, which sends each rank its part) and T_{C,H}, and
-  // solve the eigenproblem. Under mpirun A_G is factorized over the ranks, and rank 0 reports and
-  // writes.
+  // 2. Build T_h (planar, under mpirun by rank 0 alone, which sends each rank its part; a 3-D box
+  // on every rank) and T_{C,H}, and solve the eigenproblem. Under mpirun A_G is factorized over the
+  // ranks, and rank 0 reports and writes.
   const int rank = mpi_rank_and_size().first;
   driver::InfSupSummary summary;
   if (scene.dimension() == 3) {

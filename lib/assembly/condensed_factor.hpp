@@ -68,6 +68,8 @@ class CondensedFactor {
   /// Distinct interior eliminations (of this rank's cells when distributed): 1 on a uniform mesh
   /// of one degree, n_cells on a general mesh.
   int n_eliminations() const { return static_cast<int>(blocks_.size()); }
+  /// The ranks the factor is spread over (serial: one process holds it).
+  const linalg::Distribution& distribution() const { return distribution_; }
 
   /// A⁻¹ rhs, shape (n) or (n, k). Distributed: collective, rhs and result the same on every rank.
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const;

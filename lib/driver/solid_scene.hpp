@@ -18,7 +18,7 @@
 
 namespace hpcontact::driver {
 
-/// @throws InputError for a key, or effect 3-D scenes do not take, naming it and what
+/// @throws InputError for a key or an effect that 3-D scenes do not take, naming it and what
 /// they take; `needs_effects`: a scene without run.effects is refused too (a solve; α does not
 /// need them).
 void check_solid_scene(const scene::Scene& scene, bool needs_effects = true);

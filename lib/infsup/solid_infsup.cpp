@@ -1,4 +1,5 @@
-// α of 3-D pairings: S_G from A_G's trace-last factor, G from the surface interpolation ladder.
+// α of 3-D pairings: S_G from A_G's trace-last factor, G from the surface interpolation ladder;
+// by products on a distributed factor, led by its first rank.
 #include "infsup/solid_infsup.hpp"
 
 #include <fmt/format.h>
@@ -12,7 +13,9 @@
 #include "assembly/solid_cell_system.hpp"
 #include "assembly/solid_elastic_system.hpp"
 #include "assembly/surface_coupling.hpp"
+#include "contact/led_products.hpp"
 #include "contact/schur_products.hpp"
+#include "core/byte_buffer.hpp"
 #include "core/error.hpp"
 #include "core/timer.hpp"
 #include "infsup/surface_products_ladder.hpp"
@@ -84,6 +87,53 @@ linalg::Coupling elastic_coupling(const SolidInfSupSetup& setup, int copies) {
   return b;
 }
 
+/// The products ladder's solution as bytes (its G is never formed) and back.
+std::vector<char> ladder_bytes(const LadderSolution& solved) {
+  ByteWriter out;
+  const SmallestEigenpair& pair = solved.pair;
+  out.put(pair.eigenvalue);
+  out.put(std::vector<double>(pair.eigenvector.data(), pair.eigenvector.data() + pair.eigenvector.size()));
+  out.put(pair.largest_eigenvalue);
+  out.put(pair.iterations);
+  out.put(pair.residual);
+  out.put(pair.method);
+  for (double value : {solved.alpha, solved.lambda_min, solved.alpha_error, solved.seconds_eigen}) out.put(value);
+  out.put(solved.reference_level);
+  out.put(static_cast<char>(solved.alpha_converged));
+  return out.take();
+}
+LadderSolution ladder_of_bytes(const std::vector<char>& bytes) {
+  ByteReader in(bytes);
+  LadderSolution solved;
+  SmallestEigenpair& pair = solved.pair;
+  pair.eigenvalue = in.get<double>();
+  const auto vector = in.get_vector<double>();
+  pair.eigenvector = Eigen::Map<const Eigen::VectorXd>(vector.data(), static_cast<Eigen::Index>(vector.size()));
+  pair.largest_eigenvalue = in.get<double>();
+  pair.iterations = in.get<int>();
+  pair.residual = in.get<double>();
+  pair.method = in.get_string();
+  for (double* value : {&solved.alpha, &solved.lambda_min, &solved.alpha_error, &solved.seconds_eigen})
+    *value = in.get<double>();
+  solved.reference_level = in.get<int>();
+  solved.alpha_converged = in.get<char>() != 0;
+  HPC_VERIFY(in.at_end(), "bytes of a ladder solution left over");
+  return solved;
+}
+
+/// The products ladder on S_G: on a distributed factor the first rank runs it and the others serve
+/// its products (contact/led_products.hpp), so that no rank can take a step the others do not.
+LadderSolution products_ladder(const SolidInfSupSetup& setup, const assembly::CondensedFactor& factor,
+                               const contact::TraceOperator& s_g, const Eigen::SparseMatrix<double>& basis,
+                               int copies) {
+  const auto run = [&](const contact::TraceOperator& s) {
+    return smallest_on_products_ladder(s, basis, copies, *setup.multipliers, setup.alpha_tolerance);
+  };
+  if (!factor.distribution().distributed()) return run(s_g);
+  return ladder_of_bytes(contact::run_with_products_led_by_first_rank(
+      s_g, factor.distribution().ranks, [&](const contact::TraceOperator& s) { return ladder_bytes(run(s)); }));
+}
+
 /// Stage 3 of analyse_solid_infsup: the ladder on S_G and G dense (setup.grams or its own), or by
 /// products; the seconds of S_G (from `phase`'s start), G and the eigensolves into `result`.
 LadderSolution solve_pencil(const SolidInfSupSetup& setup, const assembly::CondensedFactor& factor,
@@ -94,7 +144,7 @@ LadderSolution solve_pencil(const SolidInfSupSetup& setup, const assembly::Conde
   if (products) {
     const contact::TraceOperator s_g = contact::schur_products(factor, b);
     result.seconds_primal = phase.seconds();
-    solved = smallest_on_products_ladder(s_g, basis, copies, multipliers, setup.alpha_tolerance);
+    solved = products_ladder(setup, factor, s_g, basis, copies);
   } else {
     const Eigen::MatrixXd s_g = restrict(factor.schur_complement(b), basis);
     result.seconds_primal = phase.seconds();

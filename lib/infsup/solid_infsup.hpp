@@ -62,9 +62,10 @@ struct SolidInfSupSetup {
   /// S_G and G formed densely, or applied by products (uses_alpha_products); the products ignore
   /// the backend, and take a factor with or without the trace last.
   contact::SchurPath path = contact::SchurPath::automatic;
-  /// The ranks that factorize A_G when it is built here (collective: every rank makes the same
-  /// calls; the solves return the same vectors on all, so each runs the same eigensolver on its
-  /// own process and gets the same α), or serial.
+  /// The ranks that factorize A_G when it is built here, or serial. Collective: on the dense path
+  /// every rank forms S_G from the distributed factor and solves the same small eigenproblem; on the
+  /// products path the first rank runs the eigensolver and the others serve its products
+  /// (contact/led_products.hpp). Every rank gets the same α.
   linalg::Distribution distribution;
 };
 

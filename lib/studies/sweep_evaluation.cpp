@@ -22,9 +22,9 @@
 
 namespace hpcontact::studies {
 
-// T_h of one group (level, p) and its operators, shared by the group's points. Distributed, T_h
-// and its degrees are on the group's first rank only (the operators and the extension norm's
-// references send the others their parts), Γ_C on every rank.
+// T_h of one group (level, p) and its operators, shared by the group's points. Distributed, a
+// planar T_h and its degrees are on the group's first rank only (the operators and the extension
+// norm's references send the others their parts), Γ_C on every rank; a 3-D box is on every rank.
 class SweepEvaluation::Group {
  public:
   Group(const scene::Scene& level_scene, std::size_t group_share, linalg::Distribution distribution)
