@@ -22,9 +22,10 @@ int main(int argc, char** argv) {
   const PetscSession session({argv[0]});
   if (argc != 2) return 2;
   const std::string mode = argv[1];
-  const auto [rank, size] = mpi_rank_and_size();
+  // (plain ints: clang 14 does not capture structured bindings in lambdas)
+  const int rank = mpi_rank_and_size().first, size = mpi_rank_and_size().second;
   long made = 0;
-  const contact::TraceOperator s(4, [&, rank = rank](const Eigen::VectorXd& x) {
+  const contact::TraceOperator s(4, [&](const Eigen::VectorXd& x) {
     if (mode == "product_fails" && made == 2) throw NumericalError("the third product failed");
     ++made;
     Eigen::VectorXd y = (rank + 1.0) * x;  // Σ_r (r + 1) x over the ranks
