@@ -1,10 +1,11 @@
-// The discretization of 3-D scenes: keys, the graded box, boundary parts, rollers, materials, Γ_C and
-// T_{C,H}.
+// The discretization of 3-D scenes: keys, the graded box or the Gmsh mesh of hexahedra, boundary
+// parts, rollers, materials, Γ_C and T_{C,H}.
 #include "driver/solid_scene.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <set>
@@ -12,7 +13,9 @@
 
 #include "core/error.hpp"
 #include "core/expression.hpp"
+#include "core/memory_limit.hpp"
 #include "driver/solid_pairing.hpp"
+#include "mesh/gmsh_solid_reader.hpp"
 #include "mesh/gmsh_surface.hpp"
 #include "mesh/rectangle_mesh.hpp"
 
@@ -38,11 +41,18 @@ const std::set<std::string>& solid_scene_keys() {
                                           "domain.x_nodes",
                                           "domain.y_nodes",
                                           "domain.z_nodes",
+                                          "domain.mesh",
+                                          "domain.mesh_size",
                                           "boundary.contact",
                                           "boundary.dirichlet",
+                                          "boundary.contact_groups",
+                                          "boundary.dirichlet_groups",
                                           "boundary.fixed_x",
                                           "boundary.fixed_y",
                                           "boundary.fixed_z",
+                                          "boundary.fixed_x_groups",
+                                          "boundary.fixed_y_groups",
+                                          "boundary.fixed_z_groups",
                                           "contact_mesh.m",
                                           "contact_mesh.ratio",
                                           "contact_mesh.mesh",
@@ -69,8 +79,7 @@ const std::set<std::string>& solid_scene_keys() {
 }
 
 /// The box, its nodes graded as the rectangle's (towards the planes of grading_x, _y, _z), its
-/// boundary faces labelled "contact" and "dirichlet" by the scene's predicates at their centres (Γ_D
-/// wins where both hold, as in planar scenes).
+/// boundary faces labelled by side.
 mesh::SolidMesh scene_box(const scene::Scene& scene) {
   const auto& r = scene.rectangle;
   const std::array<std::tuple<double, double, int, const std::vector<double>*, const char*>, 3> axes{
@@ -85,40 +94,96 @@ mesh::SolidMesh scene_box(const scene::Scene& scene) {
                    : mesh::graded_nodes(low, high, n, *grading, scene.domain_grading, scene.grading_layers,
                                         scene.where(key) + ": key '" + key + "'");
   }
-  mesh::SolidMesh mesh = mesh::make_tensor_box_mesh(nodes, scene.file + ": box");
-  const auto label = [&](const std::string& text, const char* key) {
-    if (text.empty()) return;
-    const Expression predicate(text, scene.where(key) + ": key '" + key + "'", 3);
-    mesh.label_boundary_faces([&](const mesh::SolidPoint& x) { return predicate(x(0), x(1), x(2)) != 0.0; },
-                              std::string(key) == "boundary.contact" ? "contact" : "dirichlet");
-  };
-  label(scene.contact_predicate, "boundary.contact");
-  label(scene.dirichlet_predicate, "boundary.dirichlet");
-  return mesh;
+  return mesh::make_tensor_box_mesh(nodes, scene.file + ": box");
 }
 
-/// Per component, the boundary faces whose centre satisfies boundary.fixed_x, _y, _z (rollers).
+/// The hexahedra of domain.mesh, its boundary faces labelled by physical surface; a .geo meshed
+/// with at most the cells that fit at the scene's degree (17.5 KB per unknown, as the box's size
+/// check, three unknowns per node of an elastic body).
+mesh::SolidMesh scene_gmsh_mesh(const scene::Scene& scene) {
+  const MemoryLimit memory = memory_limit();
+  const double per_cell = std::pow(scene.p.value, 3) * (scene.is_elastic() ? 3.0 : 1.0);
+  mesh::GeoMeshing geo{scene.mesh_size,
+                       mesh::GeneratedCells::quadrilaterals,
+                       memory.bytes / (17.5e3 * per_cell),
+                       scene.where("domain.mesh_size"),
+                       "domain.mesh_size",
+                       fmt::format("{}, 17.5 KB per unknown at p = {}", memory.describe(), scene.p.value)};
+  try {
+    return mesh::read_gmsh_solid_mesh(scene.mesh_file, geo);
+  } catch (const InputError& error) {
+    const std::string text = error.what();
+    if (text.find("domain.mesh_size") != std::string::npos) throw;
+    throw InputError(scene.where("domain.mesh") + ": key 'domain.mesh': " + text);
+  }
+}
+
+/// A part of the boundary: the faces whose centre satisfies `predicate` (key `key`) or whose
+/// label is one of `groups` (key `key`_groups), per boundary face (in boundary_faces() order).
+/// @throws InputError naming the groups' key if none of them labels a face.
+std::vector<char> boundary_part(const scene::Scene& scene, const mesh::SolidMesh& mesh, const std::string& predicate,
+                                const std::vector<std::string>& groups, const std::string& key) {
+  const auto& faces = mesh.boundary_faces();
+  std::vector<char> in(faces.size(), 0);
+  if (!predicate.empty()) {
+    const Expression expression(predicate, scene.where(key) + ": key '" + key + "'", 3);
+    for (std::size_t k = 0; k < faces.size(); ++k) {
+      const mesh::SolidPoint x = mesh.face_centre(mesh.cell_face(faces[k].cell, faces[k].local_face));
+      in[k] = expression(x(0), x(1), x(2)) != 0.0;
+    }
+  }
+  if (groups.empty()) return in;
+  int found = 0;
+  std::set<std::string> labels;
+  for (std::size_t k = 0; k < faces.size(); ++k) {
+    const bool listed = std::find(groups.begin(), groups.end(), faces[k].label) != groups.end();
+    found += listed;
+    in[k] = in[k] || listed;
+    if (!faces[k].label.empty()) labels.insert(faces[k].label);
+  }
+  if (found == 0)
+    throw_bad_input(scene.where(key + "_groups"), key + "_groups", fmt::format("{}", fmt::join(groups, ", ")),
+                    labels.empty() ? std::string("physical surfaces of the mesh, which has none: name them in the .geo "
+                                                 "(Physical Surface(\"contact\") = {...};)")
+                                   : fmt::format("physical surfaces of the mesh: {}", fmt::join(labels, ", ")));
+  return in;
+}
+
+/// Labels Γ_C "contact" and Γ_D "dirichlet" by the scene's predicates and groups (Γ_D wins where
+/// both hold, as in planar scenes); other faces keep their labels, except that a physical surface
+/// named "contact" or "dirichlet" is a part only when the scene selects it.
+void label_contact_and_dirichlet(const scene::Scene& scene, mesh::SolidMesh& mesh) {
+  const std::vector<char> contact =
+      boundary_part(scene, mesh, scene.contact_predicate, scene.contact_groups, "boundary.contact");
+  const std::vector<char> dirichlet =
+      boundary_part(scene, mesh, scene.dirichlet_predicate, scene.dirichlet_groups, "boundary.dirichlet");
+  for (std::size_t k = 0; k < contact.size(); ++k) {
+    const std::string& label = mesh.boundary_faces()[k].label;
+    const bool reserved = label == "contact" || label == "dirichlet";
+    mesh.set_boundary_face_label(k, dirichlet[k] ? "dirichlet" : contact[k] ? "contact" : reserved ? "" : label);
+  }
+}
+
+/// Per component, the boundary faces on boundary.fixed_x, _y, _z or their groups (rollers), by
+/// face number.
 std::array<std::vector<char>, 3> scene_rollers(const scene::Scene& scene, const mesh::SolidMesh& mesh) {
   std::array<std::vector<char>, 3> held;
-  const std::array<std::pair<const std::string*, const char*>, 3> keys{
-      {{&scene.fixed_x_predicate, "boundary.fixed_x"},
-       {&scene.fixed_y_predicate, "boundary.fixed_y"},
-       {&scene.fixed_z_predicate, "boundary.fixed_z"}}};
+  const std::array<std::tuple<const std::string*, const std::vector<std::string>*, const char*>, 3> keys{
+      {{&scene.fixed_x_predicate, &scene.fixed_x_groups, "boundary.fixed_x"},
+       {&scene.fixed_y_predicate, &scene.fixed_y_groups, "boundary.fixed_y"},
+       {&scene.fixed_z_predicate, &scene.fixed_z_groups, "boundary.fixed_z"}}};
   for (int c = 0; c < 3; ++c) {
-    const auto& [text, key] = keys[c];
-    if (text->empty()) continue;
-    const Expression predicate(*text, scene.where(key) + ": key '" + key + "'", 3);
-    held[c].assign(mesh.n_faces(), 0);
-    int flagged = 0;
-    for (const auto& face : mesh.boundary_faces()) {
-      const int f = mesh.cell_face(face.cell, face.local_face);
-      const mesh::SolidPoint x = mesh.face_centre(f);
-      held[c][f] = predicate(x(0), x(1), x(2)) != 0.0;
-      flagged += held[c][f];
-    }
-    if (flagged == 0)
+    const auto& [text, groups, key] = keys[c];
+    if (text->empty() && groups->empty()) continue;
+    const std::vector<char> part = boundary_part(scene, mesh, *text, *groups, key);
+    if (std::count(part.begin(), part.end(), 1) == 0)
       throw_bad_input(scene.where(key), key, "\"" + *text + "\"",
                       "a predicate in x, y, z that holds at the centre of some boundary face");
+    held[c].assign(mesh.n_faces(), 0);
+    for (std::size_t k = 0; k < part.size(); ++k) {
+      const auto& face = mesh.boundary_faces()[k];
+      held[c][mesh.cell_face(face.cell, face.local_face)] = part[k];
+    }
   }
   return held;
 }
@@ -186,7 +251,7 @@ void check_solid_scene(const scene::Scene& scene, bool needs_effects) {
   for (const auto& key : scene.given)
     if (!solid_scene_keys().contains(key))
       throw_bad_input(scene.where(key), key, "(given)",
-                      fmt::format("a key of planar scenes; a 3-D scene (domain.n_z given) takes {}",
+                      fmt::format("a key of planar scenes; a 3-D scene (a box, or a Gmsh mesh of hexahedra) takes {}",
                                   fmt::join(solid_scene_keys(), ", ")));
   for (const auto effect : scene.effects)
     if (effect != scene::Effect::signorini && effect != scene::Effect::friction &&
@@ -198,17 +263,18 @@ void check_solid_scene(const scene::Scene& scene, bool needs_effects) {
   if (scene.effects.empty() && needs_effects)
     throw_bad_input(scene.where("run.effects"), "run.effects", "(none)",
                     "at least one of signorini, friction, friction_s, frictionless, tresca, coulomb, infsup");
-  if (scene.pair || scene.is_master)
-    throw_bad_input(scene.where(scene.n_z > 0 ? "domain.n_z" : "domain.z_nodes"),
-                    scene.n_z > 0 ? "domain.n_z" : "domain.z_nodes", "(given)",
-                    "a one-body scene: two bodies in contact are planar");
+  if (scene.pair || scene.is_master) {
+    const std::string key = !scene.is_rectangle() ? "domain.mesh" : scene.n_z > 0 ? "domain.n_z" : "domain.z_nodes";
+    throw_bad_input(scene.where(key), key, "(given)", "a one-body scene: two bodies in contact are planar");
+  }
   if (scene.has_effect(scene::Effect::infsup)) check_solid_pairing(scene);  // (before any work)
   if (!scene.contact_mesh_file.empty() && scene.pc.value > 1)
     throw_bad_input(scene.where("discretization.pC"), "discretization.pC", std::to_string(scene.pc.value),
                     "0 or 1 with the triangles of contact_mesh.mesh (P_0 at the centroid, P_1 at the vertices: the "
                     "Lagrange bases whose functions all have positive integrals); higher p_C needs m or ratio");
-  if (scene.contact_predicate.empty())
-    throw_bad_input(scene.where("boundary.contact"), "boundary.contact", "(missing)", "a predicate in x, y, z");
+  if (scene.contact_predicate.empty() && scene.contact_groups.empty())
+    throw_bad_input(scene.where("boundary.contact"), "boundary.contact", "(missing)",
+                    "a predicate in x, y, z, or boundary.contact_groups on a Gmsh mesh");
   if (!scene.p.rule.empty() || !scene.pc.rule.empty())
     throw_bad_input(scene.where(scene.p.rule.empty() ? "discretization.pC" : "discretization.p"),
                     scene.p.rule.empty() ? "discretization.pC" : "discretization.p",
@@ -271,17 +337,19 @@ std::unique_ptr<mesh::SurfaceMultiplierMesh> solid_multiplier_mesh(const scene::
 
 std::unique_ptr<SolidDiscretization> discretize_solid_scene(const scene::Scene& scene, bool multipliers) {
   auto d = std::make_unique<SolidDiscretization>();
-  d->mesh = std::make_unique<mesh::SolidMesh>(scene_box(scene));
-  const std::vector<char> dirichlet = space::faces_labelled(*d->mesh, {"dirichlet"});
+  d->mesh = std::make_unique<mesh::SolidMesh>(scene.is_rectangle() ? scene_box(scene) : scene_gmsh_mesh(scene));
+  // (rollers first: their groups are physical surfaces, whose labels Γ_C and Γ_D replace)
   const auto rollers = scene.is_elastic() ? scene_rollers(scene, *d->mesh) : std::array<std::vector<char>, 3>{};
+  label_contact_and_dirichlet(scene, *d->mesh);
+  const std::vector<char> dirichlet = space::faces_labelled(*d->mesh, {"dirichlet"});
   bool held = std::count(dirichlet.begin(), dirichlet.end(), 1) > 0;
   // (an elastic body is held by Γ_D, or by rollers along all three axes)
   held = held || (!rollers[0].empty() && !rollers[1].empty() && !rollers[2].empty());
   if (!held)
     throw_bad_input(scene.where("boundary.dirichlet"), "boundary.dirichlet",
                     scene.dirichlet_predicate.empty() ? "(missing)" : "\"" + scene.dirichlet_predicate + "\"",
-                    "a predicate in x, y, z that holds at the centre of some boundary face: without Γ_D the "
-                    "problem has no unique solution");
+                    "a predicate in x, y, z that holds at the centre of some boundary face, or "
+                    "boundary.dirichlet_groups: without Γ_D the problem has no unique solution");
   d->space =
       std::make_unique<space::SolidH1Space>(*d->mesh, std::vector<int>(d->mesh->n_cells(), scene.p.value), dirichlet);
   if (scene.is_elastic()) {

@@ -139,9 +139,37 @@ void Session::open(const std::string& path) {
   const Library& l = library();
   int ierr = 0;
   l.clear(&ierr);
+  for (const auto& [name, value] : {std::pair{"Mesh.RecombineAll", 0.0},
+                                    {"Mesh.Recombine3DAll", 0.0},
+                                    {"Mesh.Algorithm", 6.0},
+                                    {"Mesh.SubdivisionAlgorithm", 0.0},
+                                    {"Mesh.ElementOrder", 1.0},
+                                    {"Mesh.MeshSizeMax", 1e22}})
+    l.set_number(name, value, &ierr);
   l.open(path.c_str(), &ierr);
   if (ierr != 0) fail(path, "read the file");
 }
+
+namespace {
+
+// Gmsh's mesher runs in an OpenMP region: an error it throws there (General.AbortOnError >= 2,
+// the API's setting) ends the process. With 0 it logs the error and goes on; the log tells. The
+// setting is restored after: the readers of open() report their errors by it.
+void run_mesher(const std::string& path, int dimension) {
+  const Library& l = library();
+  int ierr = 0;
+  double abort_on_error = 0.0;
+  l.get_number("General.AbortOnError", &abort_on_error, &ierr);
+  l.set_number("General.AbortOnError", 0.0, &ierr);
+  const std::string error_before = last_error();
+  int meshed = 0;
+  l.generate(dimension, &meshed);
+  const std::string error_after = last_error();
+  l.set_number("General.AbortOnError", abort_on_error, &ierr);
+  if (meshed != 0 || (!error_after.empty() && error_after != error_before)) fail(path, "mesh the geometry");
+}
+
+}  // namespace
 
 void Session::generate(const std::string& path, std::optional<double> max_size, bool quadrilaterals) {
   const Library& l = library();
@@ -155,26 +183,21 @@ void Session::generate(const std::string& path, std::optional<double> max_size, 
     l.set_number(name, value, &ierr);
   // (reset without a size: Gmsh's options outlive the model, and a size of an earlier file would stay)
   l.set_number("Mesh.MeshSizeMax", max_size ? *max_size : 1e22, &ierr);
-  // Gmsh's mesher runs in an OpenMP region: an error it throws there (General.AbortOnError >= 2,
-  // the API's setting) ends the process. With 0 it logs the error and goes on; the log tells. The
-  // setting is restored after: the readers of open() report their errors by it.
-  double abort_on_error = 0.0;
-  l.get_number("General.AbortOnError", &abort_on_error, &ierr);
-  l.set_number("General.AbortOnError", 0.0, &ierr);
-  const std::string error_before = last_error();
-  int meshed = 0;
-  l.generate(2, &meshed);
-  const std::string error_after = last_error();
-  l.set_number("General.AbortOnError", abort_on_error, &ierr);
-  if (meshed != 0 || (!error_after.empty() && error_after != error_before)) fail(path, "mesh the geometry");
+  run_mesher(path, 2);
 }
 
-std::array<double, 4> Session::bounding_box() const {
+void Session::generate_volume(const std::string& path, std::optional<double> max_size) {
+  int ierr = 0;
+  if (max_size) library().set_number("Mesh.MeshSizeMax", *max_size, &ierr);
+  run_mesher(path, 3);
+}
+
+std::array<double, 6> Session::bounding_box() const {
   double x0 = 0, y0 = 0, z0 = 0, x1 = 0, y1 = 0, z1 = 0;
   int ierr = 0;
   library().bounding_box(-1, -1, &x0, &y0, &z0, &x1, &y1, &z1, &ierr);
   check(ierr, "getBoundingBox");
-  return {x0, y0, x1, y1};
+  return {x0, y0, z0, x1, y1, z1};
 }
 
 int Session::dimension() const {

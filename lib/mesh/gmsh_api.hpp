@@ -36,8 +36,11 @@ class Session {
   Session(const Session&) = delete;
   Session& operator=(const Session&) = delete;
 
-  /// Clears the model and reads `path` into it. @throws InputError with Gmsh's message (and
-  /// restarts Gmsh, which ignores later files after an error inside a reader).
+  /// Clears the model, resets the meshing options generate() and generate_volume() use to Gmsh's
+  /// defaults (options outlive the model: a planar run's recombination would recombine the next
+  /// file too) and reads `path` into it, so that a .geo's own options hold.
+  /// @throws InputError with Gmsh's message (and restarts Gmsh, which ignores later files after
+  /// an error inside a reader).
   void open(const std::string& path);
   /// Meshes the geometry read by open() (a .geo file) into first-order cells: Gmsh's
   /// frontal-Delaunay triangulation (Mesh.Algorithm = 6, Mesh.ElementOrder = 1: curved sides are
@@ -46,8 +49,12 @@ class Session {
   /// 1), else kept as triangles (both options 0); elements at most `max_size` (Mesh.MeshSizeMax)
   /// before any split when given. @throws InputError with Gmsh's message.
   void generate(const std::string& path, std::optional<double> max_size, bool quadrilaterals);
-  /// The model's bounding box in the plane: x_min, y_min, x_max, y_max.
-  std::array<double, 4> bounding_box() const;
+  /// Meshes the geometry read by open() in 3-D with the .geo's own options (its Transfinite,
+  /// Recombine and Mesh.SubdivisionAlgorithm settings decide the cells), elements at most
+  /// `max_size` (Mesh.MeshSizeMax) when given. @throws InputError with Gmsh's message.
+  void generate_volume(const std::string& path, std::optional<double> max_size);
+  /// The model's bounding box: x_min, y_min, z_min, x_max, y_max, z_max.
+  std::array<double, 6> bounding_box() const;
   int dimension() const;
   /// Elements of dimension `dim` on entity `tag` (-1: all).
   ElementBlocks elements(int dim, int tag = -1) const;

@@ -50,7 +50,7 @@ std::string unsupported_cell(const gmsh_api::Session& gmsh, const std::string& p
 // (at least the domain's): about 2.3 triangles per size², or 4.7 quadrilaterals (each triangle of
 // a twice coarser mesh split in three), as measured with Gmsh 4.8 on the tutorial's block.
 void check_geo_size(const gmsh_api::Session& gmsh, const GeoMeshing& geo) {
-  const auto [x0, y0, x1, y1] = gmsh.bounding_box();
+  const auto [x0, y0, z0, x1, y1, z1] = gmsh.bounding_box();
   const double per_size_squared = geo.cells == GeneratedCells::quadrilaterals ? 4.7 : 2.3;
   const double size = *geo.mesh_size, cells = per_size_squared * (x1 - x0) * (y1 - y0) / (size * size);
   if (cells > geo.max_cells)

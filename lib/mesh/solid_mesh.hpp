@@ -7,6 +7,7 @@
 #include <array>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace hpcontact::mesh {
@@ -71,6 +72,8 @@ class SolidMesh {
   const std::vector<BoundaryFace>& boundary_faces() const { return boundary_faces_; }
   /// Gives `label` to the boundary faces whose centre satisfies `where` (the others keep theirs).
   void label_boundary_faces(const std::function<bool(const SolidPoint& centre)>& where, const std::string& label);
+  /// Gives `label` to boundary face k (an entry of boundary_faces()).
+  void set_boundary_face_label(std::size_t k, std::string label) { boundary_faces_.at(k).label = std::move(label); }
   /// Whether the cell map is affine (a parallelepiped), so that its Jacobian is constant.
   bool is_affine(int c) const;
   /// x(ξ) = Σ_v x_v φ_v(ξ) with the trilinear vertex functions φ_v.

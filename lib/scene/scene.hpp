@@ -74,6 +74,7 @@ struct Scene {
   // [domain]: a rectangle with n_x × n_y cells, or a Gmsh file.
   std::string mesh_file;            ///< empty for a rectangle; else absolute or relative to the working folder
   std::optional<double> mesh_size;  ///< a .geo mesh_file: Gmsh's maximal element size
+  int mesh_dimension = 2;           ///< of mesh_file's model: 3 for hexahedra (a 3-D scene)
   /// Whether cells follow the mesh file's curves, or only its vertices (the polygonal domain).
   enum class Geometry { curved, polygonal } geometry = Geometry::curved;
   /// The cells of the rectangle, or of a .geo mesh_file (a .msh file holds its own).
@@ -100,7 +101,7 @@ struct Scene {
   /// Elastic scenes: edges where u_x = 0 (u_y = 0) alone (rollers), by predicate or Gmsh group.
   std::string fixed_x_predicate, fixed_y_predicate;
   std::string fixed_z_predicate;  ///< a box: faces where u_z = 0 alone
-  std::vector<std::string> fixed_x_groups, fixed_y_groups;
+  std::vector<std::string> fixed_x_groups, fixed_y_groups, fixed_z_groups;
   /// Dirichlet data, expressions in x, y: u_D on Γ_D (scalar model), u_D,x and u_D,y wherever that
   /// component is fixed (Γ_D and rollers; elastic scenes). Empty: 0.
   std::string dirichlet_value, dirichlet_x, dirichlet_y;
@@ -156,8 +157,9 @@ struct Scene {
   /// Whether the run adapts T_h and T_{C,H} (adapt.target given).
   bool is_adaptive() const { return adapt.target > 0.0; }
 
-  /// 3 for a box (domain.n_z given), else 2: the variables of the scene's expressions.
-  int dimension() const { return n_z > 0 || !box_nodes[2].empty() ? 3 : 2; }
+  /// 3 for a box (domain.n_z or domain.z_nodes given) or a 3-D Gmsh mesh, else 2: the variables
+  /// of the scene's expressions.
+  int dimension() const { return n_z > 0 || !box_nodes[2].empty() || mesh_dimension == 3 ? 3 : 2; }
   /// Whether the obstacle is given as geometry ([obstacle]) rather than by g.
   bool has_rigid_obstacle() const { return given.contains("obstacle.type"); }
   /// Whether the contact problems have their obstacle: g or [obstacle].

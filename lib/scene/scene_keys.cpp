@@ -14,6 +14,7 @@
 
 #include "core/error.hpp"
 #include "core/expression.hpp"
+#include "mesh/gmsh_solid_reader.hpp"
 #include "scene/adapt_keys.hpp"
 #include "scene/box_keys.hpp"
 #include "scene/key_builders.hpp"
@@ -74,10 +75,22 @@ void read_mesh_size(const TomlTable& table, const std::string& file, std::option
 void add_domain_keys(std::vector<SceneKey>& keys) {
   auto add = [&](SceneKey key) { keys.push_back(std::move(key)); };
   add({"domain", "mesh", "string", "",
-       "a Gmsh mesh file of triangles and/or quadrilaterals (MSH 2.2 or 4, ASCII or binary) or a Gmsh geometry (.geo)",
+       "a Gmsh mesh file (MSH 2.2 or 4, ASCII or binary) of triangles and/or quadrilaterals, or of hexahedra (a "
+       "3-D scene), or a Gmsh geometry (.geo; one with a Volume is meshed in 3-D)",
        "Gmsh mesh, or geometry meshed on the fly (see `cells`), relative to the scene file; absent: the "
        "rectangle below",
-       "", [](const TomlTable& table, Scene& scene) { read_mesh_path(table, scene, scene.mesh_file); }});
+       "", [](const TomlTable& table, Scene& scene) {
+         read_mesh_path(table, scene, scene.mesh_file);
+         // (a file Gmsh cannot read stays planar here: reading it as a mesh reports why; only regular
+         // files are opened, as Gmsh would read a device such as /dev/zero forever)
+         std::error_code error;
+         if (!std::filesystem::is_regular_file(scene.mesh_file, error)) return;
+         try {
+           scene.mesh_dimension = mesh::gmsh_file_dimension(scene.mesh_file) == 3 ? 3 : 2;
+         } catch (const InputError&) {
+           scene.mesh_dimension = 2;
+         }
+       }});
   add({"domain", "mesh_size", "number", "the .geo's sizes", "(0, 1e6]",
        "a .geo `mesh`: Gmsh's maximal element size (Mesh.MeshSizeMax), before the split into quadrilaterals "
        "(which halves it) when cells = \"quadrilaterals\"",
@@ -154,6 +167,7 @@ void add_boundary_and_contact_mesh_keys(std::vector<SceneKey>& keys) {
                      "3-D elastic scenes: faces (centre predicate) where u_z = 0 alone, a roller"));
   add(names_key("boundary", "fixed_x_groups", &Scene::fixed_x_groups, "`fixed_x` as Gmsh physical groups"));
   add(names_key("boundary", "fixed_y_groups", &Scene::fixed_y_groups, "`fixed_y` as Gmsh physical groups"));
+  add(names_key("boundary", "fixed_z_groups", &Scene::fixed_z_groups, "3-D: `fixed_z` as Gmsh physical surfaces"));
   add(expression_key("boundary", "u_D", "", &Scene::dirichlet_value,
                      "scalar model: Dirichlet data, u = u_D on Γ_D (empty: 0)"));
   add(expression_key("boundary", "u_D_x", "", &Scene::dirichlet_x,

@@ -90,9 +90,10 @@ mesh::Mesh read_mesh_file(const Scene& scene) {
 mesh::Mesh build_scene_mesh(const Scene& scene) {
   // Planar meshes only: every command that reaches here works on planar discretizations.
   if (scene.dimension() == 3) {
-    const std::string key = scene.n_z > 0 ? "domain.n_z" : "domain.z_nodes";
+    const std::string key = !scene.is_rectangle() ? "domain.mesh" : scene.n_z > 0 ? "domain.n_z" : "domain.z_nodes";
     throw_bad_input(scene.where(key), key, scene.n_z > 0 ? std::to_string(scene.n_z) : "(given)",
-                    "a planar scene here: 3-D scenes (a box) run with `hpcontact solve` and the effects signorini, "
+                    "a planar scene here: 3-D scenes (a box or a Gmsh mesh of hexahedra) run with `hpcontact solve` "
+                    "and the effects signorini, "
                     "friction, friction_s, frictionless; infsup, sweep, advise and the studies take planar scenes");
   }
   mesh::Mesh mesh =

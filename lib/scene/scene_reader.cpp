@@ -81,12 +81,14 @@ std::map<std::string, std::string> apply_overrides(toml::table& root, const std:
 
 void check_domain(const Scene& scene) {
   if (scene.dimension() == 2)
-    for (const char* key : {"domain.grading_z", "boundary.fixed_z", "data.f_z", "solve.trace_operator",
-                            "infsup.operator", "contact_mesh.mesh", "contact_mesh.mesh_size"})
+    for (const char* key : {"domain.grading_z", "boundary.fixed_z", "boundary.fixed_z_groups", "data.f_z",
+                            "solve.trace_operator", "infsup.operator", "contact_mesh.mesh", "contact_mesh.mesh_size"})
       if (scene.given.contains(key))
-        throw_bad_input(scene.where(key), key, "(given)", "only in a 3-D scene (a box: domain.n_z given)");
+        throw_bad_input(scene.where(key), key, "(given)",
+                        "only in a 3-D scene (a box: domain.n_z given, or a Gmsh mesh of hexahedra)");
   if (!scene.is_rectangle()) {
-    for (const char* key : {"x_min", "x_max", "y_min", "y_max", "n_x", "n_y", "n_z", "grading_x", "grading_y"})
+    for (const char* key : {"x_min", "x_max", "y_min", "y_max", "z_min", "z_max", "n_x", "n_y", "n_z", "grading_x",
+                            "grading_y", "grading_z", "x_nodes", "y_nodes", "z_nodes"})
       if (scene.given.contains(fmt::format("domain.{}", key)))
         throw_bad_input(scene.where(fmt::format("domain.{}", key)), fmt::format("domain.{}", key), "(given)",
                         "applies to a rectangle, not to the Gmsh mesh of domain.mesh");
@@ -206,6 +208,7 @@ const std::vector<std::string>& elastic_only_keys() {
                                              "boundary.fixed_z",
                                              "boundary.fixed_x_groups",
                                              "boundary.fixed_y_groups",
+                                             "boundary.fixed_z_groups",
                                              "boundary.u_D_x",
                                              "boundary.u_D_y",
                                              "exact.u_x",
