@@ -1,6 +1,7 @@
 // 3-D solves under mpirun: K factorized over two ranks (each eliminates its half of the box) by
 // each distributed solver, on the dense and the products path of S, give the serial run's energy
-// and boundary samples; α with A_G factorized over the ranks gives the serial α.
+// and boundary samples (Tresca's disc QP by products too); α with A_G factorized over the ranks gives
+// the serial α.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -68,6 +69,31 @@ TEST(SolidMpi, TwoRanksGiveTheSerialSolveWithEverySolverOnBothPaths) {
         EXPECT_FALSE(std::filesystem::exists(out / (std::string("solution_") + c.effect + ".pvtu"))) << what;
       }
     }
+}
+
+// Tresca's disc QP by products under mpirun: the first rank alone runs the projected gradient and
+// the other serves its products (contact/led_products.hpp), so both end with its λ: the serial
+// energy and samples.
+TEST(SolidMpi, TrescaByProductsOnTwoRanksGivesTheSerialSolve) {
+  const std::string keys =
+      " --set 'run.effects=[\"tresca\"]' --set 'data.f_x=\"0.05\"' --set 'data.s=\"0.1\"' "
+      "--set 'solve.trace_operator=\"products\"'";
+  const auto dir = scratch("solid_mpi_tresca_products");
+  const std::string scene = kStudies + "extruded_frictionless.toml";
+  const auto serial = run_command("env OPENBLAS_NUM_THREADS=1 " HPCONTACT_CLI " solve " + scene + keys + " --out " +
+                                  (dir / "serial").string());
+  ASSERT_EQ(serial.exit_code, 0) << serial.output;
+  const auto parallel =
+      run_command(kMpiEnvironment + "mpirun -n 2 --oversubscribe -x OPENBLAS_NUM_THREADS=1 " HPCONTACT_CLI " solve " +
+                  scene + keys + " --distributed-solver mumps --out " + (dir / "mumps").string());
+  ASSERT_EQ(parallel.exit_code, 0) << parallel.output;
+  const double energy = summary_at(dir / "serial").at("tresca").at("energy").get<double>();
+  EXPECT_NEAR(summary_at(dir / "mumps").at("tresca").at("energy").get<double>(), energy, 1e-9 * std::abs(energy));
+  for (const char* column : {"pressure", "traction_1"})
+    EXPECT_LT(
+        relative_difference(dir / "serial" / "boundary_tresca.csv", dir / "mumps" / "boundary_tresca.csv", column),
+        1e-7)
+        << column;
 }
 
 // The α `hpcontact infsup` prints (its first line, "alpha = …").
