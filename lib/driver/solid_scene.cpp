@@ -133,34 +133,44 @@ std::vector<char> boundary_part(const scene::Scene& scene, const mesh::SolidMesh
     }
   }
   if (groups.empty()) return in;
-  int found = 0;
-  std::set<std::string> labels;
+  std::set<std::string> labels, found;
   for (std::size_t k = 0; k < faces.size(); ++k) {
     const bool listed = std::find(groups.begin(), groups.end(), faces[k].label) != groups.end();
-    found += listed;
+    if (listed) found.insert(faces[k].label);
     in[k] = in[k] || listed;
     if (!faces[k].label.empty()) labels.insert(faces[k].label);
   }
-  if (found == 0)
-    throw_bad_input(scene.where(key + "_groups"), key + "_groups", fmt::format("{}", fmt::join(groups, ", ")),
-                    labels.empty() ? std::string("physical surfaces of the mesh, which has none: name them in the .geo "
-                                                 "(Physical Surface(\"contact\") = {...};)")
-                                   : fmt::format("physical surfaces of the mesh: {}", fmt::join(labels, ", ")));
+  // Each name must label a face: a misspelt one beside a right one would drop its faces unseen.
+  for (const std::string& group : groups)
+    if (!found.contains(group))
+      throw_bad_input(scene.where(key + "_groups"), key + "_groups", "\"" + group + "\"",
+                      labels.empty()
+                          ? std::string("physical surfaces of the mesh, which has none: name them in the .geo "
+                                        "(Physical Surface(\"contact\") = {...};)")
+                          : fmt::format("physical surfaces of the mesh: {}", fmt::join(labels, ", ")));
   return in;
 }
 
-/// Labels Γ_C "contact" and Γ_D "dirichlet" by the scene's predicates and groups (Γ_D wins where
-/// both hold, as in planar scenes); other faces keep their labels, except that a physical surface
-/// named "contact" or "dirichlet" is a part only when the scene selects it.
+/// Labels Γ_C "contact" and Γ_D "dirichlet" by the scene's predicates and groups; other faces
+/// keep their labels, except that a physical surface named "contact" or "dirichlet" is a part only
+/// when the scene selects it. @throws InputError if Γ_C and Γ_D share a face (as planar scenes:
+/// Γ_D would silently take part of Γ_C).
 void label_contact_and_dirichlet(const scene::Scene& scene, mesh::SolidMesh& mesh) {
   const std::vector<char> contact =
       boundary_part(scene, mesh, scene.contact_predicate, scene.contact_groups, "boundary.contact");
   const std::vector<char> dirichlet =
       boundary_part(scene, mesh, scene.dirichlet_predicate, scene.dirichlet_groups, "boundary.dirichlet");
   for (std::size_t k = 0; k < contact.size(); ++k) {
-    const std::string& label = mesh.boundary_faces()[k].label;
-    const bool reserved = label == "contact" || label == "dirichlet";
-    mesh.set_boundary_face_label(k, dirichlet[k] ? "dirichlet" : contact[k] ? "contact" : reserved ? "" : label);
+    const auto& face = mesh.boundary_faces()[k];
+    if (contact[k] && dirichlet[k]) {
+      const mesh::SolidPoint x = mesh.face_centre(mesh.cell_face(face.cell, face.local_face));
+      throw InputError(
+          fmt::format("{}: Γ_C and Γ_D overlap at the face centred at ({}, {}, {}); boundary.dirichlet "
+                      "(and dirichlet_groups) must exclude Γ_C",
+                      scene.file, x(0), x(1), x(2)));
+    }
+    const bool reserved = face.label == "contact" || face.label == "dirichlet";
+    mesh.set_boundary_face_label(k, dirichlet[k] ? "dirichlet" : contact[k] ? "contact" : reserved ? "" : face.label);
   }
 }
 

@@ -138,14 +138,9 @@ Session::~Session() = default;
 void Session::open(const std::string& path) {
   const Library& l = library();
   int ierr = 0;
-  l.clear(&ierr);
-  for (const auto& [name, value] : {std::pair{"Mesh.RecombineAll", 0.0},
-                                    {"Mesh.Recombine3DAll", 0.0},
-                                    {"Mesh.Algorithm", 6.0},
-                                    {"Mesh.SubdivisionAlgorithm", 0.0},
-                                    {"Mesh.ElementOrder", 1.0},
-                                    {"Mesh.MeshSizeMax", 1e22}})
-    l.set_number(name, value, &ierr);
+  // Gmsh started afresh: every option at its default, whatever an earlier file set.
+  l.finalize(&ierr);
+  l.start();
   l.open(path.c_str(), &ierr);
   if (ierr != 0) fail(path, "read the file");
 }

@@ -36,9 +36,9 @@ class Session {
   Session(const Session&) = delete;
   Session& operator=(const Session&) = delete;
 
-  /// Clears the model, resets the meshing options generate() and generate_volume() use to Gmsh's
-  /// defaults (options outlive the model: a planar run's recombination would recombine the next
-  /// file too) and reads `path` into it, so that a .geo's own options hold.
+  /// Restarts Gmsh, so that every option is at its default (options outlive the model: one file's
+  /// Mesh.MeshSizeFactor or recombination would mesh the next file too), and reads `path` into
+  /// its model, so that a .geo's own options hold.
   /// @throws InputError with Gmsh's message (and restarts Gmsh, which ignores later files after
   /// an error inside a reader).
   void open(const std::string& path);

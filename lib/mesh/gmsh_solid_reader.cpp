@@ -6,6 +6,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -58,6 +59,30 @@ std::string centre_text(const Quad& quad, const VertexAt& vertex_at) {
   SolidPoint centre = SolidPoint::Zero();
   for (int v : quad) centre += vertex_at(v) / 4.0;
   return fmt::format("({:.6g}, {:.6g}, {:.6g})", centre.x(), centre.y(), centre.z());
+}
+
+// Two boundary faces at one place: volumes meshed without shared nodes, whose common face would be
+// two free faces, a crack that no error would show. Centres are compared on a grid of 1e-9 of the
+// mesh's size.
+void check_no_coincident_boundary_faces(const SolidMesh& mesh, const std::string& path) {
+  SolidPoint low = SolidPoint::Constant(INFINITY), high = -low;
+  for (int v = 0; v < mesh.n_vertices(); ++v) {
+    low = low.cwiseMin(mesh.vertex(v));
+    high = high.cwiseMax(mesh.vertex(v));
+  }
+  const double grid = 1e-9 * std::max((high - low).maxCoeff(), 1e-300);
+  std::map<std::array<long long, 3>, int> seen;
+  for (const auto& face : mesh.boundary_faces()) {
+    const SolidPoint x = mesh.face_centre(mesh.cell_face(face.cell, face.local_face));
+    const std::array<long long, 3> key{std::llround((x.x() - low.x()) / grid), std::llround((x.y() - low.y()) / grid),
+                                       std::llround((x.z() - low.z()) / grid)};
+    if (!seen.try_emplace(key, 1).second)
+      throw InputError(
+          fmt::format("{}: two boundary faces lie at ({:.6g}, {:.6g}, {:.6g}): volumes meshed without "
+                      "shared nodes, whose common face would be a crack; join them in the .geo "
+                      "(BooleanFragments, or Coherence)",
+                      path, x.x(), x.y(), x.z()));
+  }
 }
 
 }  // namespace
@@ -127,7 +152,10 @@ SolidMesh read_gmsh_solid_mesh(const std::string& path, const GeoMeshing& geo) {
       cells.push_back(cell);
     }
   }
-  if (cells.empty()) throw InputError(path + ": holds no hexahedra");
+  if (cells.empty())
+    throw InputError(path +
+                     ": holds no hexahedra (a mesh file saved with physical groups holds only their "
+                     "elements: add a Physical Volume, or save with Mesh.SaveAll = 1)");
 
   std::map<Quad, std::string> labels;  // by sorted corners
   for (const auto& [dim, group] : gmsh.physical_groups(2)) {
@@ -168,6 +196,7 @@ SolidMesh read_gmsh_solid_mesh(const std::string& path, const GeoMeshing& geo) {
   }
   std::vector<std::pair<Quad, std::string>> listed(labels.begin(), labels.end());
   SolidMesh mesh(std::move(vertices), std::move(cells), path, listed);
+  check_no_coincident_boundary_faces(mesh, path);
   // Every labelled quadrilateral must be a boundary face: one inside the body would be ignored.
   std::map<Quad, int> boundary;
   for (const auto& face : mesh.boundary_faces()) {

@@ -81,14 +81,17 @@ void add_domain_keys(std::vector<SceneKey>& keys) {
        "rectangle below",
        "", [](const TomlTable& table, Scene& scene) {
          read_mesh_path(table, scene, scene.mesh_file);
-         // (a file Gmsh cannot read stays planar here: reading it as a mesh reports why; only regular
-         // files are opened, as Gmsh would read a device such as /dev/zero forever)
+         if (scene.mesh_file.empty()) return;
+         // Its dimension decides what the scene takes (x, y or x, y, z; planar or 3-D keys). Only
+         // regular files are opened: Gmsh would read a device such as /dev/zero forever.
          std::error_code error;
-         if (!std::filesystem::is_regular_file(scene.mesh_file, error)) return;
+         if (!std::filesystem::is_regular_file(scene.mesh_file, error))
+           throw_bad_input(table.origin("mesh"), table.qualified("mesh"), "\"" + table.string("mesh") + "\"",
+                           "a regular file (a Gmsh mesh or .geo)");
          try {
            scene.mesh_dimension = mesh::gmsh_file_dimension(scene.mesh_file) == 3 ? 3 : 2;
-         } catch (const InputError&) {
-           scene.mesh_dimension = 2;
+         } catch (const InputError& failure) {
+           throw InputError(table.origin("mesh") + ": key '" + table.qualified("mesh") + "': " + failure.what());
          }
        }});
   add({"domain", "mesh_size", "number", "the .geo's sizes", "(0, 1e6]",

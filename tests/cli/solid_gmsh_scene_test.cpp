@@ -119,6 +119,24 @@ TEST(SolidGmshScene, MeshesAndKeysThatDoNotFitAreRefusedByName) {
       " --out " + (dir / "out").string());
   expect_refused(missing_group, "boundary.contact_groups");
   expect_refused(missing_group, "physical surfaces of the mesh: bottom, top");
+  // Each group name must exist, even beside one that does.
+  expect_refused(run("solve " +
+                     write(dir / "misspelt.toml", cube_scene(block, "contact_groups = [\"bottom\", \"botom\"]\n",
+                                                             "dirichlet_groups = [\"top\"]\n")) +
+                     " --out " + (dir / "out").string()),
+                 "key 'boundary.contact_groups' = \"botom\"");
+  // Γ_D taking part of Γ_C is refused, as in planar scenes.
+  expect_refused(run("solve " +
+                     write(dir / "overlap.toml", cube_scene(block, "contact_groups = [\"bottom\"]\n",
+                                                            "dirichlet = \"z < -0.9 && x > 0\"\n")) +
+                     " --out " + (dir / "out").string()),
+                 "Γ_C and Γ_D overlap");
+  // A file Gmsh cannot read is refused when the scene is read, with Gmsh's message.
+  const std::string broken = write(dir / "broken.geo", "Point(1) = {0, 0, 0;\n");
+  expect_refused(
+      run("solve " + write(dir / "broken.toml", cube_scene("mesh = \"" + broken + "\"\n", "contact = \"1\"\n", "")) +
+          " --out " + (dir / "out").string()),
+      "key 'domain.mesh': ");
   expect_refused(run("solve " +
                      write(dir / "box_key.toml", cube_scene(block + "n_z = 4\n", "contact_groups = [\"bottom\"]\n",
                                                             "dirichlet_groups = [\"top\"]\n")) +

@@ -1,6 +1,6 @@
 // Gmsh meshes of hexahedra: an extruded block equal to the box mesh, tetrahedra subdivided into
 // valid hexahedra that fill the cube, physical surfaces as face labels, and the errors for files
-// that hold no hexahedra, high-order ones, or a mesh size that would not fit.
+// that hold no hexahedra, high-order ones, volumes meshed apart, or a mesh size that would not fit.
 #include "mesh/gmsh_solid_reader.hpp"
 
 #include <gmock/gmock.h>
@@ -114,6 +114,13 @@ TEST(GmshSolidReader, FilesWithoutHexahedraAreRefusedWithWhatToChange) {
               ::testing::AllOf(HasSubstr("of order 2"), HasSubstr("Mesh.ElementOrder = 1")));
   EXPECT_THAT(message_of(std::string(HPCONTACT_TEST_DATA) + "/extruded_contact.geo"), HasSubstr("holds no 3-D mesh"));
   EXPECT_THAT(message_of("/nonexistent/block.geo"), HasSubstr("cannot open"));
+  // Two boxes meshed apart: their common face would be a crack.
+  const std::string apart =
+      write_temp("two_boxes.geo",
+                 "SetFactory(\"OpenCASCADE\");\nBox(1) = {0, 0, 0, 1, 1, 1};\nBox(2) = {1, 0, 0, 1, 1, 1};\n"
+                 "Mesh.SubdivisionAlgorithm = 2;\nMeshSize{ PointsOf{ Volume{1, 2}; } } = 0.6;\n");
+  EXPECT_THAT(message_of(apart),
+              ::testing::AllOf(HasSubstr("two boundary faces lie at"), HasSubstr("BooleanFragments")));
   GeoMeshing tiny;
   tiny.mesh_size = 1e-3;
   tiny.max_cells = 1e6;
