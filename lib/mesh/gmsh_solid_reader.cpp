@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <unordered_map>
 
 #include "core/error.hpp"
@@ -85,35 +86,25 @@ void check_no_coincident_boundary_faces(const SolidMesh& mesh, const std::string
   }
 }
 
-}  // namespace
+/// The hexahedra read from Gmsh's model.
+struct HexahedralCells {
+  std::vector<SolidPoint> vertices;
+  std::vector<std::array<int, 8>> cells;
+  std::unordered_map<Tag, int> index_of;  ///< node tag → vertex
+};
 
-int gmsh_file_dimension(const std::string& path) {
-  gmsh_api::Session gmsh;
-  gmsh.open(path);
-  return gmsh.dimension();
-}
-
-SolidMesh read_gmsh_solid_mesh(const std::string& path, const GeoMeshing& geo) {
-  errno = 0;
-  if (!std::ifstream(path)) throw InputError(describe_io_failure("cannot open the Gmsh mesh file", path));
-  const bool geometry = std::filesystem::path(path).extension() == ".geo";
-  if (geo.mesh_size && !geometry)
-    throw InputError(path + ": a mesh size applies to Gmsh geometry files (.geo) only, not to a mesh file");
-  gmsh_api::Session gmsh;
-  gmsh.open(path);
-  if (geometry && geo.mesh_size) check_geo_size(gmsh, geo);
-  if (geometry) gmsh.generate_volume(path, geo.mesh_size);
-  if (gmsh.dimension() < 3)
-    throw InputError(path + ": holds no 3-D mesh (no hexahedra; a .geo needs a Volume, a mesh file 3-D elements)");
-
+// The hexahedra of the model: their corners (in Gmsh's node order) as vertices, the cells in tensor
+// order, positively oriented.
+HexahedralCells model_hexahedra(const gmsh_api::Session& gmsh, const std::string& path) {
   std::vector<Tag> tags;
   std::vector<double> coordinates;
   gmsh.nodes(tags, coordinates);
   std::unordered_map<Tag, std::size_t> position;  // node tag → index into tags
   for (std::size_t k = 0; k < tags.size(); ++k) position[tags[k]] = k;
   // Only the hexahedra's corners become vertices.
-  std::unordered_map<Tag, int> index_of;
-  std::vector<SolidPoint> vertices;
+  HexahedralCells out;
+  std::unordered_map<Tag, int>& index_of = out.index_of;
+  std::vector<SolidPoint>& vertices = out.vertices;
   const auto vertex = [&](Tag tag) {
     const auto [it, added] = index_of.try_emplace(tag, static_cast<int>(vertices.size()));
     if (added) {
@@ -126,7 +117,7 @@ SolidMesh read_gmsh_solid_mesh(const std::string& path, const GeoMeshing& geo) {
     return it->second;
   };
 
-  std::vector<std::array<int, 8>> cells;
+  std::vector<std::array<int, 8>>& cells = out.cells;
   const auto blocks = gmsh.elements(3);
   for (std::size_t t = 0; t < blocks.types.size(); ++t) {
     const auto [name, order] = gmsh.element_type(blocks.types[t]);
@@ -157,7 +148,15 @@ SolidMesh read_gmsh_solid_mesh(const std::string& path, const GeoMeshing& geo) {
                      ": holds no hexahedra (a mesh file saved with physical groups holds only their "
                      "elements: add a Physical Volume, or save with Mesh.SaveAll = 1)");
 
-  std::map<Quad, std::string> labels;  // by sorted corners
+  return out;
+}
+
+// The labels of the physical surfaces' quadrilaterals, by their sorted corners.
+std::map<Quad, std::string> physical_surface_labels(const gmsh_api::Session& gmsh, const std::string& path,
+                                                    const HexahedralCells& hexahedra) {
+  const auto& index_of = hexahedra.index_of;
+  const auto& vertices = hexahedra.vertices;
+  std::map<Quad, std::string> labels;
   for (const auto& [dim, group] : gmsh.physical_groups(2)) {
     std::string label = gmsh.physical_name(dim, group);
     if (label.empty()) label = std::to_string(group);
@@ -194,15 +193,17 @@ SolidMesh read_gmsh_solid_mesh(const std::string& path, const GeoMeshing& geo) {
       }
     }
   }
-  std::vector<std::pair<Quad, std::string>> listed(labels.begin(), labels.end());
-  SolidMesh mesh(std::move(vertices), std::move(cells), path, listed);
-  check_no_coincident_boundary_faces(mesh, path);
-  // Every labelled quadrilateral must be a boundary face: one inside the body would be ignored.
-  std::map<Quad, int> boundary;
+  return labels;
+}
+
+// Every labelled quadrilateral must be a boundary face: one inside the body would be ignored.
+void check_labels_on_boundary(const SolidMesh& mesh, const std::map<Quad, std::string>& labels,
+                              const std::string& path) {
+  std::set<Quad> boundary;
   for (const auto& face : mesh.boundary_faces()) {
     Quad quad = mesh.face(mesh.cell_face(face.cell, face.local_face));
     std::sort(quad.begin(), quad.end());
-    boundary[quad] = 1;
+    boundary.insert(quad);
   }
   for (const auto& [quad, label] : labels)
     if (!boundary.contains(quad))
@@ -210,6 +211,35 @@ SolidMesh read_gmsh_solid_mesh(const std::string& path, const GeoMeshing& geo) {
           fmt::format("{}: physical surface '{}' holds the face centred at {}, which is no boundary "
                       "face of the hexahedra",
                       path, label, centre_text(quad, [&](int v) { return mesh.vertex(v); })));
+}
+
+}  // namespace
+
+int gmsh_file_dimension(const std::string& path) {
+  gmsh_api::Session gmsh;
+  gmsh.open(path);
+  return gmsh.dimension();
+}
+
+SolidMesh read_gmsh_solid_mesh(const std::string& path, const GeoMeshing& geo) {
+  errno = 0;
+  if (!std::ifstream(path)) throw InputError(describe_io_failure("cannot open the Gmsh mesh file", path));
+  const bool geometry = std::filesystem::path(path).extension() == ".geo";
+  if (geo.mesh_size && !geometry)
+    throw InputError(path + ": a mesh size applies to Gmsh geometry files (.geo) only, not to a mesh file");
+  gmsh_api::Session gmsh;
+  gmsh.open(path);
+  if (geometry && geo.mesh_size) check_geo_size(gmsh, geo);
+  if (geometry) gmsh.generate_volume(path, geo.mesh_size);
+  if (gmsh.dimension() < 3)
+    throw InputError(path + ": holds no 3-D mesh (no hexahedra; a .geo needs a Volume, a mesh file 3-D elements)");
+
+  HexahedralCells hexahedra = model_hexahedra(gmsh, path);
+  const std::map<Quad, std::string> labels = physical_surface_labels(gmsh, path, hexahedra);
+  SolidMesh mesh(std::move(hexahedra.vertices), std::move(hexahedra.cells), path,
+                 std::vector<std::pair<Quad, std::string>>(labels.begin(), labels.end()));
+  check_no_coincident_boundary_faces(mesh, path);
+  check_labels_on_boundary(mesh, labels, path);
   return mesh;
 }
 
