@@ -1,4 +1,4 @@
-// Element matrices, unknowns and congruence of the scalar cell system on hexahedra.
+// Element matrices, unknowns and congruence of the scalar cell system on solid meshes.
 #include "assembly/solid_cell_system.hpp"
 
 #include <algorithm>
@@ -28,9 +28,9 @@ std::vector<char> SolidScalarCellSystem::boundary_unknowns(int cell) const {
   const mesh::SolidMesh& mesh = space_->mesh();
   const auto shapes = space_->cell_shapes(cell);
   std::vector<char> on(shapes.size(), 0);
-  for (int f = 0; f < 6; ++f)
+  for (int f = 0; f < mesh.n_cell_faces(); ++f)
     if (mesh.is_boundary_face(mesh.cell_face(cell, f)))
-      for (std::size_t s = 0; s < shapes.size(); ++s) on[s] = on[s] || space::shape_on_face(shapes[s], f);
+      for (std::size_t s = 0; s < shapes.size(); ++s) on[s] = on[s] || space::shape_on_face(mesh, shapes[s], f);
   return on;
 }
 
@@ -70,8 +70,8 @@ std::optional<CongruenceKey> SolidScalarCellSystem::congruence_key(int cell) con
   const Eigen::Matrix3d jacobian = mesh.jacobian(cell, Eigen::Vector3d::Zero());
   const double largest = jacobian.cwiseAbs().maxCoeff(), unit = 1e-12 * largest;
   CongruenceKey key{space_->cell_degree(cell)};
-  for (int e = 0; e < 12; ++e) key.push_back(space_->edge_degree(mesh.cell_edge(cell, e)));
-  for (int f = 0; f < 6; ++f) key.push_back(space_->face_degree(mesh.cell_face(cell, f)));
+  for (int e = 0; e < mesh.n_cell_edges(); ++e) key.push_back(space_->edge_degree(mesh.cell_edge(cell, e)));
+  for (int f = 0; f < mesh.n_cell_faces(); ++f) key.push_back(space_->face_degree(mesh.cell_face(cell, f)));
   for (int k = 0; k < 9; ++k) key.push_back(std::llround(jacobian(k % 3, k / 3) / unit));
   key.push_back(std::llround(1e11 * std::log(largest)));
   return key;

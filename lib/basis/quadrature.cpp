@@ -1,5 +1,5 @@
-// Gauss–Legendre rules from GSL's fixed-order tables and the collapsed triangle rules built from
-// them, cached per size.
+// Gauss–Legendre rules from GSL's fixed-order tables and the collapsed triangle and tetrahedron
+// rules built from them, cached per size.
 #include "basis/quadrature.hpp"
 
 #include <gsl/gsl_integration.h>
@@ -44,6 +44,27 @@ const QuadratureRule2D& collapsed_triangle_rule(int n) {
       rule.eta.push_back(v);
       rule.weights.push_back(line.weights[a] * line.weights[b] * 0.5 * (1.0 - v));
     }
+  return rule;
+}
+
+const QuadratureRule3D& collapsed_tetrahedron_rule(int n) {
+  const QuadratureRule1D& line = gauss_legendre(n);
+  static std::map<int, QuadratureRule3D> cache;
+  static std::mutex mutex;
+  std::lock_guard lock(mutex);
+  auto [it, inserted] = cache.try_emplace(n);
+  if (!inserted) return it->second;
+  QuadratureRule3D& rule = it->second;
+  for (int c = 0; c < n; ++c)
+    for (int b = 0; b < n; ++b)
+      for (int a = 0; a < n; ++a) {
+        const double u = line.points[a], v = line.points[b], w = line.points[c];
+        rule.xi.push_back(0.25 * (1.0 + u) * (1.0 - v) * (1.0 - w) - 1.0);
+        rule.eta.push_back(0.5 * (1.0 + v) * (1.0 - w) - 1.0);
+        rule.zeta.push_back(w);
+        rule.weights.push_back(line.weights[a] * line.weights[b] * line.weights[c] * (1.0 - v) * (1.0 - w) * (1.0 - w) /
+                               8.0);
+      }
   return rule;
 }
 

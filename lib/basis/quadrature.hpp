@@ -1,5 +1,5 @@
-// Gauss–Legendre quadrature on [-1,1] (GSL), and the collapsed (Duffy) rule on the reference
-// triangle (-1,-1), (1,-1), (-1,1) built from it, also mapped onto any plane triangle.
+// Gauss–Legendre quadrature on [-1,1] (GSL), and the collapsed (Duffy) rules on the reference
+// triangle (-1,-1), (1,-1), (-1,1) (also mapped onto any plane triangle) and tetrahedron built from it.
 #pragma once
 
 #include <Eigen/Core>
@@ -26,6 +26,17 @@ struct QuadratureRule2D {
 /// mapped by ξ = (1 + u)(1 − v)/2 − 1, η = v, weights times (1 − v)/2. Exact for polynomials of
 /// total degree ≤ 2n − 2. Cached like gauss_legendre.
 const QuadratureRule2D& collapsed_triangle_rule(int n);
+
+/// Points (ξ_q, η_q, ζ_q) and weights of a rule on a 3-D reference cell.
+struct QuadratureRule3D {
+  std::vector<double> xi, eta, zeta, weights;
+};
+
+/// The n³-point collapsed rule on the reference tetrahedron (−1,−1,−1), (1,−1,−1), (−1,1,−1),
+/// (−1,−1,1): the tensor Gauss rule on the cube (u, v, w) mapped by ξ = (1 + u)(1 − v)(1 − w)/4 − 1,
+/// η = (1 + v)(1 − w)/2 − 1, ζ = w, weights times (1 − v)(1 − w)²/8. Exact for polynomials of total
+/// degree ≤ 2n − 3; weights sum to 4/3. Cached like gauss_legendre.
+const QuadratureRule3D& collapsed_tetrahedron_rule(int n);
 
 /// collapsed_triangle_rule(n) mapped affinely onto the plane triangle (a0, a1, a2) (either
 /// orientation): (point, weight) pairs whose weights sum to its area.

@@ -162,7 +162,7 @@ RunResult run_solid_scene(const scene::Scene& scene, const SceneRunOptions& opti
     if (options.progress) options.progress(line);
   };
   // 1. The box, its boundary parts, the spaces, Γ_C and T_{C,H}.
-  say(scene.is_rectangle() ? "meshing the box" : "reading the hexahedra of " + scene.mesh_file);
+  say(scene.is_rectangle() ? "meshing the box" : "reading the cells of " + scene.mesh_file);
   const auto d = discretize_solid_scene(scene);
   RunResult result;
   result.scene = scene.file;

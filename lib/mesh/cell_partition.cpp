@@ -78,8 +78,8 @@ std::vector<int> bisect_solid_cells(const SolidMesh& mesh, int parts, const std:
   std::vector<SolidPoint> centroids(mesh.n_cells());
   for (int c = 0; c < mesh.n_cells(); ++c) {
     SolidPoint sum = SolidPoint::Zero();
-    for (int v : mesh.cell(c)) sum += mesh.vertex(v);
-    centroids[c] = sum / 8.0;
+    for (int v : mesh.cell_vertices(c)) sum += mesh.vertex(v);
+    centroids[c] = sum / mesh.n_cell_vertices();
   }
   return bisect_centroids(centroids, parts, cell_weights);
 }

@@ -95,6 +95,9 @@ class BoxBins {
 FlatContactSurface::FlatContactSurface(const SolidMesh& mesh, const std::vector<std::string>& labels,
                                        const std::string& origin)
     : mesh_(&mesh) {
+  if (mesh.is_tetrahedral())
+    throw InputError(
+        fmt::format("{}: contact surfaces on meshes of tetrahedra are not built; Γ_C needs hexahedra", origin));
   for (const auto& face : mesh.boundary_faces())
     if (std::find(labels.begin(), labels.end(), face.label) != labels.end()) faces_.push_back(face);
   if (faces_.empty())

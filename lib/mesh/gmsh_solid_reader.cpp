@@ -1,4 +1,5 @@
-// Hexahedral meshes of Gmsh files: corners in tensor order, physical surfaces as face labels.
+// Hexahedral and tetrahedral meshes of Gmsh files: corners in SolidMesh's order, physical surfaces
+// as face labels.
 #include "mesh/gmsh_solid_reader.hpp"
 
 #include <fmt/format.h>
@@ -20,7 +21,13 @@ namespace hpcontact::mesh {
 namespace {
 
 using Tag = std::size_t;
-using Quad = std::array<int, 4>;
+using Quad = std::array<int, 4>;  ///< a face's vertices: four, or a triangle's three and −1
+
+/// The face's vertices ascending (the −1 of a triangle last), the key of labels.
+Quad face_key(Quad face) {
+  std::sort(face.begin(), face[3] < 0 ? face.begin() + 3 : face.end());
+  return face;
+}
 
 // Gmsh numbers a hexahedron's corners around its bottom face, then around its top one; SolidMesh
 // wants the tensor order v = a + 2b + 4c. kTensorFromGmsh[v] is the Gmsh corner at tensor vertex v.
@@ -58,7 +65,8 @@ double centre_orientation(const std::vector<SolidPoint>& vertices, const std::ar
 template <typename VertexAt>
 std::string centre_text(const Quad& quad, const VertexAt& vertex_at) {
   SolidPoint centre = SolidPoint::Zero();
-  for (int v : quad) centre += vertex_at(v) / 4.0;
+  const int corners = quad[3] < 0 ? 3 : 4;
+  for (int k = 0; k < corners; ++k) centre += vertex_at(quad[k]) / corners;
   return fmt::format("({:.6g}, {:.6g}, {:.6g})", centre.x(), centre.y(), centre.z());
 }
 
@@ -86,23 +94,25 @@ void check_no_coincident_boundary_faces(const SolidMesh& mesh, const std::string
   }
 }
 
-/// The hexahedra read from Gmsh's model.
-struct HexahedralCells {
+/// The cells read from Gmsh's model: hexahedra or tetrahedra.
+struct SolidCells {
   std::vector<SolidPoint> vertices;
-  std::vector<std::array<int, 8>> cells;
+  std::vector<std::array<int, 8>> hexahedra;
+  std::vector<std::array<int, 4>> tetrahedra;
   std::unordered_map<Tag, int> index_of;  ///< node tag → vertex
+  bool tetrahedral() const { return !tetrahedra.empty(); }
 };
 
-// The hexahedra of the model: their corners (in Gmsh's node order) as vertices, the cells in tensor
-// order, positively oriented.
-HexahedralCells model_hexahedra(const gmsh_api::Session& gmsh, const std::string& path) {
+// The cells of the model: their corners (in Gmsh's node order) as vertices, hexahedra in tensor
+// order and positively oriented, tetrahedra as Gmsh lists them (SolidMesh orders them).
+SolidCells model_cells(const gmsh_api::Session& gmsh, const std::string& path) {
   std::vector<Tag> tags;
   std::vector<double> coordinates;
   gmsh.nodes(tags, coordinates);
   std::unordered_map<Tag, std::size_t> position;  // node tag → index into tags
   for (std::size_t k = 0; k < tags.size(); ++k) position[tags[k]] = k;
-  // Only the hexahedra's corners become vertices.
-  HexahedralCells out;
+  // Only the cells' corners become vertices.
+  SolidCells out;
   std::unordered_map<Tag, int>& index_of = out.index_of;
   std::vector<SolidPoint>& vertices = out.vertices;
   const auto vertex = [&](Tag tag) {
@@ -110,52 +120,64 @@ HexahedralCells model_hexahedra(const gmsh_api::Session& gmsh, const std::string
     if (added) {
       const auto found = position.find(tag);
       if (found == position.end())
-        throw InputError(fmt::format("{}: a hexahedron names node {}, which has no coordinates", path, tag));
+        throw InputError(fmt::format("{}: a cell names node {}, which has no coordinates", path, tag));
       const std::size_t k = found->second;
       vertices.emplace_back(coordinates[3 * k], coordinates[3 * k + 1], coordinates[3 * k + 2]);
     }
     return it->second;
   };
 
-  std::vector<std::array<int, 8>>& cells = out.cells;
   const auto blocks = gmsh.elements(3);
   for (std::size_t t = 0; t < blocks.types.size(); ++t) {
     const auto [name, order] = gmsh.element_type(blocks.types[t]);
-    if (!name.starts_with("Hexahedron"))
-      throw InputError(fmt::format(
-          "{}: 3-D meshes take hexahedra only; found type {} ({}): in the .geo, Transfinite Volume with Recombine "
-          "Surface and Recombine Volume, or Mesh.SubdivisionAlgorithm = 2 (every tetrahedron split into four "
-          "hexahedra)",
-          path, blocks.types[t], name));
+    const bool hexahedron = name.starts_with("Hexahedron"), tetrahedron = name.starts_with("Tetrahedron");
+    if (!hexahedron && !tetrahedron)
+      throw InputError(
+          fmt::format("{}: 3-D meshes take hexahedra or tetrahedra; found type {} ({}): in the .geo, no Recombine for "
+                      "tetrahedra; Transfinite Volume with Recombine Surface and Recombine Volume, or "
+                      "Mesh.SubdivisionAlgorithm = 2 (every tetrahedron split into four hexahedra), for hexahedra",
+                      path, blocks.types[t], name));
     if (order > 1)
       throw InputError(
-          fmt::format("{}: the hexahedra are of order {} ({}); 3-D cells are trilinear maps of their "
-                      "corners, which would flatten curved faces: mesh with Mesh.ElementOrder = 1",
+          fmt::format("{}: the cells are of order {} ({}); 3-D cells are trilinear or affine maps of "
+                      "their corners, which would flatten curved faces: mesh with Mesh.ElementOrder = 1",
                       path, order, name));
     const auto& nodes = blocks.nodes[t];
     const std::size_t per_element = nodes.size() / blocks.tags[t].size();
     for (std::size_t e = 0; e < blocks.tags[t].size(); ++e) {
+      if (tetrahedron) {
+        std::array<int, 4> cell{};
+        for (int v = 0; v < 4; ++v) cell[v] = vertex(nodes[per_element * e + v]);
+        out.tetrahedra.push_back(cell);
+        continue;
+      }
       std::array<int, 8> cell{};
       for (int v = 0; v < 8; ++v) cell[v] = vertex(nodes[per_element * e + kTensorFromGmsh[v]]);
       // (mirrored along the first axis: a + 2b + 4c ↔ (1 − a) + 2b + 4c)
       if (centre_orientation(vertices, cell) < 0.0)
         for (int v = 0; v < 8; v += 2) std::swap(cell[v], cell[v + 1]);
-      cells.push_back(cell);
+      out.hexahedra.push_back(cell);
     }
   }
-  if (cells.empty())
+  if (out.hexahedra.empty() && out.tetrahedra.empty())
     throw InputError(path +
-                     ": holds no hexahedra (a mesh file saved with physical groups holds only their "
-                     "elements: add a Physical Volume, or save with Mesh.SaveAll = 1)");
-
+                     ": holds no hexahedra or tetrahedra (a mesh file saved with physical groups holds only "
+                     "their elements: add a Physical Volume, or save with Mesh.SaveAll = 1)");
+  if (!out.hexahedra.empty() && !out.tetrahedra.empty())
+    throw InputError(
+        fmt::format("{}: mixes {} hexahedra and {} tetrahedra; a conforming mesh of both needs "
+                    "pyramids between them, which are not built: mesh with one kind",
+                    path, out.hexahedra.size(), out.tetrahedra.size()));
   return out;
 }
 
-// The labels of the physical surfaces' quadrilaterals, by their sorted corners.
+// The labels of the physical surfaces' quadrilaterals or triangles, by their sorted corners.
 std::map<Quad, std::string> physical_surface_labels(const gmsh_api::Session& gmsh, const std::string& path,
-                                                    const HexahedralCells& hexahedra) {
-  const auto& index_of = hexahedra.index_of;
-  const auto& vertices = hexahedra.vertices;
+                                                    const SolidCells& cells) {
+  const auto& index_of = cells.index_of;
+  const auto& vertices = cells.vertices;
+  const char* face_name = cells.tetrahedral() ? "Triangle" : "Quadrilateral";
+  const int corners = cells.tetrahedral() ? 3 : 4;
   std::map<Quad, std::string> labels;
   for (const auto& [dim, group] : gmsh.physical_groups(2)) {
     std::string label = gmsh.physical_name(dim, group);
@@ -164,25 +186,25 @@ std::map<Quad, std::string> physical_surface_labels(const gmsh_api::Session& gms
       const auto faces = gmsh.elements(2, entity);
       for (std::size_t t = 0; t < faces.types.size(); ++t) {
         const auto [name, order] = gmsh.element_type(faces.types[t]);
-        if (!name.starts_with("Quadrilateral"))
-          throw InputError(
-              fmt::format("{}: physical surface '{}' holds type {} ({}); the boundary faces of "
-                          "hexahedra are quadrilaterals",
-                          path, label, faces.types[t], name));
+        if (!name.starts_with(face_name))
+          throw InputError(fmt::format("{}: physical surface '{}' holds type {} ({}); the boundary faces of {} are {}",
+                                       path, label, faces.types[t], name,
+                                       cells.tetrahedral() ? "tetrahedra" : "hexahedra",
+                                       cells.tetrahedral() ? "triangles" : "quadrilaterals"));
         const auto& nodes = faces.nodes[t];
         const std::size_t per_element = nodes.size() / faces.tags[t].size();
         for (std::size_t e = 0; e < faces.tags[t].size(); ++e) {
-          Quad quad{};
-          for (int v = 0; v < 4; ++v) {
+          Quad quad{-1, -1, -1, -1};
+          for (int v = 0; v < corners; ++v) {
             const auto found = index_of.find(nodes[per_element * e + v]);
             if (found == index_of.end())
               throw InputError(
-                  fmt::format("{}: physical surface '{}' holds a quadrilateral whose corner (node {}) "
-                              "is no corner of a hexahedron",
+                  fmt::format("{}: physical surface '{}' holds a face whose corner (node {}) is no "
+                              "corner of a cell",
                               path, label, nodes[per_element * e + v]));
             quad[v] = found->second;
           }
-          std::sort(quad.begin(), quad.end());
+          quad = face_key(quad);
           const auto [it, added] = labels.try_emplace(quad, label);
           if (!added && it->second != label)
             throw InputError(
@@ -201,15 +223,13 @@ void check_labels_on_boundary(const SolidMesh& mesh, const std::map<Quad, std::s
                               const std::string& path) {
   std::set<Quad> boundary;
   for (const auto& face : mesh.boundary_faces()) {
-    Quad quad = mesh.face(mesh.cell_face(face.cell, face.local_face));
-    std::sort(quad.begin(), quad.end());
-    boundary.insert(quad);
+    boundary.insert(face_key(mesh.face(mesh.cell_face(face.cell, face.local_face))));
   }
   for (const auto& [quad, label] : labels)
     if (!boundary.contains(quad))
       throw InputError(
           fmt::format("{}: physical surface '{}' holds the face centred at {}, which is no boundary "
-                      "face of the hexahedra",
+                      "face of the cells",
                       path, label, centre_text(quad, [&](int v) { return mesh.vertex(v); })));
 }
 
@@ -232,12 +252,14 @@ SolidMesh read_gmsh_solid_mesh(const std::string& path, const GeoMeshing& geo) {
   if (geometry && geo.mesh_size) check_geo_size(gmsh, geo);
   if (geometry) gmsh.generate_volume(path, geo.mesh_size);
   if (gmsh.dimension() < 3)
-    throw InputError(path + ": holds no 3-D mesh (no hexahedra; a .geo needs a Volume, a mesh file 3-D elements)");
+    throw InputError(path + ": holds no 3-D mesh (no cells; a .geo needs a Volume, a mesh file 3-D elements)");
 
-  HexahedralCells hexahedra = model_hexahedra(gmsh, path);
-  const std::map<Quad, std::string> labels = physical_surface_labels(gmsh, path, hexahedra);
-  SolidMesh mesh(std::move(hexahedra.vertices), std::move(hexahedra.cells), path,
-                 std::vector<std::pair<Quad, std::string>>(labels.begin(), labels.end()));
+  SolidCells cells = model_cells(gmsh, path);
+  const std::map<Quad, std::string> labels = physical_surface_labels(gmsh, path, cells);
+  std::vector<std::pair<Quad, std::string>> label_list(labels.begin(), labels.end());
+  SolidMesh mesh = cells.tetrahedral()
+                       ? SolidMesh::tetrahedra(std::move(cells.vertices), std::move(cells.tetrahedra), path, label_list)
+                       : SolidMesh(std::move(cells.vertices), std::move(cells.hexahedra), path, label_list);
   check_no_coincident_boundary_faces(mesh, path);
   check_labels_on_boundary(mesh, labels, path);
   return mesh;

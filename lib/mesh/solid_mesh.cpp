@@ -1,11 +1,13 @@
-// Topology (shared edges and faces, their orientation) and trilinear maps of hexahedral meshes;
-// box meshes.
+// Topology (shared edges and faces, their orientation) and cell maps of hexahedral and tetrahedral
+// meshes; box meshes.
 #include "mesh/solid_mesh.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <Eigen/LU>
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 #include "core/error.hpp"
@@ -27,10 +29,13 @@ double vertex_function(int v, const Eigen::Vector3d& xi, Eigen::Vector3d* gradie
   return factor[0] * factor[1] * factor[2];
 }
 
-std::array<int, 4> sorted(std::array<int, 4> quad) {
-  std::sort(quad.begin(), quad.end());
-  return quad;
+/// A face's vertices in ascending order: four, or three followed by −1.
+std::array<int, 4> sorted(std::array<int, 4> face) {
+  std::sort(face.begin(), face[3] < 0 ? face.begin() + 3 : face.end());
+  return face;
 }
+
+const char* cell_name(SolidCellKind kind) { return kind == SolidCellKind::tetrahedron ? "tetrahedron" : "hexahedron"; }
 
 /// The face's vertices (tensor order of the cell's face) in the face's own order: the lowest
 /// first, then the lower of its two neighbours, the higher, and the opposite corner.
@@ -47,17 +52,42 @@ std::array<int, 4> canonical_face(const std::array<int, 4>& tensor) {
 SolidMesh::SolidMesh(std::vector<SolidPoint> vertices, std::vector<std::array<int, 8>> cells, const std::string& origin,
                      const std::vector<std::pair<std::array<int, 4>, std::string>>& boundary_labels)
     : vertices_(std::move(vertices)), cells_(std::move(cells)) {
-  if (cells_.empty()) throw InputError(fmt::format("{}: the mesh has no hexahedron", origin));
-  for (std::size_t c = 0; c < cells_.size(); ++c)
-    for (int v : cells_[c])
+  build(origin, boundary_labels);
+}
+
+SolidMesh SolidMesh::tetrahedra(std::vector<SolidPoint> vertices, std::vector<std::array<int, 4>> cells,
+                                const std::string& origin,
+                                const std::vector<std::pair<std::array<int, 4>, std::string>>& boundary_labels) {
+  SolidMesh mesh;
+  mesh.kind_ = SolidCellKind::tetrahedron;
+  mesh.vertices_ = std::move(vertices);
+  mesh.cells_.reserve(cells.size());
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    std::array<int, 4> tet = cells[c];
+    std::sort(tet.begin(), tet.end());
+    if (std::adjacent_find(tet.begin(), tet.end()) != tet.end())
+      throw InputError(fmt::format("{}: tetrahedron {} names vertex {} twice", origin, c,
+                                   *std::adjacent_find(tet.begin(), tet.end())));
+    mesh.cells_.push_back({tet[0], tet[1], tet[2], tet[3], -1, -1, -1, -1});
+  }
+  mesh.build(origin, boundary_labels);
+  return mesh;
+}
+
+void SolidMesh::build(const std::string& origin,
+                      const std::vector<std::pair<std::array<int, 4>, std::string>>& boundary_labels) {
+  const char* name = cell_name(kind_);
+  if (cells_.empty()) throw InputError(fmt::format("{}: the mesh has no {}", origin, name));
+  for (int c = 0; c < n_cells(); ++c)
+    for (int v : cell_vertices(c))
       if (v < 0 || v >= n_vertices())
         throw InputError(
-            fmt::format("{}: hexahedron {} names vertex {}, outside 0 … {}", origin, c, v, n_vertices() - 1));
+            fmt::format("{}: {} {} names vertex {}, outside 0 … {}", origin, name, c, v, n_vertices() - 1));
   check_cells(origin);
   build_edges();
   build_faces(origin);
   std::map<std::array<int, 4>, std::string> labels;
-  for (const auto& [quad, label] : boundary_labels) labels[sorted(quad)] = label;
+  for (const auto& [face, label] : boundary_labels) labels[sorted(face)] = label;
   for (int f = 0; f < n_faces(); ++f) {
     if (!is_boundary_face(f)) continue;
     const int c = face_cells_[f][0];
@@ -69,6 +99,16 @@ SolidMesh::SolidMesh(std::vector<SolidPoint> vertices, std::vector<std::array<in
 }
 
 void SolidMesh::check_cells(const std::string& origin) const {
+  if (is_tetrahedral()) {
+    for (int c = 0; c < n_cells(); ++c) {
+      const Eigen::Matrix3d j = jacobian(c, Eigen::Vector3d::Zero());
+      if (!(std::abs(j.determinant()) > 1e-12 * j.colwise().norm().prod()))
+        throw InputError(fmt::format("{}: the tetrahedron of vertices {}, {}, {}, {} is degenerate (volume {:.3g})",
+                                     origin, cells_[c][0], cells_[c][1], cells_[c][2], cells_[c][3],
+                                     std::abs(j.determinant()) / 6.0));
+    }
+    return;
+  }
   for (int c = 0; c < n_cells(); ++c)
     for (int v = 0; v < 8; ++v) {
       const Eigen::Vector3d corner((v & 1) ? 1.0 : -1.0, (v & 2) ? 1.0 : -1.0, (v & 4) ? 1.0 : -1.0);
@@ -87,8 +127,8 @@ void SolidMesh::build_edges() {
   std::map<std::array<int, 2>, int> index;
   cell_edges_.resize(cells_.size());
   for (int c = 0; c < n_cells(); ++c)
-    for (int e = 0; e < 12; ++e) {
-      int a = cells_[c][kHexEdgeVertices[e][0]], b = cells_[c][kHexEdgeVertices[e][1]];
+    for (int e = 0; e < n_cell_edges(); ++e) {
+      int a = cells_[c][local_edge_vertices(e)[0]], b = cells_[c][local_edge_vertices(e)[1]];
       if (a > b) std::swap(a, b);
       const auto [at, added] = index.try_emplace({a, b}, n_edges());
       if (added) edges_.push_back({a, b});
@@ -100,16 +140,18 @@ void SolidMesh::build_faces(const std::string& origin) {
   std::map<std::array<int, 4>, int> index;
   cell_faces_.resize(cells_.size());
   for (int c = 0; c < n_cells(); ++c)
-    for (int f = 0; f < 6; ++f) {
-      std::array<int, 4> tensor{};
-      for (int k = 0; k < 4; ++k) tensor[k] = cells_[c][kHexFaceVertices[f][k]];
-      const auto [at, added] = index.try_emplace(sorted(tensor), n_faces());
+    for (int f = 0; f < n_cell_faces(); ++f) {
+      std::array<int, 4> local{-1, -1, -1, -1};
+      const auto corners = local_face_vertices(f);
+      for (std::size_t k = 0; k < corners.size(); ++k) local[k] = cells_[c][corners[k]];
+      const auto [at, added] = index.try_emplace(sorted(local), n_faces());
       if (added) {
-        faces_.push_back(canonical_face(tensor));
+        faces_.push_back(is_tetrahedral() ? sorted(local) : canonical_face(local));
         face_cells_.push_back({c, -1});
       } else if (face_cells_[at->second][1] >= 0) {
-        throw InputError(fmt::format("{}: the face of vertices {}, {}, {}, {} is shared by more than two hexahedra",
-                                     origin, tensor[0], tensor[1], tensor[2], tensor[3]));
+        throw InputError(
+            fmt::format("{}: the face of vertices {} is shared by more than two cells", origin,
+                        fmt::join(corners.size() == 3 ? std::span(local).first(3) : std::span(local), ", ")));
       } else {
         face_cells_[at->second][1] = c;
       }
@@ -124,10 +166,12 @@ void SolidMesh::label_boundary_faces(const std::function<bool(const SolidPoint& 
 }
 
 int SolidMesh::edge_sign(int c, int local_edge) const {
-  return cells_[c][kHexEdgeVertices[local_edge][0]] < cells_[c][kHexEdgeVertices[local_edge][1]] ? 1 : -1;
+  const auto ends = local_edge_vertices(local_edge);
+  return cells_[c][ends[0]] < cells_[c][ends[1]] ? 1 : -1;
 }
 
 SolidMesh::FaceOrientation SolidMesh::face_orientation(int c, int local_face) const {
+  HPC_VERIFY(!is_tetrahedral(), "face orientations of hexahedra");
   std::array<int, 4> tensor{};
   for (int k = 0; k < 4; ++k) tensor[k] = cells_[c][kHexFaceVertices[local_face][k]];
   const std::array<int, 4>& own = faces_[cell_faces_[c][local_face]];
@@ -144,6 +188,7 @@ SolidMesh::FaceOrientation SolidMesh::face_orientation(int c, int local_face) co
 }
 
 bool SolidMesh::is_affine(int c) const {
+  if (is_tetrahedral()) return true;
   // Trilinear maps are affine exactly when each edge vector equals its three parallels.
   const auto& x = [&](int v) -> const SolidPoint& { return vertices_[cells_[c][v]]; };
   const double size = (x(7) - x(0)).norm();
@@ -158,6 +203,7 @@ bool SolidMesh::is_affine(int c) const {
 }
 
 SolidPoint SolidMesh::map(int c, const Eigen::Vector3d& xi) const {
+  if (is_tetrahedral()) return vertices_[cells_[c][0]] + jacobian(c, xi) * (xi + Eigen::Vector3d::Ones());
   SolidPoint x = SolidPoint::Zero();
   for (int v = 0; v < 8; ++v) x += vertex_function(v, xi, nullptr) * vertices_[cells_[c][v]];
   return x;
@@ -165,6 +211,11 @@ SolidPoint SolidMesh::map(int c, const Eigen::Vector3d& xi) const {
 
 Eigen::Matrix3d SolidMesh::jacobian(int c, const Eigen::Vector3d& xi) const {
   Eigen::Matrix3d j = Eigen::Matrix3d::Zero();
+  if (is_tetrahedral()) {
+    // x = x0 + Σ_k (x_k − x0) (1 + ξ_k)/2
+    for (int k = 0; k < 3; ++k) j.col(k) = 0.5 * (vertices_[cells_[c][k + 1]] - vertices_[cells_[c][0]]);
+    return j;
+  }
   Eigen::Vector3d gradient;
   for (int v = 0; v < 8; ++v) {
     vertex_function(v, xi, &gradient);
@@ -175,11 +226,19 @@ Eigen::Matrix3d SolidMesh::jacobian(int c, const Eigen::Vector3d& xi) const {
 
 SolidPoint SolidMesh::face_centre(int f) const {
   SolidPoint centre = SolidPoint::Zero();
-  for (int v : faces_[f]) centre += 0.25 * vertices_[v];
+  for (int k = 0; k < n_face_vertices(); ++k) centre += vertices_[faces_[f][k]] / n_face_vertices();
   return centre;
 }
 
-SolidMesh make_tensor_box_mesh(const std::array<std::vector<double>, 3>& nodes, const std::string& origin) {
+namespace {
+
+/// The vertices of the tensor mesh of `nodes` (x fastest) and its hexahedra in tensor order.
+struct TensorBox {
+  std::vector<SolidPoint> vertices;
+  std::vector<std::array<int, 8>> cells;
+};
+
+TensorBox tensor_box(const std::array<std::vector<double>, 3>& nodes, const std::string& origin) {
   for (int k = 0; k < 3; ++k) {
     if (nodes[k].size() < 2)
       throw InputError(fmt::format("{}: {} nodes along {}; at least 2", origin, nodes[k].size(), "xyz"[k]));
@@ -191,36 +250,60 @@ SolidMesh make_tensor_box_mesh(const std::array<std::vector<double>, 3>& nodes, 
   const std::array<int, 3> n{static_cast<int>(nodes[0].size()) - 1, static_cast<int>(nodes[1].size()) - 1,
                              static_cast<int>(nodes[2].size()) - 1};
   const auto vertex = [&](int i, int j, int k) { return i + (n[0] + 1) * (j + (n[1] + 1) * k); };
-  std::vector<SolidPoint> vertices;
-  vertices.reserve(static_cast<std::size_t>(n[0] + 1) * (n[1] + 1) * (n[2] + 1));
+  TensorBox box;
+  box.vertices.reserve(static_cast<std::size_t>(n[0] + 1) * (n[1] + 1) * (n[2] + 1));
   for (int k = 0; k <= n[2]; ++k)
     for (int j = 0; j <= n[1]; ++j)
-      for (int i = 0; i <= n[0]; ++i) vertices.emplace_back(nodes[0][i], nodes[1][j], nodes[2][k]);
-  std::vector<std::array<int, 8>> cells;
-  cells.reserve(static_cast<std::size_t>(n[0]) * n[1] * n[2]);
+      for (int i = 0; i <= n[0]; ++i) box.vertices.emplace_back(nodes[0][i], nodes[1][j], nodes[2][k]);
+  box.cells.reserve(static_cast<std::size_t>(n[0]) * n[1] * n[2]);
   for (int k = 0; k < n[2]; ++k)
     for (int j = 0; j < n[1]; ++j)
       for (int i = 0; i < n[0]; ++i) {
         std::array<int, 8> cell{};
         for (int v = 0; v < 8; ++v) cell[v] = vertex(i + (v & 1), j + ((v >> 1) & 1), k + ((v >> 2) & 1));
-        cells.push_back(cell);
+        box.cells.push_back(cell);
       }
-  // Label each boundary face by the side of the box it lies on.
+  return box;
+}
+
+/// Labels the faces (vertex lists, −1 padded) that lie on a side of the box by that side's name.
+void label_box_sides(const std::array<std::vector<double>, 3>& nodes, const std::vector<SolidPoint>& vertices,
+                     const std::array<int, 4>& face, std::vector<std::pair<std::array<int, 4>, std::string>>& labels) {
   static const std::array<const char*, 6> names{"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
+  for (int side = 0; side < 6; ++side) {
+    const int axis = side / 2;
+    const double at = side % 2 == 0 ? nodes[axis].front() : nodes[axis].back();
+    bool on_side = true;
+    for (int v : face) on_side = on_side && (v < 0 || vertices[v](axis) == at);
+    if (on_side) labels.emplace_back(face, names[side]);
+  }
+}
+
+}  // namespace
+
+SolidMesh make_tensor_box_mesh(const std::array<std::vector<double>, 3>& nodes, const std::string& origin) {
+  TensorBox box = tensor_box(nodes, origin);
   std::vector<std::pair<std::array<int, 4>, std::string>> labels;
-  for (const auto& cell : cells)
-    for (int f = 0; f < 6; ++f) {
-      const int axis = f / 2;
-      const double side = f % 2 == 0 ? nodes[axis].front() : nodes[axis].back();
-      std::array<int, 4> quad{};
-      bool on_side = true;
-      for (int q = 0; q < 4; ++q) {
-        quad[q] = cell[kHexFaceVertices[f][q]];
-        on_side = on_side && vertices[quad[q]](axis) == side;
-      }
-      if (on_side) labels.emplace_back(quad, names[f]);
-    }
-  return SolidMesh(std::move(vertices), std::move(cells), origin, labels);
+  for (const auto& cell : box.cells)
+    for (const auto& corners : kHexFaceVertices)
+      label_box_sides(nodes, box.vertices, {cell[corners[0]], cell[corners[1]], cell[corners[2]], cell[corners[3]]},
+                      labels);
+  return SolidMesh(std::move(box.vertices), std::move(box.cells), origin, labels);
+}
+
+SolidMesh make_tetrahedral_box_mesh(const std::array<std::vector<double>, 3>& nodes, const std::string& origin) {
+  TensorBox box = tensor_box(nodes, origin);
+  std::vector<std::array<int, 4>> tetrahedra;
+  tetrahedra.reserve(6 * box.cells.size());
+  // Each of the six paths 0 → e_a → e_a + e_b → 7 along the edges of the cube spans one tetrahedron.
+  static constexpr std::array<std::array<int, 2>, 6> kPaths{{{0, 1}, {0, 2}, {1, 0}, {1, 2}, {2, 0}, {2, 1}}};
+  for (const auto& cell : box.cells)
+    for (const auto& [a, b] : kPaths) tetrahedra.push_back({cell[0], cell[1 << a], cell[(1 << a) | (1 << b)], cell[7]});
+  std::vector<std::pair<std::array<int, 4>, std::string>> labels;
+  for (const auto& tet : tetrahedra)
+    for (const auto& corners : kTetFaceVertices)
+      label_box_sides(nodes, box.vertices, {tet[corners[0]], tet[corners[1]], tet[corners[2]], -1}, labels);
+  return SolidMesh::tetrahedra(std::move(box.vertices), std::move(tetrahedra), origin, labels);
 }
 
 SolidMesh make_box_mesh(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, const std::array<int, 3>& n) {

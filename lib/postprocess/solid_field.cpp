@@ -4,13 +4,17 @@
 #include <array>
 
 #include "basis/lobatto.hpp"
+#include "core/error.hpp"
 
 namespace hpcontact::postprocess {
 
 namespace {
 
 /// The Lobatto values of degree p at ξ along each axis.
-std::array<Eigen::VectorXd, 3> axis_values(int p, const Eigen::Vector3d& xi) {
+std::array<Eigen::VectorXd, 3> axis_values(const space::SolidH1Space& space, int cell, const Eigen::Vector3d& xi) {
+  if (space.mesh().is_tetrahedral())
+    throw InputError("point values and ParaView grids of functions on tetrahedra are not built");
+  const int p = space.cell_degree(cell);
   std::array<Eigen::VectorXd, 3> values;
   Eigen::VectorXd slopes(p + 1);
   for (int d = 0; d < 3; ++d) {
@@ -24,7 +28,7 @@ std::array<Eigen::VectorXd, 3> axis_values(int p, const Eigen::Vector3d& xi) {
 
 double solid_value(const space::SolidH1Space& space, const Eigen::VectorXd& coefficients, int cell,
                    const Eigen::Vector3d& xi) {
-  const auto values = axis_values(space.cell_degree(cell), xi);
+  const auto values = axis_values(space, cell, xi);
   const Eigen::VectorXd local = space::local_coefficients(space, cell, coefficients);
   double sum = 0.0;
   for (Eigen::Index s = 0; s < local.size(); ++s) {
@@ -36,7 +40,7 @@ double solid_value(const space::SolidH1Space& space, const Eigen::VectorXd& coef
 
 Eigen::Vector3d solid_displacement(const space::SolidVectorSpace& space, const Eigen::VectorXd& coefficients, int cell,
                                    const Eigen::Vector3d& xi) {
-  const auto values = axis_values(space.scalar().cell_degree(cell), xi);
+  const auto values = axis_values(space.scalar(), cell, xi);
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   for (const auto& shape : space.scalar().cell_shapes(cell)) {
     const double phi = shape.sign * values[0](shape.index[0]) * values[1](shape.index[1]) * values[2](shape.index[2]);
@@ -48,6 +52,7 @@ Eigen::Vector3d solid_displacement(const space::SolidVectorSpace& space, const E
 
 io::VtuGrid solid_vtu_grid(const space::SolidH1Space& space, const SolidPointField& field) {
   constexpr std::uint8_t kVtkHexahedron = 12;
+  if (space.mesh().is_tetrahedral()) throw InputError("ParaView grids of functions on tetrahedra are not built");
   io::VtuGrid grid;
   io::VtuGrid::PointArray values{field.name, field.components, {}};
   const mesh::SolidMesh& mesh = space.mesh();

@@ -1,5 +1,6 @@
-// Numbering and local shapes of the hexahedral Q_p space: minimum-rule degrees on edges and faces,
-// orientation of edge and face modes by global vertex numbers, Dirichlet elimination.
+// Numbering and local shapes of the Q_p (hexahedra) and P_p (tetrahedra) spaces: minimum-rule
+// degrees on edges and faces, orientation of edge and face modes by global vertex numbers,
+// Dirichlet elimination.
 #include "space/solid_space.hpp"
 
 #include <fmt/format.h>
@@ -7,6 +8,7 @@
 #include <algorithm>
 #include <string>
 
+#include "basis/tetrahedron_basis.hpp"
 #include "core/error.hpp"
 
 namespace hpcontact::space {
@@ -16,29 +18,39 @@ namespace {
 /// (−1)^k for a sign s = ±1.
 float power_sign(int sign, int k) { return sign < 0 && k % 2 != 0 ? -1.0F : 1.0F; }
 
+/// Modes of a face and interior modes of a cell of degree p.
+int face_mode_count(const mesh::SolidMesh& mesh, int p) {
+  return mesh.is_tetrahedral() ? basis::triangle_face_mode_count(p) : (p - 1) * (p - 1);
+}
+int interior_mode_count(const mesh::SolidMesh& mesh, int p) {
+  return mesh.is_tetrahedral() ? basis::tetrahedron_interior_mode_count(p) : (p - 1) * (p - 1) * (p - 1);
+}
+
+std::int16_t narrow(int i) { return static_cast<std::int16_t>(i); }
+
 }  // namespace
 
 SolidH1Space::SolidH1Space(const mesh::SolidMesh& mesh, std::vector<int> cell_degrees,
                            const std::vector<char>& dirichlet_faces)
     : mesh_(&mesh), cell_degrees_(std::move(cell_degrees)) {
   if (static_cast<int>(cell_degrees_.size()) != mesh.n_cells())
-    throw InputError(fmt::format("{} degrees given for {} hexahedra", cell_degrees_.size(), mesh.n_cells()));
+    throw InputError(fmt::format("{} degrees given for {} cells", cell_degrees_.size(), mesh.n_cells()));
   if (!dirichlet_faces.empty() && static_cast<int>(dirichlet_faces.size()) != mesh.n_faces())
     throw InputError(fmt::format("{} Dirichlet flags given for {} faces", dirichlet_faces.size(), mesh.n_faces()));
   for (int c = 0; c < mesh.n_cells(); ++c) {
     if (cell_degrees_[c] < 1)
-      throw InputError(fmt::format("hexahedron {} has degree {}; degrees are at least 1", c, cell_degrees_[c]));
+      throw InputError(fmt::format("cell {} has degree {}; degrees are at least 1", c, cell_degrees_[c]));
     max_degree_ = std::max(max_degree_, cell_degrees_[c]);
   }
   // The minimum rule: each edge and face carries the smallest degree of its cells.
   edge_degrees_.assign(mesh.n_edges(), max_degree_);
   face_degrees_.assign(mesh.n_faces(), max_degree_);
   for (int c = 0; c < mesh.n_cells(); ++c) {
-    for (int e = 0; e < 12; ++e) {
+    for (int e = 0; e < mesh.n_cell_edges(); ++e) {
       int& degree = edge_degrees_[mesh.cell_edge(c, e)];
       degree = std::min(degree, cell_degrees_[c]);
     }
-    for (int f = 0; f < 6; ++f) {
+    for (int f = 0; f < mesh.n_cell_faces(); ++f) {
       int& degree = face_degrees_[mesh.cell_face(c, f)];
       degree = std::min(degree, cell_degrees_[c]);
     }
@@ -59,10 +71,10 @@ void SolidH1Space::number_dofs(const std::vector<char>& dirichlet_faces) {
   for (const auto& boundary : mesh.boundary_faces()) {
     const int f = mesh.cell_face(boundary.cell, boundary.local_face);
     if (!face_fixed[f]) continue;
-    for (int v : mesh.face(f)) vertex_fixed[v] = 1;
-    for (int e = 0; e < 12; ++e) {
-      const auto& ends = mesh::kHexEdgeVertices[e];
-      const auto& face = mesh::kHexFaceVertices[boundary.local_face];
+    for (int k = 0; k < mesh.n_face_vertices(); ++k) vertex_fixed[mesh.face(f)[k]] = 1;
+    for (int e = 0; e < mesh.n_cell_edges(); ++e) {
+      const auto ends = mesh.local_edge_vertices(e);
+      const auto face = mesh.local_face_vertices(boundary.local_face);
       if (std::count(face.begin(), face.end(), ends[0]) != 0 && std::count(face.begin(), face.end(), ends[1]) != 0)
         edge_fixed[mesh.cell_edge(boundary.cell, e)] = 1;
     }
@@ -77,7 +89,7 @@ void SolidH1Space::number_dofs(const std::vector<char>& dirichlet_faces) {
   }
   face_first_dofs_.resize(mesh.n_faces());
   for (int f = 0; f < mesh.n_faces(); ++f) {
-    const int modes = (face_degrees_[f] - 1) * (face_degrees_[f] - 1);
+    const int modes = face_mode_count(mesh, face_degrees_[f]);
     face_first_dofs_[f] = face_fixed[f] ? -1 : next;
     if (!face_fixed[f]) next += modes;
   }
@@ -85,8 +97,11 @@ void SolidH1Space::number_dofs(const std::vector<char>& dirichlet_faces) {
   first_shape_.assign(1, 0);
   for (int c = 0; c < mesh.n_cells(); ++c) {
     const int p = cell_degrees_[c];
-    append_shapes(c, next);
-    next += (p - 1) * (p - 1) * (p - 1);
+    if (mesh.is_tetrahedral())
+      append_tetrahedron_shapes(c, next);
+    else
+      append_shapes(c, next);
+    next += interior_mode_count(mesh, p);
     first_shape_.push_back(static_cast<std::int64_t>(shapes_.size()));
   }
   n_dofs_ = next;
@@ -148,6 +163,40 @@ void SolidH1Space::append_shapes(int cell, int first_interior) {
       }
 }
 
+void SolidH1Space::append_tetrahedron_shapes(int cell, int first_interior) {
+  const mesh::SolidMesh& mesh = *mesh_;
+  const auto add = [&](SolidShapeRole role, int entity, std::array<std::int16_t, 3> index, int dof) {
+    SolidShape shape;
+    shape.index = index;
+    shape.dof = dof;
+    shape.role = role;
+    shape.entity = static_cast<std::int8_t>(entity);
+    shapes_.push_back(shape);
+  };
+  // Local edges and faces run as their global ones (ascending vertices): no signs, no swaps.
+  for (int v = 0; v < 4; ++v) add(SolidShapeRole::vertex, v, {}, vertex_dofs_[mesh.cell(cell)[v]]);
+  for (int e = 0; e < 6; ++e) {
+    const int edge = mesh.cell_edge(cell, e);
+    for (int k = 2; k <= edge_degrees_[edge]; ++k)
+      add(SolidShapeRole::edge, e, {narrow(k), 0, 0}, edge_first_dofs_[edge] < 0 ? -1 : edge_first_dofs_[edge] + k - 2);
+  }
+  for (int f = 0; f < 4; ++f) {
+    const int face = mesh.cell_face(cell, f), n_max = face_degrees_[face] - 3;
+    int next = face_first_dofs_[face];
+    for (int n1 = 0; n1 <= n_max; ++n1)
+      for (int n2 = 0; n1 + n2 <= n_max; ++n2) {
+        add(SolidShapeRole::face, f, {narrow(n1), narrow(n2), 0}, next < 0 ? -1 : next);
+        if (next >= 0) ++next;
+      }
+  }
+  const int n_max = cell_degrees_[cell] - 4;
+  int next = first_interior;
+  for (int n1 = 0; n1 <= n_max; ++n1)
+    for (int n2 = 0; n1 + n2 <= n_max; ++n2)
+      for (int n3 = 0; n1 + n2 + n3 <= n_max; ++n3)
+        add(SolidShapeRole::interior, -1, {narrow(n1), narrow(n2), narrow(n3)}, next++);
+}
+
 Eigen::VectorXd local_coefficients(const SolidH1Space& space, int cell, const Eigen::VectorXd& coefficients) {
   const auto shapes = space.cell_shapes(cell);
   Eigen::VectorXd local = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(shapes.size()));
@@ -156,14 +205,14 @@ Eigen::VectorXd local_coefficients(const SolidH1Space& space, int cell, const Ei
   return local;
 }
 
-bool shape_on_face(const SolidShape& shape, int local_face) {
-  const auto& corners = mesh::kHexFaceVertices[local_face];
+bool shape_on_face(const mesh::SolidMesh& mesh, const SolidShape& shape, int local_face) {
+  const auto corners = mesh.local_face_vertices(local_face);
   const auto has = [&](int v) { return std::find(corners.begin(), corners.end(), v) != corners.end(); };
   switch (shape.role) {
     case SolidShapeRole::vertex:
       return has(shape.entity);
     case SolidShapeRole::edge:
-      return has(mesh::kHexEdgeVertices[shape.entity][0]) && has(mesh::kHexEdgeVertices[shape.entity][1]);
+      return has(mesh.local_edge_vertices(shape.entity)[0]) && has(mesh.local_edge_vertices(shape.entity)[1]);
     case SolidShapeRole::face:
       return shape.entity == local_face;
     case SolidShapeRole::interior:

@@ -1,5 +1,6 @@
-// The H¹-conforming space S^p(T_h) on hexahedral meshes: per cell the tensor polynomials Q_{p_T} in
-// the hierarchical Lobatto basis (vertex, edge, face and interior modes), edge and face modes
+// The H¹-conforming space S^p(T_h) on solid meshes: per hexahedron the tensor polynomials Q_{p_T}
+// in the hierarchical Lobatto basis, per tetrahedron P_{p_T} in the hierarchical basis of
+// basis/tetrahedron_basis.hpp (vertex, edge, face and interior modes), edge and face modes
 // oriented by global vertex numbers so that neighbouring cells share their traces; degrees per
 // cell with the minimum rule on edges and faces; Dirichlet dofs on Γ_D eliminated.
 #pragma once
@@ -14,13 +15,15 @@
 
 namespace hpcontact::space {
 
-/// What a local shape of a hexahedron is attached to.
+/// What a local shape of a cell is attached to.
 enum class SolidShapeRole : unsigned char { vertex, edge, face, interior };
 
-/// One local shape function of a hexahedron, times `sign`: N_i(ξ) N_j(η) N_k(ζ) with N the Lobatto
-/// functions (basis/lobatto.hpp), index = (i, j, k). Indices 0 and 1 are the linear functions
-/// (1 ∓ t)/2, ≥ 2 the bubbles, so the number of indices ≥ 2 is the role: 0 vertex, 1 edge, 2 face,
-/// 3 interior. `dof` is the global free dof, or −1 where Γ_D eliminates it.
+/// One local shape function of a cell, times `sign`. On a hexahedron N_i(ξ) N_j(η) N_k(ζ) with N
+/// the Lobatto functions (basis/lobatto.hpp), index = (i, j, k): indices 0 and 1 are the linear
+/// functions (1 ∓ t)/2, ≥ 2 the bubbles, so the number of indices ≥ 2 is the role: 0 vertex, 1
+/// edge, 2 face, 3 interior. On a tetrahedron the mode of basis::TetrahedronShapes given by the
+/// role, `entity` and index: (k, 0, 0) on an edge, (n1, n2, 0) on a face, (n1, n2, n3) inside;
+/// sign +1. `dof` is the global free dof, or −1 where Γ_D eliminates it.
 struct SolidShape {
   std::array<std::int16_t, 3> index{};
   int dof = -1;
@@ -35,8 +38,9 @@ struct SolidShape {
 /// of a face is N_a(S) N_b(T) in the face's own axes (mesh::SolidMesh::face). A cell's local shape
 /// restricted to the edge or face is sign · that mode.
 ///
-/// Global dof order: vertices, edge modes (edge by edge, k = 2 … p_e), face modes (face by face,
-/// (a, b) ∈ [2, p_f]², a slowest), interior modes (cell by cell); the skeleton (vertices, edges,
+/// Global dof order: vertices, edge modes (edge by edge, k = 2 … p_e), face modes (face by face;
+/// squares (a, b) ∈ [2, p_f]², a slowest; triangles (n1, n2), n1 + n2 ≤ p_f − 3, n1 slowest),
+/// interior modes (cell by cell); the skeleton (vertices, edges,
 /// faces) first, so static condensation removes the interiors (assembly/condensed_factor.hpp).
 /// Dirichlet: the vertices, edges and faces of the boundary faces flagged in `dirichlet_faces`
 /// carry no dof.
@@ -54,8 +58,8 @@ class SolidH1Space {
   int edge_degree(int edge) const { return edge_degrees_[edge]; }
   int face_degree(int face) const { return face_degrees_[face]; }
   int max_degree() const { return max_degree_; }
-  /// The local shapes of a cell: its 8 vertices, the modes of its 12 edges, of its 6 faces, then
-  /// its interior modes, each group in local order; the same list for cells of equal degrees.
+  /// The local shapes of a cell: its vertices, the modes of its edges, of its faces, then its
+  /// interior modes, each group in local order; the same list for cells of equal degrees.
   std::span<const SolidShape> cell_shapes(int cell) const {
     return {shapes_.data() + first_shape_[cell], shapes_.data() + first_shape_[cell + 1]};
   }
@@ -66,6 +70,7 @@ class SolidH1Space {
  private:
   void number_dofs(const std::vector<char>& dirichlet_faces);
   void append_shapes(int cell, int first_interior);
+  void append_tetrahedron_shapes(int cell, int first_interior);
 
   const mesh::SolidMesh* mesh_;
   std::vector<int> cell_degrees_, edge_degrees_, face_degrees_;
@@ -83,7 +88,7 @@ Eigen::VectorXd local_coefficients(const SolidH1Space& space, int cell, const Ei
 
 /// Whether a cell's shape can be nonzero on its local face `local_face`: the face's vertex and edge
 /// modes and its own face modes (what a trace on that face holds).
-bool shape_on_face(const SolidShape& shape, int local_face);
+bool shape_on_face(const mesh::SolidMesh& mesh, const SolidShape& shape, int local_face);
 
 /// Flags the boundary faces whose label is one of `labels` (for SolidH1Space's Γ_D).
 std::vector<char> faces_labelled(const mesh::SolidMesh& mesh, const std::vector<std::string>& labels);

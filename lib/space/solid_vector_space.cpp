@@ -12,7 +12,7 @@ namespace hpcontact::space {
 std::vector<int> dofs_on_face(const SolidH1Space& space, const mesh::BoundaryFace& face) {
   std::vector<int> dofs;
   for (const auto& shape : space.cell_shapes(face.cell))
-    if (shape.dof >= 0 && shape_on_face(shape, face.local_face)) dofs.push_back(shape.dof);
+    if (shape.dof >= 0 && shape_on_face(space.mesh(), shape, face.local_face)) dofs.push_back(shape.dof);
   return dofs;
 }
 

@@ -1,6 +1,7 @@
-// Gmsh meshes of hexahedra: an extruded block equal to the box mesh, tetrahedra subdivided into
-// valid hexahedra that fill the cube, physical surfaces as face labels, and the errors for files
-// that hold no hexahedra, high-order ones, volumes meshed apart, or a mesh size that would not fit.
+// Gmsh meshes of hexahedra and tetrahedra: an extruded block equal to the box mesh, tetrahedra
+// subdivided into valid hexahedra that fill the cube, tetrahedra that fill it, physical surfaces as
+// face labels, and the errors for files that hold other cells (prisms), high-order ones, volumes
+// meshed apart, or a mesh size that would not fit.
 #include "mesh/gmsh_solid_reader.hpp"
 
 #include <gmock/gmock.h>
@@ -8,6 +9,7 @@
 
 #include <Eigen/Geometry>
 #include <Eigen/LU>
+#include <cmath>
 #include <fstream>
 #include <map>
 
@@ -106,10 +108,34 @@ TEST(GmshSolidReader, SubdividedTetrahedraAreValidHexahedraThatFillTheCube) {
   EXPECT_NEAR(area, 6.0, 1e-12);
 }
 
-TEST(GmshSolidReader, FilesWithoutHexahedraAreRefusedWithWhatToChange) {
-  EXPECT_THAT(message_of(unit_cube("cube_tetrahedra.geo", "")),
-              ::testing::AllOf(HasSubstr("cube_tetrahedra.geo"), HasSubstr("Tetrahedron"),
-                               HasSubstr("Mesh.SubdivisionAlgorithm = 2")));
+TEST(GmshSolidReader, TetrahedraFillTheCubeAndTheirTrianglesCarryTheLabels) {
+  const SolidMesh mesh =
+      read_gmsh_solid_mesh(unit_cube("cube_tetrahedra.geo", "MeshSize{ PointsOf{ Volume{1}; } } = 0.4;"));
+  ASSERT_TRUE(mesh.is_tetrahedral());
+  EXPECT_GT(mesh.n_cells(), 24);
+  double volume = 0.0;
+  for (int c = 0; c < mesh.n_cells(); ++c)
+    volume += std::abs(mesh.jacobian(c, Eigen::Vector3d::Zero()).determinant()) * 4.0 / 3.0;
+  EXPECT_NEAR(volume, 1.0, 1e-12);
+  const auto counts = label_counts(mesh);
+  ASSERT_EQ(counts.size(), 1u);
+  EXPECT_EQ(counts.begin()->first, "wall");
+  double area = 0.0;
+  for (const auto& face : mesh.boundary_faces()) {
+    const auto& t = mesh.face(mesh.cell_face(face.cell, face.local_face));
+    area += 0.5 * (mesh.vertex(t[1]) - mesh.vertex(t[0])).cross(mesh.vertex(t[2]) - mesh.vertex(t[0])).norm();
+  }
+  EXPECT_NEAR(area, 6.0, 1e-12);
+}
+
+TEST(GmshSolidReader, FilesWithoutHexahedraOrTetrahedraAreRefusedWithWhatToChange) {
+  // Triangles extruded in recombined layers give prisms.
+  const std::string prisms = write_temp(
+      "prisms.geo",
+      "SetFactory(\"OpenCASCADE\");\nRectangle(1) = {0, 0, 0, 1, 1};\n"
+      "Extrude {0, 0, 1} { Surface{1}; Layers{2}; Recombine; }\nMeshSize{ PointsOf{ Surface{1}; } } = 0.5;\n");
+  EXPECT_THAT(message_of(prisms),
+              ::testing::AllOf(HasSubstr("prisms.geo"), HasSubstr("Prism"), HasSubstr("hexahedra or tetrahedra")));
   EXPECT_THAT(message_of(unit_cube("cube_order2.geo", "Mesh.SubdivisionAlgorithm = 2;\nMesh.ElementOrder = 2;")),
               ::testing::AllOf(HasSubstr("of order 2"), HasSubstr("Mesh.ElementOrder = 1")));
   EXPECT_THAT(message_of(std::string(HPCONTACT_TEST_DATA) + "/extruded_contact.geo"), HasSubstr("holds no 3-D mesh"));

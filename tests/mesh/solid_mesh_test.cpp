@@ -1,9 +1,12 @@
-// Hexahedral meshes: counts and labels of box meshes, shared faces seen alike from both cells
-// under every orientation, and the errors for inverted cells.
+// Solid meshes: counts and labels of box meshes of hexahedra and tetrahedra, shared faces seen
+// alike from both cells under every orientation, and the errors for inverted or degenerate cells.
 #include "mesh/solid_mesh.hpp"
 
 #include <gtest/gtest.h>
 
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
 #include <map>
 
 #include "core/error.hpp"
@@ -99,6 +102,54 @@ TEST(SolidMesh, InvertedOrDegenerateCellsAreInputErrors) {
   }
   EXPECT_THROW(make_box_mesh(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones(), {2, 0, 2}), InputError);
   EXPECT_NO_THROW(SolidMesh(vertices, {{0, 1, 2, 3, 4, 5, 6, 7}}, "t.msh"));
+}
+
+TEST(SolidMesh, TetrahedralBoxCountsLabelsAndVolume) {
+  const std::array<std::vector<double>, 3> nodes{{{0.0, 0.5, 2.0}, {0.0, 1.0}, {0.0, 0.25, 0.5, 1.0}}};
+  const SolidMesh mesh = make_tetrahedral_box_mesh(nodes, "box");
+  EXPECT_TRUE(mesh.is_tetrahedral());
+  EXPECT_EQ(mesh.n_cells(), 6 * 2 * 1 * 3);
+  EXPECT_EQ(mesh.n_vertices(), 3 * 2 * 4);
+  // Euler: V − E + F − C = 1 for a ball.
+  EXPECT_EQ(mesh.n_vertices() - mesh.n_edges() + mesh.n_faces() - mesh.n_cells(), 1);
+  std::map<std::string, int> count;
+  for (const auto& face : mesh.boundary_faces()) ++count[face.label];
+  EXPECT_EQ(count["x_min"], 2 * 1 * 3);
+  EXPECT_EQ(count["y_max"], 2 * 2 * 3);
+  EXPECT_EQ(count["z_min"], 2 * 2 * 1);
+  EXPECT_EQ(count[""], 0);
+  EXPECT_EQ(static_cast<int>(mesh.boundary_faces().size()), 2 * 2 * (3 + 6 + 2));
+  double volume = 0.0;
+  for (int c = 0; c < mesh.n_cells(); ++c) {
+    EXPECT_TRUE(mesh.is_affine(c));
+    volume += std::abs(mesh.jacobian(c, Eigen::Vector3d::Zero()).determinant()) * 4.0 / 3.0;
+    const auto v = mesh.cell_vertices(c);
+    EXPECT_TRUE(std::is_sorted(v.begin(), v.end()));
+    // The map sends the reference vertices to the cell's.
+    EXPECT_LT((mesh.map(c, Eigen::Vector3d(1, -1, -1)) - mesh.vertex(v[1])).norm(), 1e-15);
+    EXPECT_LT((mesh.map(c, Eigen::Vector3d(-1, -1, 1)) - mesh.vertex(v[3])).norm(), 1e-15);
+  }
+  EXPECT_NEAR(volume, 2.0, 1e-14);
+  // Every interior triangle has two cells, every local edge runs along its global edge.
+  for (int f = 0; f < mesh.n_faces(); ++f) EXPECT_EQ(mesh.face(f)[3], -1);
+  for (int c = 0; c < mesh.n_cells(); ++c)
+    for (int e = 0; e < 6; ++e) EXPECT_EQ(mesh.edge_sign(c, e), 1);
+}
+
+TEST(SolidMesh, DegenerateTetrahedraAreInputErrors) {
+  const std::vector<SolidPoint> vertices{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}};
+  EXPECT_NO_THROW(SolidMesh::tetrahedra(vertices, {{3, 1, 0, 2}}, "t.msh"));
+  try {
+    SolidMesh::tetrahedra(vertices, {{0, 1, 2, 4}}, "t.msh");  // four points in z = 0
+    ADD_FAILURE() << "a flat tetrahedron was accepted";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("t.msh: the tetrahedron of vertices 0, 1, 2, 4 is degenerate"),
+              std::string::npos)
+        << error.what();
+  }
+  EXPECT_THROW(SolidMesh::tetrahedra(vertices, {{0, 1, 1, 3}}, "t.msh"), InputError);
+  EXPECT_THROW(SolidMesh::tetrahedra(vertices, {{0, 1, 2, 5}}, "t.msh"), InputError);
+  EXPECT_THROW(SolidMesh::tetrahedra(vertices, {}, "t.msh"), InputError);
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
-// Hexahedral test meshes: a box mesh whose vertex numbers and cells' local vertex orders are
-// shuffled (so that every orientation of shared edges and faces occurs), and a smoothly distorted
+// Solid test meshes: a box mesh (hexahedra or tetrahedra) whose vertex numbers and cells' local
+// vertex orders are shuffled (so that every orientation of shared edges and faces occurs), and a smoothly distorted
 // one (trilinear, non-affine cells), and the §7 square extruded.
 #pragma once
 
@@ -39,8 +39,9 @@ inline std::vector<std::array<int, 8>> hexahedron_rotations() {
   return out;
 }
 
-/// `box` with its vertices renumbered at random and each cell's vertex list rotated by a random
-/// symmetry: the same geometry and labels, every orientation of edges and faces.
+/// `box` with its vertices renumbered at random and each hexahedron's vertex list rotated by a
+/// random symmetry: the same geometry and labels, every orientation of edges and faces (on
+/// tetrahedra the renumbering alone gives every order of a cell's vertices).
 inline mesh::SolidMesh shuffled(const mesh::SolidMesh& box, unsigned seed) {
   std::mt19937 random(seed);
   std::vector<int> number(box.n_vertices());
@@ -48,6 +49,22 @@ inline mesh::SolidMesh shuffled(const mesh::SolidMesh& box, unsigned seed) {
   std::shuffle(number.begin(), number.end(), random);
   std::vector<mesh::SolidPoint> vertices(box.n_vertices());
   for (int v = 0; v < box.n_vertices(); ++v) vertices[number[v]] = box.vertex(v);
+  if (box.is_tetrahedral()) {
+    std::vector<std::array<int, 4>> cells;
+    for (int c = 0; c < box.n_cells(); ++c) {
+      std::array<int, 4> cell{};
+      for (int v = 0; v < 4; ++v) cell[v] = number[box.cell(c)[v]];
+      std::shuffle(cell.begin(), cell.end(), random);
+      cells.push_back(cell);
+    }
+    std::vector<std::pair<std::array<int, 4>, std::string>> labels;
+    for (const auto& face : box.boundary_faces()) {
+      std::array<int, 4> triangle{-1, -1, -1, -1};
+      for (int k = 0; k < 3; ++k) triangle[k] = number[box.cell(face.cell)[mesh::kTetFaceVertices[face.local_face][k]]];
+      labels.emplace_back(triangle, face.label);
+    }
+    return mesh::SolidMesh::tetrahedra(std::move(vertices), std::move(cells), "shuffled tetrahedra", labels);
+  }
   const auto rotations = hexahedron_rotations();
   std::vector<std::array<int, 8>> cells;
   for (int c = 0; c < box.n_cells(); ++c) {
