@@ -11,25 +11,11 @@
 #include "basis/quadrature.hpp"
 #include "basis/tetrahedron_basis.hpp"
 #include "core/error.hpp"
+#include "space/solid_shape_values.hpp"
 
 namespace hpcontact::assembly {
 
 namespace {
-
-/// The shape of basis::TetrahedronShapes a local shape of a tetrahedron names.
-const basis::SolidShapeValue& tetrahedron_mode(const basis::TetrahedronShapes& all, const space::SolidShape& shape) {
-  switch (shape.role) {
-    case space::SolidShapeRole::vertex:
-      return all.vertex(shape.entity);
-    case space::SolidShapeRole::edge:
-      return all.edge(shape.entity, shape.index[0]);
-    case space::SolidShapeRole::face:
-      return all.face(shape.entity, shape.index[0], shape.index[1]);
-    case space::SolidShapeRole::interior:
-      break;
-  }
-  return all.interior(shape.index[0], shape.index[1], shape.index[2]);
-}
 
 SolidCellValues tetrahedron_values(const space::SolidH1Space& space, int cell, int points_per_axis) {
   const mesh::SolidMesh& mesh = space.mesh();
@@ -51,7 +37,7 @@ SolidCellValues tetrahedron_values(const space::SolidH1Space& space, int cell, i
     out.points[q] = mesh.map(cell, xi);
     const basis::TetrahedronShapes all(space.cell_degree(cell), xi(0), xi(1), xi(2));
     for (int s = 0; s < n_shapes; ++s) {
-      const basis::SolidShapeValue& mode = tetrahedron_mode(all, shapes[s]);
+      const basis::SolidShapeValue& mode = space::tetrahedron_mode(all, shapes[s]);
       out.values(s, q) = mode.v;
       const Eigen::Vector3d gradient = inverse_transpose * Eigen::Vector3d(mode.d[0], mode.d[1], mode.d[2]);
       for (int d = 0; d < 3; ++d) out.gradients[d](s, q) = gradient(d);

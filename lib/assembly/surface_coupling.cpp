@@ -1,4 +1,4 @@
-// Trace-multiplier couplings on flat contact surfaces of hexahedral meshes.
+// Trace-multiplier couplings on flat contact surfaces of solid meshes.
 #include "assembly/surface_coupling.hpp"
 
 #include <fmt/format.h>
@@ -7,9 +7,9 @@
 #include <Eigen/SparseCore>
 #include <cmath>
 
-#include "basis/lobatto.hpp"
 #include "basis/quadrature.hpp"
 #include "core/error.hpp"
+#include "space/solid_shape_values.hpp"
 
 namespace hpcontact::assembly {
 
@@ -68,6 +68,21 @@ std::vector<std::pair<Eigen::Vector2d, double>> cell_quadrature(const mesh::Surf
 
 Eigen::Vector3d face_point_in_cell(const mesh::FlatContactSurface& surface, const mesh::BoundaryFace& face,
                                    const Eigen::Vector2d& a) {
+  const mesh::SolidMesh& mesh = surface.mesh();
+  if (mesh.is_tetrahedral()) {
+    // The barycentric coordinates of a in the face's triangle are the cell's λ of its corners.
+    const auto& corners = mesh::kTetFaceVertices[face.local_face];
+    std::array<Eigen::Vector2d, 3> x;
+    for (int k = 0; k < 3; ++k) x[k] = surface.to_plane(mesh.vertex(mesh.cell(face.cell)[corners[k]]));
+    Eigen::Matrix2d edges;
+    edges << x[1] - x[0], x[2] - x[0];
+    const Eigen::Vector2d mu = edges.inverse() * (a - x[0]);
+    std::array<double, 4> lambda{};
+    lambda[corners[0]] = 1.0 - mu(0) - mu(1);
+    lambda[corners[1]] = mu(0);
+    lambda[corners[2]] = mu(1);
+    return {2.0 * lambda[1] - 1.0, 2.0 * lambda[2] - 1.0, 2.0 * lambda[3] - 1.0};
+  }
   const Eigen::Vector2d t = face_coordinates(face_corners(surface, face), a);
   Eigen::Vector3d xi;
   xi(face.local_face / 2) = face.local_face % 2 == 0 ? -1.0 : 1.0;
@@ -84,31 +99,23 @@ linalg::Coupling surface_coupling(const space::SolidH1Space& space, const space:
   std::vector<Eigen::Triplet<double>> entries;
   for (const auto& overlap : multiplier_mesh.overlaps()) {
     const mesh::BoundaryFace& face = surface.faces()[overlap.face];
-    const int cell = face.cell, axis = face.local_face / 2, side = face.local_face % 2;
-    const auto [u_axis, v_axis] = mesh::kHexFaceAxes[face.local_face];
-    const std::array<Eigen::Vector2d, 4> corners = face_corners(surface, face);
-    // The cell's shapes that do not vanish on the face: index `side` (N_0 at −1, N_1 at +1) along its normal axis.
+    const int cell = face.cell;
+    // The cell's shapes that do not vanish on the face.
     const auto shapes = space.cell_shapes(cell);
     std::vector<int> on_face;
     for (int s = 0; s < static_cast<int>(shapes.size()); ++s)
-      if (shapes[s].index[axis] == side && shapes[s].dof >= 0) on_face.push_back(s);
+      if (shapes[s].dof >= 0 && space::shape_on_face(space.mesh(), shapes[s], face.local_face)) on_face.push_back(s);
     const int p = space.cell_degree(cell);
     Eigen::MatrixXd local = Eigen::MatrixXd::Zero(multipliers.per_cell(), static_cast<Eigen::Index>(on_face.size()));
-    Eigen::VectorXd along_u(p + 1), along_v(p + 1), slopes(p + 1);
     const auto& polygon = overlap.polygon;
     for (std::size_t k = 1; k + 1 < polygon.size(); ++k) {
       for (auto [a, w] :
            basis::plane_triangle_rule(polygon[0], polygon[k], polygon[k + 1], p + multipliers.degree() + 2)) {
         if (weight) w *= weight(surface.from_plane(a));
-        const Eigen::Vector2d t = face_coordinates(corners, a);
-        basis::lobatto_values(p, t(0), along_u, slopes);
-        basis::lobatto_values(p, t(1), along_v, slopes);
+        const Eigen::VectorXd phi = space::local_shape_values(space, cell, face_point_in_cell(surface, face, a));
         const Eigen::VectorXd ell = multipliers.values(overlap.cell, a);
-        for (std::size_t j = 0; j < on_face.size(); ++j) {
-          const auto& shape = shapes[on_face[j]];
-          const double phi = shape.sign * along_u(shape.index[u_axis]) * along_v(shape.index[v_axis]);
-          local.col(static_cast<Eigen::Index>(j)) += w * phi * ell;
-        }
+        for (std::size_t j = 0; j < on_face.size(); ++j)
+          local.col(static_cast<Eigen::Index>(j)) += w * shapes[on_face[j]].sign * phi(on_face[j]) * ell;
       }
     }
     const int first = multipliers.first_dof(overlap.cell);

@@ -1,4 +1,4 @@
-// The couplings between a hexahedral space and the multipliers on a flat Γ_C, integrated exactly
+// The couplings between a solid space (hexahedra or tetrahedra) and the multipliers on a flat Γ_C, integrated exactly
 // on the overlaps of trace faces and cells of T_{C,H} (where both are polynomial):
 //   B_ij = ∫_{Γ_C} w ℓ_i φ_j ds   and   G_i = ∫_{Γ_C} ℓ_i g ds.
 #pragma once
@@ -14,15 +14,16 @@
 namespace hpcontact::assembly {
 
 /// The local coordinates ξ in its cell of the point of a trace face at plane coordinates a (the
-/// inverse of the face's bilinear map by Newton's method: one step on a parallelogram).
+/// inverse of a square face's bilinear map by Newton's method, one step on a parallelogram; the
+/// barycentric coordinates on a triangle).
 Eigen::Vector3d face_point_in_cell(const mesh::FlatContactSurface& surface, const mesh::BoundaryFace& face,
                                    const Eigen::Vector2d& a);
 
 /// B of shape (multipliers.n_dofs(), space.n_dofs()), with the weight w (empty: w = 1; the
 /// friction problem (13) pairs μ with s γ_C v). Each overlap polygon is cut into triangles from its
 /// first vertex and integrated with the collapsed Gauss rule of p + p_C + 2 points per direction:
-/// exact for w = 1 on parallelogram faces (the integrand is then a polynomial of degree 2(p + p_C)
-/// in the plane); on other flat quadrilaterals the trace shapes are not polynomial and the rule is
+/// exact for w = 1 on parallelogram and triangle faces (the integrand is then a polynomial of degree
+/// 2(p + p_C) in the plane); on other flat quadrilaterals the trace shapes are not polynomial and the rule is
 /// that of a degree-two margin. The multiplier space must live on Γ_C of the space's mesh.
 linalg::Coupling surface_coupling(const space::SolidH1Space& space, const space::SurfaceMultiplierSpace& multipliers,
                                   const SolidFunction& weight = {});

@@ -30,10 +30,13 @@ SolidPairingFacts solid_pairing_facts(const scene::Scene& scene, const SolidDisc
   facts.h_min = std::numeric_limits<double>::infinity();
   const mesh::SolidMesh& mesh = *d.mesh;
   for (const auto& face : d.surface->faces()) {
-    const auto& corners = mesh::kHexFaceVertices[face.local_face];
+    const auto corners = mesh.local_face_vertices(face.local_face);
     const auto& cell = mesh.cell(face.cell);
-    // (the face's corners in tensor order: its edges join corners 0–1, 2–3, 0–2, 1–3)
-    for (const auto& [a, b] : {std::pair{0, 1}, std::pair{2, 3}, std::pair{0, 2}, std::pair{1, 3}})
+    // (a square's corners are in tensor order: its edges join corners 0–1, 2–3, 0–2, 1–3)
+    const std::vector<std::pair<int, int>> edges =
+        mesh.is_tetrahedral() ? std::vector<std::pair<int, int>>{{0, 1}, {1, 2}, {0, 2}}
+                              : std::vector<std::pair<int, int>>{{0, 1}, {2, 3}, {0, 2}, {1, 3}};
+    for (const auto& [a, b] : edges)
       facts.h_min = std::min(facts.h_min, (mesh.vertex(cell[corners[a]]) - mesh.vertex(cell[corners[b]])).norm());
   }
   facts.multiplier_cells = solid_multiplier_mesh(scene, *d.surface)->n_cells();

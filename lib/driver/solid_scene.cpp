@@ -206,7 +206,7 @@ std::vector<assembly::Material> scene_materials(const scene::Scene& scene, const
   std::vector<assembly::Material> materials;
   materials.reserve(mesh.n_cells());
   for (int c = 0; c < mesh.n_cells(); ++c) {
-    const mesh::SolidPoint x = mesh.map(c, Eigen::Vector3d::Zero());
+    const mesh::SolidPoint x = mesh.cell_centre(c);
     materials.push_back(
         assembly::lame_parameters(young(x(0), x(1), x(2)), poisson(x(0), x(1), x(2)), assembly::PlaneModel::strain));
   }
@@ -232,7 +232,7 @@ std::array<int, 2> multiplier_cells(const scene::Scene& scene, const mesh::FlatC
   bool uniform = true;
   for (const auto& face : surface.faces()) {
     Eigen::Vector2d low = Eigen::Vector2d::Constant(INFINITY), high = -low;
-    for (int v : mesh::kHexFaceVertices[face.local_face]) {
+    for (int v : mesh.local_face_vertices(face.local_face)) {
       const Eigen::Vector2d a = surface.to_plane(mesh.vertex(mesh.cell(face.cell)[v]));
       low = low.cwiseMin(a);
       high = high.cwiseMax(a);

@@ -1,4 +1,4 @@
-// Flat contact surfaces of hexahedral meshes, their multiplier meshes (grids of rectangles or
+// Flat contact surfaces of solid meshes (square or triangle faces), their multiplier meshes (grids of rectangles or
 // triangles) and the clipped overlaps of trace faces and multiplier cells.
 #include "mesh/contact_surface.hpp"
 
@@ -29,6 +29,14 @@ double signed_area(const std::vector<Eigen::Vector2d>& polygon) {
 
 /// The outward unit normal of a boundary face at its centre.
 Eigen::Vector3d outward_normal(const SolidMesh& mesh, const BoundaryFace& face) {
+  if (mesh.is_tetrahedral()) {
+    // Away from the vertex opposite the face (local vertex local_face).
+    const auto& cell = mesh.cell(face.cell);
+    const auto& corners = kTetFaceVertices[face.local_face];
+    const SolidPoint& a = mesh.vertex(cell[corners[0]]);
+    const Eigen::Vector3d n = (mesh.vertex(cell[corners[1]]) - a).cross(mesh.vertex(cell[corners[2]]) - a).normalized();
+    return n.dot(a - mesh.vertex(cell[face.local_face])) > 0.0 ? n : Eigen::Vector3d(-n);
+  }
   Eigen::Vector3d xi = Eigen::Vector3d::Zero();
   const int axis = face.local_face / 2;
   const double side = face.local_face % 2 == 0 ? -1.0 : 1.0;
@@ -41,10 +49,12 @@ Eigen::Vector3d outward_normal(const SolidMesh& mesh, const BoundaryFace& face) 
 
 /// The face's vertices in plane coordinates, counterclockwise.
 std::vector<Eigen::Vector2d> face_polygon(const FlatContactSurface& surface, const BoundaryFace& face) {
-  const auto& corners = kHexFaceVertices[face.local_face];
+  const SolidMesh& mesh = surface.mesh();
+  const auto corners = mesh.local_face_vertices(face.local_face);
   std::vector<Eigen::Vector2d> polygon;
-  for (int k : {0, 1, 3, 2})
-    polygon.push_back(surface.to_plane(surface.mesh().vertex(surface.mesh().cell(face.cell)[corners[k]])));
+  // (a square's corners are in the tensor order of its axes: around it is 0, 1, 3, 2)
+  for (int k : mesh.is_tetrahedral() ? std::vector<int>{0, 1, 2} : std::vector<int>{0, 1, 3, 2})
+    polygon.push_back(surface.to_plane(mesh.vertex(mesh.cell(face.cell)[corners[k]])));
   if (signed_area(polygon) < 0.0) std::reverse(polygon.begin(), polygon.end());
   return polygon;
 }
@@ -95,9 +105,6 @@ class BoxBins {
 FlatContactSurface::FlatContactSurface(const SolidMesh& mesh, const std::vector<std::string>& labels,
                                        const std::string& origin)
     : mesh_(&mesh) {
-  if (mesh.is_tetrahedral())
-    throw InputError(
-        fmt::format("{}: contact surfaces on meshes of tetrahedra are not built; Γ_C needs hexahedra", origin));
   for (const auto& face : mesh.boundary_faces())
     if (std::find(labels.begin(), labels.end(), face.label) != labels.end()) faces_.push_back(face);
   if (faces_.empty())
@@ -113,7 +120,7 @@ FlatContactSurface::FlatContactSurface(const SolidMesh& mesh, const std::vector<
   e2_ = normal_.cross(e1_);
   double size = 0.0;
   for (const auto& face : faces_)
-    for (int v : kHexFaceVertices[face.local_face])
+    for (int v : mesh.local_face_vertices(face.local_face))
       size = std::max(size, (mesh.vertex(mesh.cell(face.cell)[v]) - origin_).norm());
   bounds_ = {Eigen::Vector2d::Constant(INFINITY), Eigen::Vector2d::Constant(-INFINITY)};
   for (const auto& face : faces_) {
@@ -122,7 +129,7 @@ FlatContactSurface::FlatContactSurface(const SolidMesh& mesh, const std::vector<
           fmt::format("{}: Γ_C is not flat: the normals of its faces differ (3-D contact surfaces are "
                       "planar for now)",
                       origin));
-    for (int v : kHexFaceVertices[face.local_face]) {
+    for (int v : mesh.local_face_vertices(face.local_face)) {
       const SolidPoint& x = mesh.vertex(mesh.cell(face.cell)[v]);
       if (std::abs(normal_.dot(x - origin_)) > 1e-10 * size)
         throw InputError(

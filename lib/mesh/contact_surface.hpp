@@ -1,4 +1,4 @@
-// A flat contact surface Γ_C of a hexahedral mesh (the boundary faces of some labels, lying in
+// A flat contact surface Γ_C of a solid mesh (the boundary faces of some labels, squares or triangles, lying in
 // one plane) in in-plane coordinates, and the multiplier mesh T_{C,H} on it, independent of the
 // trace faces: a structured grid of rectangles or a mesh of triangles, with each cell's overlaps
 // with the trace faces found by polygon clipping (Sutherland–Hodgman), where the couplings are

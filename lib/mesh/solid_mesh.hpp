@@ -110,6 +110,10 @@ class SolidMesh {
   /// x(ξ) = Σ_v x_v φ_v(ξ) with the trilinear vertex functions φ_v, or the barycentric ones of the
   /// reference tetrahedron.
   SolidPoint map(int c, const Eigen::Vector3d& xi) const;
+  /// The image of the reference cell's centroid (ξ = 0 on hexahedra, (−1/2, −1/2, −1/2) on tetrahedra).
+  SolidPoint cell_centre(int c) const {
+    return map(c, is_tetrahedral() ? Eigen::Vector3d::Constant(-0.5) : Eigen::Vector3d::Zero());
+  }
   /// ∂x/∂ξ at ξ: column k is ∂x/∂ξ_k.
   Eigen::Matrix3d jacobian(int c, const Eigen::Vector3d& xi) const;
   /// The centroid of the face's vertices.

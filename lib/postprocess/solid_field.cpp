@@ -1,59 +1,88 @@
-// Point values and ParaView grids of functions on hexahedral meshes.
+// Point values and ParaView grids of functions on solid meshes.
 #include "postprocess/solid_field.hpp"
 
+#include <algorithm>
 #include <array>
+#include <map>
 
-#include "basis/lobatto.hpp"
-#include "core/error.hpp"
+#include "space/solid_shape_values.hpp"
 
 namespace hpcontact::postprocess {
 
-namespace {
-
-/// The Lobatto values of degree p at ξ along each axis.
-std::array<Eigen::VectorXd, 3> axis_values(const space::SolidH1Space& space, int cell, const Eigen::Vector3d& xi) {
-  if (space.mesh().is_tetrahedral())
-    throw InputError("point values and ParaView grids of functions on tetrahedra are not built");
-  const int p = space.cell_degree(cell);
-  std::array<Eigen::VectorXd, 3> values;
-  Eigen::VectorXd slopes(p + 1);
-  for (int d = 0; d < 3; ++d) {
-    values[d].resize(p + 1);
-    basis::lobatto_values(p, xi(d), values[d], slopes);
-  }
-  return values;
-}
-
-}  // namespace
-
 double solid_value(const space::SolidH1Space& space, const Eigen::VectorXd& coefficients, int cell,
                    const Eigen::Vector3d& xi) {
-  const auto values = axis_values(space, cell, xi);
-  const Eigen::VectorXd local = space::local_coefficients(space, cell, coefficients);
-  double sum = 0.0;
-  for (Eigen::Index s = 0; s < local.size(); ++s) {
-    const auto& index = space.cell_shapes(cell)[static_cast<std::size_t>(s)].index;
-    sum += local(s) * values[0](index[0]) * values[1](index[1]) * values[2](index[2]);
-  }
-  return sum;
+  return space::local_shape_values(space, cell, xi).dot(space::local_coefficients(space, cell, coefficients));
 }
 
 Eigen::Vector3d solid_displacement(const space::SolidVectorSpace& space, const Eigen::VectorXd& coefficients, int cell,
                                    const Eigen::Vector3d& xi) {
-  const auto values = axis_values(space.scalar(), cell, xi);
+  const Eigen::VectorXd values = space::local_shape_values(space.scalar(), cell, xi);
+  const auto shapes = space.scalar().cell_shapes(cell);
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  for (const auto& shape : space.scalar().cell_shapes(cell)) {
-    const double phi = shape.sign * values[0](shape.index[0]) * values[1](shape.index[1]) * values[2](shape.index[2]);
+  for (std::size_t s = 0; s < shapes.size(); ++s) {
+    const double phi = shapes[s].sign * values(static_cast<Eigen::Index>(s));
     for (int c = 0; c < 3; ++c)
-      if (const int dof = space.dof(shape.dof, c); dof >= 0) sum(c) += phi * coefficients(dof);
+      if (const int dof = space.dof(shapes[s].dof, c); dof >= 0) sum(c) += phi * coefficients(dof);
   }
   return sum;
 }
 
+namespace {
+
+/// Tetrahedron c cut into p³ linear tetrahedra: the lattice points x ∈ {0 … p}³ with
+/// p ≥ x₁ ≥ x₂ ≥ x₃ ≥ 0 fill the simplex of those inequalities, which the Kuhn tetrahedra of the
+/// unit cubes inside it triangulate (Freudenthal's subdivision); ξ = 2 (x₁ − x₂, x₂ − x₃, x₃)/p − 1
+/// maps it onto the reference tetrahedron.
+void append_tetrahedron(const space::SolidH1Space& space, const SolidPointField& field, int c, io::VtuGrid& grid,
+                        io::VtuGrid::PointArray& values) {
+  constexpr std::uint8_t kVtkTetrahedron = 10;
+  const mesh::SolidMesh& mesh = space.mesh();
+  const int p = space.cell_degree(c);
+  const auto inside = [p](const std::array<int, 3>& x) {
+    return p >= x[0] && x[0] >= x[1] && x[1] >= x[2] && x[2] >= 0;
+  };
+  std::map<std::array<int, 3>, int> index;
+  for (int a = 0; a <= p; ++a)
+    for (int b = 0; b <= a; ++b)
+      for (int k = 0; k <= b; ++k) {
+        index[{a, b, k}] = static_cast<int>(grid.n_points());
+        const Eigen::Vector3d xi(2.0 * (a - b) / p - 1.0, 2.0 * (b - k) / p - 1.0, 2.0 * k / p - 1.0);
+        const mesh::SolidPoint x = mesh.map(c, xi);
+        grid.xyz.insert(grid.xyz.end(), {x(0), x(1), x(2)});
+        const Eigen::VectorXd value = field.evaluate(c, xi);
+        values.values.insert(values.values.end(), value.data(), value.data() + value.size());
+      }
+  std::array<int, 3> axes{0, 1, 2};
+  for (int a = 0; a < p; ++a)
+    for (int b = 0; b <= a; ++b)
+      for (int k = 0; k <= b; ++k) do {
+          // The path from the cube's corner along axes[0], axes[1], axes[2] to the opposite corner.
+          std::array<std::array<int, 3>, 4> path{};
+          path[0] = {a, b, k};
+          for (int step = 1; step < 4; ++step) {
+            path[step] = path[step - 1];
+            ++path[step][axes[step - 1]];
+          }
+          if (std::all_of(path.begin(), path.end(), inside)) {
+            for (const auto& x : path) grid.connectivity.push_back(index.at(x));
+            grid.offsets.push_back(static_cast<std::int64_t>(grid.connectivity.size()));
+            grid.types.push_back(kVtkTetrahedron);
+            grid.degrees.push_back(p);
+          }
+        } while (std::next_permutation(axes.begin(), axes.end()));
+}
+
+}  // namespace
+
 io::VtuGrid solid_vtu_grid(const space::SolidH1Space& space, const SolidPointField& field) {
   constexpr std::uint8_t kVtkHexahedron = 12;
-  if (space.mesh().is_tetrahedral()) throw InputError("ParaView grids of functions on tetrahedra are not built");
   io::VtuGrid grid;
+  if (space.mesh().is_tetrahedral()) {
+    io::VtuGrid::PointArray values{field.name, field.components, {}};
+    for (int c = 0; c < space.mesh().n_cells(); ++c) append_tetrahedron(space, field, c, grid, values);
+    grid.point_data.push_back(std::move(values));
+    return grid;
+  }
   io::VtuGrid::PointArray values{field.name, field.components, {}};
   const mesh::SolidMesh& mesh = space.mesh();
   for (int c = 0; c < mesh.n_cells(); ++c) {

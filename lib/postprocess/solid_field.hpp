@@ -1,5 +1,5 @@
-// Finite element functions on a hexahedral mesh evaluated in a cell (scalar, or the three
-// components of a displacement), and their VTU: the cells cut into p_T³ linear hexahedra through an
+// Finite element functions on a solid mesh evaluated in a cell (scalar, or the three components of
+// a displacement), and their VTU: the cells cut into p_T³ linear hexahedra or tetrahedra through an
 // equispaced lattice (exact at the lattice points).
 #pragma once
 
@@ -27,8 +27,9 @@ struct SolidPointField {
   std::function<Eigen::VectorXd(int cell, const Eigen::Vector3d& xi)> evaluate;
 };
 
-/// The field on every cell's lattice of (p_T + 1)³ points, VTK_HEXAHEDRON cells, the cell degree
-/// p_T per VTK cell (no points shared between cells).
+/// The field on every cell's lattice of (p_T + 1)³ points (hexahedra, VTK_HEXAHEDRON cells) or
+/// (p_T + 1)(p_T + 2)(p_T + 3)/6 points (tetrahedra, p_T³ VTK_TETRA cells of Freudenthal's
+/// subdivision), the cell degree p_T per VTK cell (no points shared between cells).
 io::VtuGrid solid_vtu_grid(const space::SolidH1Space& space, const SolidPointField& field);
 
 }  // namespace hpcontact::postprocess

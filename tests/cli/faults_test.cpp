@@ -50,13 +50,14 @@ bool has_temporary_files(const std::filesystem::path& folder) {
 std::filesystem::path write_sweep(const std::filesystem::path& dir, bool long_running = false) {
   std::filesystem::copy_file(HPCONTACT_SOURCE_DIR "/studies/stability/square.toml", dir / "square.toml",
                              std::filesystem::copy_options::overwrite_existing);
-  std::ofstream(dir / "sweep.toml")
-      << "[sweep]\nscene = \"square.toml\"\n"
-      << (long_running ? "p = \"1..6\"\npC = \"0..5\"\nnorm = [\"interp\"]\n"
-                         "levels = { \"domain.n_x\" = [8, 16, 24, 32, 40], \"domain.n_y\" = [8, 16, 24, 32, 40] }\n"
-                       : "p = \"1..3\"\npC = \"0..2\"\n"
-                         "levels = { \"domain.n_x\" = [4, 8, 16], \"domain.n_y\" = [4, 8, 16] }\n")
-      << "ratio = [1, \"1/2\"]\nproblem = [\"signorini\", \"friction\"]\n";
+  std::ofstream(dir / "sweep.toml") << "[sweep]\nscene = \"square.toml\"\n"
+                                    << (long_running
+                                            ? "p = \"1..6\"\npC = \"0..5\"\nnorm = [\"interp\"]\n"
+                                              "levels = { \"domain.n_x\" = [8, 16, 24, 32, 40, 56, 80], \"domain.n_y\" "
+                                              "= [8, 16, 24, 32, 40, 56, 80] }\n"
+                                            : "p = \"1..3\"\npC = \"0..2\"\n"
+                                              "levels = { \"domain.n_x\" = [4, 8, 16], \"domain.n_y\" = [4, 8, 16] }\n")
+                                    << "ratio = [1, \"1/2\"]\nproblem = [\"signorini\", \"friction\"]\n";
   return dir / "sweep.toml";
 }
 

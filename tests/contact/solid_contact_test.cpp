@@ -8,9 +8,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 
+#include "assembly/condensed_factor.hpp"
+#include "assembly/solid_cell_system.hpp"
+#include "assembly/solid_load.hpp"
+#include "assembly/surface_coupling.hpp"
 #include "core/error.hpp"
 #include "mesh/contact_surface.hpp"
+#include "space/surface_multiplier_space.hpp"
 #include "support/contact_fixture.hpp"
 #include "support/solid_meshes.hpp"
 
@@ -95,6 +101,32 @@ TEST(SolidContact, ContactSurfacesAndMultiplierMeshesRejectBadInput) {
   const mesh::FlatContactSurface l_surface(l_shape, {"contact"}, "scene.toml");
   EXPECT_FALSE(l_surface.is_rectangle());
   EXPECT_THROW(mesh::SurfaceMultiplierMesh(l_surface, {2, 2}, "scene.toml"), InputError);
+}
+
+TEST(SolidContact, CouplingOnTriangleTraceFacesIsExactForPolynomials) {
+  // u ∈ P_3 on Kuhn tetrahedra (renumbered), represented exactly by its L² projection; B u
+  // (trace triangles clipped against T_{C,H}, shapes evaluated in the cells) must equal ∫ ℓ_i u
+  // over the cells of T_{C,H} (u evaluated directly), on a grid that the triangles do not align with.
+  std::vector<double> nodes{0.0, 0.3, 0.7, 1.0};
+  const mesh::SolidMesh mesh = testing::shuffled(mesh::make_tetrahedral_box_mesh({nodes, nodes, nodes}, "box"), 4);
+  const space::SolidH1Space space(mesh, std::vector<int>(mesh.n_cells(), 3), {});
+  const auto u = [](const mesh::SolidPoint& x) {
+    return 1.0 + x(0) - 2.0 * x(1) * x(1) + x(0) * x(1) * x(2) + x(1) * x(1) * x(1) + 0.5 * x(2);
+  };
+  const assembly::CondensedFactor mass(std::make_unique<assembly::SolidScalarCellSystem>(space, 0.0, 1.0));
+  const Eigen::VectorXd coefficients = mass.solve(assembly::solid_load(space, u));
+  for (const char* side : {"z_min", "x_max"}) {
+    const mesh::FlatContactSurface surface(mesh, {side}, "box");
+    EXPECT_NEAR(surface.area(), 1.0, 1e-14) << side;
+    const mesh::SurfaceMultiplierMesh grid(surface, {3, 2}, "box");
+    for (int pc : {0, 1, 2}) {
+      const space::SurfaceMultiplierSpace multipliers(grid, pc);
+      const Eigen::VectorXd traced = assembly::surface_coupling(space, multipliers) * coefficients;
+      const Eigen::VectorXd direct = assembly::surface_multiplier_load(multipliers, u);
+      EXPECT_LT((traced - direct).lpNorm<Eigen::Infinity>(), 1e-12 * direct.lpNorm<Eigen::Infinity>())
+          << side << ", p_C = " << pc;
+    }
+  }
 }
 
 TEST(SolidContact, ClippingKeepsTheCommonPolygon) {

@@ -1,6 +1,6 @@
-// Frictionless contact of an elastic box: a column on a rigid floor, held by rollers on its sides
-// and clamped on top, sagging under its weight onto the floor below it. u = u_z(z) e_z is then a
-// quadratic in z, in the space for p ≥ 2, so the discrete pressure and energy are exact:
+// Frictionless contact of an elastic box (hexahedra and tetrahedra): a column on a rigid floor, held by rollers on its
+// sides and clamped on top, sagging under its weight onto the floor below it. u = u_z(z) e_z is then a quadratic in z,
+// in the space for p ≥ 2, so the discrete pressure and energy are exact:
 //   (λ + 2μ) u'' = ρ,  u(1) = 0,  u(0) = −δ (in contact),  P = ρ/2 − (λ + 2μ) δ.
 #include <gtest/gtest.h>
 
@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "mesh/contact_surface.hpp"
 #include "postprocess/solid_field.hpp"
+#include "support/solid_meshes.hpp"
 
 namespace hpcontact::contact {
 namespace {
@@ -36,11 +37,16 @@ struct Column {
   }
 };
 
-/// The column on an n³ mesh of degree p, T_{C,H} m × m of degree p_C, solved; `check` reads the
-/// solution while the spaces live.
+/// The column on an n³ mesh of degree p (hexahedra, or renumbered Kuhn tetrahedra), T_{C,H} m × m
+/// of degree p_C, solved; `check` reads the solution while the spaces live.
 void solve_column(const Column& column, int p, int pc, int n, int m,
-                  const std::function<void(const space::SolidVectorSpace&, const SolidElasticSolution&)>& check) {
-  const mesh::SolidMesh mesh = mesh::make_box_mesh(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones(), {n, n, n});
+                  const std::function<void(const space::SolidVectorSpace&, const SolidElasticSolution&)>& check,
+                  bool tetrahedra = false) {
+  std::vector<double> nodes;
+  for (int i = 0; i <= n; ++i) nodes.push_back(static_cast<double>(i) / n);
+  const mesh::SolidMesh mesh =
+      tetrahedra ? testing::shuffled(mesh::make_tetrahedral_box_mesh({nodes, nodes, nodes}, "column"), 3)
+                 : mesh::make_box_mesh(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones(), {n, n, n});
   const space::SolidH1Space scalar(mesh, std::vector<int>(mesh.n_cells(), p), space::faces_labelled(mesh, {"z_max"}));
   const space::SolidVectorSpace space(
       scalar, {space::faces_labelled(mesh, {"x_min", "x_max"}), space::faces_labelled(mesh, {"y_min", "y_max"}), {}});
@@ -59,20 +65,27 @@ void solve_column(const Column& column, int p, int pc, int n, int m,
 TEST(SolidElasticContact, ColumnOnAFloorIsExactForPAtLeastTwo) {
   const Column column;
   ASSERT_GT(column.pressure(), 0.0);
-  for (const auto& [p, pc, n, m] : {std::tuple{2, 0, 2, 1}, std::tuple{2, 1, 2, 2}, std::tuple{3, 1, 3, 2}}) {
-    const std::string label = "p " + std::to_string(p) + " pC " + std::to_string(pc);
-    solve_column(column, p, pc, n, m, [&](const space::SolidVectorSpace& space, const SolidElasticSolution& solution) {
-      for (Eigen::Index i = 0; i < solution.pressure.size(); ++i)
-        EXPECT_NEAR(solution.pressure(i), column.pressure(), 1e-10) << label;
-      EXPECT_NEAR(solution.energy, column.energy(), 1e-12) << label;
-      EXPECT_LT(solution.gap.lpNorm<Eigen::Infinity>(), 1e-12) << label;
-      // u at a point inside: the column's u_z, no lateral motion.
-      const Eigen::Vector3d xi(0.3, -0.2, 0.1);
-      const Eigen::Vector3d u = postprocess::solid_displacement(space, solution.u, 0, xi);
-      EXPECT_NEAR(u(2), column.u(space.scalar().mesh().map(0, xi)(2)), 1e-12) << label;
-      EXPECT_NEAR(u.head<2>().norm(), 0.0, 1e-12) << label;
-    });
-  }
+  // On tetrahedra the trace triangles are clipped against T_{C,H} (m = 2 and 3 do not align with
+  // the diagonals of Kuhn's cubes), and the quadratic u_z is in P_2.
+  for (bool tetrahedra : {false, true})
+    for (const auto& [p, pc, n, m] : {std::tuple{2, 0, 2, 1}, std::tuple{2, 1, 2, 2}, std::tuple{3, 1, 3, 2}}) {
+      const std::string label =
+          "p " + std::to_string(p) + " pC " + std::to_string(pc) + (tetrahedra ? " tetrahedra" : " hexahedra");
+      solve_column(
+          column, p, pc, n, m,
+          [&](const space::SolidVectorSpace& space, const SolidElasticSolution& solution) {
+            for (Eigen::Index i = 0; i < solution.pressure.size(); ++i)
+              EXPECT_NEAR(solution.pressure(i), column.pressure(), 1e-10) << label;
+            EXPECT_NEAR(solution.energy, column.energy(), 1e-12) << label;
+            EXPECT_LT(solution.gap.lpNorm<Eigen::Infinity>(), 1e-12) << label;
+            // u at a point inside: the column's u_z, no lateral motion.
+            const Eigen::Vector3d xi = tetrahedra ? Eigen::Vector3d(-0.6, -0.5, -0.4) : Eigen::Vector3d(0.3, -0.2, 0.1);
+            const Eigen::Vector3d u = postprocess::solid_displacement(space, solution.u, 0, xi);
+            EXPECT_NEAR(u(2), column.u(space.scalar().mesh().map(0, xi)(2)), 1e-12) << label;
+            EXPECT_NEAR(u.head<2>().norm(), 0.0, 1e-12) << label;
+          },
+          tetrahedra);
+    }
 }
 
 TEST(SolidElasticContact, AColumnAboveTheFloorDoesNotTouchIt) {
