@@ -65,6 +65,34 @@ std::pair<double, double> relative_errors(const space::SolidH1Space& space, cons
   return {errors.h1_semi / errors.exact_h1_semi, errors.l2 / size.l2};
 }
 
+/// Solves −Δu = f for the sines on `mesh` (Γ_D the faces labelled `walls`) at p = first … last and
+/// expects each degree to divide the relative H¹ error by more than `factor`, the last error below
+/// `final`, and, when `eliminations` ≥ 0, that many distinct eliminations (congruent cells share one).
+void expect_exponential_in_p(const mesh::SolidMesh& mesh, const std::vector<std::string>& walls, int first, int last,
+                             double factor, double final, int eliminations = -1) {
+  double previous = INFINITY;
+  for (int p = first; p <= last; ++p) {
+    const space::SolidH1Space space(mesh, std::vector<int>(mesh.n_cells(), p), space::faces_labelled(mesh, walls));
+    int made = 0;
+    const double h1 = relative_errors(space, sines(), &made).first;
+    std::printf("%d %s, p = %d: relative H1 error %.3e, %d eliminations\n", mesh.n_cells(),
+                mesh.is_tetrahedral() ? "tetrahedra" : "hexahedra", p, h1, made);
+    if (eliminations >= 0) EXPECT_EQ(made, eliminations) << "p = " << p;
+    if (p > first) EXPECT_LT(h1, previous / factor) << "p = " << p;
+    previous = h1;
+  }
+  EXPECT_LT(previous, final);
+}
+
+/// The unit cube meshed by Gmsh with `options`, its six faces the physical surface "wall".
+mesh::SolidMesh gmsh_cube(const std::string& name, const std::string& options) {
+  const auto geo = testing::scratch_root() / name;
+  std::ofstream(geo) << "SetFactory(\"OpenCASCADE\");\nBox(1) = {0, 0, 0, 1, 1, 1};\n"
+                     << options
+                     << "\nPhysical Surface(\"wall\") = {1, 2, 3, 4, 5, 6};\nPhysical Volume(\"cube\") = {1};\n";
+  return mesh::read_gmsh_solid_mesh(geo.string());
+}
+
 TEST(SolidPoisson, QuadraticSolutionIsExactUnderEveryOrientation) {
   const mesh::SolidMesh box = mesh::make_box_mesh(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones(), {3, 3, 3});
   // p = 2 checks the numbering under shuffling (mode (2, 2) is the same under a swap and every
@@ -119,38 +147,17 @@ TEST(SolidPoisson, RatesArePInH) {
 }
 
 TEST(SolidPoisson, ConvergesExponentiallyInPAndEliminatesOnceOnABox) {
-  const mesh::SolidMesh mesh = mesh::make_box_mesh(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones(), {2, 2, 2});
-  double previous = 1.0;
-  for (int p = 2; p <= 7; ++p) {
-    const space::SolidH1Space space(mesh, std::vector<int>(mesh.n_cells(), p), space::faces_labelled(mesh, kAllSides));
-    int eliminations = 0;
-    const double h1 = relative_errors(space, sines(), &eliminations).first;
-    EXPECT_EQ(eliminations, 1) << "p = " << p;
-    // Each degree gains at least a factor 2.5 here (sin is entire; the factor grows with p).
-    EXPECT_LT(h1, previous / 2.5) << "p = " << p;
-    previous = h1;
-  }
-  EXPECT_LT(previous, 1e-5);
+  // Each degree gains at least a factor 2.5 here (sin is entire; the factor grows with p).
+  expect_exponential_in_p(mesh::make_box_mesh(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones(), {2, 2, 2}), kAllSides,
+                          2, 7, 2.5, 1e-5, 1);
 }
 
 TEST(SolidPoisson, ConvergesExponentiallyInPOnAGmshMeshOfHexahedra) {
   // Gmsh's tetrahedra of the unit cube, each split into four hexahedra: trilinear, far from
-  // parallelepipeds, in every orientation.
-  const auto geo = testing::scratch_root() / "poisson_cube.geo";
-  std::ofstream(geo) << "SetFactory(\"OpenCASCADE\");\nBox(1) = {0, 0, 0, 1, 1, 1};\n"
-                        "Mesh.SubdivisionAlgorithm = 2;\nMeshSize{ PointsOf{ Volume{1}; } } = 0.6;\n"
-                        "Physical Surface(\"wall\") = {1, 2, 3, 4, 5, 6};\n";
-  const mesh::SolidMesh mesh = mesh::read_gmsh_solid_mesh(geo.string());
-  double previous = INFINITY;
-  for (int p = 1; p <= 4; ++p) {
-    const space::SolidH1Space space(mesh, std::vector<int>(mesh.n_cells(), p), space::faces_labelled(mesh, {"wall"}));
-    const double h1 = relative_errors(space, sines()).first;
-    std::printf("Gmsh mesh of %d hexahedra, p = %d: relative H1 error %.3e\n", mesh.n_cells(), p, h1);
-    // (each degree gains a factor 8 to 12 here)
-    EXPECT_LT(h1, previous / 5.0) << "p = " << p;
-    previous = h1;
-  }
-  EXPECT_LT(previous, 1e-3);
+  // parallelepipeds, in every orientation (each degree gains a factor 8 to 12 here).
+  expect_exponential_in_p(
+      gmsh_cube("poisson_cube.geo", "Mesh.SubdivisionAlgorithm = 2;\nMeshSize{ PointsOf{ Volume{1}; } } = 0.6;"),
+      {"wall"}, 1, 4, 5.0, 1e-3);
 }
 
 /// The unit cube in n³ cubes of six tetrahedra each (mesh::make_tetrahedral_box_mesh).
@@ -201,43 +208,19 @@ TEST(SolidPoisson, RatesArePInHOnTetrahedra) {
 }
 
 TEST(SolidPoisson, ConvergesExponentiallyInPOnTetrahedra) {
-  const mesh::SolidMesh mesh = tetrahedral_cube(2);
-  double previous = 1.0;
-  for (int p = 2; p <= 8; ++p) {
-    const space::SolidH1Space space(mesh, std::vector<int>(mesh.n_cells(), p), space::faces_labelled(mesh, kAllSides));
-    int eliminations = 0;
-    const double h1 = relative_errors(space, sines(), &eliminations).first;
-    // Congruent cells share one elimination: the six tetrahedra of Kuhn's cube, each in one
-    // vertex order in every cube (vertices numbered x fastest).
-    std::printf("48 tetrahedra, p = %d: relative H1 error %.3e, %d eliminations\n", p, h1, eliminations);
-    EXPECT_EQ(eliminations, 6) << "p = " << p;
-    // (each degree gains a factor 3.5 to 7.6 here, growing with p)
-    EXPECT_LT(h1, previous / 3.0) << "p = " << p;
-    previous = h1;
-  }
-  EXPECT_LT(previous, 3e-5);
+  // Congruent cells share one elimination: the six tetrahedra of Kuhn's cube, each in one vertex
+  // order in every cube (vertices numbered x fastest). Each degree gains a factor 3.5 to 7.6 here,
+  // growing with p.
+  expect_exponential_in_p(tetrahedral_cube(2), kAllSides, 2, 8, 3.0, 3e-5, 6);
 }
 
 TEST(SolidPoisson, ConvergesExponentiallyInPOnAGmshMeshOfTetrahedra) {
-  // Gmsh's Delaunay tetrahedra of the unit cube: unstructured, in every vertex order. (On the
-  // coarser 184 tetrahedra of size 0.35 the odd degrees gain more than the even ones: factors
-  // 3.3, 9.2, 3.0, 22 from p = 1 to 5.)
-  const auto geo = testing::scratch_root() / "poisson_tetrahedra.geo";
-  std::ofstream(geo) << "SetFactory(\"OpenCASCADE\");\nBox(1) = {0, 0, 0, 1, 1, 1};\n"
-                        "MeshSize{ PointsOf{ Volume{1}; } } = 0.175;\n"
-                        "Physical Surface(\"wall\") = {1, 2, 3, 4, 5, 6};\nPhysical Volume(\"cube\") = {1};\n";
-  const mesh::SolidMesh mesh = mesh::read_gmsh_solid_mesh(geo.string());
+  // Gmsh's 1111 Delaunay tetrahedra of the unit cube: unstructured, in every vertex order (each
+  // degree gains a factor 7.5 to 13 here). On the coarser 184 tetrahedra of size 0.35 the odd
+  // degrees gain more than the even ones: factors 3.3, 9.2, 3.0, 22 from p = 1 to 5.
+  const mesh::SolidMesh mesh = gmsh_cube("poisson_tetrahedra.geo", "MeshSize{ PointsOf{ Volume{1}; } } = 0.175;");
   ASSERT_TRUE(mesh.is_tetrahedral());
-  double previous = INFINITY;
-  for (int p = 1; p <= 4; ++p) {
-    const space::SolidH1Space space(mesh, std::vector<int>(mesh.n_cells(), p), space::faces_labelled(mesh, {"wall"}));
-    const double h1 = relative_errors(space, sines()).first;
-    std::printf("Gmsh mesh of %d tetrahedra, p = %d: relative H1 error %.3e\n", mesh.n_cells(), p, h1);
-    // (each degree gains a factor 7.5 to 13 here)
-    EXPECT_LT(h1, previous / 5.0) << "p = " << p;
-    previous = h1;
-  }
-  EXPECT_LT(previous, 1e-3);
+  expect_exponential_in_p(mesh, {"wall"}, 1, 4, 5.0, 1e-3);
 }
 
 TEST(SolidPoisson, SpaceRejectsBadInput) {
