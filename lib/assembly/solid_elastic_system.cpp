@@ -16,7 +16,7 @@ namespace hpcontact::assembly {
 SolidElasticCellSystem::SolidElasticCellSystem(const space::SolidVectorSpace& space, std::vector<Material> materials)
     : space_(&space), materials_(std::move(materials)) {
   if (static_cast<int>(materials_.size()) != n_cells())
-    throw InputError(fmt::format("{} materials given for {} hexahedra", materials_.size(), n_cells()));
+    throw InputError(fmt::format("{} materials given for {} cells", materials_.size(), n_cells()));
 }
 
 SolidElasticCellSystem SolidElasticCellSystem::vector_h1(const space::SolidVectorSpace& space) {

@@ -73,9 +73,11 @@ SolidAlpha solid_scene_alpha(const scene::Scene& scene, const SolidDiscretizatio
       .n = facts.faces,
       .m = multiplier_mesh->n_cells(),
       .h_min = facts.h_min,
-      // (without a ratio: √(cells of T_{C,H} / trace faces), h/H on uniform grids; m / n would be its square)
+      // (without a ratio: h/H from the mean cell areas, h² = area of a square, 2 × area of a triangle,
+      // √(cells of T_{C,H} / trace faces) on uniform grids of squares; m / n would be its square)
       .ratio = scene.ratio.size() == 1 ? scene.ratio.front().value
-                                       : std::sqrt(double(multiplier_mesh->n_cells()) / facts.faces)};
+                                       : std::sqrt((d.mesh->is_tetrahedral() ? 2.0 : 1.0) * multiplier_mesh->n_cells() /
+                                                   ((multiplier_mesh->is_grid() ? 1.0 : 2.0) * facts.faces))};
   InfSupSummary& s = out.summary;
   s.record = infsup::make_infsup_record(pairing, out.result);
   s.record.alpha_predicted = std::numeric_limits<double>::quiet_NaN();

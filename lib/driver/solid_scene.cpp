@@ -24,7 +24,8 @@ namespace {
 
 /// The keys a 3-D scene takes; any other given key is refused rather than ignored.
 const std::set<std::string>& solid_scene_keys() {
-  static const std::set<std::string> keys{"domain.x_min",
+  static const std::set<std::string> keys{"domain.cells",
+                                          "domain.x_min",
                                           "domain.x_max",
                                           "domain.y_min",
                                           "domain.y_max",
@@ -78,8 +79,8 @@ const std::set<std::string>& solid_scene_keys() {
   return keys;
 }
 
-/// The box, its nodes graded as the rectangle's (towards the planes of grading_x, _y, _z), its
-/// boundary faces labelled by side.
+/// The box, its nodes graded as the rectangle's (towards the planes of grading_x, _y, _z), cut into
+/// hexahedra or (domain.cells) tetrahedra, its boundary faces labelled by side.
 mesh::SolidMesh scene_box(const scene::Scene& scene) {
   const auto& r = scene.rectangle;
   const std::array<std::tuple<double, double, int, const std::vector<double>*, const char*>, 3> axes{
@@ -94,13 +95,24 @@ mesh::SolidMesh scene_box(const scene::Scene& scene) {
                    : mesh::graded_nodes(low, high, n, *grading, scene.domain_grading, scene.grading_layers,
                                         scene.where(key) + ": key '" + key + "'");
   }
+  if (scene.cells == mesh::GeneratedCells::triangles)
+    throw_bad_input(scene.where("domain.cells"), "domain.cells", "triangles",
+                    "hexahedra (the default) or tetrahedra in a 3-D box");
+  if (scene.cells == mesh::GeneratedCells::tetrahedra)
+    return mesh::make_tetrahedral_box_mesh(nodes, scene.file + ": box");
   return mesh::make_tensor_box_mesh(nodes, scene.file + ": box");
 }
 
-/// The hexahedra of domain.mesh, its boundary faces labelled by physical surface; a .geo meshed
+/// The hexahedra or tetrahedra of domain.mesh, its boundary faces labelled by physical surface; a .geo meshed
 /// with at most the cells that fit at the scene's degree (17.5 KB per unknown, as the box's size
 /// check, three unknowns per node of an elastic body).
 mesh::SolidMesh scene_gmsh_mesh(const scene::Scene& scene) {
+  // (a 3-D .geo's cells are its own settings' business; a key that would not change them is refused)
+  if (scene.cells != mesh::GeneratedCells::quadrilaterals)
+    throw_bad_input(scene.where("domain.cells"), "domain.cells",
+                    scene.cells == mesh::GeneratedCells::triangles ? "triangles" : "tetrahedra",
+                    "no value with a 3-D Gmsh mesh: its own settings decide its cells (tetrahedra by default; "
+                    "Recombine or Mesh.SubdivisionAlgorithm = 2 for hexahedra)");
   const MemoryLimit memory = memory_limit();
   const double per_cell = std::pow(scene.p.value, 3) * (scene.is_elastic() ? 3.0 : 1.0);
   mesh::GeoMeshing geo{scene.mesh_size,
@@ -246,10 +258,11 @@ std::array<int, 2> multiplier_cells(const scene::Scene& scene, const mesh::FlatC
     const double wanted = std::round(faces) * scene.ratio.front().value;
     if (!uniform || std::abs(faces - std::round(faces)) > 1e-6 || std::abs(wanted - std::round(wanted)) > 1e-9 ||
         std::round(wanted) < 1)
-      throw_bad_input(scene.where("contact_mesh.ratio"), "contact_mesh.ratio", scene.ratio.front().text,
-                      fmt::format("a ratio h/H that makes whole cells of T_{{C,H}} on a uniform Γ_C: Γ_C is {:.6g} "
-                                  "trace faces wide along its axis {} (give contact_mesh.m on graded meshes)",
-                                  faces, k + 1));
+      throw_bad_input(
+          scene.where("contact_mesh.ratio"), "contact_mesh.ratio", scene.ratio.front().text,
+          fmt::format("a ratio h/H that makes whole cells of T_{{C,H}} on a uniform Γ_C: Γ_C is {:.6g} "
+                      "trace faces wide along its axis {} (give contact_mesh.m on graded or unstructured meshes)",
+                      faces, k + 1));
     cells[k] = static_cast<int>(std::lround(wanted));
   }
   return cells;
@@ -260,9 +273,10 @@ std::array<int, 2> multiplier_cells(const scene::Scene& scene, const mesh::FlatC
 void check_solid_scene(const scene::Scene& scene, bool needs_effects) {
   for (const auto& key : scene.given)
     if (!solid_scene_keys().contains(key))
-      throw_bad_input(scene.where(key), key, "(given)",
-                      fmt::format("a key of planar scenes; a 3-D scene (a box, or a Gmsh mesh of hexahedra) takes {}",
-                                  fmt::join(solid_scene_keys(), ", ")));
+      throw_bad_input(
+          scene.where(key), key, "(given)",
+          fmt::format("a key of planar scenes; a 3-D scene (a box, or a Gmsh mesh of hexahedra or tetrahedra) takes {}",
+                      fmt::join(solid_scene_keys(), ", ")));
   for (const auto effect : scene.effects)
     if (effect != scene::Effect::signorini && effect != scene::Effect::friction &&
         effect != scene::Effect::friction_s && effect != scene::Effect::frictionless &&

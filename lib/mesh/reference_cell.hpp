@@ -11,8 +11,9 @@ namespace hpcontact::mesh {
 enum class CellType : unsigned char { quadrilateral, triangle };
 
 /// The cells a mesh generator makes (the built-in rectangle, Gmsh from a .geo): quadrilaterals,
-/// or triangles (the rectangle's cells cut along their diagonal).
-enum class GeneratedCells : unsigned char { quadrilaterals, triangles };
+/// or triangles (the rectangle's cells cut along their diagonal); the built-in box's hexahedra
+/// (`quadrilaterals`, the default) or tetrahedra (each hexahedron cut into six).
+enum class GeneratedCells : unsigned char { quadrilaterals, triangles, tetrahedra };
 
 /// Local numbering, both counterclockwise:
 ///   square    vertices 0:(-1,-1) 1:(1,-1) 2:(1,1) 3:(-1,1)

@@ -91,8 +91,8 @@ void SolidMesh::build(const std::string& origin,
   for (int f = 0; f < n_faces(); ++f) {
     if (!is_boundary_face(f)) continue;
     const int c = face_cells_[f][0];
-    const int local =
-        static_cast<int>(std::find(cell_faces_[c].begin(), cell_faces_[c].end(), f) - cell_faces_[c].begin());
+    const auto faces = std::span(cell_faces_[c]).first(static_cast<std::size_t>(n_cell_faces()));
+    const int local = static_cast<int>(std::find(faces.begin(), faces.end(), f) - faces.begin());
     const auto found = labels.find(sorted(faces_[f]));
     boundary_faces_.push_back({c, local, found == labels.end() ? std::string() : found->second});
   }
@@ -105,7 +105,7 @@ void SolidMesh::check_cells(const std::string& origin) const {
       if (!(std::abs(j.determinant()) > 1e-12 * j.colwise().norm().prod()))
         throw InputError(fmt::format("{}: the tetrahedron of vertices {}, {}, {}, {} is degenerate (volume {:.3g})",
                                      origin, cells_[c][0], cells_[c][1], cells_[c][2], cells_[c][3],
-                                     std::abs(j.determinant()) / 6.0));
+                                     4.0 / 3.0 * std::abs(j.determinant())));
     }
     return;
   }

@@ -1,6 +1,7 @@
 // Point values and ParaView grids of functions on solid meshes.
 #include "postprocess/solid_field.hpp"
 
+#include <Eigen/LU>
 #include <algorithm>
 #include <array>
 #include <map>
@@ -64,6 +65,13 @@ void append_tetrahedron(const space::SolidH1Space& space, const SolidPointField&
             ++path[step][axes[step - 1]];
           }
           if (std::all_of(path.begin(), path.end(), inside)) {
+            // VTK wants a positive volume: the path's orientation depends on the permutation and
+            // on the sign of the cell map (vertices ascending).
+            std::array<Eigen::Vector3d, 4> corner;
+            for (int v = 0; v < 4; ++v) corner[v] = Eigen::Map<const Eigen::Vector3d>(&grid.xyz[3 * index.at(path[v])]);
+            Eigen::Matrix3d edges;
+            edges << corner[1] - corner[0], corner[2] - corner[0], corner[3] - corner[0];
+            if (edges.determinant() < 0.0) std::swap(path[1], path[2]);
             for (const auto& x : path) grid.connectivity.push_back(index.at(x));
             grid.offsets.push_back(static_cast<std::int64_t>(grid.connectivity.size()));
             grid.types.push_back(kVtkTetrahedron);

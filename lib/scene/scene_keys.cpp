@@ -75,7 +75,8 @@ void read_mesh_size(const TomlTable& table, const std::string& file, std::option
 void add_domain_keys(std::vector<SceneKey>& keys) {
   auto add = [&](SceneKey key) { keys.push_back(std::move(key)); };
   add({"domain", "mesh", "string", "",
-       "a Gmsh mesh file (MSH 2.2 or 4, ASCII or binary) of triangles and/or quadrilaterals, or of hexahedra (a "
+       "a Gmsh mesh file (MSH 2.2 or 4, ASCII or binary) of triangles and/or quadrilaterals, or of hexahedra or "
+       "tetrahedra (a "
        "3-D scene), or a Gmsh geometry (.geo; one with a Volume is meshed in 3-D)",
        "Gmsh mesh, or geometry meshed on the fly (see `cells`), relative to the scene file; absent: the "
        "rectangle below",
@@ -107,10 +108,14 @@ void add_domain_keys(std::vector<SceneKey>& keys) {
       "only its vertices"));
   SceneKey cells = choice_key<mesh::GeneratedCells>(
       "domain", "cells",
-      {{"quadrilaterals", mesh::GeneratedCells::quadrilaterals}, {"triangles", mesh::GeneratedCells::triangles}},
+      {{"quadrilaterals", mesh::GeneratedCells::quadrilaterals},
+       {"triangles", mesh::GeneratedCells::triangles},
+       {"tetrahedra", mesh::GeneratedCells::tetrahedra}},
       mesh::GeneratedCells::quadrilaterals, &Scene::cells,
       "the rectangle's cells (triangles: each cut along its diagonal from lower left to upper right), or the "
-      "cells a .geo `mesh` is meshed into (a mesh file holds its own)");
+      "cells a planar .geo `mesh` is meshed into (a mesh file holds its own); a box's cells: hexahedra (the "
+      "default) or tetrahedra (each hexahedron cut into six around its diagonal from its lowest corner); a 3-D "
+      ".geo's own settings decide its cells");
   cells.read = [choose = cells.read](const TomlTable& table, Scene& scene) {
     choose(table, scene);
     if (table.has("cells") && !scene.mesh_file.empty() && std::filesystem::path(scene.mesh_file).extension() != ".geo")

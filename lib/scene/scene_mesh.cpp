@@ -25,6 +25,13 @@ namespace hpcontact::scene {
 
 namespace {
 
+/// Tetrahedra are a box's cells, not a planar domain's.
+void refuse_solid_cells(const Scene& scene) {
+  if (scene.cells == mesh::GeneratedCells::tetrahedra)
+    throw_bad_input(scene.where("domain.cells"), "domain.cells", "tetrahedra",
+                    "quadrilaterals or triangles in a planar scene (tetrahedra cut a 3-D box: domain.n_z)");
+}
+
 /// The tensor mesh, graded towards the lines of grading_x, grading_y, with a node at every
 /// coordinate of the grading points (whose local layers come after).
 mesh::Mesh build_rectangle(const Scene& scene) {
@@ -42,6 +49,7 @@ mesh::Mesh build_rectangle(const Scene& scene) {
                                                 scene.grading_layers, scene.file + ": key 'domain.grading_y'", point_y,
                                                 scene.file + ": key 'domain.grading_points' (a y coordinate)"),
                              scene.file + ": rectangle");
+  refuse_solid_cells(scene);
   if (scene.cells == mesh::GeneratedCells::triangles)
     return mesh::split_into_triangles(tensor, {}, scene.file + ": rectangle");
   return tensor;
@@ -59,6 +67,7 @@ mesh::Mesh grade_towards_points(mesh::Mesh mesh, const Scene& scene) {  // by va
 /// How the scene's .geo is meshed, with the most cells that fit in memory at its degree (the
 /// estimate of the scene size check: 1.2 KB per unknown, p² unknowns per cell).
 mesh::GeoMeshing geo_meshing(const Scene& scene) {
+  refuse_solid_cells(scene);
   const double p = scene.p.rule.empty() ? scene.p.value : 1.0;  // a rule: at least degree 1 everywhere
   const MemoryLimit memory = memory_limit();
   return {scene.mesh_size,
@@ -91,10 +100,11 @@ mesh::Mesh build_scene_mesh(const Scene& scene) {
   // Planar meshes only: every command that reaches here works on planar discretizations.
   if (scene.dimension() == 3) {
     const std::string key = !scene.is_rectangle() ? "domain.mesh" : scene.n_z > 0 ? "domain.n_z" : "domain.z_nodes";
-    throw_bad_input(scene.where(key), key, scene.n_z > 0 ? std::to_string(scene.n_z) : "(given)",
-                    "a planar scene here: 3-D scenes (a box or a Gmsh mesh of hexahedra) run with `hpcontact solve` "
-                    "and the effects signorini, "
-                    "friction, friction_s, frictionless; infsup, sweep, advise and the studies take planar scenes");
+    throw_bad_input(
+        scene.where(key), key, scene.n_z > 0 ? std::to_string(scene.n_z) : "(given)",
+        "a planar scene here: 3-D scenes (a box or a Gmsh mesh of hexahedra or tetrahedra) run with `hpcontact solve` "
+        "and the effects signorini, "
+        "friction, friction_s, frictionless; infsup, sweep, advise and the studies take planar scenes");
   }
   mesh::Mesh mesh =
       grade_towards_points(scene.mesh_file.empty() ? build_rectangle(scene) : read_mesh_file(scene), scene);

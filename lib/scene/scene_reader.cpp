@@ -85,7 +85,7 @@ void check_domain(const Scene& scene) {
                             "solve.trace_operator", "infsup.operator", "contact_mesh.mesh", "contact_mesh.mesh_size"})
       if (scene.given.contains(key))
         throw_bad_input(scene.where(key), key, "(given)",
-                        "only in a 3-D scene (a box: domain.n_z given, or a Gmsh mesh of hexahedra)");
+                        "only in a 3-D scene (a box: domain.n_z given, or a Gmsh mesh of hexahedra or tetrahedra)");
   if (!scene.is_rectangle()) {
     for (const char* key : {"x_min", "x_max", "y_min", "y_max", "z_min", "z_max", "n_x", "n_y", "n_z", "grading_x",
                             "grading_y", "grading_z", "x_nodes", "y_nodes", "z_nodes"})

@@ -65,7 +65,7 @@ void solve_column(const Column& column, int p, int pc, int n, int m,
 TEST(SolidElasticContact, ColumnOnAFloorIsExactForPAtLeastTwo) {
   const Column column;
   ASSERT_GT(column.pressure(), 0.0);
-  // On tetrahedra the trace triangles are clipped against T_{C,H} (m = 2 and 3 do not align with
+  // On tetrahedra the trace triangles are clipped against T_{C,H} (m = 2 does not align with
   // the diagonals of Kuhn's cubes), and the quadratic u_z is in P_2.
   for (bool tetrahedra : {false, true})
     for (const auto& [p, pc, n, m] : {std::tuple{2, 0, 2, 1}, std::tuple{2, 1, 2, 2}, std::tuple{3, 1, 3, 2}}) {
