@@ -72,6 +72,28 @@ void read_mesh_size(const TomlTable& table, const std::string& file, std::option
                     fmt::format("only with a Gmsh geometry file (.geo) as {}", file_key));
 }
 
+/// domain.cells: what the rectangle, a planar .geo or a box is cut into; refused beside a mesh file.
+SceneKey cells_key() {
+  SceneKey cells = choice_key<mesh::GeneratedCells>(
+      "domain", "cells",
+      {{"quadrilaterals", mesh::GeneratedCells::quadrilaterals},
+       {"triangles", mesh::GeneratedCells::triangles},
+       {"tetrahedra", mesh::GeneratedCells::tetrahedra}},
+      mesh::GeneratedCells::quadrilaterals, &Scene::cells,
+      "the rectangle's cells (triangles: each cut along its diagonal from lower left to upper right), or the "
+      "cells a planar .geo `mesh` is meshed into (a mesh file holds its own); a box's cells: hexahedra (the "
+      "default) or tetrahedra (each hexahedron cut into six around its diagonal from its lowest corner); a 3-D "
+      ".geo's own settings decide its cells");
+  cells.read = [choose = cells.read](const TomlTable& table, Scene& scene) {
+    choose(table, scene);
+    if (table.has("cells") && !scene.mesh_file.empty() && std::filesystem::path(scene.mesh_file).extension() != ".geo")
+      throw_bad_input(table.origin("cells"), table.qualified("cells"), table.string("cells"),
+                      "only with the rectangle or a Gmsh geometry file (.geo) as domain.mesh: " + scene.mesh_file +
+                          " holds its own cells");
+  };
+  return cells;
+}
+
 void add_domain_keys(std::vector<SceneKey>& keys) {
   auto add = [&](SceneKey key) { keys.push_back(std::move(key)); };
   add({"domain", "mesh", "string", "",
@@ -106,24 +128,7 @@ void add_domain_keys(std::vector<SceneKey>& keys) {
       Scene::Geometry::curved, &Scene::geometry,
       "a Gmsh `mesh`: cells follow its curves (a .geo's exact curves, a high-order mesh's edge nodes), or "
       "only its vertices"));
-  SceneKey cells = choice_key<mesh::GeneratedCells>(
-      "domain", "cells",
-      {{"quadrilaterals", mesh::GeneratedCells::quadrilaterals},
-       {"triangles", mesh::GeneratedCells::triangles},
-       {"tetrahedra", mesh::GeneratedCells::tetrahedra}},
-      mesh::GeneratedCells::quadrilaterals, &Scene::cells,
-      "the rectangle's cells (triangles: each cut along its diagonal from lower left to upper right), or the "
-      "cells a planar .geo `mesh` is meshed into (a mesh file holds its own); a box's cells: hexahedra (the "
-      "default) or tetrahedra (each hexahedron cut into six around its diagonal from its lowest corner); a 3-D "
-      ".geo's own settings decide its cells");
-  cells.read = [choose = cells.read](const TomlTable& table, Scene& scene) {
-    choose(table, scene);
-    if (table.has("cells") && !scene.mesh_file.empty() && std::filesystem::path(scene.mesh_file).extension() != ".geo")
-      throw_bad_input(table.origin("cells"), table.qualified("cells"), table.string("cells"),
-                      "only with the rectangle or a Gmsh geometry file (.geo) as domain.mesh: " + scene.mesh_file +
-                          " holds its own cells");
-  };
-  add(std::move(cells));
+  add(cells_key());
   add(any_number_key("domain", "x_min", -1.0, &mesh::Rectangle::x_min, "rectangle: left end"));
   add(any_number_key("domain", "x_max", 1.0, &mesh::Rectangle::x_max, "rectangle: right end"));
   add(any_number_key("domain", "y_min", -1.0, &mesh::Rectangle::y_min, "rectangle: bottom end"));
