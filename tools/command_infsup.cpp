@@ -31,7 +31,7 @@ struct InfSupOptions {
   std::optional<int> p, pc, n;
   std::optional<std::string> ratio, norm, problem, family;
   std::optional<double> alpha_tolerance;
-  std::string eigensolver = "slepc", distributed_solver = "substructuring";
+  std::string eigensolver = "slepc", distributed_solver;  ///< empty: substructuring under mpirun
   std::string csv, mode, scene;
   std::vector<std::string> set;
 };
@@ -84,7 +84,8 @@ int run_infsup(const InfSupOptions& o) {
   const std::string where = "hpcontact infsup";
   const scene::Scene scene = resolve_scene(o);
   const auto backend = infsup::parse_eigen_backend(o.eigensolver, where);
-  const auto distributed_solver = linalg::parse_distributed_solver(o.distributed_solver, where, "--distributed-solver");
+  const auto distribution =
+      linalg::distribution_named(MPI_COMM_WORLD, o.distributed_solver, where, "--distributed-solver");
   for (const auto& file : {o.csv, o.mode})
     if (!file.empty()) io::ensure_writable_directory(std::filesystem::absolute(file).parent_path());
 
@@ -94,13 +95,13 @@ int run_infsup(const InfSupOptions& o) {
   const int rank = mpi_rank_and_size().first;
   driver::InfSupSummary summary;
   if (scene.dimension() == 3) {
-    summary = solid_infsup(o, scene, backend, linalg::distribution_over(MPI_COMM_WORLD, distributed_solver));
+    summary = solid_infsup(o, scene, backend, distribution);
     if (rank != 0) return 0;
   } else {
     // The run's own stages: an elastic scene pairs the normal (and tangential) multipliers with
     // [S^p(T_h)]². Distributed, the operators hold the rank's part: the whole mesh is kept only
     // for the extension norm's references, which refine it.
-    const driver::StageContext context{linalg::distribution_over(MPI_COMM_WORLD, distributed_solver), {}};
+    const driver::StageContext context{distribution, {}};
     const auto level = driver::discretize(scene, context);
     driver::build_operators(*level, nullptr, context, scene.norm == infsup::GramNorm::extension);
     const auto setup = level->model->infsup_setup();
@@ -168,11 +169,7 @@ void add_infsup_command(CLI::App& app, CommandAction& action) {
   command
       ->add_option("--eigensolver", o->eigensolver, "slepc (EPS, options -infsup_eps_*) | dense (LAPACK-type, Eigen)")
       ->capture_default_str();
-  command
-      ->add_option("--distributed-solver", o->distributed_solver,
-                   "Under mpirun: substructuring (CHOLMOD per rank, dense interface) | mumps (MPIAIJ + MUMPS) | bddc "
-                   "(MATIS + CG with PCBDDC)")
-      ->capture_default_str();
+  command->add_option("--distributed-solver", o->distributed_solver, kDistributedSolverHelp);
   command->add_option("--csv", o->csv, "Append one row to this CSV file (the columns of a sweep's alpha.csv)");
   command->add_option(
       "--mode", o->mode,

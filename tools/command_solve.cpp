@@ -28,8 +28,8 @@ struct SolveOptions {
   std::vector<std::string> effects;  ///< empty: the scene's
   std::optional<int> p, pc, n, constraint_points;
   std::string ratio;
-  std::vector<std::string> set;  ///< --set KEY=VALUE
-  std::string distributed_solver = "substructuring";
+  std::vector<std::string> set;    ///< --set KEY=VALUE
+  std::string distributed_solver;  ///< empty: substructuring under mpirun, serial on one rank
 };
 
 // " (zones 0.4500 + 0.5000)" when Γ_C has several zones: each zone's contact set length.
@@ -121,7 +121,8 @@ int run_solve(const SolveOptions& o) {
         o.scene, "run.effects", "(missing)",
         fmt::format("a [run] table with effects = [...] (any of {}), or the option --effects", fmt::join(names, ", ")));
   }
-  const auto distributed_solver = linalg::parse_distributed_solver(o.distributed_solver, where, "--distributed-solver");
+  const auto distribution =
+      linalg::distribution_named(MPI_COMM_WORLD, o.distributed_solver, where, "--distributed-solver");
   io::check_output_folder(o.out);
 
   // 2. Run; progress goes to stderr so that stdout stays the result. Under mpirun every rank runs
@@ -130,7 +131,7 @@ int run_solve(const SolveOptions& o) {
   driver::SceneRunOptions options{o.out, [rank](const std::string& line) {
                                     if (rank == 0) fmt::print(stderr, "# {}\n", line);
                                   }};
-  options.distribution = linalg::distribution_over(MPI_COMM_WORLD, distributed_solver);
+  options.distribution = distribution;
   const driver::RunResult result = driver::run_scene(scene, options);
   if (rank != 0) return 0;
 
@@ -168,11 +169,7 @@ void add_solve_command(CLI::App& app, CommandAction& action) {
   command->add_option("--constraint-points", o->constraint_points,
                       "Override the scene's constraint points per segment (Remark 3; >= p_C + 1)");
   add_set_option(*command, o->set);
-  command
-      ->add_option("--distributed-solver", o->distributed_solver,
-                   "Under mpirun: substructuring (CHOLMOD per rank, dense interface) | mumps (MPIAIJ + MUMPS) | bddc "
-                   "(MATIS + CG with PCBDDC)")
-      ->capture_default_str();
+  command->add_option("--distributed-solver", o->distributed_solver, kDistributedSolverHelp);
   command->callback([&action, o] { action = [o] { return run_solve(*o); }; });
 }
 

@@ -9,6 +9,13 @@ namespace hpcontact::tools {
 /// A subcommand's action, run after parsing; returns the process exit code.
 using CommandAction = std::function<int()>;
 
+/// The help of --distributed-solver (solve, infsup, benchmark): one process's factorizations over
+/// the ranks; named, a solver runs on one rank too.
+inline constexpr const char* kDistributedSolverHelp =
+    "substructuring (CHOLMOD per rank, dense interface) | mumps (MPIAIJ + MUMPS; out of core with "
+    "PETSC_OPTIONS='-mat_mumps_icntl_22 1') | bddc (MATIS + CG with PCBDDC). Default: substructuring under "
+    "mpirun, CHOLMOD on one rank, where a named solver runs too";
+
 /// Adds `convergence` to the app; sets `action` when the subcommand is chosen.
 void add_convergence_command(CLI::App& app, CommandAction& action);
 

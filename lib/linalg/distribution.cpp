@@ -31,4 +31,13 @@ Distribution distribution_over(MPI_Comm ranks, DistributedSolver choice) {
   return {rank_and_size(ranks).second > 1 ? choice : DistributedSolver::serial, ranks};
 }
 
+Distribution distribution_named(MPI_Comm ranks, const std::string& text, const std::string& origin,
+                                const std::string& key) {
+  if (text.empty()) return distribution_over(ranks, DistributedSolver::substructuring);
+  const DistributedSolver solver = parse_distributed_solver(text, origin, key);
+  // (MPI and PETSc start lazily, when a serial run first needs them; a distributed one needs them now)
+  HPC_VERIFY(ensure_petsc_initialized(), "--distributed-solver: PETSc could not be started");
+  return {solver, ranks};
+}
+
 }  // namespace hpcontact::linalg

@@ -71,6 +71,37 @@ TEST(SolidMpi, TwoRanksGiveTheSerialSolveWithEverySolverOnBothPaths) {
     }
 }
 
+// A named --distributed-solver runs on one process too (it used to fall back to CHOLMOD there
+// without a word): summary.json names it, and it gives CHOLMOD's solve; unnamed, one process is
+// serial. Both paths of S.
+TEST(SolidMpi, NamedSolverRunsOnOneRankAndGivesTheSerialSolve) {
+  const std::string scene = kStudies + "extruded_frictionless.toml";
+  for (const char* path : {"dense", "products"}) {
+    const std::string keys = " --set 'solve.trace_operator=\"" + std::string(path) + "\"'";
+    const auto dir = scratch(std::string("solid_one_rank_") + path);
+    const auto serial = run_command("env OPENBLAS_NUM_THREADS=1 " HPCONTACT_CLI " solve " + scene + keys + " --out " +
+                                    (dir / "serial").string());
+    ASSERT_EQ(serial.exit_code, 0) << serial.output;
+    EXPECT_EQ(summary_at(dir / "serial").at("distributed_solver").get<std::string>(), "serial");
+    const double energy = summary_at(dir / "serial").at("frictionless").at("energy").get<double>();
+    for (const char* solver : {"substructuring", "mumps", "bddc"}) {
+      const std::string what = std::string(path) + ", " + solver;
+      const auto out = dir / solver;
+      const auto one = run_command("env OPENBLAS_NUM_THREADS=1 " HPCONTACT_CLI " solve " + scene + keys +
+                                   " --distributed-solver " + solver + " --out " + out.string());
+      ASSERT_EQ(one.exit_code, 0) << what << ": " << one.output;
+      const auto summary = summary_at(out);
+      EXPECT_EQ(summary.at("ranks").get<int>(), 1) << what;
+      EXPECT_EQ(summary.at("distributed_solver").get<std::string>(), solver) << what;
+      EXPECT_NEAR(summary.at("frictionless").at("energy").get<double>(), energy, 1e-10 * std::abs(energy)) << what;
+      EXPECT_LT(relative_difference(dir / "serial" / "boundary_frictionless.csv", out / "boundary_frictionless.csv",
+                                    "pressure"),
+                1e-8)
+          << what;
+    }
+  }
+}
+
 // Tresca's disc QP by products under mpirun: the first rank alone runs the projected gradient and
 // the other serves its products (contact/led_products.hpp), so both end with its λ: the serial
 // energy and samples.
