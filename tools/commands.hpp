@@ -9,7 +9,7 @@ namespace hpcontact::tools {
 /// A subcommand's action, run after parsing; returns the process exit code.
 using CommandAction = std::function<int()>;
 
-/// The help of --distributed-solver (solve, infsup, benchmark): one process's factorizations over
+/// The help of --distributed-solver (solve, infsup): one process's factorizations over
 /// the ranks; named, a solver runs on one rank too.
 inline constexpr const char* kDistributedSolverHelp =
     "substructuring (CHOLMOD per rank, dense interface) | mumps (MPIAIJ + MUMPS; out of core with "

@@ -30,10 +30,10 @@ DistributedSolver parse_distributed_solver(const std::string& text, const std::s
 std::string to_string(DistributedSolver solver);
 /// `choice` on the ranks of `ranks` when it has more than one, serial otherwise.
 Distribution distribution_over(MPI_Comm ranks, DistributedSolver choice);
-/// The option --distributed-solver of `solve`, `infsup` and `benchmark` on the ranks of `ranks`:
-/// `text` empty (not given) is substructuring under mpirun and serial on one rank; a named solver
-/// runs on any number of ranks, one included (MUMPS out of core on one machine for a factor larger
-/// than its memory). @throws InputError naming `origin` and `key` for another name.
+/// The option --distributed-solver of `solve` and `infsup` on the ranks of `ranks`: `text` empty
+/// (not given) is substructuring under mpirun and serial on one rank; a named solver runs on any
+/// number of ranks, one included (MUMPS's own options, out of core among them, on one machine).
+/// @throws InputError naming `origin` and `key` for another name.
 Distribution distribution_named(MPI_Comm ranks, const std::string& text, const std::string& origin,
                                 const std::string& key);
 
