@@ -13,7 +13,8 @@ using CommandAction = std::function<int()>;
 /// the ranks; named, a solver runs on one rank too.
 inline constexpr const char* kDistributedSolverHelp =
     "substructuring (CHOLMOD per rank, dense interface) | mumps (MPIAIJ + MUMPS; out of core with "
-    "PETSC_OPTIONS='-mat_mumps_icntl_22 1') | bddc (MATIS + CG with PCBDDC). Default: substructuring under "
+    "PETSC_OPTIONS='-mat_mumps_icntl_22 1') | bddc (MATIS + CG with PCBDDC) | gamg (MPIAIJ + CG with PCGAMG, no "
+    "factor). Default: substructuring under "
     "mpirun, CHOLMOD on one rank, where a named solver runs too";
 
 /// Adds `convergence` to the app; sets `action` when the subcommand is chosen.

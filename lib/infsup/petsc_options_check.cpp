@@ -23,13 +23,13 @@ void check_petsc_options(const std::vector<std::string>& arguments, const std::s
       continue;  // a value
     bool global = false;
     for (const char* allowed : {"-help", "-info", "-log_", "-options_left", "-malloc", "-on_error_", "-mat_mumps_",
-                                "-no_signal_handler", "-bddc_"})
+                                "-no_signal_handler", "-bddc_", "-gamg_"})
       global = global || name.rfind(allowed, 0) == 0;
     if (global) continue;
     if (name.rfind(prefixed, 0) != 0)
       throw_bad_input("command line", "PETSc option", name,
                       fmt::format("not read by hpcontact: the inf-sup eigensolver reads its options with the prefix "
-                                  "{}, the distributed solver bddc with bddc_ (did you mean {}{}?)",
+                                  "{}, the distributed solvers bddc and gamg with bddc_ and gamg_ (did you mean {}{}?)",
                                   options_prefix, prefixed, name.substr(1)));
     names.push_back(name);
   }

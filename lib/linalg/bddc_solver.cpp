@@ -1,5 +1,6 @@
 // BddcSolver: the local numbering of a rank's contributions, MATIS with its local SeqAIJ matrix,
-// KSP CG + PCBDDC, replicated right-hand sides scattered in and results gathered back.
+// KSP CG + PCBDDC (or the MATIS assembled, + PCGAMG), replicated right-hand sides scattered in and
+// results gathered back.
 #include "linalg/bddc_solver.hpp"
 
 #include <fmt/format.h>
@@ -8,6 +9,7 @@
 #include <algorithm>
 #include <exception>
 #include <optional>
+#include <string>
 
 #include "core/error.hpp"
 #include "core/petsc_check.hpp"
@@ -23,6 +25,7 @@ struct BddcSolver::Impl {
   PetscInt row_begin = 0, row_end = 0;
   std::optional<RowExchange> exchange;  ///< between the subdomain's unknowns and the rank's rows
   mutable IterationCounts iterations;
+  std::string prefix;  ///< of the KSP's PETSc options, "bddc_" or "gamg_"
 };
 
 namespace {
@@ -196,6 +199,15 @@ bool attach_near_null_space(Mat a, MPI_Comm ranks, const Eigen::MatrixXd& near_n
   return !user_chose && use_motions && motion_columns > 0;
 }
 
+// CG's stop: `relative_tolerance` relative to the initial residual, not to the preconditioned
+// right-hand side: PCBDDC's pre-solve starts CG from the subdomain interiors' solution, and for
+// some right-hand sides (met on a Gmsh annulus) the preconditioned b is zero, so PETSc's default
+// test reports DIVERGED_DTOL at iteration 0.
+void set_tolerances(KSP ksp, double relative_tolerance) {
+  HPC_PETSC_CALL(KSPSetTolerances(ksp, relative_tolerance, 0.0, PETSC_DEFAULT, 2000));
+  HPC_PETSC_CALL(KSPConvergedDefaultSetUIRNorm(ksp));
+}
+
 // CG + BDDC on `a` with PETSc's default (multiplicity) scaling, told the hints' fields and
 // natural boundary. -bddc_pc_bddc_use_deluxe_scaling saves 0-27 % of the iterations on the scenes
 // measured (docs/user_guide.md), but in Debian 12's PETSc 3.18 with MUMPS 5.5 it fails on some
@@ -211,12 +223,7 @@ void set_up_conjugate_gradients(KSP ksp, Mat a, MPI_Comm ranks, PetscInt n_local
   HPC_PETSC_CALL(PCSetType(pc, PCBDDC));
   split_fields(pc, ranks, n_local, hints.fields);
   mark_natural_boundary(pc, ranks, exchange, hints.natural_boundary);
-  HPC_PETSC_CALL(KSPSetTolerances(ksp, relative_tolerance, 0.0, PETSC_DEFAULT, 2000));
-  // Relative to the initial residual, not to the preconditioned right-hand side: PCBDDC's pre-solve
-  // starts CG from the subdomain interiors' solution, and for some right-hand sides (met on a Gmsh
-  // annulus) the preconditioned b is zero, so PETSc's default test reports DIVERGED_DTOL at
-  // iteration 0.
-  HPC_PETSC_CALL(KSPConvergedDefaultSetUIRNorm(ksp));
+  set_tolerances(ksp, relative_tolerance);
   // (PCBDDC reads use_nnsp from the options only: set for this solver alone, so that it does not
   // become the user's choice for the next one)
   if (default_motions) HPC_PETSC_CALL(PetscOptionsSetValue(nullptr, "-bddc_pc_bddc_use_nnsp", "1"));
@@ -226,10 +233,24 @@ void set_up_conjugate_gradients(KSP ksp, Mat a, MPI_Comm ranks, PetscInt n_local
   HPC_PETSC_CALL(KSPSetUp(ksp));
 }
 
+// CG + GAMG on the assembled `a`, whose near null space (the rigid motions) is already attached:
+// smoothed aggregation builds its coarse spaces from them.
+void set_up_gamg(KSP ksp, Mat a, double relative_tolerance) {
+  HPC_PETSC_CALL(KSPSetOptionsPrefix(ksp, "gamg_"));
+  HPC_PETSC_CALL(KSPSetOperators(ksp, a, a));
+  HPC_PETSC_CALL(KSPSetType(ksp, KSPCG));
+  PC pc = nullptr;
+  HPC_PETSC_CALL(KSPGetPC(ksp, &pc));
+  HPC_PETSC_CALL(PCSetType(pc, PCGAMG));
+  set_tolerances(ksp, relative_tolerance);
+  HPC_PETSC_CALL(KSPSetFromOptions(ksp));
+  HPC_PETSC_CALL(KSPSetUp(ksp));
+}
+
 }  // namespace
 
 BddcSolver::BddcSolver(MPI_Comm ranks, int n, const std::vector<Eigen::Triplet<double>>& lower_entries,
-                       double relative_tolerance, const BddcHints& hints)
+                       double relative_tolerance, const BddcHints& hints, KrylovPreconditioner preconditioner)
     : impl_(std::make_unique<Impl>()), ranks_(ranks), size_(n) {
   // The rank's subdomain (the unknowns its entries touch) and its Neumann matrix in a MATIS.
   const std::vector<PetscInt> subdomain = subdomain_unknowns(n, lower_entries);
@@ -239,10 +260,22 @@ BddcSolver::BddcSolver(MPI_Comm ranks, int n, const std::vector<Eigen::Triplet<d
   HPC_PETSC_CALL(MatGetOwnershipRange(a, &impl_->row_begin, &impl_->row_end));
   impl_->exchange.emplace(ranks, n, static_cast<int>(impl_->row_begin), static_cast<int>(impl_->row_end),
                           std::vector<int>(subdomain.begin(), subdomain.end()));
+  HPC_PETSC_CALL(KSPCreate(ranks, impl_->ksp.out()));
+  if (preconditioner == KrylovPreconditioner::gamg) {
+    // (assembled, the MATIS is no longer needed: only one copy of the matrix is kept)
+    HPC_PETSC_CALL(MatConvert(a, MATAIJ, MAT_INPLACE_MATRIX, impl_->matrix.out()));
+    a = impl_->matrix.get();
+    HPC_PETSC_CALL(MatSetOption(a, MAT_SYMMETRIC, PETSC_TRUE));
+    HPC_PETSC_CALL(MatSetOption(a, MAT_SPD, PETSC_TRUE));
+    attach_near_null_space(a, ranks, hints.near_null_space, n_local, *impl_->exchange);
+    impl_->prefix = "gamg_";
+    set_up_gamg(impl_->ksp.get(), a, relative_tolerance);
+    return;
+  }
   // What BDDC needs beyond the matrix, then the iteration.
   solve_floating_subdomains_by_mumps();
   const bool default_motions = attach_near_null_space(a, ranks, hints.near_null_space, n_local, *impl_->exchange);
-  HPC_PETSC_CALL(KSPCreate(ranks, impl_->ksp.out()));
+  impl_->prefix = "bddc_";
   set_up_conjugate_gradients(impl_->ksp.get(), a, ranks, n_local, hints, *impl_->exchange, relative_tolerance,
                              default_motions);
 }
@@ -262,7 +295,7 @@ namespace {
 // One solve: the rank's rows of the right-hand side in, the rank's rows of the solution into
 // `owned_solution` (both `owned` long: the rows PETSc gives the rank).
 void solve_column(KSP ksp, Mat a, const double* owned_rhs, PetscInt owned, double* owned_solution,
-                  IterationCounts& count) {
+                  IterationCounts& count, const std::string& prefix) {
   PetscHandle<Vec, VecDestroy> b, x;
   HPC_PETSC_CALL(MatCreateVecs(a, x.out(), b.out()));
   PetscScalar* array = nullptr;
@@ -294,10 +327,10 @@ void solve_column(KSP ksp, Mat a, const double* owned_rhs, PetscInt owned, doubl
   }
   if (reason < 0) {
     const bool indefinite = reason == KSP_DIVERGED_INDEFINITE_PC || reason == KSP_DIVERGED_INDEFINITE_MAT;
-    throw NumericalError(fmt::format(
-        "BDDC: conjugate gradients did not converge ({} after {} iterations; {})", KSPConvergedReasons[reason],
-        iterations,
-        indefinite ? "the matrix is not positive definite" : "raise -bddc_ksp_max_it or loosen -bddc_ksp_rtol"));
+    throw NumericalError(fmt::format("{}: conjugate gradients did not converge ({} after {} iterations; {})",
+                                     prefix == "gamg_" ? "GAMG" : "BDDC", KSPConvergedReasons[reason], iterations,
+                                     indefinite ? "the matrix is not positive definite"
+                                                : fmt::format("raise -{0}ksp_max_it or loosen -{0}ksp_rtol", prefix)));
   }
   ++count.solves;
   count.total += iterations;
@@ -316,7 +349,7 @@ Eigen::MatrixXd BddcSolver::solve_owned(const Eigen::MatrixXd& owned_rhs) const 
   Eigen::MatrixXd out(owned, owned_rhs.cols());
   for (Eigen::Index k = 0; k < owned_rhs.cols(); ++k)
     solve_column(impl_->ksp.get(), impl_->matrix.get(), owned_rhs.col(k).data(), owned, out.col(k).data(),
-                 impl_->iterations);
+                 impl_->iterations, impl_->prefix);
   return out;
 }
 
@@ -344,7 +377,7 @@ Eigen::MatrixXd BddcSolver::schur_complement(const Coupling& b) const {
   for (Eigen::Index j = 0; j < m; ++j) {
     owned_rhs = bt_owned.col(j);
     solve_column(impl_->ksp.get(), impl_->matrix.get(), owned_rhs.data(), owned, owned_solution.data(),
-                 impl_->iterations);
+                 impl_->iterations, impl_->prefix);
     result.col(j) = b_owned * owned_solution;
   }
   sum_over_ranks(ranks_, result.data(), result.size());

@@ -36,17 +36,25 @@ struct BddcHints {
   std::vector<int> natural_boundary;
 };
 
+/// What preconditions the conjugate gradients. bddc: PCBDDC on the MATIS (options prefix "bddc_").
+/// gamg: the MATIS assembled into an MPIAIJ (then freed) and PETSc's smoothed aggregation PCGAMG
+/// with the hints' near null space (options prefix "gamg_"): no factor of the whole K or of a
+/// subdomain's, for systems whose factor does not fit in memory (the 3-D Hertz at p = 3).
+enum class KrylovPreconditioner { bddc, gamg };
+
 class BddcSolver : public SkeletonSolver {
  public:
   /// `lower_entries`: this rank's contributions (row ≥ col) to the lower triangle of the n × n
   /// matrix, summed where they meet. `relative_tolerance`: of the preconditioned residual (with
   /// 1e-12 the energies and α of the §7 runs equal the serial ones to about 1e-14, the solves
   /// CHOLMOD's to 1e-13; round-off stalls CG near 1e-14 on these systems, so do not ask for less).
-  /// PETSc options with the prefix "bddc_" (e.g. -bddc_ksp_monitor, -bddc_ksp_rtol 1e-10)
+  /// PETSc options with the prefix "bddc_" or "gamg_" (e.g. -bddc_ksp_monitor, -gamg_ksp_rtol 1e-10)
   /// adjust the solver. Collective on `ranks`, which must outlive the solver.
-  /// `hints`: what the rank knows of its subdomain's unknowns beyond the matrix (BddcHints).
+  /// `hints`: what the rank knows of its subdomain's unknowns beyond the matrix (BddcHints; GAMG
+  /// takes the near null space only).
   BddcSolver(MPI_Comm ranks, int n, const std::vector<Eigen::Triplet<double>>& lower_entries,
-             double relative_tolerance = 1e-12, const BddcHints& hints = {});
+             double relative_tolerance = 1e-12, const BddcHints& hints = {},
+             KrylovPreconditioner preconditioner = KrylovPreconditioner::bddc);
   ~BddcSolver() override;
   BddcSolver(BddcSolver&&) noexcept;
   BddcSolver& operator=(BddcSolver&&) noexcept;

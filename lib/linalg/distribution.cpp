@@ -10,7 +10,8 @@ DistributedSolver parse_distributed_solver(const std::string& text, const std::s
   if (text == "substructuring") return DistributedSolver::substructuring;
   if (text == "mumps") return DistributedSolver::mumps;
   if (text == "bddc") return DistributedSolver::bddc;
-  throw_bad_input(origin, key, text, "must be one of: substructuring, mumps, bddc");
+  if (text == "gamg") return DistributedSolver::gamg;
+  throw_bad_input(origin, key, text, "must be one of: substructuring, mumps, bddc, gamg");
 }
 
 std::string to_string(DistributedSolver solver) {
@@ -23,6 +24,8 @@ std::string to_string(DistributedSolver solver) {
       return "mumps";
     case DistributedSolver::bddc:
       return "bddc";
+    case DistributedSolver::gamg:
+      return "gamg";
   }
   return "?";
 }

@@ -15,6 +15,8 @@ enum class DistributedSolver {
                    ///< ranks by ScaLAPACK
   mumps,           ///< DistributedCholesky: PETSc MPIAIJ + MUMPS, S_T by its Schur interface
   bddc,            ///< BddcSolver: PETSc MATIS + conjugate gradients with PCBDDC
+  gamg,            ///< BddcSolver's conjugate gradients on the assembled MPIAIJ with PCGAMG (smoothed
+                   ///< aggregation, the rigid motions as its near null space): no factor of K at all
 };
 
 struct Distribution {
@@ -25,7 +27,7 @@ struct Distribution {
   bool distributed() const { return solver != DistributedSolver::serial; }
 };
 
-/// "substructuring" | "mumps" | "bddc". @throws InputError naming `origin` and `key` otherwise.
+/// "substructuring" | "mumps" | "bddc" | "gamg". @throws InputError naming `origin` and `key` otherwise.
 DistributedSolver parse_distributed_solver(const std::string& text, const std::string& origin, const std::string& key);
 std::string to_string(DistributedSolver solver);
 /// `choice` on the ranks of `ranks` when it has more than one, serial otherwise.

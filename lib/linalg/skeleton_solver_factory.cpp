@@ -54,6 +54,9 @@ std::unique_ptr<SkeletonSolver> make_skeleton_solver(int n, std::vector<Eigen::T
       return std::make_unique<DistributedCholesky>(ranks, n, lower_entries, trailing);
     case DistributedSolver::bddc:
       return std::make_unique<BddcSolver>(ranks, n, lower_entries, 1e-12, bddc_hints ? bddc_hints() : BddcHints{});
+    case DistributedSolver::gamg:
+      return std::make_unique<BddcSolver>(ranks, n, lower_entries, 1e-12, bddc_hints ? bddc_hints() : BddcHints{},
+                                          KrylovPreconditioner::gamg);
   }
   throw std::logic_error("make_skeleton_solver: an unknown distributed solver");
 }

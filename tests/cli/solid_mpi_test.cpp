@@ -84,7 +84,7 @@ TEST(SolidMpi, NamedSolverRunsOnOneRankAndGivesTheSerialSolve) {
     ASSERT_EQ(serial.exit_code, 0) << serial.output;
     EXPECT_EQ(summary_at(dir / "serial").at("distributed_solver").get<std::string>(), "serial");
     const double energy = summary_at(dir / "serial").at("frictionless").at("energy").get<double>();
-    for (const char* solver : {"substructuring", "mumps", "bddc"}) {
+    for (const char* solver : {"substructuring", "mumps", "bddc", "gamg"}) {
       const std::string what = std::string(path) + ", " + solver;
       const auto out = dir / solver;
       const auto one = run_command("env OPENBLAS_NUM_THREADS=1 " HPCONTACT_CLI " solve " + scene + keys +
