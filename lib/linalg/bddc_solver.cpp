@@ -199,13 +199,21 @@ bool attach_near_null_space(Mat a, MPI_Comm ranks, const Eigen::MatrixXd& near_n
   return !user_chose && use_motions && motion_columns > 0;
 }
 
-// CG's stop: `relative_tolerance` relative to the initial residual, not to the preconditioned
+// (CG's stop: `relative_tolerance` relative to the initial residual, not to the preconditioned
 // right-hand side: PCBDDC's pre-solve starts CG from the subdomain interiors' solution, and for
 // some right-hand sides (met on a Gmsh annulus) the preconditioned b is zero, so PETSc's default
-// test reports DIVERGED_DTOL at iteration 0.
-void set_tolerances(KSP ksp, double relative_tolerance) {
+// test reports DIVERGED_DTOL at iteration 0.)
+// Makes `ksp` CG on `a` with options `prefix` and preconditioner `type`; returns the PC.
+PC conjugate_gradients(KSP ksp, Mat a, const char* prefix, PCType type, double relative_tolerance) {
+  HPC_PETSC_CALL(KSPSetOptionsPrefix(ksp, prefix));
+  HPC_PETSC_CALL(KSPSetOperators(ksp, a, a));
+  HPC_PETSC_CALL(KSPSetType(ksp, KSPCG));
+  PC pc = nullptr;
+  HPC_PETSC_CALL(KSPGetPC(ksp, &pc));
+  HPC_PETSC_CALL(PCSetType(pc, type));
   HPC_PETSC_CALL(KSPSetTolerances(ksp, relative_tolerance, 0.0, PETSC_DEFAULT, 2000));
   HPC_PETSC_CALL(KSPConvergedDefaultSetUIRNorm(ksp));
+  return pc;
 }
 
 // CG + BDDC on `a` with PETSc's default (multiplicity) scaling, told the hints' fields and
@@ -215,15 +223,9 @@ void set_tolerances(KSP ksp, double relative_tolerance) {
 // deluxe Schur complements; both on test_07's graph Laplacian): an option, not the default.
 void set_up_conjugate_gradients(KSP ksp, Mat a, MPI_Comm ranks, PetscInt n_local, const BddcHints& hints,
                                 const RowExchange& exchange, double relative_tolerance, bool default_motions) {
-  HPC_PETSC_CALL(KSPSetOptionsPrefix(ksp, "bddc_"));
-  HPC_PETSC_CALL(KSPSetOperators(ksp, a, a));
-  HPC_PETSC_CALL(KSPSetType(ksp, KSPCG));
-  PC pc = nullptr;
-  HPC_PETSC_CALL(KSPGetPC(ksp, &pc));
-  HPC_PETSC_CALL(PCSetType(pc, PCBDDC));
+  PC pc = conjugate_gradients(ksp, a, "bddc_", PCBDDC, relative_tolerance);
   split_fields(pc, ranks, n_local, hints.fields);
   mark_natural_boundary(pc, ranks, exchange, hints.natural_boundary);
-  set_tolerances(ksp, relative_tolerance);
   // (PCBDDC reads use_nnsp from the options only: set for this solver alone, so that it does not
   // become the user's choice for the next one)
   if (default_motions) HPC_PETSC_CALL(PetscOptionsSetValue(nullptr, "-bddc_pc_bddc_use_nnsp", "1"));
@@ -236,13 +238,7 @@ void set_up_conjugate_gradients(KSP ksp, Mat a, MPI_Comm ranks, PetscInt n_local
 // CG + GAMG on the assembled `a`, whose near null space (the rigid motions) is already attached:
 // smoothed aggregation builds its coarse spaces from them.
 void set_up_gamg(KSP ksp, Mat a, double relative_tolerance) {
-  HPC_PETSC_CALL(KSPSetOptionsPrefix(ksp, "gamg_"));
-  HPC_PETSC_CALL(KSPSetOperators(ksp, a, a));
-  HPC_PETSC_CALL(KSPSetType(ksp, KSPCG));
-  PC pc = nullptr;
-  HPC_PETSC_CALL(KSPGetPC(ksp, &pc));
-  HPC_PETSC_CALL(PCSetType(pc, PCGAMG));
-  set_tolerances(ksp, relative_tolerance);
+  conjugate_gradients(ksp, a, "gamg_", PCGAMG, relative_tolerance);
   HPC_PETSC_CALL(KSPSetFromOptions(ksp));
   HPC_PETSC_CALL(KSPSetUp(ksp));
 }
