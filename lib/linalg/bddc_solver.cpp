@@ -25,7 +25,7 @@ struct BddcSolver::Impl {
   PetscInt row_begin = 0, row_end = 0;
   std::optional<RowExchange> exchange;  ///< between the subdomain's unknowns and the rank's rows
   mutable IterationCounts iterations;
-  std::string prefix;  ///< of the KSP's PETSc options, "bddc_" or "gamg_"
+  std::string name = "BDDC", prefix = "bddc_";  ///< the preconditioner's, and its PETSc options'
 };
 
 namespace {
@@ -199,10 +199,6 @@ bool attach_near_null_space(Mat a, MPI_Comm ranks, const Eigen::MatrixXd& near_n
   return !user_chose && use_motions && motion_columns > 0;
 }
 
-// (CG's stop: `relative_tolerance` relative to the initial residual, not to the preconditioned
-// right-hand side: PCBDDC's pre-solve starts CG from the subdomain interiors' solution, and for
-// some right-hand sides (met on a Gmsh annulus) the preconditioned b is zero, so PETSc's default
-// test reports DIVERGED_DTOL at iteration 0.)
 // Makes `ksp` CG on `a` with options `prefix` and preconditioner `type`; returns the PC.
 PC conjugate_gradients(KSP ksp, Mat a, const char* prefix, PCType type, double relative_tolerance) {
   HPC_PETSC_CALL(KSPSetOptionsPrefix(ksp, prefix));
@@ -212,6 +208,10 @@ PC conjugate_gradients(KSP ksp, Mat a, const char* prefix, PCType type, double r
   HPC_PETSC_CALL(KSPGetPC(ksp, &pc));
   HPC_PETSC_CALL(PCSetType(pc, type));
   HPC_PETSC_CALL(KSPSetTolerances(ksp, relative_tolerance, 0.0, PETSC_DEFAULT, 2000));
+  // Relative to the initial residual, not to the preconditioned right-hand side: PCBDDC's pre-solve
+  // starts CG from the subdomain interiors' solution, and for some right-hand sides (met on a Gmsh
+  // annulus) the preconditioned b is zero, so PETSc's default test reports DIVERGED_DTOL at
+  // iteration 0.
   HPC_PETSC_CALL(KSPConvergedDefaultSetUIRNorm(ksp));
   return pc;
 }
@@ -264,14 +264,13 @@ BddcSolver::BddcSolver(MPI_Comm ranks, int n, const std::vector<Eigen::Triplet<d
     HPC_PETSC_CALL(MatSetOption(a, MAT_SYMMETRIC, PETSC_TRUE));
     HPC_PETSC_CALL(MatSetOption(a, MAT_SPD, PETSC_TRUE));
     attach_near_null_space(a, ranks, hints.near_null_space, n_local, *impl_->exchange);
-    impl_->prefix = "gamg_";
+    impl_->name = "GAMG", impl_->prefix = "gamg_";
     set_up_gamg(impl_->ksp.get(), a, relative_tolerance);
     return;
   }
   // What BDDC needs beyond the matrix, then the iteration.
   solve_floating_subdomains_by_mumps();
   const bool default_motions = attach_near_null_space(a, ranks, hints.near_null_space, n_local, *impl_->exchange);
-  impl_->prefix = "bddc_";
   set_up_conjugate_gradients(impl_->ksp.get(), a, ranks, n_local, hints, *impl_->exchange, relative_tolerance,
                              default_motions);
 }
@@ -291,7 +290,7 @@ namespace {
 // One solve: the rank's rows of the right-hand side in, the rank's rows of the solution into
 // `owned_solution` (both `owned` long: the rows PETSc gives the rank).
 void solve_column(KSP ksp, Mat a, const double* owned_rhs, PetscInt owned, double* owned_solution,
-                  IterationCounts& count, const std::string& prefix) {
+                  IterationCounts& count, const std::string& name, const std::string& prefix) {
   PetscHandle<Vec, VecDestroy> b, x;
   HPC_PETSC_CALL(MatCreateVecs(a, x.out(), b.out()));
   PetscScalar* array = nullptr;
@@ -323,8 +322,8 @@ void solve_column(KSP ksp, Mat a, const double* owned_rhs, PetscInt owned, doubl
   }
   if (reason < 0) {
     const bool indefinite = reason == KSP_DIVERGED_INDEFINITE_PC || reason == KSP_DIVERGED_INDEFINITE_MAT;
-    throw NumericalError(fmt::format("{}: conjugate gradients did not converge ({} after {} iterations; {})",
-                                     prefix == "gamg_" ? "GAMG" : "BDDC", KSPConvergedReasons[reason], iterations,
+    throw NumericalError(fmt::format("{}: conjugate gradients did not converge ({} after {} iterations; {})", name,
+                                     KSPConvergedReasons[reason], iterations,
                                      indefinite ? "the matrix is not positive definite"
                                                 : fmt::format("raise -{0}ksp_max_it or loosen -{0}ksp_rtol", prefix)));
   }
@@ -345,7 +344,7 @@ Eigen::MatrixXd BddcSolver::solve_owned(const Eigen::MatrixXd& owned_rhs) const 
   Eigen::MatrixXd out(owned, owned_rhs.cols());
   for (Eigen::Index k = 0; k < owned_rhs.cols(); ++k)
     solve_column(impl_->ksp.get(), impl_->matrix.get(), owned_rhs.col(k).data(), owned, out.col(k).data(),
-                 impl_->iterations, impl_->prefix);
+                 impl_->iterations, impl_->name, impl_->prefix);
   return out;
 }
 
@@ -373,7 +372,7 @@ Eigen::MatrixXd BddcSolver::schur_complement(const Coupling& b) const {
   for (Eigen::Index j = 0; j < m; ++j) {
     owned_rhs = bt_owned.col(j);
     solve_column(impl_->ksp.get(), impl_->matrix.get(), owned_rhs.data(), owned, owned_solution.data(),
-                 impl_->iterations, impl_->prefix);
+                 impl_->iterations, impl_->name, impl_->prefix);
     result.col(j) = b_owned * owned_solution;
   }
   sum_over_ranks(ranks_, result.data(), result.size());
