@@ -150,7 +150,7 @@ linalg::BddcHints CondensedFactor::local_bddc_hints() const {
   linalg::BddcHints hints;
   const int k = system_->null_motion_count(), fields = system_->field_count();
   hints.near_null_space = Eigen::MatrixXd::Zero(n_local_skeleton_, k);  // (a rank may own no cell)
-  if (fields > 1) hints.fields.assign(n_local_skeleton_, 0);
+  if (fields > 1) hints.fields.assign(n_local_skeleton_, 0), hints.node.assign(n_local_skeleton_, 0);
   std::vector<char> on_boundary(n_local_skeleton_, 0);
   std::vector<CellDof> dofs;
   for (int c = 0; c < static_cast<int>(block_of_cell_.size()); ++c) {
@@ -165,6 +165,15 @@ linalg::BddcHints CondensedFactor::local_bddc_hints() const {
       if (k > 0) hints.near_null_space.row(rows[s]) = dofs[s].sign * motions.row(s);
       if (fields > 1) hints.fields[rows[s]] = static_cast<int>(s) % fields;
       if (boundary[s]) on_boundary[rows[s]] = 1;
+    }
+    // A shape's components are the cell's unknowns s / fields alike; its node is the lowest kept.
+    for (std::size_t first = 0; fields > 1 && first < dofs.size(); first += static_cast<std::size_t>(fields)) {
+      int node = -1;
+      for (int f = 0; f < fields; ++f)
+        if (const CellDof& dof = dofs[first + f]; dof.dof >= 0 && !dof.interior)
+          node = node < 0 ? dof.dof : std::min(node, dof.dof);
+      for (int f = 0; f < fields; ++f)
+        if (const CellDof& dof = dofs[first + f]; dof.dof >= 0 && !dof.interior) hints.node[rows[first + f]] = node;
     }
   }
   for (int i = 0; i < n_local_skeleton_; ++i)

@@ -17,6 +17,27 @@ SolidElasticCellSystem::SolidElasticCellSystem(const space::SolidVectorSpace& sp
     : space_(&space), materials_(std::move(materials)) {
   if (static_cast<int>(materials_.size()) != n_cells())
     throw InputError(fmt::format("{} materials given for {} cells", materials_.size(), n_cells()));
+  const mesh::SolidMesh& mesh = space.scalar().mesh();
+  centre_ = mesh::SolidPoint::Zero();
+  for (int v = 0; v < mesh.n_vertices(); ++v) centre_ += mesh.vertex(v);
+  if (mesh.n_vertices() > 0) centre_ /= mesh.n_vertices();
+}
+
+Eigen::MatrixXd SolidElasticCellSystem::null_motions(int cell) const {
+  const auto shapes = space_->scalar().cell_shapes(cell);
+  const auto vertices = space_->scalar().mesh().cell_vertices(cell);
+  Eigen::MatrixXd motions = Eigen::MatrixXd::Zero(3 * static_cast<Eigen::Index>(shapes.size()), 6);
+  for (std::size_t s = 0; s < shapes.size(); ++s) {
+    if (shapes[s].role != space::SolidShapeRole::vertex) continue;
+    const mesh::SolidPoint x = space_->scalar().mesh().vertex(vertices[shapes[s].entity]) - centre_;
+    const auto row = 3 * static_cast<Eigen::Index>(s);
+    for (int c = 0; c < 3; ++c) motions(row + c, c) = 1.0;
+    // the rotations e_k × x: about z (−y, x, 0), about x (0, −z, y), about y (z, 0, −x)
+    motions(row, 3) = -x.y(), motions(row + 1, 3) = x.x();
+    motions(row + 1, 4) = -x.z(), motions(row + 2, 4) = x.y();
+    motions(row, 5) = x.z(), motions(row + 2, 5) = -x.x();
+  }
+  return motions;
 }
 
 SolidElasticCellSystem SolidElasticCellSystem::vector_h1(const space::SolidVectorSpace& space) {

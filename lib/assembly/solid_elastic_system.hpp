@@ -35,10 +35,17 @@ class SolidElasticCellSystem final : public CellSystem {
   /// Nested dissection: in 3-D it factorizes with a fraction of minimum degree's fill.
   linalg::FillOrdering fill_ordering() const override { return linalg::FillOrdering::nested_dissection; }
   int field_count() const override { return 3; }
+  /// The six rigid motions (three translations, three rotations about the centroid of the mesh's
+  /// vertices, the same on every rank) at the cell's vertex shapes, zero elsewhere: exact on cells
+  /// with straight edges (the vertex shapes reproduce linear functions), near on curved ones.
+  /// GAMG's and BDDC's near null space.
+  Eigen::MatrixXd null_motions(int cell) const override;
+  int null_motion_count() const override { return 6; }
 
  private:
   const space::SolidVectorSpace* space_;
   std::vector<Material> materials_;  ///< empty for the vector H¹ inner product
+  mesh::SolidPoint centre_;          ///< the rotations' (about a far-away point one is nearly a translation)
 };
 
 }  // namespace hpcontact::assembly

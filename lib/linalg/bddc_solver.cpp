@@ -10,11 +10,14 @@
 #include <exception>
 #include <optional>
 #include <string>
+#include <tuple>
+#include <utility>
 
 #include "core/error.hpp"
 #include "core/petsc_check.hpp"
 #include "core/petsc_handle.hpp"
 #include "core/petsc_session.hpp"
+#include "linalg/node_blocks.hpp"
 #include "linalg/row_exchange.hpp"
 
 namespace hpcontact::linalg {
@@ -26,6 +29,9 @@ struct BddcSolver::Impl {
   std::optional<RowExchange> exchange;  ///< between the subdomain's unknowns and the rank's rows
   mutable IterationCounts iterations;
   std::string name = "BDDC", prefix = "bddc_";  ///< the preconditioner's, and its PETSc options'
+  std::optional<NodeBlocks> blocks;             ///< GAMG's rows, when they are a vector problem's node blocks
+  /// One solve on the rank's owned rows (through the node blocks where there are). Collective.
+  void solve(const double* owned_rhs, PetscInt owned, double* owned_solution) const;
 };
 
 namespace {
@@ -176,6 +182,20 @@ void solve_floating_subdomains_by_mumps() {
   }
 }
 
+// The rank's owned rows of the hints' near null space, checked to lie at the rank's unknowns
+// (agreed over the ranks: one rank failing alone would leave the others in the scatter); no
+// columns where no rank has motions.
+Eigen::MatrixXd owned_near_null_space(MPI_Comm ranks, const Eigen::MatrixXd& near_null_space, PetscInt n_local,
+                                      const RowExchange& exchange) {
+  int motion_columns = static_cast<int>(near_null_space.cols());
+  MPI_Allreduce(MPI_IN_PLACE, &motion_columns, 1, MPI_INT, MPI_MAX, ranks);
+  if (motion_columns == 0) return Eigen::MatrixXd(exchange.owned_rows(), 0);
+  int fits = near_null_space.rows() == n_local && near_null_space.cols() == motion_columns ? 1 : 0;
+  MPI_Allreduce(MPI_IN_PLACE, &fits, 1, MPI_INT, MPI_LAND, ranks);
+  HPC_VERIFY(fits, "BDDC: near null space not at the ranks' unknowns");
+  return exchange.consistent_to_owned(near_null_space);
+}
+
 // The near null space (elasticity's rigid motions) joins BDDC's coarse space unless the user
 // sets -bddc_pc_bddc_use_nnsp 0. Since BDDC is told the fields and the natural boundary it
 // converged in every run (six elastic scenes on 3, 4, 6 and 8 ranks) and kept CG's iterations
@@ -185,18 +205,12 @@ void solve_floating_subdomains_by_mumps() {
 // choice (which PCBDDC reads from the options only).
 bool attach_near_null_space(Mat a, MPI_Comm ranks, const Eigen::MatrixXd& near_null_space, PetscInt n_local,
                             const RowExchange& exchange) {
-  int motion_columns = static_cast<int>(near_null_space.cols());
-  MPI_Allreduce(MPI_IN_PLACE, &motion_columns, 1, MPI_INT, MPI_MAX, ranks);
-  PetscBool use_motions = motion_columns > 0 ? PETSC_TRUE : PETSC_FALSE, user_chose = PETSC_FALSE;
+  PetscBool use_motions = PETSC_TRUE, user_chose = PETSC_FALSE;
   HPC_PETSC_CALL(PetscOptionsGetBool(nullptr, nullptr, "-bddc_pc_bddc_use_nnsp", &use_motions, &user_chose));
-  if (use_motions && motion_columns > 0) {
-    // (agreed over the ranks: one rank failing alone would leave the others in the scatter below)
-    int fits = near_null_space.rows() == n_local && near_null_space.cols() == motion_columns ? 1 : 0;
-    MPI_Allreduce(MPI_IN_PLACE, &fits, 1, MPI_INT, MPI_LAND, ranks);
-    HPC_VERIFY(fits, "BDDC: near null space not at the ranks' unknowns");
-    set_near_null_space(a, exchange.consistent_to_owned(near_null_space));
-  }
-  return !user_chose && use_motions && motion_columns > 0;
+  if (!use_motions) return false;
+  const Eigen::MatrixXd owned = owned_near_null_space(ranks, near_null_space, n_local, exchange);
+  if (owned.cols() > 0) set_near_null_space(a, owned);
+  return !user_chose && owned.cols() > 0;
 }
 
 // Makes `ksp` CG on `a` with options `prefix` and preconditioner `type`; returns the PC.
@@ -243,32 +257,61 @@ void set_up_gamg(KSP ksp, Mat a, double relative_tolerance) {
   HPC_PETSC_CALL(KSPSetUp(ksp));
 }
 
+// The rows [begin, end) of n that PETSc's default layout (PETSC_DECIDE) gives this rank.
+std::pair<PetscInt, PetscInt> default_rows(MPI_Comm ranks, int n) {
+  PetscInt local = PETSC_DECIDE, global = n, end = 0;
+  HPC_PETSC_CALL(PetscSplitOwnership(ranks, &local, &global));
+  MPI_Scan(&local, &end, 1, MPIU_INT, MPI_SUM, ranks);
+  return {end - local, end};
+}
+
+// The number of components of a vector problem's nodes (1: a scalar one, or no nodes given),
+// agreed over the ranks.
+int node_components(MPI_Comm ranks, const BddcHints& hints, std::size_t n_local) {
+  int count = hints.fields.empty() ? 1 : *std::max_element(hints.fields.begin(), hints.fields.end()) + 1;
+  int given = hints.node.size() == n_local && hints.fields.size() == n_local ? 1 : 0;
+  MPI_Allreduce(MPI_IN_PLACE, &count, 1, MPI_INT, MPI_MAX, ranks);
+  MPI_Allreduce(MPI_IN_PLACE, &given, 1, MPI_INT, MPI_LAND, ranks);
+  return given ? count : 1;
+}
+
 }  // namespace
 
 BddcSolver::BddcSolver(MPI_Comm ranks, int n, const std::vector<Eigen::Triplet<double>>& lower_entries,
                        double relative_tolerance, const BddcHints& hints, KrylovPreconditioner preconditioner)
     : impl_(std::make_unique<Impl>()), ranks_(ranks), size_(n) {
-  // The rank's subdomain (the unknowns its entries touch) and its Neumann matrix in a MATIS.
+  // The rank's subdomain (the unknowns its entries touch).
   const std::vector<PetscInt> subdomain = subdomain_unknowns(n, lower_entries);
   const auto n_local = static_cast<PetscInt>(subdomain.size());
-  create_unassembled_matrix(ranks, n, subdomain, lower_entries, impl_->matrix.out());
-  Mat a = impl_->matrix.get();
-  HPC_PETSC_CALL(MatGetOwnershipRange(a, &impl_->row_begin, &impl_->row_end));
+  std::tie(impl_->row_begin, impl_->row_end) = default_rows(ranks, n);
   impl_->exchange.emplace(ranks, n, static_cast<int>(impl_->row_begin), static_cast<int>(impl_->row_end),
                           std::vector<int>(subdomain.begin(), subdomain.end()));
   HPC_PETSC_CALL(KSPCreate(ranks, impl_->ksp.out()));
   if (preconditioner == KrylovPreconditioner::gamg) {
-    // (assembled, the MATIS is no longer needed: only one copy of the matrix is kept)
-    HPC_PETSC_CALL(MatConvert(a, MATAIJ, MAT_INPLACE_MATRIX, impl_->matrix.out()));
-    a = impl_->matrix.get();
+    // Assembled, in node blocks where the problem has them (no MATIS: one copy of the matrix).
+    const Eigen::MatrixXd motions = owned_near_null_space(ranks, hints.near_null_space, n_local, *impl_->exchange);
+    if (const int components = node_components(ranks, hints, subdomain.size()); components > 1) {
+      impl_->blocks.emplace(ranks, n, impl_->row_begin, impl_->row_end, subdomain, hints.node, hints.fields,
+                            components);
+      impl_->blocks->assemble(lower_entries, impl_->matrix.out());
+    } else {
+      create_unassembled_matrix(ranks, n, subdomain, lower_entries, impl_->matrix.out());
+      HPC_PETSC_CALL(MatConvert(impl_->matrix.get(), MATAIJ, MAT_INPLACE_MATRIX, impl_->matrix.out()));
+    }
+    Mat a = impl_->matrix.get();
     HPC_PETSC_CALL(MatSetOption(a, MAT_SYMMETRIC, PETSC_TRUE));
     HPC_PETSC_CALL(MatSetOption(a, MAT_SPD, PETSC_TRUE));
-    attach_near_null_space(a, ranks, hints.near_null_space, n_local, *impl_->exchange);
+    if (motions.cols() > 0) set_near_null_space(a, impl_->blocks ? impl_->blocks->to_blocks(motions) : motions);
     impl_->name = "GAMG", impl_->prefix = "gamg_";
     set_up_gamg(impl_->ksp.get(), a, relative_tolerance);
     return;
   }
-  // What BDDC needs beyond the matrix, then the iteration.
+  // The Neumann matrices in a MATIS, what BDDC needs beyond them, then the iteration.
+  create_unassembled_matrix(ranks, n, subdomain, lower_entries, impl_->matrix.out());
+  Mat a = impl_->matrix.get();
+  PetscInt begin = 0, end = 0;
+  HPC_PETSC_CALL(MatGetOwnershipRange(a, &begin, &end));
+  HPC_VERIFY(begin == impl_->row_begin && end == impl_->row_end, "BDDC: the MATIS rows are not PETSc's default");
   solve_floating_subdomains_by_mumps();
   const bool default_motions = attach_near_null_space(a, ranks, hints.near_null_space, n_local, *impl_->exchange);
   set_up_conjugate_gradients(impl_->ksp.get(), a, ranks, n_local, hints, *impl_->exchange, relative_tolerance,
@@ -338,13 +381,23 @@ void solve_column(KSP ksp, Mat a, const double* owned_rhs, PetscInt owned, doubl
 
 }  // namespace
 
+void BddcSolver::Impl::solve(const double* owned_rhs, PetscInt owned, double* owned_solution) const {
+  if (!blocks) {
+    solve_column(ksp.get(), matrix.get(), owned_rhs, owned, owned_solution, iterations, name, prefix);
+    return;
+  }
+  const Eigen::MatrixXd rhs = blocks->to_blocks(Eigen::Map<const Eigen::VectorXd>(owned_rhs, owned));
+  Eigen::MatrixXd solution(rhs.rows(), 1);
+  solve_column(ksp.get(), matrix.get(), rhs.data(), blocks->owned_block_rows(), solution.data(), iterations, name,
+               prefix);
+  Eigen::Map<Eigen::VectorXd>(owned_solution, owned) = blocks->from_blocks(solution);
+}
+
 Eigen::MatrixXd BddcSolver::solve_owned(const Eigen::MatrixXd& owned_rhs) const {
   const PetscInt owned = impl_->row_end - impl_->row_begin;
   HPC_VERIFY(owned_rhs.rows() == owned, "right-hand side of the wrong size");
   Eigen::MatrixXd out(owned, owned_rhs.cols());
-  for (Eigen::Index k = 0; k < owned_rhs.cols(); ++k)
-    solve_column(impl_->ksp.get(), impl_->matrix.get(), owned_rhs.col(k).data(), owned, out.col(k).data(),
-                 impl_->iterations, impl_->name, impl_->prefix);
+  for (Eigen::Index k = 0; k < owned_rhs.cols(); ++k) impl_->solve(owned_rhs.col(k).data(), owned, out.col(k).data());
   return out;
 }
 
@@ -371,8 +424,7 @@ Eigen::MatrixXd BddcSolver::schur_complement(const Coupling& b) const {
   Eigen::VectorXd owned_rhs(owned), owned_solution(owned);
   for (Eigen::Index j = 0; j < m; ++j) {
     owned_rhs = bt_owned.col(j);
-    solve_column(impl_->ksp.get(), impl_->matrix.get(), owned_rhs.data(), owned, owned_solution.data(),
-                 impl_->iterations, impl_->name, impl_->prefix);
+    impl_->solve(owned_rhs.data(), owned, owned_solution.data());
     result.col(j) = b_owned * owned_solution;
   }
   sum_over_ranks(ranks_, result.data(), result.size());

@@ -30,6 +30,10 @@ struct BddcHints {
   /// The field (0, 1, …) of each local unknown (elasticity: the displacement component), so that
   /// BDDC averages each field over an interface edge on its own. Empty: one field.
   std::vector<int> fields;
+  /// The node of each local unknown: the lowest global unknown among the components of its shape
+  /// function (the same on every rank), so that GAMG takes a node's components as one block
+  /// (NodeBlocks). Empty: GAMG takes each unknown as a node.
+  std::vector<int> node;
   /// The local unknowns (indices into local_unknowns(), ascending) on the boundary where the
   /// problem imposes no Dirichlet condition: an interface edge that reaches it then ends in
   /// primal vertices there.
@@ -51,7 +55,7 @@ class BddcSolver : public SkeletonSolver {
   /// PETSc options with the prefix "bddc_" or "gamg_" (e.g. -bddc_ksp_monitor, -gamg_ksp_rtol 1e-10)
   /// adjust the solver. Collective on `ranks`, which must outlive the solver.
   /// `hints`: what the rank knows of its subdomain's unknowns beyond the matrix (BddcHints; GAMG
-  /// takes the near null space only).
+  /// takes the near null space, the fields and the nodes).
   BddcSolver(MPI_Comm ranks, int n, const std::vector<Eigen::Triplet<double>>& lower_entries,
              double relative_tolerance = 1e-12, const BddcHints& hints = {},
              KrylovPreconditioner preconditioner = KrylovPreconditioner::bddc);

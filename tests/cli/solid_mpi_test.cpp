@@ -50,7 +50,7 @@ TEST(SolidMpi, TwoRanksGiveTheSerialSolveWithEverySolverOnBothPaths) {
                                       " --out " + (dir / "serial").string());
       ASSERT_EQ(serial.exit_code, 0) << serial.output;
       const double energy = summary_at(dir / "serial").at(c.effect).at("energy").get<double>();
-      for (const char* solver : {"substructuring", "mumps", "bddc"}) {
+      for (const char* solver : {"substructuring", "mumps", "bddc", "gamg"}) {
         const std::string what = std::string(c.name) + ", " + path + ", " + solver;
         const auto out = dir / solver;
         const auto parallel = run_command(
