@@ -25,13 +25,21 @@ struct NodeBlocks::Impl {
 
 namespace {
 
-// An MPI Vec of `owned` rows holding, at each local unknown `subdomain[i]`, values[i] (ranks
-// sharing an unknown give it the same value).
-void fill_by_unknown(Vec out, const std::vector<PetscInt>& subdomain, const std::vector<int>& values) {
+// The owned rows of a vector of the n unknowns given at each local unknown `subdomain[i]` as
+// values[i] (ranks sharing an unknown give it the same value), through the MPI Vec `owned`.
+std::vector<PetscInt> owned_values(Vec owned, const std::vector<PetscInt>& subdomain, const std::vector<int>& values) {
   for (std::size_t i = 0; i < subdomain.size(); ++i)
-    HPC_PETSC_CALL(VecSetValue(out, subdomain[i], static_cast<PetscScalar>(values[i]), INSERT_VALUES));
-  HPC_PETSC_CALL(VecAssemblyBegin(out));
-  HPC_PETSC_CALL(VecAssemblyEnd(out));
+    HPC_PETSC_CALL(VecSetValue(owned, subdomain[i], static_cast<PetscScalar>(values[i]), INSERT_VALUES));
+  HPC_PETSC_CALL(VecAssemblyBegin(owned));
+  HPC_PETSC_CALL(VecAssemblyEnd(owned));
+  PetscInt rows = 0;
+  HPC_PETSC_CALL(VecGetLocalSize(owned, &rows));
+  std::vector<PetscInt> out(rows);
+  const PetscScalar* array = nullptr;
+  HPC_PETSC_CALL(VecGetArrayRead(owned, &array));
+  for (PetscInt r = 0; r < rows; ++r) out[r] = static_cast<PetscInt>(array[r]);
+  HPC_PETSC_CALL(VecRestoreArrayRead(owned, &array));
+  return out;
 }
 
 // The entries of the MPI Vec `from` at the global indices `at`, on this rank.
@@ -68,14 +76,8 @@ NodeBlocks::NodeBlocks(MPI_Comm ranks, int n, PetscInt row_begin, PetscInt row_e
   // Each owned row's node and field.
   HPC_PETSC_CALL(VecCreateMPI(ranks, owned_rows_, n, impl_->owned.out()));
   Vec owned = impl_->owned.get();
-  fill_by_unknown(owned, subdomain, node);
-  std::vector<PetscInt> owned_node(owned_rows_);
-  {
-    const PetscScalar* values = nullptr;
-    HPC_PETSC_CALL(VecGetArrayRead(owned, &values));
-    for (PetscInt r = 0; r < owned_rows_; ++r) owned_node[r] = static_cast<PetscInt>(values[r]);
-    HPC_PETSC_CALL(VecRestoreArrayRead(owned, &values));
-  }
+  const std::vector<PetscInt> owned_node = owned_values(owned, subdomain, node);
+  const std::vector<PetscInt> owned_field = owned_values(owned, subdomain, field);
   // The nodes whose first row is the rank's are the rank's, numbered after the lower ranks'.
   PetscInt own_nodes = 0, first_node = 0;
   for (PetscInt r = 0; r < owned_rows_; ++r) own_nodes += owned_node[r] == row_begin + r ? 1 : 0;
@@ -93,14 +95,6 @@ NodeBlocks::NodeBlocks(MPI_Comm ranks, int n, PetscInt row_begin, PetscInt row_e
   std::vector<PetscInt> at(node.begin(), node.end());
   at.insert(at.end(), owned_node.begin(), owned_node.end());
   const std::vector<PetscInt> node_number = entries_at(owned, at);
-  std::vector<int> owned_field(owned_rows_);
-  fill_by_unknown(owned, subdomain, field);
-  {
-    const PetscScalar* values = nullptr;
-    HPC_PETSC_CALL(VecGetArrayRead(owned, &values));
-    for (PetscInt r = 0; r < owned_rows_; ++r) owned_field[r] = static_cast<int>(values[r]);
-    HPC_PETSC_CALL(VecRestoreArrayRead(owned, &values));
-  }
   // The rank's local nodes, and each local unknown's row among them.
   const auto n_local = static_cast<std::ptrdiff_t>(subdomain.size());
   impl_->node_blocks.assign(node_number.begin(), node_number.begin() + n_local);
@@ -169,8 +163,6 @@ void NodeBlocks::assemble(const std::vector<Eigen::Triplet<double>>& lower_entri
   HPC_PETSC_CALL(MatAssemblyBegin(*out, MAT_FINAL_ASSEMBLY));
   HPC_PETSC_CALL(MatAssemblyEnd(*out, MAT_FINAL_ASSEMBLY));
   HPC_PETSC_CALL(MatConvert(*out, MATAIJ, MAT_INPLACE_MATRIX, out));
-  HPC_PETSC_CALL(MatSetOption(*out, MAT_SYMMETRIC, PETSC_TRUE));
-  HPC_PETSC_CALL(MatSetOption(*out, MAT_SPD, PETSC_TRUE));
 }
 
 namespace {
