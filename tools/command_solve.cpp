@@ -67,7 +67,10 @@ void print_stability(const driver::StabilityReport& s) {
 void print_contact(const driver::ContactResult& result) {
   fmt::print("{}: energy = {:.17g}", result.problem, result.energy);
   if (result.total_force) fmt::print(", total force P = {:.10g}", *result.total_force);
-  if (result.solver.trace_operator == "products")
+  if (result.solver.trace_operator == "saddle_point")
+    fmt::print(", {} {} steps ({} CG iterations on K), KKT residual {:.2e}", result.solver.iterations,
+               result.solver.method, result.solver.products, result.solver.kkt_residual);
+  else if (result.solver.trace_operator == "products")
     fmt::print(", {} with {} products by S, KKT residual {:.2e}", result.solver.method, result.solver.products,
                result.solver.kkt_residual);
   else

@@ -314,6 +314,12 @@ void CondensedFactor::recover_interiors(const Eigen::MatrixXd& rhs, bool local, 
 }
 
 Eigen::MatrixXd CondensedFactor::solve(const Eigen::MatrixXd& rhs) const {
+  return solve_around(rhs,
+                      [this](const Eigen::MatrixXd& skeleton_rhs) { return skeleton_solver_->solve(skeleton_rhs); });
+}
+
+Eigen::MatrixXd CondensedFactor::solve_around(
+    const Eigen::MatrixXd& rhs, const std::function<Eigen::MatrixXd(const Eigen::MatrixXd&)>& skeleton_solve) const {
   HPC_VERIFY(rhs.rows() == size_, "right-hand side of the wrong size");
   if (rhs.cols() == 0) return Eigen::MatrixXd(size_, 0);  // (blocks of an empty matrix have no data)
   const int n_skeleton = this->n_skeleton();
@@ -321,7 +327,7 @@ Eigen::MatrixXd CondensedFactor::solve(const Eigen::MatrixXd& rhs) const {
   Eigen::MatrixXd condensed = interior_corrections(rhs, false, n_skeleton);
   if (distribution_.distributed()) sum_over_ranks(distribution_.ranks, condensed.data(), condensed.size());
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(size_, rhs.cols());
-  out.topRows(n_skeleton) = skeleton_solver_->solve(condensed + rhs.topRows(n_skeleton));
+  out.topRows(n_skeleton) = skeleton_solve(condensed + rhs.topRows(n_skeleton));
   // Each rank recovers its own cells' interior modes (the unknowns after the skeleton, each in one
   // cell); distributed, the other ranks' (zero here) are summed in.
   recover_interiors(rhs, false, out);

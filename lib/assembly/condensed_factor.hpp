@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -104,11 +105,17 @@ class CondensedFactor {
   double quadratic_form(const Eigen::VectorXd& u) const;
   /// uᵀ A u for u held at local_dofs() (each rank its own). Collective.
   double quadratic_form_local(const Eigen::VectorXd& u_local) const;
+  /// Solves of A u = f on active rows of the trace coupling B (no interior columns): the interiors
+  /// condensed and recovered around the skeleton solver's constrained solves (vectors of all
+  /// n dofs, replicated); null when the skeleton solver is direct. Refers to this factor.
+  std::unique_ptr<linalg::ConstrainedSolver> constrained_solver(const linalg::Coupling& b) const;
   /// The conjugate gradients' iterations so far (BDDC); empty for a direct solver.
   std::optional<linalg::IterationCounts> iterations() const;
 
  private:
   struct CellBlock;
+  class Constrained;  ///< constrained_solver()'s condensation around the skeleton's solves
+  friend class Constrained;
   /// Fills blocks_ and block_of_cell_ for the cells c with contributes[c] (−1 for the others);
   /// returns the entries of the lower triangle of S that they add.
   std::vector<Eigen::Triplet<double>> eliminate_interiors(const std::vector<char>& contributes);
@@ -123,6 +130,10 @@ class CondensedFactor {
   /// −Σ_T (A_ii⁻¹ A_is)ᵀ f_i over this rank's cells, on the skeleton rows (n_skeleton_rows of them);
   /// rhs and the result held at the local dofs when `local`, else in global order.
   Eigen::MatrixXd interior_corrections(const Eigen::MatrixXd& rhs, bool local, Eigen::Index n_skeleton_rows) const;
+  /// A⁻¹ rhs (replicated) with `skeleton_solve` for the condensed skeleton system: the condensation
+  /// and recovery of solve() around any solve on the skeleton. Collective.
+  Eigen::MatrixXd solve_around(const Eigen::MatrixXd& rhs,
+                               const std::function<Eigen::MatrixXd(const Eigen::MatrixXd&)>& skeleton_solve) const;
   /// u_i = A_ii⁻¹ (f_i − A_is u_s) for this rank's cells into `solution`, whose skeleton rows
   /// hold u_s; all held at the local dofs when `local`, else in global order.
   void recover_interiors(const Eigen::MatrixXd& rhs, bool local, Eigen::MatrixXd& solution) const;

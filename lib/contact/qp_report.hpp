@@ -17,7 +17,8 @@ struct QpIteration {
 };
 
 struct QpReport {
-  std::string method;  ///< "active-set", "active-set+proximal", "interior-point", "projected-gradient" or "mprgp"
+  std::string method;  ///< "active-set", "active-set+proximal", "interior-point", "projected-gradient", "mprgp"
+                       ///< or "primal-dual-active-set"
   bool converged = false;
   double kkt_residual = 0.0;
   int iterations = 0;      ///< active-set steps or interior-point iterations
@@ -26,10 +27,13 @@ struct QpReport {
   /// Why the active-set method gave way to the interior-point method on a bound-constrained
   /// problem (its error message); empty when the first method succeeded.
   std::string fallback_reason;
-  /// How S was applied: "dense" (formed from the factor's trailing block) or "products" (one
-  /// solve with K's factor per product, S never formed; 3-D scenes, contact/trace_operator.hpp).
+  /// How S was applied: "dense" (formed from the factor's trailing block), "products" (one
+  /// solve with K's factor per product, S never formed; 3-D scenes, contact/trace_operator.hpp) or
+  /// "saddle_point" (not at all: the active-set steps are projected CG on K).
   std::string trace_operator = "dense";
-  long products = 0;  ///< products by S on the products path
+  long products = 0;  ///< products by S on the products path; CG iterations on the saddle point
+  /// saddle_point: K's preconditioner applications (one per CG iteration, a few for the tolerance)
+  long preconditioner_applications = 0;
 };
 
 }  // namespace hpcontact::contact

@@ -74,6 +74,10 @@ SolidContactSolution solve_solid_contact(const SolidContactSetup& setup) {
   const Eigen::VectorXd g = setup.problem == ContactProblem::signorini
                                 ? assembly::surface_multiplier_load(*setup.multipliers, setup.obstacle)
                                 : Eigen::VectorXd::Zero(setup.multipliers->n_dofs());
+  if (setup.trace_solve == SchurPath::saddle_point)
+    throw InputError(
+        "solve.trace_operator = \"saddle_point\" solves elastic frictionless contact only; the scalar 3-D problems "
+        "take \"dense\", \"products\" or \"auto\"");
   const bool products = uses_products(setup.trace_solve, b.rows(), b.cols());
   const MultiplierConstraints constraints = nodal_bounds(setup, !products);
   out.n_trace = static_cast<int>(linalg::nonzero_columns(b).size());

@@ -7,10 +7,12 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <memory>
 
 #include "assembly/condensed_factor.hpp"
 #include "assembly/solid_elastic_system.hpp"
 #include "assembly/surface_coupling.hpp"
+#include "contact/active_set_contact.hpp"
 #include "contact/disc_qp.hpp"
 #include "contact/multiplier_qp.hpp"
 #include "contact/solid_trace_qp.hpp"
@@ -32,26 +34,6 @@ Eigen::VectorXd tresca_radius(const SolidElasticSetup& setup) {
                                    x(1), x(2)));
   }
   return radius;
-}
-
-/// B = B_n (`blocks` = 1), or [B_n; B_1; B_2] (3): the couplings of u·n, u·e₁, u·e₂ with the
-/// multipliers.
-linalg::Coupling stacked_coupling(const space::SolidVectorSpace& space,
-                                  const space::SurfaceMultiplierSpace& multipliers, int blocks) {
-  const auto& surface = multipliers.mesh().surface();
-  const int m = multipliers.n_dofs();
-  const linalg::Coupling scalar_b = assembly::surface_coupling(space.scalar(), multipliers);
-  std::vector<Eigen::Triplet<double>> entries;
-  const std::array<Eigen::Vector3d, 3> directions{surface.normal(), surface.axis(0), surface.axis(1)};
-  for (int k = 0; k < blocks; ++k) {
-    const linalg::Coupling part = assembly::directional_coupling(space, scalar_b, directions[k]);
-    for (int row = 0; row < part.outerSize(); ++row)
-      for (linalg::Coupling::InnerIterator it(part, row); it; ++it)
-        entries.emplace_back(k * m + row, static_cast<int>(it.col()), it.value());
-  }
-  linalg::Coupling b(blocks * m, space.n_dofs());
-  b.setFromTriplets(entries.begin(), entries.end());
-  return b;
 }
 
 /// Coulomb: the Tresca problems on S, d with radii F P_k at the nodal points, P_k the pressure of
@@ -94,7 +76,52 @@ MultiplierConstraints pressure_bounds(int m, bool identity_rows) {
   return out;
 }
 
+/// solve.trace_operator = "saddle_point": frictionless contact on an iterative K.
+void check_saddle_point_setup(const SolidElasticSetup& setup, bool friction) {
+  if (friction)
+    throw InputError(
+        "solve.trace_operator = \"saddle_point\" solves frictionless contact only; Tresca and Coulomb friction "
+        "take \"dense\", \"products\" or \"auto\"");
+  const linalg::DistributedSolver k = setup.distribution.solver;
+  if (k != linalg::DistributedSolver::gamg && k != linalg::DistributedSolver::bddc)
+    throw InputError(
+        fmt::format("solve.trace_operator = \"saddle_point\" needs an iterative K (the active set's steps "
+                    "are its projected conjugate gradients): run with --distributed-solver gamg or bddc, "
+                    "not {}",
+                    to_string(k)));
+}
+
 }  // namespace
+
+linalg::Coupling stacked_coupling(const space::SolidVectorSpace& space,
+                                  const space::SurfaceMultiplierSpace& multipliers, int blocks) {
+  const auto& surface = multipliers.mesh().surface();
+  const int m = multipliers.n_dofs();
+  const linalg::Coupling scalar_b = assembly::surface_coupling(space.scalar(), multipliers);
+  std::vector<Eigen::Triplet<double>> entries;
+  const std::array<Eigen::Vector3d, 3> directions{surface.normal(), surface.axis(0), surface.axis(1)};
+  for (int k = 0; k < blocks; ++k) {
+    const linalg::Coupling part = assembly::directional_coupling(space, scalar_b, directions[k]);
+    for (int row = 0; row < part.outerSize(); ++row)
+      for (linalg::Coupling::InnerIterator it(part, row); it; ++it)
+        entries.emplace_back(k * m + row, static_cast<int>(it.col()), it.value());
+  }
+  linalg::Coupling b(blocks * m, space.n_dofs());
+  b.setFromTriplets(entries.begin(), entries.end());
+  return b;
+}
+
+Eigen::VectorXd solid_body_load(const SolidElasticSetup& setup) {
+  const space::SolidVectorSpace& space = *setup.space;
+  Eigen::VectorXd load = Eigen::VectorXd::Zero(space.n_dofs());
+  for (int c = 0; c < 3; ++c) {
+    if (!setup.body_force[c]) continue;
+    const Eigen::VectorXd component = assembly::solid_load(space.scalar(), setup.body_force[c]);
+    for (int d = 0; d < space.scalar().n_dofs(); ++d)
+      if (const int dof = space.dof(d, c); dof >= 0) load(dof) = component(d);
+  }
+  return load;
+}
 
 SolidElasticSolution solve_solid_elastic_contact(const SolidElasticSetup& setup) {
   if (setup.space == nullptr || setup.multipliers == nullptr || !setup.gap)
@@ -105,18 +132,11 @@ SolidElasticSolution solve_solid_elastic_contact(const SolidElasticSetup& setup)
                     "without Tresca's threshold s",
                     *setup.friction_coefficient));
   const space::SolidVectorSpace& space = *setup.space;
-  const space::SolidH1Space& scalar = space.scalar();
   SolidElasticSolution out;
 
   // 1. F, B_n, G.
   Stopwatch clock;
-  Eigen::VectorXd load = Eigen::VectorXd::Zero(space.n_dofs());
-  for (int c = 0; c < 3; ++c) {
-    if (!setup.body_force[c]) continue;
-    const Eigen::VectorXd component = assembly::solid_load(scalar, setup.body_force[c]);
-    for (int d = 0; d < scalar.n_dofs(); ++d)
-      if (const int dof = space.dof(d, c); dof >= 0) load(dof) = component(d);
-  }
+  const Eigen::VectorXd load = solid_body_load(setup);
   // (Coulomb: Tresca problems, whose discs the fixed point sizes)
   const bool tresca = setup.threshold || setup.friction_coefficient;
   const int m = setup.multipliers->n_dofs();
@@ -124,7 +144,9 @@ SolidElasticSolution solve_solid_elastic_contact(const SolidElasticSetup& setup)
   Eigen::VectorXd g = Eigen::VectorXd::Zero(b.rows());
   g.head(m) = assembly::surface_multiplier_load(*setup.multipliers, setup.gap);
   const Eigen::VectorXd radius = setup.threshold ? tresca_radius(setup) : Eigen::VectorXd();
-  const bool products = uses_products(setup.trace_solve, b.rows(), b.cols());
+  const bool saddle_point = setup.trace_solve == SchurPath::saddle_point;
+  if (saddle_point) check_saddle_point_setup(setup, tresca);
+  const bool products = saddle_point || uses_products(setup.trace_solve, b.rows(), b.cols());
   const MultiplierConstraints constraints = pressure_bounds(m, !products);
   out.n_trace = static_cast<int>(linalg::nonzero_columns(b).size());
   out.seconds.assembly = clock.seconds();
@@ -134,6 +156,24 @@ SolidElasticSolution solve_solid_elastic_contact(const SolidElasticSetup& setup)
   const assembly::CondensedFactor factor(std::make_unique<assembly::SolidElasticCellSystem>(space, setup.materials),
                                          trailing_dofs(products, b), setup.distribution);
   out.seconds.factorization = clock.seconds();
+
+  if (saddle_point) {
+    // 3–4. No S: the active set on the saddle point, each step K's projected CG.
+    clock = Stopwatch();
+    const std::unique_ptr<linalg::ConstrainedSolver> solver = factor.constrained_solver(b);
+    HPC_VERIFY(solver != nullptr, "an iterative K without constrained solves");
+    ActiveSetContactSolution contact = solve_active_set_contact(*solver, b, load, g);
+    out.u = std::move(contact.u);
+    out.pressure = std::move(contact.pressure);
+    out.traction_1 = out.traction_2 = Eigen::VectorXd::Zero(m);
+    out.qp = std::move(contact.report);
+    out.seconds.qp = clock.seconds();
+    clock = Stopwatch();
+    out.gap = g - b * out.u;
+    out.energy = 0.5 * factor.quadratic_form(out.u) - load.dot(out.u);
+    out.seconds.recovery = clock.seconds();
+    return out;
+  }
 
   // 3. S (dense or as products) and d.
   clock = Stopwatch();

@@ -22,6 +22,7 @@
 #include "contact/inequality_qp.hpp"
 #include "contact/qp_report.hpp"
 #include "contact/solid_contact.hpp"
+#include "linalg/coupling_matrix.hpp"
 #include "linalg/distribution.hpp"
 #include "space/solid_vector_space.hpp"
 #include "space/surface_multiplier_space.hpp"
@@ -60,6 +61,13 @@ struct SolidElasticSolution {
   std::vector<double> fixed_point_changes;  ///< Coulomb: max |Δλ| / max |λ| per iteration
   SolidSolveSeconds seconds;
 };
+
+/// F = ∫ f · φ_j of the setup's body force on its vector space (zero where f is not given).
+Eigen::VectorXd solid_body_load(const SolidElasticSetup& setup);
+/// B = B_n (`blocks` = 1), or [B_n; B_1; B_2] (3): the couplings of u·n, u·e₁, u·e₂ with the
+/// multipliers.
+linalg::Coupling stacked_coupling(const space::SolidVectorSpace& space,
+                                  const space::SurfaceMultiplierSpace& multipliers, int blocks);
 
 /// Frictionless, Tresca where `threshold` is given, Coulomb where `friction_coefficient` is.
 /// @throws InputError for missing data, s < 0, F < 0 or both s and F; NumericalError if K is singular

@@ -36,8 +36,11 @@ class TraceOperator {
   mutable long products_ = 0;
 };
 
-/// How a 3-D solve applies S: formed densely from the factor's trailing block, or by products.
-enum class SchurPath { automatic, dense, products };
+/// How a 3-D solve applies S: formed densely from the factor's trailing block, or by products; or
+/// (`saddle_point`, frictionless contact on an iterative K) not at all: a primal–dual active set on
+/// the saddle point whose steps are K's conjugate gradients projected onto the active constraints
+/// (contact/active_set_contact.hpp).
+enum class SchurPath { automatic, dense, products, saddle_point };
 
 /// `automatic` takes products where they are measured to cost less: above a quarter of
 /// n_unknowns^{2/3} multipliers, on K of 1e4 unknowns and more (below, either path takes well

@@ -2,12 +2,15 @@
 // elastic: frictionless, Tresca, Coulomb), their samples on Γ_C and their files.
 #include "driver/solid_run.hpp"
 
+#include <fmt/format.h>
+
 #include <functional>
 
 #include "assembly/surface_coupling.hpp"
 #include "basis/quadrature.hpp"
 #include "contact/solid_contact.hpp"
 #include "contact/solid_elastic_contact.hpp"
+#include "core/error.hpp"
 #include "core/expression.hpp"
 #include "core/interrupt.hpp"
 #include "core/petsc_session.hpp"
@@ -153,11 +156,30 @@ SolvedSolid solve_elastic(const scene::Scene& scene, const SolidDiscretization& 
   return out;
 }
 
+/// solve.trace_operator = "saddle_point" takes frictionless contact on an iterative K only: refused
+/// before any work, naming the key.
+void check_saddle_point_run(const scene::Scene& scene, const linalg::Distribution& distribution) {
+  if (scene.trace_solve != contact::SchurPath::saddle_point) return;
+  for (const auto effect : scene.effects)
+    if (effect != scene::Effect::frictionless && effect != scene::Effect::infsup)
+      throw_bad_input(scene.where("solve.trace_operator"), "solve.trace_operator", "saddle_point",
+                      fmt::format("dense, products or auto with the effect {} (saddle_point solves elastic "
+                                  "frictionless contact only)",
+                                  scene::to_string(effect)));
+  const linalg::DistributedSolver k = distribution.solver;
+  if (k != linalg::DistributedSolver::gamg && k != linalg::DistributedSolver::bddc)
+    throw_bad_input(scene.where("solve.trace_operator"), "solve.trace_operator", "saddle_point",
+                    fmt::format("dense, products or auto on the {} solver; saddle_point needs an iterative K "
+                                "(--distributed-solver gamg or bddc)",
+                                linalg::to_string(k)));
+}
+
 }  // namespace
 
 RunResult run_solid_scene(const scene::Scene& scene, const SceneRunOptions& options) {
   Stopwatch total;
   check_solid_scene(scene);
+  check_saddle_point_run(scene, options.distribution);
   const auto say = [&](const std::string& line) {
     if (options.progress) options.progress(line);
   };

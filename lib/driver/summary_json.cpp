@@ -13,6 +13,10 @@ json solver_json(const contact::QpReport& qp) {
   json j{{"method", qp.method},         {"converged", qp.converged},           {"kkt_residual", qp.kkt_residual},
          {"iterations", qp.iterations}, {"proximal_steps", qp.proximal_steps}, {"trace_operator", qp.trace_operator}};
   if (qp.trace_operator == "products") j["products"] = qp.products;
+  if (qp.trace_operator == "saddle_point") {
+    j["cg_iterations"] = qp.products;
+    j["preconditioner_applications"] = qp.preconditioner_applications;
+  }
   if (!qp.fallback_reason.empty()) j["fallback_reason"] = qp.fallback_reason;
   for (const auto& step : qp.log)
     j["log"].push_back({{"iteration", step.iteration},

@@ -77,6 +77,8 @@ class BddcSolver : public SkeletonSolver {
   Eigen::MatrixXd schur_complement(const Coupling& b) const override;
   /// The conjugate gradients' iterations over all solves so far.
   std::optional<IterationCounts> iterations() const override;
+  /// Projected preconditioned CG on active rows of C (linalg/constrained_solver.hpp).
+  std::unique_ptr<ConstrainedSolver> constrained(const Coupling& c) const override;
 
  private:
   struct Impl;

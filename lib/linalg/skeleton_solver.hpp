@@ -3,9 +3,11 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <memory>
 #include <optional>
 #include <vector>
 
+#include "linalg/constrained_solver.hpp"
 #include "linalg/coupling_matrix.hpp"
 
 namespace hpcontact::linalg {
@@ -49,6 +51,10 @@ class SkeletonSolver {
   virtual Eigen::MatrixXd schur_complement(const Coupling& b) const = 0;
   /// The iterations so far of an iterative solver; empty for a direct one.
   virtual std::optional<IterationCounts> iterations() const { return std::nullopt; }
+  /// Solves on active rows of C (m, n), replicated (ConstrainedSolver), by this solver's iteration
+  /// and preconditioner; null for a direct solver (whose way to contact is S). The object refers
+  /// to this solver, which must outlive it.
+  virtual std::unique_ptr<ConstrainedSolver> constrained(const Coupling& /*c*/) const { return nullptr; }
 
  protected:
   // (a solver is moved as its own type, never sliced through this interface)

@@ -331,11 +331,14 @@ void add_run_keys(std::vector<SceneKey>& keys) {
       "solve", "trace_operator",
       {{"auto", contact::SchurPath::automatic},
        {"dense", contact::SchurPath::dense},
-       {"products", contact::SchurPath::products}},
+       {"products", contact::SchurPath::products},
+       {"saddle_point", contact::SchurPath::saddle_point}},
       contact::SchurPath::automatic, &Scene::trace_solve,
       "3-D scenes: S = B K⁻¹ Bᵀ formed densely from the factor's trailing block, or applied by products (one solve "
       "with K's factor each; MPRGP, FISTA), never formed; auto: products from 1e4 primal unknowns when the "
-      "multipliers exceed a quarter of (primal unknowns)^(2/3), where they cost less"));
+      "multipliers exceed a quarter of (primal unknowns)^(2/3), where they cost less; saddle_point (elastic "
+      "frictionless contact, --distributed-solver gamg or bddc): no S, a primal-dual active set whose steps are K's "
+      "conjugate gradients projected onto the active constraints"));
   // [run]
   add(enum_list_key<Effect>("run", "effects", all_effects(), &Scene::effects, "",
                             "what the run computes; absent: `solve` needs --effects"));

@@ -48,26 +48,40 @@ PerformanceBenchmark read_performance_benchmark(const std::string& path) {
       throw_bad_input(path, "benchmark.n", std::to_string(n), "even, with n · ratio a whole number >= 1");
     out.levels.push_back(static_cast<int>(n));
   }
-  const std::vector<std::string> allowed{
-      "signorini", "friction", "friction_s", "alpha",         "alpha_predicted", "alpha_extension", "assembled",
-      "elastic",   "two_body", "three_d",    "three_d_alpha", "three_d_scene",   "startup"};
+  const std::vector<std::string> allowed{"signorini",
+                                         "friction",
+                                         "friction_s",
+                                         "alpha",
+                                         "alpha_predicted",
+                                         "alpha_extension",
+                                         "assembled",
+                                         "elastic",
+                                         "two_body",
+                                         "three_d",
+                                         "three_d_alpha",
+                                         "three_d_scene",
+                                         "three_d_scene_saddle_point",
+                                         "startup"};
   out.kinds = table.string_list("kinds", allowed);
   for (const auto& kind : out.kinds)
     if (std::find(allowed.begin(), allowed.end(), kind) == allowed.end())
       throw_bad_input(path, "benchmark.kinds", kind,
                       "any of signorini, friction, friction_s, alpha, alpha_predicted, alpha_extension, assembled, "
-                      "elastic, two_body, three_d, three_d_alpha, three_d_scene, startup");
-  const bool scene_kind = std::find(out.kinds.begin(), out.kinds.end(), "three_d_scene") != out.kinds.end();
+                      "elastic, two_body, three_d, three_d_alpha, three_d_scene, three_d_scene_saddle_point, startup");
+  auto is_scene_kind = [](const std::string& kind) {
+    return kind == "three_d_scene" || kind == "three_d_scene_saddle_point";
+  };
+  const bool scene_kind = std::any_of(out.kinds.begin(), out.kinds.end(), is_scene_kind);
   if (scene_kind || table.has("scene")) {
     const std::string scene = table.string("scene", std::string("(missing)"));
     out.scene = (std::filesystem::path(path).parent_path() / scene).string();
     if (!scene_kind || !std::filesystem::exists(out.scene))
-      throw_bad_input(
-          path, "benchmark.scene", scene,
-          scene_kind ? "an existing 3-D scene file (relative to the benchmark file)" : "only with kind three_d_scene");
+      throw_bad_input(path, "benchmark.scene", scene,
+                      scene_kind ? "an existing 3-D scene file (relative to the benchmark file)"
+                                 : "only with kind three_d_scene or three_d_scene_saddle_point");
   }
-  const bool levels_needed = std::any_of(out.kinds.begin(), out.kinds.end(), [](const std::string& kind) {
-    return kind != "three_d_scene" && kind != "startup";
+  const bool levels_needed = std::any_of(out.kinds.begin(), out.kinds.end(), [&](const std::string& kind) {
+    return !is_scene_kind(kind) && kind != "startup";
   });
   if (levels_needed && out.levels.empty())
     throw_bad_input(path, "benchmark.n", "(missing)", "the levels (cells per side) of kinds other than three_d_scene");
@@ -75,8 +89,6 @@ PerformanceBenchmark read_performance_benchmark(const std::string& path) {
   root.reject_unknown_keys();
   return out;
 }
-
-namespace {
 
 // Peak resident memory since the last reset_peak_rss (VmHWM; writing 5 to clear_refs resets it,
 // Linux ≥ 4.0), so that each row reports its own peak, not an earlier row's.
@@ -90,6 +102,8 @@ double peak_rss_mb() {
   getrusage(RUSAGE_SELF, &usage);
   return usage.ru_maxrss / 1024.0;
 }
+
+namespace {
 
 // One linear solve: Factor(arguments...) factorizes, then one solve with `rhs`. The baselines use
 // CondensedFactor (the solver the contact problems and α use: static condensation, CHOLMOD with
@@ -223,7 +237,7 @@ std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& 
   std::vector<BenchmarkRow> rows;
   auto add = [&](BenchmarkRow row) {
     row.ratio = row.seconds / row.seconds_baseline;
-    row.peak_rss_mb = peak_rss_mb();
+    if (row.peak_rss_mb == 0.0) row.peak_rss_mb = peak_rss_mb();  // (unless the row measured its own)
     rows.push_back(row);
     if (on_row) on_row(rows.back());
     reset_peak_rss();
@@ -238,6 +252,7 @@ std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& 
     add(startup_row(benchmark.executable));
   }
   if (has("three_d_scene")) add_solid_scene_rows(benchmark, add);
+  if (has("three_d_scene_saddle_point")) add_solid_saddle_point_rows(benchmark, add);
   for (int n : benchmark.levels) {
     // The built-in §7 scene at this level: n × n cells, T_{C,H} with the benchmark's h/H.
     const std::string where = benchmark.file + ": key 'benchmark.n' = " + std::to_string(n);
@@ -271,7 +286,7 @@ std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& 
     for (const auto& kind : benchmark.kinds)
       if (kind != "alpha" && kind != "alpha_predicted" && kind != "alpha_extension" && kind != "assembled" &&
           kind != "elastic" && kind != "two_body" && kind != "three_d" && kind != "three_d_alpha" &&
-          kind != "three_d_scene" && kind != "startup")
+          kind != "three_d_scene" && kind != "three_d_scene_saddle_point" && kind != "startup")
         add(contact_row(kind, scene, *discretization, base, linear_k));
     BenchmarkRow linear_ag = base;
     linear_ag.kind = "linear_AG";

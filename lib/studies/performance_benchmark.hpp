@@ -43,15 +43,21 @@ struct BenchmarkRow {
                      ///< "linear_A_two_body", "two_body_frictionless", "linear_A_3d",
                      ///< "three_d_frictionless_dense", "three_d_frictionless_products", "linear_AG_3d",
                      ///< "alpha_3d_products", "alpha_3d_dense", "linear_A_3d_scene",
-                     ///< "three_d_scene_products", "startup"
+                     ///< "three_d_scene_products", "linear_A_3d_scene_gamg",
+                     ///< "three_d_scene_saddle_point", "startup"
   int p = 0, pc = 0, n = 0, m = 0, ndofs = 0, nmult = 0, n_trace = 0;
   double seconds_assembly = 0.0;  ///< not part of either side of the ratio
   double seconds_baseline = 0.0;  ///< one linear solve of the same matrix
   double seconds = 0.0;           ///< the measured operation (assembly excluded)
   double ratio = 0.0;             ///< seconds / seconds_baseline
   double peak_rss_mb = 0.0;       ///< peak resident memory during this row (with what earlier rows left resident)
-  long products = 0;              ///< products by S (the 3-D contact rows on the products path)
+  /// products by S (the 3-D contact rows on the products path); CG iterations (the iterative rows)
+  long products = 0;
 };
+
+/// Peak resident memory in MB since the last reset_peak_rss (or the process's start).
+double peak_rss_mb();
+void reset_peak_rss();
 
 /// Runs every level (in the given order) and kind; `on_row` after each row (progress).
 std::vector<BenchmarkRow> run_performance_benchmark(const PerformanceBenchmark& benchmark,

@@ -1,6 +1,7 @@
 // add_solid_rows: the elastic cube at level n, the baseline and the contact solve on both paths;
 // add_solid_alpha_rows: the scalar slab, the baseline and α on both paths; add_solid_scene_rows:
-// a scene file's baseline and contact solve by products.
+// a scene file's baseline and contact solve by products; add_solid_saddle_point_rows: its
+// frictionless contact on the saddle point against one GAMG solve.
 #include "studies/solid_benchmark.hpp"
 
 #include <fmt/format.h>
@@ -90,6 +91,25 @@ double seconds_of_one_solve(std::unique_ptr<const assembly::CellSystem> system) 
   HPC_VERIFY(factor.solve(Eigen::VectorXd(Eigen::VectorXd::Ones(factor.size()))).allFinite(),
              "baseline solve gave a non-finite result");
   return clock.seconds();
+}
+
+// The scene file of kinds three_d_scene*, at the benchmark's p and p_C.
+scene::Scene benchmark_scene(const PerformanceBenchmark& benchmark) {
+  return scene::read_scene(
+      benchmark.scene,
+      {{"discretization.p", static_cast<long long>(benchmark.p), benchmark.file + ": key 'benchmark.p'"},
+       {"discretization.pC", static_cast<long long>(benchmark.pc), benchmark.file + ": key 'benchmark.pC'"}});
+}
+
+// A row of a scene's discretization: p, p_C, unknowns, cells and functions of T_{C,H}.
+BenchmarkRow scene_row(const PerformanceBenchmark& benchmark, const driver::SolidDiscretization& d) {
+  BenchmarkRow row;
+  row.p = benchmark.p;
+  row.pc = benchmark.pc;
+  row.ndofs = d.vector_space->n_dofs();
+  row.m = d.multiplier_mesh->n_cells();
+  row.nmult = d.multipliers->n_dofs();
+  return row;
 }
 
 }  // namespace
@@ -194,10 +214,7 @@ void add_solid_rows(const PerformanceBenchmark& benchmark, BenchmarkRow base,
 }
 
 void add_solid_scene_rows(const PerformanceBenchmark& benchmark, const std::function<void(BenchmarkRow)>& add) {
-  auto scene = scene::read_scene(
-      benchmark.scene,
-      {{"discretization.p", static_cast<long long>(benchmark.p), benchmark.file + ": key 'benchmark.p'"},
-       {"discretization.pC", static_cast<long long>(benchmark.pc), benchmark.file + ": key 'benchmark.pC'"}});
+  auto scene = benchmark_scene(benchmark);
   const auto effects = scene.elastic_effects();
   if (scene.dimension() != 3 || effects.empty() || !scene.is_elastic())
     throw_bad_input(benchmark.file, "benchmark.scene", benchmark.scene,
@@ -205,12 +222,7 @@ void add_solid_scene_rows(const PerformanceBenchmark& benchmark, const std::func
   scene.trace_solve = contact::SchurPath::products;  // (the path whose cost the kind measures)
   driver::check_solid_scene(scene);
   const auto d = driver::discretize_solid_scene(scene);
-  BenchmarkRow linear;
-  linear.p = benchmark.p;
-  linear.pc = benchmark.pc;
-  linear.ndofs = d->vector_space->n_dofs();
-  linear.m = d->multiplier_mesh->n_cells();
-  linear.nmult = d->multipliers->n_dofs();
+  BenchmarkRow linear = scene_row(benchmark, *d);
   linear.kind = "linear_A_3d_scene";
   linear.seconds_baseline = linear.seconds =
       seconds_of_one_solve(std::make_unique<assembly::SolidElasticCellSystem>(*d->vector_space, d->materials));
@@ -225,6 +237,58 @@ void add_solid_scene_rows(const PerformanceBenchmark& benchmark, const std::func
   row.seconds =
       solution.seconds.factorization + solution.seconds.condensation + solution.seconds.qp + solution.seconds.recovery;
   add(row);
+}
+
+}  // namespace hpcontact::studies
+
+namespace hpcontact::studies {
+
+void add_solid_saddle_point_rows(const PerformanceBenchmark& benchmark, const std::function<void(BenchmarkRow)>& add) {
+  auto scene = benchmark_scene(benchmark);
+  if (scene.dimension() != 3 || !scene.is_elastic() || !scene.has_effect(scene::Effect::frictionless))
+    throw_bad_input(benchmark.file, "benchmark.scene", benchmark.scene,
+                    "a 3-D elastic scene with the effect frictionless (kind three_d_scene_saddle_point)");
+  scene.trace_solve = contact::SchurPath::saddle_point;
+  driver::check_solid_scene(scene);
+  const auto d = driver::discretize_solid_scene(scene);
+  const BenchmarkRow base = scene_row(benchmark, *d);
+  contact::SolidElasticSetup setup = driver::solid_elastic_setup(scene, *d, scene::Effect::frictionless);
+  setup.distribution = linalg::distribution_named(MPI_COMM_WORLD, "gamg", benchmark.file, "benchmark.kinds");
+
+  // The contact solve, its peak memory its own.
+  reset_peak_rss();
+  const auto solution = contact::solve_solid_elastic_contact(setup);
+  BenchmarkRow contact_row = base;
+  contact_row.kind = "three_d_scene_saddle_point";
+  contact_row.n_trace = solution.n_trace;
+  contact_row.products = solution.qp.products;
+  contact_row.seconds_assembly = solution.seconds.assembly;
+  contact_row.seconds = solution.seconds.factorization + solution.seconds.qp + solution.seconds.recovery;
+  contact_row.peak_rss_mb = peak_rss_mb();
+  reset_peak_rss();
+
+  // One solve of K u = F − B_nᵀ P from zero, GAMG's set-up included.
+  const Eigen::VectorXd rhs =
+      contact::solid_body_load(setup) -
+      contact::stacked_coupling(*setup.space, *setup.multipliers, 1).transpose() * solution.pressure;
+  Stopwatch clock;
+  const assembly::CondensedFactor factor(
+      std::make_unique<assembly::SolidElasticCellSystem>(*setup.space, setup.materials), {}, setup.distribution);
+  const Eigen::VectorXd u = factor.solve(rhs);
+  BenchmarkRow linear = base;
+  linear.kind = "linear_A_3d_scene_gamg";
+  linear.seconds_baseline = linear.seconds = clock.seconds();
+  linear.products = factor.iterations() ? factor.iterations()->total : 0;
+  // (the same u: a benchmark of a wrong answer measures nothing)
+  const double largest = solution.u.lpNorm<Eigen::Infinity>();
+  if (!((u - solution.u).lpNorm<Eigen::Infinity>() <= 1e-6 * largest))
+    throw NumericalError(
+        fmt::format("3-D saddle-point benchmark: the linear solve's u differs from the contact's by "
+                    "{:.3e} of the largest",
+                    (u - solution.u).lpNorm<Eigen::Infinity>() / largest));
+  add(linear);
+  contact_row.seconds_baseline = linear.seconds;
+  add(contact_row);
 }
 
 }  // namespace hpcontact::studies

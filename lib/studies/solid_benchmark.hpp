@@ -25,6 +25,15 @@ void add_solid_rows(const PerformanceBenchmark& benchmark, BenchmarkRow base,
 /// @throws InputError for a scene that is not 3-D and elastic, naming benchmark.scene.
 void add_solid_scene_rows(const PerformanceBenchmark& benchmark, const std::function<void(BenchmarkRow)>& add);
 
+/// Kind "three_d_scene_saddle_point": the scene's frictionless contact on the iterative K (GAMG on
+/// one process), solve.trace_operator = "saddle_point", against one GAMG-CG solve of the same K
+/// whose load is the contact's (F − B_nᵀ P: the same u, so the same work for the iteration), both
+/// with the GAMG set-up. Rows "linear_A_3d_scene_gamg" and "three_d_scene_saddle_point", each with
+/// its own peak memory and its CG iterations as `products`.
+/// @throws InputError for a scene that is not 3-D, elastic and frictionless; NumericalError if the
+/// two u differ by more than 1e-6 of the largest.
+void add_solid_saddle_point_rows(const PerformanceBenchmark& benchmark, const std::function<void(BenchmarkRow)>& add);
+
 /// Multipliers up to which kind "three_d_alpha" also runs the dense path.
 inline constexpr int kDenseAlphaUpTo = 2500;
 

@@ -137,6 +137,50 @@ double printed_alpha(const Run& run) {
 // α under mpirun: A_G factorized over two ranks by each distributed solver, S_G dense (from the
 // distributed factor's Schur complement) or by products, and every rank running the same
 // eigensolver, gives the serial α; so does the effect infsup of an elastic solve.
+// solve.trace_operator = "saddle_point": the primal-dual active set on K's projected CG (GAMG and
+// BDDC, one and two ranks) gives the serial dense path's energy and pressure; without an iterative
+// K, or with friction, the key is refused by name before any work.
+TEST(SolidMpi, SaddlePointGivesTheDenseSolveOnOneAndTwoRanks) {
+  const std::string scene = kStudies + "extruded_frictionless.toml";
+  const auto dir = scratch("solid_saddle_point");
+  const auto serial = run_command("env OPENBLAS_NUM_THREADS=1 " HPCONTACT_CLI " solve " + scene +
+                                  " --set 'solve.trace_operator=\"dense\"' --out " + (dir / "serial").string());
+  ASSERT_EQ(serial.exit_code, 0) << serial.output;
+  const double energy = summary_at(dir / "serial").at("frictionless").at("energy").get<double>();
+  const std::string keys = " --set 'solve.trace_operator=\"saddle_point\"'";
+  for (const char* solver : {"gamg", "bddc"})
+    for (int ranks : {1, 2}) {
+      const std::string what = std::string(solver) + " on " + std::to_string(ranks);
+      const auto out = dir / (std::string(solver) + std::to_string(ranks));
+      const auto run = run_command(kMpiEnvironment + "mpirun -n " + std::to_string(ranks) +
+                                   " --oversubscribe -x OPENBLAS_NUM_THREADS=1 " HPCONTACT_CLI " solve " + scene +
+                                   keys + " --distributed-solver " + solver + " --out " + out.string());
+      ASSERT_EQ(run.exit_code, 0) << what << ": " << run.output;
+      const auto solver_json = summary_at(out).at("frictionless").at("solver");
+      EXPECT_EQ(solver_json.at("trace_operator").get<std::string>(), "saddle_point") << what;
+      EXPECT_EQ(solver_json.at("method").get<std::string>(), "primal-dual-active-set") << what;
+      EXPECT_GT(solver_json.at("cg_iterations").get<long>(), 0) << what;
+      EXPECT_LE(solver_json.at("kkt_residual").get<double>(), 1e-11) << what;
+      EXPECT_NEAR(summary_at(out).at("frictionless").at("energy").get<double>(), energy, 1e-9 * std::abs(energy))
+          << what;
+      EXPECT_LT(relative_difference(dir / "serial" / "boundary_frictionless.csv", out / "boundary_frictionless.csv",
+                                    "pressure"),
+                1e-7)
+          << what;
+    }
+  const auto direct = run_command(HPCONTACT_CLI " solve " + scene + keys + " --out " + (dir / "direct").string());
+  EXPECT_NE(direct.exit_code, 0);
+  EXPECT_NE(direct.output.find("solve.trace_operator"), std::string::npos) << direct.output;
+  EXPECT_NE(direct.output.find("--distributed-solver gamg or bddc"), std::string::npos) << direct.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "direct" / "summary.json"));
+  const auto tresca =
+      run_command(HPCONTACT_CLI " solve " + scene + keys +
+                  " --set 'run.effects=[\"tresca\"]' --set 'data.s=\"0.1\"' --distributed-solver gamg --out " +
+                  (dir / "tresca").string());
+  EXPECT_NE(tresca.exit_code, 0);
+  EXPECT_NE(tresca.output.find("frictionless contact only"), std::string::npos) << tresca.output;
+}
+
 TEST(SolidMpi, TwoRanksGiveTheSerialAlphaWithEverySolverOnBothPaths) {
   const std::string cube = std::string(HPCONTACT_SOURCE_DIR) + "/studies/three_d/cube.toml";
   for (const char* path : {"dense", "products"}) {

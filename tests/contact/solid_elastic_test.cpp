@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "mesh/contact_surface.hpp"
 #include "postprocess/solid_field.hpp"
+#include "support/slepc_test_environment.hpp"
 #include "support/solid_meshes.hpp"
 
 namespace hpcontact::contact {
@@ -41,7 +42,7 @@ struct Column {
 /// of degree p_C, solved; `check` reads the solution while the spaces live.
 void solve_column(const Column& column, int p, int pc, int n, int m,
                   const std::function<void(const space::SolidVectorSpace&, const SolidElasticSolution&)>& check,
-                  bool tetrahedra = false) {
+                  bool tetrahedra = false, const std::function<void(SolidElasticSetup&)>& adjust = {}) {
   std::vector<double> nodes;
   for (int i = 0; i <= n; ++i) nodes.push_back(static_cast<double>(i) / n);
   const mesh::SolidMesh mesh =
@@ -59,6 +60,7 @@ void solve_column(const Column& column, int p, int pc, int n, int m,
   setup.materials.assign(mesh.n_cells(), column.material);
   setup.body_force[2] = [&](const mesh::SolidPoint&) { return -column.rho; };
   setup.gap = [&](const mesh::SolidPoint&) { return column.delta; };
+  if (adjust) adjust(setup);
   check(space, solve_solid_elastic_contact(setup));
 }
 
@@ -96,6 +98,44 @@ TEST(SolidElasticContact, AColumnAboveTheFloorDoesNotTouchIt) {
     EXPECT_LT(solution.pressure.lpNorm<Eigen::Infinity>(), 1e-14);
     EXPECT_GT(solution.gap.minCoeff(), 0.0);
   });
+}
+
+// solve.trace_operator = "saddle_point": the active set on K's projected CG (GAMG) gives the exact
+// column too, in contact and above the floor, on hexahedra and tetrahedra; a direct K is refused.
+TEST(SolidElasticContact, SaddlePointWithGamgIsExactOnTheColumn) {
+  auto on_the_saddle_point = [](SolidElasticSetup& setup) {
+    setup.trace_solve = SchurPath::saddle_point;
+    setup.distribution = {linalg::DistributedSolver::gamg, MPI_COMM_WORLD};
+  };
+  const Column column;
+  for (bool tetrahedra : {false, true}) {
+    const std::string label = tetrahedra ? "tetrahedra" : "hexahedra";
+    solve_column(
+        column, 2, 1, 2, 2,
+        [&](const space::SolidVectorSpace&, const SolidElasticSolution& solution) {
+          EXPECT_EQ(solution.qp.trace_operator, "saddle_point") << label;
+          EXPECT_TRUE(solution.qp.converged) << label;
+          EXPECT_GT(solution.qp.products, 0) << label;
+          for (Eigen::Index i = 0; i < solution.pressure.size(); ++i)
+            EXPECT_NEAR(solution.pressure(i), column.pressure(), 1e-8) << label;
+          EXPECT_NEAR(solution.energy, column.energy(), 1e-11) << label;
+          EXPECT_LT(solution.gap.lpNorm<Eigen::Infinity>(), 1e-12) << label;
+        },
+        tetrahedra, on_the_saddle_point);
+  }
+  Column above = column;
+  above.delta = 0.5;
+  solve_column(
+      above, 2, 1, 2, 2,
+      [](const space::SolidVectorSpace&, const SolidElasticSolution& solution) {
+        EXPECT_EQ(solution.pressure.lpNorm<Eigen::Infinity>(), 0.0);
+        EXPECT_GT(solution.gap.minCoeff(), 0.0);
+      },
+      false, on_the_saddle_point);
+  EXPECT_THROW(solve_column(
+                   column, 2, 1, 2, 2, [](const space::SolidVectorSpace&, const SolidElasticSolution&) {}, false,
+                   [](SolidElasticSetup& setup) { setup.trace_solve = SchurPath::saddle_point; }),
+               InputError);
 }
 
 }  // namespace
