@@ -18,7 +18,7 @@
 #include "core/petsc_handle.hpp"
 #include "core/petsc_session.hpp"
 #include "linalg/node_blocks.hpp"
-#include "linalg/projected_cg.hpp"
+#include "linalg/projected_solves.hpp"
 #include "linalg/row_exchange.hpp"
 
 namespace hpcontact::linalg {
@@ -432,87 +432,10 @@ Eigen::MatrixXd BddcSolver::schur_complement(const Coupling& b) const {
   return 0.5 * (result + result.transpose());
 }
 
-}  // namespace hpcontact::linalg
-
-namespace hpcontact::linalg {
-namespace {
-
-// Cᵀ's owned rows (owned × m) moved to the node blocks' rows: through dense chunks of columns,
-// since NodeBlocks moves dense columns (a whole dense Cᵀ would be m vectors of the global length).
-Eigen::SparseMatrix<double> block_columns(const NodeBlocks& blocks, const Eigen::SparseMatrix<double>& owned_columns) {
-  constexpr Eigen::Index kChunk = 32;
-  std::vector<Eigen::Triplet<double>> entries;
-  for (Eigen::Index first = 0; first < owned_columns.cols(); first += kChunk) {
-    const Eigen::Index count = std::min(kChunk, owned_columns.cols() - first);
-    const Eigen::MatrixXd moved = blocks.to_blocks(Eigen::MatrixXd(owned_columns.middleCols(first, count)));
-    for (Eigen::Index j = 0; j < count; ++j)
-      for (Eigen::Index i = 0; i < moved.rows(); ++i)
-        if (moved(i, j) != 0.0) entries.emplace_back(static_cast<int>(i), static_cast<int>(first + j), moved(i, j));
-  }
-  Eigen::SparseMatrix<double> out(blocks.owned_block_rows(), owned_columns.cols());
-  out.setFromTriplets(entries.begin(), entries.end());
-  return out;
-}
-
-// The solver's CG projected onto active rows of C, with replicated vectors in and out: each rank
-// works on its owned rows (in node blocks where the solver has them).
-class ProjectedSolves : public ConstrainedSolver {
- public:
-  ProjectedSolves(MPI_Comm ranks, int n, PetscInt row_begin, PetscInt row_end, const NodeBlocks* blocks,
-                  ProjectedConjugateGradients&& iteration, double relative_tolerance)
-      : ranks_(ranks),
-        n_(n),
-        row_begin_(row_begin),
-        owned_(row_end - row_begin),
-        blocks_(blocks),
-        iteration_(std::move(iteration)),
-        relative_tolerance_(relative_tolerance) {}
-
-  ConstrainedSolution solve(const Eigen::VectorXd& rhs, const std::vector<int>& active, const Eigen::VectorXd& values,
-                            const Eigen::VectorXd& start, double relative_tolerance) override {
-    HPC_VERIFY(rhs.size() == n_ && start.size() == n_, "vectors of the wrong size");
-    auto owned = [&](const Eigen::VectorXd& x) -> Eigen::VectorXd {
-      Eigen::VectorXd rows = x.segment(row_begin_, owned_);
-      return blocks_ ? Eigen::VectorXd(blocks_->to_blocks(rows)) : rows;
-    };
-    ConstrainedSolution out = iteration_.solve(owned(rhs), active, values, owned(start), relative_tolerance);
-    Eigen::VectorXd x = Eigen::VectorXd::Zero(n_);
-    x.segment(row_begin_, owned_) = blocks_ ? Eigen::VectorXd(blocks_->from_blocks(out.x)) : out.x;
-    sum_over_ranks(ranks_, x.data(), static_cast<std::size_t>(n_));  // (each row non-zero on its owner only)
-    out.x = std::move(x);
-    return out;
-  }
-  long preconditioner_applications() const override { return iteration_.iterations() + iteration_.applications(); }
-  long iterations() const override { return iteration_.iterations(); }
-  double relative_tolerance() const override { return relative_tolerance_; }
-
- private:
-  MPI_Comm ranks_;
-  int n_;
-  PetscInt row_begin_, owned_;
-  const NodeBlocks* blocks_;
-  ProjectedConjugateGradients iteration_;
-  double relative_tolerance_;
-};
-
-}  // namespace
-
 std::unique_ptr<ConstrainedSolver> BddcSolver::constrained(const Coupling& c) const {
-  HPC_VERIFY(c.cols() == size_, "constraints with the wrong number of columns");
-  const PetscInt owned = impl_->row_end - impl_->row_begin;
-  Eigen::SparseMatrix<double> owned_columns =
-      Eigen::SparseMatrix<double>(c.middleCols(impl_->row_begin, owned)).transpose();
-  if (impl_->blocks) owned_columns = block_columns(*impl_->blocks, owned_columns);
-  PC pc = nullptr;
-  HPC_PETSC_CALL(KSPGetPC(impl_->ksp.get(), &pc));
-  PetscInt max_iterations = 0;
-  PetscReal relative_tolerance = 0.0;
-  HPC_PETSC_CALL(KSPGetTolerances(impl_->ksp.get(), &relative_tolerance, nullptr, nullptr, &max_iterations));
-  ProjectedConjugateGradients iteration(ranks_, impl_->matrix.get(), pc, std::move(owned_columns),
-                                        static_cast<int>(max_iterations), impl_->name);
-  return std::make_unique<ProjectedSolves>(ranks_, size_, impl_->row_begin, impl_->row_end,
-                                           impl_->blocks ? &*impl_->blocks : nullptr, std::move(iteration),
-                                           relative_tolerance);
+  return make_projected_solves(ranks_, size_, impl_->row_begin, impl_->row_end,
+                               impl_->blocks ? &*impl_->blocks : nullptr, impl_->matrix.get(), impl_->ksp.get(), c,
+                               impl_->name);
 }
 
 }  // namespace hpcontact::linalg

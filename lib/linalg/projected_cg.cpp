@@ -73,6 +73,37 @@ Eigen::VectorXd ProjectedConjugateGradients::sum(Eigen::VectorXd local) const {
   return local;
 }
 
+ProjectedConjugateGradients::ActiveRows ProjectedConjugateGradients::active_rows(const std::vector<int>& active) const {
+  // C_Aᵀ (owned × k), W = D⁻¹ C_Aᵀ and E = C_A W, Cholesky-factorized.
+  ActiveRows out;
+  Eigen::SparseMatrix<double>& c_active = out.c;
+  c_active.resize(constraints_.rows(), static_cast<Eigen::Index>(active.size()));
+  {
+    std::vector<Eigen::Triplet<double>> entries;
+    for (std::size_t k = 0; k < active.size(); ++k)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(constraints_, active[k]); it; ++it)
+        entries.emplace_back(static_cast<int>(it.row()), static_cast<int>(k), it.value());
+    c_active.setFromTriplets(entries.begin(), entries.end());
+  }
+  out.w = diagonal_inverse_.asDiagonal() * c_active;
+  Eigen::MatrixXd e = Eigen::MatrixXd(c_active.transpose() * out.w);
+  sum_over_ranks(ranks_, e.data(), static_cast<std::size_t>(e.size()));
+  e = 0.5 * (e + e.transpose());
+  out.e.compute(e);
+  if (e.rows() > 0) {
+    const double smallest = out.e.matrixL().toDenseMatrix().diagonal().minCoeff();
+    const double largest = std::sqrt(e.diagonal().maxCoeff());
+    if (out.e.info() != Eigen::Success || !(smallest > 1e-8 * largest))
+      throw NumericalError(
+          fmt::format("{}: the {} active constraints are linearly dependent (C D⁻¹ Cᵀ is singular: "
+                      "smallest Cholesky pivot {:.3e} of {:.3e}): more active multipliers than the "
+                      "trace separates, an unstable pairing; a higher p or a coarser T_{{C,H}} "
+                      "removes them",
+                      name_, active.size(), smallest, largest));
+  }
+  return out;
+}
+
 ConstrainedSolution ProjectedConjugateGradients::solve(const Eigen::VectorXd& owned_rhs, const std::vector<int>& active,
                                                        const Eigen::VectorXd& values,
                                                        const Eigen::VectorXd& owned_start, double relative_tolerance) {
@@ -82,31 +113,10 @@ ConstrainedSolution ProjectedConjugateGradients::solve(const Eigen::VectorXd& ow
   for (std::size_t k = 0; k < active.size(); ++k)
     HPC_VERIFY(active[k] >= 0 && active[k] < constraints_.cols() && (k == 0 || active[k] > active[k - 1]),
                "active rows not ascending within C");
-  // C_Aᵀ (owned × k), W = D⁻¹ C_Aᵀ and E = C_A W, Cholesky-factorized.
-  Eigen::SparseMatrix<double> c_active(owned, static_cast<Eigen::Index>(active.size()));
-  {
-    std::vector<Eigen::Triplet<double>> entries;
-    for (std::size_t k = 0; k < active.size(); ++k)
-      for (Eigen::SparseMatrix<double>::InnerIterator it(constraints_, active[k]); it; ++it)
-        entries.emplace_back(static_cast<int>(it.row()), static_cast<int>(k), it.value());
-    c_active.setFromTriplets(entries.begin(), entries.end());
-  }
-  const Eigen::SparseMatrix<double> w = diagonal_inverse_.asDiagonal() * c_active;
-  Eigen::MatrixXd e = Eigen::MatrixXd(c_active.transpose() * w);
-  sum_over_ranks(ranks_, e.data(), static_cast<std::size_t>(e.size()));
-  e = 0.5 * (e + e.transpose());
-  const Eigen::LLT<Eigen::MatrixXd> e_factor(e);
-  if (e.rows() > 0) {
-    const double smallest = e_factor.matrixL().toDenseMatrix().diagonal().minCoeff();
-    const double largest = std::sqrt(e.diagonal().maxCoeff());
-    if (e_factor.info() != Eigen::Success || !(smallest > 1e-8 * largest))
-      throw NumericalError(
-          fmt::format("{}: the {} active constraints are linearly dependent (C D⁻¹ Cᵀ is singular: "
-                      "smallest Cholesky pivot {:.3e} of {:.3e}): more active multipliers than the "
-                      "trace separates, an unstable pairing; a higher p or a coarser T_{{C,H}} "
-                      "removes them",
-                      name_, active.size(), smallest, largest));
-  }
+  const ActiveRows rows = active_rows(active);
+  const Eigen::SparseMatrix<double>& c_active = rows.c;
+  const Eigen::SparseMatrix<double>& w = rows.w;
+  const Eigen::LLT<Eigen::MatrixXd>& e_factor = rows.e;
   // E⁻¹ C_A y (each rank its rows' part of C_A y), and Π y = y − W E⁻¹ C_A y.
   auto constraint_part = [&](const Eigen::VectorXd& y) -> Eigen::VectorXd {
     return e_factor.solve(sum(Eigen::VectorXd(c_active.transpose() * y)));

@@ -15,6 +15,7 @@
 #include <mpi.h>
 #include <petscksp.h>
 
+#include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <string>
@@ -46,6 +47,13 @@ class ProjectedConjugateGradients {
   /// M⁻¹ x, A x on owned rows.
   Eigen::VectorXd precondition(const Eigen::VectorXd& x) const;
   Eigen::VectorXd multiply(const Eigen::VectorXd& x) const;
+  /// C_Aᵀ of the rows `active` (owned × k), W = D⁻¹ C_Aᵀ and the Cholesky factor of E = C_A W
+  /// (summed over the ranks). @throws NumericalError if E is singular (dependent rows).
+  struct ActiveRows {
+    Eigen::SparseMatrix<double> c, w;
+    Eigen::LLT<Eigen::MatrixXd> e;
+  };
+  ActiveRows active_rows(const std::vector<int>& active) const;
   /// Σ over the ranks of the rank's values.
   double sum(double local) const;
   Eigen::VectorXd sum(Eigen::VectorXd local) const;
